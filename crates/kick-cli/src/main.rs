@@ -1,0 +1,43 @@
+//! `kick`: the command line of the kick workspace.
+
+mod fit;
+mod output;
+mod simulate;
+mod table2;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(name = "kick", version, about = "Millisecond physics of a soccer kick")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Simulate one 1D contact (defaults: Table 1's baseline).
+    Simulate(simulate::Args),
+    /// Table 2 side by side: printed, seed-rk4 and accurate values.
+    Table2(table2::Args),
+    /// Identify parameters from printed or measured data.
+    #[command(subcommand)]
+    Fit(fit::FitCommand),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Simulate(args) => simulate::run(args),
+        Command::Table2(args) => table2::run(args),
+        Command::Fit(command) => fit::run(command),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}

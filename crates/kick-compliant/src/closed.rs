@@ -1,0 +1,186 @@
+//! Closed forms of the 1D model, exact where they apply.
+//!
+//! - [`elastic`]: c = 0, no drive, any n. δ_max from Eq. 33, contact time
+//!   twice the Beta-function return time, e = 1.
+//! - [`linear`]: n = 1 with compression-only damping and no drive: a damped
+//!   oscillator (under-, critically or over-damped) up to δ_max, then an
+//!   undamped quarter swing back (Eq. 41).
+//! - [`passive_return`]: the undamped restitution phase of any passive run of
+//!   the paper's law, from δ_max.
+
+use kick_core::{
+    roots, special, ContactLaw, EnergyBudget, KickError, Outcome, Scenario, StopReason,
+};
+
+/// The end of compression, from which a passive run returns without loss.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CompressionEnd {
+    pub max_compression: f64,
+    pub max_compression_time: f64,
+    /// Dissipated during compression, J.
+    pub dissipated: f64,
+    pub peak_force: f64,
+    pub peak_force_time: f64,
+}
+
+/// The restitution phase of a passive run in closed form (no drive, and the
+/// law does not damp while δ̇ < 0): ½ μ δ̇² + U(δ) = U(δ_max).
+pub fn passive_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outcome, KickError> {
+    let law = scenario.law();
+    let mu = scenario.reduced_mass();
+    let stored = law.potential(end.max_compression);
+    let exit_relative_speed = (2.0 * stored / mu).sqrt();
+    let return_time =
+        special::return_time(end.max_compression, exit_relative_speed, scenario.get(kick_core::Parameter::Exponent));
+    let total = scenario.total_mass();
+    let v_cm = scenario.centre_of_mass_speed();
+    // Relative coordinates (numerics note): δ̇ = −w at exit.
+    let v_ball_out = v_cm + scenario.effective_foot_mass() / total * exit_relative_speed;
+    let v_foot_out = v_cm - scenario.ball_mass() / total * exit_relative_speed;
+    let contact_time = end.max_compression_time + return_time;
+    let kinetic_final = 0.5 * scenario.effective_foot_mass() * v_foot_out.powi(2)
+        + 0.5 * scenario.ball_mass() * v_ball_out.powi(2);
+    let (peak_force, peak_force_time) = if stored > 0.0 && law.elastic_force(end.max_compression) > end.peak_force {
+        (law.elastic_force(end.max_compression), end.max_compression_time)
+    } else {
+        (end.peak_force, end.peak_force_time)
+    };
+    let outcome = Outcome {
+        v_ball_out,
+        v_foot_out,
+        speed_ratio: v_ball_out / scenario.foot_speed(),
+        peak_force,
+        peak_force_time,
+        contact_time,
+        max_compression: end.max_compression,
+        max_compression_time: end.max_compression_time,
+        impulse: scenario.ball_mass() * (v_ball_out - scenario.ball_speed()), // Eq. 2
+        restitution: exit_relative_speed / scenario.approach_speed(),
+        energy: EnergyBudget {
+            kinetic_initial: scenario.initial_kinetic_energy(),
+            kinetic_final,
+            elastic_final: 0.0,
+            dissipated: end.dissipated,
+            drive_work: 0.0,
+        },
+        stop: StopReason::ClosedForm { t: contact_time },
+        evaluations: 0,
+    };
+    crate::ode::check_finite(&outcome)
+}
+
+/// c = 0 and no drive: the whole contact in closed form (Eqs. 33–34).
+pub fn elastic(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
+    if scenario.get(kick_core::Parameter::Damping) != 0.0 || scenario.drive_force() != 0.0 {
+        return None;
+    }
+    let max_compression = scenario.elastic_max_compression();
+    let half = special::return_time(max_compression, scenario.approach_speed(), scenario.get(kick_core::Parameter::Exponent));
+    let force = scenario.law().elastic_force(max_compression);
+    Some(passive_return(
+        scenario,
+        CompressionEnd {
+            max_compression,
+            max_compression_time: half,
+            dissipated: 0.0,
+            peak_force: force,
+            peak_force_time: half,
+        },
+    ))
+}
+
+/// Linear damped compression δ(t), δ̇(t) from δ(0) = 0, δ̇(0) = V0.
+#[derive(Debug, Clone, Copy)]
+enum LinearCompression {
+    Under { v0: f64, decay: f64, omega_d: f64 },
+    Critical { v0: f64, omega0: f64 },
+    Over { v0: f64, r1: f64, r2: f64 },
+}
+
+impl LinearCompression {
+    fn new(v0: f64, omega0: f64, zeta: f64) -> Self {
+        if zeta < 1.0 {
+            LinearCompression::Under {
+                v0,
+                decay: zeta * omega0,
+                omega_d: omega0 * (1.0 - zeta * zeta).sqrt(),
+            }
+        } else if zeta == 1.0 {
+            LinearCompression::Critical { v0, omega0 }
+        } else {
+            let s = omega0 * (zeta * zeta - 1.0).sqrt();
+            // r1 r2 = ω0², so form the small root from the large one without cancellation.
+            let r2 = -zeta * omega0 - s;
+            LinearCompression::Over { v0, r1: omega0 * omega0 / r2, r2 }
+        }
+    }
+    /// (δ, δ̇) at t.
+    fn state(&self, t: f64) -> (f64, f64) {
+        match *self {
+            LinearCompression::Under { v0, decay, omega_d } => {
+                let (s, c) = (omega_d * t).sin_cos();
+                let e = (-decay * t).exp();
+                (v0 / omega_d * e * s, v0 * e * (c - decay / omega_d * s))
+            }
+            LinearCompression::Critical { v0, omega0 } => {
+                let e = (-omega0 * t).exp();
+                (v0 * t * e, v0 * e * (1.0 - omega0 * t))
+            }
+            LinearCompression::Over { v0, r1, r2 } => {
+                let (e1, e2) = ((r1 * t).exp(), (r2 * t).exp());
+                (v0 / (r1 - r2) * (e1 - e2), v0 / (r1 - r2) * (r1 * e1 - r2 * e2))
+            }
+        }
+    }
+    /// Time of δ̇ = 0.
+    fn max_compression_time(&self) -> f64 {
+        match *self {
+            LinearCompression::Under { decay, omega_d, .. } => omega_d.atan2(decay) / omega_d,
+            LinearCompression::Critical { omega0, .. } => 1.0 / omega0,
+            LinearCompression::Over { r1, r2, .. } => (r2 / r1).ln() / (r1 - r2),
+        }
+    }
+}
+
+/// n = 1, compression-only damping, no drive: closed form for any ζ.
+pub fn linear(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
+    if scenario.get(kick_core::Parameter::Exponent) != 1.0 || scenario.drive_force() != 0.0 {
+        return None;
+    }
+    let law = scenario.law();
+    let (k, c) = (law.stiffness, law.damping);
+    let mu = scenario.reduced_mass();
+    let v0 = scenario.approach_speed();
+    let omega0 = (k / mu).sqrt(); // Eq. 42
+    let motion = LinearCompression::new(v0, omega0, scenario.damping_ratio());
+    let t1 = motion.max_compression_time();
+    let (max_compression, _) = motion.state(t1);
+    // Peak of F = kδ + cδ̇ on [0, t1]: dF/dt = kδ̇ − (c/μ)(kδ + cδ̇).
+    let force_rate = |t: f64| {
+        let (d, r) = motion.state(t);
+        k * r - c / mu * (k * d + c * r)
+    };
+    let onset = law.onset_force(v0);
+    let (peak_force, peak_force_time) = if force_rate(0.0) > 0.0 {
+        match roots::brent(force_rate, 0.0, t1, 4.0 * f64::EPSILON * t1, 200) {
+            Some(root) => {
+                let (d, r) = motion.state(root.x);
+                (law.contact_force(d, r).max(onset), root.x)
+            }
+            None => (k * max_compression, t1),
+        }
+    } else {
+        (onset, 0.0)
+    };
+    let dissipated = scenario.relative_kinetic_energy() - law.potential(max_compression);
+    Some(passive_return(
+        scenario,
+        CompressionEnd {
+            max_compression,
+            max_compression_time: t1,
+            dissipated,
+            peak_force,
+            peak_force_time,
+        },
+    ))
+}

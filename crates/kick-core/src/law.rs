@@ -1,0 +1,109 @@
+//! Contact laws: a force F(δ, δ̇) and an elastic potential U(δ).
+
+/// A constitutive law for the normal contact force.
+///
+/// `force` follows Eq. 20's convention: zero when `compression <= 0`.
+pub trait ContactLaw {
+    /// Compressive force F(δ, δ̇) in N (Eq. 20).
+    fn force(&self, compression: f64, compression_rate: f64) -> f64;
+    /// Elastic potential U(δ) in J (Eq. 22).
+    fn potential(&self, compression: f64) -> f64;
+
+    /// Force on the contact branch, continuous from the right at δ = 0.
+    /// Integrators use it while contact is known to hold, so that the damping
+    /// jump at first touch is not lost at the initial point.
+    fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
+        self.force(compression.max(f64::MIN_POSITIVE), compression_rate)
+    }
+    /// Force at the instant of contact: lim δ→0⁺ F(δ, V0).
+    fn onset_force(&self, approach_speed: f64) -> f64 {
+        self.contact_force(0.0, approach_speed)
+    }
+    /// Partial derivatives (∂F/∂δ, ∂F/∂δ̇) on the contact branch, used to
+    /// locate the force peak dF/dt = ∂F/∂δ δ̇ + ∂F/∂δ̇ δ̈ = 0.
+    /// The default uses central differences; laws should override it.
+    fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        let hd = 1e-7 * compression.abs().max(1e-9);
+        let hr = 1e-7 * compression_rate.abs().max(1e-9);
+        let d_delta = (self.contact_force(compression + hd, compression_rate)
+            - self.contact_force((compression - hd).max(0.0), compression_rate))
+            / (compression + hd - (compression - hd).max(0.0));
+        let d_rate = (self.contact_force(compression, compression_rate + hr)
+            - self.contact_force(compression, compression_rate - hr))
+            / (2.0 * hr);
+        (d_delta, d_rate)
+    }
+    /// True when the law dissipates only while compressing (δ̇ > 0), so the
+    /// restitution phase of a passive run is conservative.
+    fn damps_compression_only(&self) -> bool {
+        false
+    }
+}
+
+/// The paper's law (Eq. 20): F = k δⁿ + c max(δ̇, 0) for δ > 0, else 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PowerLawContact {
+    /// k, in N/mⁿ ("model units", Table 1).
+    pub stiffness: f64,
+    /// c, in N s/m.
+    pub damping: f64,
+    /// n, dimensionless.
+    pub exponent: f64,
+}
+
+impl PowerLawContact {
+    /// Elastic part k δⁿ (Eq. 21); zero for δ ≤ 0.
+    #[inline]
+    pub fn elastic_force(&self, compression: f64) -> f64 {
+        if compression > 0.0 {
+            self.stiffness * compression.powf(self.exponent)
+        } else {
+            0.0
+        }
+    }
+    /// Compression at which the elastic potential equals `energy` (inverse of Eq. 23).
+    #[inline]
+    pub fn compression_for_energy(&self, energy: f64) -> f64 {
+        ((self.exponent + 1.0) * energy / self.stiffness).powf(1.0 / (self.exponent + 1.0))
+    }
+}
+
+impl ContactLaw for PowerLawContact {
+    #[inline]
+    fn force(&self, compression: f64, compression_rate: f64) -> f64 {
+        if compression > 0.0 {
+            // Eq. 20
+            self.elastic_force(compression) + self.damping * compression_rate.max(0.0)
+        } else {
+            0.0
+        }
+    }
+    #[inline]
+    fn potential(&self, compression: f64) -> f64 {
+        // Eq. 23
+        let d = compression.max(0.0);
+        self.stiffness * d.powf(self.exponent + 1.0) / (self.exponent + 1.0)
+    }
+    #[inline]
+    fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
+        self.elastic_force(compression) + self.damping * compression_rate.max(0.0)
+    }
+    #[inline]
+    fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        let d = compression.max(0.0);
+        let stiffness = if d > 0.0 {
+            self.exponent * self.stiffness * d.powf(self.exponent - 1.0)
+        } else if self.exponent > 1.0 {
+            0.0
+        } else if self.exponent == 1.0 {
+            self.stiffness
+        } else {
+            f64::INFINITY
+        };
+        let damping = if compression_rate > 0.0 { self.damping } else { 0.0 };
+        (stiffness, damping)
+    }
+    fn damps_compression_only(&self) -> bool {
+        true
+    }
+}

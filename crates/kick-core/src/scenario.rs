@@ -1,0 +1,309 @@
+//! Scenario parameters of the 1D model (Table 1) and their validation.
+
+use crate::error::KickError;
+use crate::law::PowerLawContact;
+use serde::{Deserialize, Serialize};
+
+/// See [`Scenario::contact_horizon`].
+pub const CONTACT_HORIZON_FACTOR: f64 = 1000.0;
+
+/// The eight parameters of a 1D scenario, in the order files and tables list them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Parameter {
+    FootMass,
+    BallMass,
+    FootSpeed,
+    BallSpeed,
+    Stiffness,
+    Damping,
+    Exponent,
+    DriveForce,
+}
+
+impl Parameter {
+    pub const ALL: [Parameter; 8] = [
+        Parameter::FootMass,
+        Parameter::BallMass,
+        Parameter::FootSpeed,
+        Parameter::BallSpeed,
+        Parameter::Stiffness,
+        Parameter::Damping,
+        Parameter::Exponent,
+        Parameter::DriveForce,
+    ];
+
+    /// Snake-case name used by the CLI, TOML and HDF5 files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Parameter::FootMass => "foot_mass",
+            Parameter::BallMass => "ball_mass",
+            Parameter::FootSpeed => "foot_speed",
+            Parameter::BallSpeed => "ball_speed",
+            Parameter::Stiffness => "stiffness",
+            Parameter::Damping => "damping",
+            Parameter::Exponent => "exponent",
+            Parameter::DriveForce => "drive_force",
+        }
+    }
+
+    /// SI unit; the stiffness unit depends on the exponent (Table 1).
+    pub fn unit(self) -> &'static str {
+        match self {
+            Parameter::FootMass | Parameter::BallMass => "kg",
+            Parameter::FootSpeed | Parameter::BallSpeed => "m/s",
+            Parameter::Stiffness => "N/m^n",
+            Parameter::Damping => "N s/m",
+            Parameter::Exponent => "1",
+            Parameter::DriveForce => "N",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Parameter> {
+        Parameter::ALL.into_iter().find(|p| p.name() == name)
+    }
+}
+
+/// Unvalidated scenario as read from a file or the command line: every field
+/// left out takes Table 1's baseline value.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScenarioSpec {
+    pub foot_mass: Option<f64>,
+    pub ball_mass: Option<f64>,
+    pub foot_speed: Option<f64>,
+    pub ball_speed: Option<f64>,
+    pub stiffness: Option<f64>,
+    pub damping: Option<f64>,
+    pub exponent: Option<f64>,
+    pub drive_force: Option<f64>,
+}
+
+impl ScenarioSpec {
+    pub fn get(&self, parameter: Parameter) -> Option<f64> {
+        match parameter {
+            Parameter::FootMass => self.foot_mass,
+            Parameter::BallMass => self.ball_mass,
+            Parameter::FootSpeed => self.foot_speed,
+            Parameter::BallSpeed => self.ball_speed,
+            Parameter::Stiffness => self.stiffness,
+            Parameter::Damping => self.damping,
+            Parameter::Exponent => self.exponent,
+            Parameter::DriveForce => self.drive_force,
+        }
+    }
+
+    pub fn set(&mut self, parameter: Parameter, value: f64) {
+        let slot = match parameter {
+            Parameter::FootMass => &mut self.foot_mass,
+            Parameter::BallMass => &mut self.ball_mass,
+            Parameter::FootSpeed => &mut self.foot_speed,
+            Parameter::BallSpeed => &mut self.ball_speed,
+            Parameter::Stiffness => &mut self.stiffness,
+            Parameter::Damping => &mut self.damping,
+            Parameter::Exponent => &mut self.exponent,
+            Parameter::DriveForce => &mut self.drive_force,
+        };
+        *slot = Some(value);
+    }
+
+    /// Fill the gaps from Table 1 and validate.
+    pub fn build(&self) -> Result<Scenario, KickError> {
+        let base = Scenario::BASELINE;
+        let mut values = [0.0; 8];
+        for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
+            *slot = self.get(p).unwrap_or_else(|| base.get(p));
+        }
+        Scenario::from_values(values)
+    }
+}
+
+/// A validated 1D scenario: masses, initial speeds and the paper's contact law.
+///
+/// Construction checks every field, so solvers may assume positive masses,
+/// stiffness and exponent, non-negative damping, finite speeds and an
+/// approaching foot.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Scenario {
+    foot_mass: f64,
+    ball_mass: f64,
+    foot_speed: f64,
+    ball_speed: f64,
+    stiffness: f64,
+    damping: f64,
+    exponent: f64,
+    drive_force: f64,
+}
+
+impl Scenario {
+    /// Table 1's baseline.
+    pub const BASELINE: Scenario = Scenario {
+        foot_mass: 3.0,
+        ball_mass: 0.43,
+        foot_speed: 22.0,
+        ball_speed: 0.0,
+        stiffness: 4.2e5,
+        damping: 120.0,
+        exponent: 1.35,
+        drive_force: 0.0,
+    };
+
+    pub fn baseline() -> Scenario {
+        Scenario::BASELINE
+    }
+
+    /// Validate values given in [`Parameter::ALL`] order.
+    pub fn from_values(values: [f64; 8]) -> Result<Scenario, KickError> {
+        let [foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, drive_force] =
+            values;
+        let positive = |p: Parameter, v: f64| {
+            if v.is_finite() && v > 0.0 {
+                Ok(v)
+            } else {
+                Err(KickError::invalid(p.name(), v, "finite and > 0"))
+            }
+        };
+        let finite = |p: Parameter, v: f64| {
+            if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(KickError::invalid(p.name(), v, "finite"))
+            }
+        };
+        let scenario = Scenario {
+            foot_mass: positive(Parameter::FootMass, foot_mass)?,
+            ball_mass: positive(Parameter::BallMass, ball_mass)?,
+            foot_speed: finite(Parameter::FootSpeed, foot_speed)?,
+            ball_speed: finite(Parameter::BallSpeed, ball_speed)?,
+            stiffness: positive(Parameter::Stiffness, stiffness)?,
+            damping: if damping.is_finite() && damping >= 0.0 {
+                damping
+            } else {
+                return Err(KickError::invalid("damping", damping, "finite and >= 0"));
+            },
+            exponent: positive(Parameter::Exponent, exponent)?,
+            drive_force: finite(Parameter::DriveForce, drive_force)?,
+        };
+        // The foot must close the gap (Eq. 48's start: v_f > v_b), and the
+        // relative speed must be representable next to the absolute speeds.
+        let approach = foot_speed - ball_speed;
+        if !(approach > 0.0) || !approach.is_finite() {
+            return Err(KickError::NoContact {
+                foot_speed,
+                ball_speed,
+            });
+        }
+        Ok(scenario)
+    }
+
+    pub fn get(&self, parameter: Parameter) -> f64 {
+        match parameter {
+            Parameter::FootMass => self.foot_mass,
+            Parameter::BallMass => self.ball_mass,
+            Parameter::FootSpeed => self.foot_speed,
+            Parameter::BallSpeed => self.ball_speed,
+            Parameter::Stiffness => self.stiffness,
+            Parameter::Damping => self.damping,
+            Parameter::Exponent => self.exponent,
+            Parameter::DriveForce => self.drive_force,
+        }
+    }
+
+    pub fn values(&self) -> [f64; 8] {
+        Parameter::ALL.map(|p| self.get(p))
+    }
+
+    /// A copy with one parameter changed, validated again.
+    pub fn with(&self, parameter: Parameter, value: f64) -> Result<Scenario, KickError> {
+        let mut values = self.values();
+        values[Parameter::ALL.iter().position(|&p| p == parameter).unwrap_or(0)] = value;
+        Scenario::from_values(values)
+    }
+
+    pub fn spec(&self) -> ScenarioSpec {
+        let mut spec = ScenarioSpec::default();
+        for p in Parameter::ALL {
+            spec.set(p, self.get(p));
+        }
+        spec
+    }
+
+    /// m_f, the effective foot mass (Eq. 11–12).
+    pub fn effective_foot_mass(&self) -> f64 {
+        self.foot_mass
+    }
+    /// m_b.
+    pub fn ball_mass(&self) -> f64 {
+        self.ball_mass
+    }
+    /// v_f⁻.
+    pub fn foot_speed(&self) -> f64 {
+        self.foot_speed
+    }
+    /// v_b⁻.
+    pub fn ball_speed(&self) -> f64 {
+        self.ball_speed
+    }
+    pub fn drive_force(&self) -> f64 {
+        self.drive_force
+    }
+    pub fn law(&self) -> PowerLawContact {
+        PowerLawContact {
+            stiffness: self.stiffness,
+            damping: self.damping,
+            exponent: self.exponent,
+        }
+    }
+    pub fn total_mass(&self) -> f64 {
+        self.foot_mass + self.ball_mass
+    }
+    /// μ (Eq. 17).
+    pub fn reduced_mass(&self) -> f64 {
+        self.foot_mass * self.ball_mass / (self.foot_mass + self.ball_mass)
+    }
+    /// V0 = v_f⁻ − v_b⁻ (Eq. 45), positive by construction.
+    pub fn approach_speed(&self) -> f64 {
+        self.foot_speed - self.ball_speed
+    }
+    /// V_cm before contact (Eq. 28).
+    pub fn centre_of_mass_speed(&self) -> f64 {
+        (self.foot_mass * self.foot_speed + self.ball_mass * self.ball_speed) / self.total_mass()
+    }
+    /// K⁻ (Eq. 30).
+    pub fn initial_kinetic_energy(&self) -> f64 {
+        0.5 * self.foot_mass * self.foot_speed.powi(2) + 0.5 * self.ball_mass * self.ball_speed.powi(2)
+    }
+    /// K_rel⁻ = ½ μ V0² (Eq. 56).
+    pub fn relative_kinetic_energy(&self) -> f64 {
+        0.5 * self.reduced_mass() * self.approach_speed().powi(2)
+    }
+    /// δ_max of the undamped, undriven contact (Eqs. 33–34 with equality).
+    pub fn elastic_max_compression(&self) -> f64 {
+        self.law().compression_for_energy(self.relative_kinetic_energy())
+    }
+    /// Contact time of the undamped, undriven contact: twice the Beta-function
+    /// return time (see `special::return_time`).
+    pub fn elastic_contact_time(&self) -> f64 {
+        2.0 * crate::special::return_time(
+            self.elastic_max_compression(),
+            self.approach_speed(),
+            self.exponent,
+        )
+    }
+    /// Time after which a contact that has not ended is reported as
+    /// [`KickError::NoSeparation`]: `CONTACT_HORIZON_FACTOR` times the undamped,
+    /// undriven contact time of the same masses, stiffness and speeds.
+    pub fn contact_horizon(&self) -> f64 {
+        CONTACT_HORIZON_FACTOR * self.elastic_contact_time()
+    }
+    /// ζ (Eq. 46), a local guide only for n ≠ 1.
+    pub fn damping_ratio(&self) -> f64 {
+        self.damping / (2.0 * (self.stiffness * self.reduced_mass()).sqrt())
+    }
+}
+
+impl Default for Scenario {
+    fn default() -> Self {
+        Scenario::BASELINE
+    }
+}
