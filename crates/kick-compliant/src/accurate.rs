@@ -393,6 +393,33 @@ fn check_release<L: ContactLaw>(
     Ok(())
 }
 
+impl Accurate {
+    /// Solve the scenario's masses and speeds with any contact law in place of
+    /// the scenario's own (Eq. 20).
+    pub fn solve_law<L: ContactLaw + Copy>(&self, scenario: &Scenario, law: L) -> Result<Outcome, KickError> {
+        self.run(scenario, law, None)
+    }
+
+    /// As [`Accurate::solve_law`], recording samples at most `interval` apart.
+    pub fn solve_law_recorded<L: ContactLaw + Copy>(
+        &self,
+        scenario: &Scenario,
+        law: L,
+        interval: f64,
+    ) -> Result<(Outcome, History), KickError> {
+        if !(interval.is_finite() && interval > 0.0) {
+            return Err(KickError::InvalidParameter {
+                name: "interval",
+                value: interval,
+                requirement: "finite and > 0",
+            });
+        }
+        let mut history = History::default();
+        let outcome = self.run(scenario, law, Some((&mut history, interval)))?;
+        Ok((outcome, history))
+    }
+}
+
 impl Solver for Accurate {
     fn name(&self) -> &'static str {
         "accurate"
@@ -408,15 +435,6 @@ impl RecordingSolver for Accurate {
         scenario: &Scenario,
         interval: f64,
     ) -> Result<(Outcome, History), KickError> {
-        if !(interval.is_finite() && interval > 0.0) {
-            return Err(KickError::InvalidParameter {
-                name: "interval",
-                value: interval,
-                requirement: "finite and > 0",
-            });
-        }
-        let mut history = History::default();
-        let outcome = self.run(scenario, scenario.law(), Some((&mut history, interval)))?;
-        Ok((outcome, history))
+        self.solve_law_recorded(scenario, scenario.law(), interval)
     }
 }
