@@ -6,6 +6,8 @@
 
 pub mod error;
 pub mod law;
+pub mod laws;
+pub mod models;
 pub mod outcome;
 pub mod paper;
 pub mod roots;
