@@ -82,11 +82,12 @@ fn energy_identity_closes() {
 fn restitution_is_at_most_one_for_passive_contact() {
     for (case, s) in passive_models() {
         let o = Accurate::default().solve(&s).unwrap();
-        assert!(o.restitution <= 1.0 + 1e-12, "{case}: e = {}", o.restitution);
+        // Up to the accurate solver's stated 1e-9 relative error.
+        assert!(o.restitution <= 1.0 + 1e-9, "{case}: e = {}", o.restitution);
         assert!(o.energy.dissipated >= 0.0, "{case}");
         let damping = s.get(Parameter::Damping);
         if damping == 0.0 {
-            assert!((o.restitution - 1.0).abs() < 1e-10, "{case}: e = {}", o.restitution);
+            assert!((o.restitution - 1.0).abs() < 1e-9, "{case}: e = {}", o.restitution);
         }
     }
 }
