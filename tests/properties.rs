@@ -23,7 +23,8 @@ proptest! {
         let p1 = s.effective_foot_mass() * o.v_foot_out + s.ball_mass() * o.v_ball_out;
         let scale = s.effective_foot_mass() * s.foot_speed().abs() + s.ball_mass() * s.ball_speed().abs();
         prop_assert!((p1 - p0).abs() <= 1e-12 * scale);
-        prop_assert!(o.energy.relative_residual().abs() < 1e-10, "residual {:e}", o.energy.relative_residual());
+        // Each energy is accurate to the solver's stated 1e-9 relative.
+        prop_assert!(o.energy.relative_residual().abs() < 1e-9, "residual {:e}", o.energy.relative_residual());
         prop_assert!(o.v_ball_out >= s.centre_of_mass_speed() - 1e-9 * scale);
         prop_assert!(o.v_foot_out <= s.centre_of_mass_speed() + 1e-9 * scale);
         prop_assert!(o.contact_time > o.max_compression_time && o.max_compression_time > 0.0);

@@ -32,7 +32,7 @@ pub struct Args {
     /// Step of seed-rk4, s
     #[arg(long, default_value_t = 5e-6, allow_negative_numbers = true)]
     dt: f64,
-    #[arg(long, default_value = "accurate", value_parser = SolverChoice::NAMES)]
+    #[arg(long, default_value = "auto", value_parser = SolverChoice::NAMES)]
     solver: String,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
@@ -65,6 +65,7 @@ pub fn outcome_json(scenario: &Scenario, solver: &str, outcome: &Outcome) -> Map
     }
     object.insert("energy_residual".into(), outcome.energy.residual().into());
     object.insert("solver".into(), solver.into());
+    object.insert("method".into(), outcome.method.into());
     object.insert("stop".into(), serde_json::to_value(outcome.stop).unwrap_or(Value::Null));
     object.insert("evaluations".into(), outcome.evaluations.into());
     let mut parameters = Map::new();
@@ -94,7 +95,7 @@ pub fn run(args: Args) -> CliResult {
             println!("{}", json(&object)?);
         }
         Format::Text => {
-            println!("solver: {}", solver.name());
+            println!("solver: {} (path: {})", solver.name(), outcome.method);
             for ((name, unit), value) in OBSERVABLES.iter().zip(outcome.observable_values()) {
                 println!("{name:<24} {value:>16.10e} {unit}");
             }

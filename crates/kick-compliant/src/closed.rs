@@ -65,6 +65,7 @@ pub fn passive_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outcom
         },
         stop: StopReason::ClosedForm { t: contact_time },
         evaluations: 0,
+        method: "closed-form",
     };
     crate::ode::check_finite(&outcome)
 }
@@ -183,4 +184,30 @@ pub fn linear(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
             peak_force_time,
         },
     ))
+}
+
+/// The closed forms as a solver: exact, or an error naming why none applies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ClosedForm;
+
+impl ClosedForm {
+    pub fn applies(scenario: &Scenario) -> bool {
+        scenario.drive_force() == 0.0
+            && (scenario.get(kick_core::Parameter::Damping) == 0.0
+                || scenario.get(kick_core::Parameter::Exponent) == 1.0)
+    }
+}
+
+impl kick_core::Solver for ClosedForm {
+    fn name(&self) -> &'static str {
+        "closed-form"
+    }
+    fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        elastic(scenario).or_else(|| linear(scenario)).unwrap_or_else(|| {
+            Err(KickError::NotApplicable {
+                solver: "closed-form",
+                reason: "it needs no drive and either damping = 0 or exponent = 1",
+            })
+        })
+    }
 }

@@ -3,13 +3,23 @@
 //! - [`SeedRk4`]: the paper's fixed-step RK4 (Section 12), for reproducing its numbers.
 //! - [`Accurate`]: adaptive Dop853 with located events, 1e-9 relative.
 //! - [`closed`]: closed forms where they are exact (tests use them as the truth).
+//! - [`FullState`]: `dop853`, `dopri5`, `rk4-events` on the full state.
+//! - [`Reduced`], [`ReducedReturn`]: the relative coordinate only (Eq. 18).
+//! - [`Auto`]: the cheapest exact path for the scene.
 
 pub mod accurate;
+pub mod auto;
 pub mod closed;
+pub mod events;
 pub mod ode;
+pub mod reduced;
 pub mod seed;
+pub mod table2;
 
-pub use accurate::Accurate;
+pub use accurate::{Accurate, FullState};
+pub use auto::Auto;
+pub use closed::ClosedForm;
+pub use reduced::{Reduced, ReducedReturn};
 pub use seed::SeedRk4;
 
 use kick_core::{History, KickError, Outcome, RecordingSolver, Scenario, Solver};
@@ -17,51 +27,89 @@ use kick_core::{History, KickError, Outcome, RecordingSolver, Scenario, Solver};
 /// The solvers selectable by name (`--solver`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SolverChoice {
+    Auto(Auto),
     SeedRk4(SeedRk4),
     Accurate(Accurate),
+    FullState(FullState),
+    Reduced(Reduced),
+    ReducedReturn(ReducedReturn),
+    ClosedForm(ClosedForm),
 }
 
 impl SolverChoice {
-    pub const NAMES: [&'static str; 2] = ["seed-rk4", "accurate"];
+    pub const NAMES: [&'static str; 9] = [
+        "auto", "seed-rk4", "accurate", "dop853", "dopri5", "rk4-events", "reduced", "reduced-return", "closed-form",
+    ];
 
-    /// Look a solver up by its `--solver` name; `step` is the seed method's Δt.
+    /// Look a solver up by its `--solver` name at default settings; `step` is
+    /// the fixed step of `seed-rk4` and `rk4-events`.
     pub fn from_name(name: &str, step: f64) -> Result<SolverChoice, KickError> {
-        match name {
-            "seed-rk4" => Ok(SolverChoice::SeedRk4(SeedRk4::new(step)?)),
-            "accurate" => Ok(SolverChoice::Accurate(Accurate::default())),
-            _ => Err(KickError::UnknownSolver {
-                name: name.to_string(),
-                expected: "seed-rk4, accurate",
-            }),
+        let tolerance = match name {
+            "dopri5" => DOPRI5_DEFAULT_TOLERANCE,
+            _ => Accurate::default().relative_tolerance,
+        };
+        SolverChoice::with_settings(name, step, tolerance)
+    }
+
+    /// As `from_name` with the adaptive methods' tolerance (relative and
+    /// absolute, in scaled units) set to `tolerance`.
+    pub fn with_settings(name: &str, step: f64, tolerance: f64) -> Result<SolverChoice, KickError> {
+        let reduced = Reduced::with_tolerances(tolerance, tolerance)?;
+        Ok(match name {
+            "auto" => SolverChoice::Auto(Auto { reduced, accurate: Accurate::new(tolerance, tolerance)? }),
+            "seed-rk4" => SolverChoice::SeedRk4(SeedRk4::new(step)?),
+            "accurate" => SolverChoice::Accurate(Accurate::new(tolerance, tolerance)?),
+            "dop853" => SolverChoice::FullState(FullState::dop853(tolerance, tolerance)),
+            "dopri5" => SolverChoice::FullState(FullState::dopri5(tolerance, tolerance)),
+            "rk4-events" => SolverChoice::FullState(FullState::rk4_events(SeedRk4::new(step)?.step)),
+            "reduced" => SolverChoice::Reduced(reduced),
+            "reduced-return" => SolverChoice::ReducedReturn(ReducedReturn { reduced }),
+            "closed-form" => SolverChoice::ClosedForm(ClosedForm),
+            _ => {
+                return Err(KickError::UnknownSolver {
+                    name: name.to_string(),
+                    expected: "auto, seed-rk4, accurate, dop853, dopri5, rk4-events, reduced, reduced-return, closed-form",
+                })
+            }
+        })
+    }
+
+    fn solver(&self) -> &dyn Solver {
+        match self {
+            SolverChoice::Auto(s) => s,
+            SolverChoice::SeedRk4(s) => s,
+            SolverChoice::Accurate(s) => s,
+            SolverChoice::FullState(s) => s,
+            SolverChoice::Reduced(s) => s,
+            SolverChoice::ReducedReturn(s) => s,
+            SolverChoice::ClosedForm(s) => s,
         }
     }
 }
 
+/// Dopri5 is fifth order: a tighter tolerance than Dop853's reaches 1e-9.
+pub const DOPRI5_DEFAULT_TOLERANCE: f64 = 1e-12;
+
 impl Solver for SolverChoice {
     fn name(&self) -> &'static str {
-        match self {
-            SolverChoice::SeedRk4(s) => s.name(),
-            SolverChoice::Accurate(s) => s.name(),
-        }
+        self.solver().name()
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
-        match self {
-            SolverChoice::SeedRk4(s) => s.solve(scenario),
-            SolverChoice::Accurate(s) => s.solve(scenario),
-        }
+        self.solver().solve(scenario)
     }
 }
 
 impl RecordingSolver for SolverChoice {
-    fn solve_recorded(
-        &self,
-        scenario: &Scenario,
-        interval: f64,
-    ) -> Result<(Outcome, History), KickError> {
+    /// Solvers without a time history of their own (closed forms and the
+    /// split path) record through `accurate`.
+    fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
         match self {
             SolverChoice::SeedRk4(s) => s.solve_recorded(scenario, interval),
+            SolverChoice::FullState(s) => s.solve_recorded(scenario, interval),
+            SolverChoice::Reduced(s) => s.solve_recorded(scenario, interval),
+            SolverChoice::Auto(s) => s.solve_recorded(scenario, interval),
             SolverChoice::Accurate(s) => s.solve_recorded(scenario, interval),
+            SolverChoice::ReducedReturn(_) | SolverChoice::ClosedForm(_) => Accurate::default().solve_recorded(scenario, interval),
         }
     }
 }
-pub mod table2;

@@ -120,6 +120,32 @@ impl<L: ContactLaw + Copy> ContactOde<L> {
     }
 }
 
+impl<L: ContactLaw + Copy> crate::events::ContactSystem<7> for ContactOde<L> {
+    #[inline]
+    fn derivative(&self, _t: f64, y: &State) -> State {
+        ContactOde::derivative(self, y)
+    }
+    #[inline]
+    fn compression(&self, y: &State) -> f64 {
+        compression(y)
+    }
+    #[inline]
+    fn compression_rate(&self, y: &State) -> f64 {
+        compression_rate(y)
+    }
+    #[inline]
+    fn force(&self, y: &State) -> f64 {
+        ContactOde::force(self, y)
+    }
+    #[inline]
+    fn force_rate(&self, y: &State) -> f64 {
+        ContactOde::force_rate(self, y)
+    }
+    fn units(&self, s: &crate::events::Scales) -> State {
+        State::from([s.length, s.speed, s.length, s.speed, s.momentum, s.energy, s.energy])
+    }
+}
+
 /// State at first touch: δ = 0, nothing accumulated yet.
 pub fn initial_state(scenario: &Scenario) -> State {
     State::from([0.0, scenario.foot_speed(), 0.0, scenario.ball_speed(), 0.0, 0.0, 0.0])
@@ -176,6 +202,7 @@ pub fn outcome<L: ContactLaw + Copy>(
     extremes: Extremes,
     stop: StopReason,
     evaluations: u64,
+    method: &'static str,
 ) -> Result<Outcome, kick_core::KickError> {
     let t = stop.time();
     let v_ball_out = y[BALL_VELOCITY];
@@ -200,6 +227,7 @@ pub fn outcome<L: ContactLaw + Copy>(
         },
         stop,
         evaluations,
+        method,
     };
     check_finite(&outcome)
 }

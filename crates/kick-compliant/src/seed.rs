@@ -107,6 +107,7 @@ impl SeedRk4 {
                     extremes,
                     StopReason::StepCondition { t: last_in_contact },
                     4 * step,
+                    "seed-rk4",
                 );
             }
         }

@@ -18,6 +18,8 @@ pub enum KickError {
     NoSeparation { time: f64, reason: String },
     #[error("unknown solver `{name}`: expected one of {expected}")]
     UnknownSolver { name: String, expected: &'static str },
+    #[error("solver `{solver}` does not apply to this scenario: {reason}")]
+    NotApplicable { solver: &'static str, reason: &'static str },
     #[error("integration failed at t = {time} s: {reason}")]
     Integration { time: f64, reason: String },
     #[error("non-finite {quantity} at t = {time} s")]

@@ -88,6 +88,8 @@ pub struct Outcome {
     pub stop: StopReason,
     /// Right-hand-side evaluations spent (0 for closed forms).
     pub evaluations: u64,
+    /// Which solver path produced it (`--solver auto` picks one per scenario).
+    pub method: &'static str,
 }
 
 impl Outcome {

@@ -1,0 +1,54 @@
+//! `auto`: the cheapest path that is exact for the scene.
+//!
+//! | scene | path |
+//! | --- | --- |
+//! | no drive, c = 0 | `closed-form` (energy integral, Beta function) |
+//! | no drive, n = 1 | `closed-form` (damped oscillator, undamped return) |
+//! | no drive | `reduced-return` (δ up to δ_max, return in closed form) |
+//! | drive | `reduced` (δ through the whole contact) |
+//! | time history wanted | `accurate` (full state, every sample real) |
+//!
+//! The chosen path is reported in [`kick_core::Outcome::method`].
+
+use crate::closed::ClosedForm;
+use crate::reduced::{Reduced, ReducedReturn};
+use crate::Accurate;
+use kick_core::{History, KickError, Outcome, RecordingSolver, Scenario, Solver};
+
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Auto {
+    pub reduced: Reduced,
+    pub accurate: Accurate,
+}
+
+impl Auto {
+    /// The name of the path `solve` takes for this scenario.
+    pub fn path(scenario: &Scenario) -> &'static str {
+        if ClosedForm::applies(scenario) {
+            "closed-form"
+        } else if ReducedReturn::applies(scenario) {
+            "reduced-return"
+        } else {
+            "reduced"
+        }
+    }
+}
+
+impl Solver for Auto {
+    fn name(&self) -> &'static str {
+        "auto"
+    }
+    fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        match Auto::path(scenario) {
+            "closed-form" => ClosedForm.solve(scenario),
+            "reduced-return" => ReducedReturn { reduced: self.reduced }.solve(scenario),
+            _ => self.reduced.solve(scenario),
+        }
+    }
+}
+
+impl RecordingSolver for Auto {
+    fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
+        self.accurate.solve_recorded(scenario, interval)
+    }
+}

@@ -1,0 +1,496 @@
+//! One event-located integration engine for every 1D solver except the seed.
+//!
+//! A contact is integrated phase by phase (compression while δ̇ > 0,
+//! restitution while δ̇ < 0). A phase stops at the first accepted step across
+//! which an event function changes sign in its direction; the event time is
+//! then found by Brent's method on g(y(τ)), y(τ) coming from re-integrating
+//! that step from its start to τ with the same method. The next phase starts
+//! from the located state, so no step straddles the damping switch at δ̇ = 0
+//! or the separation.
+//!
+//! Events: maximum compression (δ̇: + → −), force peak (dF/dt: + → −),
+//! separation (δ: + → −), re-compression (δ̇: − → +, possible with a drive).
+//!
+//! States are integrated in units of the scenario ([`Scales`]): lengths in
+//! δ* (the undamped maximum compression), speeds in V0, time in δ*/V0, so one
+//! relative and absolute tolerance serve every scenario from k = 1e2 to 1e12.
+
+use kick_core::{roots, ContactLaw, KickError, Scenario};
+use nalgebra::SVector;
+use ode_solvers::{dop853::Dop853, dopri5::Dopri5, rk4::Rk4, OutputType, System};
+
+/// A contact model as the engine sees it: a right-hand side on N states
+/// plus the quantities events are made of.
+pub trait ContactSystem<const N: usize>: Copy {
+    fn derivative(&self, t: f64, y: &SVector<f64, N>) -> SVector<f64, N>;
+    /// δ
+    fn compression(&self, y: &SVector<f64, N>) -> f64;
+    /// δ̇
+    fn compression_rate(&self, y: &SVector<f64, N>) -> f64;
+    /// F on the contact branch.
+    fn force(&self, y: &SVector<f64, N>) -> f64;
+    /// dF/dt along the solution.
+    fn force_rate(&self, y: &SVector<f64, N>) -> f64;
+    /// Unit of each state component (see [`Scales`]).
+    fn units(&self, scales: &Scales) -> SVector<f64, N>;
+}
+
+/// Units of the scenario, from the undamped, undriven contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scales {
+    /// δ*, m (Eq. 34 with equality).
+    pub length: f64,
+    /// V0, m/s.
+    pub speed: f64,
+    /// δ*/V0, s.
+    pub time: f64,
+    /// μ V0, N s.
+    pub momentum: f64,
+    /// μ V0², J.
+    pub energy: f64,
+}
+
+impl Scales {
+    pub fn of(scenario: &Scenario) -> Scales {
+        let length = scenario.elastic_max_compression();
+        let speed = scenario.approach_speed();
+        let mu = scenario.reduced_mass();
+        Scales {
+            length,
+            speed,
+            time: length / speed,
+            momentum: mu * speed,
+            energy: mu * speed * speed,
+        }
+    }
+}
+
+/// How steps are taken.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Method {
+    /// ode_solvers' Dop853 (8th order, adaptive).
+    Dop853 { relative_tolerance: f64, absolute_tolerance: f64 },
+    /// ode_solvers' Dopri5 (5th order, adaptive).
+    Dopri5 { relative_tolerance: f64, absolute_tolerance: f64 },
+    /// ode_solvers' classical Rk4 at a fixed step in seconds.
+    Rk4 { step: f64 },
+}
+
+impl Method {
+    pub fn validate(&self) -> Result<(), KickError> {
+        let check = |name: &'static str, value: f64, ok: bool, requirement: &'static str| {
+            if ok {
+                Ok(())
+            } else {
+                Err(KickError::InvalidParameter { name, value, requirement })
+            }
+        };
+        match *self {
+            Method::Dop853 { relative_tolerance: r, absolute_tolerance: a }
+            | Method::Dopri5 { relative_tolerance: r, absolute_tolerance: a } => {
+                check("rtol", r, r.is_finite() && r > 0.0 && r < 1.0, "in (0, 1)")?;
+                check("atol", a, a.is_finite() && a > 0.0 && a < 1.0, "in (0, 1)")
+            }
+            Method::Rk4 { step } => check("dt", step, step.is_finite() && step > 0.0, "finite and > 0"),
+        }
+    }
+}
+
+/// Bound on accepted steps in one phase of an adaptive method.
+pub const MAX_STEPS_PER_PHASE: u32 = 100_000;
+/// Most phases (compression/restitution alternations under a drive) per run.
+pub const MAX_PHASES: usize = 10_000;
+/// Most fixed RK4 steps in one run.
+pub const MAX_FIXED_STEPS: f64 = 2.0e8;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Event {
+    MaxCompression,
+    ForcePeak,
+    Separation,
+    Recompression,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Phase {
+    Compression,
+    Restitution,
+}
+
+impl Phase {
+    fn events(self) -> &'static [Event] {
+        match self {
+            Phase::Compression => &[Event::MaxCompression, Event::ForcePeak],
+            Phase::Restitution => &[Event::Separation, Event::Recompression, Event::ForcePeak],
+        }
+    }
+}
+
+impl Event {
+    fn value<S: ContactSystem<N>, const N: usize>(self, system: &S, y: &SVector<f64, N>) -> f64 {
+        match self {
+            Event::MaxCompression | Event::Recompression => system.compression_rate(y),
+            Event::ForcePeak => system.force_rate(y),
+            Event::Separation => system.compression(y),
+        }
+    }
+    fn crossed(self, before: f64, after: f64) -> bool {
+        match self {
+            Event::Recompression => before < 0.0 && after >= 0.0,
+            _ => before > 0.0 && after <= 0.0,
+        }
+    }
+}
+
+/// The system in scaled units: ŷ = y / u, τ = t / T, dŷ/dτ = T f(u ŷ) / u.
+#[derive(Clone, Copy)]
+struct Scaled<S, const N: usize> {
+    system: S,
+    units: SVector<f64, N>,
+    time: f64,
+}
+
+impl<S: ContactSystem<N>, const N: usize> Scaled<S, N> {
+    #[inline]
+    fn unscale(&self, y: &SVector<f64, N>) -> SVector<f64, N> {
+        y.component_mul(&self.units)
+    }
+    #[inline]
+    fn scale(&self, y: &SVector<f64, N>) -> SVector<f64, N> {
+        y.component_div(&self.units)
+    }
+    #[inline]
+    fn derivative(&self, tau: f64, y: &SVector<f64, N>) -> SVector<f64, N> {
+        self.system
+            .derivative(tau * self.time, &self.unscale(y))
+            .component_div(&self.units)
+            * self.time
+    }
+}
+
+/// Watches for events after each accepted step.
+struct Watcher<'a, S, const N: usize> {
+    scaled: Scaled<S, N>,
+    events: &'static [Event],
+    previous: SVector<f64, N>,
+    recorder: Option<&'a mut dyn FnMut(f64, &SVector<f64, N>)>,
+}
+
+impl<S: ContactSystem<N>, const N: usize> System<f64, SVector<f64, N>> for Watcher<'_, S, N> {
+    fn system(&self, tau: f64, y: &SVector<f64, N>, dy: &mut SVector<f64, N>) {
+        *dy = self.scaled.derivative(tau, y);
+    }
+    fn solout(&mut self, tau: f64, y: &SVector<f64, N>, _dy: &SVector<f64, N>) -> bool {
+        let (before, after) = (self.scaled.unscale(&self.previous), self.scaled.unscale(y));
+        let system = &self.scaled.system;
+        if self
+            .events
+            .iter()
+            .any(|e| e.crossed(e.value(system, &before), e.value(system, &after)))
+        {
+            return true;
+        }
+        if let Some(record) = self.recorder.as_deref_mut() {
+            record(tau * self.scaled.time, &after);
+        }
+        self.previous = *y;
+        false
+    }
+}
+
+struct Plain<S, const N: usize>(Scaled<S, N>);
+
+impl<S: ContactSystem<N>, const N: usize> System<f64, SVector<f64, N>> for Plain<S, N> {
+    fn system(&self, tau: f64, y: &SVector<f64, N>, dy: &mut SVector<f64, N>) {
+        *dy = self.0.derivative(tau, y);
+    }
+}
+
+fn integration_error(tau: f64, time: f64, error: impl std::fmt::Display) -> KickError {
+    KickError::Integration { time: tau * time, reason: error.to_string() }
+}
+
+/// Run one ode_solvers integration from τ0 to τ1 and return the kept points.
+fn integrate<F: System<f64, SVector<f64, N>>, const N: usize>(
+    method: Method,
+    system: F,
+    tau0: f64,
+    tau1: f64,
+    y0: SVector<f64, N>,
+    max_step: f64,
+    first_step: f64,
+    time_unit: f64,
+    evaluations: &mut u64,
+) -> Result<(Vec<f64>, Vec<SVector<f64, N>>), KickError> {
+    macro_rules! adaptive {
+        ($solver:ident, $r:expr, $a:expr, $fac_min:expr, $fac_max:expr) => {{
+            let mut stepper = $solver::from_param(
+                system, tau0, tau1, 0.0, y0, $r, $a, 0.9, 0.0, $fac_min, $fac_max, max_step,
+                first_step, MAX_STEPS_PER_PHASE, u32::MAX, OutputType::Sparse,
+            );
+            let stats = stepper.integrate().map_err(|e| integration_error(tau0, time_unit, e))?;
+            *evaluations += u64::from(stats.num_eval);
+            let (x, y) = stepper.results().get();
+            Ok((x.clone(), y.clone()))
+        }};
+    }
+    match method {
+        Method::Dop853 { relative_tolerance, absolute_tolerance } => {
+            adaptive!(Dop853, relative_tolerance, absolute_tolerance, 0.333, 6.0)
+        }
+        Method::Dopri5 { relative_tolerance, absolute_tolerance } => {
+            adaptive!(Dopri5, relative_tolerance, absolute_tolerance, 0.2, 10.0)
+        }
+        Method::Rk4 { step } => {
+            // The caller passes the scaled step as `first_step`.
+            let h = first_step;
+            if !((tau1 - tau0) / h <= MAX_FIXED_STEPS) {
+                return Err(KickError::InvalidParameter {
+                    name: "dt",
+                    value: step,
+                    requirement: "large enough that the contact horizon fits in 2e8 steps",
+                });
+            }
+            let mut stepper = Rk4::new(system, tau0, y0, tau1, h);
+            let stats = stepper.integrate().map_err(|e| integration_error(tau0, time_unit, e))?;
+            *evaluations += u64::from(stats.num_eval);
+            Ok((stepper.x_out().clone(), stepper.y_out().clone()))
+        }
+    }
+}
+
+/// The engine for one scenario.
+pub struct Engine<S, const N: usize> {
+    method: Method,
+    scaled: Scaled<S, N>,
+    pub scales: Scales,
+    pub evaluations: u64,
+}
+
+/// Where a run ended.
+#[derive(Debug, Clone, Copy)]
+pub struct RunEnd<const N: usize> {
+    pub time: f64,
+    pub state: SVector<f64, N>,
+    pub peak_force: f64,
+    pub peak_force_time: f64,
+    pub max_compression: f64,
+    pub max_compression_time: f64,
+}
+
+/// Where to stop.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StopAt {
+    Separation,
+    /// The first maximum compression (the rest follows in closed form).
+    MaxCompression,
+}
+
+impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
+    pub fn new(method: Method, system: S, scenario: &Scenario) -> Result<Self, KickError> {
+        method.validate()?;
+        let scales = Scales::of(scenario);
+        Ok(Engine {
+            method,
+            scaled: Scaled { system, units: system.units(&scales), time: scales.time },
+            scales,
+            evaluations: 0,
+        })
+    }
+
+    /// y(t1) from y(t0), in one step when the error estimate allows.
+    fn advance(&mut self, tau0: f64, y0: SVector<f64, N>, tau1: f64) -> Result<SVector<f64, N>, KickError> {
+        if tau1 <= tau0 {
+            return Ok(y0);
+        }
+        let h = tau1 - tau0;
+        // Below the adaptive methods' step-size floor one RK4 step is exact to
+        // rounding; for the fixed-step method it is the method itself (ode_solvers'
+        // Rk4 rounds the step count up and could overshoot τ1).
+        if h <= 1e3 * f64::EPSILON * tau0.abs() || matches!(self.method, Method::Rk4 { .. }) {
+            self.evaluations += 4;
+            let f = |y: &SVector<f64, N>| self.scaled.derivative(tau0, y);
+            let k1 = f(&y0);
+            let k2 = f(&(y0 + k1 * (0.5 * h)));
+            let k3 = f(&(y0 + k2 * (0.5 * h)));
+            let k4 = f(&(y0 + k3 * h));
+            return Ok(y0 + (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0));
+        }
+        let (_, ys) = integrate(
+            self.method, Plain(self.scaled), tau0, tau1, y0, h, h, self.scaled.time, &mut self.evaluations,
+        )?;
+        ys.last().copied().ok_or_else(|| integration_error(tau0, self.scaled.time, "empty step"))
+    }
+
+    /// Integrate one phase from (τ, ŷ) to its first event or to τ_end.
+    fn phase(
+        &mut self,
+        phase: Phase,
+        tau: f64,
+        y: SVector<f64, N>,
+        tau_end: f64,
+        max_step: f64,
+        recorder: Option<&mut dyn FnMut(f64, &SVector<f64, N>)>,
+    ) -> Result<Option<(Event, f64, SVector<f64, N>)>, KickError> {
+        let watcher = Watcher { scaled: self.scaled, events: phase.events(), previous: y, recorder };
+        let first_step = match self.method {
+            Method::Rk4 { step } => step / self.scaled.time,
+            _ => 0.0,
+        };
+        let (taus, ys) = integrate(
+            self.method, watcher, tau, tau_end, y, max_step, first_step, self.scaled.time, &mut self.evaluations,
+        )?;
+        let n = ys.len();
+        if n < 2 {
+            return Ok(None);
+        }
+        let system = self.scaled.system;
+        let (before, after) = (self.scaled.unscale(&ys[n - 2]), self.scaled.unscale(&ys[n - 1]));
+        let Some(&event) = phase
+            .events()
+            .iter()
+            .find(|e| e.crossed(e.value(&system, &before), e.value(&system, &after)))
+        else {
+            return Ok(None);
+        };
+        let (tau_a, y_a, tau_b) = (taus[n - 2], ys[n - 2], taus[n - 1]);
+        let g_before = event.value(&system, &before);
+        let mut failure = None;
+        let root = roots::brent(
+            |t| match self.advance(tau_a, y_a, t) {
+                Ok(state) => event.value(&system, &self.scaled.unscale(&state)),
+                Err(e) => {
+                    failure = Some(e);
+                    f64::NAN
+                }
+            },
+            tau_a,
+            tau_b,
+            4.0 * f64::EPSILON * tau_b.abs(),
+            200,
+        );
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        let root = root.ok_or_else(|| integration_error(tau_a, self.scaled.time, format!("could not locate {event:?}")))?;
+        // Continue from the end of the final bracket past the event, so the
+        // next phase does not find the same crossing again.
+        let mut tau_event = root.x;
+        let mut state = self.advance(tau_a, y_a, tau_event)?;
+        if !event.crossed(g_before, event.value(&system, &self.scaled.unscale(&state))) && root.other != root.x {
+            tau_event = root.other;
+            state = self.advance(tau_a, y_a, tau_event)?;
+        }
+        Ok(Some((event, tau_event, state)))
+    }
+
+    /// Integrate a contact from first touch (`y0`, SI units) to `stop`.
+    /// `recorder` sees SI time and state at every accepted step and event;
+    /// steps are then at most `interval` seconds apart.
+    pub fn run<L: ContactLaw>(
+        &mut self,
+        scenario: &Scenario,
+        law: &L,
+        y0: SVector<f64, N>,
+        stop: StopAt,
+        mut recorder: Option<(&mut dyn FnMut(f64, &SVector<f64, N>), f64)>,
+    ) -> Result<RunEnd<N>, KickError> {
+        let time_unit = self.scaled.time;
+        let tau_end = scenario.contact_horizon() / time_unit;
+        let mut tau = 0.0;
+        let mut y = self.scaled.scale(&y0);
+        let system = self.scaled.system;
+        let mut end = RunEnd {
+            time: 0.0,
+            state: y0,
+            peak_force: law.onset_force(scenario.approach_speed()),
+            peak_force_time: 0.0,
+            max_compression: 0.0,
+            max_compression_time: 0.0,
+        };
+        if let Some((record, _)) = recorder.as_mut() {
+            record(0.0, &y0);
+        }
+        let mut phase = Phase::Compression;
+        for _ in 0..MAX_PHASES {
+            let (record, max_step) = match recorder.as_mut() {
+                Some((r, interval)) => (Some(&mut **r as &mut dyn FnMut(f64, &SVector<f64, N>)), *interval / time_unit),
+                None => (None, tau_end),
+            };
+            let hit = self.phase(phase, tau, y, tau_end, max_step, record)?;
+            let Some((event, tau_event, y_event)) = hit else {
+                return Err(KickError::NoSeparation {
+                    time: tau_end * time_unit,
+                    reason: format!(
+                        "contact outlasted the horizon of {:.6e} s = {} x the undriven elastic contact time",
+                        tau_end * time_unit,
+                        kick_core::scenario::CONTACT_HORIZON_FACTOR
+                    ),
+                });
+            };
+            tau = tau_event;
+            y = y_event;
+            let t = tau * time_unit;
+            let state = self.scaled.unscale(&y);
+            let (force, compression) = (system.force(&state), system.compression(&state));
+            if force > end.peak_force {
+                end.peak_force = force;
+                end.peak_force_time = t;
+            }
+            if compression > end.max_compression {
+                end.max_compression = compression;
+                end.max_compression_time = t;
+            }
+            if let Some((record, _)) = recorder.as_mut() {
+                record(t, &state);
+            }
+            end.time = t;
+            end.state = state;
+            match event {
+                Event::ForcePeak => {}
+                Event::Recompression => phase = Phase::Compression,
+                Event::MaxCompression => {
+                    if stop == StopAt::MaxCompression {
+                        return Ok(end);
+                    }
+                    phase = Phase::Restitution;
+                    check_release(scenario, law, compression, t)?;
+                }
+                Event::Separation => return Ok(end),
+            }
+        }
+        Err(KickError::NoSeparation {
+            time: tau * time_unit,
+            reason: format!("more than {MAX_PHASES} compression/restitution phases"),
+        })
+    }
+}
+
+/// Under a constant drive and a law that is conservative while restituting,
+/// the return from δ_max conserves ½ μ δ̇² + U(δ) − (μ/m_f) F_drive δ. The
+/// ball reaches δ = 0 only if U(δ_max) ≥ (μ/m_f) F_drive δ_max; otherwise it
+/// turns back before release, and later compressions only lose energy.
+fn check_release<L: ContactLaw>(
+    scenario: &Scenario,
+    law: &L,
+    max_compression: f64,
+    t: f64,
+) -> Result<(), KickError> {
+    let drive = scenario.drive_force();
+    if drive <= 0.0 || !law.damps_compression_only() {
+        return Ok(());
+    }
+    let drive_share = scenario.reduced_mass() / scenario.effective_foot_mass() * drive;
+    let stored = law.potential(max_compression);
+    if stored < drive_share * max_compression {
+        return Err(KickError::NoSeparation {
+            time: t,
+            reason: format!(
+                "at maximum compression the stored energy U(δ_max) = {stored:.6e} J is below the \
+                 drive's share (μ/m_f) F_drive δ_max = {:.6e} J, so the ball turns back before release",
+                drive_share * max_compression
+            ),
+        });
+    }
+    Ok(())
+}

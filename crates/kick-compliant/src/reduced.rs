@@ -1,0 +1,249 @@
+//! Solvers on the relative coordinate only (Eq. 18).
+//!
+//! `reduced` integrates (δ, δ̇, D) and recovers foot and ball from the
+//! centre of mass, which moves uniformly (or uniformly accelerated by the
+//! drive, Eq. 26):
+//! V_cm(t) = V_cm⁻ + F_drive t / M, v_f = V_cm + (m_b/M) δ̇, v_b = V_cm − (m_f/M) δ̇,
+//! and the drive work is F_drive x_f(t) with x_f = X_cm + (m_b/M) δ.
+//! Three states instead of seven, and no cancellation in δ = x_f − x_b.
+//!
+//! `reduced-return` integrates only the compression of a passive run and
+//! takes the undamped return from δ_max in closed form
+//! ([`crate::closed::passive_return`]).
+
+use crate::closed::{passive_return, CompressionEnd};
+use crate::events::{ContactSystem, Engine, Method, Scales, StopAt};
+use kick_core::{
+    ContactLaw, EnergyBudget, History, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, StopReason,
+};
+use nalgebra::SVector;
+
+/// (δ, δ̇, D).
+pub type RelativeState = SVector<f64, 3>;
+
+/// Eq. 18 with the dissipation integral.
+#[derive(Debug, Clone, Copy)]
+pub struct RelativeOde<L> {
+    pub law: L,
+    pub reduced_mass: f64,
+    /// (μ/m_f) F_drive, the drive's share on the relative coordinate.
+    pub drive_share: f64,
+}
+
+impl<L: ContactLaw + Copy> RelativeOde<L> {
+    pub fn new(scenario: &Scenario, law: L) -> Self {
+        RelativeOde {
+            law,
+            reduced_mass: scenario.reduced_mass(),
+            drive_share: scenario.reduced_mass() / scenario.effective_foot_mass() * scenario.drive_force(),
+        }
+    }
+    #[inline]
+    fn acceleration(&self, y: &RelativeState) -> f64 {
+        (self.drive_share - self.law.contact_force(y[0], y[1])) / self.reduced_mass
+    }
+}
+
+impl<L: ContactLaw + Copy> ContactSystem<3> for RelativeOde<L> {
+    #[inline]
+    fn derivative(&self, _t: f64, y: &RelativeState) -> RelativeState {
+        let force = self.law.contact_force(y[0], y[1]);
+        let elastic = if y[0] > 0.0 { self.law.force(y[0], 0.0) } else { 0.0 };
+        RelativeState::new(y[1], (self.drive_share - force) / self.reduced_mass, (force - elastic) * y[1])
+    }
+    #[inline]
+    fn compression(&self, y: &RelativeState) -> f64 {
+        y[0]
+    }
+    #[inline]
+    fn compression_rate(&self, y: &RelativeState) -> f64 {
+        y[1]
+    }
+    #[inline]
+    fn force(&self, y: &RelativeState) -> f64 {
+        self.law.contact_force(y[0], y[1])
+    }
+    #[inline]
+    fn force_rate(&self, y: &RelativeState) -> f64 {
+        let (d_delta, d_rate) = self.law.force_gradient(y[0], y[1]);
+        d_delta * y[1] + d_rate * self.acceleration(y)
+    }
+    fn units(&self, s: &Scales) -> RelativeState {
+        RelativeState::new(s.length, s.speed, s.energy)
+    }
+}
+
+/// Foot and ball from the relative state at time t.
+#[derive(Debug, Clone, Copy)]
+struct Reconstruction {
+    foot_velocity: f64,
+    ball_velocity: f64,
+    foot_position: f64,
+    ball_position: f64,
+    drive_work: f64,
+}
+
+fn reconstruct(scenario: &Scenario, t: f64, y: &RelativeState) -> Reconstruction {
+    let total = scenario.total_mass();
+    let drive = scenario.drive_force();
+    let v_cm = scenario.centre_of_mass_speed() + drive * t / total; // Eq. 26
+    let x_cm = scenario.centre_of_mass_speed() * t + 0.5 * drive * t * t / total;
+    let foot_share = scenario.ball_mass() / total;
+    let ball_share = scenario.effective_foot_mass() / total;
+    let foot_position = x_cm + foot_share * y[0];
+    Reconstruction {
+        foot_velocity: v_cm + foot_share * y[1],
+        ball_velocity: v_cm - ball_share * y[1],
+        foot_position,
+        ball_position: x_cm - ball_share * y[0],
+        drive_work: drive * foot_position,
+    }
+}
+
+fn sample<L: ContactLaw>(scenario: &Scenario, law: &L, t: f64, y: &RelativeState) -> Sample {
+    let r = reconstruct(scenario, t, y);
+    Sample {
+        time: t,
+        foot_position: r.foot_position,
+        foot_velocity: r.foot_velocity,
+        ball_position: r.ball_position,
+        ball_velocity: r.ball_velocity,
+        compression: y[0].max(0.0),
+        force: law.contact_force(y[0], y[1]),
+        kinetic: 0.5 * scenario.effective_foot_mass() * r.foot_velocity.powi(2)
+            + 0.5 * scenario.ball_mass() * r.ball_velocity.powi(2),
+        elastic: law.potential(y[0]),
+        dissipated: y[2],
+        drive_work: r.drive_work,
+    }
+}
+
+/// Event-located integration of Eq. 18 (Dop853 by default).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reduced {
+    pub method: Method,
+}
+
+impl Default for Reduced {
+    fn default() -> Self {
+        Reduced { method: Method::Dop853 { relative_tolerance: 1e-12, absolute_tolerance: 1e-12 } }
+    }
+}
+
+impl Reduced {
+    pub fn with_tolerances(relative_tolerance: f64, absolute_tolerance: f64) -> Result<Self, KickError> {
+        let method = Method::Dop853 { relative_tolerance, absolute_tolerance };
+        method.validate()?;
+        Ok(Reduced { method })
+    }
+
+    pub fn solve_law<L: ContactLaw + Copy>(
+        &self,
+        scenario: &Scenario,
+        law: L,
+        recorder: Option<(&mut History, f64)>,
+    ) -> Result<Outcome, KickError> {
+        let system = RelativeOde::new(scenario, law);
+        let mut engine = Engine::new(self.method, system, scenario)?;
+        let y0 = RelativeState::new(0.0, scenario.approach_speed(), 0.0);
+        let end = match recorder {
+            Some((history, interval)) => {
+                let mut record = |t: f64, y: &RelativeState| history.samples.push(sample(scenario, &law, t, y));
+                engine.run(scenario, &law, y0, StopAt::Separation, Some((&mut record, interval)))?
+            }
+            None => engine.run(scenario, &law, y0, StopAt::Separation, None)?,
+        };
+        let r = reconstruct(scenario, end.time, &end.state);
+        let kinetic_final = 0.5 * scenario.effective_foot_mass() * r.foot_velocity.powi(2)
+            + 0.5 * scenario.ball_mass() * r.ball_velocity.powi(2);
+        let outcome = Outcome {
+            v_ball_out: r.ball_velocity,
+            v_foot_out: r.foot_velocity,
+            speed_ratio: r.ball_velocity / scenario.foot_speed(),
+            peak_force: end.peak_force,
+            peak_force_time: end.peak_force_time,
+            contact_time: end.time,
+            max_compression: end.max_compression,
+            max_compression_time: end.max_compression_time,
+            impulse: scenario.ball_mass() * (r.ball_velocity - scenario.ball_speed()), // Eq. 2
+            restitution: (r.ball_velocity - r.foot_velocity) / scenario.approach_speed(),
+            energy: EnergyBudget {
+                kinetic_initial: scenario.initial_kinetic_energy(),
+                kinetic_final,
+                elastic_final: law.potential(end.state[0]),
+                dissipated: end.state[2],
+                drive_work: r.drive_work,
+            },
+            stop: StopReason::Separated { t: end.time },
+            evaluations: engine.evaluations,
+            method: "reduced",
+        };
+        crate::ode::check_finite(&outcome)
+    }
+}
+
+impl Solver for Reduced {
+    fn name(&self) -> &'static str {
+        "reduced"
+    }
+    fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        self.solve_law(scenario, scenario.law(), None)
+    }
+}
+
+impl RecordingSolver for Reduced {
+    fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
+        if !(interval.is_finite() && interval > 0.0) {
+            return Err(KickError::InvalidParameter { name: "interval", value: interval, requirement: "finite and > 0" });
+        }
+        let mut history = History::default();
+        let outcome = self.solve_law(scenario, scenario.law(), Some((&mut history, interval)))?;
+        Ok((outcome, history))
+    }
+}
+
+/// Compression by [`Reduced`], return in closed form. Passive runs of the
+/// paper's law only (no drive; damping acts only while compressing).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ReducedReturn {
+    pub reduced: Reduced,
+}
+
+impl ReducedReturn {
+    pub fn applies(scenario: &Scenario) -> bool {
+        scenario.drive_force() == 0.0
+    }
+}
+
+impl Solver for ReducedReturn {
+    fn name(&self) -> &'static str {
+        "reduced-return"
+    }
+    fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        if !Self::applies(scenario) {
+            return Err(KickError::NotApplicable {
+                solver: "reduced-return",
+                reason: "its return phase is in closed form only without a drive force",
+            });
+        }
+        let law = scenario.law();
+        let system = RelativeOde::new(scenario, law);
+        let mut engine = Engine::new(self.reduced.method, system, scenario)?;
+        let y0 = RelativeState::new(0.0, scenario.approach_speed(), 0.0);
+        let end = engine.run(scenario, &law, y0, StopAt::MaxCompression, None)?;
+        let mut outcome = passive_return(
+            scenario,
+            CompressionEnd {
+                max_compression: end.max_compression,
+                max_compression_time: end.max_compression_time,
+                dissipated: end.state[2],
+                peak_force: end.peak_force,
+                peak_force_time: end.peak_force_time,
+            },
+        )?;
+        outcome.evaluations = engine.evaluations;
+        outcome.method = "reduced-return";
+        outcome.stop = StopReason::Separated { t: outcome.contact_time };
+        Ok(outcome)
+    }
+}
