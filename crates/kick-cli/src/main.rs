@@ -1,5 +1,6 @@
 //! `kick`: the command line of the kick workspace.
 
+mod check;
 mod fit;
 mod output;
 mod simulate;
@@ -21,6 +22,8 @@ enum Command {
     Simulate(simulate::Args),
     /// Table 2 side by side: printed, seed-rk4 and accurate values.
     Table2(table2::Args),
+    /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
+    Check(check::Args),
     /// Identify parameters from printed or measured data.
     #[command(subcommand)]
     Fit(fit::FitCommand),
@@ -31,6 +34,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Simulate(args) => simulate::run(args),
         Command::Table2(args) => table2::run(args),
+        Command::Check(args) => check::run(args),
         Command::Fit(command) => fit::run(command),
     };
     match result {
