@@ -1,0 +1,519 @@
+//! A family of contact laws beside the paper's (Eq. 20), all behind [`ContactLaw`].
+//!
+//! - Hysteresis-damped power laws F = k δⁿ (1 + χ δ̇), clamped at F ≥ 0, with χ
+//!   chosen from a target restitution e at a reference impact speed V0:
+//!   - Hunt–Crossley in the Marhefka–Orin form, χ = 3(1 − e)/(2 V0);
+//!   - Lankarani–Nikravesh, χ = 3(1 − e²)/(4 V0) (their D = χ k δⁿ, i.e.
+//!     D = 3 k (1 − e²) δⁿ/(4 V0));
+//!   - Flores et al. (2011), χ = 8(1 − e)/(5 e V0).
+//! - Linear Kelvin–Voigt F = k δ + c δ̇, clamped at F ≥ 0 so it never pulls.
+//!
+//! Unlike Eq. 20's `c max(δ̇, 0)`, these laws damp during restitution too.
+//! The hysteresis laws start at F(0⁺) = 0; the paper's law and Kelvin–Voigt
+//! jump to c V0 at first touch.
+//!
+//! Small-damping energy balance (used to derive the χ formulas and checked
+//! by the tests): along the undamped motion ½ μ δ̇² + k δⁿ⁺¹/(n+1) = ½ μ V0²,
+//! the loss over one compression/restitution cycle is
+//! ΔE = ∮ χ k δⁿ δ̇² dt = (4/3) χ V0 · ½ μ V0², for every n. With
+//! e² = 1 − ΔE/(½ μ V0²) this gives 1 − e² = (4/3) χ V0 to first order in χ V0.
+//!
+//! Exact restitution of the hysteresis laws: with U = k δⁿ⁺¹/(n+1) and
+//! v = δ̇, the relative motion (Eq. 18) gives μ v dv/(1 + χ v) = −dU, which
+//! no longer contains k or n. Integrating over compression (V0 → 0) and
+//! restitution (0 → −V_e) and equating the two U(δ_max):
+//! x0 − ln(1 + x0) = −x_e − ln(1 − x_e), x0 = χ V0, x_e = χ V_e, e = x_e/x0,
+//! for every k, n and μ. Since x_e < 1, 1 + χ δ̇ stays positive and the clamp
+//! never acts in a passive impact.
+
+use crate::error::KickError;
+use crate::law::{ContactLaw, PowerLawContact};
+use serde::{Deserialize, Serialize};
+
+/// Which formula turned a target restitution into the hysteresis factor χ.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum HysteresisModel {
+    /// χ = 3(1 − e)/(2 V0) (Hunt–Crossley 1975, Marhefka–Orin 1999 form).
+    HuntCrossley,
+    /// χ = 3(1 − e²)/(4 V0) (Lankarani–Nikravesh 1990).
+    LankaraniNikravesh,
+    /// χ = 8(1 − e)/(5 e V0) (Flores, Machado, Silva, Martins 2011).
+    Flores,
+}
+
+impl HysteresisModel {
+    /// χ in s/m for restitution `e` at impact speed `v0`.
+    pub fn hysteresis_factor(self, e: f64, v0: f64) -> f64 {
+        match self {
+            HysteresisModel::HuntCrossley => 3.0 * (1.0 - e) / (2.0 * v0),
+            HysteresisModel::LankaraniNikravesh => 3.0 * (1.0 - e * e) / (4.0 * v0),
+            HysteresisModel::Flores => 8.0 * (1.0 - e) / (5.0 * e * v0),
+        }
+    }
+}
+
+/// F = k δⁿ (1 + χ δ̇) for δ > 0, clamped at ≥ 0; zero for δ ≤ 0.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HysteresisContact {
+    /// k in N/mⁿ.
+    pub stiffness: f64,
+    /// n.
+    pub exponent: f64,
+    /// χ in s/m.
+    pub hysteresis: f64,
+    /// The formula χ came from, with its target e and reference V0.
+    pub model: HysteresisModel,
+    pub target_restitution: f64,
+    pub impact_speed: f64,
+}
+
+impl HysteresisContact {
+    /// χ from `model` for restitution `e` ∈ (0, 1] at impact speed `v0` > 0.
+    pub fn new(
+        model: HysteresisModel,
+        stiffness: f64,
+        exponent: f64,
+        e: f64,
+        v0: f64,
+    ) -> Result<Self, KickError> {
+        check_positive("stiffness", stiffness)?;
+        check_positive("exponent", exponent)?;
+        check_positive("impact_speed", v0)?;
+        check_restitution(e)?;
+        Ok(HysteresisContact {
+            stiffness,
+            exponent,
+            hysteresis: model.hysteresis_factor(e, v0),
+            model,
+            target_restitution: e,
+            impact_speed: v0,
+        })
+    }
+
+    /// Restitution of a passive impact at approach speed `v0` (module docs):
+    /// the root x_e ∈ (0, 1) of x_e + ln(1 − x_e) + x0 − ln(1 + x0) = 0, over x0.
+    pub fn exact_restitution(&self, v0: f64) -> Result<f64, KickError> {
+        check_positive("impact_speed", v0)?;
+        let x0 = self.hysteresis * v0;
+        if x0 == 0.0 {
+            return Ok(1.0);
+        }
+        let lhs = x0 - x0.ln_1p();
+        // g(0) = lhs > 0, g → −∞ as x_e → 1: one root, bracketed.
+        let g = |xe: f64| lhs - (-xe - (-xe).ln_1p());
+        let root = crate::roots::brent(g, 0.0, 1.0 - 1e-15, 1e-16, 200).ok_or(KickError::InvalidParameter {
+            name: "hysteresis",
+            value: self.hysteresis,
+            requirement: "finite and >= 0",
+        })?;
+        Ok((root.x / x0).min(1.0))
+    }
+
+    /// The unclamped value k δⁿ (1 + χ δ̇) at δ ≥ 0.
+    #[inline]
+    fn raw(&self, compression: f64, compression_rate: f64) -> f64 {
+        self.stiffness * compression.max(0.0).powf(self.exponent) * (1.0 + self.hysteresis * compression_rate)
+    }
+}
+
+impl ContactLaw for HysteresisContact {
+    #[inline]
+    fn force(&self, compression: f64, compression_rate: f64) -> f64 {
+        if compression > 0.0 {
+            // Clamped: a fast-opening contact would otherwise pull (1 + χ δ̇ < 0).
+            self.raw(compression, compression_rate).max(0.0)
+        } else {
+            0.0
+        }
+    }
+    #[inline]
+    fn potential(&self, compression: f64) -> f64 {
+        let d = compression.max(0.0);
+        self.stiffness * d.powf(self.exponent + 1.0) / (self.exponent + 1.0)
+    }
+    #[inline]
+    fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
+        self.raw(compression, compression_rate).max(0.0)
+    }
+    fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        let factor = 1.0 + self.hysteresis * compression_rate;
+        if factor <= 0.0 {
+            return (0.0, 0.0); // clamped branch: F ≡ 0 nearby
+        }
+        let d = compression.max(0.0);
+        let n = self.exponent;
+        let d_delta = if d > 0.0 {
+            n * self.stiffness * d.powf(n - 1.0) * factor
+        } else if n > 1.0 {
+            0.0
+        } else if n == 1.0 {
+            self.stiffness * factor
+        } else {
+            f64::INFINITY
+        };
+        (d_delta, self.stiffness * d.powf(n) * self.hysteresis)
+    }
+    fn damps_compression_only(&self) -> bool {
+        false
+    }
+}
+
+/// Linear Kelvin–Voigt: F = k δ + c δ̇ for δ > 0, clamped at ≥ 0 (the dashpot
+/// would pull near the end of restitution); zero for δ ≤ 0.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct KelvinVoigt {
+    /// k in N/m.
+    pub stiffness: f64,
+    /// c in N s/m.
+    pub damping: f64,
+}
+
+impl KelvinVoigt {
+    pub fn new(stiffness: f64, damping: f64) -> Result<Self, KickError> {
+        check_positive("stiffness", stiffness)?;
+        if !(damping.is_finite() && damping >= 0.0) {
+            return Err(KickError::invalid("damping", damping, "finite and >= 0"));
+        }
+        Ok(KelvinVoigt { stiffness, damping })
+    }
+
+    /// c from the restitution e of the unclamped linear oscillator over half a
+    /// damped period, e = exp(−π ζ/√(1 − ζ²)), so ζ = −ln e/√(π² + ln² e) and
+    /// c = 2 ζ √(k μ) (Eq. 46). The clamp makes the simulated e differ.
+    pub fn from_restitution(stiffness: f64, reduced_mass: f64, e: f64) -> Result<Self, KickError> {
+        check_positive("stiffness", stiffness)?;
+        check_positive("reduced_mass", reduced_mass)?;
+        check_restitution(e)?;
+        let l = e.ln();
+        let zeta = -l / (std::f64::consts::PI.powi(2) + l * l).sqrt();
+        KelvinVoigt::new(stiffness, 2.0 * zeta * (stiffness * reduced_mass).sqrt())
+    }
+
+    #[inline]
+    fn raw(&self, compression: f64, compression_rate: f64) -> f64 {
+        self.stiffness * compression.max(0.0) + self.damping * compression_rate
+    }
+}
+
+impl ContactLaw for KelvinVoigt {
+    #[inline]
+    fn force(&self, compression: f64, compression_rate: f64) -> f64 {
+        if compression > 0.0 {
+            self.raw(compression, compression_rate).max(0.0)
+        } else {
+            0.0
+        }
+    }
+    #[inline]
+    fn potential(&self, compression: f64) -> f64 {
+        let d = compression.max(0.0);
+        0.5 * self.stiffness * d * d
+    }
+    #[inline]
+    fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
+        self.raw(compression, compression_rate).max(0.0)
+    }
+    fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        if self.raw(compression, compression_rate) <= 0.0 {
+            (0.0, 0.0)
+        } else {
+            (self.stiffness, self.damping)
+        }
+    }
+    fn damps_compression_only(&self) -> bool {
+        false
+    }
+}
+
+/// The laws selectable by name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum LawKind {
+    /// The paper's law, Eq. 20.
+    PowerLaw,
+    HuntCrossley,
+    LankaraniNikravesh,
+    Flores,
+    KelvinVoigt,
+}
+
+impl LawKind {
+    pub const ALL: [LawKind; 5] = [
+        LawKind::PowerLaw,
+        LawKind::HuntCrossley,
+        LawKind::LankaraniNikravesh,
+        LawKind::Flores,
+        LawKind::KelvinVoigt,
+    ];
+    pub const NAMES: &'static str = "power-law, hunt-crossley, lankarani-nikravesh, flores, kelvin-voigt";
+
+    pub fn name(self) -> &'static str {
+        match self {
+            LawKind::PowerLaw => "power-law",
+            LawKind::HuntCrossley => "hunt-crossley",
+            LawKind::LankaraniNikravesh => "lankarani-nikravesh",
+            LawKind::Flores => "flores",
+            LawKind::KelvinVoigt => "kelvin-voigt",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Result<LawKind, LawError> {
+        LawKind::ALL
+            .into_iter()
+            .find(|k| k.name() == name)
+            .ok_or_else(|| LawError::UnknownLaw { name: name.to_string(), expected: LawKind::NAMES })
+    }
+}
+
+/// What a law needs besides its name. `damping` is used by the paper's law
+/// only; the others take their dissipation from `restitution`, at the
+/// reference `impact_speed` (hysteresis laws) or `reduced_mass` (Kelvin–Voigt,
+/// whose `linear_stiffness` is in N/m).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct LawParameters {
+    pub stiffness: f64,
+    pub exponent: f64,
+    pub damping: f64,
+    pub restitution: f64,
+    pub impact_speed: f64,
+    pub reduced_mass: f64,
+    pub linear_stiffness: f64,
+}
+
+/// Unknown law name or invalid law parameter.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum LawError {
+    #[error("unknown contact law `{name}`: expected one of {expected}")]
+    UnknownLaw { name: String, expected: &'static str },
+    #[error(transparent)]
+    Invalid(#[from] KickError),
+}
+
+/// Any of the laws, dispatching [`ContactLaw`] to it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "law", rename_all = "kebab-case")]
+pub enum AnyLaw {
+    #[serde(serialize_with = "serialize_power_law")]
+    PowerLaw(PowerLawContact),
+    Hysteresis(HysteresisContact),
+    KelvinVoigt(KelvinVoigt),
+}
+
+impl AnyLaw {
+    pub fn new(kind: LawKind, p: &LawParameters) -> Result<AnyLaw, LawError> {
+        let hysteresis = |model| -> Result<AnyLaw, LawError> {
+            Ok(AnyLaw::Hysteresis(HysteresisContact::new(
+                model,
+                p.stiffness,
+                p.exponent,
+                p.restitution,
+                p.impact_speed,
+            )?))
+        };
+        match kind {
+            LawKind::PowerLaw => {
+                check_positive("stiffness", p.stiffness)?;
+                check_positive("exponent", p.exponent)?;
+                if !(p.damping.is_finite() && p.damping >= 0.0) {
+                    return Err(KickError::invalid("damping", p.damping, "finite and >= 0").into());
+                }
+                Ok(AnyLaw::PowerLaw(PowerLawContact {
+                    stiffness: p.stiffness,
+                    damping: p.damping,
+                    exponent: p.exponent,
+                }))
+            }
+            LawKind::HuntCrossley => hysteresis(HysteresisModel::HuntCrossley),
+            LawKind::LankaraniNikravesh => hysteresis(HysteresisModel::LankaraniNikravesh),
+            LawKind::Flores => hysteresis(HysteresisModel::Flores),
+            LawKind::KelvinVoigt => Ok(AnyLaw::KelvinVoigt(KelvinVoigt::from_restitution(
+                p.linear_stiffness,
+                p.reduced_mass,
+                p.restitution,
+            )?)),
+        }
+    }
+
+    pub fn from_name(name: &str, parameters: &LawParameters) -> Result<AnyLaw, LawError> {
+        AnyLaw::new(LawKind::from_name(name)?, parameters)
+    }
+
+    pub fn kind(&self) -> LawKind {
+        match self {
+            AnyLaw::PowerLaw(_) => LawKind::PowerLaw,
+            AnyLaw::Hysteresis(h) => match h.model {
+                HysteresisModel::HuntCrossley => LawKind::HuntCrossley,
+                HysteresisModel::LankaraniNikravesh => LawKind::LankaraniNikravesh,
+                HysteresisModel::Flores => LawKind::Flores,
+            },
+            AnyLaw::KelvinVoigt(_) => LawKind::KelvinVoigt,
+        }
+    }
+}
+
+/// `PowerLawContact` has no `Serialize`; write its three fields.
+fn serialize_power_law<S: serde::Serializer>(law: &PowerLawContact, serializer: S) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeStruct;
+    let mut s = serializer.serialize_struct("PowerLawContact", 3)?;
+    s.serialize_field("stiffness", &law.stiffness)?;
+    s.serialize_field("damping", &law.damping)?;
+    s.serialize_field("exponent", &law.exponent)?;
+    s.end()
+}
+
+macro_rules! dispatch {
+    ($self:ident, $law:ident => $body:expr) => {
+        match $self {
+            AnyLaw::PowerLaw($law) => $body,
+            AnyLaw::Hysteresis($law) => $body,
+            AnyLaw::KelvinVoigt($law) => $body,
+        }
+    };
+}
+
+impl ContactLaw for AnyLaw {
+    #[inline]
+    fn force(&self, compression: f64, compression_rate: f64) -> f64 {
+        dispatch!(self, law => law.force(compression, compression_rate))
+    }
+    #[inline]
+    fn potential(&self, compression: f64) -> f64 {
+        dispatch!(self, law => law.potential(compression))
+    }
+    #[inline]
+    fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
+        dispatch!(self, law => law.contact_force(compression, compression_rate))
+    }
+    fn onset_force(&self, approach_speed: f64) -> f64 {
+        dispatch!(self, law => law.onset_force(approach_speed))
+    }
+    fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        dispatch!(self, law => law.force_gradient(compression, compression_rate))
+    }
+    fn damps_compression_only(&self) -> bool {
+        dispatch!(self, law => law.damps_compression_only())
+    }
+}
+
+fn check_positive(name: &'static str, value: f64) -> Result<f64, KickError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(KickError::invalid(name, value, "finite and > 0"))
+    }
+}
+
+fn check_restitution(e: f64) -> Result<f64, KickError> {
+    if e.is_finite() && e > 0.0 && e <= 1.0 {
+        Ok(e)
+    } else {
+        Err(KickError::invalid("restitution", e, "in (0, 1]"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn laws() -> Vec<AnyLaw> {
+        let p = LawParameters {
+            stiffness: 4.2e5,
+            exponent: 1.35,
+            damping: 120.0,
+            restitution: 0.7,
+            impact_speed: 22.0,
+            reduced_mass: 0.43 * 3.0 / 3.43,
+            linear_stiffness: 1.0e5,
+        };
+        LawKind::ALL.iter().map(|&k| AnyLaw::new(k, &p).unwrap()).collect()
+    }
+
+    /// Analytic gradients against central differences of the force itself,
+    /// away from the kinks (δ = 0, the clamp, δ̇ = 0 for Eq. 20).
+    #[test]
+    fn force_gradient_matches_finite_differences() {
+        for law in laws() {
+            for &(d, r) in &[(0.01, 5.0), (0.02, -3.0), (0.028, 0.7), (0.005, -1.0)] {
+                let (gd, gr) = law.force_gradient(d, r);
+                let (hd, hr) = (1e-6 * d, 1e-5);
+                let fd = (law.contact_force(d + hd, r) - law.contact_force(d - hd, r)) / (2.0 * hd);
+                let fr = (law.contact_force(d, r + hr) - law.contact_force(d, r - hr)) / (2.0 * hr);
+                // Central differences: truncation O(h²) ≈ 1e-12 relative,
+                // rounding ≈ ε F/h ≈ 1e-10 relative to the gradient scale.
+                let scale_d = gd.abs().max(law.contact_force(d, r) / d);
+                let scale_r = gr.abs().max(1e-3 * law.contact_force(d, 0.0));
+                assert!((gd - fd).abs() <= 1e-7 * scale_d, "{:?} d={d} r={r}: {gd} vs {fd}", law.kind());
+                assert!((gr - fr).abs() <= 1e-7 * scale_r, "{:?} d={d} r={r}: {gr} vs {fr}", law.kind());
+            }
+        }
+    }
+
+    #[test]
+    fn no_tensile_force_anywhere() {
+        for law in laws() {
+            for i in 0..=200 {
+                let d = -0.01 + 0.05 * i as f64 / 200.0;
+                for j in 0..=200 {
+                    let r = -200.0 + 400.0 * j as f64 / 200.0;
+                    assert!(law.force(d, r) >= 0.0, "{:?} pulls at δ={d}, δ̇={r}", law.kind());
+                    assert!(law.contact_force(d.max(0.0), r) >= 0.0);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn onset_force_jumps_only_for_viscous_dashpots() {
+        for law in laws() {
+            let onset = law.onset_force(22.0);
+            match law {
+                AnyLaw::Hysteresis(_) => assert_eq!(onset, 0.0),
+                AnyLaw::PowerLaw(p) => assert_eq!(onset, p.damping * 22.0),
+                AnyLaw::KelvinVoigt(k) => assert_eq!(onset, k.damping * 22.0),
+            }
+        }
+    }
+
+    #[test]
+    fn potential_is_the_integral_of_the_elastic_force() {
+        // U(δ) = ∫₀^δ F(s, 0) ds (Eq. 22) by composite Simpson; sⁿ is not smooth
+        // at 0, so the error is O(h^(n+1)) ≈ 1e-8 relative with 20 000 panels.
+        for law in laws() {
+            let d = 0.02;
+            let m = 20_000;
+            let h = d / m as f64;
+            let mut sum = 0.0;
+            for i in 0..=m {
+                let w = if i == 0 || i == m { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+                sum += w * law.force(i as f64 * h, 0.0);
+            }
+            let integral = sum * h / 3.0;
+            let u = law.potential(d);
+            assert!((integral - u).abs() <= 1e-6 * u, "{:?}: {integral} vs {u}", law.kind());
+        }
+    }
+
+    #[test]
+    fn names_round_trip_and_bad_input_is_refused() {
+        for kind in LawKind::ALL {
+            assert_eq!(LawKind::from_name(kind.name()).unwrap(), kind);
+        }
+        assert!(matches!(LawKind::from_name("hertz"), Err(LawError::UnknownLaw { .. })));
+        let mut p = LawParameters {
+            stiffness: 1.0,
+            exponent: 1.0,
+            damping: 0.0,
+            restitution: 1.2,
+            impact_speed: 1.0,
+            reduced_mass: 1.0,
+            linear_stiffness: 1.0,
+        };
+        assert!(AnyLaw::new(LawKind::HuntCrossley, &p).is_err());
+        p.restitution = 0.5;
+        p.impact_speed = f64::NAN;
+        assert!(AnyLaw::new(LawKind::Flores, &p).is_err());
+        p.impact_speed = 1.0;
+        assert!(AnyLaw::new(LawKind::Flores, &p).is_ok());
+    }
+}
