@@ -102,7 +102,12 @@ impl HysteresisContact {
         let lhs = x0 - x0.ln_1p();
         // g(0) = lhs > 0, g → −∞ as x_e → 1: one root, bracketed.
         let g = |xe: f64| lhs - (-xe - (-xe).ln_1p());
-        let root = crate::roots::brent(g, 0.0, 1.0 - 1e-15, 1e-16, 200).ok_or(KickError::InvalidParameter {
+        let top = 1.0 - 1e-15;
+        if g(top) >= 0.0 {
+            // x_e = 1 − exp(−(lhs + 1)) to leading order: 1 in f64.
+            return Ok(1.0 / x0);
+        }
+        let root = crate::roots::brent(g, 0.0, top, 1e-16, 200).ok_or(KickError::InvalidParameter {
             name: "hysteresis",
             value: self.hysteresis,
             requirement: "finite and >= 0",
@@ -492,6 +497,27 @@ mod tests {
             let u = law.potential(d);
             assert!((integral - u).abs() <= 1e-6 * u, "{:?}: {integral} vs {u}", law.kind());
         }
+    }
+
+    /// Series of the exact relation: 1 − e² = (2/3) x0 (1 + e³) + O(x0²)
+    /// → (4/3) x0 as x0 → 0; and x_e → 1 (e → 1/x0) as x0 → ∞.
+    #[test]
+    fn exact_restitution_limits() {
+        for x0 in [1e-4, 1e-3] {
+            let law = HysteresisContact::new(HysteresisModel::LankaraniNikravesh, 1.0, 1.5, 1.0, 1.0)
+                .map(|mut l| {
+                    l.hysteresis = x0;
+                    l
+                })
+                .unwrap();
+            let e = law.exact_restitution(1.0).unwrap();
+            let ratio = (1.0 - e * e) / (4.0 / 3.0 * x0);
+            assert!((ratio - 1.0).abs() < 2.0 * x0, "x0={x0}: {ratio}");
+        }
+        let mut law = HysteresisContact::new(HysteresisModel::Flores, 1.0, 1.0, 0.5, 1.0).unwrap();
+        law.hysteresis = 1e6;
+        let e = law.exact_restitution(1.0).unwrap();
+        assert!((e * 1e6 - 1.0).abs() < 1e-3, "{e}");
     }
 
     #[test]
