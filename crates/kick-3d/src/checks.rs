@@ -1,0 +1,239 @@
+//! Checks of the 3D model against the 1D solver, closed forms and
+//! conservation laws, in the row shape of `kick-checks` (name, equation,
+//! expected, actual, error, tolerance, passed) so `kick check` can list them.
+//!
+//! `error` is |actual − expected| / scale, the scale named per row; each
+//! tolerance has its reason next to it.
+
+use crate::accurate::Accurate3d;
+use crate::model::{Kick3d, Kick3dSpec};
+use crate::outcome::Outcome3d;
+use crate::Kick3dError;
+use kick_compliant::Accurate;
+use kick_core::{Scenario, Solver};
+use parry3d_f64::math::Vec3;
+use serde::Serialize;
+
+/// One check row (same fields as `kick_checks::CheckRow`).
+#[derive(Debug, Clone, Serialize)]
+pub struct CheckRow {
+    pub name: String,
+    pub equation: String,
+    pub expected: f64,
+    pub actual: f64,
+    pub error: f64,
+    pub tolerance: f64,
+    pub passed: bool,
+}
+
+impl CheckRow {
+    pub fn compare(name: impl Into<String>, equation: &str, expected: f64, actual: f64, scale: f64, tolerance: f64) -> CheckRow {
+        let error = (actual - expected).abs() / scale;
+        CheckRow {
+            name: name.into(),
+            equation: equation.into(),
+            expected,
+            actual,
+            error,
+            tolerance,
+            passed: expected.is_finite() && actual.is_finite() && error.is_finite() && error <= tolerance,
+        }
+    }
+    /// A check that could not be computed: it fails and says why.
+    pub fn failed(name: impl Into<String>, equation: &str, why: &Kick3dError) -> CheckRow {
+        CheckRow {
+            name: format!("{} (failed: {why})", name.into()),
+            equation: equation.into(),
+            expected: f64::NAN,
+            actual: f64::NAN,
+            error: f64::INFINITY,
+            tolerance: 0.0,
+            passed: false,
+        }
+    }
+}
+
+/// The solvers agree to 1e-9 relative: both integrate at rtol 1e-12 and
+/// locate events to rounding; 1e-9 is the accuracy `accurate` promises.
+pub const MATCH_1D: f64 = 1e-9;
+/// Quantities that are equal by construction up to floating-point rounding
+/// accumulated over ~1e4 steps.
+pub const ROUNDING: f64 = 1e-12;
+
+/// An off-center kick: offset 5 cm, μ = 0.5, other values at their defaults.
+pub fn curve_kick() -> Kick3d {
+    kick(Kick3dSpec { offset: Some(0.05), ..Kick3dSpec::default() })
+}
+
+/// A kick on Table 1's baseline with the given extras.
+pub fn kick(spec: Kick3dSpec) -> Kick3d {
+    match Kick3d::new(Scenario::baseline(), &spec) {
+        Ok(k) => k,
+        Err(e) => panic!("check scenario must be valid: {e}"),
+    }
+}
+
+/// Effective mass of the tangential motion of the contact point, with the
+/// foot's rotation about the axis n × t: 1/m_t = 1/m_b + R²/I_b + 1/m_f + h²/I_f.
+pub fn tangential_mass(kick: &Kick3d, foot_axis_inertia: f64) -> f64 {
+    let h = kick.face_distance(); // foot centre of mass to the contact point
+    let r = kick.ball_radius;
+    1.0 / (1.0 / kick.base.ball_mass() + r * r / kick.ball_inertia + 1.0 / kick.base.effective_foot_mass()
+        + h * h / foot_axis_inertia)
+}
+
+/// Spin of the rigid gripping (rolling) limit: the contact point's sliding
+/// velocity v_t0 is brought to zero, J_t = m_t v_t0, so
+/// ω = R m_t |v_t0| / I_b about −n × t (Eq. 61 with r = −R n).
+pub fn gripping_limit_spin(kick: &Kick3d, foot_axis_inertia: f64) -> Vec3 {
+    let n = kick.initial_normal();
+    let slide = kick.initial_sliding_velocity(); // foot over ball
+    let j_t = slide * tangential_mass(kick, foot_axis_inertia); // on the ball, along the foot's sliding
+    (-n * kick.ball_radius).cross(j_t) / kick.ball_inertia
+}
+
+/// Sliding velocity of the ball over the foot at time t for an always-gripping
+/// spring–damper (m_t ẍ + c_t ẋ + k_t x = 0, x(0) = 0, ẋ(0) = v0): ẋ(t)/v0.
+pub fn oscillator_velocity_ratio(mass: f64, stiffness: f64, damping: f64, t: f64) -> f64 {
+    let w0 = (stiffness / mass).sqrt();
+    let zeta = damping / (2.0 * (stiffness * mass).sqrt());
+    if zeta < 1.0 {
+        let wd = w0 * (1.0 - zeta * zeta).sqrt();
+        (-zeta * w0 * t).exp() * ((wd * t).cos() - zeta * w0 / wd * (wd * t).sin())
+    } else if zeta == 1.0 {
+        (-w0 * t).exp() * (1.0 - w0 * t)
+    } else {
+        let s = w0 * (zeta * zeta - 1.0).sqrt();
+        let (r1, r2) = (-zeta * w0 + s, -zeta * w0 - s);
+        (r1 * (r1 * t).exp() - r2 * (r2 * t).exp()) / (r1 - r2)
+    }
+}
+
+fn norm(v: [f64; 3]) -> f64 {
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+}
+
+fn solve(kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
+    Accurate3d::default().solve(kick)
+}
+
+/// Every 3D check.
+pub fn checks() -> Vec<CheckRow> {
+    let mut rows = Vec::new();
+    let mut push = |name: &str, eq: &str, r: Result<Vec<CheckRow>, Kick3dError>| match r {
+        Ok(mut v) => rows.append(&mut v),
+        Err(e) => rows.push(CheckRow::failed(name, eq, &e)),
+    };
+    push("3d central frictionless = 1d", "Eqs. 13-20", central_matches_1d());
+    push("3d zero offset with friction: no spin", "Eq. 61", zero_offset_no_spin());
+    push("3d angular momentum = integral r x F", "Eq. 61", angular_momentum());
+    push("3d energy partition closes", "Eqs. 30-33", energy_closes());
+    push("3d mirrored offsets mirror the spin", "Eq. 61", mirror());
+    push("3d friction to zero", "Eq. 61", friction_to_zero());
+    push("3d friction to infinity", "Eq. 61", friction_to_infinity());
+    rows
+}
+
+fn central_matches_1d() -> Result<Vec<CheckRow>, Kick3dError> {
+    let k = kick(Kick3dSpec { friction: Some(0.0), ..Kick3dSpec::default() });
+    let one = Accurate::default().solve(&k.base)?;
+    let three = solve(&k)?;
+    let rel = |name: &str, e: f64, a: f64| CheckRow::compare(format!("3d central frictionless = 1d: {name}"), "Eqs. 13-20", e, a, e.abs(), MATCH_1D);
+    Ok(vec![
+        rel("ball exit speed", one.v_ball_out, three.launch_velocity[0]),
+        rel("foot exit speed", one.v_foot_out, three.foot_velocity[0]),
+        rel("contact time", one.contact_time, three.contact_time),
+        rel("peak force", one.peak_force, three.peak_normal_force),
+        rel("max compression", one.max_compression, three.max_compression),
+    ])
+}
+
+fn zero_offset_no_spin() -> Result<Vec<CheckRow>, Kick3dError> {
+    let k = kick(Kick3dSpec { friction: Some(0.5), ..Kick3dSpec::default() });
+    let o = solve(&k)?;
+    // scale: the spin of the rolling limit at this foot speed, V/R
+    let scale = k.base.foot_speed() / k.ball_radius;
+    Ok(vec![CheckRow::compare("3d zero offset, mu = 0.5: |spin| (rad/s)", "Eq. 61", 0.0, norm(o.spin), scale, ROUNDING)])
+}
+
+fn angular_momentum() -> Result<Vec<CheckRow>, Kick3dError> {
+    let k = curve_kick();
+    let o = solve(&k)?;
+    let l = o.ball_angular_momentum(k.ball_inertia);
+    let scale = norm(o.angular_impulse);
+    Ok((0..3)
+        .map(|i| {
+            CheckRow::compare(format!("3d I_b omega_{} = (integral r x F dt)_{}", ["x", "y", "z"][i], ["x", "y", "z"][i]), "Eq. 61", o.angular_impulse[i], l[i], scale, ROUNDING)
+        })
+        .collect())
+}
+
+fn energy_closes() -> Result<Vec<CheckRow>, Kick3dError> {
+    let k = curve_kick();
+    let o = solve(&k)?;
+    let e = o.energy;
+    // The losses are integrated from their own power densities: closure tests the solver (1e-9, its promise).
+    Ok(vec![CheckRow::compare(
+        "3d energy in = kinetic + spin + foot + elastic + damping + friction (J)",
+        "Eqs. 30-33",
+        e.kinetic_initial + e.drive_work + e.gravity_work,
+        e.ball_translation + e.ball_spin + e.foot + e.elastic_final + e.normal_damping_loss + e.friction_loss,
+        e.kinetic_initial,
+        MATCH_1D,
+    )])
+}
+
+fn mirror() -> Result<Vec<CheckRow>, Kick3dError> {
+    let a = solve(&kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() }))?;
+    let b = solve(&kick(Kick3dSpec { offset: Some(-0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() }))?;
+    // Reflection y → −y: ω is a pseudovector, so ω_x and ω_z flip and ω_y stays.
+    let scale = norm(a.spin);
+    let expected = [-a.spin[0], a.spin[1], -a.spin[2]];
+    Ok((0..3)
+        .map(|i| CheckRow::compare(format!("3d mirrored offset: spin_{}", ["x", "y", "z"][i]), "Eq. 61", expected[i], b.spin[i], scale, ROUNDING))
+        .collect())
+}
+
+fn friction_to_zero() -> Result<Vec<CheckRow>, Kick3dError> {
+    let k0 = kick(Kick3dSpec { offset: Some(0.05), friction: Some(0.0), ..Kick3dSpec::default() });
+    let o0 = solve(&k0)?;
+    let scale = k0.base.foot_speed() / k0.ball_radius;
+    // Small μ: the contact slides throughout, |F_t| = μ F_n, so |ΔL| = R μ ∫F_n dt.
+    let mu = 0.01;
+    let k = kick(Kick3dSpec { offset: Some(0.05), friction: Some(mu), ..Kick3dSpec::default() });
+    let o = solve(&k)?;
+    let expected = k.ball_radius * mu * o.normal_impulse / k.ball_inertia;
+    Ok(vec![
+        CheckRow::compare("3d mu = 0: |spin| (rad/s)", "Eq. 61", 0.0, norm(o0.spin), scale, ROUNDING),
+        CheckRow::compare("3d mu = 0.01 full slip: |spin| = R mu J_n / I_b", "Eq. 61", expected, norm(o.spin), expected, MATCH_1D),
+        CheckRow::compare("3d mu = 0.01: slip time = contact time", "-", o.contact_time, o.slip_time, o.contact_time, ROUNDING),
+    ])
+}
+
+fn friction_to_infinity() -> Result<Vec<CheckRow>, Kick3dError> {
+    // A foot that does not turn keeps the normal fixed, so the tangential
+    // motion is the linear oscillator m_t ẍ + c_t ẋ + k_t x = 0.
+    let stiff_foot = 1e12;
+    let spec = Kick3dSpec {
+        offset: Some(0.05),
+        friction: Some(f64::INFINITY),
+        foot_inertia: Some([stiff_foot; 3]),
+        ..Kick3dSpec::default()
+    };
+    let k = kick(spec);
+    let o = solve(&k)?;
+    let m_t = tangential_mass(&k, stiff_foot);
+    let ratio = oscillator_velocity_ratio(m_t, k.tangential_stiffness, k.tangential_damping, o.contact_time);
+    let expected = norm(gripping_limit_spin(&k, stiff_foot).to_array()) * (1.0 - ratio);
+    // Stiff, critically damped spring: the sliding stops long before separation: the rigid gripping limit.
+    let k_t = 1e8;
+    let c_t = 2.0 * (k_t * m_t).sqrt();
+    let rigid = kick(Kick3dSpec { tangential_stiffness: Some(k_t), tangential_damping: Some(c_t), ..spec });
+    let o_rigid = solve(&rigid)?;
+    let limit = gripping_limit_spin(&rigid, stiff_foot);
+    Ok(vec![
+        CheckRow::compare("3d mu = inf: |spin| = damped-oscillator closed form", "Eq. 61", expected, norm(o.spin), expected, MATCH_1D),
+        CheckRow::compare("3d mu = inf, k_t = 1e8, critical: spin_z = gripping limit", "Eq. 61", limit.z, o_rigid.spin[2], limit.z.abs(), MATCH_1D),
+        CheckRow::compare("3d mu = inf: slip time", "-", 0.0, o.slip_time, o.contact_time, ROUNDING),
+    ])
+}

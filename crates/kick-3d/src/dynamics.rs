@@ -1,0 +1,323 @@
+//! The two rigid bodies, the contact law and the ODE right-hand side.
+//!
+//! This module is the one boundary between parry's glam types (`Vec3`,
+//! `Rot3`, `Pose3`) and the nalgebra state vector that ode_solvers integrates.
+//!
+//! Contact law (one law for both paths):
+//! - normal: F_n = k δⁿ + c max(δ̇, 0) (Eq. 20), δ the overlap from parry's
+//!   ball–box query, δ̇ = n·(v_foot − v_ball) at the witness points (the exact
+//!   rate of a convex distance);
+//! - tangential: a spring k_t and damper c_t in series with a Coulomb slider
+//!   capped by μ F_n (Cundall–Strack). The spring extension ξ is state. While
+//!   |k_t ξ + c_t v_t| ≤ μ F_n the contact grips (ξ̇ = v_t); otherwise it slips
+//!   and the element carries exactly μ F_n, which makes ξ̇ = (μ F_n û − k_t ξ)/c_t
+//!   an ordinary ODE, continuous across the grip/slip switch.
+//!
+//! Both bodies take the force at one point p = c_b − R n, the undeformed
+//! ball's point nearest the foot: the lever of the friction about the ball
+//! centre is R (Eq. 61) and action equals reaction at the same point, so the
+//! pair's angular momentum is conserved exactly.
+
+use crate::model::Kick3d;
+use kick_core::{ContactLaw, PowerLawContact};
+use nalgebra::SVector;
+use parry3d_f64::math::{Pose3, Rot3, Vec3};
+use parry3d_f64::query::details::contact_convex_polyhedron_ball;
+use parry3d_f64::shape::{Ball, Cuboid};
+
+pub const DIM: usize = 40;
+/// Foot (x, q, v, ω), ball (x, q, v, ω), tangential spring ξ, running integrals.
+pub type State = SVector<f64, DIM>;
+
+pub const FOOT_POSITION: usize = 0;
+pub const FOOT_ROTATION: usize = 3; // quaternion w, x, y, z
+pub const FOOT_VELOCITY: usize = 7;
+pub const FOOT_ANGULAR_VELOCITY: usize = 10;
+pub const BALL_POSITION: usize = 13;
+pub const BALL_ROTATION: usize = 16;
+pub const BALL_VELOCITY: usize = 20;
+pub const BALL_ANGULAR_VELOCITY: usize = 23;
+pub const SPRING: usize = 26;
+/// ∫ F dt on the ball.
+pub const IMPULSE: usize = 29;
+/// ∫ r × F dt about the ball centre.
+pub const ANGULAR_IMPULSE: usize = 32;
+pub const NORMAL_IMPULSE: usize = 35;
+pub const DAMPING_LOSS: usize = 36;
+pub const FRICTION_LOSS: usize = 37;
+pub const DRIVE_WORK: usize = 38;
+pub const GRAVITY_WORK: usize = 39;
+
+#[inline]
+pub fn vec3(y: &State, i: usize) -> Vec3 {
+    Vec3::new(y[i], y[i + 1], y[i + 2])
+}
+#[inline]
+fn put3(y: &mut State, i: usize, v: Vec3) {
+    y[i] = v.x;
+    y[i + 1] = v.y;
+    y[i + 2] = v.z;
+}
+#[inline]
+pub fn rot(y: &State, i: usize) -> Rot3 {
+    Rot3::from_xyzw(y[i + 1], y[i + 2], y[i + 3], y[i]).normalize()
+}
+#[inline]
+fn put_rot(y: &mut State, i: usize, q: Rot3) {
+    y[i] = q.w;
+    y[i + 1] = q.x;
+    y[i + 2] = q.y;
+    y[i + 3] = q.z;
+}
+
+/// Everything the law gives at one state.
+#[derive(Debug, Clone, Copy)]
+pub struct ContactEval {
+    /// δ (negative: a gap).
+    pub compression: f64,
+    /// δ̇.
+    pub compression_rate: f64,
+    /// Unit normal, foot → ball.
+    pub normal: Vec3,
+    /// Application point p = c_b − R n.
+    pub point: Vec3,
+    /// p − c_b and p − c_f.
+    pub lever_ball: Vec3,
+    pub lever_foot: Vec3,
+    /// Tangential part of v_ball(p) − v_foot(p).
+    pub sliding_velocity: Vec3,
+    pub normal_force: f64,
+    /// Tangential force on the ball.
+    pub tangential_force: Vec3,
+    /// ξ̇ of the spring–damper element (without the co-rotation with the foot).
+    pub spring_rate: Vec3,
+    /// μ F_n − |k_t ξ + c_t v_t|: ≥ 0 grips, < 0 slips (+1 when μ = ∞, 0 when μ = 0).
+    pub grip_margin: f64,
+    pub damping_power: f64,
+    pub friction_power: f64,
+}
+
+impl ContactEval {
+    pub fn force_on_ball(&self) -> Vec3 {
+        self.normal * self.normal_force + self.tangential_force
+    }
+    pub fn is_slipping(&self) -> bool {
+        self.grip_margin < 0.0
+    }
+}
+
+/// Right-hand side of one kick.
+#[derive(Debug, Clone, Copy)]
+pub struct Dynamics {
+    pub law: PowerLawContact,
+    pub foot_mass: f64,
+    pub foot_inertia: Vec3,
+    pub ball_mass: f64,
+    pub ball_inertia: f64,
+    pub ball_radius: f64,
+    /// Inner box of the instep; the border radius is added to the ball's
+    /// radius in the query (ball ⊕ border against box = ball against rounded box).
+    pub cuboid: Cuboid,
+    pub border: f64,
+    pub friction: f64,
+    pub tangential_stiffness: f64,
+    pub tangential_damping: f64,
+    pub drive: Vec3,
+    pub gravity: Vec3,
+}
+
+impl Dynamics {
+    pub fn new(kick: &Kick3d) -> Dynamics {
+        let [hx, hy, hz] = kick.foot_shape.half_extents();
+        let [ix, iy, iz] = kick.foot_inertia;
+        Dynamics {
+            law: kick.law(),
+            foot_mass: kick.base.effective_foot_mass(),
+            foot_inertia: Vec3::new(ix, iy, iz),
+            ball_mass: kick.base.ball_mass(),
+            ball_inertia: kick.ball_inertia,
+            ball_radius: kick.ball_radius,
+            cuboid: Cuboid::new(Vec3::new(hx, hy, hz)),
+            border: kick.foot_shape.border_radius(),
+            friction: kick.friction,
+            tangential_stiffness: kick.tangential_stiffness,
+            tangential_damping: kick.tangential_damping,
+            drive: kick.drive(),
+            gravity: kick.gravity_vector(),
+        }
+    }
+
+    pub fn foot_pose(y: &State) -> Pose3 {
+        Pose3::from_parts(vec3(y, FOOT_POSITION), rot(y, FOOT_ROTATION))
+    }
+
+    /// Overlap, normal and witness point from parry (ball of radius R + border
+    /// against the inner box, which is exact for the rounded box).
+    /// Returns (δ, n foot → ball, point on the foot's surface).
+    pub fn geometry(&self, foot: &Pose3, ball_centre: Vec3) -> (f64, Vec3, Vec3) {
+        let pos12 = foot.inv_mul(&Pose3::from_translation(ball_centre));
+        let ball = Ball::new(self.ball_radius + self.border);
+        match contact_convex_polyhedron_ball(&pos12, &self.cuboid, &ball, f64::INFINITY) {
+            Some(c) => {
+                let n = foot.rotation * c.normal1;
+                let surface = foot.transform_point(c.point1) + n * self.border;
+                (-c.dist, n, surface)
+            }
+            // Only on non-finite input; the NaN is caught before output.
+            None => (f64::NAN, Vec3::NAN, Vec3::NAN),
+        }
+    }
+
+    /// The contact law at state y (on the contact branch: F(0⁺) = c δ̇).
+    #[inline]
+    pub fn contact(&self, y: &State) -> ContactEval {
+        let foot = Self::foot_pose(y);
+        let c_f = foot.translation;
+        let c_b = vec3(y, BALL_POSITION);
+        let (delta, n, _surface) = self.geometry(&foot, c_b);
+        let v_f = vec3(y, FOOT_VELOCITY);
+        let w_f = vec3(y, FOOT_ANGULAR_VELOCITY);
+        let v_b = vec3(y, BALL_VELOCITY);
+        let w_b = vec3(y, BALL_ANGULAR_VELOCITY);
+        let lever_ball = -n * self.ball_radius;
+        let point = c_b + lever_ball;
+        let lever_foot = point - c_f;
+        let v_rel = (v_b + w_b.cross(lever_ball)) - (v_f + w_f.cross(lever_foot));
+        // The foot's witness point lies δ n beyond p along the normal, so the
+        // normal component of v_rel is the exact −δ̇ of the parry distance.
+        let rate = -n.dot(v_rel);
+        let sliding = v_rel + n * rate;
+        let normal_force = self.law.contact_force(delta, rate); // Eq. 20
+        let elastic = self.law.contact_force(delta, 0.0);
+        let damping_power = (normal_force - elastic) * rate; // Eq. 25
+
+        let xi = vec3(y, SPRING);
+        let xi_t = xi - n * xi.dot(n);
+        let (k_t, c_t) = (self.tangential_stiffness, self.tangential_damping);
+        let trial = xi_t * k_t + sliding * c_t;
+        let trial_size = trial.length();
+        let cap = if self.friction.is_infinite() { f64::INFINITY } else { self.friction * normal_force };
+        let (tangential_force, spring_rate, grip_margin, friction_power);
+        if self.friction == 0.0 {
+            // No friction element: nothing grips or slips (margin 0 raises no event).
+            tangential_force = Vec3::ZERO;
+            spring_rate = -xi_t * (k_t / c_t);
+            grip_margin = 0.0;
+            friction_power = c_t * spring_rate.length_squared();
+        } else if trial_size <= cap {
+            tangential_force = -trial;
+            spring_rate = sliding;
+            grip_margin = if cap.is_infinite() { 1.0 } else { cap - trial_size };
+            friction_power = c_t * sliding.length_squared();
+        } else {
+            let u = trial / trial_size;
+            tangential_force = -u * cap;
+            spring_rate = (u * cap - xi_t * k_t) / c_t;
+            grip_margin = cap - trial_size;
+            // damper c_t |ξ̇|² plus slider μ F_n |v_t − ξ̇| = cap (|T| − cap)/c_t
+            friction_power = c_t * spring_rate.length_squared() + cap * (trial_size - cap) / c_t;
+        }
+        ContactEval {
+            compression: delta,
+            compression_rate: rate,
+            normal: n,
+            point,
+            lever_ball,
+            lever_foot,
+            sliding_velocity: sliding,
+            normal_force,
+            tangential_force,
+            spring_rate,
+            grip_margin,
+            damping_power,
+            friction_power,
+        }
+    }
+
+    /// ẏ at y.
+    #[inline]
+    pub fn derivative(&self, y: &State) -> State {
+        let c = self.contact(y);
+        let force = c.force_on_ball();
+        let mut dy = State::zeros();
+        let q_f = rot(y, FOOT_ROTATION);
+        let q_b = rot(y, BALL_ROTATION);
+        let v_f = vec3(y, FOOT_VELOCITY);
+        let w_f = vec3(y, FOOT_ANGULAR_VELOCITY);
+        let v_b = vec3(y, BALL_VELOCITY);
+        let w_b = vec3(y, BALL_ANGULAR_VELOCITY);
+
+        put3(&mut dy, FOOT_POSITION, v_f);
+        put_rot(&mut dy, FOOT_ROTATION, Rot3::from_xyzw(w_f.x, w_f.y, w_f.z, 0.0) * q_f * 0.5);
+        put3(&mut dy, FOOT_VELOCITY, (self.drive - force) / self.foot_mass + self.gravity);
+        // Euler's equations in the foot's principal axes.
+        let torque_foot = c.lever_foot.cross(-force);
+        let w_body = q_f.inverse() * w_f;
+        let l_body = w_body * self.foot_inertia;
+        let dw_body = ((q_f.inverse() * torque_foot) - w_body.cross(l_body)) / self.foot_inertia;
+        put3(&mut dy, FOOT_ANGULAR_VELOCITY, q_f * dw_body);
+
+        put3(&mut dy, BALL_POSITION, v_b);
+        put_rot(&mut dy, BALL_ROTATION, Rot3::from_xyzw(w_b.x, w_b.y, w_b.z, 0.0) * q_b * 0.5);
+        put3(&mut dy, BALL_VELOCITY, force / self.ball_mass + self.gravity);
+        let torque_ball = c.lever_ball.cross(force);
+        put3(&mut dy, BALL_ANGULAR_VELOCITY, torque_ball / self.ball_inertia); // sphere: I isotropic
+
+        // The spring is glued to the foot's face: it turns with the foot.
+        let xi = vec3(y, SPRING);
+        put3(&mut dy, SPRING, w_f.cross(xi) + c.spring_rate);
+        put3(&mut dy, IMPULSE, force);
+        put3(&mut dy, ANGULAR_IMPULSE, torque_ball);
+        dy[NORMAL_IMPULSE] = c.normal_force;
+        dy[DAMPING_LOSS] = c.damping_power;
+        dy[FRICTION_LOSS] = c.friction_power;
+        dy[DRIVE_WORK] = self.drive.dot(v_f);
+        dy[GRAVITY_WORK] = self.gravity.dot(v_f * self.foot_mass + v_b * self.ball_mass);
+        dy
+    }
+
+    /// One classical RK4 step (used only below Dop853's step-size floor).
+    pub fn rk4_step(&self, y: &State, h: f64) -> State {
+        let k1 = self.derivative(y);
+        let k2 = self.derivative(&(y + k1 * (0.5 * h)));
+        let k3 = self.derivative(&(y + k2 * (0.5 * h)));
+        let k4 = self.derivative(&(y + k3 * h));
+        y + (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0)
+    }
+
+    pub fn ball_translation_energy(&self, y: &State) -> f64 {
+        0.5 * self.ball_mass * vec3(y, BALL_VELOCITY).length_squared()
+    }
+    pub fn ball_spin_energy(&self, y: &State) -> f64 {
+        0.5 * self.ball_inertia * vec3(y, BALL_ANGULAR_VELOCITY).length_squared()
+    }
+    pub fn foot_energy(&self, y: &State) -> f64 {
+        let q = rot(y, FOOT_ROTATION);
+        let w_body = q.inverse() * vec3(y, FOOT_ANGULAR_VELOCITY);
+        0.5 * self.foot_mass * vec3(y, FOOT_VELOCITY).length_squared()
+            + 0.5 * w_body.dot(w_body * self.foot_inertia)
+    }
+    /// U(δ) + ½ k_t |ξ|².
+    pub fn elastic_energy(&self, y: &State, compression: f64) -> f64 {
+        self.law.potential(compression) + 0.5 * self.tangential_stiffness * vec3(y, SPRING).length_squared()
+    }
+    /// Kinetic plus elastic energy (what a passive contact can only lose).
+    pub fn mechanical_energy(&self, y: &State) -> f64 {
+        let c = self.contact(y);
+        self.ball_translation_energy(y) + self.ball_spin_energy(y) + self.foot_energy(y)
+            + self.elastic_energy(y, c.compression)
+    }
+}
+
+/// The state at first touch.
+pub fn initial_state(kick: &Kick3d) -> State {
+    let s = kick.initial_state();
+    let mut y = State::zeros();
+    put3(&mut y, FOOT_POSITION, s.foot_position);
+    put_rot(&mut y, FOOT_ROTATION, s.foot_orientation);
+    put3(&mut y, FOOT_VELOCITY, s.foot_velocity);
+    put3(&mut y, BALL_POSITION, s.ball_position);
+    put_rot(&mut y, BALL_ROTATION, Rot3::IDENTITY);
+    put3(&mut y, BALL_VELOCITY, s.ball_velocity);
+    y
+}

@@ -1,0 +1,19 @@
+use kick_core::KickError;
+use thiserror::Error;
+
+/// Every way a 3D kick computation can refuse or fail; messages name the problem.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum Kick3dError {
+    #[error(transparent)]
+    Core(#[from] KickError),
+    #[error("invalid parameter `{name}` = {value}: must be {requirement}")]
+    InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
+    #[error("offset {offset} m misses the ball: |offset| must be below the ball radius {radius} m")]
+    OffsetOutsideBall { offset: f64, radius: f64 },
+    #[error("contact geometry failed at t = {time} s: {reason}")]
+    Geometry { time: f64, reason: String },
+    #[error("the {path} path cannot run this scene: {reason}")]
+    UnsupportedScene { path: &'static str, reason: &'static str },
+    #[error("unknown 3D solver `{name}`: expected one of {expected}")]
+    UnknownSolver { name: String, expected: &'static str },
+}

@@ -1,0 +1,93 @@
+//! Off-center 3D kicks: a sphere and a rigid instep with the paper's normal
+//! law (Eq. 20), Coulomb friction with tangential compliance, and the spin
+//! that an off-center contact gives (Eq. 61). Section 17 of the paper lists
+//! what its 1D model leaves out; this crate adds 17.4–17.5.
+//!
+//! Solvers (one law, three paths):
+//! - [`accurate::Accurate3d`] (`accurate`): both rigid bodies on adaptive
+//!   Dop853 with located events, parry3d giving the geometry;
+//! - [`one_d`] (`1d`): the 1D accurate solver along the normal, exact when no
+//!   tangential force can act;
+//! - [`scene::Scene`] (`rapier`, feature `rapier`): a rapier3d world (ground,
+//!   gravity, later a leg) with the same law applied as external forces.
+//!
+//! [`Solver3d::Auto`] picks the cheapest path the scene needs.
+
+pub mod accurate;
+pub mod checks;
+pub mod dynamics;
+pub mod error;
+pub mod model;
+pub mod one_d;
+pub mod outcome;
+#[cfg(feature = "rapier")]
+pub mod scene;
+pub mod sweep;
+
+pub use accurate::Accurate3d;
+pub use error::Kick3dError;
+pub use model::{FootShape, Kick3d, Kick3dSpec};
+pub use outcome::{EnergyPartition, Outcome3d};
+
+/// The 3D solvers selectable by name (`--solver`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Solver3d {
+    /// 1d when no tangential force can act, rapier when the scene has a
+    /// ground, accurate otherwise.
+    Auto,
+    Accurate(Accurate3d),
+    OneD,
+    #[cfg(feature = "rapier")]
+    Rapier(scene::Scene),
+}
+
+impl Solver3d {
+    #[cfg(feature = "rapier")]
+    pub const NAMES: [&'static str; 4] = ["auto", "accurate", "1d", "rapier"];
+    #[cfg(not(feature = "rapier"))]
+    pub const NAMES: [&'static str; 3] = ["auto", "accurate", "1d"];
+
+    /// Look a solver up by name; `scene_step` is the rapier path's step, s.
+    pub fn from_name(name: &str, scene_step: f64) -> Result<Solver3d, Kick3dError> {
+        match name {
+            "auto" => Ok(Solver3d::Auto),
+            "accurate" => Ok(Solver3d::Accurate(Accurate3d::default())),
+            "1d" => Ok(Solver3d::OneD),
+            #[cfg(feature = "rapier")]
+            "rapier" => Ok(Solver3d::Rapier(scene::Scene::new(scene_step)?)),
+            _ => {
+                let _ = scene_step;
+                Err(Kick3dError::UnknownSolver { name: name.to_string(), expected: "auto, accurate, 1d, rapier" })
+            }
+        }
+    }
+
+    /// The path `Auto` takes for this kick.
+    pub fn resolve(&self, kick: &Kick3d) -> Solver3d {
+        match self {
+            Solver3d::Auto if kick.ground => {
+                #[cfg(feature = "rapier")]
+                {
+                    Solver3d::Rapier(scene::Scene::default())
+                }
+                #[cfg(not(feature = "rapier"))]
+                {
+                    Solver3d::Accurate(Accurate3d::default())
+                }
+            }
+            Solver3d::Auto if kick.is_one_dimensional() => Solver3d::OneD,
+            Solver3d::Auto => Solver3d::Accurate(Accurate3d::default()),
+            other => *other,
+        }
+    }
+
+    pub fn solve(&self, kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
+        match self.resolve(kick) {
+            Solver3d::Accurate(s) => s.solve(kick),
+            Solver3d::OneD => one_d::solve(kick),
+            #[cfg(feature = "rapier")]
+            Solver3d::Rapier(s) => s.solve(kick),
+            Solver3d::Auto => unreachable!("resolve never returns Auto"),
+        }
+    }
+}

@@ -1,0 +1,129 @@
+//! What a 3D solver returns.
+
+use serde::Serialize;
+
+/// Energy partition at separation, J (Eqs. 30–33 extended by rotation and friction).
+///
+/// `kinetic_initial + drive_work + gravity_work = ball_translation + ball_spin
+/// + foot + elastic_final + normal_damping_loss + friction_loss`; the losses
+/// and works are integrated from their own power densities, so the residual
+/// measures the solver, not a definition.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct EnergyPartition {
+    pub kinetic_initial: f64,
+    /// ½ m_b |v_b|².
+    pub ball_translation: f64,
+    /// ½ I_b |ω_b|².
+    pub ball_spin: f64,
+    /// Foot translation and rotation.
+    pub foot: f64,
+    /// U(δ) of the normal law plus ½ k_t |ξ|² of the tangential spring at the end.
+    pub elastic_final: f64,
+    /// ∫ c max(δ̇,0) δ̇ dt (Eq. 25).
+    pub normal_damping_loss: f64,
+    /// ∫ (c_t |ξ̇|² + μ F_n |slip speed|) dt: tangential damper and Coulomb slider.
+    pub friction_loss: f64,
+    /// ∫ F_drive · v_f dt.
+    pub drive_work: f64,
+    /// Work of gravity on both bodies.
+    pub gravity_work: f64,
+}
+
+impl EnergyPartition {
+    /// Input − (kinetic + elastic + losses): zero up to the solver's error.
+    pub fn residual(&self) -> f64 {
+        self.kinetic_initial + self.drive_work + self.gravity_work
+            - (self.ball_translation + self.ball_spin + self.foot + self.elastic_final
+                + self.normal_damping_loss + self.friction_loss)
+    }
+    pub fn relative_residual(&self) -> f64 {
+        self.residual() / (self.kinetic_initial + self.drive_work.abs() + self.gravity_work.abs())
+    }
+}
+
+/// Summary of one 3D contact, SI units, world frame (x: line of motion, z: up).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Outcome3d {
+    /// Ball velocity at separation, m/s.
+    pub launch_velocity: [f64; 3],
+    /// Ball angular velocity at separation, rad/s.
+    pub spin: [f64; 3],
+    /// |launch_velocity|, m/s.
+    pub speed: f64,
+    /// |spin| in revolutions per minute.
+    pub spin_rpm: f64,
+    /// Elevation of the launch velocity above the horizontal, degrees.
+    pub launch_angle: f64,
+    /// Horizontal direction of launch from the x axis, degrees (positive toward +y).
+    pub launch_azimuth: f64,
+    pub foot_velocity: [f64; 3],
+    pub foot_angular_velocity: [f64; 3],
+    pub contact_time: f64,
+    pub peak_normal_force: f64,
+    pub peak_normal_force_time: f64,
+    /// sup |F_t|, N.
+    pub peak_tangential_force: f64,
+    pub max_compression: f64,
+    pub max_compression_time: f64,
+    /// Total time the tangential spring slides on its Coulomb cap, s.
+    pub slip_time: f64,
+    /// Contact impulse on the ball ∫F dt, N s (Eq. 1).
+    pub impulse: [f64; 3],
+    /// ∫ F_n dt, N s.
+    pub normal_impulse: f64,
+    /// ∫ r × F dt about the ball centre, N m s (Eq. 61 with a moving r).
+    pub angular_impulse: [f64; 3],
+    /// r0 × J with r0 the contact point at first touch (Eq. 61 as written).
+    pub angular_impulse_fixed_point: [f64; 3],
+    pub energy: EnergyPartition,
+    /// Right-hand-side evaluations (0 for closed forms), or scene steps.
+    pub evaluations: u64,
+    pub solver: &'static str,
+}
+
+impl Outcome3d {
+    /// Ball angular momentum at separation, I_b ω (the ball starts without spin).
+    pub fn ball_angular_momentum(&self, ball_inertia: f64) -> [f64; 3] {
+        self.spin.map(|w| ball_inertia * w)
+    }
+
+    /// Fill speed, rpm and angles from the two vectors.
+    pub(crate) fn derive_summary(&mut self) {
+        let [vx, vy, vz] = self.launch_velocity;
+        self.speed = (vx * vx + vy * vy + vz * vz).sqrt();
+        let [wx, wy, wz] = self.spin;
+        self.spin_rpm = (wx * wx + wy * wy + wz * wz).sqrt() * 60.0 / std::f64::consts::TAU;
+        self.launch_angle = vz.atan2((vx * vx + vy * vy).sqrt()).to_degrees();
+        self.launch_azimuth = vy.atan2(vx).to_degrees();
+    }
+
+    /// No NaN or infinity leaves the library.
+    pub(crate) fn check_finite(self) -> Result<Self, kick_core::KickError> {
+        let t = self.contact_time;
+        let vectors = [
+            ("launch velocity", self.launch_velocity),
+            ("spin", self.spin),
+            ("foot velocity", self.foot_velocity),
+            ("foot angular velocity", self.foot_angular_velocity),
+            ("impulse", self.impulse),
+            ("angular impulse", self.angular_impulse),
+        ];
+        for (name, v) in vectors {
+            for x in v {
+                kick_core::error::finite(name, x, t)?;
+            }
+        }
+        let scalars = [
+            ("contact time", self.contact_time),
+            ("peak normal force", self.peak_normal_force),
+            ("peak tangential force", self.peak_tangential_force),
+            ("max compression", self.max_compression),
+            ("slip time", self.slip_time),
+            ("energy residual", self.energy.residual()),
+        ];
+        for (name, x) in scalars {
+            kick_core::error::finite(name, x, t)?;
+        }
+        Ok(self)
+    }
+}

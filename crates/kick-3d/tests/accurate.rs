@@ -1,0 +1,178 @@
+//! The accurate 3D path against the 1D solver, closed forms and conservation laws.
+
+use kick_3d::checks::{kick, MATCH_1D};
+use kick_3d::dynamics::{self, Dynamics};
+use kick_3d::{Accurate3d, FootShape, Kick3d, Kick3dError, Kick3dSpec, Solver3d};
+use kick_core::{KickError, Parameter, Scenario};
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+fn solve(k: &Kick3d) -> kick_3d::Outcome3d {
+    Accurate3d::default().solve(k).expect("solves")
+}
+
+#[test]
+fn rounded_box_central_frictionless_matches_1d() {
+    let k = kick(Kick3dSpec {
+        friction: Some(0.0),
+        foot_shape: Some(FootShape::RoundedBox { half_extents: [0.02, 0.11, 0.04], border_radius: 0.01 }),
+        ..Kick3dSpec::default()
+    });
+    let one = kick_3d::one_d::solve(&k).unwrap();
+    let three = solve(&k);
+    assert_eq!(one.solver, "1d");
+    for (a, b) in [
+        (three.launch_velocity[0], one.launch_velocity[0]),
+        (three.foot_velocity[0], one.foot_velocity[0]),
+        (three.contact_time, one.contact_time),
+        (three.peak_normal_force, one.peak_normal_force),
+        (three.max_compression, one.max_compression),
+    ] {
+        assert!(rel(a, b) <= MATCH_1D, "{a} vs {b}: {:.2e}", rel(a, b));
+    }
+}
+
+#[test]
+fn frictionless_oblique_kick_is_the_rotated_1d_kick() {
+    // Tilted normal (offset 6 cm) and a rising foot (15°) that cannot turn:
+    // 3D geometry, 1D physics, although the ball slides 6 cm along the face.
+    let k = kick(Kick3dSpec {
+        friction: Some(0.0),
+        offset: Some(0.06),
+        approach_angle_deg: Some(15.0),
+        foot_inertia: Some([1e12; 3]),
+        ..Kick3dSpec::default()
+    });
+    let one = kick_3d::one_d::solve_along_normal(&k).unwrap();
+    let three = solve(&k);
+    let scale = k.base.foot_speed();
+    for i in 0..3 {
+        assert!((three.launch_velocity[i] - one.launch_velocity[i]).abs() / scale <= MATCH_1D);
+        assert!((three.foot_velocity[i] - one.foot_velocity[i]).abs() / scale <= MATCH_1D);
+    }
+    assert!(rel(three.contact_time, one.contact_time) <= MATCH_1D);
+    assert!(rel(three.peak_normal_force, one.peak_normal_force) <= MATCH_1D);
+    assert!(rel(three.max_compression, one.max_compression) <= MATCH_1D);
+    // No friction: no spin (the normal passes through the centre).
+    assert!(three.spin.iter().all(|w| w.abs() * k.ball_radius / scale <= 1e-12));
+}
+
+#[test]
+fn driven_central_kick_matches_1d() {
+    let base = Scenario::baseline().with(Parameter::DriveForce, 800.0).unwrap();
+    let k = Kick3d::new(base, &Kick3dSpec { friction: Some(0.0), ..Kick3dSpec::default() }).unwrap();
+    let one = kick_compliant::Accurate::default();
+    let o1 = kick_core::Solver::solve(&one, &base).unwrap();
+    let o3 = solve(&k);
+    assert!(rel(o3.launch_velocity[0], o1.v_ball_out) <= MATCH_1D);
+    assert!(rel(o3.foot_velocity[0], o1.v_foot_out) <= MATCH_1D);
+    assert!(rel(o3.contact_time, o1.contact_time) <= MATCH_1D);
+    assert!(rel(o3.energy.drive_work, o1.energy.drive_work) <= MATCH_1D);
+}
+
+#[test]
+fn passive_energy_never_rises_and_closes_at_every_step() {
+    let k = kick(Kick3dSpec { offset: Some(0.07), approach_angle_deg: Some(20.0), friction: Some(0.4), ..Kick3dSpec::default() });
+    let (o, samples) = Accurate3d::default().solve_recorded(&k).unwrap();
+    let k0 = k.initial_kinetic_energy();
+    assert!(samples.len() > 20);
+    for w in samples.windows(2) {
+        let ((_, e0, dn0, dt0), (_, e1, dn1, dt1)) = (w[0], w[1]);
+        // Kinetic + elastic can only fall; the losses can only grow (to the solver's error, 1e-9 K).
+        assert!(e1 <= e0 + 1e-9 * k0, "energy rose by {:.3e} J", e1 - e0);
+        assert!(dn1 >= dn0 && dt1 >= dt0);
+        assert!((e1 + dn1 + dt1 - k0).abs() <= 1e-9 * k0);
+    }
+    assert!(o.energy.friction_loss > 0.0 && o.energy.ball_spin > 0.0);
+    assert!(o.slip_time > 0.0 && o.slip_time < o.contact_time, "both grip and slip phases: {} of {}", o.slip_time, o.contact_time);
+}
+
+#[test]
+fn momentum_and_angular_momentum_of_the_pair_are_conserved() {
+    // No drive, no gravity: nothing outside the pair pushes or twists it.
+    let k = kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() });
+    let (m_f, m_b) = (k.base.effective_foot_mass(), k.base.ball_mass());
+    let total = |y: &dynamics::State| {
+        let v = |i| dynamics::vec3(y, i);
+        let momentum = v(dynamics::FOOT_VELOCITY) * m_f + v(dynamics::BALL_VELOCITY) * m_b;
+        let q = dynamics::rot(y, dynamics::FOOT_ROTATION);
+        let [ix, iy, iz] = k.foot_inertia;
+        let foot_spin = q * ((q.inverse() * v(dynamics::FOOT_ANGULAR_VELOCITY)) * parry3d_f64::math::Vec3::new(ix, iy, iz));
+        let angular = v(dynamics::FOOT_POSITION).cross(v(dynamics::FOOT_VELOCITY) * m_f)
+            + foot_spin
+            + v(dynamics::BALL_POSITION).cross(v(dynamics::BALL_VELOCITY) * m_b)
+            + v(dynamics::BALL_ANGULAR_VELOCITY) * k.ball_inertia;
+        (momentum, angular)
+    };
+    let y0 = dynamics::initial_state(&k);
+    let (o, y1) = Accurate3d::default().solve_to_state(&k).unwrap();
+    let ((p0, l0), (p1, l1)) = (total(&y0), total(&y1));
+    let p_scale = p0.length();
+    // Angular momentum scale: the ball's spin part, which the contact creates.
+    let l_scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
+    println!("momentum drift {:.2e}, angular momentum drift {:.2e} (scale {l_scale:.3e})", (p1 - p0).length() / p_scale, (l1 - l0).length() / l_scale);
+    assert!((p1 - p0).length() / p_scale <= 1e-12);
+    // Integrated, not exact: the solver's tolerance (1e-9 of the ball's angular momentum).
+    assert!((l1 - l0).length() / l_scale <= 1e-9);
+    let _ = Dynamics::new(&k);
+}
+
+#[test]
+fn grip_approaches_the_closed_form_as_friction_grows() {
+    let spec = Kick3dSpec { offset: Some(0.05), foot_inertia: Some([1e12; 3]), ..Kick3dSpec::default() };
+    let limit = solve(&kick(Kick3dSpec { friction: Some(f64::INFINITY), ..spec })).spin[2];
+    let errors: Vec<f64> = [0.3, 1.0, 3.0, 10.0, 100.0]
+        .iter()
+        .map(|&mu| rel(solve(&kick(Kick3dSpec { friction: Some(mu), ..spec })).spin[2], limit))
+        .collect();
+    println!("relative distance to mu = inf: {errors:?}");
+    assert!(errors.windows(2).all(|w| w[1] <= w[0]), "{errors:?}");
+    assert!(errors[4] < errors[0] / 10.0, "{errors:?}");
+}
+
+#[test]
+fn spin_grows_and_speed_falls_with_offset() {
+    let points = kick_3d::sweep::sweep(&Scenario::baseline(), &Kick3dSpec::default(), kick_3d::sweep::Axis::Offset, &[0.0, 0.02, 0.04, 0.06, 0.08]).unwrap();
+    assert_eq!(points[0].spin_rpm, 0.0);
+    assert!(points.windows(2).all(|w| w[1].spin_rpm > w[0].spin_rpm && w[1].speed < w[0].speed), "{points:?}");
+}
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    let b = Scenario::baseline();
+    let e = |s: Kick3dSpec| Kick3d::new(b, &s).unwrap_err();
+    assert!(matches!(e(Kick3dSpec { offset: Some(0.11), ..Default::default() }), Kick3dError::OffsetOutsideBall { .. }));
+    assert!(matches!(e(Kick3dSpec { offset: Some(f64::NAN), ..Default::default() }), Kick3dError::OffsetOutsideBall { .. }));
+    assert!(matches!(e(Kick3dSpec { ball_inertia: Some(0.01), ..Default::default() }), Kick3dError::InvalidParameter { name: "ball_inertia", .. }));
+    assert!(matches!(e(Kick3dSpec { friction: Some(-0.1), ..Default::default() }), Kick3dError::InvalidParameter { name: "friction", .. }));
+    assert!(matches!(e(Kick3dSpec { friction: Some(f64::NAN), ..Default::default() }), Kick3dError::InvalidParameter { name: "friction", .. }));
+    assert!(matches!(e(Kick3dSpec { approach_angle_deg: Some(90.0), ..Default::default() }), Kick3dError::InvalidParameter { name: "approach_angle", .. }));
+    assert!(matches!(e(Kick3dSpec { ball_radius: Some(-1.0), ..Default::default() }), Kick3dError::InvalidParameter { name: "ball_radius", .. }));
+    assert!(matches!(e(Kick3dSpec { tangential_damping: Some(0.0), ..Default::default() }), Kick3dError::InvalidParameter { .. }));
+    assert!(matches!(e(Kick3dSpec { foot_inertia: Some([1.0, 0.0, 1.0]), ..Default::default() }), Kick3dError::InvalidParameter { name: "foot_inertia", .. }));
+    // The foot rises so steeply that it no longer closes on the ball.
+    let slow = b.with(Parameter::BallSpeed, 15.0).unwrap();
+    let err = Kick3d::new(slow, &Kick3dSpec { approach_angle_deg: Some(60.0), ..Default::default() }).unwrap_err();
+    assert!(matches!(err, Kick3dError::Core(KickError::NoContact { .. })), "{err}");
+    let ground = kick(Kick3dSpec { ground: Some(true), ..Default::default() });
+    assert!(matches!(Accurate3d::default().solve(&ground), Err(Kick3dError::UnsupportedScene { .. })));
+    assert!(matches!(Solver3d::from_name("euler", 1e-5), Err(Kick3dError::UnknownSolver { .. })));
+    assert!(matches!(Accurate3d::new(0.0, 1e-15), Err(Kick3dError::InvalidParameter { .. })));
+}
+
+#[test]
+fn auto_takes_the_cheapest_path() {
+    let central = kick(Kick3dSpec { friction: Some(0.0), ..Default::default() });
+    assert_eq!(Solver3d::Auto.solve(&central).unwrap().solver, "1d");
+    let central_friction = kick(Kick3dSpec { friction: Some(0.8), ..Default::default() });
+    assert_eq!(Solver3d::Auto.solve(&central_friction).unwrap().solver, "1d");
+    // Frictionless but off-center: the sliding contact turns the foot, so 3D.
+    let oblique = kick(Kick3dSpec { friction: Some(0.0), offset: Some(0.04), ..Default::default() });
+    assert_eq!(Solver3d::Auto.solve(&oblique).unwrap().solver, "accurate-3d");
+    let curve = kick(Kick3dSpec { offset: Some(0.04), ..Default::default() });
+    assert_eq!(Solver3d::Auto.solve(&curve).unwrap().solver, "accurate-3d");
+    let ground = kick(Kick3dSpec { offset: Some(0.04), ground: Some(true), ..Default::default() });
+    assert!(matches!(Solver3d::Auto.resolve(&ground), Solver3d::Rapier(_)));
+}
