@@ -2,6 +2,7 @@
 
 mod check;
 mod fit;
+mod leg;
 mod output;
 mod simulate;
 mod table2;
@@ -24,6 +25,8 @@ enum Command {
     Table2(table2::Args),
     /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
     Check(check::Args),
+    /// Effective mass of the articulated leg (Eq. 11) and the exit speed it gives.
+    Leg(leg::Args),
     /// Identify parameters from printed or measured data.
     #[command(subcommand)]
     Fit(fit::FitCommand),
@@ -35,6 +38,7 @@ fn main() -> ExitCode {
         Command::Simulate(args) => simulate::run(args),
         Command::Table2(args) => table2::run(args),
         Command::Check(args) => check::run(args),
+        Command::Leg(args) => leg::run(args),
         Command::Fit(command) => fit::run(command),
     };
     match result {

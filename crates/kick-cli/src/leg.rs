@@ -1,0 +1,139 @@
+//! `kick leg`: effective mass of the articulated leg (Eq. 11, kick-leg) and
+//! the 1D exit speed that follows with m_f = m_eff (Section 14.1).
+
+use crate::output::{json, CliResult, Format};
+use kick_core::Scenario;
+use kick_leg::{
+    anthropometry::{DE_LEVA_BODY_MASS, DE_LEVA_STATURE},
+    exit_outcome, AnkleJoint, HipSupport, Impact, Leg, Pose, Variant,
+};
+use nalgebra::Vector3;
+use serde_json::{json as value, Value};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Knee flexion, degrees (0 = straight)
+    #[arg(long, allow_negative_numbers = true)]
+    knee: f64,
+    /// Ankle plantarflexion from neutral, degrees (0 = foot at right angles to the shank)
+    #[arg(long, allow_negative_numbers = true)]
+    ankle: f64,
+    /// Thigh angle from the downward vertical, degrees, positive forward
+    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
+    hip: f64,
+    /// Ankle rigid during contact (default: a free hinge)
+    #[arg(long, conflicts_with = "ankle_stiffness")]
+    locked_ankle: bool,
+    /// Ankle torsional stiffness, N m/rad; the contact time comes from the 1D model
+    #[arg(long, allow_negative_numbers = true)]
+    ankle_stiffness: Option<f64>,
+    /// Knee rigid during contact (default: a free hinge)
+    #[arg(long)]
+    locked_knee: bool,
+    /// Let the hip translate freely (default: pinned hip)
+    #[arg(long)]
+    free_hip: bool,
+    /// Spatial leg (ball-joint hip); enables --abduction, --rotation, --lateral-offset
+    #[arg(long)]
+    spatial: bool,
+    /// Spatial: hip abduction, degrees
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    abduction: f64,
+    /// Spatial: thigh rotation about its long axis, degrees
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    rotation: f64,
+    /// Spatial: contact offset along the foot's mediolateral axis, m
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    lateral_offset: f64,
+    /// Contact point from the ankle along the foot, fraction of foot length
+    #[arg(long, default_value_t = 0.65, allow_negative_numbers = true)]
+    contact: f64,
+    /// Impact direction in the sagittal plane, degrees above horizontal-forward
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    direction: f64,
+    /// Body mass, kg [de Leva's reference subject]
+    #[arg(long, default_value_t = DE_LEVA_BODY_MASS, allow_negative_numbers = true)]
+    body_mass: f64,
+    /// Stature, m [de Leva's reference subject]
+    #[arg(long, default_value_t = DE_LEVA_STATURE, allow_negative_numbers = true)]
+    height: f64,
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+pub fn run(args: Args) -> CliResult {
+    let mut leg = Leg::de_leva(args.body_mass, args.height).map_err(|e| e.to_string())?;
+    leg.hip = if args.free_hip { HipSupport::Free } else { HipSupport::Pinned };
+    leg.variant = if args.spatial { Variant::Spatial } else { Variant::Planar };
+    leg.knee_locked = args.locked_knee;
+    let pose = Pose {
+        hip_flexion: args.hip,
+        knee_flexion: args.knee,
+        plantarflexion: args.ankle,
+        hip_abduction: args.abduction,
+        hip_rotation: args.rotation,
+    };
+    if !args.direction.is_finite() {
+        return Err(format!("invalid `direction` = {}: must be finite", args.direction));
+    }
+    let angle = args.direction.to_radians();
+    let impact = Impact {
+        contact_fraction: args.contact,
+        lateral_offset: args.lateral_offset,
+        direction: Vector3::new(angle.cos(), angle.sin(), 0.0),
+    };
+    let base = Scenario::baseline();
+    let (mass, outcome, ankle) = match (args.locked_ankle, args.ankle_stiffness) {
+        (_, Some(k)) => {
+            let (mass, outcome) = leg
+                .effective_mass_elastic_ankle(&pose, &impact, k, &base)
+                .map_err(|e| e.to_string())?;
+            (mass, outcome, format!("elastic, {k} N m/rad"))
+        }
+        (locked, None) => {
+            let joint = if locked { AnkleJoint::Locked } else { AnkleJoint::Free };
+            let mass = leg.effective_mass(&pose, &impact, joint).map_err(|e| e.to_string())?;
+            let outcome = exit_outcome(mass.effective_mass, &base).map_err(|e| e.to_string())?;
+            (mass, outcome, if locked { "locked".into() } else { "free".into() })
+        }
+    };
+    match args.format {
+        Format::Json => {
+            let object: Value = value!({
+                "effective_mass": mass.effective_mass,
+                "locked_ankle": mass.locked_ankle,
+                "free_ankle": mass.free_ankle,
+                "locked_share": mass.locked_share,
+                "ankle_inertia": mass.ankle_inertia,
+                "leg_mass": leg.segments.total_mass(),
+                "ankle": ankle,
+                "hip": if args.free_hip { "free" } else { "pinned" },
+                "knee": if args.locked_knee { "locked" } else { "free" },
+                "variant": if args.spatial { "spatial" } else { "planar" },
+                "v_ball_out": outcome.v_ball_out,
+                "v_foot_out": outcome.v_foot_out,
+                "speed_ratio": outcome.speed_ratio,
+                "contact_time": outcome.contact_time,
+                "solver": "accurate",
+            });
+            println!("{}", json(&object)?);
+        }
+        Format::Text => {
+            println!("leg: de Leva (1996) male, {} kg, {} m, {} hip, {} knee, {} ankle ({})",
+                args.body_mass, args.height, if args.free_hip { "free" } else { "pinned" },
+                if args.locked_knee { "locked" } else { "free" }, ankle,
+                if args.spatial { "spatial" } else { "planar" });
+            println!("{:<20} {:>12.6} kg", "effective_mass", mass.effective_mass);
+            println!("{:<20} {:>12.6} kg", "locked_ankle", mass.locked_ankle);
+            println!("{:<20} {:>12.6} kg", "free_ankle", mass.free_ankle);
+            println!("{:<20} {:>12.6}", "locked_share", mass.locked_share);
+            println!("{:<20} {:>12.6} kg", "leg_mass", leg.segments.total_mass());
+            println!("1D contact with m_f = effective_mass (Table 1 otherwise, accurate solver):");
+            println!("{:<20} {:>12.6} m/s", "v_ball_out", outcome.v_ball_out);
+            println!("{:<20} {:>12.6} m/s", "v_foot_out", outcome.v_foot_out);
+            println!("{:<20} {:>12.6}", "speed_ratio", outcome.speed_ratio);
+            println!("{:<20} {:>12.6e} s", "contact_time", outcome.contact_time);
+        }
+    }
+    Ok(())
+}
