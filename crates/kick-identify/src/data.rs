@@ -1,0 +1,403 @@
+//! Observations and the fit specification file.
+//!
+//! A fit specification (TOML, or JSON with the same fields) names the free
+//! parameters, the known values and starting guesses, and the data:
+//!
+//! ```toml
+//! free = ["foot_mass", "stiffness", "damping", "exponent"]
+//! [scenario]            # any ScenarioSpec field; the rest is Table 1's baseline
+//! foot_mass = 2.5       # starting guess for a free parameter, known value otherwise
+//! [[scalar]]            # zero or more scalar observations, SI units
+//! observable = "v_ball_out"
+//! value = 31.98
+//! sigma = 0.005         # standard uncertainty, same unit
+//! [history]             # optional time history
+//! file = "kick.csv"     # relative to the specification file
+//! sigma = { force = 40.0, compression = 2e-4, ball_velocity = 0.05 }
+//! ```
+//!
+//! The history CSV has a header `time,<channel>,...` with channels among
+//! `force` (N), `compression` (m), `foot_velocity`, `ball_velocity` (m/s);
+//! times in s from first touch, strictly increasing; lines starting with `#`
+//! are comments. Every channel in the file needs a sigma.
+
+use crate::IdentifyError;
+use kick_core::{Outcome, ScenarioSpec};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// A scalar observable of one contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Observable {
+    /// v_b⁺, m/s.
+    VBallOut,
+    /// v_f⁺, m/s.
+    VFootOut,
+    /// t_c, s.
+    ContactTime,
+    /// sup F, N.
+    PeakForce,
+    /// δ_max, m.
+    MaxCompression,
+}
+
+impl Observable {
+    pub const ALL: [Observable; 5] = [
+        Observable::VBallOut,
+        Observable::VFootOut,
+        Observable::ContactTime,
+        Observable::PeakForce,
+        Observable::MaxCompression,
+    ];
+    pub const NAMES: &'static str = "v_ball_out, v_foot_out, contact_time, peak_force, max_compression";
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Observable::VBallOut => "v_ball_out",
+            Observable::VFootOut => "v_foot_out",
+            Observable::ContactTime => "contact_time",
+            Observable::PeakForce => "peak_force",
+            Observable::MaxCompression => "max_compression",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Result<Observable, IdentifyError> {
+        Observable::ALL.into_iter().find(|o| o.name() == name).ok_or_else(|| {
+            IdentifyError::UnknownObservable { name: name.to_string(), expected: Observable::NAMES }
+        })
+    }
+
+    pub fn value(self, outcome: &Outcome) -> f64 {
+        match self {
+            Observable::VBallOut => outcome.v_ball_out,
+            Observable::VFootOut => outcome.v_foot_out,
+            Observable::ContactTime => outcome.contact_time,
+            Observable::PeakForce => outcome.peak_force,
+            Observable::MaxCompression => outcome.max_compression,
+        }
+    }
+}
+
+/// One measured scalar with its standard uncertainty.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScalarObservation {
+    pub observable: Observable,
+    pub value: f64,
+    pub sigma: f64,
+}
+
+/// A recorded channel of a time history.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Channel {
+    /// F(t), N.
+    Force,
+    /// δ(t) = max(x_f − x_b, 0), m.
+    Compression,
+    /// v_f(t), m/s.
+    FootVelocity,
+    /// v_b(t), m/s.
+    BallVelocity,
+}
+
+impl Channel {
+    pub const ALL: [Channel; 4] =
+        [Channel::Force, Channel::Compression, Channel::FootVelocity, Channel::BallVelocity];
+    pub const NAMES: &'static str = "force, compression, foot_velocity, ball_velocity";
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Channel::Force => "force",
+            Channel::Compression => "compression",
+            Channel::FootVelocity => "foot_velocity",
+            Channel::BallVelocity => "ball_velocity",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Result<Channel, IdentifyError> {
+        Channel::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| {
+            IdentifyError::UnknownChannel { name: name.to_string(), expected: Channel::NAMES }
+        })
+    }
+}
+
+/// Sampled channels on a common time grid.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct HistoryData {
+    pub times: Vec<f64>,
+    pub channels: Vec<(Channel, Vec<f64>)>,
+}
+
+impl HistoryData {
+    /// Parse the CSV format described in the module documentation.
+    pub fn parse_csv(text: &str, source_name: &str) -> Result<HistoryData, IdentifyError> {
+        let err = |line: usize, message: String| IdentifyError::data(format!("{source_name}:{line}"), message);
+        let mut lines = text
+            .lines()
+            .enumerate()
+            .map(|(i, l)| (i + 1, l.trim()))
+            .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+        let (header_line, header) =
+            lines.next().ok_or_else(|| IdentifyError::data(source_name, "empty file: expected a header line"))?;
+        let names: Vec<&str> = header.split(',').map(str::trim).collect();
+        if names.first() != Some(&"time") {
+            return Err(err(header_line, format!("the first column must be `time`, found `{}`", names[0])));
+        }
+        let mut channels = Vec::new();
+        for name in &names[1..] {
+            let channel = Channel::from_name(name)?;
+            if channels.iter().any(|(c, _)| *c == channel) {
+                return Err(err(header_line, format!("column `{name}` appears twice")));
+            }
+            channels.push((channel, Vec::new()));
+        }
+        if channels.is_empty() {
+            return Err(err(header_line, format!("no data column: expected any of {}", Channel::NAMES)));
+        }
+        let mut times: Vec<f64> = Vec::new();
+        for (number, line) in lines {
+            let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+            if fields.len() != names.len() {
+                return Err(err(number, format!("{} fields, the header has {}", fields.len(), names.len())));
+            }
+            let mut values = Vec::with_capacity(fields.len());
+            for (field, name) in fields.iter().zip(&names) {
+                let v: f64 = field
+                    .parse()
+                    .map_err(|_| err(number, format!("column `{name}`: `{field}` is not a number")))?;
+                if !v.is_finite() {
+                    return Err(err(number, format!("column `{name}`: {v} is not finite")));
+                }
+                values.push(v);
+            }
+            if let Some(&last) = times.last() {
+                if values[0] <= last {
+                    return Err(err(number, format!("time {} does not increase (previous {last})", values[0])));
+                }
+            }
+            times.push(values[0]);
+            for ((_, column), v) in channels.iter_mut().zip(&values[1..]) {
+                column.push(*v);
+            }
+        }
+        if times.is_empty() {
+            return Err(IdentifyError::data(source_name, "no data rows"));
+        }
+        Ok(HistoryData { times, channels })
+    }
+
+    /// The same format, full precision.
+    pub fn to_csv(&self) -> String {
+        let mut out = String::from("time");
+        for (c, _) in &self.channels {
+            out.push(',');
+            out.push_str(c.name());
+        }
+        out.push('\n');
+        for (i, t) in self.times.iter().enumerate() {
+            out.push_str(&format!("{t:e}"));
+            for (_, column) in &self.channels {
+                out.push_str(&format!(",{:e}", column[i]));
+            }
+            out.push('\n');
+        }
+        out
+    }
+
+    pub fn len(&self) -> usize {
+        self.times.len() * self.channels.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// A history with one standard uncertainty per channel.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WeightedHistory {
+    pub data: HistoryData,
+    pub sigma: BTreeMap<Channel, f64>,
+}
+
+impl WeightedHistory {
+    pub fn new(data: HistoryData, sigma: BTreeMap<Channel, f64>) -> Result<Self, IdentifyError> {
+        for (channel, _) in &data.channels {
+            match sigma.get(channel) {
+                Some(&s) if s.is_finite() && s > 0.0 => {}
+                Some(&s) => {
+                    return Err(IdentifyError::data(
+                        "history sigma",
+                        format!("`{}` = {s}: must be finite and > 0", channel.name()),
+                    ))
+                }
+                None => {
+                    return Err(IdentifyError::data(
+                        "history sigma",
+                        format!("no sigma for channel `{}`", channel.name()),
+                    ))
+                }
+            }
+        }
+        for channel in sigma.keys() {
+            if !data.channels.iter().any(|(c, _)| c == channel) {
+                return Err(IdentifyError::data(
+                    "history sigma",
+                    format!("sigma given for `{}`, which the data do not have", channel.name()),
+                ));
+            }
+        }
+        Ok(WeightedHistory { data, sigma })
+    }
+}
+
+/// Everything a fit compares the model with.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct Observations {
+    pub scalars: Vec<ScalarObservation>,
+    pub history: Option<WeightedHistory>,
+}
+
+impl Observations {
+    pub fn scalars(scalars: Vec<ScalarObservation>) -> Result<Self, IdentifyError> {
+        let o = Observations { scalars, history: None };
+        o.validate()?;
+        Ok(o)
+    }
+
+    pub fn history(history: WeightedHistory) -> Self {
+        Observations { scalars: Vec::new(), history: Some(history) }
+    }
+
+    /// Number of residuals.
+    pub fn len(&self) -> usize {
+        self.scalars.len() + self.history.as_ref().map_or(0, |h| h.data.len())
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    pub fn validate(&self) -> Result<(), IdentifyError> {
+        if self.is_empty() {
+            return Err(IdentifyError::NoData);
+        }
+        for s in &self.scalars {
+            if !s.value.is_finite() {
+                return Err(IdentifyError::data(s.observable.name(), format!("value {} is not finite", s.value)));
+            }
+            if !(s.sigma.is_finite() && s.sigma > 0.0) {
+                return Err(IdentifyError::data(s.observable.name(), format!("sigma {}: must be finite and > 0", s.sigma)));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The `[history]` table of a fit specification.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HistorySpec {
+    pub file: PathBuf,
+    pub sigma: BTreeMap<String, f64>,
+}
+
+/// A fit specification file (see the module documentation).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FitSpec {
+    pub free: Vec<String>,
+    #[serde(default)]
+    pub scenario: ScenarioSpec,
+    #[serde(default)]
+    pub scalar: Vec<ScalarObservation>,
+    #[serde(default)]
+    pub history: Option<HistorySpec>,
+}
+
+impl FitSpec {
+    /// Parse TOML, or JSON when the text starts with `{`.
+    pub fn parse(text: &str, source_name: &str) -> Result<FitSpec, IdentifyError> {
+        if text.trim_start().starts_with('{') {
+            serde_json::from_str(text).map_err(|e| IdentifyError::data(source_name, e.to_string()))
+        } else {
+            toml::from_str(text).map_err(|e| IdentifyError::data(source_name, e.to_string()))
+        }
+    }
+
+    /// Read the specification and the history file it names (relative to it).
+    pub fn load(path: &Path) -> Result<(FitSpec, Observations), IdentifyError> {
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| IdentifyError::data(&name, e.to_string()))?;
+        let spec = FitSpec::parse(&text, &name)?;
+        let history = match &spec.history {
+            None => None,
+            Some(h) => {
+                let file = path.parent().unwrap_or(Path::new(".")).join(&h.file);
+                let file_name = file.display().to_string();
+                let csv = std::fs::read_to_string(&file).map_err(|e| IdentifyError::data(&file_name, e.to_string()))?;
+                let data = HistoryData::parse_csv(&csv, &file_name)?;
+                let mut sigma = BTreeMap::new();
+                for (k, v) in &h.sigma {
+                    sigma.insert(Channel::from_name(k)?, *v);
+                }
+                Some(WeightedHistory::new(data, sigma)?)
+            }
+        };
+        let observations = Observations { scalars: spec.scalar.clone(), history };
+        observations.validate()?;
+        Ok((spec, observations))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn csv_round_trips_and_names_its_errors() {
+        let text = "# a comment\ntime,force,ball_velocity\n0,0,0\n1e-3,100.5,2\n2e-3,50,4\n";
+        let h = HistoryData::parse_csv(text, "k.csv").unwrap();
+        assert_eq!(h.times, vec![0.0, 1e-3, 2e-3]);
+        assert_eq!(h.channels[0].1, vec![0.0, 100.5, 50.0]);
+        assert_eq!(HistoryData::parse_csv(&h.to_csv(), "again").unwrap(), h);
+
+        let e = HistoryData::parse_csv("time,force\n0,1\n0,2\n", "k.csv").unwrap_err();
+        assert!(e.to_string().contains("k.csv:3") && e.to_string().contains("does not increase"), "{e}");
+        let e = HistoryData::parse_csv("time,force\n0,x\n", "k.csv").unwrap_err();
+        assert!(e.to_string().contains("`x` is not a number"), "{e}");
+        let e = HistoryData::parse_csv("time,forse\n0,1\n", "k.csv").unwrap_err();
+        assert!(matches!(e, IdentifyError::UnknownChannel { .. }), "{e}");
+        let e = HistoryData::parse_csv("time,force\n0,NaN\n", "k.csv").unwrap_err();
+        assert!(e.to_string().contains("not finite"), "{e}");
+        assert!(HistoryData::parse_csv("", "k.csv").is_err());
+        assert!(HistoryData::parse_csv("force,time\n1,0\n", "k.csv").is_err());
+    }
+
+    #[test]
+    fn sigma_must_cover_exactly_the_channels() {
+        let h = HistoryData::parse_csv("time,force\n0,1\n", "k").unwrap();
+        assert!(WeightedHistory::new(h.clone(), BTreeMap::new()).is_err());
+        assert!(WeightedHistory::new(h.clone(), BTreeMap::from([(Channel::Force, -1.0)])).is_err());
+        assert!(WeightedHistory::new(
+            h.clone(),
+            BTreeMap::from([(Channel::Force, 1.0), (Channel::Compression, 1.0)])
+        )
+        .is_err());
+        assert!(WeightedHistory::new(h, BTreeMap::from([(Channel::Force, 1.0)])).is_ok());
+    }
+
+    #[test]
+    fn spec_parses_toml_and_json() {
+        let toml = "free = [\"stiffness\"]\n[scenario]\nstiffness = 3e5\n[[scalar]]\nobservable = \"v_ball_out\"\nvalue = 31.98\nsigma = 0.005\n";
+        let spec = FitSpec::parse(toml, "a.toml").unwrap();
+        assert_eq!(spec.scenario.stiffness, Some(3e5));
+        assert_eq!(spec.scalar[0].observable, Observable::VBallOut);
+        let json = r#"{"free": ["damping"], "scalar": [{"observable": "peak_force", "value": 3804, "sigma": 0.5}]}"#;
+        assert_eq!(FitSpec::parse(json, "a.json").unwrap().scalar[0].value, 3804.0);
+        assert!(FitSpec::parse("free = [\"k\"]\nbogus = 1\n", "b.toml").is_err());
+    }
+}

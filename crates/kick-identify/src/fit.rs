@@ -1,0 +1,374 @@
+//! Levenberg–Marquardt over a subset of the scenario's parameters.
+//!
+//! Residuals are r_i = (model_i − data_i)/σ_i. Parameters that must be
+//! positive (masses, k, c, n) are fitted as θ = ln p, so every trial point is
+//! a valid scenario and steps are relative; speeds and the drive are fitted
+//! as they are. The Jacobian is taken by central differences (Accurate's
+//! outputs are smooth in the parameters to its 1e-12 tolerance).
+//!
+//! Uncertainties: with J the Jacobian of r in θ at the estimate, m residuals
+//! and n parameters, s² = Σ r²/(m − n) and cov θ = s² (JᵀJ)⁻¹; a log-space
+//! parameter's standard uncertainty is p σ_θ (first order). The correlation
+//! matrix is scale-free, so it is the same in θ and in p.
+
+use crate::data::Observations;
+use crate::model::predict;
+use crate::IdentifyError;
+use kick_compliant::Accurate;
+use kick_core::{Parameter, Scenario};
+use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
+use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
+use serde::Serialize;
+use std::cell::RefCell;
+
+/// Relative singular value below which JᵀJ is treated as singular: the
+/// finite-difference Jacobian is accurate to about 1e-6 relative, so
+/// directions weaker than that are not resolved by the data.
+pub const RANK_TOLERANCE: f64 = 1e-6;
+
+/// Central-difference step in θ (relative step for log-space parameters).
+pub const JACOBIAN_STEP: f64 = 1e-6;
+
+/// What to fit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FitProblem {
+    /// Known values and starting guesses of the free parameters.
+    pub start: Scenario,
+    pub free: Vec<Parameter>,
+    pub observations: Observations,
+}
+
+/// Solver and optimiser settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FitOptions {
+    pub solver: Accurate,
+    /// Bound on residual evaluations: patience × (n + 1) (crate semantics).
+    pub patience: usize,
+    /// ftol = xtol of the optimiser.
+    pub tolerance: f64,
+}
+
+impl Default for FitOptions {
+    fn default() -> Self {
+        FitOptions { solver: Accurate::default(), patience: 100, tolerance: 1e-10 }
+    }
+}
+
+/// One fitted parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Estimate {
+    pub parameter: Parameter,
+    pub value: f64,
+    /// Standard uncertainty; `None` when the data do not determine it
+    /// (JᵀJ singular, or no more residuals than parameters).
+    pub standard_uncertainty: Option<f64>,
+    pub start: f64,
+    pub log_space: bool,
+}
+
+/// One residual.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Residual {
+    pub label: String,
+    pub observed: f64,
+    pub predicted: f64,
+    pub sigma: f64,
+    /// (predicted − observed)/sigma.
+    pub weighted: f64,
+}
+
+/// The answer of a fit.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FitReport {
+    pub estimates: Vec<Estimate>,
+    pub residuals: Vec<Residual>,
+    /// Σ r².
+    pub chi_square: f64,
+    /// m − n.
+    pub degrees_of_freedom: i64,
+    /// s² = χ²/(m − n); `None` when m ≤ n.
+    pub residual_variance: Option<f64>,
+    /// Correlation matrix of the estimates, in `estimates` order.
+    pub correlation: Option<Vec<Vec<f64>>>,
+    /// Singular values of J (θ space), largest first: a near-zero one marks an
+    /// unidentifiable combination.
+    pub singular_values: Vec<f64>,
+    pub termination: String,
+    pub converged: bool,
+    pub evaluations: usize,
+    /// ∂r_i/∂θ_j at the estimate (weighted residuals, θ = ln p for log-space
+    /// parameters), row-major; left out of serialized reports.
+    #[serde(skip)]
+    pub jacobian: Vec<Vec<f64>>,
+}
+
+impl FitReport {
+    pub fn estimate(&self, parameter: Parameter) -> Option<&Estimate> {
+        self.estimates.iter().find(|e| e.parameter == parameter)
+    }
+}
+
+/// Parameters fitted as ln p because they must be positive.
+pub fn log_space(parameter: Parameter) -> bool {
+    matches!(
+        parameter,
+        Parameter::FootMass | Parameter::BallMass | Parameter::Stiffness | Parameter::Damping | Parameter::Exponent
+    )
+}
+
+/// The LM problem in θ.
+struct Problem<'a> {
+    problem: &'a FitProblem,
+    options: &'a FitOptions,
+    observed: DVector<f64>,
+    sigma: DVector<f64>,
+    theta: DVector<f64>,
+    /// Largest residual norm seen at a valid point; a failing trial point
+    /// is given 10x that, so the trust region shrinks away from it.
+    worst: RefCell<f64>,
+    failure: RefCell<Option<IdentifyError>>,
+}
+
+impl Problem<'_> {
+    fn scenario(&self, theta: &DVector<f64>) -> Result<Scenario, IdentifyError> {
+        let mut s = self.problem.start;
+        for (p, &t) in self.problem.free.iter().zip(theta.iter()) {
+            s = s.with(*p, if log_space(*p) { t.exp() } else { t })?;
+        }
+        Ok(s)
+    }
+
+    fn weighted(&self, theta: &DVector<f64>) -> Result<DVector<f64>, IdentifyError> {
+        let scenario = self.scenario(theta)?;
+        let predicted = predict(&self.options.solver, &scenario, &self.problem.observations)?;
+        Ok(DVector::from_iterator(
+            predicted.len(),
+            predicted.iter().zip(self.observed.iter()).zip(self.sigma.iter()).map(|((p, o), s)| (p - o) / s),
+        ))
+    }
+
+    /// Residuals at θ, or a large penalty if the model fails there.
+    fn residuals_or_penalty(&self, theta: &DVector<f64>) -> DVector<f64> {
+        match self.weighted(theta) {
+            Ok(r) => {
+                let norm = r.norm();
+                let mut worst = self.worst.borrow_mut();
+                *worst = worst.max(norm);
+                r
+            }
+            Err(e) => {
+                let m = self.observed.len();
+                let level = 10.0 * self.worst.borrow().max(1.0) / (m as f64).sqrt();
+                *self.failure.borrow_mut() = Some(e);
+                DVector::from_element(m, level)
+            }
+        }
+    }
+
+    fn steps(&self) -> Vec<f64> {
+        self.problem
+            .free
+            .iter()
+            .zip(self.theta.iter())
+            .map(|(p, &t)| if log_space(*p) { JACOBIAN_STEP } else { JACOBIAN_STEP * t.abs().max(1.0) })
+            .collect()
+    }
+
+    fn jacobian_at(&self, theta: &DVector<f64>) -> Result<DMatrix<f64>, IdentifyError> {
+        let m = self.observed.len();
+        let n = theta.len();
+        let mut j = DMatrix::zeros(m, n);
+        for (col, h) in self.steps().into_iter().enumerate() {
+            let mut plus = theta.clone();
+            plus[col] += h;
+            let mut minus = theta.clone();
+            minus[col] -= h;
+            let column = (self.weighted(&plus)? - self.weighted(&minus)?) / (2.0 * h);
+            j.set_column(col, &column);
+        }
+        Ok(j)
+    }
+}
+
+impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
+    type ResidualStorage = Owned<f64, Dyn>;
+    type JacobianStorage = Owned<f64, Dyn, Dyn>;
+    type ParameterStorage = Owned<f64, Dyn>;
+
+    fn set_params(&mut self, x: &DVector<f64>) {
+        self.theta.copy_from(x);
+    }
+    fn params(&self) -> DVector<f64> {
+        self.theta.clone()
+    }
+    fn residuals(&self) -> Option<DVector<f64>> {
+        Some(self.residuals_or_penalty(&self.theta))
+    }
+    fn jacobian(&self) -> Option<DMatrix<f64>> {
+        match self.jacobian_at(&self.theta) {
+            Ok(j) => Some(j),
+            Err(e) => {
+                *self.failure.borrow_mut() = Some(e);
+                None
+            }
+        }
+    }
+}
+
+/// Fit `problem` and report estimates, uncertainties, residuals and correlations.
+pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, IdentifyError> {
+    if problem.free.is_empty() {
+        return Err(IdentifyError::NoFreeParameters);
+    }
+    for (i, p) in problem.free.iter().enumerate() {
+        if problem.free[..i].contains(p) {
+            return Err(IdentifyError::DuplicateParameter(p.name()));
+        }
+    }
+    problem.observations.validate()?;
+    let mut theta0 = Vec::with_capacity(problem.free.len());
+    for &p in &problem.free {
+        let v = problem.start.get(p);
+        if log_space(p) {
+            if !(v > 0.0) {
+                return Err(IdentifyError::NotPositive { name: p.name(), value: v });
+            }
+            theta0.push(v.ln());
+        } else {
+            theta0.push(v);
+        }
+    }
+    let (observed, sigma, labels) = flatten(&problem.observations);
+    let lm_problem = Problem {
+        problem,
+        options,
+        observed: DVector::from_vec(observed),
+        sigma: DVector::from_vec(sigma),
+        theta: DVector::from_vec(theta0.clone()),
+        worst: RefCell::new(0.0),
+        failure: RefCell::new(None),
+    };
+    // The starting point itself must be computable.
+    let start_residuals = lm_problem.weighted(&lm_problem.theta)?;
+    *lm_problem.worst.borrow_mut() = start_residuals.norm();
+
+    let lm = LevenbergMarquardt::new()
+        .with_ftol(options.tolerance)
+        .with_xtol(options.tolerance)
+        .with_gtol(0.0)
+        .with_patience(options.patience.max(1));
+    let (solved, report) = lm.minimize(lm_problem);
+    let converged = report.termination.was_successful();
+    if let levenberg_marquardt::TerminationReason::User(_) = report.termination {
+        let failure = solved.failure.borrow().clone();
+        return Err(failure.unwrap_or(IdentifyError::NotConverged(format!("{:?}", report.termination))));
+    }
+    let theta = solved.theta.clone();
+    let residual_vector = solved.weighted(&theta)?;
+    let jacobian = solved.jacobian_at(&theta)?;
+    let scenario = solved.scenario(&theta)?;
+
+    let m = residual_vector.len();
+    let n = theta.len();
+    let chi_square = residual_vector.norm_squared();
+    let dof = m as i64 - n as i64;
+    let residual_variance = (dof > 0).then(|| chi_square / dof as f64);
+
+    // (JᵀJ)⁻¹ = V Σ⁻² Vᵀ from the SVD of J; refuse when a direction is unresolved.
+    let svd = jacobian.clone().svd(false, true);
+    let mut singular: Vec<f64> = svd.singular_values.iter().copied().collect();
+    singular.sort_by(|a, b| b.total_cmp(a));
+    let largest = singular.first().copied().unwrap_or(0.0);
+    let resolved = m >= n && largest > 0.0 && singular.iter().all(|&s| s > RANK_TOLERANCE * largest);
+    let covariance = match (resolved, residual_variance, svd.v_t.as_ref()) {
+        (true, Some(s2), Some(v_t)) => {
+            let mut inv = DMatrix::zeros(n, n);
+            for (k, &sv) in svd.singular_values.iter().enumerate() {
+                let row = v_t.row(k);
+                inv += row.transpose() * row / (sv * sv);
+            }
+            Some(inv * s2)
+        }
+        _ => None,
+    };
+
+    let estimates = problem
+        .free
+        .iter()
+        .enumerate()
+        .map(|(i, &p)| {
+            let value = scenario.get(p);
+            let sigma_theta = covariance.as_ref().map(|c| c[(i, i)].sqrt());
+            Estimate {
+                parameter: p,
+                value,
+                standard_uncertainty: sigma_theta.map(|s| if log_space(p) { value * s } else { s }),
+                start: problem.start.get(p),
+                log_space: log_space(p),
+            }
+        })
+        .collect();
+    let correlation = covariance.as_ref().map(|c| {
+        (0..n)
+            .map(|i| (0..n).map(|j| c[(i, j)] / (c[(i, i)] * c[(j, j)]).sqrt()).collect())
+            .collect()
+    });
+    let residuals = labels
+        .into_iter()
+        .enumerate()
+        .map(|(i, label)| {
+            let observed = solved.observed[i];
+            let sigma = solved.sigma[i];
+            Residual {
+                label,
+                observed,
+                predicted: observed + residual_vector[i] * sigma,
+                sigma,
+                weighted: residual_vector[i],
+            }
+        })
+        .collect();
+    Ok(FitReport {
+        estimates,
+        residuals,
+        chi_square,
+        degrees_of_freedom: dof,
+        residual_variance,
+        correlation,
+        singular_values: singular,
+        termination: format!("{:?}", report.termination),
+        converged,
+        evaluations: report.number_of_evaluations,
+        jacobian: (0..m).map(|i| jacobian.row(i).iter().copied().collect()).collect(),
+    })
+}
+
+/// Observed values, sigmas and labels in [`predict`]'s order.
+pub fn flatten(observations: &Observations) -> (Vec<f64>, Vec<f64>, Vec<String>) {
+    let mut observed = Vec::new();
+    let mut sigma = Vec::new();
+    let mut labels = Vec::new();
+    for s in &observations.scalars {
+        observed.push(s.value);
+        sigma.push(s.sigma);
+        labels.push(s.observable.name().to_string());
+    }
+    if let Some(h) = &observations.history {
+        for (channel, values) in &h.data.channels {
+            let sig = h.sigma[channel];
+            for (t, v) in h.data.times.iter().zip(values) {
+                observed.push(*v);
+                sigma.push(sig);
+                labels.push(format!("{}@{t:e}", channel.name()));
+            }
+        }
+    }
+    (observed, sigma, labels)
+}
+
+/// χ² = Σ ((model − data)/σ)² of a scenario against observations.
+pub fn misfit(solver: &Accurate, scenario: &Scenario, observations: &Observations) -> Result<f64, IdentifyError> {
+    let predicted = predict(solver, scenario, observations)?;
+    let (observed, sigma, _) = flatten(observations);
+    Ok(predicted.iter().zip(&observed).zip(&sigma).map(|((p, o), s)| ((p - o) / s).powi(2)).sum())
+}

@@ -1,0 +1,59 @@
+//! Parameter identification for the 1D kick model (Sections 17.8 and 19).
+//!
+//! - [`data`]: observations — scalar observables (exit speed, contact time,
+//!   peak force, maximum compression) or time histories (force, compression,
+//!   velocities) — and the fit specification file.
+//! - [`model`]: the forward model, `kick_compliant::Accurate`, evaluated at
+//!   the observations (histories by Hermite interpolation between its steps).
+//! - [`fit`]: Levenberg–Marquardt (crate `levenberg-marquardt`) over any subset
+//!   of the scenario's parameters, positive ones in log space, with standard
+//!   uncertainties from the Jacobian, residuals and the correlation matrix.
+//! - [`profile`]: misfit profiles and maps for the identifiability question.
+//! - [`table2`]: Table 2's changed parameter per row from the four printed observables.
+//! - [`synthetic`]: data from known parameters plus seeded Gaussian noise.
+//! - [`laws`]: the contact-law comparison on Table 2's scenarios.
+
+pub mod data;
+pub mod fit;
+pub mod laws;
+pub mod model;
+pub mod profile;
+pub mod synthetic;
+pub mod table2;
+
+pub use data::{Channel, FitSpec, HistoryData, Observable, Observations, ScalarObservation};
+pub use fit::{fit, Estimate, FitOptions, FitProblem, FitReport};
+
+use kick_core::KickError;
+use thiserror::Error;
+
+/// Every way an identification can refuse or fail; messages name the problem.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum IdentifyError {
+    #[error(transparent)]
+    Model(#[from] KickError),
+    #[error("no free parameters: name at least one parameter to fit")]
+    NoFreeParameters,
+    #[error("parameter `{0}` is listed more than once")]
+    DuplicateParameter(&'static str),
+    #[error("unknown parameter `{name}`: expected one of {expected}")]
+    UnknownParameter { name: String, expected: String },
+    #[error("parameter `{name}` starts at {value}: it is fitted in log space, so it must be > 0")]
+    NotPositive { name: &'static str, value: f64 },
+    #[error("no observations to fit")]
+    NoData,
+    #[error("unknown observable `{name}`: expected one of {expected}")]
+    UnknownObservable { name: String, expected: &'static str },
+    #[error("unknown history column `{name}`: expected time and any of {expected}")]
+    UnknownChannel { name: String, expected: &'static str },
+    #[error("{source_name}: {message}")]
+    Data { source_name: String, message: String },
+    #[error("the fit stopped without converging: {0}")]
+    NotConverged(String),
+}
+
+impl IdentifyError {
+    pub(crate) fn data(source_name: impl Into<String>, message: impl Into<String>) -> Self {
+        IdentifyError::Data { source_name: source_name.into(), message: message.into() }
+    }
+}

@@ -1,0 +1,99 @@
+//! Identifiability (Section 17.8): misfit profiles and maps.
+//!
+//! The profile of parameter p_j is χ²_j(v) = min over the other free
+//! parameters of χ² with p_j fixed at v. A flat profile means the data cannot
+//! tell v from the truth; Δχ² = χ²_j(v) − min χ² ≥ 1 marks a one-sigma
+//! departure (one parameter of interest).
+
+use crate::data::Observations;
+use crate::fit::{fit, misfit, FitOptions, FitProblem};
+use crate::IdentifyError;
+use kick_core::{Parameter, Scenario};
+use serde::Serialize;
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ProfilePoint {
+    /// p_j / truth.
+    pub factor: f64,
+    pub value: f64,
+    /// Minimum χ² over the other free parameters.
+    pub chi_square: f64,
+    /// The other parameters at that minimum, as factors of their truth.
+    pub others: Vec<(Parameter, f64)>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Profile {
+    pub parameter: Parameter,
+    pub truth: f64,
+    pub points: Vec<ProfilePoint>,
+}
+
+/// Profile each of `free` over `factors` × its value in `truth`, re-fitting
+/// the others from the truth (a start that favours the flat direction least).
+pub fn profiles(
+    truth: &Scenario,
+    free: &[Parameter],
+    factors: &[f64],
+    observations: &Observations,
+    options: &FitOptions,
+) -> Result<Vec<Profile>, IdentifyError> {
+    let mut out = Vec::new();
+    for &p in free {
+        let others: Vec<Parameter> = free.iter().copied().filter(|&q| q != p).collect();
+        let mut points = Vec::new();
+        for &factor in factors {
+            let value = truth.get(p) * factor;
+            let start = truth.with(p, value)?;
+            let (chi_square, refit) = if others.is_empty() {
+                (misfit(&options.solver, &start, observations)?, Vec::new())
+            } else {
+                let problem = FitProblem { start, free: others.clone(), observations: observations.clone() };
+                let report = fit(&problem, options)?;
+                let refit = report.estimates.iter().map(|e| (e.parameter, e.value / truth.get(e.parameter))).collect();
+                (report.chi_square, refit)
+            };
+            points.push(ProfilePoint { factor, value, chi_square, others: refit });
+        }
+        out.push(Profile { parameter: p, truth: truth.get(p), points });
+    }
+    Ok(out)
+}
+
+/// χ² on a grid of factors of two parameters, the rest at `truth`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MisfitMap {
+    pub x: Parameter,
+    pub y: Parameter,
+    pub x_factors: Vec<f64>,
+    pub y_factors: Vec<f64>,
+    /// chi_square[iy][ix].
+    pub chi_square: Vec<Vec<f64>>,
+}
+
+pub fn misfit_map(
+    truth: &Scenario,
+    (x, y): (Parameter, Parameter),
+    x_factors: &[f64],
+    y_factors: &[f64],
+    observations: &Observations,
+    options: &FitOptions,
+) -> Result<MisfitMap, IdentifyError> {
+    let mut chi_square = Vec::with_capacity(y_factors.len());
+    for &fy in y_factors {
+        let mut row = Vec::with_capacity(x_factors.len());
+        for &fx in x_factors {
+            let s = truth.with(x, truth.get(x) * fx)?.with(y, truth.get(y) * fy)?;
+            row.push(misfit(&options.solver, &s, observations)?);
+        }
+        chi_square.push(row);
+    }
+    Ok(MisfitMap { x, y, x_factors: x_factors.to_vec(), y_factors: y_factors.to_vec(), chi_square })
+}
+
+/// Factors spaced evenly in log between 1/`spread` and `spread`.
+pub fn log_factors(spread: f64, count: usize) -> Vec<f64> {
+    let count = count.max(2);
+    let l = spread.ln();
+    (0..count).map(|i| (-l + 2.0 * l * i as f64 / (count - 1) as f64).exp()).collect()
+}
