@@ -5,6 +5,7 @@ mod fit;
 mod leg;
 mod output;
 mod simulate;
+mod simulate3d;
 mod table2;
 
 use clap::{Parser, Subcommand};
@@ -21,6 +22,8 @@ struct Cli {
 enum Command {
     /// Simulate one 1D contact (defaults: Table 1's baseline).
     Simulate(simulate::Args),
+    /// Simulate one off-center 3D kick: spin, friction, launch direction.
+    Simulate3d(simulate3d::Args),
     /// Table 2 side by side: printed, seed-rk4 and accurate values.
     Table2(table2::Args),
     /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
@@ -36,6 +39,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Simulate(args) => simulate::run(args),
+        Command::Simulate3d(args) => simulate3d::run(args),
         Command::Table2(args) => table2::run(args),
         Command::Check(args) => check::run(args),
         Command::Leg(args) => leg::run(args),

@@ -1,0 +1,68 @@
+//! The rapier scene path: same law as the accurate path, first order in its step.
+#![cfg(feature = "rapier")]
+
+use kick_3d::checks::kick;
+use kick_3d::scene::Scene;
+use kick_3d::{Accurate3d, Kick3dSpec};
+
+fn spec() -> Kick3dSpec {
+    Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() }
+}
+
+fn norm(v: [f64; 3]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// Errors of the scene path against the accurate path (relative: launch velocity, spin, contact time).
+fn errors(step: f64) -> [f64; 3] {
+    let k = kick(spec());
+    let exact = Accurate3d::default().solve(&k).unwrap();
+    let o = Scene::new(step).unwrap().solve(&k).unwrap();
+    let dv: Vec<f64> = (0..3).map(|i| o.launch_velocity[i] - exact.launch_velocity[i]).collect();
+    let dw: Vec<f64> = (0..3).map(|i| o.spin[i] - exact.spin[i]).collect();
+    [
+        norm([dv[0], dv[1], dv[2]]) / exact.speed,
+        norm([dw[0], dw[1], dw[2]]) / norm(exact.spin),
+        (o.contact_time - exact.contact_time).abs() / exact.contact_time,
+    ]
+}
+
+#[test]
+fn scene_path_converges_at_first_order() {
+    let steps = [4e-5, 2e-5, 1e-5, 5e-6];
+    let e: Vec<[f64; 3]> = steps.iter().map(|&h| errors(h)).collect();
+    for (h, err) in steps.iter().zip(&e) {
+        println!("dt {h:.1e}: velocity {:.3e} spin {:.3e} contact time {:.3e}", err[0], err[1], err[2]);
+    }
+    for k in 0..2 {
+        let orders: Vec<f64> = e.windows(2).map(|w| (w[0][k] / w[1][k]).log2()).collect();
+        println!("observed orders ({}) {orders:?}", ["velocity", "spin"][k]);
+        // Semi-implicit Euler with a force held over each step: order 1.
+        for p in orders {
+            assert!((0.9..=1.1).contains(&p), "order {p}");
+        }
+    }
+}
+
+#[test]
+fn ground_and_gravity_live_in_the_scene() {
+    // Horizontal kick of a ball resting on the ground, with gravity: rapier's
+    // own ground contact holds the ball up, so the launch has no downward
+    // velocity, unlike the same kick in free fall.
+    let step = 1e-5;
+    let with = |ground: bool| {
+        let k = kick(Kick3dSpec { offset: Some(0.05), ground: Some(ground), gravity: Some(true), ..Kick3dSpec::default() });
+        Scene::new(step).unwrap().solve(&k).unwrap()
+    };
+    let (floor, free) = (with(true), with(false));
+    let accurate = Accurate3d::default()
+        .solve(&kick(Kick3dSpec { offset: Some(0.05), gravity: Some(true), ..Kick3dSpec::default() }))
+        .unwrap();
+    println!("vz: ground {:.6e}, free {:.6e}, accurate free {:.6e}; contact {:.6e}", floor.launch_velocity[2], free.launch_velocity[2], accurate.launch_velocity[2], accurate.contact_time);
+    // In free fall both bodies fall together: v_z = −g t_c for the ball.
+    let fall = -kick_3d::model::GRAVITY * accurate.contact_time;
+    assert!((accurate.launch_velocity[2] - fall).abs() <= 1e-9 * accurate.speed);
+    assert!((free.launch_velocity[2] - fall).abs() <= 1e-2 * fall.abs());
+    // On the ground the ball cannot fall (rapier's soft contact may let it sink a little).
+    assert!(floor.launch_velocity[2].abs() <= 1e-3 * fall.abs(), "{}", floor.launch_velocity[2]);
+}
