@@ -8,8 +8,10 @@
 //! from the located state, so no step straddles the damping switch at δ̇ = 0
 //! or the separation.
 //!
-//! Events: maximum compression (δ̇: + → −), force peak (dF/dt: + → −),
-//! separation (δ: + → −), re-compression (δ̇: − → +, possible with a drive).
+//! Events: maximum compression (δ̇: + → −), separation (δ: + → −) and
+//! re-compression (δ̇: − → +, possible with a drive) end a phase; a force
+//! peak (dF/dt: + → −) does not: its step is remembered and the peak is
+//! located after the phase, so the integrator keeps its step size.
 //!
 //! States are integrated in units of the scenario ([`Scales`]): lengths in
 //! δ* (the undamped maximum compression), speeds in V0, time in δ*/V0, so one
@@ -31,7 +33,14 @@ pub trait ContactSystem<const N: usize>: Copy {
     fn force(&self, y: &SVector<f64, N>) -> f64;
     /// dF/dt along the solution.
     fn force_rate(&self, y: &SVector<f64, N>) -> f64;
+    /// δ̈
+    fn compression_acceleration(&self, y: &SVector<f64, N>) -> f64;
+    /// The same system restricted to one side of δ̇ = 0 (see
+    /// `ContactLaw::branch_force`).
+    fn for_phase(&self, compressing: bool) -> Self;
     /// Unit of each state component (see [`Scales`]).
+    ///
+    /// Also the unit of the event functions: δ in `length`, δ̇ in `speed`.
     fn units(&self, scales: &Scales) -> SVector<f64, N>;
 }
 
@@ -96,6 +105,8 @@ impl Method {
     }
 }
 
+/// Most re-integrations to locate one event (each halves the bracket at worst).
+pub const MAX_LOCATE_ITERATIONS: usize = 200;
 /// Bound on accepted steps in one phase of an adaptive method.
 pub const MAX_STEPS_PER_PHASE: u32 = 100_000;
 /// Most phases (compression/restitution alternations under a drive) per run.
@@ -120,18 +131,38 @@ pub enum Phase {
 impl Phase {
     fn events(self) -> &'static [Event] {
         match self {
-            Phase::Compression => &[Event::MaxCompression, Event::ForcePeak],
-            Phase::Restitution => &[Event::Separation, Event::Recompression, Event::ForcePeak],
+            Phase::Compression => &[Event::MaxCompression],
+            Phase::Restitution => &[Event::Separation, Event::Recompression],
         }
     }
 }
 
 impl Event {
+    /// Unit of the event function, to tell a located zero from a real value.
+    fn unit(self, scales: &Scales) -> f64 {
+        match self {
+            Event::Separation => scales.length,
+            Event::MaxCompression | Event::Recompression => scales.speed,
+            Event::ForcePeak => scales.energy / (scales.length * scales.time),
+        }
+    }
     fn value<S: ContactSystem<N>, const N: usize>(self, system: &S, y: &SVector<f64, N>) -> f64 {
         match self {
             Event::MaxCompression | Event::Recompression => system.compression_rate(y),
             Event::ForcePeak => system.force_rate(y),
             Event::Separation => system.compression(y),
+        }
+    }
+    /// dg/dt: exact for δ and δ̇; for the force peak d²F/dt² by a central
+    /// difference along the flow over ±`time_step` (only steers Newton steps).
+    fn rate<S: ContactSystem<N>, const N: usize>(self, system: &S, y: &SVector<f64, N>, time_step: f64) -> f64 {
+        match self {
+            Event::MaxCompression | Event::Recompression => system.compression_acceleration(y),
+            Event::Separation => system.compression_rate(y),
+            Event::ForcePeak => {
+                let flow = system.derivative(0.0, y) * time_step;
+                (system.force_rate(&(y + flow)) - system.force_rate(&(y - flow))) / (2.0 * time_step)
+            }
         }
     }
     fn crossed(self, before: f64, after: f64) -> bool {
@@ -168,32 +199,65 @@ impl<S: ContactSystem<N>, const N: usize> Scaled<S, N> {
     }
 }
 
-/// Watches for events after each accepted step.
-struct Watcher<'a, S, const N: usize> {
-    scaled: Scaled<S, N>,
-    events: &'static [Event],
-    previous: SVector<f64, N>,
-    recorder: Option<&'a mut dyn FnMut(f64, &SVector<f64, N>)>,
+/// An accepted step across which dF/dt fell through zero.
+#[derive(Debug, Clone, Copy)]
+struct PeakStep<const N: usize> {
+    tau_a: f64,
+    y_a: SVector<f64, N>,
+    tau_b: f64,
+    y_b: SVector<f64, N>,
+    /// Larger of the forces at the two ends, to keep the highest peak.
+    sampled_force: f64,
 }
 
-impl<S: ContactSystem<N>, const N: usize> System<f64, SVector<f64, N>> for Watcher<'_, S, N> {
+/// Watches for events after each accepted step.
+struct Watcher<'a, 'r, S, const N: usize> {
+    scaled: Scaled<S, N>,
+    events: &'static [Event],
+    /// Terminal-event values and dF/dt at the last accepted step, so each
+    /// step evaluates them once.
+    previous: [f64; 3],
+    previous_force_rate: f64,
+    previous_tau: f64,
+    previous_state: SVector<f64, N>,
+    peak: &'a mut Option<PeakStep<N>>,
+    recorder: Option<&'r mut dyn FnMut(f64, &SVector<f64, N>)>,
+}
+
+impl<S: ContactSystem<N>, const N: usize> System<f64, SVector<f64, N>> for Watcher<'_, '_, S, N> {
     fn system(&self, tau: f64, y: &SVector<f64, N>, dy: &mut SVector<f64, N>) {
         *dy = self.scaled.derivative(tau, y);
     }
     fn solout(&mut self, tau: f64, y: &SVector<f64, N>, _dy: &SVector<f64, N>) -> bool {
-        let (before, after) = (self.scaled.unscale(&self.previous), self.scaled.unscale(y));
+        let after = self.scaled.unscale(y);
         let system = &self.scaled.system;
-        if self
-            .events
-            .iter()
-            .any(|e| e.crossed(e.value(system, &before), e.value(system, &after)))
-        {
-            return true;
+        let force_rate = system.force_rate(&after);
+        if Event::ForcePeak.crossed(self.previous_force_rate, force_rate) {
+            let sampled_force = system.force(&after).max(system.force(&self.scaled.unscale(&self.previous_state)));
+            if self.peak.is_none_or(|p| sampled_force > p.sampled_force) {
+                *self.peak = Some(PeakStep {
+                    tau_a: self.previous_tau,
+                    y_a: self.previous_state,
+                    tau_b: tau,
+                    y_b: *y,
+                    sampled_force,
+                });
+            }
+        }
+        let mut values = [0.0; 3];
+        for (i, event) in self.events.iter().enumerate() {
+            values[i] = event.value(system, &after);
+            if event.crossed(self.previous[i], values[i]) {
+                return true;
+            }
         }
         if let Some(record) = self.recorder.as_deref_mut() {
             record(tau * self.scaled.time, &after);
         }
-        self.previous = *y;
+        self.previous = values;
+        self.previous_force_rate = force_rate;
+        self.previous_tau = tau;
+        self.previous_state = *y;
         false
     }
 }
@@ -221,7 +285,7 @@ fn integrate<F: System<f64, SVector<f64, N>>, const N: usize>(
     first_step: f64,
     time_unit: f64,
     evaluations: &mut u64,
-) -> Result<(Vec<f64>, Vec<SVector<f64, N>>), KickError> {
+) -> Result<LastSteps<N>, KickError> {
     macro_rules! adaptive {
         ($solver:ident, $r:expr, $a:expr, $fac_min:expr, $fac_max:expr) => {{
             let mut stepper = $solver::from_param(
@@ -231,7 +295,7 @@ fn integrate<F: System<f64, SVector<f64, N>>, const N: usize>(
             let stats = stepper.integrate().map_err(|e| integration_error(tau0, time_unit, e))?;
             *evaluations += u64::from(stats.num_eval);
             let (x, y) = stepper.results().get();
-            Ok((x.clone(), y.clone()))
+            Ok(LastSteps::of(x, y))
         }};
     }
     match method {
@@ -254,14 +318,39 @@ fn integrate<F: System<f64, SVector<f64, N>>, const N: usize>(
             let mut stepper = Rk4::new(system, tau0, y0, tau1, h);
             let stats = stepper.integrate().map_err(|e| integration_error(tau0, time_unit, e))?;
             *evaluations += u64::from(stats.num_eval);
-            Ok((stepper.x_out().clone(), stepper.y_out().clone()))
+            Ok(LastSteps::of(stepper.x_out(), stepper.y_out()))
         }
     }
+}
+
+/// The last two accepted points of an integration (the second may be absent).
+struct LastSteps<const N: usize> {
+    last: Option<(f64, SVector<f64, N>)>,
+    before_last: Option<(f64, SVector<f64, N>)>,
+}
+
+impl<const N: usize> LastSteps<N> {
+    fn of(x: &[f64], y: &[SVector<f64, N>]) -> Self {
+        let n = x.len().min(y.len());
+        LastSteps {
+            last: (n >= 1).then(|| (x[n - 1], y[n - 1])),
+            before_last: (n >= 2).then(|| (x[n - 2], y[n - 2])),
+        }
+    }
+}
+
+/// How a phase ended: its terminal event (none at the horizon), the located
+/// force peak inside it, and the last accepted step (to start the next phase).
+struct PhaseEnd<const N: usize> {
+    event: Option<(Event, f64, SVector<f64, N>)>,
+    peak: Option<(f64, SVector<f64, N>)>,
+    last_step: f64,
 }
 
 /// The engine for one scenario.
 pub struct Engine<S, const N: usize> {
     method: Method,
+    system: S,
     scaled: Scaled<S, N>,
     pub scales: Scales,
     pub evaluations: u64,
@@ -292,6 +381,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         let scales = Scales::of(scenario);
         Ok(Engine {
             method,
+            system,
             scaled: Scaled { system, units: system.units(&scales), time: scales.time },
             scales,
             evaluations: 0,
@@ -316,13 +406,78 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             let k4 = f(&(y0 + k3 * h));
             return Ok(y0 + (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0));
         }
-        let (_, ys) = integrate(
+        let steps = integrate(
             self.method, Plain(self.scaled), tau0, tau1, y0, h, h, self.scaled.time, &mut self.evaluations,
         )?;
-        ys.last().copied().ok_or_else(|| integration_error(tau0, self.scaled.time, "empty step"))
+        steps.last.map(|(_, y)| y).ok_or_else(|| integration_error(tau0, self.scaled.time, "empty step"))
     }
 
-    /// Integrate one phase from (τ, ŷ) to its first event or to τ_end.
+    /// The event's time between two accepted points, and the state there on
+    /// the far side of the crossing (so the next phase does not see it again).
+    ///
+    /// Start from the cubic Hermite root of g (with dg/dt where the event has
+    /// it), then Newton (or secant) steps on g(y(τ)), y(τ) re-integrated from
+    /// the step start; a bracket keeps every iterate inside the step.
+    fn locate(
+        &mut self,
+        event: Event,
+        tau_a: f64,
+        y_a: SVector<f64, N>,
+        tau_b: f64,
+        y_b: SVector<f64, N>,
+    ) -> Result<(f64, SVector<f64, N>), KickError> {
+        let scaled = self.scaled;
+        let difference_step = 1e-6 * scaled.time * (tau_b - tau_a);
+        let value = |y: &SVector<f64, N>| event.value(&scaled.system, &scaled.unscale(y));
+        let rate = |y: &SVector<f64, N>| event.rate(&scaled.system, &scaled.unscale(y), difference_step) * scaled.time;
+        let (g_a, g_b) = (value(&y_a), value(&y_b));
+        let h = tau_b - tau_a;
+        let tolerance = 4.0 * f64::EPSILON * tau_b.abs().max(h);
+        // First guess: root of the cubic Hermite interpolant of g on [0, 1].
+        let (r_a, r_b) = (rate(&y_a), rate(&y_b));
+        let cubic = |s: f64| {
+            let (s2, s3) = (s * s, s * s * s);
+            (2.0 * s3 - 3.0 * s2 + 1.0) * g_a + (s3 - 2.0 * s2 + s) * h * r_a
+                + (-2.0 * s3 + 3.0 * s2) * g_b + (s3 - s2) * h * r_b
+        };
+        let guess = roots::brent(cubic, 0.0, 1.0, 1e-15, 100).map_or(g_a / (g_a - g_b), |r| r.x);
+        let (mut low, mut high, mut y_high) = (tau_a, tau_b, y_b);
+        let mut tau = tau_a + guess.clamp(0.0, 1.0) * h;
+        let mut previous: Option<(f64, f64)> = None;
+        for _ in 0..MAX_LOCATE_ITERATIONS {
+            if !(tau > low && tau < high) {
+                tau = 0.5 * (low + high);
+            }
+            let y = self.advance(tau_a, y_a, tau)?;
+            let g = value(&y);
+            if g == 0.0 {
+                return Ok((tau, y));
+            }
+            if event.crossed(g_a, g) {
+                high = tau;
+                y_high = y;
+            } else {
+                low = tau;
+            }
+            let r = rate(&y);
+            let step = match previous {
+                _ if r != 0.0 && r.is_finite() => -g / r,
+                Some((tau_p, g_p)) if g != g_p => -g * (tau - tau_p) / (g - g_p),
+                _ => 0.5 * (low + high) - tau,
+            };
+            // Converged: the root is within rounding of τ. The next phase
+            // starts with this event's value taken as exactly zero, so a
+            // state a rounding error short of the crossing is not seen twice.
+            if step.abs() <= tolerance || high - low <= tolerance {
+                return Ok(if high - low <= tolerance { (high, y_high) } else { (tau, y) });
+            }
+            previous = Some((tau, g));
+            tau += step;
+        }
+        Ok((high, y_high))
+    }
+
+    #[allow(clippy::too_many_arguments)]
     fn phase(
         &mut self,
         phase: Phase,
@@ -330,58 +485,57 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         y: SVector<f64, N>,
         tau_end: f64,
         max_step: f64,
+        first_step: f64,
         recorder: Option<&mut dyn FnMut(f64, &SVector<f64, N>)>,
-    ) -> Result<Option<(Event, f64, SVector<f64, N>)>, KickError> {
-        let watcher = Watcher { scaled: self.scaled, events: phase.events(), previous: y, recorder };
+    ) -> Result<PhaseEnd<N>, KickError> {
+        self.scaled.system = self.system.for_phase(phase == Phase::Compression);
+        let start = self.scaled.unscale(&y);
+        let mut previous = [0.0; 3];
+        for (slot, event) in previous.iter_mut().zip(phase.events()) {
+            // The event that ended the last phase starts this one at zero.
+            let value = event.value(&self.scaled.system, &start);
+            *slot = if value.abs() <= event.unit(&self.scales) * 1e-12 { 0.0 } else { value };
+        }
+        let mut peak = None;
+        let watcher = Watcher {
+            scaled: self.scaled,
+            events: phase.events(),
+            previous,
+            previous_force_rate: self.scaled.system.force_rate(&start),
+            previous_tau: tau,
+            previous_state: y,
+            peak: &mut peak,
+            recorder,
+        };
         let first_step = match self.method {
             Method::Rk4 { step } => step / self.scaled.time,
-            _ => 0.0,
+            _ => first_step.min(max_step),
         };
-        let (taus, ys) = integrate(
+        let steps = integrate(
             self.method, watcher, tau, tau_end, y, max_step, first_step, self.scaled.time, &mut self.evaluations,
         )?;
-        let n = ys.len();
-        if n < 2 {
-            return Ok(None);
+        let mut end = PhaseEnd { event: None, peak: None, last_step: 0.0 };
+        if let (Some((tau_a, y_a)), Some((tau_b, y_b))) = (steps.before_last, steps.last) {
+            end.last_step = tau_b - tau_a;
+            let system = self.scaled.system;
+            let (before, after) = (self.scaled.unscale(&y_a), self.scaled.unscale(&y_b));
+            if let Some(&event) = phase
+                .events()
+                .iter()
+                .find(|e| e.crossed(e.value(&system, &before), e.value(&system, &after)))
+            {
+                let (tau_event, state) = self.locate(event, tau_a, y_a, tau_b, y_b)?;
+                end.event = Some((event, tau_event, state));
+            }
         }
-        let system = self.scaled.system;
-        let (before, after) = (self.scaled.unscale(&ys[n - 2]), self.scaled.unscale(&ys[n - 1]));
-        let Some(&event) = phase
-            .events()
-            .iter()
-            .find(|e| e.crossed(e.value(&system, &before), e.value(&system, &after)))
-        else {
-            return Ok(None);
-        };
-        let (tau_a, y_a, tau_b) = (taus[n - 2], ys[n - 2], taus[n - 1]);
-        let g_before = event.value(&system, &before);
-        let mut failure = None;
-        let root = roots::brent(
-            |t| match self.advance(tau_a, y_a, t) {
-                Ok(state) => event.value(&system, &self.scaled.unscale(&state)),
-                Err(e) => {
-                    failure = Some(e);
-                    f64::NAN
-                }
-            },
-            tau_a,
-            tau_b,
-            4.0 * f64::EPSILON * tau_b.abs(),
-            200,
-        );
-        if let Some(e) = failure {
-            return Err(e);
+        if let Some(p) = peak {
+            let (tau_peak, state) = self.locate(Event::ForcePeak, p.tau_a, p.y_a, p.tau_b, p.y_b)?;
+            // A peak past the phase's end belongs to the next phase's start.
+            if end.event.is_none_or(|(_, tau_event, _)| tau_peak <= tau_event) {
+                end.peak = Some((tau_peak, state));
+            }
         }
-        let root = root.ok_or_else(|| integration_error(tau_a, self.scaled.time, format!("could not locate {event:?}")))?;
-        // Continue from the end of the final bracket past the event, so the
-        // next phase does not find the same crossing again.
-        let mut tau_event = root.x;
-        let mut state = self.advance(tau_a, y_a, tau_event)?;
-        if !event.crossed(g_before, event.value(&system, &self.scaled.unscale(&state))) && root.other != root.x {
-            tau_event = root.other;
-            state = self.advance(tau_a, y_a, tau_event)?;
-        }
-        Ok(Some((event, tau_event, state)))
+        Ok(end)
     }
 
     /// Integrate a contact from first touch (`y0`, SI units) to `stop`.
@@ -412,13 +566,23 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             record(0.0, &y0);
         }
         let mut phase = Phase::Compression;
+        let mut first_step = 0.0;
         for _ in 0..MAX_PHASES {
             let (record, max_step) = match recorder.as_mut() {
                 Some((r, interval)) => (Some(&mut **r as &mut dyn FnMut(f64, &SVector<f64, N>)), *interval / time_unit),
                 None => (None, tau_end),
             };
-            let hit = self.phase(phase, tau, y, tau_end, max_step, record)?;
-            let Some((event, tau_event, y_event)) = hit else {
+            let phase_end = self.phase(phase, tau, y, tau_end, max_step, first_step, record)?;
+            first_step = phase_end.last_step;
+            if let Some((tau_peak, y_peak)) = phase_end.peak {
+                let state = self.scaled.unscale(&y_peak);
+                let force = system.force(&state);
+                if force > end.peak_force {
+                    end.peak_force = force;
+                    end.peak_force_time = tau_peak * time_unit;
+                }
+            }
+            let Some((event, tau_event, y_event)) = phase_end.event else {
                 return Err(KickError::NoSeparation {
                     time: tau_end * time_unit,
                     reason: format!(

@@ -12,6 +12,7 @@ pub mod auto;
 pub mod closed;
 pub mod events;
 pub mod ode;
+pub mod precision;
 pub mod reduced;
 pub mod seed;
 pub mod table2;

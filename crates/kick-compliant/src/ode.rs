@@ -32,6 +32,8 @@ pub struct ContactOde<L> {
     pub ball_mass: f64,
     pub drive_force: f64,
     pub branch: Branch,
+    /// Set per phase by the event engine: which side of δ̇ = 0 the force follows.
+    pub compressing: Option<bool>,
 }
 
 impl<L: ContactLaw + Copy> ContactOde<L> {
@@ -42,27 +44,30 @@ impl<L: ContactLaw + Copy> ContactOde<L> {
             ball_mass: scenario.ball_mass(),
             drive_force: scenario.drive_force(),
             branch,
+            compressing: None,
+        }
+    }
+
+    /// (elastic, total) force.
+    #[inline]
+    fn forces(&self, y: &State) -> (f64, f64) {
+        let (compression, rate) = (compression(y), compression_rate(y));
+        match (self.branch, self.compressing) {
+            (Branch::Literal, _) if compression <= 0.0 => (0.0, 0.0),
+            (_, Some(compressing)) => self.law.branch_force(compression, rate, compressing),
+            _ => self.law.elastic_and_contact_force(compression, rate),
         }
     }
 
     #[inline]
     pub fn force(&self, y: &State) -> f64 {
-        let (compression, rate) = (compression(y), compression_rate(y));
-        match self.branch {
-            Branch::Literal => self.law.force(compression, rate),
-            Branch::InContact => self.law.contact_force(compression, rate),
-        }
+        self.forces(y).1
     }
 
     #[inline]
     pub fn derivative(&self, y: &State) -> State {
-        let (compression, rate) = (compression(y), compression_rate(y));
-        let force = self.force(y);
-        let elastic = if compression > 0.0 {
-            self.law.force(compression, 0.0)
-        } else {
-            0.0
-        };
+        let rate = compression_rate(y);
+        let (elastic, force) = self.forces(y);
         State::from([
             y[FOOT_VELOCITY],
             (self.drive_force - force) / self.foot_mass, // Eq. 13
@@ -94,8 +99,14 @@ impl<L: ContactLaw + Copy> ContactOde<L> {
     /// dF/dt along the solution.
     #[inline]
     pub fn force_rate(&self, y: &State) -> f64 {
-        let (d_delta, d_rate) = self.law.force_gradient(compression(y), compression_rate(y));
-        d_delta * compression_rate(y) + d_rate * self.compression_acceleration(y)
+        let rate = compression_rate(y);
+        let (force, d_delta, d_rate) = match (self.branch, self.compressing) {
+            (Branch::Literal, _) if compression(y) <= 0.0 => (0.0, 0.0, 0.0),
+            (_, Some(compressing)) => self.law.branch_force_and_gradient(compression(y), rate, compressing),
+            _ => self.law.force_and_gradient(compression(y), rate),
+        };
+        let acceleration = (self.drive_force - force) / self.foot_mass - force / self.ball_mass;
+        d_delta * rate + d_rate * acceleration
     }
 
     pub fn kinetic_energy(&self, y: &State) -> f64 {
@@ -140,6 +151,13 @@ impl<L: ContactLaw + Copy> crate::events::ContactSystem<7> for ContactOde<L> {
     #[inline]
     fn force_rate(&self, y: &State) -> f64 {
         ContactOde::force_rate(self, y)
+    }
+    #[inline]
+    fn compression_acceleration(&self, y: &State) -> f64 {
+        ContactOde::compression_acceleration(self, y)
+    }
+    fn for_phase(&self, compressing: bool) -> Self {
+        ContactOde { compressing: Some(compressing), ..*self }
     }
     fn units(&self, s: &crate::events::Scales) -> State {
         State::from([s.length, s.speed, s.length, s.speed, s.momentum, s.energy, s.energy])

@@ -28,6 +28,8 @@ pub struct RelativeOde<L> {
     pub reduced_mass: f64,
     /// (μ/m_f) F_drive, the drive's share on the relative coordinate.
     pub drive_share: f64,
+    /// Set per phase by the engine: which side of δ̇ = 0 the force follows.
+    pub compressing: Option<bool>,
 }
 
 impl<L: ContactLaw + Copy> RelativeOde<L> {
@@ -36,19 +38,27 @@ impl<L: ContactLaw + Copy> RelativeOde<L> {
             law,
             reduced_mass: scenario.reduced_mass(),
             drive_share: scenario.reduced_mass() / scenario.effective_foot_mass() * scenario.drive_force(),
+            compressing: None,
+        }
+    }
+    /// (elastic, total) force on this phase's branch.
+    #[inline]
+    fn forces(&self, y: &RelativeState) -> (f64, f64) {
+        match self.compressing {
+            Some(compressing) => self.law.branch_force(y[0], y[1], compressing),
+            None => self.law.elastic_and_contact_force(y[0], y[1]),
         }
     }
     #[inline]
     fn acceleration(&self, y: &RelativeState) -> f64 {
-        (self.drive_share - self.law.contact_force(y[0], y[1])) / self.reduced_mass
+        (self.drive_share - self.forces(y).1) / self.reduced_mass
     }
 }
 
 impl<L: ContactLaw + Copy> ContactSystem<3> for RelativeOde<L> {
     #[inline]
     fn derivative(&self, _t: f64, y: &RelativeState) -> RelativeState {
-        let force = self.law.contact_force(y[0], y[1]);
-        let elastic = if y[0] > 0.0 { self.law.force(y[0], 0.0) } else { 0.0 };
+        let (elastic, force) = self.forces(y);
         RelativeState::new(y[1], (self.drive_share - force) / self.reduced_mass, (force - elastic) * y[1])
     }
     #[inline]
@@ -61,12 +71,22 @@ impl<L: ContactLaw + Copy> ContactSystem<3> for RelativeOde<L> {
     }
     #[inline]
     fn force(&self, y: &RelativeState) -> f64 {
-        self.law.contact_force(y[0], y[1])
+        self.forces(y).1
     }
     #[inline]
     fn force_rate(&self, y: &RelativeState) -> f64 {
-        let (d_delta, d_rate) = self.law.force_gradient(y[0], y[1]);
-        d_delta * y[1] + d_rate * self.acceleration(y)
+        let (force, d_delta, d_rate) = match self.compressing {
+            Some(compressing) => self.law.branch_force_and_gradient(y[0], y[1], compressing),
+            None => self.law.force_and_gradient(y[0], y[1]),
+        };
+        d_delta * y[1] + d_rate * (self.drive_share - force) / self.reduced_mass
+    }
+    #[inline]
+    fn compression_acceleration(&self, y: &RelativeState) -> f64 {
+        self.acceleration(y)
+    }
+    fn for_phase(&self, compressing: bool) -> Self {
+        RelativeOde { compressing: Some(compressing), ..*self }
     }
     fn units(&self, s: &Scales) -> RelativeState {
         RelativeState::new(s.length, s.speed, s.energy)

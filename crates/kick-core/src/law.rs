@@ -19,6 +19,12 @@ pub trait ContactLaw {
     fn onset_force(&self, approach_speed: f64) -> f64 {
         self.contact_force(0.0, approach_speed)
     }
+    /// (elastic part F(δ, 0), total F(δ, δ̇)) on the contact branch; laws
+    /// override it to share the costly power between the two.
+    fn elastic_and_contact_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        let elastic = if compression > 0.0 { self.force(compression, 0.0) } else { 0.0 };
+        (elastic, self.contact_force(compression, compression_rate))
+    }
     /// Partial derivatives (∂F/∂δ, ∂F/∂δ̇) on the contact branch, used to
     /// locate the force peak dF/dt = ∂F/∂δ δ̇ + ∂F/∂δ̇ δ̈ = 0.
     /// The default uses central differences; laws should override it.
@@ -32,6 +38,21 @@ pub trait ContactLaw {
             - self.contact_force(compression, compression_rate - hr))
             / (2.0 * hr);
         (d_delta, d_rate)
+    }
+    /// (F, ∂F/∂δ, ∂F/∂δ̇) on the contact branch in one call.
+    fn force_and_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64, f64) {
+        let (d_delta, d_rate) = self.force_gradient(compression, compression_rate);
+        (self.contact_force(compression, compression_rate), d_delta, d_rate)
+    }
+    /// (elastic, total) force on one side of the compression/restitution
+    /// switch, continued smoothly past δ̇ = 0. Integrators use it inside a
+    /// phase, so no step straddles the kink of a law like Eq. 20's max(δ̇, 0).
+    fn branch_force(&self, compression: f64, compression_rate: f64, _compressing: bool) -> (f64, f64) {
+        self.elastic_and_contact_force(compression, compression_rate)
+    }
+    /// (F, ∂F/∂δ, ∂F/∂δ̇) on one side of the switch (see `branch_force`).
+    fn branch_force_and_gradient(&self, compression: f64, compression_rate: f64, _compressing: bool) -> (f64, f64, f64) {
+        self.force_and_gradient(compression, compression_rate)
     }
     /// True when the law dissipates only while compressing (δ̇ > 0), so the
     /// restitution phase of a passive run is conservative.
@@ -89,6 +110,11 @@ impl ContactLaw for PowerLawContact {
         self.elastic_force(compression) + self.damping * compression_rate.max(0.0)
     }
     #[inline]
+    fn elastic_and_contact_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        let elastic = self.elastic_force(compression);
+        (elastic, elastic + self.damping * compression_rate.max(0.0))
+    }
+    #[inline]
     fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
         let d = compression.max(0.0);
         let stiffness = if d > 0.0 {
@@ -102,6 +128,35 @@ impl ContactLaw for PowerLawContact {
         };
         let damping = if compression_rate > 0.0 { self.damping } else { 0.0 };
         (stiffness, damping)
+    }
+    #[inline]
+    fn force_and_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64, f64) {
+        if compression > 0.0 && self.exponent > 1.0 {
+            // One power for both: k δⁿ and n k δⁿ⁻¹ = n (k δⁿ)/δ.
+            let elastic = self.elastic_force(compression);
+            let damping = if compression_rate > 0.0 { self.damping } else { 0.0 };
+            (elastic + damping * compression_rate, self.exponent * elastic / compression, damping)
+        } else {
+            let (d_delta, d_rate) = self.force_gradient(compression, compression_rate);
+            (self.contact_force(compression, compression_rate), d_delta, d_rate)
+        }
+    }
+    #[inline]
+    fn branch_force(&self, compression: f64, compression_rate: f64, compressing: bool) -> (f64, f64) {
+        let elastic = self.elastic_force(compression);
+        let damping = if compressing { self.damping * compression_rate } else { 0.0 };
+        (elastic, elastic + damping)
+    }
+    #[inline]
+    fn branch_force_and_gradient(&self, compression: f64, compression_rate: f64, compressing: bool) -> (f64, f64, f64) {
+        let elastic = self.elastic_force(compression);
+        let stiffness = if compression > 0.0 && self.exponent > 1.0 {
+            self.exponent * elastic / compression
+        } else {
+            self.force_gradient(compression, 1.0).0
+        };
+        let damping = if compressing { self.damping } else { 0.0 };
+        (elastic + damping * compression_rate, stiffness, damping)
     }
     fn damps_compression_only(&self) -> bool {
         true

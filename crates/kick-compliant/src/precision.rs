@@ -1,0 +1,130 @@
+//! Work–precision: error against exact answers and cost per scenario, for
+//! every solver over a ladder of tolerances or steps (`kick bench`).
+
+use crate::{closed, Accurate, SolverChoice};
+use kick_core::{models, KickError, Outcome, Scenario, Solver};
+use std::time::Instant;
+
+/// A scenario with the answer every solver is measured against.
+#[derive(Debug, Clone)]
+pub struct Case {
+    pub name: &'static str,
+    pub scenario: Scenario,
+    pub reference: Outcome,
+    /// "closed-form" or "accurate@1e-14".
+    pub reference_kind: &'static str,
+}
+
+/// Tolerance of the tight reference for scenarios without a closed form.
+pub const REFERENCE_TOLERANCE: f64 = 1e-14;
+
+/// The benchmark set: Table 2 (tight reference), elastic and linear models
+/// (closed forms), and driven contacts (tight reference).
+pub fn cases() -> Result<Vec<Case>, KickError> {
+    let tight = Accurate::new(REFERENCE_TOLERANCE, REFERENCE_TOLERANCE)?;
+    let mut cases = Vec::new();
+    for (name, scenario) in models::table2().into_iter().chain(models::driven()) {
+        cases.push(Case { name, scenario, reference: tight.solve(&scenario)?, reference_kind: "accurate@1e-14" });
+    }
+    for (name, scenario) in models::elastic().into_iter().chain(models::linear()) {
+        let reference = closed::ClosedForm.solve(&scenario)?;
+        cases.push(Case { name, scenario, reference, reference_kind: "closed-form" });
+    }
+    Ok(cases)
+}
+
+/// Largest relative error over the observables; times are measured relative
+/// to the contact time (a peak at t = 0 has no relative error of its own).
+pub fn max_relative_error(outcome: &Outcome, reference: &Outcome) -> f64 {
+    let relative = |a: f64, b: f64| if b == 0.0 { a.abs() } else { ((a - b) / b).abs() };
+    let scale = reference.contact_time;
+    [
+        relative(outcome.v_ball_out, reference.v_ball_out),
+        relative(outcome.v_foot_out, reference.v_foot_out),
+        relative(outcome.speed_ratio, reference.speed_ratio),
+        relative(outcome.peak_force, reference.peak_force),
+        relative(outcome.contact_time, reference.contact_time),
+        relative(outcome.max_compression, reference.max_compression),
+        relative(outcome.impulse, reference.impulse),
+        relative(outcome.restitution, reference.restitution),
+        (outcome.peak_force_time - reference.peak_force_time).abs() / scale,
+        (outcome.max_compression_time - reference.max_compression_time).abs() / scale,
+    ]
+    .into_iter()
+    .fold(0.0, f64::max)
+}
+
+/// One point of the work–precision diagram.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct PrecisionPoint {
+    pub solver: &'static str,
+    /// Tolerance (adaptive methods) or step in s (fixed-step methods); NaN for closed forms.
+    pub setting: f64,
+    pub max_error: f64,
+    pub seconds_per_scenario: f64,
+    pub evaluations_per_scenario: f64,
+}
+
+/// The solvers and settings `kick bench` measures.
+pub fn ladder() -> Vec<(&'static str, f64)> {
+    let mut ladder = vec![("seed-rk4", 5e-6)];
+    for dt in [2e-5, 1e-5, 5e-6, 2.5e-6, 1.25e-6] {
+        ladder.push(("seed-rk4", dt));
+        ladder.push(("rk4-events", dt));
+    }
+    for tolerance in [1e-6, 1e-8, 1e-10, 1e-11, 1e-12, 1e-13] {
+        for name in ["accurate", "dopri5", "reduced", "reduced-return", "auto"] {
+            ladder.push((name, tolerance));
+        }
+    }
+    ladder.dedup();
+    ladder
+}
+
+/// Build the solver for a ladder entry.
+pub fn solver(name: &str, setting: f64) -> Result<SolverChoice, KickError> {
+    match name {
+        "seed-rk4" | "rk4-events" => SolverChoice::with_settings(name, setting, 1e-12),
+        _ => SolverChoice::with_settings(name, 5e-6, setting),
+    }
+}
+
+/// Measure one solver on the cases it applies to: error against the
+/// references, and wall time per scenario over at least `min_seconds`.
+pub fn measure(
+    name: &'static str,
+    setting: f64,
+    solver: &dyn Solver,
+    cases: &[Case],
+    min_seconds: f64,
+) -> Result<PrecisionPoint, KickError> {
+    let mut max_error: f64 = 0.0;
+    let mut evaluations = 0u64;
+    let mut applicable = Vec::with_capacity(cases.len());
+    for case in cases {
+        let outcome = match solver.solve(&case.scenario) {
+            Err(KickError::NotApplicable { .. }) => continue,
+            other => other?,
+        };
+        evaluations += outcome.evaluations;
+        max_error = max_error.max(max_relative_error(&outcome, &case.reference));
+        applicable.push(case);
+    }
+    let cases = applicable;
+    let start = Instant::now();
+    let mut runs = 0u64;
+    // Bounded: at least 3 passes, at most 10^6 scenarios.
+    while (runs < 3 * cases.len() as u64 || start.elapsed().as_secs_f64() < min_seconds) && runs < 1_000_000 {
+        for case in &cases {
+            std::hint::black_box(solver.solve(std::hint::black_box(&case.scenario))?);
+            runs += 1;
+        }
+    }
+    Ok(PrecisionPoint {
+        solver: name,
+        setting,
+        max_error,
+        seconds_per_scenario: start.elapsed().as_secs_f64() / runs as f64,
+        evaluations_per_scenario: evaluations as f64 / cases.len() as f64,
+    })
+}
