@@ -157,7 +157,8 @@ fn zero_offset_no_spin() -> Result<Vec<CheckRow>, Kick3dError> {
 }
 
 fn angular_momentum() -> Result<Vec<CheckRow>, Kick3dError> {
-    let k = curve_kick();
+    // A rising foot too, so all three components are non-zero.
+    let k = kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() });
     let o = solve(&k)?;
     let l = o.ball_angular_momentum(k.ball_inertia);
     let scale = norm(o.angular_impulse);

@@ -10,7 +10,17 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> CliResult {
-    let rows = run_all();
+    let mut rows = run_all();
+    // The 3D model's checks (kick-3d) in the same row shape.
+    rows.extend(kick_3d::checks::checks().into_iter().map(|r| CheckRow {
+        name: r.name,
+        equation: r.equation,
+        expected: r.expected,
+        actual: r.actual,
+        error: r.error,
+        tolerance: r.tolerance,
+        passed: r.passed,
+    }));
     match args.format {
         Format::Json => println!("{}", json(&rows)?),
         Format::Text => print_text(&rows),
