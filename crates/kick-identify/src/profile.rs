@@ -5,7 +5,8 @@
 //! tell v from the truth; Δχ² = χ²_j(v) − min χ² ≥ 1 marks a one-sigma
 //! departure (one parameter of interest).
 
-use crate::data::Observations;
+use crate::data::{Channel, Observable, Observations};
+use crate::synthetic;
 use crate::fit::{fit, misfit, FitOptions, FitProblem};
 use crate::IdentifyError;
 use kick_core::{Parameter, Scenario};
@@ -96,4 +97,63 @@ pub fn log_factors(spread: f64, count: usize) -> Vec<f64> {
     let count = count.max(2);
     let l = spread.ln();
     (0..count).map(|i| (-l + 2.0 * l * i as f64 / (count - 1) as f64).exp()).collect()
+}
+
+/// Section 17.8's claim, as data: profiles of (m_f, k, c, n) and (k, c)
+/// misfit maps from the exit speed alone and from full noisy histories of
+/// the same truth.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct IdentifiabilityStudy {
+    pub truth: Scenario,
+    /// σ of the exit speed, m/s.
+    pub exit_speed_sigma: f64,
+    /// Channel noise of the histories.
+    pub history_sigma: Vec<(Channel, f64)>,
+    pub history_times: usize,
+    pub seed: u64,
+    pub exit_speed_profiles: Vec<Profile>,
+    pub history_profiles: Vec<Profile>,
+    pub exit_speed_map: MisfitMap,
+    pub history_map: MisfitMap,
+}
+
+/// The four parameters of the paper's inverse problem (Section 19).
+pub const MODEL_PARAMETERS: [Parameter; 4] =
+    [Parameter::FootMass, Parameter::Stiffness, Parameter::Damping, Parameter::Exponent];
+
+/// Profiles over `profile_points` factors in [1/spread, spread] and maps on a
+/// `map_points`² grid, for `truth` with exit-speed σ 0.01 m/s and the four
+/// channels at [`synthetic::lab_sigma`] on `times` samples over 1.2 contact times.
+pub fn identifiability_study(
+    truth: &Scenario,
+    spread: f64,
+    profile_points: usize,
+    map_points: usize,
+    times: usize,
+    seed: u64,
+    options: &FitOptions,
+) -> Result<IdentifiabilityStudy, IdentifyError> {
+    if !(spread.is_finite() && spread > 1.0) {
+        return Err(IdentifyError::data("spread", format!("{spread}: must be finite and > 1")));
+    }
+    let exit_speed_sigma = 0.01;
+    let exit = synthetic::scalars(&options.solver, truth, &[(Observable::VBallOut, exit_speed_sigma)], None)?;
+    let channels = Channel::ALL;
+    let sigma = synthetic::lab_sigma(&channels);
+    let histories =
+        synthetic::history(&options.solver, truth, synthetic::time_grid(truth, times, 1.2), &sigma, seed)?;
+    let factors = log_factors(spread, profile_points);
+    let map_factors = log_factors(spread, map_points);
+    let pair = (Parameter::Stiffness, Parameter::Damping);
+    Ok(IdentifiabilityStudy {
+        truth: *truth,
+        exit_speed_sigma,
+        history_sigma: sigma.into_iter().collect(),
+        history_times: times,
+        seed,
+        exit_speed_profiles: profiles(truth, &MODEL_PARAMETERS, &factors, &exit, options)?,
+        history_profiles: profiles(truth, &MODEL_PARAMETERS, &factors, &histories, options)?,
+        exit_speed_map: misfit_map(truth, pair, &map_factors, &map_factors, &exit, options)?,
+        history_map: misfit_map(truth, pair, &map_factors, &map_factors, &histories, options)?,
+    })
 }

@@ -35,6 +35,22 @@ impl Gaussian {
     }
 }
 
+/// Noise of a plausible lab recording of the baseline kick: 20 N on a
+/// ≈ 3.8 kN pulse, 0.1 mm on ≈ 28 mm, 0.05 m/s on the velocities.
+pub fn lab_sigma(channels: &[Channel]) -> BTreeMap<Channel, f64> {
+    channels
+        .iter()
+        .map(|&c| {
+            let s = match c {
+                Channel::Force => 20.0,
+                Channel::Compression => 1e-4,
+                Channel::FootVelocity | Channel::BallVelocity => 0.05,
+            };
+            (c, s)
+        })
+        .collect()
+}
+
 /// `count` equally spaced times over [0, span × the undamped contact time].
 pub fn time_grid(scenario: &Scenario, count: usize, span: f64) -> Vec<f64> {
     let end = span * scenario.elastic_contact_time();

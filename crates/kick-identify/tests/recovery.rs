@@ -6,26 +6,14 @@ use kick_core::{Parameter, Scenario};
 use kick_identify::data::{Channel, Observable};
 use kick_identify::fit::{fit, FitOptions, FitProblem};
 use kick_identify::profile::{log_factors, profiles};
-use kick_identify::synthetic::{history, scalars, time_grid};
+use kick_identify::synthetic::{history, lab_sigma, scalars, time_grid};
 use kick_identify::IdentifyError;
 use std::collections::BTreeMap;
 
 const FOUR: [Parameter; 4] = [Parameter::FootMass, Parameter::Stiffness, Parameter::Damping, Parameter::Exponent];
 
-/// Noise levels of a plausible lab recording: 20 N on a ≈ 3.8 kN pulse,
-/// 0.1 mm on ≈ 28 mm, 0.05 m/s on the velocities.
 fn sigma(channels: &[Channel]) -> BTreeMap<Channel, f64> {
-    channels
-        .iter()
-        .map(|&c| {
-            let s = match c {
-                Channel::Force => 20.0,
-                Channel::Compression => 1e-4,
-                Channel::FootVelocity | Channel::BallVelocity => 0.05,
-            };
-            (c, s)
-        })
-        .collect()
+    lab_sigma(channels)
 }
 
 fn start_from(truth: &Scenario, factors: &[(Parameter, f64)]) -> Scenario {
