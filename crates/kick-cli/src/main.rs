@@ -4,6 +4,8 @@ mod check;
 mod fit;
 mod leg;
 mod output;
+mod reproduce;
+mod run;
 mod simulate;
 mod simulate3d;
 mod table2;
@@ -33,6 +35,10 @@ enum Command {
     /// Identify parameters from printed or measured data.
     #[command(subcommand)]
     Fit(fit::FitCommand),
+    /// Run one experiment file (experiments/*.toml) into DIR/NAME.h5.
+    Run(run::Args),
+    /// Run every experiment, draw the figures, run the checks, write paper/README.md.
+    Reproduce(reproduce::Args),
 }
 
 fn main() -> ExitCode {
@@ -44,6 +50,8 @@ fn main() -> ExitCode {
         Command::Check(args) => check::run(args),
         Command::Leg(args) => leg::run(args),
         Command::Fit(command) => fit::run(command),
+        Command::Run(args) => run::run(args),
+        Command::Reproduce(args) => reproduce::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

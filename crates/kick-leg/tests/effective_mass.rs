@@ -94,6 +94,26 @@ fn free_rigid_body_planar_and_spatial() {
     assert!(rel(planar.effective_mass(&x, &n).unwrap(), expected) < ROUNDING);
 }
 
+#[test]
+fn rigid_body_on_a_ball_joint() {
+    // Spherical joint at the origin: 1/m_eff = (r × n)ᵀ I_O⁻¹ (r × n), with
+    // I_O = I_cm + m (|c|² 1 − c cᵀ) (parallel axis theorem).
+    let body = Body {
+        mass: 3.0,
+        centre: Vector3::new(0.2, -0.3, 0.05),
+        inertia: Matrix3::new(0.06, 0.002, 0.0, 0.002, 0.02, -0.003, 0.0, -0.003, 0.05),
+    };
+    let revolute = |a: Vector3<f64>| Joint { motion: Motion::Revolute { axis: a, point: Vector3::zeros() }, first_body: 0 };
+    let chain = Chain { bodies: vec![body], joints: vec![revolute(Vector3::x()), revolute(Vector3::y()), revolute(Vector3::z())] };
+    let c = body.centre;
+    let i_o = body.inertia + body.mass * (Matrix3::identity() * c.dot(&c) - c * c.transpose());
+    let x = Vector3::new(0.35, -0.5, 0.02);
+    let n = Vector3::new(1.0, 0.2, -0.1).normalize();
+    let rxn = x.cross(&n);
+    let expected = 1.0 / rxn.dot(&(i_o.try_inverse().unwrap() * rxn));
+    assert!(rel(chain.effective_mass(&x, &n).unwrap(), expected) < ROUNDING);
+}
+
 /// The combined body of a chain's bodies: mass, centre, inertia about it.
 fn combined(bodies: &[Body]) -> (f64, Vector3<f64>, Matrix3<f64>) {
     let mass: f64 = bodies.iter().map(|b| b.mass).sum();

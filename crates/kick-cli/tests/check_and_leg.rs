@@ -1,0 +1,53 @@
+//! `kick check` and `kick leg`: exit codes, JSON keys, agreement with the libraries.
+
+use kick_leg::{AnkleJoint, Impact, Leg, Pose};
+use std::process::Command;
+
+fn kick(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_kick"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+        .output()
+        .expect("kick runs")
+}
+
+#[test]
+fn check_json_lists_every_row_and_exits_zero_when_all_pass() {
+    let out = kick(&["check", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let rows: Vec<serde_json::Value> = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(rows.len(), kick_checks::run_all().len());
+    for row in &rows {
+        for key in ["expected", "actual", "error", "tolerance"] {
+            assert!(row[key].is_f64(), "{key} in {row}");
+        }
+        assert_eq!(row["passed"], serde_json::Value::Bool(true), "{row}");
+        assert!(row["name"].is_string() && row["equation"].is_string());
+    }
+    let text = kick(&["check"]);
+    assert!(text.status.success());
+    let stdout = String::from_utf8_lossy(&text.stdout);
+    assert!(stdout.contains("PASS") && !stdout.contains("FAIL"), "{stdout}");
+}
+
+#[test]
+fn leg_json_matches_the_library_and_bad_angles_fail() {
+    let out = kick(&["leg", "--knee", "40", "--ankle", "50", "--locked-ankle", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let leg = Leg::de_leva(73.0, 1.741).unwrap();
+    let pose = Pose { knee_flexion: 40.0, plantarflexion: 50.0, ..Pose::default() };
+    let expected = leg.effective_mass(&pose, &Impact::default(), AnkleJoint::Locked).unwrap().effective_mass;
+    assert_eq!(value["effective_mass"].as_f64().unwrap(), expected);
+    // The exit speed comes from the 1D model with m_f = m_eff: below the
+    // elastic bound 2 m_f/(m_f + m_b) v_f (Eq. 38 with e = 1).
+    let v = value["v_ball_out"].as_f64().unwrap();
+    assert!(v > 0.0 && v < 2.0 * expected / (expected + 0.43) * 22.0, "{v}");
+
+    let bad = kick(&["leg", "--knee", "200", "--ankle", "50"]);
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("knee"));
+    let planar_rotation = kick(&["leg", "--knee", "30", "--ankle", "50", "--rotation", "20"]);
+    assert!(!planar_rotation.status.success());
+    assert!(String::from_utf8_lossy(&planar_rotation.stderr).contains("hip_rotation"));
+}
