@@ -1,0 +1,94 @@
+//! `kick reproduce`: every experiment, the figures, the cross-model checks and
+//! the reproduction report.
+
+use crate::output::CliResult;
+use kick_runner::report::CheckLine;
+use std::path::{Component, Path, PathBuf};
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Directory of experiment files (every *.toml directly inside is run)
+    #[arg(long, default_value = "experiments")]
+    experiments: PathBuf,
+    /// Directory for the result files; figures go to OUT/figures
+    #[arg(long, default_value = "results")]
+    out: PathBuf,
+    /// Report to (re)generate
+    #[arg(long, default_value = "paper/README.md")]
+    report: PathBuf,
+    /// Worker threads (default: one per core)
+    #[arg(long)]
+    threads: Option<usize>,
+}
+
+/// `to` relative to the directory `from` (both relative to the working
+/// directory), e.g. paper → results/figures gives ../results/figures.
+fn relative(from: &Path, to: &Path) -> String {
+    if from.is_absolute() || to.is_absolute() {
+        return to.display().to_string();
+    }
+    let depth = from.components().filter(|c| matches!(c, Component::Normal(_))).count();
+    let mut path = String::new();
+    for _ in 0..depth {
+        path.push_str("../");
+    }
+    path.push_str(&to.display().to_string().replace('\\', "/"));
+    path
+}
+
+pub fn run(args: Args) -> CliResult {
+    crate::run::set_threads(args.threads)?;
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&args.experiments)
+        .map_err(|e| format!("cannot read {}: {e}", args.experiments.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    files.sort();
+    if files.is_empty() {
+        return Err(format!("no experiment files in {}", args.experiments.display()));
+    }
+    for file in &files {
+        crate::run::run_file(file, &args.out)?;
+    }
+
+    let figures = args.out.join("figures");
+    let written = kick_runner::figures::draw_all(&args.out, &figures).map_err(|e| e.to_string())?;
+    println!("figures: {} files in {}", written.len(), figures.display());
+
+    let checks: Vec<CheckLine> = kick_checks::run_all()
+        .into_iter()
+        .map(|r| CheckLine {
+            name: r.name,
+            equation: r.equation,
+            expected: r.expected,
+            actual: r.actual,
+            error: r.error,
+            tolerance: r.tolerance,
+            passed: r.passed,
+        })
+        .collect();
+    let failed = checks.iter().filter(|c| !c.passed).count();
+    println!("checks: {} of {} pass", checks.len() - failed, checks.len());
+
+    let report_dir = args.report.parent().unwrap_or(Path::new(""));
+    kick_runner::report::write(&args.out, &relative(report_dir, &figures), Some(&checks), &args.report)
+        .map_err(|e| e.to_string())?;
+    println!("report: {}", args.report.display());
+    if failed > 0 {
+        return Err(format!("{failed} cross-model check(s) failed; see {}", args.report.display()));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::relative;
+    use std::path::Path;
+
+    #[test]
+    fn figures_relative_to_the_report() {
+        assert_eq!(relative(Path::new("paper"), Path::new("results/figures")), "../results/figures");
+        assert_eq!(relative(Path::new(""), Path::new("results/figures")), "results/figures");
+        assert_eq!(relative(Path::new("a/b"), Path::new("r/f")), "../../r/f");
+    }
+}

@@ -1,0 +1,597 @@
+//! Experiment files (`experiments/*.toml`): what to run and what to keep.
+//!
+//! ```toml
+//! name = "figure3"                 # optional, default: the file's stem
+//! description = "Stiffness sweep"
+//! solvers = ["accurate"]           # or solver = "accurate"; names as `kick simulate --solver`
+//! dt = 5e-6                        # step of seed-rk4, s (default 5e-6)
+//!
+//! [base]                           # any of the 8 parameters; missing ones: Table 1
+//! damping = 120.0
+//!
+//! [[sweep]]                        # grid: every combination of all [[sweep]] axes,
+//! parameter = "stiffness"          # the last axis varying fastest
+//! log = { from = 1e5, to = 1e7, count = 41 }   # or linear = {...}, or values = [...]
+//!
+//! [output]
+//! mode = "history"                 # "summary" (default) or "history"
+//! interval = 1e-5                  # history sampling interval, s
+//! ```
+//!
+//! Instead of `[[sweep]]`, a file may list `[[scenario]]` tables (a `name`
+//! plus any parameters, relative to `[base]`) or name a Table 2 file with
+//! `table2 = "table2.toml"`. A Table 2 file itself (`kick fit table2`) is run
+//! as its eight named rows with its own solver and `accurate`.
+//!
+//! Every problem is reported with the file, line, column and key.
+
+use kick_compliant::table2::Table2File;
+use kick_compliant::SolverChoice;
+use kick_core::{KickError, Parameter, Scenario};
+use serde::Deserialize;
+use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+type Span = std::ops::Range<usize>;
+
+impl ExperimentError {
+    /// `file:line:column: `key`: message`, or `file: message` when no line applies.
+    fn located(&self) -> String {
+        if self.line == 0 {
+            format!("{}: {}", self.file, self.message)
+        } else {
+            format!("{}:{}:{}: `{}`: {}", self.file, self.line, self.column, self.key, self.message)
+        }
+    }
+}
+
+/// Most scenarios one experiment may hold.
+pub const MAX_SCENARIOS: u64 = 100_000_000;
+/// Most scenarios whose time histories one file may hold.
+pub const MAX_HISTORY_SCENARIOS: u64 = 1000;
+/// Most samples per recorded history (interval versus contact horizon).
+pub const MAX_HISTORY_SAMPLES: f64 = 1e6;
+
+/// A problem in an experiment file, located.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}", self.located())]
+pub struct ExperimentError {
+    pub file: String,
+    pub line: usize,
+    pub column: usize,
+    pub key: String,
+    pub message: String,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawExperiment {
+    name: Option<Spanned<String>>,
+    description: Option<String>,
+    solver: Option<Spanned<String>>,
+    solvers: Option<Spanned<Vec<Spanned<String>>>>,
+    dt: Option<Spanned<f64>>,
+    base: Option<RawSpec>,
+    sweep: Option<Vec<RawAxis>>,
+    scenario: Option<Vec<RawNamed>>,
+    table2: Option<Spanned<String>>,
+    output: Option<RawOutput>,
+}
+
+macro_rules! spec_struct {
+    ($name:ident { $($extra:ident : $ty:ty),* }) => {
+        #[derive(Debug, Deserialize)]
+        #[serde(deny_unknown_fields)]
+        struct $name {
+            $($extra: $ty,)*
+            foot_mass: Option<Spanned<f64>>,
+            ball_mass: Option<Spanned<f64>>,
+            foot_speed: Option<Spanned<f64>>,
+            ball_speed: Option<Spanned<f64>>,
+            stiffness: Option<Spanned<f64>>,
+            damping: Option<Spanned<f64>>,
+            exponent: Option<Spanned<f64>>,
+            drive_force: Option<Spanned<f64>>,
+        }
+        impl $name {
+            fn get(&self, p: Parameter) -> Option<&Spanned<f64>> {
+                match p {
+                    Parameter::FootMass => self.foot_mass.as_ref(),
+                    Parameter::BallMass => self.ball_mass.as_ref(),
+                    Parameter::FootSpeed => self.foot_speed.as_ref(),
+                    Parameter::BallSpeed => self.ball_speed.as_ref(),
+                    Parameter::Stiffness => self.stiffness.as_ref(),
+                    Parameter::Damping => self.damping.as_ref(),
+                    Parameter::Exponent => self.exponent.as_ref(),
+                    Parameter::DriveForce => self.drive_force.as_ref(),
+                }
+            }
+        }
+    };
+}
+
+spec_struct!(RawSpec {});
+
+impl Default for RawSpec {
+    fn default() -> Self {
+        RawSpec {
+            foot_mass: None,
+            ball_mass: None,
+            foot_speed: None,
+            ball_speed: None,
+            stiffness: None,
+            damping: None,
+            exponent: None,
+            drive_force: None,
+        }
+    }
+}
+spec_struct!(RawNamed { name: Spanned<String> });
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawAxis {
+    parameter: Spanned<Parameter>,
+    values: Option<Spanned<Vec<Spanned<f64>>>>,
+    linear: Option<Spanned<RawRange>>,
+    log: Option<Spanned<RawRange>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawRange {
+    from: f64,
+    to: f64,
+    count: Spanned<i64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawOutput {
+    mode: Option<Spanned<String>>,
+    interval: Option<Spanned<f64>>,
+}
+
+/// What to record per scenario.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Output {
+    /// Outcomes only; sweeps stream in chunks.
+    Summary,
+    /// Outcomes and time histories sampled at most `interval` seconds apart.
+    History { interval: f64 },
+}
+
+/// One swept parameter and its values.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    pub parameter: Parameter,
+    pub values: Vec<f64>,
+}
+
+/// Where the scenarios come from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Scenarios {
+    /// The base scenario, or every combination of the axes over it.
+    Grid { base: Scenario, axes: Vec<Axis> },
+    /// Named scenarios (Table 2 rows, `[[scenario]]` lists).
+    Named { names: Vec<String>, scenarios: Vec<Scenario> },
+}
+
+/// A validated experiment, ready to run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Experiment {
+    pub name: String,
+    pub description: String,
+    /// The file as given on the command line.
+    pub path: PathBuf,
+    /// The file's full text (stored in every result file).
+    pub text: String,
+    pub solvers: Vec<SolverChoice>,
+    pub scenarios: Scenarios,
+    pub output: Output,
+}
+
+impl Scenarios {
+    /// Number of scenarios.
+    pub fn len(&self) -> u64 {
+        match self {
+            Scenarios::Grid { axes, .. } => axes.iter().map(|a| a.values.len() as u64).product(),
+            Scenarios::Named { scenarios, .. } => scenarios.len() as u64,
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Scenario `index` (grid order: the last axis varies fastest).
+    pub fn scenario(&self, index: u64) -> Result<Scenario, KickError> {
+        match self {
+            Scenarios::Grid { base, axes } => {
+                let mut values = base.values();
+                let mut rest = index;
+                for axis in axes.iter().rev() {
+                    let n = axis.values.len() as u64;
+                    let slot = Parameter::ALL.iter().position(|&p| p == axis.parameter).unwrap_or(0);
+                    values[slot] = axis.values[(rest % n) as usize];
+                    rest /= n;
+                }
+                Scenario::from_values(values)
+            }
+            Scenarios::Named { scenarios, .. } => Ok(scenarios[index as usize]),
+        }
+    }
+
+    /// Row names, for named scenarios.
+    pub fn names(&self) -> Option<&[String]> {
+        match self {
+            Scenarios::Grid { .. } => None,
+            Scenarios::Named { names, .. } => Some(names),
+        }
+    }
+}
+
+/// Values of a linear range: `from`, `to` and `count − 2` evenly spaced between.
+pub fn linear_range(from: f64, to: f64, count: usize) -> Vec<f64> {
+    match count {
+        0 => Vec::new(),
+        1 => vec![from],
+        _ => (0..count)
+            .map(|i| {
+                if i + 1 == count {
+                    to
+                } else {
+                    from + (to - from) * (i as f64 / (count - 1) as f64)
+                }
+            })
+            .collect(),
+    }
+}
+
+/// Values of a log range: geometric spacing from `from` to `to` (both > 0).
+pub fn log_range(from: f64, to: f64, count: usize) -> Vec<f64> {
+    let (a, b) = (from.ln(), to.ln());
+    linear_range(a, b, count)
+        .into_iter()
+        .enumerate()
+        .map(|(i, x)| if i == 0 { from } else if i + 1 == count { to } else { x.exp() })
+        .collect()
+}
+
+struct Locator<'a> {
+    file: &'a str,
+    text: &'a str,
+}
+
+impl Locator<'_> {
+    fn error(&self, span: std::ops::Range<usize>, key: &str, message: impl Into<String>) -> ExperimentError {
+        let start = span.start.min(self.text.len());
+        let before = &self.text[..start];
+        let line = before.matches('\n').count() + 1;
+        let column = before.chars().rev().take_while(|&c| c != '\n').count() + 1;
+        ExperimentError {
+            file: self.file.to_string(),
+            line,
+            column,
+            key: key.to_string(),
+            message: message.into(),
+        }
+    }
+
+    /// A toml error, with the key under its span when the span covers a bare key.
+    fn toml_error(&self, error: &toml::de::Error) -> ExperimentError {
+        let span = error.span().unwrap_or(0..0);
+        let under = self.text.get(span.clone()).unwrap_or("").trim();
+        let key = if !under.is_empty()
+            && under.len() < 64
+            && under.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
+        {
+            under.to_string()
+        } else {
+            key_before(self.text, span.start)
+        };
+        self.error(span, &key, error.message().trim().to_string())
+    }
+}
+
+/// The key of the `key = value` line holding byte `at`, or the table header.
+fn key_before(text: &str, at: usize) -> String {
+    let at = at.min(text.len());
+    let line_start = text[..at].rfind('\n').map_or(0, |i| i + 1);
+    let line = text[line_start..].lines().next().unwrap_or("");
+    match line.split_once('=') {
+        Some((key, _)) => key.trim().to_string(),
+        None => line.trim().trim_matches(|c| c == '[' || c == ']').to_string(),
+    }
+}
+
+/// Read and validate an experiment file.
+pub fn load(path: &Path) -> Result<Experiment, ExperimentError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| ExperimentError {
+        file: file.clone(),
+        line: 0,
+        column: 0,
+        key: String::new(),
+        message: format!("cannot read: {e}"),
+    })?;
+    parse(path, &text)
+}
+
+/// Validate an experiment given its text (`path` names it in errors and
+/// resolves `table2 = ...`).
+pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
+    let file = path.display().to_string();
+    let at = Locator { file: &file, text };
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("experiment").to_string();
+    let table: toml::Table = toml::from_str(text).map_err(|e| at.toml_error(&e))?;
+    if table.contains_key("row") {
+        return table2_experiment(path, text, stem, &at);
+    }
+    let raw: RawExperiment = toml::from_str(text).map_err(|e| at.toml_error(&e))?;
+
+    let name = match &raw.name {
+        Some(n) => {
+            let value = n.get_ref();
+            if value.is_empty() || !value.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
+                return Err(at.error(n.span(), "name", "must be non-empty letters, digits, `_` or `-` (it names the result file)"));
+            }
+            value.clone()
+        }
+        None => stem,
+    };
+
+    let dt = match &raw.dt {
+        Some(dt) => {
+            let v = *dt.get_ref();
+            if !(v.is_finite() && v > 0.0) {
+                return Err(at.error(dt.span(), "dt", format!("{v} must be finite and > 0 (s)")));
+            }
+            v
+        }
+        None => kick_compliant::SeedRk4::default().step,
+    };
+    let solver_names: Vec<Spanned<String>> = match (&raw.solver, &raw.solvers) {
+        (Some(s), None) => vec![s.clone()],
+        (None, Some(list)) => {
+            if list.get_ref().is_empty() {
+                return Err(at.error(list.span(), "solvers", "list at least one solver"));
+            }
+            list.get_ref().clone()
+        }
+        (None, None) => vec![Spanned::new(0..0, "accurate".to_string())],
+        (Some(s), Some(_)) => return Err(at.error(s.span(), "solver", "give `solver` or `solvers`, not both")),
+    };
+    let mut solvers = Vec::new();
+    for (i, name) in solver_names.iter().enumerate() {
+        if solver_names[..i].iter().any(|n| n.get_ref() == name.get_ref()) {
+            return Err(at.error(name.span(), "solvers", format!("`{}` listed twice", name.get_ref())));
+        }
+        solvers.push(
+            SolverChoice::from_name(name.get_ref(), dt)
+                .map_err(|e| at.error(name.span(), "solver", e.to_string()))?,
+        );
+    }
+
+    let base_raw = raw.base.unwrap_or_default();
+    let base = build(&at, |p| base_raw.get(p), "base")?;
+
+    let sources = [raw.sweep.is_some(), raw.scenario.is_some(), raw.table2.is_some()];
+    if sources.iter().filter(|&&s| s).count() > 1 {
+        let span = raw.table2.as_ref().map(|t| t.span()).unwrap_or(0..0);
+        return Err(at.error(span, "sweep", "give one of [[sweep]], [[scenario]] or table2"));
+    }
+
+    let scenarios = if let Some(axes_raw) = &raw.sweep {
+        let mut axes: Vec<Axis> = Vec::new();
+        let mut spans = Vec::new();
+        let mut total: u64 = 1;
+        for axis in axes_raw {
+            let parameter = *axis.parameter.get_ref();
+            let key = format!("sweep.{}", parameter.name());
+            if axes.iter().any(|a| a.parameter == parameter) {
+                return Err(at.error(axis.parameter.span(), &key, "parameter swept twice"));
+            }
+            if let Some(v) = base_raw.get(parameter) {
+                return Err(at.error(v.span(), &format!("base.{}", parameter.name()), "this parameter is also swept; set it in one place"));
+            }
+            let (values, span, value_spans) = axis_values(&at, axis, &key)?;
+            total = total.saturating_mul(values.len() as u64);
+            if total > MAX_SCENARIOS {
+                return Err(at.error(span, &key, format!("the grid exceeds {MAX_SCENARIOS} scenarios")));
+            }
+            // Each value alone against the base, so the error names its line.
+            for (&v, value_span) in values.iter().zip(&value_spans) {
+                base.with(parameter, v).map_err(|e| at.error(value_span.clone(), &key, format!("value {v}: {e}")))?;
+            }
+            axes.push(Axis { parameter, values });
+            spans.push(span);
+        }
+        let grid = Scenarios::Grid { base, axes };
+        // Combinations (e.g. foot_speed with ball_speed) can still fail.
+        for i in 0..grid.len() {
+            if let Err(e) = grid.scenario(i) {
+                return Err(at.error(spans.last().cloned().unwrap_or(0..0), "sweep", format!("grid point {i}: {e}")));
+            }
+        }
+        grid
+    } else if let Some(list) = &raw.scenario {
+        let mut names = Vec::new();
+        let mut scenarios = Vec::new();
+        for entry in list {
+            let key = format!("scenario.{}", entry.name.get_ref());
+            if names.contains(entry.name.get_ref()) {
+                return Err(at.error(entry.name.span(), &key, "scenario name used twice"));
+            }
+            let scenario = build(&at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?;
+            names.push(entry.name.get_ref().clone());
+            scenarios.push(scenario);
+        }
+        if scenarios.is_empty() {
+            return Err(at.error(0..0, "scenario", "list at least one scenario"));
+        }
+        Scenarios::Named { names, scenarios }
+    } else if let Some(t2) = &raw.table2 {
+        let t2_path = path.parent().unwrap_or(Path::new(".")).join(t2.get_ref());
+        let t2_text = std::fs::read_to_string(&t2_path)
+            .map_err(|e| at.error(t2.span(), "table2", format!("cannot read {}: {e}", t2_path.display())))?;
+        let file = Table2File::parse(&t2_text)
+            .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
+        let rows = file
+            .scenarios()
+            .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
+        let (names, scenarios) = rows.into_iter().unzip();
+        Scenarios::Named { names, scenarios }
+    } else {
+        Scenarios::Grid { base, axes: Vec::new() }
+    };
+
+    let output = match &raw.output {
+        None => Output::Summary,
+        Some(out) => {
+            let mode = out.mode.as_ref().map(|m| m.get_ref().as_str()).unwrap_or("summary");
+            let mode_span = out.mode.as_ref().map(|m| m.span()).unwrap_or(0..0);
+            match (mode, &out.interval) {
+                ("summary", None) => Output::Summary,
+                ("summary", Some(i)) => {
+                    return Err(at.error(i.span(), "output.interval", "only with mode = \"history\""))
+                }
+                ("history", None) => {
+                    return Err(at.error(mode_span, "output.interval", "mode = \"history\" needs a sampling interval (s)"))
+                }
+                ("history", Some(i)) => {
+                    let v = *i.get_ref();
+                    if !(v.is_finite() && v > 0.0) {
+                        return Err(at.error(i.span(), "output.interval", format!("{v} must be finite and > 0 (s)")));
+                    }
+                    if scenarios.len() > MAX_HISTORY_SCENARIOS {
+                        return Err(at.error(mode_span, "output.mode", format!(
+                            "histories of {} scenarios; at most {MAX_HISTORY_SCENARIOS} (use mode = \"summary\" for large sweeps)",
+                            scenarios.len()
+                        )));
+                    }
+                    for k in 0..scenarios.len() {
+                        let horizon = scenarios.scenario(k).map(|s| s.contact_horizon()).unwrap_or(0.0);
+                        // The horizon is 1000 elastic contact times; a history
+                        // of a normal contact is ~1/1000 of this bound.
+                        if horizon / v > MAX_HISTORY_SAMPLES * kick_core::scenario::CONTACT_HORIZON_FACTOR {
+                            return Err(at.error(i.span(), "output.interval", format!(
+                                "{v} s is too fine: more than {MAX_HISTORY_SAMPLES:e} samples per contact"
+                            )));
+                        }
+                    }
+                    Output::History { interval: v }
+                }
+                (other, _) => {
+                    return Err(at.error(mode_span, "output.mode", format!("`{other}`: expected \"summary\" or \"history\"")))
+                }
+            }
+        }
+    };
+
+    Ok(Experiment {
+        name,
+        description: raw.description.unwrap_or_default(),
+        path: path.to_path_buf(),
+        text: text.to_string(),
+        solvers,
+        scenarios,
+        output,
+    })
+}
+
+/// The axis values, the span of the whole axis and the span of each value.
+fn axis_values(at: &Locator, axis: &RawAxis, key: &str) -> Result<(Vec<f64>, Span, Vec<Span>), ExperimentError> {
+    let given = [axis.values.is_some(), axis.linear.is_some(), axis.log.is_some()];
+    if given.iter().filter(|&&g| g).count() != 1 {
+        return Err(at.error(axis.parameter.span(), key, "give exactly one of `values`, `linear` or `log`"));
+    }
+    if let Some(values) = &axis.values {
+        if values.get_ref().is_empty() {
+            return Err(at.error(values.span(), key, "`values` is empty"));
+        }
+        for v in values.get_ref() {
+            if !v.get_ref().is_finite() {
+                return Err(at.error(v.span(), key, format!("{} is not finite", v.get_ref())));
+            }
+        }
+        return Ok((
+            values.get_ref().iter().map(|v| *v.get_ref()).collect(),
+            values.span(),
+            values.get_ref().iter().map(|v| v.span()).collect(),
+        ));
+    }
+    let (range, is_log) = match (&axis.linear, &axis.log) {
+        (Some(r), None) => (r, false),
+        (None, Some(r)) => (r, true),
+        _ => unreachable!("exactly one range checked above"),
+    };
+    let r = range.get_ref();
+    let count = *r.count.get_ref();
+    if !(1..=MAX_SCENARIOS as i64).contains(&count) {
+        return Err(at.error(r.count.span(), &format!("{key}.count"), format!("{count} must be between 1 and {MAX_SCENARIOS}")));
+    }
+    if !(r.from.is_finite() && r.to.is_finite()) {
+        return Err(at.error(range.span(), key, "`from` and `to` must be finite"));
+    }
+    if is_log && !(r.from > 0.0 && r.to > 0.0) {
+        return Err(at.error(range.span(), key, format!("a log range needs from > 0 and to > 0, got {} and {}", r.from, r.to)));
+    }
+    let values = if is_log {
+        log_range(r.from, r.to, count as usize)
+    } else {
+        linear_range(r.from, r.to, count as usize)
+    };
+    let spans = vec![range.span(); values.len()];
+    Ok((values, range.span(), spans))
+}
+
+/// Build a scenario from optional spanned values, naming the key of the first
+/// invalid one.
+fn build<'a>(
+    at: &Locator,
+    get: impl Fn(Parameter) -> Option<&'a Spanned<f64>>,
+    table: &str,
+) -> Result<Scenario, ExperimentError> {
+    let mut values = Scenario::BASELINE.values();
+    for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
+        if let Some(v) = get(p) {
+            *slot = *v.get_ref();
+        }
+    }
+    Scenario::from_values(values).map_err(|e| {
+        let blamed = match &e {
+            KickError::InvalidParameter { name, .. } => Parameter::from_name(name),
+            KickError::NoContact { .. } => Some(if get(Parameter::BallSpeed).is_some() {
+                Parameter::BallSpeed
+            } else {
+                Parameter::FootSpeed
+            }),
+            _ => None,
+        };
+        let span = blamed.and_then(|p| get(p)).map(|v| v.span()).unwrap_or(0..0);
+        let key = blamed.map(|p| format!("{table}.{}", p.name())).unwrap_or_else(|| table.to_string());
+        at.error(span, &key, e.to_string())
+    })
+}
+
+fn table2_experiment(path: &Path, text: &str, name: String, at: &Locator) -> Result<Experiment, ExperimentError> {
+    let file = Table2File::parse(text).map_err(|e| at.error(0..0, "row", e))?;
+    let rows = file.scenarios().map_err(|e| at.error(0..0, "row", e.to_string()))?;
+    // The file's own solver (the paper's method) first, then the accurate reference.
+    let mut solvers = vec![SolverChoice::from_name(&file.solver, file.dt)
+        .map_err(|e| at.error(0..0, "solver", e.to_string()))?];
+    if file.solver != "accurate" {
+        solvers.push(SolverChoice::from_name("accurate", file.dt).map_err(|e| at.error(0..0, "solver", e.to_string()))?);
+    }
+    let (names, scenarios) = rows.into_iter().unzip();
+    Ok(Experiment {
+        name: if file.name.is_empty() { name } else { file.name.clone() },
+        description: file.description.clone(),
+        path: path.to_path_buf(),
+        text: text.to_string(),
+        solvers,
+        scenarios: Scenarios::Named { names, scenarios },
+        output: Output::Summary,
+    })
+}

@@ -1,0 +1,611 @@
+//! Figures 1–7 of the paper, drawn from the result files (never re-simulated).
+//!
+//! Each figure reads `RESULTS/figureN*.h5` and writes `FIGURES/figureN.png`
+//! and `FIGURES/figureN.svg`. Text uses DejaVu Sans, bundled in
+//! `assets/` and registered with plotters' `ab_glyph` backend, so no system
+//! font library is needed.
+
+use crate::h5::{read_history, Column, H5Error, SweepData};
+use kick_core::paper::TABLE2;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::{Path, PathBuf};
+use std::sync::Once;
+
+static FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
+const FAMILY: &str = "sans-serif";
+/// Pixel size of a PNG (and SVG) figure.
+pub const SIZE: (u32, u32) = (1400, 950);
+
+#[derive(Debug, thiserror::Error)]
+pub enum FigureError {
+    #[error(transparent)]
+    H5(#[from] H5Error),
+    #[error("figure {figure}: {message}")]
+    Draw { figure: String, message: String },
+}
+
+fn register_font() -> Result<(), FigureError> {
+    static ONCE: Once = Once::new();
+    let mut result = Ok(());
+    ONCE.call_once(|| {
+        result = plotters::style::register_font(FAMILY, FontStyle::Normal, FONT).map_err(|_| FigureError::Draw {
+            figure: "-".into(),
+            message: "bundled font DejaVuSans.ttf is invalid".into(),
+        });
+    });
+    result
+}
+
+/// One curve of a panel.
+#[derive(Debug, Clone)]
+pub struct Series {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+    pub color: RGBColor,
+    pub dashed: bool,
+    pub markers: bool,
+}
+
+impl Series {
+    pub fn line(label: &str, color: RGBColor, x: &[f64], y: &[f64]) -> Series {
+        Series { label: label.into(), points: finite_points(x, y), color, dashed: false, markers: false }
+    }
+    pub fn dashed(mut self) -> Series {
+        self.dashed = true;
+        self
+    }
+    pub fn with_markers(mut self) -> Series {
+        self.markers = true;
+        self
+    }
+}
+
+/// Points with both coordinates finite (failed scenarios are NaN in the files).
+fn finite_points(x: &[f64], y: &[f64]) -> Vec<(f64, f64)> {
+    x.iter().zip(y).filter(|(a, b)| a.is_finite() && b.is_finite()).map(|(&a, &b)| (a, b)).collect()
+}
+
+/// One set of axes.
+#[derive(Debug, Clone)]
+pub struct Panel {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub log_x: bool,
+    pub series: Vec<Series>,
+    /// Force the y range to include zero.
+    pub y_from_zero: bool,
+    /// Where the legend goes (drawn when two or more curves are labelled).
+    pub legend: SeriesLabelPosition,
+}
+
+const COLORS: [RGBColor; 6] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+    RGBColor(23, 190, 207),
+];
+
+fn color(i: usize) -> RGBColor {
+    COLORS[i % COLORS.len()]
+}
+
+fn draw_err(figure: &str) -> impl Fn(String) -> FigureError + '_ {
+    move |message| FigureError::Draw { figure: figure.to_string(), message }
+}
+
+/// Tick label of a log10 axis position: the value itself, 3 significant digits.
+fn log_tick(v: f64) -> String {
+    let x = 10f64.powf(v);
+    if (0.01..10_000.0).contains(&x) {
+        format!("{}", (x * 1000.0).round() / 1000.0)
+    } else {
+        format!("{x:.1e}")
+    }
+}
+
+fn padded(min: f64, max: f64) -> (f64, f64) {
+    if !(min.is_finite() && max.is_finite()) {
+        return (0.0, 1.0);
+    }
+    let span = (max - min).abs().max(1e-12 * max.abs().max(1.0));
+    (min - 0.05 * span, max + 0.05 * span)
+}
+
+fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Result<(), String> {
+    let tx = |x: f64| if panel.log_x { x.log10() } else { x };
+    let xs = panel.series.iter().flat_map(|s| s.points.iter().map(|p| tx(p.0)));
+    let ys = panel.series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
+    let (x0, x1) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+    let (mut y0, mut y1) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| (a.min(y), b.max(y)));
+    if panel.y_from_zero {
+        y0 = y0.min(0.0);
+        y1 = y1.max(0.0);
+    }
+    let (x0, x1) = if panel.log_x { (x0, x1) } else { padded(x0, x1) };
+    let (y0, y1) = padded(y0, y1);
+    let mut chart = ChartBuilder::on(area)
+        .caption(&panel.title, (FAMILY, 22))
+        .margin(12)
+        .x_label_area_size(48)
+        .y_label_area_size(78)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(|e| e.to_string())?;
+    let log_x = panel.log_x;
+    let x_fmt = move |v: &f64| if log_x { log_tick(*v) } else { format!("{}", (v * 1e6).round() / 1e6) };
+    chart
+        .configure_mesh()
+        .x_desc(panel.x_label.as_str())
+        .y_desc(panel.y_label.as_str())
+        .x_label_formatter(&x_fmt)
+        .label_style((FAMILY, 15))
+        .axis_desc_style((FAMILY, 17))
+        .light_line_style(RGBColor(235, 235, 235))
+        .draw()
+        .map_err(|e| e.to_string())?;
+    for s in &panel.series {
+        let points: Vec<(f64, f64)> = s.points.iter().map(|&(x, y)| (tx(x), y)).collect();
+        let style = s.color.stroke_width(2);
+        let color = s.color;
+        let anno = if s.dashed {
+            chart
+                .draw_series(DashedLineSeries::new(points.clone(), 9, 6, style))
+                .map_err(|e| e.to_string())?
+        } else {
+            chart.draw_series(LineSeries::new(points.clone(), style)).map_err(|e| e.to_string())?
+        };
+        if !s.label.is_empty() {
+            let dashed = s.dashed;
+            anno.label(s.label.as_str()).legend(move |(x, y)| {
+                if dashed {
+                    PathElement::new(vec![(x, y), (x + 8, y)], color.stroke_width(2))
+                } else {
+                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                }
+            });
+        }
+        if s.markers {
+            chart
+                .draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
+                .map_err(|e| e.to_string())?;
+        }
+    }
+    if panel.series.iter().filter(|s| !s.label.is_empty()).count() > 1 {
+        chart
+            .configure_series_labels()
+            .label_font((FAMILY, 15))
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .position(panel.legend.clone())
+            .draw()
+            .map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+fn draw_grid<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    title: &str,
+    layout: (usize, usize),
+    panels: &[Panel],
+) -> Result<(), String> {
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    let root = root.titled(title, (FAMILY, 26)).map_err(|e| e.to_string())?;
+    for (area, panel) in root.split_evenly(layout).iter().zip(panels) {
+        draw_panel(area, panel)?;
+    }
+    root.present().map_err(|e| e.to_string())
+}
+
+/// Write `name.png` and `name.svg` of a grid of panels.
+pub fn save_grid(dir: &Path, name: &str, title: &str, layout: (usize, usize), panels: &[Panel]) -> Result<Vec<PathBuf>, FigureError> {
+    register_font()?;
+    std::fs::create_dir_all(dir).map_err(|e| draw_err(name)(e.to_string()))?;
+    let png = dir.join(format!("{name}.png"));
+    let svg = dir.join(format!("{name}.svg"));
+    draw_grid(BitMapBackend::new(&png, SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
+    draw_grid(SVGBackend::new(&svg, SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
+    Ok(vec![png, svg])
+}
+
+fn column<'a>(columns: &'a [(Column, Vec<f64>)], name: &str, path: &Path) -> Result<&'a [f64], FigureError> {
+    columns
+        .iter()
+        .find(|(c, _)| c.name == name)
+        .map(|(_, v)| v.as_slice())
+        .ok_or_else(|| FigureError::Draw { figure: path.display().to_string(), message: format!("no column `{name}`") })
+}
+
+fn scaled(values: &[f64], factor: f64) -> Vec<f64> {
+    values.iter().map(|v| v * factor).collect()
+}
+
+fn outcome<'a>(data: &'a SweepData, solver: &str, name: &str) -> Result<&'a [f64], FigureError> {
+    let set = data.set(solver)?;
+    set.column(name).ok_or_else(|| FigureError::Draw {
+        figure: data.path.display().to_string(),
+        message: format!("no outcome `{name}`"),
+    })
+}
+
+/// Figure 1: the baseline time history.
+pub fn figure1(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let path = results.join("figure1.h5");
+    let h = read_history(&path, "", 0)?;
+    let t = scaled(column(&h, "time", &path)?, 1e3);
+    let panels = vec![
+        Panel {
+            title: "(a) Contact force".into(),
+            x_label: "time t (ms)".into(),
+            y_label: "force F (kN)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: vec![Series::line("", color(0), &t, &scaled(column(&h, "force", &path)?, 1e-3))],
+        },
+        Panel {
+            title: "(b) Velocities".into(),
+            x_label: "time t (ms)".into(),
+            y_label: "velocity (m/s)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::LowerRight,
+            series: vec![
+                Series::line("foot v_f", color(0), &t, column(&h, "foot_velocity", &path)?),
+                Series::line("ball v_b", color(1), &t, column(&h, "ball_velocity", &path)?),
+            ],
+        },
+        Panel {
+            title: "(c) Compression".into(),
+            x_label: "time t (ms)".into(),
+            y_label: "compression δ (mm)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: vec![Series::line("", color(2), &t, &scaled(column(&h, "compression", &path)?, 1e3))],
+        },
+        {
+            let kinetic = column(&h, "kinetic", &path)?;
+            let elastic = column(&h, "elastic", &path)?;
+            let dissipated = column(&h, "dissipated", &path)?;
+            let total: Vec<f64> = (0..t.len()).map(|i| kinetic[i] + elastic[i] + dissipated[i]).collect();
+            Panel {
+                title: "(d) Energies".into(),
+                x_label: "time t (ms)".into(),
+                y_label: "energy (J)".into(),
+                log_x: false,
+                y_from_zero: true,
+                legend: SeriesLabelPosition::MiddleRight,
+                series: vec![
+                    Series::line("kinetic K", color(0), &t, kinetic),
+                    Series::line("elastic U(δ)", color(1), &t, elastic),
+                    Series::line("dissipated D", color(2), &t, dissipated),
+                    Series::line("K + U + D", color(3), &t, &total).dashed(),
+                ],
+            }
+        },
+    ];
+    save_grid(out, "figure1", "Figure 1: baseline time history (accurate solver)", (2, 2), &panels)
+}
+
+/// Figure 2: speed ratio versus effective foot mass, with Eq. 38 at e = 1.
+pub fn figure2(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let data = SweepData::read(&results.join("figure2.h5"))?;
+    let solver = data.sets[0].solver.clone();
+    let mf = data.parameter("foot_mass")?;
+    let mb = data.parameter("ball_mass")?;
+    // Eq. 38 with e = 1: the perfectly elastic bound for a ball at rest.
+    let bound: Vec<f64> = mf.iter().zip(mb).map(|(f, b)| 2.0 * f / (f + b)).collect();
+    let panels = vec![Panel {
+        title: "Ball-to-foot speed ratio versus effective foot mass".into(),
+        x_label: "effective foot mass m_f (kg), log scale".into(),
+        y_label: "speed ratio v_b⁺ / v_f⁻ (1)".into(),
+        log_x: true,
+        y_from_zero: true,
+        legend: SeriesLabelPosition::LowerRight,
+        series: vec![
+            Series::line(&format!("compliant model ({solver})"), color(0), mf, outcome(&data, &solver, "speed_ratio")?),
+            Series::line("perfectly elastic bound, Eq. 38 with e = 1", color(1), mf, &bound).dashed(),
+        ],
+    }];
+    save_grid(out, "figure2", "Figure 2: effective impact mass", (1, 1), &panels)
+}
+
+/// Force histories of every row of a history file, labelled by one parameter.
+fn force_histories(path: &Path, parameter: &str, label: impl Fn(f64) -> String) -> Result<Vec<Series>, FigureError> {
+    let data = SweepData::read(path)?;
+    let values = data.parameter(parameter)?.to_vec();
+    let mut series = Vec::new();
+    for (row, v) in values.iter().enumerate() {
+        if data.sets[0].status.get(row) != Some(&0) {
+            continue;
+        }
+        let h = read_history(path, "", row)?;
+        let t = scaled(column(&h, "time", path)?, 1e3);
+        series.push(Series::line(&label(*v), color(row), &t, &scaled(column(&h, "force", path)?, 1e-3)));
+    }
+    Ok(series)
+}
+
+/// Figure 3: stiffness sweep.
+pub fn figure3(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let data = SweepData::read(&results.join("figure3.h5"))?;
+    let solver = data.sets[0].solver.clone();
+    let k = data.parameter("stiffness")?;
+    let panels = vec![
+        Panel {
+            title: "(a) Force pulses".into(),
+            x_label: "time t (ms)".into(),
+            y_label: "force F (kN)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: force_histories(&results.join("figure3_histories.h5"), "stiffness", |v| format!("k = {v:.2e} N/m^n"))?,
+        },
+        Panel {
+            title: "(b) Peak force".into(),
+            x_label: "stiffness k (N/m^n), log scale".into(),
+            y_label: "peak force (kN)".into(),
+            log_x: true,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: vec![Series::line("", color(1), k, &scaled(outcome(&data, &solver, "peak_force")?, 1e-3))],
+        },
+        Panel {
+            title: "(c) Contact time".into(),
+            x_label: "stiffness k (N/m^n), log scale".into(),
+            y_label: "contact time t_c (ms)".into(),
+            log_x: true,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: vec![Series::line("", color(2), k, &scaled(outcome(&data, &solver, "contact_time")?, 1e3))],
+        },
+        Panel {
+            title: "(d) Ball exit speed".into(),
+            x_label: "stiffness k (N/m^n), log scale".into(),
+            y_label: "exit speed v_b⁺ (m/s)".into(),
+            log_x: true,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: vec![Series::line("", color(0), k, outcome(&data, &solver, "v_ball_out")?)],
+        },
+    ];
+    save_grid(out, "figure3", "Figure 3: stiffness sweep (n = 1.35)", (2, 2), &panels)
+}
+
+/// Figure 4: damping sweep.
+pub fn figure4(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let data = SweepData::read(&results.join("figure4.h5"))?;
+    let solver = data.sets[0].solver.clone();
+    let c = data.parameter("damping")?;
+    let (vf, vb) = (data.parameter("foot_speed")?, data.parameter("ball_speed")?);
+    // F(0⁺) = c V0: the force jump at first touch.
+    let onset: Vec<f64> = (0..c.len()).map(|i| c[i] * (vf[i] - vb[i]) * 1e-3).collect();
+    let panels = vec![
+        Panel {
+            title: "(a) Force pulses".into(),
+            x_label: "time t (ms)".into(),
+            y_label: "force F (kN)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: force_histories(&results.join("figure4_histories.h5"), "damping", |v| format!("c = {v} N s/m"))?,
+        },
+        Panel {
+            title: "(b) Ball exit speed".into(),
+            x_label: "damping c (N s/m)".into(),
+            y_label: "exit speed v_b⁺ (m/s)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: vec![Series::line("", color(0), c, outcome(&data, &solver, "v_ball_out")?)],
+        },
+        Panel {
+            title: "(c) Peak force".into(),
+            x_label: "damping c (N s/m)".into(),
+            y_label: "force (kN)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: vec![
+                Series::line("peak force", color(1), c, &scaled(outcome(&data, &solver, "peak_force")?, 1e-3)),
+                Series::line("onset jump F(0⁺) = c V0", color(3), c, &onset).dashed(),
+            ],
+        },
+        Panel {
+            title: "(d) Effective restitution".into(),
+            x_label: "damping c (N s/m)".into(),
+            y_label: "restitution e (1)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: vec![Series::line("", color(2), c, outcome(&data, &solver, "restitution")?)],
+        },
+    ];
+    save_grid(out, "figure4", "Figure 4: damping sweep", (2, 2), &panels)
+}
+
+/// Figure 5: drive force during contact.
+pub fn figure5(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let data = SweepData::read(&results.join("figure5.h5"))?;
+    let solver = data.sets[0].solver.clone();
+    let f = data.parameter("drive_force")?;
+    let (mf, mb) = (data.parameter("foot_mass")?, data.parameter("ball_mass")?);
+    let vb = outcome(&data, &solver, "v_ball_out")?;
+    let tc = outcome(&data, &solver, "contact_time")?;
+    // Gains relative to the undriven row (the sweep starts at F = 0).
+    let vb0 = f.iter().position(|&x| x == 0.0).map(|i| vb[i]).unwrap_or(f64::NAN);
+    let gain: Vec<f64> = vb.iter().map(|v| v - vb0).collect();
+    // Eq. 55: J_drive ~ F t_c, shared by foot and ball: the centre-of-mass gain.
+    let shared: Vec<f64> = (0..f.len()).map(|i| f[i] * tc[i] / (mf[i] + mb[i])).collect();
+    let panels = vec![
+        Panel {
+            title: "(a) Exit speeds".into(),
+            x_label: "drive force F_drive (N)".into(),
+            y_label: "exit speed (m/s)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::LowerRight,
+            series: vec![
+                Series::line("ball v_b⁺", color(0), f, vb),
+                Series::line("foot v_f⁺", color(1), f, outcome(&data, &solver, "v_foot_out")?),
+            ],
+        },
+        Panel {
+            title: "(b) Ball speed gained from the drive".into(),
+            x_label: "drive force F_drive (N)".into(),
+            y_label: "speed gain (m/s)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperLeft,
+            series: vec![
+                Series::line("v_b⁺(F) − v_b⁺(0)", color(0), f, &gain),
+                Series::line("F t_c / (m_f + m_b), Eq. 55 spread over both", color(3), f, &shared).dashed(),
+            ],
+        },
+    ];
+    save_grid(out, "figure5", "Figure 5: drive force during contact", (1, 2), &panels)
+}
+
+/// Figure 6: final versus initial ball velocity.
+pub fn figure6(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let data = SweepData::read(&results.join("figure6.h5"))?;
+    let solver = data.sets[0].solver.clone();
+    let v0 = data.parameter("ball_speed")?;
+    let panels = vec![
+        Panel {
+            title: "(a) Final ball velocity".into(),
+            x_label: "initial ball velocity v_b⁻ (m/s)".into(),
+            y_label: "final ball velocity v_b⁺ (m/s)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::LowerRight,
+            series: vec![
+                Series::line("compliant model", color(0), v0, outcome(&data, &solver, "v_ball_out")?),
+                Series::line("v_b⁺ = v_b⁻ (no contact)", RGBColor(128, 128, 128), v0, v0).dashed(),
+            ],
+        },
+        Panel {
+            title: "(b) Peak force".into(),
+            x_label: "initial ball velocity v_b⁻ (m/s)".into(),
+            y_label: "peak force (kN)".into(),
+            log_x: false,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+            series: vec![Series::line("", color(1), v0, &scaled(outcome(&data, &solver, "peak_force")?, 1e-3))],
+        },
+    ];
+    save_grid(out, "figure6", "Figure 6: initial ball velocity (foot speed 22 m/s)", (1, 2), &panels)
+}
+
+fn draw_bars<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    names: &[String],
+    groups: &[(String, Vec<f64>)],
+) -> Result<(), String> {
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    let root = root
+        .titled("Figure 7: ball exit speed of the Table 2 scenarios", (FAMILY, 26))
+        .map_err(|e| e.to_string())?;
+    let n = names.len();
+    let max = groups.iter().flat_map(|g| g.1.iter().copied()).filter(|v| v.is_finite()).fold(0.0, f64::max);
+    let mut chart = ChartBuilder::on(&root)
+        .margin(16)
+        .x_label_area_size(50)
+        .y_label_area_size(220)
+        .build_cartesian_2d(0.0..max * 1.12, 0.0..n as f64)
+        .map_err(|e| e.to_string())?;
+    let names_owned = names.to_vec();
+    let y_fmt = move |v: &f64| {
+        let i = (n as f64 - v - 0.5).round();
+        if (v.fract() - 0.5).abs() < 1e-6 && i >= 0.0 && (i as usize) < n {
+            names_owned[i as usize].clone()
+        } else {
+            String::new()
+        }
+    };
+    chart
+        .configure_mesh()
+        .disable_y_mesh()
+        .y_labels(2 * n + 1)
+        .y_label_formatter(&y_fmt)
+        .x_desc("ball exit speed v_b⁺ (m/s)")
+        .label_style((FAMILY, 16))
+        .axis_desc_style((FAMILY, 17))
+        .draw()
+        .map_err(|e| e.to_string())?;
+    let g = groups.len() as f64;
+    let height = 0.8 / g;
+    for (k, (label, values)) in groups.iter().enumerate() {
+        let c = color(k);
+        let bars = values.iter().enumerate().filter(|(_, v)| v.is_finite()).map(move |(i, &v)| {
+            // Row 0 at the top.
+            let top = n as f64 - i as f64 - 0.1 - k as f64 * height;
+            Rectangle::new([(0.0, top - height), (v, top)], c.filled())
+        });
+        chart
+            .draw_series(bars)
+            .map_err(|e| e.to_string())?
+            .label(label.as_str())
+            .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 16, y + 6)], c.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .label_font((FAMILY, 16))
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::LowerRight)
+        .draw()
+        .map_err(|e| e.to_string())?;
+    root.present().map_err(|e| e.to_string())
+}
+
+/// Figure 7: exit speed of the Table 2 scenarios, printed and computed.
+pub fn figure7(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    register_font()?;
+    let path = results.join("figure7.h5");
+    let data = SweepData::read(&path)?;
+    let names = data.names.clone().ok_or_else(|| draw_err("figure7")("no scenario_names".into()))?;
+    // The paper's printed values, matched by row name.
+    let printed: Vec<f64> = names
+        .iter()
+        .map(|n| TABLE2.iter().find(|r| r.name == n).map_or(f64::NAN, |r| r.v_ball_out))
+        .collect();
+    let mut groups = vec![("paper (printed)".to_string(), printed)];
+    for set in &data.sets {
+        let v = set.column("v_ball_out").ok_or_else(|| draw_err("figure7")("no v_ball_out".into()))?;
+        groups.push((set.solver.clone(), v.to_vec()));
+    }
+    std::fs::create_dir_all(out).map_err(|e| draw_err("figure7")(e.to_string()))?;
+    let png = out.join("figure7.png");
+    let svg = out.join("figure7.svg");
+    draw_bars(BitMapBackend::new(&png, SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
+    draw_bars(SVGBackend::new(&svg, SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
+    Ok(vec![png, svg])
+}
+
+/// A figure: its name and the function drawing it.
+pub type FigureFn = fn(&Path, &Path) -> Result<Vec<PathBuf>, FigureError>;
+
+/// Every figure, in the paper's order.
+pub const FIGURES: [(&str, FigureFn); 7] = [
+    ("figure1", figure1),
+    ("figure2", figure2),
+    ("figure3", figure3),
+    ("figure4", figure4),
+    ("figure5", figure5),
+    ("figure6", figure6),
+    ("figure7", figure7),
+];
+
+/// Draw every figure from `results` into `out`.
+pub fn draw_all(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let mut written = Vec::new();
+    for (_, draw) in FIGURES {
+        written.extend(draw(results, out)?);
+    }
+    Ok(written)
+}

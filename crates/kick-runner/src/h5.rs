@@ -1,0 +1,562 @@
+//! The HDF5 result layout, independent of the model that produced the numbers.
+//!
+//! A result file holds one sweep: a table of named parameter columns and one
+//! or more sets of named outcome columns (one set per solver), every column a
+//! 1D dataset with a `units` attribute. Rows are streamed in chunks of
+//! [`CHUNK_ROWS`] into extendable, chunked datasets, so a writer's memory does
+//! not grow with the number of rows. See the README ("HDF5 result layout").
+//!
+//! ```text
+//! /                      attributes: provenance (tool, tool_version, git_commit,
+//!                        created_utc, experiment, experiment_file, experiment_text,
+//!                        solver, solver_settings, ...), layout_version, rows
+//! /parameters/<name>     f64[rows], attribute units
+//! /outcomes/<name>       f64[rows] of the first solver (NaN where status = 1)
+//! /outcomes/status       u8[rows]: 0 solved, 1 failed
+//! /failures/index        u64[f]: rows that failed
+//! /failures/message      string[f]: their error messages
+//! /histories/<row>/<name>  time histories of that row (when recorded)
+//! /solvers/<solver>/...  outcomes, failures and histories of every further solver
+//! /scenario_names        string[rows] (named scenarios only)
+//! ```
+
+use crate::provenance::Provenance;
+use hdf5::types::VarLenUnicode;
+use hdf5::{Dataset, File, Group};
+use std::path::{Path, PathBuf};
+
+/// Rows per HDF5 chunk and per flush.
+pub const CHUNK_ROWS: usize = 4096;
+/// Version of the layout described above; bump on incompatible changes.
+pub const LAYOUT_VERSION: u32 = 1;
+
+/// A named column and its unit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Column {
+    pub name: String,
+    pub unit: String,
+}
+
+impl Column {
+    pub fn new(name: &str, unit: &str) -> Column {
+        Column { name: name.into(), unit: unit.into() }
+    }
+}
+
+/// One set of outcome columns: which solver, where, with what settings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OutcomeSet {
+    /// Solver name, written as the `solver` attribute.
+    pub solver: String,
+    /// Human-readable settings (tolerances, step), the `solver_settings` attribute.
+    pub settings: String,
+    /// Numeric settings, one attribute each (e.g. `dt`, `relative_tolerance`).
+    pub numeric_settings: Vec<(String, f64)>,
+    pub columns: Vec<Column>,
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum H5Error {
+    #[error("HDF5 file {path}: {message}")]
+    Hdf5 { path: PathBuf, message: String },
+    #[error("result file {path}: {message}")]
+    Layout { path: PathBuf, message: String },
+}
+
+fn h5err(path: &Path) -> impl Fn(hdf5::Error) -> H5Error + '_ {
+    move |e| H5Error::Hdf5 { path: path.to_path_buf(), message: e.to_string() }
+}
+
+fn layout(path: &Path, message: impl Into<String>) -> H5Error {
+    H5Error::Layout { path: path.to_path_buf(), message: message.into() }
+}
+
+fn varlen(path: &Path, text: &str) -> Result<VarLenUnicode, H5Error> {
+    // HDF5 strings end at the first NUL.
+    text.replace('\0', " ")
+        .parse::<VarLenUnicode>()
+        .map_err(|e| layout(path, format!("cannot store text: {e}")))
+}
+
+/// Write a scalar string attribute.
+pub fn write_str_attr(location: &hdf5::Location, path: &Path, name: &str, value: &str) -> Result<(), H5Error> {
+    let value = varlen(path, value)?;
+    location
+        .new_attr::<VarLenUnicode>()
+        .shape(())
+        .create(name)
+        .and_then(|a| a.write_scalar(&value))
+        .map_err(h5err(path))
+}
+
+/// Write a scalar f64 attribute.
+pub fn write_f64_attr(location: &hdf5::Location, path: &Path, name: &str, value: f64) -> Result<(), H5Error> {
+    location
+        .new_attr::<f64>()
+        .shape(())
+        .create(name)
+        .and_then(|a| a.write_scalar(&value))
+        .map_err(h5err(path))
+}
+
+fn write_u64_attr(location: &hdf5::Location, path: &Path, name: &str, value: u64) -> Result<(), H5Error> {
+    location
+        .new_attr::<u64>()
+        .shape(())
+        .create(name)
+        .and_then(|a| a.write_scalar(&value))
+        .map_err(h5err(path))
+}
+
+/// Read a scalar string attribute.
+pub fn read_str_attr(location: &hdf5::Location, name: &str) -> Option<String> {
+    let attr = location.attr(name).ok()?;
+    attr.read_scalar::<VarLenUnicode>().ok().map(|s| s.as_str().to_string())
+}
+
+/// Read a scalar f64 attribute.
+pub fn read_f64_attr(location: &hdf5::Location, name: &str) -> Option<f64> {
+    location.attr(name).ok()?.read_scalar::<f64>().ok()
+}
+
+/// Create (or open) the group at a slash-separated path below `root`.
+fn group_at(root: &Group, relative: &str, path: &Path) -> Result<Group, H5Error> {
+    let mut group = root.clone();
+    for part in relative.split('/').filter(|p| !p.is_empty()) {
+        group = if group.link_exists(part) {
+            group.group(part)
+        } else {
+            group.create_group(part)
+        }
+        .map_err(h5err(path))?;
+    }
+    Ok(group)
+}
+
+fn extendable<T: hdf5::H5Type>(group: &Group, name: &str, unit: &str, chunk: usize, path: &Path) -> Result<Dataset, H5Error> {
+    // Rows are only appended, so a cache of a few chunks suffices; HDF5's
+    // default (1 MiB per dataset) would grow the memory with the row count
+    // up to that size per column.
+    let dataset = group
+        .new_dataset::<T>()
+        .chunk(chunk)
+        .chunk_cache(11, 2 * chunk * std::mem::size_of::<T>().max(16), 1.0)
+        .shape(0..)
+        .create(name)
+        .map_err(h5err(path))?;
+    write_str_attr(&dataset, path, "units", unit)?;
+    Ok(dataset)
+}
+
+/// Write a complete 1D f64 dataset with its unit.
+pub fn write_column(group: &Group, path: &Path, column: &Column, values: &[f64]) -> Result<(), H5Error> {
+    let dataset = group
+        .new_dataset_builder()
+        .with_data(values)
+        .create(column.name.as_str())
+        .map_err(h5err(path))?;
+    write_str_attr(&dataset, path, "units", &column.unit)
+}
+
+/// Write a complete 1D string dataset.
+pub fn write_strings(group: &Group, path: &Path, name: &str, values: &[String]) -> Result<(), H5Error> {
+    let values = values.iter().map(|v| varlen(path, v)).collect::<Result<Vec<_>, _>>()?;
+    let dataset = group
+        .new_dataset_builder()
+        .with_data(values.as_slice())
+        .create(name)
+        .map_err(h5err(path))?;
+    write_str_attr(&dataset, path, "units", "")
+}
+
+struct SetWriter {
+    group: Group,
+    columns: Vec<Dataset>,
+    status: Dataset,
+    failure_index: Dataset,
+    failure_message: Dataset,
+    /// Column-major buffer: `columns.len()` runs of up to CHUNK_ROWS values.
+    buffer: Vec<Vec<f64>>,
+    status_buffer: Vec<u8>,
+    failures: Vec<(u64, VarLenUnicode)>,
+    failures_written: usize,
+    failure_count: u64,
+}
+
+/// Streams a sweep into a new result file.
+///
+/// Usage: [`SweepWriter::create`], then per row [`SweepWriter::push_parameters`]
+/// followed by one [`SweepWriter::push_outcome`] per outcome set, and finally
+/// [`SweepWriter::finish`]. The file is written as `NAME.h5.tmp` and renamed
+/// when finished, so a crashed run never leaves a truncated `NAME.h5`.
+pub struct SweepWriter {
+    path: PathBuf,
+    temporary: PathBuf,
+    file: File,
+    parameters: Vec<Dataset>,
+    parameter_buffer: Vec<Vec<f64>>,
+    sets: Vec<SetWriter>,
+    rows_written: usize,
+}
+
+impl SweepWriter {
+    /// Create the file with its provenance, a `parameters` group for
+    /// `parameters` and one outcome group per entry of `sets` (the first at
+    /// the root, the others under `solvers/<solver>`). `expected_rows` sizes
+    /// the HDF5 chunks (at most [`CHUNK_ROWS`]), so small sweeps stay small
+    /// files; more rows may still be pushed.
+    pub fn create(
+        path: &Path,
+        provenance: &Provenance,
+        parameters: &[Column],
+        sets: &[OutcomeSet],
+        expected_rows: u64,
+    ) -> Result<SweepWriter, H5Error> {
+        let chunk = expected_rows.clamp(1, CHUNK_ROWS as u64) as usize;
+        // Failures are usually few.
+        let failure_chunk = chunk.min(64);
+        if sets.is_empty() {
+            return Err(layout(path, "a sweep needs at least one outcome set"));
+        }
+        for (i, set) in sets.iter().enumerate() {
+            if sets[..i].iter().any(|s| s.solver == set.solver) {
+                return Err(layout(path, format!("solver `{}` listed twice", set.solver)));
+            }
+            if set.columns.iter().any(|c| c.name == "status") {
+                return Err(layout(path, "`status` is reserved for the status dataset"));
+            }
+        }
+        let mut temporary = path.as_os_str().to_owned();
+        temporary.push(".tmp");
+        let temporary = PathBuf::from(temporary);
+        let file = File::create(&temporary).map_err(h5err(path))?;
+        write_provenance(&file, path, provenance)?;
+        write_u64_attr(&file, path, "layout_version", u64::from(LAYOUT_VERSION))?;
+        write_set_attrs(&file, path, &sets[0])?;
+
+        let group = file.create_group("parameters").map_err(h5err(path))?;
+        let parameter_datasets = parameters
+            .iter()
+            .map(|c| extendable::<f64>(&group, &c.name, &c.unit, chunk, path))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut set_writers = Vec::new();
+        for (i, set) in sets.iter().enumerate() {
+            let base = if i == 0 {
+                (*file).clone()
+            } else {
+                let g = group_at(&file, &format!("solvers/{}", set.solver), path)?;
+                write_set_attrs(&g, path, set)?;
+                g
+            };
+            let outcomes = base.create_group("outcomes").map_err(h5err(path))?;
+            let columns = set
+                .columns
+                .iter()
+                .map(|c| extendable::<f64>(&outcomes, &c.name, &c.unit, chunk, path))
+                .collect::<Result<Vec<_>, _>>()?;
+            let status = extendable::<u8>(&outcomes, "status", "1", chunk, path)?;
+            write_str_attr(&status, path, "meaning", "0: solved; 1: failed, outcomes NaN, message in failures/")?;
+            let failures = base.create_group("failures").map_err(h5err(path))?;
+            let failure_index = extendable::<u64>(&failures, "index", "1", failure_chunk, path)?;
+            let failure_message = extendable::<VarLenUnicode>(&failures, "message", "", failure_chunk, path)?;
+            set_writers.push(SetWriter {
+                group: base,
+                buffer: vec![Vec::with_capacity(CHUNK_ROWS); columns.len()],
+                columns,
+                status,
+                failure_index,
+                failure_message,
+                status_buffer: Vec::with_capacity(CHUNK_ROWS),
+                failures: Vec::new(),
+                failures_written: 0,
+                failure_count: 0,
+            });
+        }
+        Ok(SweepWriter {
+            path: path.to_path_buf(),
+            temporary,
+            file,
+            parameter_buffer: vec![Vec::with_capacity(CHUNK_ROWS); parameter_datasets.len()],
+            parameters: parameter_datasets,
+            sets: set_writers,
+            rows_written: 0,
+        })
+    }
+
+    /// The open file, e.g. to add datasets of one's own.
+    pub fn file(&self) -> &File {
+        &self.file
+    }
+
+    /// Rows pushed so far.
+    pub fn rows(&self) -> usize {
+        self.rows_written + self.parameter_buffer.first().map_or(0, Vec::len)
+    }
+
+    /// Start a row with its parameter values (in the order given to `create`).
+    pub fn push_parameters(&mut self, values: &[f64]) -> Result<(), H5Error> {
+        if values.len() != self.parameters.len() {
+            return Err(layout(&self.path, format!(
+                "row has {} parameter values, the file {} columns",
+                values.len(),
+                self.parameters.len()
+            )));
+        }
+        if self.parameter_buffer.first().map_or(0, Vec::len) >= CHUNK_ROWS {
+            self.flush()?;
+        }
+        for (buffer, &v) in self.parameter_buffer.iter_mut().zip(values) {
+            buffer.push(v);
+        }
+        Ok(())
+    }
+
+    /// The current row's outcome in set `set`: its values, or the error message
+    /// of a failed solve (stored as NaN values, status 1 and the message).
+    pub fn push_outcome(&mut self, set: usize, outcome: Result<&[f64], &str>) -> Result<(), H5Error> {
+        let row = self.rows();
+        let path = self.path.clone();
+        let writer = self
+            .sets
+            .get_mut(set)
+            .ok_or_else(|| layout(&path, format!("no outcome set {set}")))?;
+        if writer.status_buffer.len() + self.rows_written + 1 != row {
+            return Err(layout(&path, format!("outcome set {set} pushed out of step with the parameters at row {row}")));
+        }
+        match outcome {
+            Ok(values) => {
+                if values.len() != writer.columns.len() {
+                    return Err(layout(&path, format!(
+                        "row has {} outcome values, set {set} has {} columns",
+                        values.len(),
+                        writer.columns.len()
+                    )));
+                }
+                for (buffer, &v) in writer.buffer.iter_mut().zip(values) {
+                    buffer.push(v);
+                }
+                writer.status_buffer.push(0);
+            }
+            Err(message) => {
+                for buffer in writer.buffer.iter_mut() {
+                    buffer.push(f64::NAN);
+                }
+                writer.status_buffer.push(1);
+                writer.failures.push(((row - 1) as u64, varlen(&path, message)?));
+                writer.failure_count += 1;
+            }
+        }
+        Ok(())
+    }
+
+    /// Failed rows so far in each set.
+    pub fn failure_counts(&self) -> Vec<u64> {
+        self.sets.iter().map(|s| s.failure_count).collect()
+    }
+
+    fn flush(&mut self) -> Result<(), H5Error> {
+        let pending = self.parameter_buffer.first().map_or(0, Vec::len);
+        let path = self.path.clone();
+        for (i, set) in self.sets.iter().enumerate() {
+            if set.status_buffer.len() != pending {
+                return Err(layout(&path, format!(
+                    "outcome set {i} has {} of {pending} pending rows",
+                    set.status_buffer.len()
+                )));
+            }
+        }
+        let (start, end) = (self.rows_written, self.rows_written + pending);
+        let append = |dataset: &Dataset, values: &[f64]| -> Result<(), H5Error> {
+            dataset.resize(end).map_err(h5err(&path))?;
+            dataset.write_slice(values, start..end).map_err(h5err(&path))
+        };
+        for (dataset, buffer) in self.parameters.iter().zip(self.parameter_buffer.iter_mut()) {
+            append(dataset, buffer)?;
+            buffer.clear();
+        }
+        for set in &mut self.sets {
+            for (dataset, buffer) in set.columns.iter().zip(set.buffer.iter_mut()) {
+                append(dataset, buffer)?;
+                buffer.clear();
+            }
+            set.status.resize(end).map_err(h5err(&path))?;
+            set.status.write_slice(&set.status_buffer, start..end).map_err(h5err(&path))?;
+            set.status_buffer.clear();
+            if !set.failures.is_empty() {
+                let (s, e) = (set.failures_written, set.failures_written + set.failures.len());
+                let index: Vec<u64> = set.failures.iter().map(|f| f.0).collect();
+                let message: Vec<VarLenUnicode> = set.failures.drain(..).map(|f| f.1).collect();
+                set.failure_index.resize(e).map_err(h5err(&path))?;
+                set.failure_index.write_slice(&index, s..e).map_err(h5err(&path))?;
+                set.failure_message.resize(e).map_err(h5err(&path))?;
+                set.failure_message.write_slice(&message, s..e).map_err(h5err(&path))?;
+                set.failures_written = e;
+            }
+        }
+        self.rows_written = end;
+        Ok(())
+    }
+
+    /// Write a time history of `row` in outcome set `set` as group
+    /// `[solvers/<solver>/]histories/<row>` with one dataset per column.
+    pub fn write_history(&mut self, set: usize, row: usize, columns: &[(Column, &[f64])]) -> Result<(), H5Error> {
+        let path = self.path.clone();
+        let writer = self.sets.get(set).ok_or_else(|| layout(&path, format!("no outcome set {set}")))?;
+        let group = group_at(&writer.group, &format!("histories/{row:06}"), &path)?;
+        write_u64_attr(&group, &path, "row", row as u64)?;
+        for (column, values) in columns {
+            write_column(&group, &path, column, values)?;
+        }
+        Ok(())
+    }
+
+    /// Flush the last rows, record the row count, close and rename the file.
+    pub fn finish(mut self) -> Result<PathBuf, H5Error> {
+        self.flush()?;
+        let rows = self.rows_written as u64;
+        write_u64_attr(&self.file, &self.path, "rows", rows)?;
+        let SweepWriter { path, temporary, file, parameters, sets, .. } = self;
+        drop(parameters);
+        drop(sets);
+        file.close().map_err(h5err(&path))?;
+        std::fs::rename(&temporary, &path)
+            .map_err(|e| layout(&path, format!("cannot rename {}: {e}", temporary.display())))?;
+        Ok(path)
+    }
+}
+
+fn write_provenance(file: &File, path: &Path, p: &Provenance) -> Result<(), H5Error> {
+    write_str_attr(file, path, "tool", &p.tool)?;
+    write_str_attr(file, path, "tool_version", &p.tool_version)?;
+    if let Some(commit) = &p.git_commit {
+        write_str_attr(file, path, "git_commit", commit)?;
+    }
+    write_str_attr(file, path, "created_utc", &p.created_utc)?;
+    write_str_attr(file, path, "experiment", &p.experiment)?;
+    write_str_attr(file, path, "experiment_file", &p.experiment_file)?;
+    write_str_attr(file, path, "experiment_text", &p.experiment_text)
+}
+
+fn write_set_attrs(location: &hdf5::Location, path: &Path, set: &OutcomeSet) -> Result<(), H5Error> {
+    write_str_attr(location, path, "solver", &set.solver)?;
+    write_str_attr(location, path, "solver_settings", &set.settings)?;
+    for (name, value) in &set.numeric_settings {
+        write_f64_attr(location, path, name, *value)?;
+    }
+    Ok(())
+}
+
+/// A result file read back whole (for figures and reports; sweeps that fit in memory).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepData {
+    pub path: PathBuf,
+    /// Parameter columns in file order.
+    pub parameters: Vec<(Column, Vec<f64>)>,
+    /// Row names, when the file has `scenario_names`.
+    pub names: Option<Vec<String>>,
+    /// Outcome sets: first the root set, then `solvers/*`.
+    pub sets: Vec<SetData>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct SetData {
+    pub solver: String,
+    pub group: String,
+    pub columns: Vec<(Column, Vec<f64>)>,
+    pub status: Vec<u8>,
+}
+
+fn read_columns(group: &Group, path: &Path) -> Result<Vec<(Column, Vec<f64>)>, H5Error> {
+    let mut out = Vec::new();
+    for name in group.member_names().map_err(h5err(path))? {
+        if name == "status" {
+            continue;
+        }
+        let dataset = group.dataset(&name).map_err(h5err(path))?;
+        let unit = read_str_attr(&dataset, "units")
+            .ok_or_else(|| layout(path, format!("dataset {name} has no units attribute")))?;
+        let values = dataset.read_raw::<f64>().map_err(h5err(path))?;
+        out.push((Column { name, unit }, values));
+    }
+    Ok(out)
+}
+
+impl SweepData {
+    pub fn read(path: &Path) -> Result<SweepData, H5Error> {
+        let file = File::open(path).map_err(h5err(path))?;
+        let parameters = read_columns(&file.group("parameters").map_err(h5err(path))?, path)?;
+        let names = if file.link_exists("scenario_names") {
+            let raw = file
+                .dataset("scenario_names")
+                .and_then(|d| d.read_raw::<VarLenUnicode>())
+                .map_err(h5err(path))?;
+            Some(raw.iter().map(|s| s.as_str().to_string()).collect())
+        } else {
+            None
+        };
+        let mut groups = vec![(String::new(), (*file).clone())];
+        if file.link_exists("solvers") {
+            let solvers = file.group("solvers").map_err(h5err(path))?;
+            // Further solvers in alphabetical order; look sets up by solver name.
+            for name in solvers.member_names().map_err(h5err(path))? {
+                let g = solvers.group(&name).map_err(h5err(path))?;
+                groups.push((format!("solvers/{name}"), g));
+            }
+        }
+        let mut sets = Vec::new();
+        for (name, group) in groups {
+            let outcomes = group.group("outcomes").map_err(h5err(path))?;
+            let status = outcomes
+                .dataset("status")
+                .and_then(|d| d.read_raw::<u8>())
+                .map_err(h5err(path))?;
+            sets.push(SetData {
+                solver: read_str_attr(&group, "solver").unwrap_or_default(),
+                group: name,
+                columns: read_columns(&outcomes, path)?,
+                status,
+            });
+        }
+        Ok(SweepData { path: path.to_path_buf(), parameters, names, sets })
+    }
+
+    /// A parameter column by name.
+    pub fn parameter(&self, name: &str) -> Result<&[f64], H5Error> {
+        self.parameters
+            .iter()
+            .find(|(c, _)| c.name == name)
+            .map(|(_, v)| v.as_slice())
+            .ok_or_else(|| layout(&self.path, format!("no parameter `{name}`")))
+    }
+
+    /// The outcome set of a solver.
+    pub fn set(&self, solver: &str) -> Result<&SetData, H5Error> {
+        self.sets
+            .iter()
+            .find(|s| s.solver == solver)
+            .ok_or_else(|| layout(&self.path, format!("no outcomes of solver `{solver}`")))
+    }
+
+    pub fn rows(&self) -> usize {
+        self.parameters.first().map_or(0, |(_, v)| v.len())
+    }
+}
+
+impl SetData {
+    /// An outcome column by name.
+    pub fn column(&self, name: &str) -> Option<&[f64]> {
+        self.columns.iter().find(|(c, _)| c.name == name).map(|(_, v)| v.as_slice())
+    }
+}
+
+/// Read the history of `row` in the outcome group `group` ("" for the root set).
+pub fn read_history(path: &Path, group: &str, row: usize) -> Result<Vec<(Column, Vec<f64>)>, H5Error> {
+    let file = File::open(path).map_err(h5err(path))?;
+    let name = if group.is_empty() {
+        format!("histories/{row:06}")
+    } else {
+        format!("{group}/histories/{row:06}")
+    };
+    let g = file.group(&name).map_err(h5err(path))?;
+    read_columns(&g, path)
+}

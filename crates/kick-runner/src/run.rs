@@ -1,0 +1,189 @@
+//! Run an experiment of the 1D model into a result file: the thin 1D layer
+//! over [`crate::h5::SweepWriter`].
+
+use crate::experiment::{Experiment, Output};
+use crate::h5::{Column, H5Error, OutcomeSet, SweepWriter, CHUNK_ROWS};
+use crate::provenance::Provenance;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use kick_compliant::SolverChoice;
+use kick_core::{History, KickError, Outcome, Parameter, RecordingSolver, Scenario, Solver, OBSERVABLES};
+use rayon::prelude::*;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+
+/// Names and units of the columns of a recorded history (the fields of [`kick_core::Sample`]).
+pub const HISTORY_COLUMNS: [(&str, &str); 11] = [
+    ("time", "s"),
+    ("foot_position", "m"),
+    ("foot_velocity", "m/s"),
+    ("ball_position", "m"),
+    ("ball_velocity", "m/s"),
+    ("compression", "m"),
+    ("force", "N"),
+    ("kinetic", "J"),
+    ("elastic", "J"),
+    ("dissipated", "J"),
+    ("drive_work", "J"),
+];
+
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    #[error(transparent)]
+    H5(#[from] H5Error),
+    #[error("cannot create {path}: {message}")]
+    Io { path: PathBuf, message: String },
+}
+
+/// What a run produced.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunSummary {
+    pub path: PathBuf,
+    pub scenarios: u64,
+    /// Failed scenarios per solver, in the experiment's solver order.
+    pub failures: Vec<(String, u64)>,
+}
+
+/// Parameter columns of the 1D model: the eight [`Parameter`]s.
+pub fn parameter_columns() -> Vec<Column> {
+    Parameter::ALL.iter().map(|p| Column::new(p.name(), p.unit())).collect()
+}
+
+/// Outcome columns of the 1D model: [`OBSERVABLES`].
+pub fn outcome_columns() -> Vec<Column> {
+    OBSERVABLES.iter().map(|(n, u)| Column::new(n, u)).collect()
+}
+
+/// The outcome-set description of a solver (name, settings).
+pub fn outcome_set(solver: &SolverChoice) -> OutcomeSet {
+    let mut numeric = Vec::new();
+    if let SolverChoice::SeedRk4(s) = solver {
+        numeric.push(("dt".to_string(), s.step));
+    }
+    if let SolverChoice::Accurate(a) = solver {
+        numeric.push(("relative_tolerance".to_string(), a.relative_tolerance));
+        numeric.push(("absolute_tolerance".to_string(), a.absolute_tolerance));
+    }
+    OutcomeSet {
+        solver: solver.name().to_string(),
+        settings: format!("{solver:?}"),
+        numeric_settings: numeric,
+        columns: outcome_columns(),
+    }
+}
+
+fn history_columns(history: &History) -> Vec<(Column, Vec<f64>)> {
+    let s = &history.samples;
+    let pick = |f: fn(&kick_core::Sample) -> f64| s.iter().map(f).collect::<Vec<f64>>();
+    let data = [
+        pick(|x| x.time),
+        pick(|x| x.foot_position),
+        pick(|x| x.foot_velocity),
+        pick(|x| x.ball_position),
+        pick(|x| x.ball_velocity),
+        pick(|x| x.compression),
+        pick(|x| x.force),
+        pick(|x| x.kinetic),
+        pick(|x| x.elastic),
+        pick(|x| x.dissipated),
+        pick(|x| x.drive_work),
+    ];
+    HISTORY_COLUMNS.iter().zip(data).map(|((n, u), v)| (Column::new(n, u), v)).collect()
+}
+
+/// A progress bar on a terminal, nothing otherwise.
+fn progress(total: u64, show: bool) -> ProgressBar {
+    if show && std::io::stderr().is_terminal() {
+        let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
+        if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} scenarios, {elapsed} (eta {eta})") {
+            bar.set_style(style.progress_chars("=> "));
+        }
+        bar
+    } else {
+        ProgressBar::hidden()
+    }
+}
+
+/// Solve one scenario with one solver; summary only, no allocation unless it fails.
+fn solve(solver: &SolverChoice, scenario: &Result<Scenario, KickError>) -> Result<Outcome, KickError> {
+    scenario.clone().and_then(|s| solver.solve(&s))
+}
+
+/// Run `experiment` and write `out_dir/NAME.h5`.
+///
+/// Scenarios are solved in parallel (rayon's current pool) chunk by chunk and
+/// written in input order, so the file's numbers do not depend on the number
+/// of threads. Summary-only runs hold one chunk of outcomes at a time.
+pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Result<RunSummary, RunError> {
+    std::fs::create_dir_all(out_dir).map_err(|e| RunError::Io { path: out_dir.to_path_buf(), message: e.to_string() })?;
+    let path = out_dir.join(format!("{}.h5", experiment.name));
+    let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
+    let sets: Vec<OutcomeSet> = experiment.solvers.iter().map(outcome_set).collect();
+    let mut writer = SweepWriter::create(&path, &provenance, &parameter_columns(), &sets, experiment.scenarios.len())?;
+    crate::h5::write_str_attr(writer.file(), &path, "description", &experiment.description)?;
+    if let Some(names) = experiment.scenarios.names() {
+        crate::h5::write_strings(writer.file(), &path, "scenario_names", names)?;
+    }
+    if let Output::History { interval } = experiment.output {
+        crate::h5::write_f64_attr(writer.file(), &path, "history_interval", interval)?;
+    }
+
+    let total = experiment.scenarios.len();
+    let bar = progress(total, show_progress);
+    bar.set_message(experiment.name.clone());
+    let mut scenarios: Vec<Result<Scenario, KickError>> = Vec::with_capacity(CHUNK_ROWS);
+    let mut outcomes: Vec<Vec<Result<Outcome, KickError>>> = vec![Vec::with_capacity(CHUNK_ROWS); experiment.solvers.len()];
+    let mut histories: Vec<Vec<Result<(Outcome, History), KickError>>> = vec![Vec::new(); experiment.solvers.len()];
+    let mut start = 0u64;
+    while start < total {
+        let end = (start + CHUNK_ROWS as u64).min(total);
+        scenarios.clear();
+        scenarios.extend((start..end).map(|i| experiment.scenarios.scenario(i)));
+        for (k, solver) in experiment.solvers.iter().enumerate() {
+            match experiment.output {
+                Output::Summary => scenarios.par_iter().map(|s| solve(solver, s)).collect_into_vec(&mut outcomes[k]),
+                Output::History { interval } => {
+                    scenarios
+                        .par_iter()
+                        .map(|s| s.clone().and_then(|s| solver.solve_recorded(&s, interval)))
+                        .collect_into_vec(&mut histories[k]);
+                }
+            }
+        }
+        for (j, scenario) in scenarios.iter().enumerate() {
+            let row = start as usize + j;
+            let values = match scenario {
+                Ok(s) => s.values(),
+                Err(_) => [f64::NAN; 8],
+            };
+            writer.push_parameters(&values)?;
+            for k in 0..experiment.solvers.len() {
+                let result = match experiment.output {
+                    Output::Summary => outcomes[k][j].as_ref().map(|o| o.observable_values()),
+                    Output::History { .. } => histories[k][j].as_ref().map(|(o, _)| o.observable_values()),
+                };
+                match result {
+                    Ok(values) => writer.push_outcome(k, Ok(&values))?,
+                    Err(e) => writer.push_outcome(k, Err(&e.to_string()))?,
+                }
+                if let Output::History { .. } = experiment.output {
+                    if let Ok((_, history)) = &histories[k][j] {
+                        let columns = history_columns(history);
+                        let refs: Vec<(Column, &[f64])> = columns.iter().map(|(c, v)| (c.clone(), v.as_slice())).collect();
+                        writer.write_history(k, row, &refs)?;
+                    }
+                }
+            }
+        }
+        bar.inc(end - start);
+        start = end;
+    }
+    bar.finish_and_clear();
+    let failures = experiment
+        .solvers
+        .iter()
+        .map(|s| s.name().to_string())
+        .zip(writer.failure_counts())
+        .collect();
+    let path = writer.finish()?;
+    Ok(RunSummary { path, scenarios: total, failures })
+}
