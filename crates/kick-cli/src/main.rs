@@ -2,6 +2,7 @@
 
 mod check;
 mod fit;
+mod laws;
 mod leg;
 mod output;
 mod reproduce;
@@ -32,6 +33,8 @@ enum Command {
     Check(check::Args),
     /// Effective mass of the articulated leg (Eq. 11) and the exit speed it gives.
     Leg(leg::Args),
+    /// Contact laws (paper, Hunt–Crossley, Lankarani–Nikravesh, Flores, Kelvin–Voigt) on Table 2's scenarios.
+    Laws(laws::Args),
     /// Identify parameters from printed or measured data.
     #[command(subcommand)]
     Fit(fit::FitCommand),
@@ -49,6 +52,7 @@ fn main() -> ExitCode {
         Command::Table2(args) => table2::run(args),
         Command::Check(args) => check::run(args),
         Command::Leg(args) => leg::run(args),
+        Command::Laws(args) => laws::run(args),
         Command::Fit(command) => fit::run(command),
         Command::Run(args) => run::run(args),
         Command::Reproduce(args) => reproduce::run(args),
