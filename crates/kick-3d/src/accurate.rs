@@ -70,11 +70,12 @@ impl Event {
             Event::GripSlip => c.grip_margin,
         }
     }
+    /// A sign change away from a non-zero value: a phase that starts exactly
+    /// on a switch (value 0) must not find it again at its first step.
     fn crossed(self, before: f64, after: f64) -> bool {
         match self {
             Event::Separation => before > 0.0 && after <= 0.0,
-            Event::CompressionRate => (before > 0.0 && after <= 0.0) || (before < 0.0 && after >= 0.0),
-            Event::GripSlip => (before >= 0.0 && after < 0.0) || (before < 0.0 && after >= 0.0),
+            Event::CompressionRate | Event::GripSlip => (before > 0.0 && after <= 0.0) || (before < 0.0 && after >= 0.0),
         }
     }
 }
@@ -359,7 +360,6 @@ impl Accurate3d {
             r.push(sample(&dynamics, 0.0, &y));
         }
         for _ in 0..MAX_PHASES {
-            let slipping = dynamics.contact(&y).is_slipping();
             let hit = self.phase(dynamics, t, y, horizon, &mut normal, &mut tangential, recorder.as_deref_mut(), &mut evaluations)?;
             let Some((event, t_event, y_event)) = hit else {
                 return Err(KickError::NoSeparation {
@@ -368,7 +368,10 @@ impl Accurate3d {
                 }
                 .into());
             };
-            if slipping {
+            // Grip or slip holds through a phase; its start may sit on the
+            // switch itself, so ask the middle.
+            let middle = self.advance(dynamics, t, y, 0.5 * (t + t_event), &mut evaluations)?;
+            if dynamics.contact(&middle).is_slipping() {
                 slip_time += t_event - t;
             }
             t = t_event;

@@ -20,11 +20,11 @@
 use crate::error::Kick3dError;
 use kick_core::{PowerLawContact, Scenario};
 use parry3d_f64::math::{Rot3, Vec3};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Shape of the instep.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum FootShape {
     /// A box; the face at local +x touches the ball.
     Box { half_extents: [f64; 3] },
@@ -68,7 +68,8 @@ impl Default for FootShape {
 }
 
 /// Everything beyond the 1D parameters, as given by the user; `None` takes the default.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Kick3dSpec {
     /// R, m [0.11]
     pub ball_radius: Option<f64>,
@@ -81,6 +82,7 @@ pub struct Kick3dSpec {
     /// e, m [0]
     pub offset: Option<f64>,
     /// α, degrees [0]
+    #[serde(rename = "approach_angle")]
     pub approach_angle_deg: Option<f64>,
     /// μ, Coulomb coefficient; `f64::INFINITY` means the contact never slips [0.5]
     pub friction: Option<f64>,

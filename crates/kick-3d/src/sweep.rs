@@ -8,7 +8,7 @@ use kick_core::Scenario;
 use serde::Serialize;
 
 /// The swept quantity.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Axis {
     /// e, m
@@ -134,4 +134,56 @@ pub fn standard() -> Result<Vec<(Axis, Vec<SweepPoint>)>, Kick3dError> {
         (Axis::Friction, sweep(&base, &Kick3dSpec { offset: Some(0.05), ..d }, Axis::Friction, &linspace(0.0, 2.0, 11))?),
         (Axis::ApproachAngle, sweep(&base, &d, Axis::ApproachAngle, &linspace(0.0, 40.0, 9))?),
     ])
+}
+
+/// Values of a sweep: `count` evenly spaced from `from` to `to`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Range {
+    pub from: f64,
+    pub to: f64,
+    pub count: usize,
+}
+
+/// Largest sweep an experiment file may ask for.
+pub const MAX_POINTS: usize = 10_000;
+
+/// An `experiments/3d/*.toml` file: one axis swept over a range, the 1D
+/// parameters in `[scenario]` and the 3D extras in `[kick3d]` (both optional,
+/// defaults as in `kick simulate3d`).
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Experiment3d {
+    pub description: String,
+    pub axis: Axis,
+    pub values: Range,
+    #[serde(default)]
+    pub scenario: kick_core::ScenarioSpec,
+    #[serde(default)]
+    pub kick3d: Kick3dSpec,
+}
+
+impl Experiment3d {
+    /// Parse and validate; errors name the problem (TOML errors carry line and key).
+    pub fn parse(text: &str) -> Result<Experiment3d, String> {
+        let e: Experiment3d = toml::from_str(text).map_err(|e| e.to_string())?;
+        let Range { from, to, count } = e.values;
+        if !(from.is_finite() && to.is_finite()) || count == 0 || count > MAX_POINTS {
+            return Err(format!("values: need finite from/to and 1..={MAX_POINTS} points, got {from}..{to} x {count}"));
+        }
+        // Validate the base scenario and every point before running anything.
+        let base = e.scenario.build().map_err(|err| err.to_string())?;
+        for v in linspace(from, to, count) {
+            let mut s = e.kick3d;
+            e.axis.apply(&mut s, v);
+            Kick3d::new(base, &s).map_err(|err| format!("{} = {v}: {err}", e.axis.name()))?;
+        }
+        Ok(e)
+    }
+
+    /// Run the sweep on the accurate path.
+    pub fn run(&self) -> Result<Vec<SweepPoint>, Kick3dError> {
+        let base = self.scenario.build()?;
+        sweep(&base, &self.kick3d, self.axis, &linspace(self.values.from, self.values.to, self.values.count))
+    }
 }

@@ -176,3 +176,26 @@ fn auto_takes_the_cheapest_path() {
     let ground = kick(Kick3dSpec { offset: Some(0.04), ground: Some(true), ..Default::default() });
     assert!(matches!(Solver3d::Auto.resolve(&ground), Solver3d::Rapier(_)));
 }
+
+#[test]
+fn approach_angle_sweep_solves_and_spin_grows() {
+    // Regression: phases that start exactly on a grip/slip switch (16° and 28°
+    // once looped until MAX_PHASES).
+    let values = kick_3d::sweep::linspace(0.0, 40.0, 21);
+    let points = kick_3d::sweep::sweep(&Scenario::baseline(), &Kick3dSpec::default(), kick_3d::sweep::Axis::ApproachAngle, &values).unwrap();
+    assert!(points.windows(2).all(|w| w[1].spin_rpm > w[0].spin_rpm), "{points:?}");
+}
+
+#[test]
+fn experiment_files_parse_and_bad_ones_are_refused() {
+    for name in ["offset", "friction", "approach_angle"] {
+        let path = format!("{}/../../experiments/3d/{name}.toml", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        kick_3d::sweep::Experiment3d::parse(&text).unwrap();
+    }
+    let bad = "description = \"x\"\naxis = \"offset\"\nvalues = { from = 0.0, to = 0.2, count = 3 }\n";
+    let err = kick_3d::sweep::Experiment3d::parse(bad).unwrap_err();
+    assert!(err.contains("offset"), "{err}");
+    let typo = "description = \"x\"\naxis = \"offset\"\nvalues = { from = 0.0, to = 0.05, count = 3 }\n[kick3d]\nfrction = 0.3\n";
+    assert!(kick_3d::sweep::Experiment3d::parse(typo).unwrap_err().contains("frction"));
+}
