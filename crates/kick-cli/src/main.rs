@@ -9,6 +9,7 @@ mod reproduce;
 mod run;
 mod simulate;
 mod simulate3d;
+mod run3d;
 mod table2;
 
 use clap::{Parser, Subcommand};
@@ -27,6 +28,8 @@ enum Command {
     Simulate(simulate::Args),
     /// Simulate one off-center 3D kick: spin, friction, launch direction.
     Simulate3d(simulate3d::Args),
+    /// Run 3D sweeps (experiments/3d/*.toml) into HDF5 and figures.
+    Run3d(run3d::Args),
     /// Table 2 side by side: printed, seed-rk4 and accurate values.
     Table2(table2::Args),
     /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
@@ -49,6 +52,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Simulate(args) => simulate::run(args),
         Command::Simulate3d(args) => simulate3d::run(args),
+        Command::Run3d(args) => run3d::run(args),
         Command::Table2(args) => table2::run(args),
         Command::Check(args) => check::run(args),
         Command::Leg(args) => leg::run(args),
