@@ -199,3 +199,18 @@ fn experiment_files_parse_and_bad_ones_are_refused() {
     let typo = "description = \"x\"\naxis = \"offset\"\nvalues = { from = 0.0, to = 0.05, count = 3 }\n[kick3d]\nfrction = 0.3\n";
     assert!(kick_3d::sweep::Experiment3d::parse(typo).unwrap_err().contains("frction"));
 }
+
+#[test]
+fn contact_stays_on_the_face_in_the_swept_range() {
+    // The sweeps' extremes: the ball must leave from the flat face, not an edge
+    // (the face is 24 x 10 cm; the contact point is checked in the foot's frame).
+    for (e, a) in [(0.09, 0.0), (0.0, 40.0), (-0.09, 40.0)] {
+        let k = kick(Kick3dSpec { offset: Some(e), approach_angle_deg: Some(a), ..Kick3dSpec::default() });
+        let (_, y) = Accurate3d::default().solve_to_state(&k).unwrap();
+        let c = Dynamics::new(&k).contact(&y);
+        let local = Dynamics::foot_pose(&y).inverse_transform_point(c.point);
+        let [hx, hy, hz] = k.foot_shape.half_extents();
+        println!("e {e} a {a}: contact at {local:?}");
+        assert!((local.x - hx).abs() < 1e-9 && local.y.abs() < hy && local.z.abs() < hz, "{local:?}");
+    }
+}
