@@ -40,6 +40,9 @@ pub enum HysteresisModel {
     LankaraniNikravesh,
     /// χ = 8(1 − e)/(5 e V0) (Flores, Machado, Silva, Martins 2011).
     Flores,
+    /// χ V0 from the exact relation of the module docs, so the simulated
+    /// restitution is the target (this workspace; no published formula).
+    Exact,
 }
 
 impl HysteresisModel {
@@ -49,8 +52,40 @@ impl HysteresisModel {
             HysteresisModel::HuntCrossley => 3.0 * (1.0 - e) / (2.0 * v0),
             HysteresisModel::LankaraniNikravesh => 3.0 * (1.0 - e * e) / (4.0 * v0),
             HysteresisModel::Flores => 8.0 * (1.0 - e) / (5.0 * e * v0),
+            HysteresisModel::Exact => exact_hysteresis(e) / v0,
         }
     }
+}
+
+/// Restitution of a passive impact of a hysteresis law with x0 = χ V0 ≥ 0:
+/// e = x_e/x0 with x_e ∈ (0, 1) the root of
+/// x0 − ln(1 + x0) = −x_e − ln(1 − x_e) (module docs); 1 at x0 = 0.
+pub fn exact_restitution(x0: f64) -> f64 {
+    if !(x0 > 0.0) {
+        return 1.0;
+    }
+    if x0.is_infinite() {
+        return 0.0;
+    }
+    let lhs = x0 - x0.ln_1p();
+    // g(0) = lhs > 0, g → −∞ as x_e → 1: one root, bracketed.
+    let g = |xe: f64| lhs - (-xe - (-xe).ln_1p());
+    let top = 1.0 - 1e-15;
+    if g(top) >= 0.0 {
+        // x_e = 1 − exp(−(lhs + 1)) to leading order: 1 in f64.
+        return 1.0 / x0;
+    }
+    let xe = crate::roots::brent(g, 0.0, top, 1e-16, 200).map_or(top, |r| r.x);
+    (xe / x0).min(1.0)
+}
+
+/// The x0 = χ V0 whose exact restitution is `e` ∈ (0, 1]. `exact_restitution`
+/// decreases from 1 to 0 and stays below 1/x0 (x_e < 1), so the root lies in [0, 1/e].
+pub fn exact_hysteresis(e: f64) -> f64 {
+    if e >= 1.0 {
+        return 0.0;
+    }
+    crate::roots::brent(|x0| exact_restitution(x0) - e, 0.0, 1.0 / e, 1e-15 / e, 200).map_or(f64::NAN, |r| r.x)
 }
 
 /// F = k δⁿ (1 + χ δ̇) for δ > 0, clamped at ≥ 0; zero for δ ≤ 0.
@@ -95,24 +130,7 @@ impl HysteresisContact {
     /// the root x_e ∈ (0, 1) of x_e + ln(1 − x_e) + x0 − ln(1 + x0) = 0, over x0.
     pub fn exact_restitution(&self, v0: f64) -> Result<f64, KickError> {
         check_positive("impact_speed", v0)?;
-        let x0 = self.hysteresis * v0;
-        if x0 == 0.0 {
-            return Ok(1.0);
-        }
-        let lhs = x0 - x0.ln_1p();
-        // g(0) = lhs > 0, g → −∞ as x_e → 1: one root, bracketed.
-        let g = |xe: f64| lhs - (-xe - (-xe).ln_1p());
-        let top = 1.0 - 1e-15;
-        if g(top) >= 0.0 {
-            // x_e = 1 − exp(−(lhs + 1)) to leading order: 1 in f64.
-            return Ok(1.0 / x0);
-        }
-        let root = crate::roots::brent(g, 0.0, top, 1e-16, 200).ok_or(KickError::InvalidParameter {
-            name: "hysteresis",
-            value: self.hysteresis,
-            requirement: "finite and >= 0",
-        })?;
-        Ok((root.x / x0).min(1.0))
+        Ok(exact_restitution(self.hysteresis * v0))
     }
 
     /// The unclamped value k δⁿ (1 + χ δ̇) at δ ≥ 0.
@@ -240,18 +258,22 @@ pub enum LawKind {
     HuntCrossley,
     LankaraniNikravesh,
     Flores,
+    /// k δⁿ (1 + χ δ̇) with χ from the exact restitution relation.
+    HuntCrossleyExact,
     KelvinVoigt,
 }
 
 impl LawKind {
-    pub const ALL: [LawKind; 5] = [
+    pub const ALL: [LawKind; 6] = [
         LawKind::PowerLaw,
         LawKind::HuntCrossley,
         LawKind::LankaraniNikravesh,
         LawKind::Flores,
+        LawKind::HuntCrossleyExact,
         LawKind::KelvinVoigt,
     ];
-    pub const NAMES: &'static str = "power-law, hunt-crossley, lankarani-nikravesh, flores, kelvin-voigt";
+    pub const NAMES: &'static str =
+        "power-law, hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt";
 
     pub fn name(self) -> &'static str {
         match self {
@@ -259,6 +281,7 @@ impl LawKind {
             LawKind::HuntCrossley => "hunt-crossley",
             LawKind::LankaraniNikravesh => "lankarani-nikravesh",
             LawKind::Flores => "flores",
+            LawKind::HuntCrossleyExact => "hunt-crossley-exact",
             LawKind::KelvinVoigt => "kelvin-voigt",
         }
     }
@@ -332,6 +355,7 @@ impl AnyLaw {
             LawKind::HuntCrossley => hysteresis(HysteresisModel::HuntCrossley),
             LawKind::LankaraniNikravesh => hysteresis(HysteresisModel::LankaraniNikravesh),
             LawKind::Flores => hysteresis(HysteresisModel::Flores),
+            LawKind::HuntCrossleyExact => hysteresis(HysteresisModel::Exact),
             LawKind::KelvinVoigt => Ok(AnyLaw::KelvinVoigt(KelvinVoigt::from_restitution(
                 p.linear_stiffness,
                 p.reduced_mass,
@@ -351,6 +375,7 @@ impl AnyLaw {
                 HysteresisModel::HuntCrossley => LawKind::HuntCrossley,
                 HysteresisModel::LankaraniNikravesh => LawKind::LankaraniNikravesh,
                 HysteresisModel::Flores => LawKind::Flores,
+                HysteresisModel::Exact => LawKind::HuntCrossleyExact,
             },
             AnyLaw::KelvinVoigt(_) => LawKind::KelvinVoigt,
         }
@@ -518,6 +543,14 @@ mod tests {
         law.hysteresis = 1e6;
         let e = law.exact_restitution(1.0).unwrap();
         assert!((e * 1e6 - 1.0).abs() < 1e-3, "{e}");
+    }
+
+    #[test]
+    fn exact_hysteresis_inverts_exact_restitution() {
+        for e in [1.0, 0.99, 0.9, 0.662, 0.5, 0.3, 0.1, 0.01] {
+            let x0 = exact_hysteresis(e);
+            assert!((exact_restitution(x0) - e).abs() < 1e-12, "e={e}: x0={x0}");
+        }
     }
 
     #[test]

@@ -108,6 +108,11 @@ fn simulated_restitution_matches_exact_closed_form() {
                 assert!((e_sim - exact).abs() < 1e-8, "{model:?} n={n} e={e}: {e_sim} vs exact {exact}");
                 sims.push(e_sim);
             }
+            // χ from the exact relation meets the target itself.
+            let s = Scenario::baseline().with(Parameter::Exponent, n).unwrap();
+            let law = HysteresisContact::new(HysteresisModel::Exact, s.law().stiffness, n, e, s.approach_speed()).unwrap();
+            let e_sim = solver.solve_law(&s, law).unwrap().restitution;
+            assert!((e_sim - e).abs() < 1e-8, "exact χ, n={n} e={e}: {e_sim}");
             if e >= 0.9 {
                 let (hc, ln, fl) = (sims[0], sims[1], sims[2]);
                 assert!(ln > e && hc < ln && fl < hc, "n={n} e={e}: {sims:?}");
@@ -124,7 +129,7 @@ fn simulated_restitution_matches_exact_closed_form() {
 fn comparison_conserves_momentum_and_shows_the_onset_jump() {
     let s = Scenario::baseline();
     let c = compare("Baseline", &s, &Accurate::default(), s.elastic_contact_time() / 200.0).unwrap();
-    assert_eq!(c.runs.len(), 5);
+    assert_eq!(c.runs.len(), 6);
     let (mf, mb) = (s.effective_foot_mass(), s.ball_mass());
     for run in &c.runs {
         let o = &run.outcome;
