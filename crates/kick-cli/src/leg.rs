@@ -24,7 +24,7 @@ pub struct Args {
     /// Ankle rigid during contact (default: a free hinge)
     #[arg(long, conflicts_with = "ankle_stiffness")]
     locked_ankle: bool,
-    /// Ankle torsional stiffness, N m/rad; the contact time comes from the 1D model
+    /// Ankle torsional stiffness, N m/rad: leg and ball integrated together, m_eff = the 1D-equivalent mass
     #[arg(long, allow_negative_numbers = true)]
     ankle_stiffness: Option<f64>,
     /// Knee rigid during contact (default: a free hinge)
@@ -83,18 +83,19 @@ pub fn run(args: Args) -> CliResult {
         direction: Vector3::new(angle.cos(), angle.sin(), 0.0),
     };
     let base = Scenario::baseline();
-    let (mass, outcome, ankle) = match (args.locked_ankle, args.ankle_stiffness) {
+    // An elastic ankle is integrated with the ball (kick_leg::ankle); its
+    // m_eff is the 1D-equivalent mass, with the interpolation shown beside it.
+    let (mass, outcome, ankle, elastic) = match (args.locked_ankle, args.ankle_stiffness) {
         (_, Some(k)) => {
-            let (mass, outcome) = leg
-                .effective_mass_elastic_ankle(&pose, &impact, k, &base)
-                .map_err(|e| e.to_string())?;
-            (mass, outcome, format!("elastic, {k} N m/rad"))
+            let e = kick_leg::ankle::elastic_ankle(&leg, &pose, &impact, k, &base).map_err(|e| e.to_string())?;
+            let mass = kick_leg::LegEffectiveMass { effective_mass: e.equivalent_mass, ..e.interpolated };
+            (mass, e.outcome, format!("elastic, {k} N m/rad"), Some(e))
         }
         (locked, None) => {
             let joint = if locked { AnkleJoint::Locked } else { AnkleJoint::Free };
             let mass = leg.effective_mass(&pose, &impact, joint).map_err(|e| e.to_string())?;
             let outcome = exit_outcome(mass.effective_mass, &base).map_err(|e| e.to_string())?;
-            (mass, outcome, if locked { "locked".into() } else { "free".into() })
+            (mass, outcome, if locked { "locked".into() } else { "free".into() }, None)
         }
     };
     match args.format {
@@ -116,6 +117,13 @@ pub fn run(args: Args) -> CliResult {
                 "contact_time": outcome.contact_time,
                 "solver": "accurate",
             });
+            let mut object = object;
+            if let Some(e) = &elastic {
+                object["interpolated_mass"] = value!(e.interpolated.effective_mass);
+                object["max_ankle_deflection"] = value!(e.coupled.max_ankle_deflection);
+                object["coupled_v_ball_out"] = value!(e.coupled.v_ball_out);
+                object["coupled_contact_time"] = value!(e.coupled.contact_time);
+            }
             println!("{}", json(&object)?);
         }
         Format::Text => {
@@ -128,6 +136,11 @@ pub fn run(args: Args) -> CliResult {
             println!("{:<20} {:>12.6} kg", "free_ankle", mass.free_ankle);
             println!("{:<20} {:>12.6}", "locked_share", mass.locked_share);
             println!("{:<20} {:>12.6} kg", "leg_mass", leg.segments.total_mass());
+            if let Some(e) = &elastic {
+                println!("{:<20} {:>12.6} kg (series-spring interpolation, for comparison)", "interpolated_mass", e.interpolated.effective_mass);
+                println!("{:<20} {:>12.6} rad (coupled leg-ball run, frozen geometry)", "max_ankle_deflection", e.coupled.max_ankle_deflection);
+                println!("{:<20} {:>12.6e} s (coupled leg-ball run)", "coupled_contact_time", e.coupled.contact_time);
+            }
             println!("1D contact with m_f = effective_mass (Table 1 otherwise, accurate solver):");
             println!("{:<20} {:>12.6} m/s", "v_ball_out", outcome.v_ball_out);
             println!("{:<20} {:>12.6} m/s", "v_foot_out", outcome.v_foot_out);

@@ -26,6 +26,7 @@
 //! wobbling masses, no muscle co-contraction other than through the ankle
 //! stiffness below.
 
+pub mod ankle;
 pub mod anthropometry;
 pub mod chain;
 
@@ -356,6 +357,10 @@ impl Leg {
     /// frequency): 1/m_eff = w/m_locked + (1 − w)/m_free, w = κ/(κ + κ_c).
     /// It gives both limits exactly and is monotone in κ; the crossover
     /// (w = ½) is the joint whose half period equals the contact time.
+    /// [`ankle::elastic_ankle`] replaces it by a time integration of the leg
+    /// coupled to the ball; against that, this interpolation is off by up to
+    /// ~6% in exit speed for the default pose (it locks too late: at κ = 1e4
+    /// N m/rad the coupled leg is already nearly locked).
     pub fn effective_mass(&self, pose: &Pose, impact: &Impact, ankle: AnkleJoint) -> Result<LegEffectiveMass, LegError> {
         let n = impact.direction;
         let (locked_chain, x) = self.chain(pose, impact, self.knee_locked, false)?;
@@ -387,28 +392,6 @@ impl Leg {
             locked_share,
             ankle_inertia,
         })
-    }
-
-    /// An elastic ankle whose contact time comes from the 1D model itself:
-    /// m_eff(t_c) and t_c(m_eff) iterated to a fixed point (t_c depends on
-    /// m_f only through μ, weakly, so the iteration contracts quickly).
-    pub fn effective_mass_elastic_ankle(
-        &self,
-        pose: &Pose,
-        impact: &Impact,
-        stiffness: f64,
-        base: &Scenario,
-    ) -> Result<(LegEffectiveMass, Outcome), LegError> {
-        let mut contact_time = exit_outcome(self.effective_mass(pose, impact, AnkleJoint::Locked)?.effective_mass, base)?.contact_time;
-        for _ in 0..100 {
-            let mass = self.effective_mass(pose, impact, AnkleJoint::Elastic { stiffness, contact_time })?;
-            let outcome = exit_outcome(mass.effective_mass, base)?;
-            if (outcome.contact_time - contact_time).abs() <= 1e-12 * contact_time {
-                return Ok((mass, outcome));
-            }
-            contact_time = outcome.contact_time;
-        }
-        Err(LegError::Degenerate("contact time and effective mass did not settle in 100 iterations".into()))
     }
 }
 
