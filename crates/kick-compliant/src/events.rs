@@ -60,16 +60,23 @@ pub struct Scales {
 }
 
 impl Scales {
+    /// Units of the compression phase: V0, and the smaller of the undamped
+    /// δ* and the damping-limited μ V0 / c as the length.
     pub fn of(scenario: &Scenario) -> Scales {
-        let length = scenario.elastic_max_compression();
         let speed = scenario.approach_speed();
         let mu = scenario.reduced_mass();
+        let damping = scenario.get(kick_core::Parameter::Damping);
+        let damping_limited = if damping > 0.0 { mu * speed / damping } else { f64::INFINITY };
+        Scales::with(scenario.elastic_max_compression().min(damping_limited), speed, mu)
+    }
+
+    pub fn with(length: f64, speed: f64, reduced_mass: f64) -> Scales {
         Scales {
             length,
             speed,
             time: length / speed,
-            momentum: mu * speed,
-            energy: mu * speed * speed,
+            momentum: reduced_mass * speed,
+            energy: reduced_mass * speed * speed,
         }
     }
 }
@@ -251,6 +258,7 @@ impl<S: ContactSystem<N>, const N: usize> System<f64, SVector<f64, N>> for Watch
                 return true;
             }
         }
+
         if let Some(record) = self.recorder.as_deref_mut() {
             record(tau * self.scaled.time, &after);
         }
@@ -274,6 +282,18 @@ fn integration_error(tau: f64, time: f64, error: impl std::fmt::Display) -> Kick
     KickError::Integration { time: tau * time, reason: error.to_string() }
 }
 
+/// ode_solvers' errors; running out of steps inside a phase means the contact
+/// is still on at the step bound, the second documented horizon.
+fn solver_error(error: ode_solvers::dop_shared::IntegrationError, time_unit: f64) -> KickError {
+    match error {
+        ode_solvers::dop_shared::IntegrationError::MaxNumStepReached { x, n_step } => KickError::NoSeparation {
+            time: x * time_unit,
+            reason: format!("still in contact after {n_step} integration steps in one phase"),
+        },
+        other => integration_error(0.0, time_unit, other),
+    }
+}
+
 /// Run one ode_solvers integration from τ0 to τ1 and return the kept points.
 fn integrate<F: System<f64, SVector<f64, N>>, const N: usize>(
     method: Method,
@@ -292,7 +312,7 @@ fn integrate<F: System<f64, SVector<f64, N>>, const N: usize>(
                 system, tau0, tau1, 0.0, y0, $r, $a, 0.9, 0.0, $fac_min, $fac_max, max_step,
                 first_step, MAX_STEPS_PER_PHASE, u32::MAX, OutputType::Sparse,
             );
-            let stats = stepper.integrate().map_err(|e| integration_error(tau0, time_unit, e))?;
+            let stats = stepper.integrate().map_err(|e| solver_error(e, time_unit))?;
             *evaluations += u64::from(stats.num_eval);
             let (x, y) = stepper.results().get();
             Ok(LastSteps::of(x, y))
@@ -524,7 +544,15 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
                 .iter()
                 .find(|e| e.crossed(e.value(&system, &before), e.value(&system, &after)))
             {
-                let (tau_event, state) = self.locate(event, tau_a, y_a, tau_b, y_b)?;
+                let (mut tau_event, mut state) = self.locate(event, tau_a, y_a, tau_b, y_b)?;
+                let mut event = event;
+                // δ is least where δ̇ turns positive: if it is not above zero
+                // there, the ball left and the foot caught up again within one
+                // step (a drive); the separation came first.
+                if event == Event::Recompression && system.compression(&self.scaled.unscale(&state)) <= 0.0 {
+                    (tau_event, state) = self.locate(Event::Separation, tau_a, y_a, tau_event, state)?;
+                    event = Event::Separation;
+                }
                 end.event = Some((event, tau_event, state));
             }
         }
@@ -549,11 +577,10 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         stop: StopAt,
         mut recorder: Option<(&mut dyn FnMut(f64, &SVector<f64, N>), f64)>,
     ) -> Result<RunEnd<N>, KickError> {
-        let time_unit = self.scaled.time;
-        let tau_end = scenario.contact_horizon() / time_unit;
-        let mut tau = 0.0;
-        let mut y = self.scaled.scale(&y0);
-        let system = self.scaled.system;
+        let mut horizon = scenario.contact_horizon();
+        let mut t = 0.0;
+        let mut state = y0;
+        let system = self.system;
         let mut end = RunEnd {
             time: 0.0,
             state: y0,
@@ -566,17 +593,26 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             record(0.0, &y0);
         }
         let mut phase = Phase::Compression;
-        let mut first_step = 0.0;
+        let mut first_step_seconds = 0.0;
         for _ in 0..MAX_PHASES {
+            let time_unit = self.scaled.time;
             let (record, max_step) = match recorder.as_mut() {
                 Some((r, interval)) => (Some(&mut **r as &mut dyn FnMut(f64, &SVector<f64, N>)), *interval / time_unit),
-                None => (None, tau_end),
+                None => (None, horizon / time_unit),
             };
-            let phase_end = self.phase(phase, tau, y, tau_end, max_step, first_step, record)?;
-            first_step = phase_end.last_step;
+            let phase_end = self.phase(
+                phase,
+                t / time_unit,
+                self.scaled.scale(&state),
+                horizon / time_unit,
+                max_step,
+                first_step_seconds / time_unit,
+                record,
+            )?;
+            first_step_seconds = phase_end.last_step * time_unit;
             if let Some((tau_peak, y_peak)) = phase_end.peak {
-                let state = self.scaled.unscale(&y_peak);
-                let force = system.force(&state);
+                let peak_state = self.scaled.unscale(&y_peak);
+                let force = system.force(&peak_state);
                 if force > end.peak_force {
                     end.peak_force = force;
                     end.peak_force_time = tau_peak * time_unit;
@@ -584,18 +620,15 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             }
             let Some((event, tau_event, y_event)) = phase_end.event else {
                 return Err(KickError::NoSeparation {
-                    time: tau_end * time_unit,
+                    time: horizon,
                     reason: format!(
-                        "contact outlasted the horizon of {:.6e} s = {} x the undriven elastic contact time",
-                        tau_end * time_unit,
+                        "contact outlasted the horizon of {horizon:.6e} s = {} x the undriven elastic contact time",
                         kick_core::scenario::CONTACT_HORIZON_FACTOR
                     ),
                 });
             };
-            tau = tau_event;
-            y = y_event;
-            let t = tau * time_unit;
-            let state = self.scaled.unscale(&y);
+            t = tau_event * time_unit;
+            state = self.scaled.unscale(&y_event);
             let (force, compression) = (system.force(&state), system.compression(&state));
             if force > end.peak_force {
                 end.peak_force = force;
@@ -619,14 +652,37 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
                     }
                     phase = Phase::Restitution;
                     check_release(scenario, law, compression, t)?;
+                    // Units of the return: δ_max and the speed the stored
+                    // energy gives back, so a shallow return (heavy damping)
+                    // is integrated as accurately as a deep one.
+                    let exit_speed = (2.0 * law.potential(compression) / scenario.reduced_mass()).sqrt();
+                    if compression > 0.0 && exit_speed > 0.0 && exit_speed.is_finite() {
+                        self.rescale(Scales::with(compression, exit_speed, scenario.reduced_mass()));
+                    }
+                    // A passive return is conservative and always ends; its
+                    // length is known, so the horizon cannot cut it short
+                    // (with n > 1 it grows without bound as δ_max → 0).
+                    if scenario.drive_force() == 0.0 && law.damps_compression_only() {
+                        let exponent = scenario.get(kick_core::Parameter::Exponent);
+                        let remaining = kick_core::special::return_time(compression, exit_speed, exponent);
+                        if remaining.is_finite() {
+                            horizon = horizon.max(t + 2.0 * remaining);
+                        }
+                    }
                 }
                 Event::Separation => return Ok(end),
             }
         }
         Err(KickError::NoSeparation {
-            time: tau * time_unit,
+            time: t,
             reason: format!("more than {MAX_PHASES} compression/restitution phases"),
         })
+    }
+
+    fn rescale(&mut self, scales: Scales) {
+        self.scales = scales;
+        self.scaled.units = self.system.units(&scales);
+        self.scaled.time = scales.time;
     }
 }
 

@@ -186,7 +186,9 @@ impl Reduced {
             max_compression: end.max_compression,
             max_compression_time: end.max_compression_time,
             impulse: scenario.ball_mass() * (r.ball_velocity - scenario.ball_speed()), // Eq. 2
-            restitution: (r.ball_velocity - r.foot_velocity) / scenario.approach_speed(),
+            // Eq. 36 from δ̇ itself: v_b − v_f = −δ̇ without the cancellation
+            // of two lab-frame speeds.
+            restitution: -end.state[1] / scenario.approach_speed(),
             energy: EnergyBudget {
                 kinetic_initial: scenario.initial_kinetic_energy(),
                 kinetic_final,
