@@ -79,7 +79,8 @@ struct RawExperiment {
 }
 
 macro_rules! spec_struct {
-    ($name:ident { $($extra:ident : $ty:ty),* }) => {
+    ($(#[$meta:meta])* $name:ident { $($extra:ident : $ty:ty),* }) => {
+        $(#[$meta])*
         #[derive(Debug, Deserialize)]
         #[serde(deny_unknown_fields)]
         struct $name {
@@ -110,22 +111,7 @@ macro_rules! spec_struct {
     };
 }
 
-spec_struct!(RawSpec {});
-
-impl Default for RawSpec {
-    fn default() -> Self {
-        RawSpec {
-            foot_mass: None,
-            ball_mass: None,
-            foot_speed: None,
-            ball_speed: None,
-            stiffness: None,
-            damping: None,
-            exponent: None,
-            drive_force: None,
-        }
-    }
-}
+spec_struct!(#[derive(Default)] RawSpec {});
 spec_struct!(RawNamed { name: Spanned<String> });
 
 #[derive(Debug, Deserialize)]
@@ -569,7 +555,7 @@ fn build<'a>(
             }),
             _ => None,
         };
-        let span = blamed.and_then(|p| get(p)).map(|v| v.span()).unwrap_or(0..0);
+        let span = blamed.and_then(&get).map(|v| v.span()).unwrap_or(0..0);
         let key = blamed.map(|p| format!("{table}.{}", p.name())).unwrap_or_else(|| table.to_string());
         at.error(span, &key, e.to_string())
     })

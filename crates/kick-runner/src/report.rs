@@ -236,8 +236,9 @@ fn figure_captions(results: &Path) -> Result<Vec<(u32, String)>, ReportError> {
     out.push((1, format!(
         "Baseline time history ({}): contact force, foot and ball velocities, compression and energies. \
          Peak force {:.0} N at {:.3} ms, maximum compression {:.2} mm at {:.3} ms, contact time {:.3} ms, \
-         exit speeds v_b⁺ = {:.3} m/s and v_f⁺ = {:.3} m/s. The velocity curves cross at maximum compression; \
-         the dashed K + U + D stays at the initial kinetic energy (energy budget, Eqs. 30–33).",
+         exit speeds v_b⁺ = {:.3} m/s and v_f⁺ = {:.3} m/s. The velocity curves cross at maximum compression (δ̇ = 0); \
+         the force has a kink there because the paper's law (Eq. 20) damps only while δ̇ > 0. \
+         The dashed K + U + D stays at the initial kinetic energy (energy budget, Eqs. 30–33).",
         s.solver,
         col(s, "peak_force")?[0], col(s, "peak_force_time")?[0] * 1e3,
         col(s, "max_compression")?[0] * 1e3, col(s, "max_compression_time")?[0] * 1e3,
