@@ -42,7 +42,7 @@ pub enum FitCommand {
     Profile {
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
-        /// Write identifiability.json here
+        /// Write identifiability.json and identifiability.png/svg here
         #[arg(long)]
         out: Option<PathBuf>,
         /// Profile over [1/spread, spread] x the truth
@@ -85,6 +85,7 @@ pub fn run(command: FitCommand) -> CliResult {
                 std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
                 let path = dir.join("identifiability.json");
                 std::fs::write(&path, json(&study)?).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                crate::identify_figures::identifiability(&study, &dir)?;
             }
             match format {
                 Format::Json => println!("{}", json(&study)?),

@@ -12,7 +12,7 @@ pub struct Args {
     /// Scenario file with the rows' parameters
     #[arg(long, default_value = "experiments/table2.toml")]
     scenarios: PathBuf,
-    /// Write laws.json (outcomes and force pulses) here
+    /// Write laws.json (outcomes and force pulses) and laws.png/svg here
     #[arg(long)]
     out: Option<PathBuf>,
     /// Pulse samples per undamped contact time (at most)
@@ -41,6 +41,7 @@ pub fn run(args: Args) -> CliResult {
         std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
         let path = dir.join("laws.json");
         std::fs::write(&path, json(&all)?).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        crate::identify_figures::laws(&all, dir)?;
     }
     match args.format {
         Format::Json => println!("{}", json(&all)?),

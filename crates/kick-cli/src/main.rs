@@ -2,6 +2,7 @@
 
 mod check;
 mod fit;
+mod identify_figures;
 mod laws;
 mod leg;
 mod output;
