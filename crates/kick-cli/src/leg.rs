@@ -59,6 +59,11 @@ pub struct Args {
     height: f64,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
+    /// Also write the figure data to DIR (kick-runner's HDF5 sweep layout):
+    /// leg_effective_mass.h5 (knee 0-120 x ankle 0-90 deg, locked and free
+    /// ankle) and leg_exit_speed.h5 (v_b+ vs m_f); other settings as given
+    #[arg(long, value_name = "DIR")]
+    sweep_out: Option<std::path::PathBuf>,
 }
 
 pub fn run(args: Args) -> CliResult {
@@ -98,6 +103,11 @@ pub fn run(args: Args) -> CliResult {
             (mass, outcome, if locked { "locked".into() } else { "free".into() }, None)
         }
     };
+    if let Some(dir) = &args.sweep_out {
+        for path in write_sweeps(dir, &leg, &pose, &impact, &base)? {
+            eprintln!("wrote {}", path.display());
+        }
+    }
     match args.format {
         Format::Json => {
             let object: Value = value!({
@@ -149,4 +159,89 @@ pub fn run(args: Args) -> CliResult {
         }
     }
     Ok(())
+}
+
+/// Knee and ankle angles of the effective-mass figure, degrees.
+fn grid_axes() -> (Vec<f64>, Vec<f64>) {
+    ((0..=24).map(|i| 5.0 * f64::from(i)).collect(), (0..=18).map(|i| 5.0 * f64::from(i)).collect())
+}
+
+/// Effective foot masses of the exit-speed figure: 0.2 to 20 kg, log-spaced.
+fn mass_axis() -> Vec<f64> {
+    (0..=60).map(|i| 0.2 * 100f64.powf(f64::from(i) / 60.0)).collect()
+}
+
+/// Figure data through kick-runner's sweep writer: parameters and outcome
+/// columns with units, provenance at the root.
+fn write_sweeps(
+    dir: &std::path::Path,
+    leg: &Leg,
+    pose: &Pose,
+    impact: &Impact,
+    base: &Scenario,
+) -> Result<Vec<std::path::PathBuf>, String> {
+    use kick_runner::{Column, OutcomeSet, Provenance, SweepWriter};
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let command: Vec<String> = std::env::args().collect();
+    let text = command.join(" ");
+    let set = |name: &str, columns: Vec<Column>| OutcomeSet {
+        solver: name.into(),
+        settings: "kick-leg Eq. 11 (de Leva 1996) + 1D accurate solver".into(),
+        numeric_settings: Vec::new(),
+        columns,
+    };
+    let m_and_v = || vec![Column::new("effective_mass", "kg"), Column::new("v_ball_out", "m/s")];
+    let mut written = Vec::new();
+
+    let path = dir.join("leg_effective_mass.h5");
+    let (knees, ankles) = grid_axes();
+    let provenance = Provenance::now("leg_effective_mass", "kick leg (command line)", &text);
+    let mut writer = SweepWriter::create(
+        &path,
+        &provenance,
+        &[Column::new("knee", "deg"), Column::new("ankle", "deg")],
+        &[set("locked-ankle", m_and_v()), set("free-ankle", m_and_v())],
+        (knees.len() * ankles.len()) as u64,
+    )
+    .map_err(|e| e.to_string())?;
+    for &knee in &knees {
+        for &ankle in &ankles {
+            writer.push_parameters(&[knee, ankle]).map_err(|e| e.to_string())?;
+            let p = Pose { knee_flexion: knee, plantarflexion: ankle, ..*pose };
+            for (i, joint) in [AnkleJoint::Locked, AnkleJoint::Free].into_iter().enumerate() {
+                let row = leg
+                    .effective_mass(&p, impact, joint)
+                    .and_then(|m| Ok([m.effective_mass, exit_outcome(m.effective_mass, base)?.v_ball_out]));
+                match row {
+                    Ok(values) => writer.push_outcome(i, Ok(&values)),
+                    Err(e) => writer.push_outcome(i, Err(&e.to_string())),
+                }
+                .map_err(|e| e.to_string())?;
+            }
+        }
+    }
+    written.push(writer.finish().map_err(|e| e.to_string())?);
+
+    let path = dir.join("leg_exit_speed.h5");
+    let masses = mass_axis();
+    let provenance = Provenance::now("leg_exit_speed", "kick leg (command line)", &text);
+    let columns = vec![
+        Column::new("v_ball_out", "m/s"),
+        Column::new("speed_ratio", "1"),
+        // Eq. 38 with e = 1: the perfectly elastic bound.
+        Column::new("elastic_bound_v_ball_out", "m/s"),
+    ];
+    let mut writer = SweepWriter::create(&path, &provenance, &[Column::new("foot_mass", "kg")], &[set("accurate", columns)], masses.len() as u64)
+        .map_err(|e| e.to_string())?;
+    for m in masses {
+        writer.push_parameters(&[m]).map_err(|e| e.to_string())?;
+        let bound = kick_restitution::speed_ratio_ball_at_rest(1.0, m, base.ball_mass()) * base.foot_speed();
+        match exit_outcome(m, base) {
+            Ok(o) => writer.push_outcome(0, Ok(&[o.v_ball_out, o.speed_ratio, bound])),
+            Err(e) => writer.push_outcome(0, Err(&e.to_string())),
+        }
+        .map_err(|e| e.to_string())?;
+    }
+    written.push(writer.finish().map_err(|e| e.to_string())?);
+    Ok(written)
 }

@@ -54,3 +54,32 @@ fn leg_json_matches_the_library_and_bad_angles_fail() {
     assert!(!planar_rotation.status.success());
     assert!(String::from_utf8_lossy(&planar_rotation.stderr).contains("hip_rotation"));
 }
+
+#[test]
+fn leg_sweep_files_read_back_with_units_and_library_values() {
+    let dir = std::env::temp_dir().join(format!("kick-leg-sweep-{}", std::process::id()));
+    let out = kick(&["leg", "--knee", "30", "--ankle", "60", "--sweep-out", dir.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let grid = kick_runner::SweepData::read(&dir.join("leg_effective_mass.h5")).unwrap();
+    let (knees, ankles) = (grid.parameter("knee").unwrap(), grid.parameter("ankle").unwrap());
+    assert_eq!(knees.len(), 25 * 19);
+    let leg = Leg::de_leva(73.0, 1.741).unwrap();
+    for (solver, joint) in [("locked-ankle", AnkleJoint::Locked), ("free-ankle", AnkleJoint::Free)] {
+        let set = grid.set(solver).unwrap();
+        assert!(set.status.iter().all(|&s| s == 0));
+        let (column, masses) = set.columns.iter().find(|(c, _)| c.name == "effective_mass").unwrap();
+        assert_eq!(column.unit, "kg");
+        // Row 100: knee-major order, the library's value for that pose.
+        let pose = Pose { knee_flexion: knees[100], plantarflexion: ankles[100], ..Pose::default() };
+        let expected = leg.effective_mass(&pose, &Impact::default(), joint).unwrap().effective_mass;
+        assert_eq!(masses[100], expected);
+    }
+    let curve = kick_runner::SweepData::read(&dir.join("leg_exit_speed.h5")).unwrap();
+    let set = curve.set("accurate").unwrap();
+    let speed = &set.columns.iter().find(|(c, _)| c.name == "v_ball_out").unwrap().1;
+    let bound = &set.columns.iter().find(|(c, _)| c.name == "elastic_bound_v_ball_out").unwrap().1;
+    // Rising, below the elastic bound of Eq. 38 (e = 1).
+    assert!(speed.windows(2).all(|w| w[1] > w[0]));
+    assert!(speed.iter().zip(bound.iter()).all(|(v, b)| v < b));
+    std::fs::remove_dir_all(&dir).ok();
+}
