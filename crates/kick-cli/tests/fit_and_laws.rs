@@ -1,0 +1,98 @@
+//! Contract of `kick fit` and `kick laws`: JSON keys, round trips, refusals.
+
+use std::process::Command;
+
+fn kick(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_kick"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+        .output()
+        .expect("kick runs")
+}
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("kick-fit-test-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn fit_table2_json_reports_value_uncertainty_and_residuals() {
+    let out = kick(&["fit", "table2", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rows = rows.as_array().unwrap();
+    assert_eq!(rows.len(), 8);
+    assert!(rows[0]["parameter"].is_null() && rows[0]["baseline_residuals"].is_array());
+    for row in &rows[1..] {
+        let report = &row["report"];
+        let estimate = &report["estimates"][0];
+        assert_eq!(estimate["parameter"], row["parameter"]);
+        assert!(estimate["value"].is_f64() && estimate["standard_uncertainty"].as_f64().unwrap() > 0.0);
+        assert_eq!(report["residuals"].as_array().unwrap().len(), 4);
+        assert_eq!(report["degrees_of_freedom"], 3);
+    }
+}
+
+#[test]
+fn synthesized_history_is_fitted_back_within_three_sigma() {
+    let dir = scratch("synth");
+    let out = kick(&["fit", "synthesize", "--out", dir.to_str().unwrap(), "--seed", "3", "--times", "60"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let spec = dir.join("synthetic.toml");
+    let out = kick(&["fit", "data", spec.to_str().unwrap(), "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    // Table 1's values, the truth `synthesize` uses.
+    let truth = [("foot_mass", 3.0), ("stiffness", 4.2e5), ("damping", 120.0), ("exponent", 1.35)];
+    for (e, (name, t)) in report["estimates"].as_array().unwrap().iter().zip(truth) {
+        assert_eq!(e["parameter"], name);
+        let (v, s) = (e["value"].as_f64().unwrap(), e["standard_uncertainty"].as_f64().unwrap());
+        assert!((v - t).abs() < 3.0 * s, "{name}: {v} ± {s} vs {t}");
+    }
+    assert_eq!(report["correlation"].as_array().unwrap().len(), 4);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn fit_data_refuses_bad_input_by_name() {
+    let dir = scratch("bad");
+    let spec = dir.join("bad.toml");
+    std::fs::write(&spec, "free = [\"stifness\"]\n[[scalar]]\nobservable = \"v_ball_out\"\nvalue = 30.0\nsigma = 0.01\n").unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown parameter `stifness`"));
+
+    std::fs::write(&spec, "free = [\"stiffness\"]\n[history]\nfile = \"h.csv\"\nsigma = { force = 10.0 }\n").unwrap();
+    std::fs::write(dir.join("h.csv"), "time,force\n0,1\n1e-3,oops\n").unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("h.csv:3") && err.contains("`oops` is not a number"), "{err}");
+
+    let out = kick(&["fit", "data", dir.join("missing.toml").to_str().unwrap()]);
+    assert!(!out.status.success());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn laws_json_has_every_law_on_every_row() {
+    let out = kick(&["laws", "--format", "json", "--samples", "50"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let all: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let all = all.as_array().unwrap();
+    assert_eq!(all.len(), 8);
+    for c in all {
+        let runs = c["runs"].as_array().unwrap();
+        let names: Vec<&str> = runs.iter().map(|r| r["law"].as_str().unwrap()).collect();
+        assert_eq!(
+            names,
+            ["power-law", "hunt-crossley", "lankarani-nikravesh", "flores", "hunt-crossley-exact", "kelvin-voigt"]
+        );
+        // χ from the exact relation reproduces the paper's law's restitution.
+        let e = |i: usize| runs[i]["outcome"]["restitution"].as_f64().unwrap();
+        assert!((e(4) - e(0)).abs() < 1e-8, "{}: {} vs {}", c["name"], e(4), e(0));
+    }
+    let out = kick(&["laws", "--samples", "1"]);
+    assert!(!out.status.success());
+}
