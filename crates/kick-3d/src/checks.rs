@@ -61,15 +61,23 @@ pub const MATCH_1D: f64 = 1e-9;
 pub const ROUNDING: f64 = 1e-12;
 
 /// An off-center kick: offset 5 cm, μ = 0.5, other values at their defaults.
-pub fn curve_kick() -> Kick3d {
-    kick(Kick3dSpec { offset: Some(0.05), ..Kick3dSpec::default() })
+pub fn curve_kick() -> Result<Kick3d, Kick3dError> {
+    try_kick(Kick3dSpec { offset: Some(0.05), ..Kick3dSpec::default() })
 }
 
 /// A kick on Table 1's baseline with the given extras.
+pub fn try_kick(spec: Kick3dSpec) -> Result<Kick3d, Kick3dError> {
+    Kick3d::new(Scenario::baseline(), &spec)
+}
+
+/// [`try_kick`] for tests and examples with specs known to be valid.
+///
+/// # Panics
+/// On an invalid spec.
 pub fn kick(spec: Kick3dSpec) -> Kick3d {
-    match Kick3d::new(Scenario::baseline(), &spec) {
+    match try_kick(spec) {
         Ok(k) => k,
-        Err(e) => panic!("check scenario must be valid: {e}"),
+        Err(e) => panic!("invalid test kick: {e}"),
     }
 }
 
@@ -135,7 +143,7 @@ pub fn checks() -> Vec<CheckRow> {
 }
 
 fn central_matches_1d() -> Result<Vec<CheckRow>, Kick3dError> {
-    let k = kick(Kick3dSpec { friction: Some(0.0), ..Kick3dSpec::default() });
+    let k = try_kick(Kick3dSpec { friction: Some(0.0), ..Kick3dSpec::default() })?;
     let one = Accurate::default().solve(&k.base)?;
     let three = solve(&k)?;
     let rel = |name: &str, e: f64, a: f64| CheckRow::compare(format!("3d central frictionless = 1d: {name}"), "Eqs. 13-20", e, a, e.abs(), MATCH_1D);
@@ -149,7 +157,7 @@ fn central_matches_1d() -> Result<Vec<CheckRow>, Kick3dError> {
 }
 
 fn zero_offset_no_spin() -> Result<Vec<CheckRow>, Kick3dError> {
-    let k = kick(Kick3dSpec { friction: Some(0.5), ..Kick3dSpec::default() });
+    let k = try_kick(Kick3dSpec { friction: Some(0.5), ..Kick3dSpec::default() })?;
     let o = solve(&k)?;
     // scale: the spin of the rolling limit at this foot speed, V/R
     let scale = k.base.foot_speed() / k.ball_radius;
@@ -158,7 +166,7 @@ fn zero_offset_no_spin() -> Result<Vec<CheckRow>, Kick3dError> {
 
 fn angular_momentum() -> Result<Vec<CheckRow>, Kick3dError> {
     // A rising foot too, so all three components are non-zero.
-    let k = kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() });
+    let k = try_kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() })?;
     let o = solve(&k)?;
     let l = o.ball_angular_momentum(k.ball_inertia);
     let scale = norm(o.angular_impulse);
@@ -170,7 +178,7 @@ fn angular_momentum() -> Result<Vec<CheckRow>, Kick3dError> {
 }
 
 fn energy_closes() -> Result<Vec<CheckRow>, Kick3dError> {
-    let k = curve_kick();
+    let k = curve_kick()?;
     let o = solve(&k)?;
     let e = o.energy;
     // The losses are integrated from their own power densities: closure tests the solver (1e-9, its promise).
@@ -185,8 +193,8 @@ fn energy_closes() -> Result<Vec<CheckRow>, Kick3dError> {
 }
 
 fn mirror() -> Result<Vec<CheckRow>, Kick3dError> {
-    let a = solve(&kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() }))?;
-    let b = solve(&kick(Kick3dSpec { offset: Some(-0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() }))?;
+    let a = solve(&try_kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() })?)?;
+    let b = solve(&try_kick(Kick3dSpec { offset: Some(-0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() })?)?;
     // Reflection y → −y: ω is a pseudovector, so ω_x and ω_z flip and ω_y stays.
     let scale = norm(a.spin);
     let expected = [-a.spin[0], a.spin[1], -a.spin[2]];
@@ -196,12 +204,12 @@ fn mirror() -> Result<Vec<CheckRow>, Kick3dError> {
 }
 
 fn friction_to_zero() -> Result<Vec<CheckRow>, Kick3dError> {
-    let k0 = kick(Kick3dSpec { offset: Some(0.05), friction: Some(0.0), ..Kick3dSpec::default() });
+    let k0 = try_kick(Kick3dSpec { offset: Some(0.05), friction: Some(0.0), ..Kick3dSpec::default() })?;
     let o0 = solve(&k0)?;
     let scale = k0.base.foot_speed() / k0.ball_radius;
     // Small μ: the contact slides throughout, |F_t| = μ F_n, so |ΔL| = R μ ∫F_n dt.
     let mu = 0.01;
-    let k = kick(Kick3dSpec { offset: Some(0.05), friction: Some(mu), ..Kick3dSpec::default() });
+    let k = try_kick(Kick3dSpec { offset: Some(0.05), friction: Some(mu), ..Kick3dSpec::default() })?;
     let o = solve(&k)?;
     let expected = k.ball_radius * mu * o.normal_impulse / k.ball_inertia;
     Ok(vec![
@@ -221,7 +229,7 @@ fn friction_to_infinity() -> Result<Vec<CheckRow>, Kick3dError> {
         foot_inertia: Some([stiff_foot; 3]),
         ..Kick3dSpec::default()
     };
-    let k = kick(spec);
+    let k = try_kick(spec)?;
     let o = solve(&k)?;
     let m_t = tangential_mass(&k, stiff_foot);
     let ratio = oscillator_velocity_ratio(m_t, k.tangential_stiffness, k.tangential_damping, o.contact_time);
@@ -229,7 +237,7 @@ fn friction_to_infinity() -> Result<Vec<CheckRow>, Kick3dError> {
     // Stiff, critically damped spring: the sliding stops long before separation: the rigid gripping limit.
     let k_t = 1e8;
     let c_t = 2.0 * (k_t * m_t).sqrt();
-    let rigid = kick(Kick3dSpec { tangential_stiffness: Some(k_t), tangential_damping: Some(c_t), ..spec });
+    let rigid = try_kick(Kick3dSpec { tangential_stiffness: Some(k_t), tangential_damping: Some(c_t), ..spec })?;
     let o_rigid = solve(&rigid)?;
     let limit = gripping_limit_spin(&rigid, stiff_foot);
     Ok(vec![

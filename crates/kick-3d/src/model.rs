@@ -203,7 +203,8 @@ impl Kick3d {
             ground: spec.ground.unwrap_or(false),
         };
         let v_n = kick.normal_approach_speed();
-        if !(v_n > 0.0) {
+        // NaN-safe: anything not strictly positive refuses.
+        if v_n.is_nan() || v_n <= 0.0 {
             return Err(Kick3dError::Core(kick_core::KickError::NoContact {
                 foot_speed: base.foot_speed() * kick.approach_angle.cos() * kick.obliquity().cos(),
                 ball_speed: base.ball_speed() * kick.obliquity().cos(),

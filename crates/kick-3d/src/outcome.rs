@@ -4,10 +4,10 @@ use serde::Serialize;
 
 /// Energy partition at separation, J (Eqs. 30–33 extended by rotation and friction).
 ///
-/// `kinetic_initial + drive_work + gravity_work = ball_translation + ball_spin
-/// + foot + elastic_final + normal_damping_loss + friction_loss`; the losses
-/// and works are integrated from their own power densities, so the residual
-/// measures the solver, not a definition.
+/// `kinetic_initial + drive_work + gravity_work` equals `ball_translation +
+/// ball_spin + foot + elastic_final + normal_damping_loss + friction_loss`;
+/// the losses and works are integrated from their own power densities, so the
+/// residual measures the solver, not a definition.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct EnergyPartition {
     pub kinetic_initial: f64,
