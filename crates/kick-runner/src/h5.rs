@@ -8,7 +8,7 @@
 //!
 //! ```text
 //! /                      attributes: provenance (tool, tool_version, git_commit,
-//!                        created_utc, experiment, experiment_file, experiment_text,
+//!                        git_dirty, created_utc, experiment, experiment_file, experiment_text,
 //!                        solver, solver_settings, ...), layout_version, rows
 //! /parameters/<name>     f64[rows], attribute units
 //! /outcomes/<name>       f64[rows] of the first solver (NaN where status = 1)
@@ -430,6 +430,10 @@ fn write_provenance(file: &File, path: &Path, p: &Provenance) -> Result<(), H5Er
     write_str_attr(file, path, "tool_version", &p.tool_version)?;
     if let Some(commit) = &p.git_commit {
         write_str_attr(file, path, "git_commit", commit)?;
+    }
+    if let Some(dirty) = p.git_dirty {
+        // 1: the run used tracked files that differ from git_commit.
+        write_u64_attr(file, path, "git_dirty", u64::from(dirty))?;
     }
     write_str_attr(file, path, "created_utc", &p.created_utc)?;
     write_str_attr(file, path, "experiment", &p.experiment)?;

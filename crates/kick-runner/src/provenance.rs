@@ -10,6 +10,8 @@ pub struct Provenance {
     pub tool_version: String,
     /// `git rev-parse HEAD` at run time, when the work tree is a git checkout.
     pub git_commit: Option<String>,
+    /// Whether tracked files differed from that commit (`git status`), when known.
+    pub git_dirty: Option<bool>,
     /// ISO 8601, UTC, second resolution.
     pub created_utc: String,
     /// Experiment name (the file's stem unless the file names it).
@@ -27,6 +29,7 @@ impl Provenance {
             tool: "kick".into(),
             tool_version: env!("CARGO_PKG_VERSION").into(),
             git_commit: git_commit(),
+            git_dirty: git_dirty(),
             created_utc: utc_timestamp(SystemTime::now()),
             experiment: experiment.into(),
             experiment_file: experiment_file.into(),
@@ -47,6 +50,16 @@ pub fn git_commit() -> Option<String> {
     }
     let commit = String::from_utf8(output.stdout).ok()?.trim().to_string();
     (commit.len() >= 7 && commit.bytes().all(|b| b.is_ascii_hexdigit())).then_some(commit)
+}
+
+/// True when tracked files differ from HEAD; `None` without git.
+pub fn git_dirty() -> Option<bool> {
+    let output = std::process::Command::new("git")
+        .args(["status", "--porcelain", "--untracked-files=no"])
+        .stderr(std::process::Stdio::null())
+        .output()
+        .ok()?;
+    output.status.success().then(|| !output.stdout.is_empty())
 }
 
 /// `YYYY-MM-DDTHH:MM:SSZ` for a system time (UTC), without a date library.

@@ -81,6 +81,9 @@ fn result_file_reads_back_against_independent_solves() {
     if let Some(commit) = read_str_attr(&file, "git_commit") {
         assert!(commit.len() == 40 && commit.chars().all(|c| c.is_ascii_hexdigit()), "{commit}");
     }
+    if let Ok(dirty) = file.attr("git_dirty") {
+        assert!(dirty.read_scalar::<u64>().unwrap() <= 1);
+    }
     let seed_group = file.group("solvers/seed-rk4").expect("second solver");
     assert_eq!(read_f64_attr(&seed_group, "dt"), Some(5e-6));
 
