@@ -191,3 +191,47 @@ fn pack(foot: &RigidBody, ball: &RigidBody, y: &mut State) {
     put(y, dynamics::BALL_VELOCITY, ball.linvel());
     put(y, dynamics::BALL_ANGULAR_VELOCITY, ball.angvel());
 }
+
+/// One row of a convergence study of the scene path against the accurate path.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct ConvergenceRow {
+    pub step: f64,
+    /// |Δ launch velocity| / speed.
+    pub velocity_error: f64,
+    /// |Δ spin| / |spin| (absolute in rad/s when the accurate spin is zero).
+    pub spin_error: f64,
+    /// |Δ contact time| / contact time.
+    pub contact_time_error: f64,
+    /// Observed order log2(e(2h)/e(h)) of the velocity error against the previous row (steps halving).
+    pub velocity_order: Option<f64>,
+    /// Wall time of this scene run, s (one run; machine-dependent).
+    pub seconds: f64,
+}
+
+/// Run the scene path at each step (give them halving) and compare with the
+/// accurate path. Also returns the accurate path's wall time, s.
+pub fn convergence(kick: &Kick3d, steps: &[f64]) -> Result<(Vec<ConvergenceRow>, f64), Kick3dError> {
+    let started = std::time::Instant::now();
+    let exact = crate::accurate::Accurate3d::default().solve(kick)?;
+    let accurate_seconds = started.elapsed().as_secs_f64();
+    let norm = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    let diff = |a: [f64; 3], b: [f64; 3]| norm([a[0] - b[0], a[1] - b[1], a[2] - b[2]]);
+    let spin_scale = if norm(exact.spin) > 0.0 { norm(exact.spin) } else { 1.0 };
+    let mut rows: Vec<ConvergenceRow> = Vec::with_capacity(steps.len());
+    for &step in steps {
+        let started = std::time::Instant::now();
+        let o = Scene::new(step)?.solve(kick)?;
+        let seconds = started.elapsed().as_secs_f64();
+        let velocity_error = diff(o.launch_velocity, exact.launch_velocity) / exact.speed;
+        let velocity_order = rows.last().map(|r| (r.velocity_error / velocity_error).log2() / (r.step / step).log2());
+        rows.push(ConvergenceRow {
+            step,
+            velocity_error,
+            spin_error: diff(o.spin, exact.spin) / spin_scale,
+            contact_time_error: (o.contact_time - exact.contact_time).abs() / exact.contact_time,
+            velocity_order,
+            seconds,
+        });
+    }
+    Ok((rows, accurate_seconds))
+}
