@@ -9,7 +9,8 @@ pub struct Args {
     format: Format,
 }
 
-pub fn run(args: Args) -> CliResult {
+/// Every check row: kick-checks' and the 3D model's (also used by `kick reproduce`).
+pub fn rows() -> Vec<CheckRow> {
     let mut rows = run_all();
     // The 3D model's checks (kick-3d) in the same row shape.
     rows.extend(kick_3d::checks::checks().into_iter().map(|r| CheckRow {
@@ -21,6 +22,11 @@ pub fn run(args: Args) -> CliResult {
         tolerance: r.tolerance,
         passed: r.passed,
     }));
+    rows
+}
+
+pub fn run(args: Args) -> CliResult {
+    let rows = rows();
     match args.format {
         Format::Json => println!("{}", json(&rows)?),
         Format::Text => print_text(&rows),

@@ -55,7 +55,7 @@ pub fn run(args: Args) -> CliResult {
     let written = kick_runner::figures::draw_all(&args.out, &figures).map_err(|e| e.to_string())?;
     println!("figures: {} files in {}", written.len(), figures.display());
 
-    let checks: Vec<CheckLine> = kick_checks::run_all()
+    let checks: Vec<CheckLine> = crate::check::rows()
         .into_iter()
         .map(|r| CheckLine {
             name: r.name,
