@@ -66,3 +66,18 @@ fn ground_and_gravity_live_in_the_scene() {
     // On the ground the ball cannot fall (rapier's soft contact may let it sink a little).
     assert!(floor.launch_velocity[2].abs() <= 1e-3 * fall.abs(), "{}", floor.launch_velocity[2]);
 }
+
+#[test]
+fn scene_error_stays_within_its_documented_bound() {
+    // scene.rs: at most 2e-4 relative per microsecond of step in launch
+    // velocity and spin across the swept range; checked at 1e-5 s.
+    let step = 1e-5;
+    let bound = 2e-4 * step / 1e-6;
+    for (e, a, mu) in [(0.09, 0.0, 0.5), (0.0, 40.0, 0.5), (-0.09, 40.0, 0.5), (0.05, 0.0, 0.1), (0.05, 0.0, 2.0)] {
+        let k = kick(Kick3dSpec { offset: Some(e), approach_angle_deg: Some(a), friction: Some(mu), ..Kick3dSpec::default() });
+        let (rows, _) = kick_3d::scene::convergence(&k, &[step]).unwrap();
+        let r = rows[0];
+        println!("e {e} a {a} mu {mu}: velocity {:.3e} spin {:.3e}", r.velocity_error, r.spin_error);
+        assert!(r.velocity_error <= bound && r.spin_error <= bound);
+    }
+}
