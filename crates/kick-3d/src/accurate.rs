@@ -16,6 +16,10 @@
 //! refined by golden-section search on re-integrated states; a time error ε
 //! moves the peak value only by O(ε²).
 //!
+//! Allocation: the right-hand side allocates nothing; Dop853's sparse output
+//! keeps each accepted step in a `Vec` (amortized growth, as in
+//! kick-compliant), about 100–300 steps per contact.
+//!
 //! Accuracy: with the default tolerances (rtol 1e-12, atol 1e-15) a central
 //! frictionless kick matches the 1D accurate solver to below 1e-9 relative in
 //! exit speeds, contact time, peak force and maximum compression, and the

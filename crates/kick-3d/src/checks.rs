@@ -181,8 +181,12 @@ fn energy_closes() -> Result<Vec<CheckRow>, Kick3dError> {
     let k = curve_kick()?;
     let o = solve(&k)?;
     let e = o.energy;
+    // Kinetic + elastic energy along the run (every accepted step and event) may only fall.
+    let (_, samples) = Accurate3d::default().solve_recorded(&k)?;
+    let rise = samples.windows(2).map(|w| w[1].1 - w[0].1).fold(0.0f64, f64::max);
+    let monotone = CheckRow::compare("3d passive contact: largest rise of kinetic + elastic energy (J)", "Eqs. 30-33", 0.0, rise, e.kinetic_initial, MATCH_1D);
     // The losses are integrated from their own power densities: closure tests the solver (1e-9, its promise).
-    Ok(vec![CheckRow::compare(
+    Ok(vec![monotone, CheckRow::compare(
         "3d energy in = kinetic + spin + foot + elastic + damping + friction (J)",
         "Eqs. 30-33",
         e.kinetic_initial + e.drive_work + e.gravity_work,
