@@ -28,14 +28,14 @@ pub fn predict(
             let interval = scenario.elastic_contact_time() * RECORD_FRACTION;
             let (outcome, recorded) = solver.solve_recorded(scenario, interval)?;
             out.extend(observations.scalars.iter().map(|s| s.observable.value(&outcome)));
-            let trajectory = Trajectory::new(scenario, &outcome, recorded);
+            let trajectory = Trajectory::new(scenario, &outcome, recorded)?;
             for (channel, _) in &history.data.channels {
                 out.extend(history.data.times.iter().map(|&t| trajectory.channel(*channel, t)));
             }
         }
     }
     if let Some(bad) = out.iter().position(|v| !v.is_finite()) {
-        return Err(kick_core::KickError::NonFinite { quantity: "model prediction", time: bad as f64 }.into());
+        return Err(IdentifyError::data("model", format!("prediction {bad} is not finite")));
     }
     Ok(out)
 }
@@ -51,7 +51,8 @@ pub struct Trajectory {
 }
 
 impl Trajectory {
-    pub fn new(scenario: &Scenario, outcome: &Outcome, history: History) -> Trajectory {
+    /// Refuses an empty history.
+    pub fn new(scenario: &Scenario, outcome: &Outcome, history: History) -> Result<Trajectory, IdentifyError> {
         let mut samples: Vec<Sample> = Vec::with_capacity(history.samples.len());
         for s in history.samples {
             // Events can repeat an accepted step's time; keep one sample per time.
@@ -59,7 +60,10 @@ impl Trajectory {
                 samples.push(s);
             }
         }
-        Trajectory { samples, scenario: *scenario, contact_time: outcome.contact_time }
+        if samples.is_empty() {
+            return Err(IdentifyError::data("model", "the solver recorded no samples"));
+        }
+        Ok(Trajectory { samples, scenario: *scenario, contact_time: outcome.contact_time })
     }
 
     /// (x_f, v_f, x_b, v_b) at time t.
@@ -146,7 +150,8 @@ mod tests {
         let tc0 = s.elastic_contact_time();
         let (o, coarse) = solver.solve_recorded(&s, tc0 * RECORD_FRACTION).unwrap();
         let (_, fine) = solver.solve_recorded(&s, tc0 * RECORD_FRACTION / 20.0).unwrap();
-        let tr = Trajectory::new(&s, &o, coarse);
+        let tr = Trajectory::new(&s, &o, coarse).unwrap();
+        assert!(Trajectory::new(&s, &o, History::default()).is_err());
         let force_scale = o.peak_force;
         for sample in fine.samples.iter().step_by(7) {
             let t = sample.time;
