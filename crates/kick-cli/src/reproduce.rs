@@ -47,8 +47,14 @@ pub fn run(args: Args) -> CliResult {
     if files.is_empty() {
         return Err(format!("no experiment files in {}", args.experiments.display()));
     }
+    let mut written: Vec<(PathBuf, &PathBuf)> = Vec::new();
     for file in &files {
-        crate::run::run_file(file, &args.out)?;
+        let path = crate::run::run_file(file, &args.out)?;
+        // Two files naming the same experiment would overwrite each other.
+        if let Some((_, first)) = written.iter().find(|(p, _)| *p == path) {
+            return Err(format!("{} and {} both write {}", first.display(), file.display(), path.display()));
+        }
+        written.push((path, file));
     }
 
     let figures = args.out.join("figures");

@@ -29,8 +29,8 @@ pub fn set_threads(threads: Option<usize>) -> CliResult {
     Ok(())
 }
 
-/// Load, run and report one experiment file.
-pub fn run_file(file: &Path, out: &Path) -> CliResult {
+/// Load, run and report one experiment file; returns the result file's path.
+pub fn run_file(file: &Path, out: &Path) -> Result<PathBuf, String> {
     let experiment = kick_runner::experiment::load(file).map_err(|e| e.to_string())?;
     let started = std::time::Instant::now();
     let summary = kick_runner::run(&experiment, out, true).map_err(|e| e.to_string())?;
@@ -47,10 +47,10 @@ pub fn run_file(file: &Path, out: &Path) -> CliResult {
         failures.join(", "),
         started.elapsed().as_secs_f64()
     );
-    Ok(())
+    Ok(summary.path)
 }
 
 pub fn run(args: Args) -> CliResult {
     set_threads(args.threads)?;
-    run_file(&args.file, &args.out)
+    run_file(&args.file, &args.out).map(|_| ())
 }
