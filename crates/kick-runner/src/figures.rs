@@ -136,8 +136,11 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         .map_err(|e| e.to_string())?;
     let log_x = panel.log_x;
     let x_fmt = move |v: &f64| if log_x { log_tick(*v) } else { format!("{}", (v * 1e6).round() / 1e6) };
+    // On a log axis, at most one label per decade, so labels land on powers of ten.
+    let x_labels = if log_x { ((x1 - x0).ceil() as usize + 1).max(2) } else { 10 };
     chart
         .configure_mesh()
+        .x_labels(x_labels)
         .x_desc(panel.x_label.as_str())
         .y_desc(panel.y_label.as_str())
         .x_label_formatter(&x_fmt)
