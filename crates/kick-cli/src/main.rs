@@ -1,5 +1,6 @@
 //! `kick`: the command line of the kick workspace.
 
+mod bench;
 mod check;
 mod fit;
 mod identify_figures;
@@ -10,6 +11,7 @@ mod reproduce;
 mod run;
 mod simulate;
 mod simulate3d;
+mod sweep;
 mod run3d;
 mod table2;
 
@@ -44,6 +46,10 @@ enum Command {
     Fit(fit::FitCommand),
     /// Run one experiment file (experiments/*.toml) into DIR/NAME.h5.
     Run(run::Args),
+    /// Work–precision of every 1D solver, cost ratios and sweep throughput (HDF5 + figure).
+    Bench(bench::Args),
+    /// Random scenarios around the baseline, solved in parallel into one HDF5 file.
+    Sweep(sweep::Args),
     /// Run every experiment, draw the figures, run the checks, write paper/README.md.
     Reproduce(reproduce::Args),
 }
@@ -61,6 +67,8 @@ fn main() -> ExitCode {
         Command::Fit(command) => fit::run(command),
         Command::Run(args) => run::run(args),
         Command::Reproduce(args) => reproduce::run(args),
+        Command::Sweep(args) => sweep::run(args),
+        Command::Bench(args) => bench::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -67,7 +67,7 @@ pub struct PrecisionPoint {
 
 /// The solvers and settings `kick bench` measures.
 pub fn ladder() -> Vec<(&'static str, f64)> {
-    let mut ladder = vec![("seed-rk4", 5e-6)];
+    let mut ladder = Vec::new();
     for dt in [2e-5, 1e-5, 5e-6, 2.5e-6, 1.25e-6] {
         ladder.push(("seed-rk4", dt));
         ladder.push(("rk4-events", dt));
@@ -77,7 +77,6 @@ pub fn ladder() -> Vec<(&'static str, f64)> {
             ladder.push((name, tolerance));
         }
     }
-    ladder.dedup();
     ladder
 }
 

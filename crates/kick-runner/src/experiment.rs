@@ -161,6 +161,8 @@ pub enum Scenarios {
     Grid { base: Scenario, axes: Vec<Axis> },
     /// Named scenarios (Table 2 rows, `[[scenario]]` lists).
     Named { names: Vec<String>, scenarios: Vec<Scenario> },
+    /// Random scenarios drawn on demand (`kick sweep`).
+    Sampled(crate::sample::SampledSweep),
 }
 
 /// A validated experiment, ready to run.
@@ -183,6 +185,7 @@ impl Scenarios {
         match self {
             Scenarios::Grid { axes, .. } => axes.iter().map(|a| a.values.len() as u64).product(),
             Scenarios::Named { scenarios, .. } => scenarios.len() as u64,
+            Scenarios::Sampled(sweep) => sweep.samples,
         }
     }
 
@@ -205,13 +208,14 @@ impl Scenarios {
                 Scenario::from_values(values)
             }
             Scenarios::Named { scenarios, .. } => Ok(scenarios[index as usize]),
+            Scenarios::Sampled(sweep) => sweep.scenario(index),
         }
     }
 
     /// Row names, for named scenarios.
     pub fn names(&self) -> Option<&[String]> {
         match self {
-            Scenarios::Grid { .. } => None,
+            Scenarios::Grid { .. } | Scenarios::Sampled(_) => None,
             Scenarios::Named { names, .. } => Some(names),
         }
     }

@@ -13,6 +13,7 @@ pub mod h5;
 pub mod provenance;
 pub mod report;
 pub mod run;
+pub mod sample;
 
 pub use experiment::{Experiment, ExperimentError, Output, Scenarios};
 pub use h5::{Column, OutcomeSet, SweepData, SweepWriter};

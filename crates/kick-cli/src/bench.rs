@@ -1,0 +1,185 @@
+//! `kick bench`: work–precision of every 1D solver, the headline ratios, and
+//! sweep throughput, measured in one run of one binary.
+
+use crate::output::CliResult;
+use kick_compliant::precision::{self, PrecisionPoint};
+use kick_compliant::SolverChoice;
+use kick_core::Solver;
+use kick_runner::figures::{save_grid, Panel, Series};
+use kick_runner::h5::{write_f64_attr, write_strings, Column, OutcomeSet, SweepData, SweepWriter};
+use kick_runner::sample::SampledSweep;
+use kick_runner::Provenance;
+use plotters::prelude::{RGBColor, SeriesLabelPosition};
+use rayon::prelude::*;
+use std::path::PathBuf;
+use std::time::Instant;
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Directory for work_precision.h5 (figures go to DIR/figures)
+    #[arg(long, default_value = "results")]
+    out: PathBuf,
+    /// Least wall time per measured point, s
+    #[arg(long, default_value_t = 0.3)]
+    min_time: f64,
+    /// Scenarios in the throughput sweep
+    #[arg(long, default_value_t = 20_000)]
+    sweep_samples: u64,
+    /// Short variant for CI: a few ladder points, little time each
+    #[arg(long)]
+    quick: bool,
+}
+
+const COLUMNS: [(&str, &str); 3] = [
+    ("max_error", "1"),
+    ("seconds_per_scenario", "s"),
+    ("evaluations_per_scenario", "1"),
+];
+
+/// Scenarios per second of `solver` on the sweep, on a pool of `threads`.
+fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) -> Result<f64, String> {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| e.to_string())?;
+    let started = Instant::now();
+    let solved = pool.install(|| {
+        (0..sweep.samples)
+            .into_par_iter()
+            .map(|i| sweep.scenario(i).and_then(|s| solver.solve(&s)).is_ok() as u64)
+            .sum::<u64>()
+    });
+    std::hint::black_box(solved);
+    Ok(sweep.samples as f64 / started.elapsed().as_secs_f64())
+}
+
+pub fn run(args: Args) -> CliResult {
+    let cases = precision::cases().map_err(|e| e.to_string())?;
+    let mut ladder = precision::ladder();
+    let min_time = if args.quick { 0.02 } else { args.min_time };
+    if args.quick {
+        ladder.retain(|(name, setting)| {
+            matches!((*name, *setting), ("seed-rk4", s) if s == 5e-6) || *setting == 1e-12 || *setting == 1e-8
+        });
+    }
+    let mut points: Vec<PrecisionPoint> = Vec::new();
+    for (name, setting) in ladder {
+        let solver = precision::solver(name, setting).map_err(|e| e.to_string())?;
+        let point = precision::measure(name, setting, &solver, &cases, min_time).map_err(|e| format!("{name}: {e}"))?;
+        println!(
+            "{:<16} {:>9.2e}  error {:>9.2e}  {:>9.2} µs/scenario  {:>7.0} evaluations",
+            point.solver,
+            point.setting,
+            point.max_error,
+            point.seconds_per_scenario * 1e6,
+            point.evaluations_per_scenario
+        );
+        points.push(point);
+    }
+    // Headline ratio: the default path against the paper's method, same
+    // binary, measured in alternation and the median taken (the machine is shared).
+    let seed_rk4 = SolverChoice::from_name("seed-rk4", 5e-6).map_err(|e| e.to_string())?;
+    let default_auto = SolverChoice::from_name("auto", 5e-6).map_err(|e| e.to_string())?;
+    let mut ratios = Vec::new();
+    let (mut seed, mut auto) = (None, None);
+    for _ in 0..5 {
+        let s = precision::measure("seed-rk4", 5e-6, &seed_rk4, &cases, min_time).map_err(|e| e.to_string())?;
+        let a = precision::measure("auto", 1e-12, &default_auto, &cases, min_time).map_err(|e| e.to_string())?;
+        ratios.push(s.seconds_per_scenario / a.seconds_per_scenario);
+        (seed, auto) = (Some(s), Some(a));
+    }
+    ratios.sort_by(f64::total_cmp);
+    let ratio = ratios[ratios.len() / 2];
+    let (seed, auto) = (seed.ok_or("no seed point")?, auto.ok_or("no auto point")?);
+    println!(
+        "\nauto (default) vs seed-rk4 at 5 µs: error {:.2e} vs {:.2e}; cost ratio {:.1}x (median of 5 alternating runs; {:.1}-{:.1}x)",
+        auto.max_error, seed.max_error, ratio, ratios[0], ratios[ratios.len() - 1]
+    );
+    let sweep = SampledSweep { samples: if args.quick { 2_000 } else { args.sweep_samples }, seed: 1 };
+    let one = throughput(&default_auto, sweep, 1)?;
+    let two = throughput(&default_auto, sweep, 2)?;
+    println!(
+        "sweep of {} sampled scenarios (auto, summary only): {:.0}/s on 1 thread, {:.0}/s on 2 threads, speed-up {:.2}x",
+        sweep.samples, one, two, two / one
+    );
+
+    // Results file, then the figure drawn from it.
+    std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create {}: {e}", args.out.display()))?;
+    let path = args.out.join("work_precision.h5");
+    let text = format!("kick bench{} --min-time {min_time}", if args.quick { " --quick" } else { "" });
+    let provenance = Provenance::now("work_precision", "kick bench", &text);
+    let set = OutcomeSet {
+        solver: "bench".into(),
+        settings: format!("references: closed forms, else accurate at {:e}", precision::REFERENCE_TOLERANCE),
+        numeric_settings: vec![],
+        columns: COLUMNS.iter().map(|(n, u)| Column::new(n, u)).collect(),
+    };
+    let parameters = [Column::new("setting", "tolerance (1) or step (s)")];
+    let mut writer = SweepWriter::create(&path, &provenance, &parameters, &[set], points.len() as u64).map_err(|e| e.to_string())?;
+    for p in &points {
+        writer.push_parameters(&[p.setting]).map_err(|e| e.to_string())?;
+        writer
+            .push_outcome(0, Ok(&[p.max_error, p.seconds_per_scenario, p.evaluations_per_scenario]))
+            .map_err(|e| e.to_string())?;
+    }
+    let names: Vec<String> = points.iter().map(|p| p.solver.to_string()).collect();
+    write_strings(writer.file(), &path, "scenario_names", &names).map_err(|e| e.to_string())?;
+    for (name, value) in [
+        ("auto_vs_seed_cost_ratio", ratio),
+        ("auto_max_error", auto.max_error),
+        ("sweep_per_second_1_thread", one),
+        ("sweep_per_second_2_threads", two),
+        ("sweep_samples", sweep.samples as f64),
+    ] {
+        write_f64_attr(writer.file(), &path, name, value).map_err(|e| e.to_string())?;
+    }
+    let path = writer.finish().map_err(|e| e.to_string())?;
+    let figures = draw(&path, &args.out.join("figures"))?;
+    println!("-> {} and {}", path.display(), figures.join(", "));
+    Ok(())
+}
+
+/// Error against cost, log–log, one curve per solver, from the file.
+fn draw(path: &std::path::Path, out: &std::path::Path) -> Result<Vec<String>, String> {
+    let data = SweepData::read(path).map_err(|e| e.to_string())?;
+    let names = data.names.clone().ok_or("work_precision.h5 has no solver names")?;
+    let set = data.set("bench").map_err(|e| e.to_string())?;
+    let error = set.column("max_error").ok_or("no max_error")?;
+    let seconds = set.column("seconds_per_scenario").ok_or("no seconds_per_scenario")?;
+    let colors = [
+        RGBColor(0, 0, 0),
+        RGBColor(31, 119, 180),
+        RGBColor(214, 39, 40),
+        RGBColor(44, 160, 44),
+        RGBColor(148, 103, 189),
+        RGBColor(255, 127, 14),
+        RGBColor(23, 190, 207),
+    ];
+    let mut solvers: Vec<&str> = Vec::new();
+    for n in &names {
+        if !solvers.contains(&n.as_str()) {
+            solvers.push(n);
+        }
+    }
+    let mut series = Vec::new();
+    for (i, solver) in solvers.iter().enumerate() {
+        let mut rows: Vec<(f64, f64)> = names
+            .iter()
+            .zip(seconds.iter().zip(error))
+            .filter(|(n, _)| n == solver)
+            .map(|(_, (&t, &e))| (t * 1e6, e.max(1e-16).log10()))
+            .collect();
+        rows.sort_by(|a, b| a.0.total_cmp(&b.0));
+        rows.dedup_by(|a, b| a.0 == b.0);
+        let (x, y): (Vec<f64>, Vec<f64>) = rows.into_iter().unzip();
+        series.push(Series::line(solver, colors[i % colors.len()], &x, &y).with_markers());
+    }
+    let panel = Panel {
+        title: "Work-precision of the 1D solvers (Table 2, elastic, linear and driven models)".into(),
+        x_label: "time per scenario (µs, log scale)".into(),
+        y_label: "log10 of the largest relative error".into(),
+        log_x: true,
+        series,
+        y_from_zero: false,
+        legend: SeriesLabelPosition::UpperRight,
+    };
+    let files = save_grid(out, "work_precision", "kick bench", (1, 1), &[panel]).map_err(|e| e.to_string())?;
+    Ok(files.iter().map(|p| p.display().to_string()).collect())
+}
