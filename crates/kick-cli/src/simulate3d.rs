@@ -53,6 +53,13 @@ pub struct Args {
     /// Tangential damping c_t, N s/m [100]
     #[arg(long, allow_negative_numbers = true)]
     tangential_damping: Option<f64>,
+    /// Principal moments of inertia of the foot about its centre of mass,
+    /// kg m², as Ix,Iy,Iz (x: face normal) [uniform solid box of the instep]
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    foot_inertia: Option<Vec<f64>>,
+    /// Half-extents of the instep box, m, as hx,hy,hz (hx along the face normal) [0.03,0.12,0.05]
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    foot_half_extents: Option<Vec<f64>>,
     /// Round the instep box's edges with this radius, m [0: plain box]
     #[arg(long, allow_negative_numbers = true)]
     border_radius: Option<f64>,
@@ -93,14 +100,24 @@ impl Args {
         }
         .build()
         .map_err(|e| e.to_string())?;
-        let foot_shape = self.border_radius.map(|b| FootShape::RoundedBox {
-            half_extents: FootShape::DEFAULT_HALF_EXTENTS.map(|h| h - b.clamp(0.0, h / 2.0)),
-            border_radius: b,
-        });
+        let three = |v: &Option<Vec<f64>>, name: &str| -> Result<Option<[f64; 3]>, String> {
+            match v.as_deref() {
+                None => Ok(None),
+                Some(&[a, b, c]) => Ok(Some([a, b, c])),
+                Some(other) => Err(format!("--{name} takes three numbers, got {}", other.len())),
+            }
+        };
+        let outer = three(&self.foot_half_extents, "foot-half-extents")?.unwrap_or(FootShape::DEFAULT_HALF_EXTENTS);
+        // The rounded box keeps the outer size: the border comes out of the inner box.
+        let foot_shape = match self.border_radius {
+            Some(b) => FootShape::RoundedBox { half_extents: outer.map(|h| h - b), border_radius: b },
+            None => FootShape::Box { half_extents: outer },
+        };
         let spec = Kick3dSpec {
             ball_radius: self.ball_radius,
             ball_inertia: self.ball_inertia,
-            foot_shape,
+            foot_inertia: three(&self.foot_inertia, "foot-inertia")?,
+            foot_shape: Some(foot_shape),
             offset: self.offset,
             approach_angle_deg: self.approach_angle,
             friction: self.friction,
@@ -108,7 +125,6 @@ impl Args {
             tangential_damping: self.tangential_damping,
             gravity: Some(self.gravity),
             ground: Some(self.ground),
-            ..Kick3dSpec::default()
         };
         Kick3d::new(base, &spec).map_err(|e| e.to_string())
     }

@@ -60,6 +60,8 @@ fn simulate3d_refuses_bad_input_by_name() {
         (vec!["simulate3d", "--ball-inertia", "1"], "ball_inertia"),
         (vec!["simulate3d", "--friction", "-1"], "friction"),
         (vec!["simulate3d", "--solver", "rapier", "--dt", "0"], "dt"),
+        (vec!["simulate3d", "--foot-inertia", "1,2"], "foot-inertia"),
+        (vec!["simulate3d", "--border-radius", "0.04"], "foot_half_extent"),
     ] {
         let out = kick(&args);
         assert!(!out.status.success(), "{args:?}");
