@@ -6,8 +6,8 @@
 //! Solvers (one law, three paths):
 //! - [`accurate::Accurate3d`] (`accurate`): both rigid bodies on adaptive
 //!   Dop853 with located events, parry3d giving the geometry;
-//! - [`one_d`] (`1d`): the 1D accurate solver along the normal, exact when no
-//!   tangential force can act;
+//! - [`one_d`] (`1d`): the 1D accurate solver along the normal, exact for
+//!   central, square kicks (nothing slides, so no friction and no torque);
 //! - [`scene::Scene`] (`rapier`, feature `rapier`): a rapier3d world (ground,
 //!   gravity, later a leg) with the same law applied as external forces.
 //!
@@ -32,8 +32,10 @@ pub use outcome::{EnergyPartition, Outcome3d};
 /// The 3D solvers selectable by name (`--solver`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Solver3d {
-    /// 1d when no tangential force can act, rapier when the scene has a
-    /// ground, accurate otherwise.
+    /// 1d for central, square kicks (any μ: nothing slides), rapier when the
+    /// scene has a ground, accurate otherwise. A frictionless off-center kick
+    /// goes to accurate: the contact point slides along the face and the
+    /// normal force then turns the foot, which the 1D model cannot follow.
     Auto,
     Accurate(Accurate3d),
     OneD,
