@@ -54,9 +54,25 @@ enum Command {
     Reproduce(reproduce::Args),
 }
 
+/// Run one `kick` command line from inside the program (`kick reproduce` uses it).
+pub(crate) fn dispatch(argv: &[String]) -> Result<(), String> {
+    let cli = Cli::try_parse_from(argv).map_err(|e| e.to_string())?;
+    execute(cli.command)
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result = match cli.command {
+    match execute(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn execute(command: Command) -> Result<(), String> {
+    match command {
         Command::Simulate(args) => simulate::run(args),
         Command::Simulate3d(args) => simulate3d::run(args),
         Command::Run3d(args) => run3d::run(args),
@@ -69,12 +85,5 @@ fn main() -> ExitCode {
         Command::Reproduce(args) => reproduce::run(args),
         Command::Sweep(args) => sweep::run(args),
         Command::Bench(args) => bench::run(args),
-    };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(message) => {
-            eprintln!("error: {message}");
-            ExitCode::FAILURE
-        }
     }
 }

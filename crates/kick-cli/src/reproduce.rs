@@ -80,6 +80,56 @@ pub fn run(args: Args) -> CliResult {
     kick_runner::report::write(&args.out, &relative(report_dir, &figures), Some(&checks), &args.report)
         .map_err(|e| e.to_string())?;
     println!("report: {}", args.report.display());
+
+    // The rest of the workspace's results: 3D sweeps, contact laws,
+    // identifiability, and the solvers' work–precision.
+    let out = args.out.display().to_string();
+    let report_dir = report_dir.to_path_buf();
+    let mut three_d: Vec<String> = std::fs::read_dir(args.experiments.join("3d"))
+        .map(|entries| {
+            entries
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+                .map(|p| p.display().to_string())
+                .collect()
+        })
+        .unwrap_or_default();
+    three_d.sort();
+    let identification = args.out.join("identification").display().to_string();
+    let solvers_report = report_dir.join("solvers.md").display().to_string();
+    let mut commands: Vec<Vec<String>> = Vec::new();
+    if !three_d.is_empty() {
+        let mut argv = vec!["kick".to_string(), "run3d".to_string()];
+        argv.extend(three_d);
+        argv.extend(["--out".to_string(), out.clone()]);
+        commands.push(argv);
+    }
+    commands.push(["kick", "laws", "--out", &identification].map(String::from).to_vec());
+    commands.push(["kick", "fit", "profile", "--out", &identification].map(String::from).to_vec());
+    commands.push(["kick", "bench", "--out", &out, "--report", &solvers_report].map(String::from).to_vec());
+    for argv in &commands {
+        println!("\n$ {}", argv.join(" "));
+        crate::dispatch(argv)?;
+    }
+    // Point the report at the sections written beside it.
+    let mut text = std::fs::read_to_string(&args.report).map_err(|e| format!("cannot read {}: {e}", args.report.display()))?;
+    let sections = [
+        ("solvers.md", "Solvers of the 1D model: work–precision, cost, trust regions"),
+        ("3d.md", "Off-center 3D kicks: spin and friction"),
+        ("laws.md", "Contact laws compared"),
+        ("identification.md", "Parameter identification and identifiability"),
+    ];
+    let present: Vec<String> = sections
+        .iter()
+        .filter(|(file, _)| report_dir.join(file).exists())
+        .map(|(file, title)| format!("- [{title}]({file})"))
+        .collect();
+    if !present.is_empty() {
+        text.push_str("\n## Further sections\n\n");
+        text.push_str(&present.join("\n"));
+        text.push('\n');
+        std::fs::write(&args.report, text).map_err(|e| format!("cannot write {}: {e}", args.report.display()))?;
+    }
     if failed > 0 {
         return Err(format!("{failed} cross-model check(s) failed; see {}", args.report.display()));
     }
