@@ -183,6 +183,17 @@ struct SetWriter {
     failure_count: u64,
 }
 
+/// Turn HDF5's file locking off for this process, before the library reads
+/// its settings. Result files are written under a temporary name and renamed
+/// when complete, so readers never meet a half-written file; and a lock would
+/// otherwise outlive the writer whenever another thread forks a child (e.g.
+/// `git` for the provenance) while the file is open, since HDF5's descriptors
+/// are inherited.
+pub fn disable_file_locking() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| std::env::set_var("HDF5_USE_FILE_LOCKING", "FALSE"));
+}
+
 /// Streams a sweep into a new result file.
 ///
 /// Usage: [`SweepWriter::create`], then per row [`SweepWriter::push_parameters`]
@@ -212,6 +223,7 @@ impl SweepWriter {
         sets: &[OutcomeSet],
         expected_rows: u64,
     ) -> Result<SweepWriter, H5Error> {
+        disable_file_locking();
         let chunk = expected_rows.clamp(1, CHUNK_ROWS as u64) as usize;
         // Failures are usually few.
         let failure_chunk = chunk.min(64);
@@ -487,6 +499,7 @@ fn read_columns(group: &Group, path: &Path) -> Result<Vec<(Column, Vec<f64>)>, H
 
 impl SweepData {
     pub fn read(path: &Path) -> Result<SweepData, H5Error> {
+        disable_file_locking();
         let file = File::open(path).map_err(h5err(path))?;
         let parameters = read_columns(&file.group("parameters").map_err(h5err(path))?, path)?;
         let names = if file.link_exists("scenario_names") {
@@ -555,6 +568,7 @@ impl SetData {
 
 /// Read the history of `row` in the outcome group `group` ("" for the root set).
 pub fn read_history(path: &Path, group: &str, row: usize) -> Result<Vec<(Column, Vec<f64>)>, H5Error> {
+    disable_file_locking();
     let file = File::open(path).map_err(h5err(path))?;
     let name = if group.is_empty() {
         format!("histories/{row:06}")

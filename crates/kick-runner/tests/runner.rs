@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 
 /// A fresh directory for one test.
 fn scratch(name: &str) -> PathBuf {
+    kick_runner::h5::disable_file_locking();
     let dir = std::env::temp_dir().join(format!("kick-runner-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("temp dir");
