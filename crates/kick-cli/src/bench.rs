@@ -95,7 +95,7 @@ pub fn run(args: Args) -> CliResult {
         "\nauto (default) vs seed-rk4 at 5 µs: error {:.2e} vs {:.2e}; cost ratio {:.1}x (median of 5 alternating runs; {:.1}-{:.1}x)",
         auto.max_error, seed.max_error, ratio, ratios[0], ratios[ratios.len() - 1]
     );
-    let sweep = SampledSweep { samples: if args.quick { 2_000 } else { args.sweep_samples }, seed: 1 };
+    let sweep = SampledSweep::new(if args.quick { 2_000 } else { args.sweep_samples }, 1);
     let one = throughput(&default_auto, sweep, 1)?;
     let two = throughput(&default_auto, sweep, 2)?;
     println!(

@@ -61,6 +61,7 @@ pub(crate) fn dispatch(argv: &[String]) -> Result<(), String> {
 }
 
 fn main() -> ExitCode {
+    kick_runner::h5::disable_file_locking();
     let cli = Cli::parse();
     match execute(cli.command) {
         Ok(()) => ExitCode::SUCCESS,

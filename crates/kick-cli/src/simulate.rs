@@ -29,6 +29,12 @@ pub struct Args {
     /// Drive force on the foot during contact, N [0]
     #[arg(long, allow_negative_numbers = true)]
     drive_force: Option<f64>,
+    /// Contact law: power-law (the paper's, Eq. 20), hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt
+    #[arg(long, default_value = "power-law")]
+    law: String,
+    /// Target restitution e of the laws other than the paper's (their damping follows from it)
+    #[arg(long, allow_negative_numbers = true)]
+    restitution: Option<f64>,
     /// Step of seed-rk4, s
     #[arg(long, default_value_t = 5e-6, allow_negative_numbers = true)]
     dt: f64,
@@ -42,8 +48,8 @@ pub struct Args {
 }
 
 impl Args {
-    fn spec(&self) -> ScenarioSpec {
-        ScenarioSpec {
+    fn spec(&self) -> Result<ScenarioSpec, String> {
+        Ok(ScenarioSpec {
             foot_mass: self.foot_mass,
             ball_mass: self.ball_mass,
             foot_speed: self.foot_speed,
@@ -52,7 +58,9 @@ impl Args {
             damping: self.damping,
             exponent: self.exponent,
             drive_force: self.drive_force,
-        }
+            law: Some(kick_core::LawKind::from_name(&self.law).map_err(|e| e.to_string())?),
+            restitution: self.restitution,
+        })
     }
 }
 
@@ -73,11 +81,12 @@ pub fn outcome_json(scenario: &Scenario, solver: &str, outcome: &Outcome) -> Map
         parameters.insert(p.name().into(), scenario.get(p).into());
     }
     object.insert("scenario".into(), Value::Object(parameters));
+    object.insert("law".into(), serde_json::to_value(scenario.contact_law()).unwrap_or(Value::Null));
     object
 }
 
 pub fn run(args: Args) -> CliResult {
-    let scenario = args.spec().build().map_err(|e| e.to_string())?;
+    let scenario = args.spec()?.build().map_err(|e| e.to_string())?;
     let solver = SolverChoice::from_name(&args.solver, args.dt).map_err(|e| e.to_string())?;
     let (outcome, history) = match args.history {
         Some(interval) => {

@@ -97,6 +97,9 @@ impl Args {
             damping: self.damping,
             exponent: self.exponent,
             drive_force: self.drive_force,
+            // The 3D model's normal force is the paper's law (Eq. 20).
+            law: None,
+            restitution: None,
         }
         .build()
         .map_err(|e| e.to_string())?;

@@ -26,6 +26,12 @@ pub struct Args {
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
+    /// Contact law of every scenario (see `kick simulate --help`)
+    #[arg(long, default_value = "power-law")]
+    law: String,
+    /// Target restitution of a law other than the paper's
+    #[arg(long)]
+    restitution: Option<f64>,
 }
 
 pub fn run(args: Args) -> CliResult {
@@ -42,15 +48,19 @@ pub fn run(args: Args) -> CliResult {
         .to_string();
     let directory = args.out.parent().map(PathBuf::from).unwrap_or_default();
     let solver = SolverChoice::from_name(&args.solver, args.dt).map_err(|e| e.to_string())?;
-    let sweep = SampledSweep { samples: args.samples, seed: args.seed };
+    let law = kick_core::LawKind::from_name(&args.law).map_err(|e| e.to_string())?;
+    let sweep = SampledSweep { samples: args.samples, seed: args.seed, law, restitution: args.restitution };
+    sweep.scenario(0).map_err(|e| e.to_string())?;
     // The provenance keeps what made the file: the command and the ranges.
     let text = format!(
-        "# kick sweep --samples {} --seed {} --solver {} --dt {}\n# ranges:\n{}\n# auto paths: no drive and c = 0 or n = 1 -> closed-form; \
+        "# kick sweep --samples {} --seed {} --solver {} --dt {} --law {} --restitution {:?}\n# ranges:\n{}\n# auto paths: no drive and c = 0 or n = 1 -> closed-form; \
          no drive -> reduced-return; drive -> reduced\n",
         args.samples,
         args.seed,
         args.solver,
         args.dt,
+        args.law,
+        args.restitution,
         RANGES.lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n")
     );
     let experiment = Experiment {

@@ -86,3 +86,21 @@ fn history_is_given_only_on_request() {
     let last = samples.last().unwrap();
     assert!((last["time"].as_f64().unwrap() - value["contact_time"].as_f64().unwrap()).abs() < 1e-15);
 }
+
+#[test]
+fn simulate_takes_any_contact_law() {
+    let out = kick(&["simulate", "--law", "hunt-crossley-exact", "--restitution", "0.6", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!((value["restitution"].as_f64().unwrap() - 0.6).abs() < 1e-8);
+    assert_eq!(value["law"]["law"], "hysteresis");
+    for (args, needle) in [
+        (&["simulate", "--law", "rubber"][..], "rubber"),
+        (&["simulate", "--law", "flores"][..], "restitution"),
+        (&["simulate", "--law", "kelvin-voigt", "--restitution", "1.4"][..], "restitution"),
+    ] {
+        let out = kick(args);
+        assert!(!out.status.success(), "{args:?}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains(needle), "{args:?}");
+    }
+}

@@ -10,7 +10,7 @@
 
 use crate::events::{Engine, Method, StopAt};
 use crate::ode::{self, Branch, ContactOde, Extremes, State};
-use kick_core::{ContactLaw, History, KickError, Outcome, RecordingSolver, Scenario, Solver, StopReason};
+use kick_core::{AnyLaw, ContactLaw, History, KickError, Outcome, RecordingSolver, Scenario, Solver, StopReason};
 
 /// Adaptive Dop853 with located events: the default accurate solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -58,13 +58,19 @@ impl Solver for Accurate {
         "accurate"
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
-        self.solve_law(scenario, scenario.law())
+        match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => self.solve_law(scenario, law),
+            law => self.solve_law(scenario, law),
+        }
     }
 }
 
 impl RecordingSolver for Accurate {
     fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
-        self.solve_law_recorded(scenario, scenario.law(), interval)
+        match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => self.solve_law_recorded(scenario, law, interval),
+            law => self.solve_law_recorded(scenario, law, interval),
+        }
     }
 }
 
@@ -139,12 +145,18 @@ impl Solver for FullState {
         self.name
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
-        self.run(scenario, scenario.law(), None)
+        match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => self.run(scenario, law, None),
+            law => self.run(scenario, law, None),
+        }
     }
 }
 
 impl RecordingSolver for FullState {
     fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
-        self.run_recorded(scenario, scenario.law(), interval)
+        match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => self.run_recorded(scenario, law, interval),
+            law => self.run_recorded(scenario, law, interval),
+        }
     }
 }

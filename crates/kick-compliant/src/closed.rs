@@ -72,7 +72,7 @@ pub fn passive_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outcom
 
 /// c = 0 and no drive: the whole contact in closed form (Eqs. 33–34).
 pub fn elastic(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
-    if scenario.get(kick_core::Parameter::Damping) != 0.0 || scenario.drive_force() != 0.0 {
+    if scenario.law_kind() != kick_core::LawKind::PowerLaw || scenario.get(kick_core::Parameter::Damping) != 0.0 || scenario.drive_force() != 0.0 {
         return None;
     }
     let max_compression = scenario.elastic_max_compression();
@@ -145,7 +145,7 @@ impl LinearCompression {
 
 /// n = 1, compression-only damping, no drive: closed form for any ζ.
 pub fn linear(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
-    if scenario.get(kick_core::Parameter::Exponent) != 1.0 || scenario.drive_force() != 0.0 {
+    if scenario.law_kind() != kick_core::LawKind::PowerLaw || scenario.get(kick_core::Parameter::Exponent) != 1.0 || scenario.drive_force() != 0.0 {
         return None;
     }
     let law = scenario.law();
@@ -192,7 +192,8 @@ pub struct ClosedForm;
 
 impl ClosedForm {
     pub fn applies(scenario: &Scenario) -> bool {
-        scenario.drive_force() == 0.0
+        scenario.law_kind() == kick_core::LawKind::PowerLaw
+            && scenario.drive_force() == 0.0
             && (scenario.get(kick_core::Parameter::Damping) == 0.0
                 || scenario.get(kick_core::Parameter::Exponent) == 1.0)
     }
@@ -206,7 +207,7 @@ impl kick_core::Solver for ClosedForm {
         elastic(scenario).or_else(|| linear(scenario)).unwrap_or_else(|| {
             Err(KickError::NotApplicable {
                 solver: "closed-form",
-                reason: "it needs no drive and either damping = 0 or exponent = 1",
+                reason: "it needs the paper's law, no drive, and either damping = 0 or exponent = 1",
             })
         })
     }

@@ -14,7 +14,7 @@
 use crate::closed::{passive_return, CompressionEnd};
 use crate::events::{ContactSystem, Engine, Method, Scales, StopAt};
 use kick_core::{
-    ContactLaw, EnergyBudget, History, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, StopReason,
+    AnyLaw, ContactLaw, LawKind, EnergyBudget, History, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, StopReason,
 };
 use nalgebra::SVector;
 
@@ -209,7 +209,10 @@ impl Solver for Reduced {
         "reduced"
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
-        self.solve_law(scenario, scenario.law(), None)
+        match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => self.solve_law(scenario, law, None),
+            law => self.solve_law(scenario, law, None),
+        }
     }
 }
 
@@ -219,7 +222,11 @@ impl RecordingSolver for Reduced {
             return Err(KickError::InvalidParameter { name: "interval", value: interval, requirement: "finite and > 0" });
         }
         let mut history = History::default();
-        let outcome = self.solve_law(scenario, scenario.law(), Some((&mut history, interval)))?;
+        let recorder = Some((&mut history, interval));
+        let outcome = match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => self.solve_law(scenario, law, recorder)?,
+            law => self.solve_law(scenario, law, recorder)?,
+        };
         Ok((outcome, history))
     }
 }
@@ -233,7 +240,7 @@ pub struct ReducedReturn {
 
 impl ReducedReturn {
     pub fn applies(scenario: &Scenario) -> bool {
-        scenario.drive_force() == 0.0
+        scenario.drive_force() == 0.0 && scenario.law_kind() == LawKind::PowerLaw
     }
 }
 
@@ -245,7 +252,7 @@ impl Solver for ReducedReturn {
         if !Self::applies(scenario) {
             return Err(KickError::NotApplicable {
                 solver: "reduced-return",
-                reason: "its return phase is in closed form only without a drive force",
+                reason: "its return phase is in closed form only for the paper's law without a drive force",
             });
         }
         let law = scenario.law();

@@ -17,7 +17,7 @@
 
 use crate::ode::{self, Branch, ContactOde, Extremes};
 use kick_core::{
-    History, KickError, Outcome, RecordingSolver, Scenario, Solver, StopReason,
+    AnyLaw, History, KickError, Outcome, RecordingSolver, Scenario, Solver, StopReason,
 };
 
 /// The paper's fixed-step RK4.
@@ -49,12 +49,12 @@ impl SeedRk4 {
         }
     }
 
-    fn run(
+    fn run<L: kick_core::ContactLaw + Copy>(
         &self,
         scenario: &Scenario,
+        law: L,
         mut history: Option<(&mut History, f64)>,
     ) -> Result<Outcome, KickError> {
-        let law = scenario.law();
         let ode = ContactOde::new(scenario, law, Branch::Literal);
         let horizon = scenario.contact_horizon();
         let max_steps = (horizon / self.step).ceil();
@@ -126,7 +126,10 @@ impl Solver for SeedRk4 {
         "seed-rk4"
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
-        self.run(scenario, None)
+        match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => self.run(scenario, law, None),
+            law => self.run(scenario, law, None),
+        }
     }
 }
 
@@ -137,7 +140,11 @@ impl RecordingSolver for SeedRk4 {
         interval: f64,
     ) -> Result<(Outcome, History), KickError> {
         let mut history = History::default();
-        let outcome = self.run(scenario, Some((&mut history, interval.max(0.0))))?;
+        let recorder = Some((&mut history, interval.max(0.0)));
+        let outcome = match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => self.run(scenario, law, recorder)?,
+            law => self.run(scenario, law, recorder)?,
+        };
         Ok((outcome, history))
     }
 }

@@ -16,6 +16,7 @@ pub mod special;
 
 pub use error::KickError;
 pub use law::{ContactLaw, PowerLawContact};
+pub use laws::{AnyLaw, LawKind};
 pub use outcome::{EnergyBudget, ExitVelocities, History, Outcome, Sample, StopReason, OBSERVABLES};
 pub use scenario::{Parameter, Scenario, ScenarioSpec};
 

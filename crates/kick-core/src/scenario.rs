@@ -2,6 +2,7 @@
 
 use crate::error::KickError;
 use crate::law::PowerLawContact;
+use crate::laws::{AnyLaw, LawError, LawKind, LawParameters};
 use serde::{Deserialize, Serialize};
 
 /// See [`Scenario::contact_horizon`].
@@ -77,6 +78,10 @@ pub struct ScenarioSpec {
     pub damping: Option<f64>,
     pub exponent: Option<f64>,
     pub drive_force: Option<f64>,
+    /// Contact law (default: the paper's, Eq. 20).
+    pub law: Option<LawKind>,
+    /// Target restitution of the other laws (they take their damping from it).
+    pub restitution: Option<f64>,
 }
 
 impl ScenarioSpec {
@@ -114,7 +119,7 @@ impl ScenarioSpec {
         for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
             *slot = self.get(p).unwrap_or_else(|| base.get(p));
         }
-        Scenario::from_values(values)
+        Scenario::from_values(values)?.with_law(self.law.unwrap_or(LawKind::PowerLaw), self.restitution)
     }
 }
 
@@ -133,6 +138,10 @@ pub struct Scenario {
     damping: f64,
     exponent: f64,
     drive_force: f64,
+    /// The contact law in use: Eq. 20 from the fields above unless another is chosen.
+    contact: AnyLaw,
+    /// Target restitution when a law other than the paper's is chosen.
+    restitution_target: Option<f64>,
 }
 
 impl Scenario {
@@ -146,6 +155,8 @@ impl Scenario {
         damping: 120.0,
         exponent: 1.35,
         drive_force: 0.0,
+        contact: AnyLaw::PowerLaw(PowerLawContact { stiffness: 4.2e5, damping: 120.0, exponent: 1.35 }),
+        restitution_target: None,
     };
 
     pub fn baseline() -> Scenario {
@@ -183,6 +194,8 @@ impl Scenario {
             },
             exponent: positive(Parameter::Exponent, exponent)?,
             drive_force: finite(Parameter::DriveForce, drive_force)?,
+            contact: AnyLaw::PowerLaw(PowerLawContact { stiffness, damping, exponent }),
+            restitution_target: None,
         };
         // The foot must close the gap (Eq. 48's start: v_f > v_b), and the
         // relative speed must be representable next to the absolute speeds.
@@ -213,11 +226,59 @@ impl Scenario {
         Parameter::ALL.map(|p| self.get(p))
     }
 
-    /// A copy with one parameter changed, validated again.
+    /// A copy with one parameter changed, validated again (the law choice kept).
     pub fn with(&self, parameter: Parameter, value: f64) -> Result<Scenario, KickError> {
         let mut values = self.values();
         values[Parameter::ALL.iter().position(|&p| p == parameter).unwrap_or(0)] = value;
-        Scenario::from_values(values)
+        Scenario::from_values(values)?.with_law(self.law_kind(), self.restitution_target)
+    }
+
+    /// A copy with another contact law. The paper's law takes its damping
+    /// from `damping`; the others take k and n from the scenario and their
+    /// damping from the target `restitution` e in (0, 1] at this impact speed.
+    pub fn with_law(&self, kind: LawKind, restitution: Option<f64>) -> Result<Scenario, KickError> {
+        if kind == LawKind::PowerLaw {
+            return Ok(Scenario { contact: AnyLaw::PowerLaw(self.law()), restitution_target: None, ..*self });
+        }
+        let restitution = restitution.ok_or(KickError::InvalidParameter {
+            name: "restitution",
+            value: f64::NAN,
+            requirement: "given (a target restitution in (0, 1]) for every law but the paper's",
+        })?;
+        if !(restitution > 0.0 && restitution <= 1.0) {
+            return Err(KickError::invalid("restitution", restitution, "in (0, 1]"));
+        }
+        let parameters = LawParameters {
+            stiffness: self.stiffness,
+            exponent: self.exponent,
+            damping: self.damping,
+            restitution,
+            impact_speed: self.approach_speed(),
+            reduced_mass: self.reduced_mass(),
+            // Kelvin–Voigt's linear spring: the secant stiffness k δ*ⁿ⁻¹ at
+            // the undamped maximum compression of this law.
+            linear_stiffness: self.stiffness * self.elastic_max_compression().powf(self.exponent - 1.0),
+        };
+        let contact = AnyLaw::new(kind, &parameters).map_err(|e| match e {
+            LawError::Invalid(error) => error,
+            // AnyLaw::new is given a known kind, so only invalid values remain.
+            LawError::UnknownLaw { .. } => KickError::InvalidParameter { name: "law", value: f64::NAN, requirement: "a known contact law" },
+        })?;
+        Ok(Scenario { contact, restitution_target: Some(restitution), ..*self })
+    }
+
+    /// The contact law in use.
+    pub fn contact_law(&self) -> AnyLaw {
+        self.contact
+    }
+
+    pub fn law_kind(&self) -> LawKind {
+        self.contact.kind()
+    }
+
+    /// Target restitution of a law other than the paper's.
+    pub fn restitution_target(&self) -> Option<f64> {
+        self.restitution_target
     }
 
     pub fn spec(&self) -> ScenarioSpec {
@@ -225,6 +286,8 @@ impl Scenario {
         for p in Parameter::ALL {
             spec.set(p, self.get(p));
         }
+        spec.law = Some(self.law_kind());
+        spec.restitution = self.restitution_target;
         spec
     }
 
@@ -247,6 +310,8 @@ impl Scenario {
     pub fn drive_force(&self) -> f64 {
         self.drive_force
     }
+    /// The paper's law (Eq. 20) with this scenario's k, c and n, whatever
+    /// law is in use (see [`Scenario::contact_law`]).
     pub fn law(&self) -> PowerLawContact {
         PowerLawContact {
             stiffness: self.stiffness,

@@ -76,6 +76,10 @@ struct RawExperiment {
     scenario: Option<Vec<RawNamed>>,
     table2: Option<Spanned<String>>,
     output: Option<RawOutput>,
+    /// Contact law of every scenario (default: the paper's).
+    law: Option<Spanned<String>>,
+    /// Target restitution of a law other than the paper's.
+    restitution: Option<Spanned<f64>>,
 }
 
 macro_rules! spec_struct {
@@ -205,7 +209,7 @@ impl Scenarios {
                     values[slot] = axis.values[(rest % n) as usize];
                     rest /= n;
                 }
-                Scenario::from_values(values)
+                Scenario::from_values(values)?.with_law(base.law_kind(), base.restitution_target())
             }
             Scenarios::Named { scenarios, .. } => Ok(scenarios[index as usize]),
             Scenarios::Sampled(sweep) => sweep.scenario(index),
@@ -364,7 +368,14 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     }
 
     let base_raw = raw.base.unwrap_or_default();
-    let base = build(&at, |p| base_raw.get(p), "base")?;
+    let law = match &raw.law {
+        Some(name) => kick_core::LawKind::from_name(name.get_ref()).map_err(|e| at.error(name.span(), "law", e.to_string()))?,
+        None => kick_core::LawKind::PowerLaw,
+    };
+    let restitution = raw.restitution.as_ref().map(|r| *r.get_ref());
+    let law_span = raw.restitution.as_ref().map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
+    let with_law = |s: Scenario| s.with_law(law, restitution).map_err(|e| at.error(law_span.clone(), "law", e.to_string()));
+    let base = with_law(build(&at, |p| base_raw.get(p), "base")?)?;
 
     let sources = [raw.sweep.is_some(), raw.scenario.is_some(), raw.table2.is_some()];
     if sources.iter().filter(|&&s| s).count() > 1 {
@@ -413,7 +424,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
             if names.contains(entry.name.get_ref()) {
                 return Err(at.error(entry.name.span(), &key, "scenario name used twice"));
             }
-            let scenario = build(&at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?;
+            let scenario = with_law(build(&at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?)?;
             names.push(entry.name.get_ref().clone());
             scenarios.push(scenario);
         }

@@ -20,10 +20,21 @@ exponent    uniform 1 .. 2
 drive_force 0 N with probability 1/2, else uniform 0 .. 1000 N";
 
 /// A sweep of `samples` random scenarios.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SampledSweep {
     pub samples: u64,
     pub seed: u64,
+    /// Contact law of every scenario, and the target restitution of a law
+    /// other than the paper's.
+    pub law: kick_core::LawKind,
+    pub restitution: Option<f64>,
+}
+
+impl SampledSweep {
+    /// A sweep with the paper's law.
+    pub fn new(samples: u64, seed: u64) -> SampledSweep {
+        SampledSweep { samples, seed, law: kick_core::LawKind::PowerLaw, restitution: None }
+    }
 }
 
 impl SampledSweep {
@@ -44,7 +55,8 @@ impl SampledSweep {
         let damping = uniform(0.0, 600.0);
         let exponent = uniform(1.0, 2.0);
         let drive_force = if uniform(0.0, 1.0) < 0.5 { 0.0 } else { uniform(0.0, 1000.0) };
-        Scenario::from_values([foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, drive_force])
+        Scenario::from_values([foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, drive_force])?
+            .with_law(self.law, self.restitution)
     }
 }
 
@@ -55,7 +67,7 @@ mod tests {
 
     #[test]
     fn scenarios_are_reproducible_distinct_and_in_range() {
-        let sweep = SampledSweep { samples: 1000, seed: 7 };
+        let sweep = SampledSweep::new(1000, 7);
         let mut driven = 0;
         for i in 0..sweep.samples {
             let a = sweep.scenario(i).unwrap();
@@ -68,6 +80,6 @@ mod tests {
         }
         // Half driven, within 4 binomial standard deviations (σ ≈ 16).
         assert!((436..=564).contains(&driven), "{driven}");
-        assert_ne!(sweep.scenario(0).unwrap(), SampledSweep { samples: 1, seed: 8 }.scenario(0).unwrap());
+        assert_ne!(sweep.scenario(0).unwrap(), SampledSweep::new(1, 8).scenario(0).unwrap());
     }
 }

@@ -1,0 +1,25 @@
+//! Experiment files choose the contact law for all their scenarios.
+
+use kick_core::LawKind;
+use std::path::Path;
+
+#[test]
+fn an_experiment_file_sets_the_law_of_every_scenario() {
+    let text = "name = \"hc\"\nsolver = \"auto\"\nlaw = \"hunt-crossley\"\nrestitution = 0.7\n\n[[sweep]]\nparameter = \"foot_mass\"\nvalues = [1.0, 3.0, 8.0]\n";
+    let experiment = kick_runner::experiment::parse(Path::new("hc.toml"), text).unwrap();
+    for i in 0..experiment.scenarios.len() {
+        let scenario = experiment.scenarios.scenario(i).unwrap();
+        assert_eq!(scenario.law_kind(), LawKind::HuntCrossley);
+        assert_eq!(scenario.restitution_target(), Some(0.7));
+    }
+}
+
+#[test]
+fn a_bad_law_names_the_file_line_and_key() {
+    let text = "name = \"hc\"\nlaw = \"rubber\"\n";
+    let error = kick_runner::experiment::parse(Path::new("bad.toml"), text).unwrap_err().to_string();
+    assert!(error.contains("bad.toml:2") && error.contains("law") && error.contains("rubber"), "{error}");
+    let text = "name = \"hc\"\nlaw = \"flores\"\n";
+    let error = kick_runner::experiment::parse(Path::new("bad.toml"), text).unwrap_err().to_string();
+    assert!(error.contains("restitution"), "{error}");
+}
