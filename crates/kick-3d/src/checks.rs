@@ -12,46 +12,8 @@ use crate::Kick3dError;
 use kick_compliant::Accurate;
 use kick_core::{Scenario, Solver};
 use parry3d_f64::math::Vec3;
-use serde::Serialize;
 
-/// One check row (same fields as `kick_checks::CheckRow`).
-#[derive(Debug, Clone, Serialize)]
-pub struct CheckRow {
-    pub name: String,
-    pub equation: String,
-    pub expected: f64,
-    pub actual: f64,
-    pub error: f64,
-    pub tolerance: f64,
-    pub passed: bool,
-}
-
-impl CheckRow {
-    pub fn compare(name: impl Into<String>, equation: &str, expected: f64, actual: f64, scale: f64, tolerance: f64) -> CheckRow {
-        let error = (actual - expected).abs() / scale;
-        CheckRow {
-            name: name.into(),
-            equation: equation.into(),
-            expected,
-            actual,
-            error,
-            tolerance,
-            passed: expected.is_finite() && actual.is_finite() && error.is_finite() && error <= tolerance,
-        }
-    }
-    /// A check that could not be computed: it fails and says why.
-    pub fn failed(name: impl Into<String>, equation: &str, why: &Kick3dError) -> CheckRow {
-        CheckRow {
-            name: format!("{} (failed: {why})", name.into()),
-            equation: equation.into(),
-            expected: f64::NAN,
-            actual: f64::NAN,
-            error: f64::INFINITY,
-            tolerance: 0.0,
-            passed: false,
-        }
-    }
-}
+pub use kick_core::check::CheckRow;
 
 /// The solvers agree to 1e-9 relative: both integrate at rtol 1e-12 and
 /// locate events to rounding; 1e-9 is the accuracy `accurate` promises.

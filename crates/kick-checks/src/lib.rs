@@ -19,55 +19,19 @@ use kick_impulse::ImpulseModel;
 use kick_restitution::{
     inelastic_exit, moving_wall_ball_speed, vanishing_foot_ball_speed, RestitutionModel,
 };
-use serde::Serialize;
 
-/// One check: a prediction of one model level (`expected`) against another
-/// level's result (`actual`).
-#[derive(Debug, Clone, Serialize)]
-pub struct CheckRow {
-    pub name: String,
-    /// The equation(s) of the paper the check tests, e.g. "Eq. 37".
-    pub equation: String,
-    pub expected: f64,
-    pub actual: f64,
-    /// |actual − expected| / scale (the scale is given per check).
-    pub error: f64,
-    pub tolerance: f64,
-    pub passed: bool,
-}
+pub use kick_core::check::CheckRow;
 
-impl CheckRow {
-    fn compare(
-        name: impl Into<String>,
-        equation: &str,
-        expected: f64,
-        actual: f64,
-        scale: f64,
-        tolerance: f64,
-    ) -> CheckRow {
-        let error = (actual - expected).abs() / scale;
-        CheckRow {
-            name: name.into(),
-            equation: equation.into(),
-            expected,
-            actual,
-            error,
-            tolerance,
-            passed: expected.is_finite() && actual.is_finite() && error.is_finite() && error <= tolerance,
-        }
-    }
-
-    /// A check that could not be computed: it fails and says why.
-    fn broken(name: impl Into<String>, equation: &str, expected: f64, tolerance: f64, why: &KickError) -> CheckRow {
-        CheckRow {
-            name: format!("{} [not computed: {why}]", name.into()),
-            equation: equation.into(),
-            expected,
-            actual: f64::NAN,
-            error: f64::INFINITY,
-            tolerance,
-            passed: false,
-        }
+/// A check that could not be computed: it fails and says why.
+fn broken(name: impl Into<String>, equation: &str, expected: f64, tolerance: f64, why: &KickError) -> CheckRow {
+    CheckRow {
+        name: format!("{} [not computed: {why}]", name.into()),
+        equation: equation.into(),
+        expected,
+        actual: f64::NAN,
+        error: f64::INFINITY,
+        tolerance,
+        passed: false,
     }
 }
 
@@ -129,7 +93,7 @@ pub fn impulse_model(solver: &dyn Solver) -> Vec<CheckRow> {
         let outcome = match solver.solve(&s) {
             Ok(o) => o,
             Err(e) => {
-                rows.push(CheckRow::broken(name("v_b+"), eq, f64::NAN, SOLVER_ACCURACY, &e));
+                rows.push(broken(name("v_b+"), eq, f64::NAN, SOLVER_ACCURACY, &e));
                 continue;
             }
         };
@@ -144,7 +108,7 @@ pub fn impulse_model(solver: &dyn Solver) -> Vec<CheckRow> {
                 rows.push(CheckRow::compare(name("v_b+"), eq, exit.ball, outcome.v_ball_out, v0, SOLVER_ACCURACY));
                 rows.push(CheckRow::compare(name("v_f+"), eq, exit.foot, outcome.v_foot_out, v0, SOLVER_ACCURACY));
             }
-            Err(e) => rows.push(CheckRow::broken(name("v_b+"), eq, f64::NAN, SOLVER_ACCURACY, &e)),
+            Err(e) => rows.push(broken(name("v_b+"), eq, f64::NAN, SOLVER_ACCURACY, &e)),
         }
     }
     rows
@@ -179,7 +143,7 @@ pub fn restitution_model(solver: &dyn Solver) -> Vec<CheckRow> {
                 rows.push(CheckRow::compare(name("v_b+"), eq, exit.ball, outcome.v_ball_out, v0, SOLVER_ACCURACY));
                 rows.push(CheckRow::compare(name("v_f+"), eq, exit.foot, outcome.v_foot_out, v0, SOLVER_ACCURACY));
             }
-            Err(e) => rows.push(CheckRow::broken(name("v_b+"), eq, f64::NAN, SOLVER_ACCURACY, &e)),
+            Err(e) => rows.push(broken(name("v_b+"), eq, f64::NAN, SOLVER_ACCURACY, &e)),
         }
     }
     rows
@@ -226,7 +190,7 @@ pub fn moving_wall(solver: &dyn Solver) -> Vec<CheckRow> {
     })();
     let [e_inf, slope, curvature] = match wall {
         Ok(x) => x,
-        Err(e) => return vec![CheckRow::broken("moving wall: e of the wall problem", eq, f64::NAN, 0.0, &e)],
+        Err(e) => return vec![broken("moving wall: e of the wall problem", eq, f64::NAN, 0.0, &e)],
     };
     let v_wall = moving_wall_ball_speed(e_inf, base.foot_speed(), base.ball_speed());
     let a = 1.0 + e_inf + slope;
@@ -244,7 +208,7 @@ pub fn moving_wall(solver: &dyn Solver) -> Vec<CheckRow> {
                 rows.push(CheckRow::compare(name, eq, predicted, o.v_ball_out, v0, tolerance));
                 gaps.push((ratio, (v_wall - o.v_ball_out) / v0));
             }
-            Err(e) => rows.push(CheckRow::broken(name, eq, v_wall, tolerance, &e)),
+            Err(e) => rows.push(broken(name, eq, v_wall, tolerance, &e)),
         }
     }
     for pair in gaps.windows(2) {
@@ -281,7 +245,7 @@ pub fn elastic_limit(solver: &dyn Solver) -> Vec<CheckRow> {
             let name = format!("elastic limit e = 1: {label}");
             match solver.solve(&s) {
                 Ok(o) => CheckRow::compare(name, eq, 1.0, o.restitution, 1.0, SOLVER_ACCURACY),
-                Err(e) => CheckRow::broken(name, eq, 1.0, SOLVER_ACCURACY, &e),
+                Err(e) => broken(name, eq, 1.0, SOLVER_ACCURACY, &e),
             }
         })
         .collect()
@@ -308,7 +272,7 @@ pub fn inelastic_limit(solver: &dyn Solver) -> Vec<CheckRow> {
         let s = match linear.with(Parameter::Damping, zeta * critical) {
             Ok(s) => s,
             Err(e) => {
-                rows.push(CheckRow::broken(label, eq, 0.0, 0.0, &e));
+                rows.push(broken(label, eq, 0.0, 0.0, &e));
                 continue;
             }
         };
@@ -345,7 +309,7 @@ pub fn inelastic_limit(solver: &dyn Solver) -> Vec<CheckRow> {
                     s.ball_mass() / m * bound + SOLVER_ACCURACY,
                 ));
             }
-            Err(e) => rows.push(CheckRow::broken(label, eq, 0.0, 0.0, &e)),
+            Err(e) => rows.push(broken(label, eq, 0.0, 0.0, &e)),
         }
     }
     rows
@@ -374,7 +338,7 @@ pub fn stiff_limit(solver: &dyn Solver) -> Vec<CheckRow> {
     let e = STIFF_RESTITUTION;
     let zeta = match roots::brent(|z| linear_restitution(z) - e, 1e-9, 1.0 - 1e-9, 1e-15, 200) {
         Some(root) => root.x,
-        None => return vec![CheckRow::broken("stiff limit: zeta for e", eq, e, 0.0, &KickError::Integration { time: 0.0, reason: "no damping ratio gives this e".into() })],
+        None => return vec![broken("stiff limit: zeta for e", eq, e, 0.0, &KickError::Integration { time: 0.0, reason: "no damping ratio gives this e".into() })],
     };
     let linear = scenario(&[(Parameter::Exponent, 1.0)]);
     let mu = linear.reduced_mass();
@@ -398,7 +362,7 @@ pub fn stiff_limit(solver: &dyn Solver) -> Vec<CheckRow> {
                 rows.push(CheckRow::compare(format!("stiff limit contact time ~ k^-1/2 (s): {label}"), eq, contact, o.contact_time, contact, SOLVER_ACCURACY));
                 rows.push(CheckRow::compare(format!("stiff limit max compression ~ k^-1/2 (m): {label}"), eq, compression, o.max_compression, compression, SOLVER_ACCURACY));
             }
-            Err(err) => rows.push(CheckRow::broken(label, eq, restitution_impulse, SOLVER_ACCURACY, &err)),
+            Err(err) => rows.push(broken(label, eq, restitution_impulse, SOLVER_ACCURACY, &err)),
         }
     }
     rows
@@ -423,7 +387,7 @@ pub fn vanishing_foot(solver: &dyn Solver) -> Vec<CheckRow> {
             let tolerance = 2.0 * m_f / (m_f + m_b) + SOLVER_ACCURACY;
             match base.with(Parameter::FootMass, m_f).and_then(|s| solver.solve(&s)) {
                 Ok(o) => CheckRow::compare(name, eq, expected, o.v_ball_out, base.approach_speed(), tolerance),
-                Err(e) => CheckRow::broken(name, eq, expected, tolerance, &e),
+                Err(e) => broken(name, eq, expected, tolerance, &e),
             }
         })
         .collect()

@@ -9,7 +9,7 @@ use kick_runner::figures::{save_grid, Panel, Series};
 use kick_runner::h5::{write_f64_attr, write_strings, Column, OutcomeSet, SweepData, SweepWriter};
 use kick_runner::sample::SampledSweep;
 use kick_runner::Provenance;
-use plotters::prelude::{RGBColor, SeriesLabelPosition};
+use plotters::prelude::SeriesLabelPosition;
 use rayon::prelude::*;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -226,15 +226,7 @@ fn draw(path: &std::path::Path, out: &std::path::Path) -> Result<Vec<String>, St
     let set = data.set("bench").map_err(|e| e.to_string())?;
     let error = set.column("max_error").ok_or("no max_error")?;
     let seconds = set.column("seconds_per_scenario").ok_or("no seconds_per_scenario")?;
-    let colors = [
-        RGBColor(0, 0, 0),
-        RGBColor(31, 119, 180),
-        RGBColor(214, 39, 40),
-        RGBColor(44, 160, 44),
-        RGBColor(148, 103, 189),
-        RGBColor(255, 127, 14),
-        RGBColor(23, 190, 207),
-    ];
+    let colors = kick_runner::figures::COLORS;
     let mut solvers: Vec<&str> = Vec::new();
     for n in &names {
         if !solvers.contains(&n.as_str()) {

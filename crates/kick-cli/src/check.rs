@@ -13,15 +13,7 @@ pub struct Args {
 pub fn rows() -> Vec<CheckRow> {
     let mut rows = run_all();
     // The 3D model's checks (kick-3d) in the same row shape.
-    rows.extend(kick_3d::checks::checks().into_iter().map(|r| CheckRow {
-        name: r.name,
-        equation: r.equation,
-        expected: r.expected,
-        actual: r.actual,
-        error: r.error,
-        tolerance: r.tolerance,
-        passed: r.passed,
-    }));
+    rows.extend(kick_3d::checks::checks());
     rows
 }
 

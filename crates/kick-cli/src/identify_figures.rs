@@ -4,18 +4,10 @@
 use kick_identify::laws::LawComparison;
 use kick_identify::profile::{IdentifiabilityStudy, Profile};
 use kick_runner::figures::{save_grid, Panel, Series};
-use plotters::style::RGBColor;
 use plotters::prelude::SeriesLabelPosition;
 use std::path::{Path, PathBuf};
 
-const COLORS: [RGBColor; 6] = [
-    RGBColor(0, 0, 0),
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-];
+use kick_runner::figures::COLORS;
 
 fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Panel {
     Panel {

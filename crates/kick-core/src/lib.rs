@@ -5,6 +5,7 @@
 //! (`shared/paper/millisecond-physics-of-a-soccer-kick.md`).
 
 pub mod error;
+pub mod check;
 pub mod law;
 pub mod laws;
 pub mod models;

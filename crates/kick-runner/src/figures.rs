@@ -80,7 +80,9 @@ pub struct Panel {
     pub legend: SeriesLabelPosition,
 }
 
-const COLORS: [RGBColor; 6] = [
+/// The palette of every figure: black first (a reference curve), then tab10.
+pub const COLORS: [RGBColor; 7] = [
+    RGBColor(0, 0, 0),
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
     RGBColor(44, 160, 44),
@@ -89,8 +91,9 @@ const COLORS: [RGBColor; 6] = [
     RGBColor(23, 190, 207),
 ];
 
-fn color(i: usize) -> RGBColor {
-    COLORS[i % COLORS.len()]
+/// Colour of the i-th curve of a figure (skipping the reference black).
+pub fn color(i: usize) -> RGBColor {
+    COLORS[1 + i % (COLORS.len() - 1)]
 }
 
 fn draw_err(figure: &str) -> impl Fn(String) -> FigureError + '_ {

@@ -9,17 +9,8 @@ use kick_core::paper::{TABLE2, TABLE2_DECIMALS};
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// One cross-model check, as reported (mirrors `kick_checks::CheckRow`).
-#[derive(Debug, Clone, PartialEq)]
-pub struct CheckLine {
-    pub name: String,
-    pub equation: String,
-    pub expected: f64,
-    pub actual: f64,
-    pub error: f64,
-    pub tolerance: f64,
-    pub passed: bool,
-}
+/// One cross-model check, as reported.
+pub type CheckLine = kick_core::check::CheckRow;
 
 #[derive(Debug, thiserror::Error)]
 pub enum ReportError {
