@@ -107,6 +107,9 @@ pub fn run(args: Args) -> CliResult {
         for path in write_sweeps(dir, &leg, &pose, &impact, &base)? {
             eprintln!("wrote {}", path.display());
         }
+        for path in draw_figures(dir, &dir.join("figures"))? {
+            eprintln!("wrote {}", path.display());
+        }
     }
     match args.format {
         Format::Json => {
@@ -169,6 +172,61 @@ fn grid_axes() -> (Vec<f64>, Vec<f64>) {
 /// Effective foot masses of the exit-speed figure: 0.2 to 20 kg, log-spaced.
 fn mass_axis() -> Vec<f64> {
     (0..=60).map(|i| 0.2 * 100f64.powf(f64::from(i) / 60.0)).collect()
+}
+
+/// The leg's figures, drawn from the two result files (not re-computed):
+/// effective mass against knee flexion for several ankle angles (locked and
+/// free ankle), and the 1D exit speed against effective mass (Section 14.1).
+fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<std::path::PathBuf>, String> {
+    use kick_runner::figures::{color, save_grid, Panel, Series};
+    use kick_runner::SweepData;
+    use plotters::prelude::{RGBColor, SeriesLabelPosition};
+    let grid = SweepData::read(&results.join("leg_effective_mass.h5")).map_err(|e| e.to_string())?;
+    let knee = grid.parameter("knee").map_err(|e| e.to_string())?;
+    let ankle = grid.parameter("ankle").map_err(|e| e.to_string())?;
+    let mut panels = Vec::new();
+    for (set, title) in [("locked-ankle", "Locked ankle"), ("free-ankle", "Free ankle")] {
+        let mass = grid.set(set).map_err(|e| e.to_string())?.column("effective_mass").ok_or("no effective_mass column")?;
+        let series = [0.0, 30.0, 60.0, 90.0]
+            .iter()
+            .enumerate()
+            .map(|(i, &a)| {
+                let (x, y): (Vec<f64>, Vec<f64>) =
+                    knee.iter().zip(ankle).zip(mass).filter(|((_, &an), _)| an == a).map(|((&k, _), &m)| (k, m)).unzip();
+                Series::line(&format!("ankle {a:.0}°"), color(i), &x, &y)
+            })
+            .collect();
+        panels.push(Panel {
+            title: format!("{title}: effective mass at the instep (Eq. 11)"),
+            x_label: "knee flexion (deg)".into(),
+            y_label: "effective foot mass m_eff (kg)".into(),
+            log_x: false,
+            series,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+        });
+    }
+    let mut written = save_grid(out, "leg_effective_mass", "Articulated leg (de Leva 1996 segments)", (1, 2), &panels)
+        .map_err(|e| e.to_string())?;
+    let speeds = SweepData::read(&results.join("leg_exit_speed.h5")).map_err(|e| e.to_string())?;
+    let foot_mass = speeds.parameter("foot_mass").map_err(|e| e.to_string())?;
+    let set = speeds.set("accurate").map_err(|e| e.to_string())?;
+    let v = set.column("v_ball_out").ok_or("no v_ball_out column")?;
+    let bound = set.column("elastic_bound_v_ball_out").ok_or("no elastic bound column")?;
+    let panel = Panel {
+        title: "Exit speed against effective foot mass (baseline contact)".into(),
+        x_label: "effective foot mass m_f (kg, log scale)".into(),
+        y_label: "ball exit speed v_b+ (m/s)".into(),
+        log_x: true,
+        series: vec![
+            Series::line("1D model (accurate)", color(0), foot_mass, v),
+            Series::line("perfectly elastic bound (Eq. 38, e = 1)", RGBColor(0, 0, 0), foot_mass, bound).dashed(),
+        ],
+        y_from_zero: true,
+        legend: SeriesLabelPosition::LowerRight,
+    };
+    written.extend(save_grid(out, "leg_exit_speed", "Diminishing returns of effective mass", (1, 1), &[panel]).map_err(|e| e.to_string())?);
+    Ok(written)
 }
 
 /// Figure data through kick-runner's sweep writer: parameters and outcome
