@@ -278,11 +278,7 @@ impl Dynamics {
 
     /// One classical RK4 step (used only below Dop853's step-size floor).
     pub fn rk4_step(&self, y: &State, h: f64) -> State {
-        let k1 = self.derivative(y);
-        let k2 = self.derivative(&(y + k1 * (0.5 * h)));
-        let k3 = self.derivative(&(y + k2 * (0.5 * h)));
-        let k4 = self.derivative(&(y + k3 * h));
-        y + (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0)
+        kick_compliant::events::rk4_step(|y| self.derivative(y), y, h)
     }
 
     pub fn ball_translation_energy(&self, y: &State) -> f64 {

@@ -9,18 +9,6 @@ use std::path::{Path, PathBuf};
 
 use kick_runner::figures::COLORS;
 
-fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Panel {
-    Panel {
-        title: title.into(),
-        x_label: x_label.into(),
-        y_label: y_label.into(),
-        log_x: false,
-        series,
-        y_from_zero: true,
-        legend: SeriesLabelPosition::UpperRight,
-    }
-}
-
 /// `laws.png/svg`: each Table 2 scenario's force pulse under every law, and
 /// the peak forces side by side.
 pub fn laws(all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, String> {
@@ -39,7 +27,7 @@ pub fn laws(all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, String> {
                 if r.law == kick_core::laws::LawKind::PowerLaw { s } else { s.dashed() }
             })
             .collect();
-        panels.push(panel(&c.name, "time (ms)", "force (kN)", series));
+        panels.push(Panel::new(&c.name, "time (ms)", "force (kN)", series));
     }
     if let Some(first) = all.first() {
         let x: Vec<f64> = (1..=all.len()).map(|i| i as f64).collect();
@@ -52,7 +40,7 @@ pub fn laws(all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, String> {
                 Series::line("", COLORS[k % COLORS.len()], &x, &y).with_markers()
             })
             .collect::<Vec<_>>();
-        panels.push(panel("Peak force per Table 2 row (1 = baseline … 8)", "Table 2 row", "peak force (kN)", series));
+        panels.push(Panel::new("Peak force per Table 2 row (1 = baseline … 8)", "Table 2 row", "peak force (kN)", series));
     }
     save_grid(dir, "laws", "Contact laws on Table 2's scenarios (same restitution target as the paper's law)", (3, 3), &panels)
         .map_err(|e| e.to_string())
@@ -71,7 +59,7 @@ pub fn identifiability(study: &IdentifiabilityStudy, dir: &Path) -> Result<Vec<P
         for p in profiles.iter() {
             let (x, y) = delta_chi_square(p);
             let one: Vec<f64> = x.iter().map(|_| 1.0).collect();
-            let mut pnl = panel(
+            let mut pnl = Panel::new(
                 &format!("{}: {}", p.parameter.name(), source),
                 &format!("{} / truth", p.parameter.name()),
                 "Δχ² (others re-fitted)",

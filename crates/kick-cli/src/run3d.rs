@@ -8,7 +8,7 @@ use kick_3d::sweep::{Experiment3d, SweepPoint, COLUMNS};
 use kick_runner::figures::{save_grid, Panel, Series};
 use kick_runner::h5::{Column, OutcomeSet, SweepWriter};
 use kick_runner::Provenance;
-use plotters::prelude::{RGBColor, SeriesLabelPosition};
+use plotters::prelude::RGBColor;
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args, Debug)]
@@ -23,18 +23,6 @@ pub struct Args {
 
 const BLUE: RGBColor = RGBColor(31, 119, 180);
 const RED: RGBColor = RGBColor(214, 39, 40);
-
-fn panel(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Panel {
-    Panel {
-        title: title.into(),
-        x_label: x_label.into(),
-        y_label: y_label.into(),
-        log_x: false,
-        series,
-        y_from_zero: true,
-        legend: SeriesLabelPosition::UpperRight,
-    }
-}
 
 fn write_h5(path: &Path, file: &Path, text: &str, e: &Experiment3d, points: &[SweepPoint]) -> Result<PathBuf, String> {
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("3d");
@@ -60,12 +48,12 @@ fn figures(dir: &Path, name: &str, e: &Experiment3d, points: &[SweepPoint]) -> R
     let rpm: Vec<f64> = points.iter().map(|p| p.spin_rpm).collect();
     let x_label = format!("{} ({})", e.axis.name().replace('_', " "), e.axis.unit());
     let mut panels = vec![
-        panel("ball speed", &x_label, "speed (m/s)", vec![Series::line("accurate-3d", BLUE, &x, &speed).with_markers()]),
-        panel("ball spin", &x_label, "spin (rpm)", vec![Series::line("accurate-3d", RED, &x, &rpm).with_markers()]),
+        Panel::new("ball speed", &x_label, "speed (m/s)", vec![Series::line("accurate-3d", BLUE, &x, &speed).with_markers()]),
+        Panel::new("ball spin", &x_label, "spin (rpm)", vec![Series::line("accurate-3d", RED, &x, &rpm).with_markers()]),
     ];
     let mut layout = (1, 2);
     if e.axis == kick_3d::sweep::Axis::Offset {
-        panels.push(panel("speed-spin trade-off (offset sweep)", "spin (rpm)", "speed (m/s)", vec![Series::line("accurate-3d", BLUE, &rpm, &speed).with_markers()]));
+        panels.push(Panel::new("speed-spin trade-off (offset sweep)", "spin (rpm)", "speed (m/s)", vec![Series::line("accurate-3d", BLUE, &rpm, &speed).with_markers()]));
         layout = (1, 3);
     }
     save_grid(dir, name, &e.description, layout, &panels).map_err(|err| err.to_string())

@@ -3,32 +3,57 @@ use kick_compliant::SolverChoice;
 use kick_core::{Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, OBSERVABLES};
 use serde_json::{Map, Value};
 
+/// The eight parameters of Table 1 as flags; left out, each takes the baseline.
 #[derive(clap::Args, Debug)]
-pub struct Args {
+pub struct ScenarioArgs {
     /// Effective foot mass m_f, kg [3.0]
     #[arg(long, allow_negative_numbers = true)]
-    foot_mass: Option<f64>,
+    pub foot_mass: Option<f64>,
     /// Ball mass m_b, kg [0.43]
     #[arg(long, allow_negative_numbers = true)]
-    ball_mass: Option<f64>,
+    pub ball_mass: Option<f64>,
     /// Foot speed before contact v_f⁻, m/s [22]
     #[arg(long, allow_negative_numbers = true)]
-    foot_speed: Option<f64>,
-    /// Ball speed before contact v_b⁻, m/s [0]
+    pub foot_speed: Option<f64>,
+    /// Ball speed before contact v_b⁻ (along the foot's path in 3D), m/s [0]
     #[arg(long, allow_negative_numbers = true)]
-    ball_speed: Option<f64>,
+    pub ball_speed: Option<f64>,
     /// Stiffness k, N/m^n [4.2e5]
     #[arg(long, allow_negative_numbers = true)]
-    stiffness: Option<f64>,
+    pub stiffness: Option<f64>,
     /// Damping c, N s/m [120]
     #[arg(long, allow_negative_numbers = true)]
-    damping: Option<f64>,
+    pub damping: Option<f64>,
     /// Exponent n [1.35]
     #[arg(long, allow_negative_numbers = true)]
-    exponent: Option<f64>,
-    /// Drive force on the foot during contact, N [0]
+    pub exponent: Option<f64>,
+    /// Drive force on the foot along its velocity during contact, N [0]
     #[arg(long, allow_negative_numbers = true)]
-    drive_force: Option<f64>,
+    pub drive_force: Option<f64>,
+}
+
+impl ScenarioArgs {
+    /// The parameters given, with the paper's law.
+    pub fn spec(&self) -> ScenarioSpec {
+        ScenarioSpec {
+            foot_mass: self.foot_mass,
+            ball_mass: self.ball_mass,
+            foot_speed: self.foot_speed,
+            ball_speed: self.ball_speed,
+            stiffness: self.stiffness,
+            damping: self.damping,
+            exponent: self.exponent,
+            drive_force: self.drive_force,
+            law: None,
+            restitution: None,
+        }
+    }
+}
+
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    scenario: ScenarioArgs,
     /// Contact law: power-law (the paper's, Eq. 20), hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt
     #[arg(long, default_value = "power-law")]
     law: String,
@@ -50,16 +75,9 @@ pub struct Args {
 impl Args {
     fn spec(&self) -> Result<ScenarioSpec, String> {
         Ok(ScenarioSpec {
-            foot_mass: self.foot_mass,
-            ball_mass: self.ball_mass,
-            foot_speed: self.foot_speed,
-            ball_speed: self.ball_speed,
-            stiffness: self.stiffness,
-            damping: self.damping,
-            exponent: self.exponent,
-            drive_force: self.drive_force,
             law: Some(kick_core::LawKind::from_name(&self.law).map_err(|e| e.to_string())?),
             restitution: self.restitution,
+            ..self.scenario.spec()
         })
     }
 }

@@ -2,36 +2,13 @@
 
 use crate::output::{json, CliResult, Format};
 use kick_3d::{FootShape, Kick3d, Kick3dSpec, Outcome3d, Solver3d};
-use kick_core::ScenarioSpec;
 use serde_json::{Map, Value};
 use std::time::Instant;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Effective foot mass m_f, kg [3.0]
-    #[arg(long, allow_negative_numbers = true)]
-    foot_mass: Option<f64>,
-    /// Ball mass m_b, kg [0.43]
-    #[arg(long, allow_negative_numbers = true)]
-    ball_mass: Option<f64>,
-    /// Foot speed before contact v_f⁻, m/s [22]
-    #[arg(long, allow_negative_numbers = true)]
-    foot_speed: Option<f64>,
-    /// Ball speed before contact v_b⁻ along x, m/s [0]
-    #[arg(long, allow_negative_numbers = true)]
-    ball_speed: Option<f64>,
-    /// Stiffness k, N/m^n [4.2e5]
-    #[arg(long, allow_negative_numbers = true)]
-    stiffness: Option<f64>,
-    /// Damping c, N s/m [120]
-    #[arg(long, allow_negative_numbers = true)]
-    damping: Option<f64>,
-    /// Exponent n [1.35]
-    #[arg(long, allow_negative_numbers = true)]
-    exponent: Option<f64>,
-    /// Drive force on the foot along its velocity during contact, N [0]
-    #[arg(long, allow_negative_numbers = true)]
-    drive_force: Option<f64>,
+    #[command(flatten)]
+    scenario: crate::simulate::ScenarioArgs,
     /// Lateral offset of the foot's line of motion from the ball centre, m [0]
     #[arg(long, allow_negative_numbers = true)]
     offset: Option<f64>,
@@ -88,20 +65,11 @@ pub struct Args {
 
 impl Args {
     fn kick(&self) -> Result<Kick3d, String> {
-        let base = ScenarioSpec {
-            foot_mass: self.foot_mass,
-            ball_mass: self.ball_mass,
-            foot_speed: self.foot_speed,
-            ball_speed: self.ball_speed,
-            stiffness: self.stiffness,
-            damping: self.damping,
-            exponent: self.exponent,
-            drive_force: self.drive_force,
-            // The 3D model's normal force is the paper's law (Eq. 20).
-            law: None,
-            restitution: None,
-        }
-        .build()
+        // The 3D model's normal force is the paper's law (Eq. 20).
+        let base = self
+            .scenario
+            .spec()
+            .build()
         .map_err(|e| e.to_string())?;
         let three = |v: &Option<Vec<f64>>, name: &str| -> Result<Option<[f64; 3]>, String> {
             match v.as_deref() {

@@ -44,6 +44,17 @@ pub trait ContactSystem<const N: usize>: Copy {
     fn units(&self, scales: &Scales) -> SVector<f64, N>;
 }
 
+/// One classical RK4 step of size `h` for ẏ = f(y) (the paper's method, and
+/// the engine's step below the adaptive methods' floor).
+#[inline]
+pub fn rk4_step<const N: usize>(f: impl Fn(&SVector<f64, N>) -> SVector<f64, N>, y: &SVector<f64, N>, h: f64) -> SVector<f64, N> {
+    let k1 = f(y);
+    let k2 = f(&(y + k1 * (0.5 * h)));
+    let k3 = f(&(y + k2 * (0.5 * h)));
+    let k4 = f(&(y + k3 * h));
+    y + (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0)
+}
+
 /// Units of the scenario, from the undamped, undriven contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Scales {
@@ -419,12 +430,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         // Rk4 rounds the step count up and could overshoot τ1).
         if h <= 1e3 * f64::EPSILON * tau0.abs() || matches!(self.method, Method::Rk4 { .. }) {
             self.evaluations += 4;
-            let f = |y: &SVector<f64, N>| self.scaled.derivative(tau0, y);
-            let k1 = f(&y0);
-            let k2 = f(&(y0 + k1 * (0.5 * h)));
-            let k3 = f(&(y0 + k2 * (0.5 * h)));
-            let k4 = f(&(y0 + k3 * h));
-            return Ok(y0 + (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0));
+            return Ok(rk4_step(|y| self.scaled.derivative(tau0, y), &y0, h));
         }
         let steps = integrate(
             self.method, Plain(self.scaled), tau0, tau1, y0, h, h, self.scaled.time, &mut self.evaluations,

@@ -82,11 +82,7 @@ impl<L: ContactLaw + Copy> ContactOde<L> {
     /// One classical RK4 step of size h.
     #[inline]
     pub fn rk4_step(&self, y: &State, h: f64) -> State {
-        let k1 = self.derivative(y);
-        let k2 = self.derivative(&(y + k1 * (0.5 * h)));
-        let k3 = self.derivative(&(y + k2 * (0.5 * h)));
-        let k4 = self.derivative(&(y + k3 * h));
-        y + (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0)
+        crate::events::rk4_step(|y| self.derivative(y), y, h)
     }
 
     /// δ̈ (Eq. 16).

@@ -80,6 +80,21 @@ pub struct Panel {
     pub legend: SeriesLabelPosition,
 }
 
+impl Panel {
+    /// Linear axes from zero, legend at the upper right.
+    pub fn new(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Panel {
+        Panel {
+            title: title.into(),
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            log_x: false,
+            series,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+        }
+    }
+}
+
 /// The palette of every figure: black first (a reference curve), then tab10.
 pub const COLORS: [RGBColor; 7] = [
     RGBColor(0, 0, 0),
