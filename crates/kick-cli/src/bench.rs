@@ -179,8 +179,10 @@ impl Measured<'_> {
              | scene | path | why it is exact |\n| --- | --- | --- |\n\
              | no drive, c = 0 | `closed-form` | energy integral (Eq. 33), contact time from the Beta function |\n\
              | no drive, n = 1 | `closed-form` | damped oscillator to δ_max, undamped quarter swing back |\n\
-             | no drive | `reduced-return` | Dop853 on δ up to δ_max (Eq. 18), the undamped return in closed form |\n\
-             | drive | `reduced` | Dop853 on δ through the whole contact |\n\
+             | the paper's law, otherwise | `series` | power series through compression (a Frobenius double series in t and t^(n+1) at \
+             first touch, Taylor steps after), the undamped return from its energy integral (Beta function, or tanh–sinh \
+             quadrature under a drive) |\n\
+             | another contact law | `reduced` | Dop853 on δ (Eq. 18) through the whole contact |\n\
              | a time history is wanted | `accurate` | full state of Eq. 47, every sample an integrator point |\n\n\
              ## Work–precision\n\n![work–precision]({figure})\n\n\
              Error: the largest relative error over v_b⁺, v_f⁺, ratio, peak force, contact time, δ_max, impulse and e \
@@ -196,8 +198,9 @@ impl Measured<'_> {
              ## Where each solver is trustworthy\n\n\
              Held by `tests/stress.rs` (k 1e2–1e12, n 1–3, ζ 0–50, m_f/m_b 1e-3–1e6, V0 1e-3–1e3 m/s, drives to 1e4 N, \
              grazing contact) and `tests/accurate_vs_closed_forms.rs`:\n\n\
-             - `closed-form`, `reduced-return`, `reduced`, `auto`: agree with each other and the closed forms to 1e-8 \
-             over the whole box; against the closed forms on the paper's range, 1e-9 (measured ~1e-11).\n\
+             - `closed-form`, `series`, `reduced-return`, `reduced`, `auto`: agree with each other and the closed forms to \
+             1e-8 over the whole box; against the closed forms and `accurate` at 1e-14 on the paper's range and the sweep's \
+             box, 1e-9 (measured ~1e-11; `tests/series.rs`).\n\
              - `accurate`, `dop853`, `dopri5`, `rk4-events` carry x_f, x_b, v_f, v_b, whose differences make δ and δ̇: \
              their error grows with |v|/V0 and |v| t_c/δ_max (grazing contact at high speed, long shallow contacts), \
              and under a drive with (μ/m_f) F δ_max / (½ μ V0²); within 1e-8 times that conditioning.\n\

@@ -54,7 +54,7 @@ pub fn run(args: Args) -> CliResult {
     // The provenance keeps what made the file: the command and the ranges.
     let text = format!(
         "# kick sweep --samples {} --seed {} --solver {} --dt {} --law {} --restitution {:?}\n# ranges:\n{}\n# auto paths: no drive and c = 0 or n = 1 -> closed-form; \
-         no drive -> reduced-return; drive -> reduced\n",
+         otherwise the paper's law -> series; another law -> reduced\n",
         args.samples,
         args.seed,
         args.solver,

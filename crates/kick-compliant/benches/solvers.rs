@@ -12,7 +12,7 @@ use std::hint::black_box;
 fn table2(c: &mut Criterion) {
     let scenarios: Vec<_> = models::table2().into_iter().map(|(_, s)| s).collect();
     let mut group = c.benchmark_group("table2_per_8_scenarios");
-    for name in ["seed-rk4", "rk4-events", "accurate", "dopri5", "reduced", "reduced-return", "auto"] {
+    for name in ["seed-rk4", "rk4-events", "accurate", "dopri5", "reduced", "reduced-return", "series", "auto"] {
         let solver = SolverChoice::from_name(name, 5e-6).expect("known solver");
         group.bench_with_input(BenchmarkId::from_parameter(name), &scenarios, |b, scenarios| {
             b.iter(|| {
@@ -28,7 +28,7 @@ fn table2(c: &mut Criterion) {
 fn closed_forms(c: &mut Criterion) {
     let scenarios: Vec<_> = models::elastic().into_iter().chain(models::linear()).map(|(_, s)| s).collect();
     let mut group = c.benchmark_group("closed_form_models_per_11_scenarios");
-    for name in ["closed-form", "reduced", "accurate"] {
+    for name in ["closed-form", "series", "reduced", "accurate"] {
         let solver = SolverChoice::from_name(name, 5e-6).expect("known solver");
         group.bench_with_input(BenchmarkId::from_parameter(name), &scenarios, |b, scenarios| {
             b.iter(|| {

@@ -4,14 +4,15 @@
 //! | --- | --- |
 //! | no drive, c = 0 | `closed-form` (energy integral, Beta function) |
 //! | no drive, n = 1 | `closed-form` (damped oscillator, undamped return) |
-//! | no drive | `reduced-return` (δ up to δ_max, return in closed form) |
-//! | drive | `reduced` (δ through the whole contact) |
+//! | the paper's law | `series` (power series to δ_max, energy integral back) |
+//! | another contact law | `reduced` (δ through the whole contact) |
 //! | time history wanted | `accurate` (full state, every sample real) |
 //!
 //! The chosen path is reported in [`kick_core::Outcome::method`].
 
 use crate::closed::ClosedForm;
-use crate::reduced::{Reduced, ReducedReturn};
+use crate::reduced::Reduced;
+use crate::series::Series;
 use crate::Accurate;
 use kick_core::{History, KickError, Outcome, RecordingSolver, Scenario, Solver};
 
@@ -19,6 +20,7 @@ use kick_core::{History, KickError, Outcome, RecordingSolver, Scenario, Solver};
 pub struct Auto {
     pub reduced: Reduced,
     pub accurate: Accurate,
+    pub series: Series,
 }
 
 impl Auto {
@@ -26,8 +28,8 @@ impl Auto {
     pub fn path(scenario: &Scenario) -> &'static str {
         if ClosedForm::applies(scenario) {
             "closed-form"
-        } else if ReducedReturn::applies(scenario) {
-            "reduced-return"
+        } else if Series::applies(scenario) {
+            "series"
         } else {
             "reduced"
         }
@@ -41,7 +43,7 @@ impl Solver for Auto {
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
         match Auto::path(scenario) {
             "closed-form" => ClosedForm.solve(scenario),
-            "reduced-return" => ReducedReturn { reduced: self.reduced }.solve(scenario),
+            "series" => self.series.solve(scenario),
             _ => self.reduced.solve(scenario),
         }
     }

@@ -5,8 +5,8 @@
 //! - [`linear`]: n = 1 with compression-only damping and no drive: a damped
 //!   oscillator (under-, critically or over-damped) up to δ_max, then an
 //!   undamped quarter swing back (Eq. 41).
-//! - [`passive_return`]: the undamped restitution phase of any passive run of
-//!   the paper's law, from δ_max.
+//! - [`undamped_return`]: the undamped restitution phase of any run of the
+//!   paper's law, from δ_max, with or without a constant drive.
 
 use kick_core::{
     roots, special, ContactLaw, EnergyBudget, KickError, Outcome, Scenario, StopReason,
@@ -23,21 +23,56 @@ pub struct CompressionEnd {
     pub peak_force_time: f64,
 }
 
-/// The restitution phase of a passive run in closed form (no drive, and the
-/// law does not damp while δ̇ < 0): ½ μ δ̇² + U(δ) = U(δ_max).
-pub fn passive_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outcome, KickError> {
+/// The restitution phase of the paper's law in closed form, from rest at
+/// δ_max: the law does not damp while δ̇ < 0, so with a constant drive share
+/// f_s = (μ/m_f) F_drive the return conserves ½ μ δ̇² + U(δ) − f_s δ.
+/// The ball leaves with ½ μ w² = U(δ_max) − f_s δ_max = ½ μ V0² − D (a
+/// `NoSeparation` error when that is negative; `end.dissipated` must be the
+/// integrated D under a drive), after the Beta-function time without a drive
+/// and [`special::driven_return_integral`] with one. The centre of
+/// mass gains F_drive t / M (Eq. 26) and the drive does work F_drive x_f(t_c).
+pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outcome, KickError> {
     let law = scenario.law();
     let mu = scenario.reduced_mass();
+    let drive = scenario.drive_force();
+    let drive_share = mu / scenario.effective_foot_mass() * drive;
     let stored = law.potential(end.max_compression);
-    let exit_relative_speed = (2.0 * stored / mu).sqrt();
-    let return_time =
-        special::return_time(end.max_compression, exit_relative_speed, scenario.get(kick_core::Parameter::Exponent));
+    let exponent = scenario.get(kick_core::Parameter::Exponent);
+    let (exit_relative_speed, return_time) = if drive_share == 0.0 {
+        let w = (2.0 * stored / mu).sqrt();
+        (w, special::return_time(end.max_compression, w, exponent))
+    } else {
+        // ½ μ w² = U(δ_max) − f_s δ_max = ½ μ V0² − D: both differences can
+        // cancel, so take the one whose terms are smaller (a strong drive makes
+        // U and f_s δ large; heavy damping makes D close to ½ μ V0²).
+        let released = if scenario.relative_kinetic_energy() < stored {
+            scenario.relative_kinetic_energy() - end.dissipated
+        } else {
+            stored - drive_share * end.max_compression
+        };
+        if !(released >= 0.0) {
+            return Err(KickError::NoSeparation {
+                time: end.max_compression_time,
+                reason: format!(
+                    "at maximum compression U(δ_max) − (μ/m_f) F_drive δ_max = ½μV0² − D = {released:.6e} J < 0, \
+                     so the ball turns back before release"
+                ),
+            });
+        }
+        let free_speed = (2.0 * stored / mu).sqrt();
+        let margin = released / stored;
+        let w = (2.0 * released / mu).sqrt();
+        (w, end.max_compression / free_speed * special::driven_return_integral(exponent, margin))
+    };
     let total = scenario.total_mass();
-    let v_cm = scenario.centre_of_mass_speed();
+    let contact_time = end.max_compression_time + return_time;
+    // Eq. 26: the centre of mass, uniformly accelerated by the drive.
+    let v_cm = scenario.centre_of_mass_speed() + drive * contact_time / total;
     // Relative coordinates (numerics note): δ̇ = −w at exit.
     let v_ball_out = v_cm + scenario.effective_foot_mass() / total * exit_relative_speed;
     let v_foot_out = v_cm - scenario.ball_mass() / total * exit_relative_speed;
-    let contact_time = end.max_compression_time + return_time;
+    // At δ = 0 the foot is where the centre of mass is.
+    let foot_position = scenario.centre_of_mass_speed() * contact_time + 0.5 * drive * contact_time * contact_time / total;
     let kinetic_final = 0.5 * scenario.effective_foot_mass() * v_foot_out.powi(2)
         + 0.5 * scenario.ball_mass() * v_ball_out.powi(2);
     let (peak_force, peak_force_time) = if stored > 0.0 && law.elastic_force(end.max_compression) > end.peak_force {
@@ -61,7 +96,7 @@ pub fn passive_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outcom
             kinetic_final,
             elastic_final: 0.0,
             dissipated: end.dissipated,
-            drive_work: 0.0,
+            drive_work: drive * foot_position,
         },
         stop: StopReason::ClosedForm { t: contact_time },
         evaluations: 0,
@@ -78,7 +113,7 @@ pub fn elastic(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
     let max_compression = scenario.elastic_max_compression();
     let half = special::return_time(max_compression, scenario.approach_speed(), scenario.get(kick_core::Parameter::Exponent));
     let force = scenario.law().elastic_force(max_compression);
-    Some(passive_return(
+    Some(undamped_return(
         scenario,
         CompressionEnd {
             max_compression,
@@ -174,7 +209,7 @@ pub fn linear(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
         (onset, 0.0)
     };
     let dissipated = scenario.relative_kinetic_energy() - law.potential(max_compression);
-    Some(passive_return(
+    Some(undamped_return(
         scenario,
         CompressionEnd {
             max_compression,

@@ -5,6 +5,8 @@
 //! - [`closed`]: closed forms where they are exact (tests use them as the truth).
 //! - [`FullState`]: `dop853`, `dopri5`, `rk4-events` on the full state.
 //! - [`Reduced`], [`ReducedReturn`]: the relative coordinate only (Eq. 18).
+//! - [`Series`]: the paper's law by power series through compression and the
+//!   energy integral back (the fast accurate path).
 //! - [`Auto`]: the cheapest exact path for the scene.
 
 pub mod accurate;
@@ -15,6 +17,7 @@ pub mod ode;
 pub mod precision;
 pub mod reduced;
 pub mod seed;
+pub mod series;
 pub mod table2;
 
 pub use accurate::{Accurate, FullState};
@@ -22,6 +25,7 @@ pub use auto::Auto;
 pub use closed::ClosedForm;
 pub use reduced::{Reduced, ReducedReturn};
 pub use seed::SeedRk4;
+pub use series::Series;
 
 use kick_core::{History, KickError, Outcome, RecordingSolver, Scenario, Solver};
 
@@ -35,11 +39,12 @@ pub enum SolverChoice {
     Reduced(Reduced),
     ReducedReturn(ReducedReturn),
     ClosedForm(ClosedForm),
+    Series(Series),
 }
 
 impl SolverChoice {
-    pub const NAMES: [&'static str; 9] = [
-        "auto", "seed-rk4", "accurate", "dop853", "dopri5", "rk4-events", "reduced", "reduced-return", "closed-form",
+    pub const NAMES: [&'static str; 10] = [
+        "auto", "seed-rk4", "accurate", "dop853", "dopri5", "rk4-events", "reduced", "reduced-return", "closed-form", "series",
     ];
 
     /// Look a solver up by its `--solver` name at default settings; `step` is
@@ -57,7 +62,11 @@ impl SolverChoice {
     pub fn with_settings(name: &str, step: f64, tolerance: f64) -> Result<SolverChoice, KickError> {
         let reduced = Reduced::with_tolerances(tolerance, tolerance)?;
         Ok(match name {
-            "auto" => SolverChoice::Auto(Auto { reduced, accurate: Accurate::new(tolerance, tolerance)? }),
+            "auto" => SolverChoice::Auto(Auto {
+                reduced,
+                accurate: Accurate::new(tolerance, tolerance)?,
+                series: Series::with_tolerance(tolerance)?,
+            }),
             "seed-rk4" => SolverChoice::SeedRk4(SeedRk4::new(step)?),
             "accurate" => SolverChoice::Accurate(Accurate::new(tolerance, tolerance)?),
             "dop853" => SolverChoice::FullState(FullState::dop853(tolerance, tolerance)),
@@ -66,10 +75,11 @@ impl SolverChoice {
             "reduced" => SolverChoice::Reduced(reduced),
             "reduced-return" => SolverChoice::ReducedReturn(ReducedReturn { reduced }),
             "closed-form" => SolverChoice::ClosedForm(ClosedForm),
+            "series" => SolverChoice::Series(Series::with_tolerance(tolerance)?),
             _ => {
                 return Err(KickError::UnknownSolver {
                     name: name.to_string(),
-                    expected: "auto, seed-rk4, accurate, dop853, dopri5, rk4-events, reduced, reduced-return, closed-form",
+                    expected: "auto, seed-rk4, accurate, dop853, dopri5, rk4-events, reduced, reduced-return, closed-form, series",
                 })
             }
         })
@@ -84,6 +94,7 @@ impl SolverChoice {
             SolverChoice::Reduced(s) => s,
             SolverChoice::ReducedReturn(s) => s,
             SolverChoice::ClosedForm(s) => s,
+            SolverChoice::Series(s) => s,
         }
     }
 }
@@ -110,7 +121,9 @@ impl RecordingSolver for SolverChoice {
             SolverChoice::Reduced(s) => s.solve_recorded(scenario, interval),
             SolverChoice::Auto(s) => s.solve_recorded(scenario, interval),
             SolverChoice::Accurate(s) => s.solve_recorded(scenario, interval),
-            SolverChoice::ReducedReturn(_) | SolverChoice::ClosedForm(_) => Accurate::default().solve_recorded(scenario, interval),
+            SolverChoice::ReducedReturn(_) | SolverChoice::ClosedForm(_) | SolverChoice::Series(_) => {
+                Accurate::default().solve_recorded(scenario, interval)
+            }
         }
     }
 }

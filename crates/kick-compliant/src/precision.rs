@@ -73,7 +73,7 @@ pub fn ladder() -> Vec<(&'static str, f64)> {
         ladder.push(("rk4-events", dt));
     }
     for tolerance in [1e-6, 1e-8, 1e-10, 1e-11, 1e-12, 1e-13] {
-        for name in ["accurate", "dopri5", "reduced", "reduced-return", "auto"] {
+        for name in ["accurate", "dopri5", "reduced", "reduced-return", "series", "auto"] {
             ladder.push((name, tolerance));
         }
     }

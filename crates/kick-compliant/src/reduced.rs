@@ -7,11 +7,11 @@
 //! and the drive work is F_drive x_f(t) with x_f = X_cm + (m_b/M) δ.
 //! Three states instead of seven, and no cancellation in δ = x_f − x_b.
 //!
-//! `reduced-return` integrates only the compression of a passive run and
-//! takes the undamped return from δ_max in closed form
-//! ([`crate::closed::passive_return`]).
+//! `reduced-return` integrates only the compression of a run of the paper's
+//! law and takes the undamped return from δ_max in closed form
+//! ([`crate::closed::undamped_return`]).
 
-use crate::closed::{passive_return, CompressionEnd};
+use crate::closed::{undamped_return, CompressionEnd};
 use crate::events::{ContactSystem, Engine, Method, Scales, StopAt};
 use kick_core::{
     AnyLaw, ContactLaw, LawKind, EnergyBudget, History, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, StopReason,
@@ -231,8 +231,8 @@ impl RecordingSolver for Reduced {
     }
 }
 
-/// Compression by [`Reduced`], return in closed form. Passive runs of the
-/// paper's law only (no drive; damping acts only while compressing).
+/// Compression by [`Reduced`], return in closed form: the paper's law only
+/// (damping acts only while compressing), with or without a drive.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ReducedReturn {
     pub reduced: Reduced,
@@ -240,7 +240,7 @@ pub struct ReducedReturn {
 
 impl ReducedReturn {
     pub fn applies(scenario: &Scenario) -> bool {
-        scenario.drive_force() == 0.0 && scenario.law_kind() == LawKind::PowerLaw
+        scenario.law_kind() == LawKind::PowerLaw
     }
 }
 
@@ -252,7 +252,7 @@ impl Solver for ReducedReturn {
         if !Self::applies(scenario) {
             return Err(KickError::NotApplicable {
                 solver: "reduced-return",
-                reason: "its return phase is in closed form only for the paper's law without a drive force",
+                reason: "its return phase is in closed form only for the paper's law, which does not damp while restituting",
             });
         }
         let law = scenario.law();
@@ -260,7 +260,7 @@ impl Solver for ReducedReturn {
         let mut engine = Engine::new(self.reduced.method, system, scenario)?;
         let y0 = RelativeState::new(0.0, scenario.approach_speed(), 0.0);
         let end = engine.run(scenario, &law, y0, StopAt::MaxCompression, None)?;
-        let mut outcome = passive_return(
+        let mut outcome = undamped_return(
             scenario,
             CompressionEnd {
                 max_compression: end.max_compression,

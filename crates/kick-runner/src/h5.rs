@@ -327,18 +327,16 @@ impl SweepWriter {
     /// of a failed solve (stored as NaN values, status 1 and the message).
     pub fn push_outcome(&mut self, set: usize, outcome: Result<&[f64], &str>) -> Result<(), H5Error> {
         let row = self.rows();
-        let path = self.path.clone();
-        let writer = self
-            .sets
-            .get_mut(set)
-            .ok_or_else(|| layout(&path, format!("no outcome set {set}")))?;
+        // Split borrows: the path only for messages, no copy per row.
+        let (path, sets) = (&self.path, &mut self.sets);
+        let writer = sets.get_mut(set).ok_or_else(|| layout(path, format!("no outcome set {set}")))?;
         if writer.status_buffer.len() + self.rows_written + 1 != row {
-            return Err(layout(&path, format!("outcome set {set} pushed out of step with the parameters at row {row}")));
+            return Err(layout(path, format!("outcome set {set} pushed out of step with the parameters at row {row}")));
         }
         match outcome {
             Ok(values) => {
                 if values.len() != writer.columns.len() {
-                    return Err(layout(&path, format!(
+                    return Err(layout(path, format!(
                         "row has {} outcome values, set {set} has {} columns",
                         values.len(),
                         writer.columns.len()
@@ -354,7 +352,7 @@ impl SweepWriter {
                     buffer.push(f64::NAN);
                 }
                 writer.status_buffer.push(1);
-                writer.failures.push(((row - 1) as u64, varlen(&path, message)?));
+                writer.failures.push(((row - 1) as u64, varlen(path, message)?));
                 writer.failure_count += 1;
             }
         }

@@ -136,8 +136,11 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
     let mut start = 0u64;
     while start < total {
         let end = (start + CHUNK_ROWS as u64).min(total);
-        scenarios.clear();
-        scenarios.extend((start..end).map(|i| experiment.scenarios.scenario(i)));
+        // Scenario i is a pure function of i (sampled sweeps included).
+        (0..(end - start) as usize)
+            .into_par_iter()
+            .map(|j| experiment.scenarios.scenario(start + j as u64))
+            .collect_into_vec(&mut scenarios);
         for (k, solver) in experiment.solvers.iter().enumerate() {
             match experiment.output {
                 Output::Summary => scenarios.par_iter().map(|s| solve(solver, s)).collect_into_vec(&mut outcomes[k]),
