@@ -1,11 +1,12 @@
 use crate::output::{json, CliResult, Format};
+use crate::simulate::LawArgs;
 use kick_core::{Parameter, Scenario};
 use kick_identify::data::{Channel, FitSpec};
 use kick_identify::fit::{fit, FitOptions, FitProblem, FitReport};
 use kick_identify::profile::{identifiability_study, IdentifiabilityStudy};
-use kick_identify::synthetic;
-use kick_identify::IdentifyError;
-use std::path::PathBuf;
+use kick_identify::{synthetic, IdentifyError, ModelPoint};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Subcommand, Debug)]
 pub enum FitCommand {
@@ -26,16 +27,24 @@ pub enum FitCommand {
         format: Format,
     },
     /// Write a synthetic history (CSV) and a fit specification for it: Table 1's
-    /// baseline plus seeded noise, to be fitted back with `kick fit data`.
+    /// baseline (with the law given) plus seeded noise, to be fitted back with `kick fit data`.
     Synthesize {
-        /// Directory for synthetic.csv and synthetic.toml
+        /// Directory for NAME.csv and NAME.toml
         #[arg(long, default_value = "results/identification")]
         out: PathBuf,
+        /// File stem of the data and the specification
+        #[arg(long, default_value = "synthetic")]
+        name: String,
         #[arg(long, default_value_t = 1)]
         seed: u64,
-        /// Samples over 1.2 contact times
+        /// Samples over 1.2 contact times (from t = 0, whatever the time offset)
         #[arg(long, default_value_t = 80)]
         times: usize,
+        #[command(flatten)]
+        law: crate::simulate::LawArgs,
+        /// Time of first touch in the data, s; when non-zero the specification also fits `time_offset`
+        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+        time_offset: f64,
     },
     /// Identifiability (Section 17.8): misfit profiles of m_f, k, c, n from the exit
     /// speed alone and from noisy histories, and (k, c) misfit maps.
@@ -66,7 +75,9 @@ pub fn run(command: FitCommand) -> CliResult {
     match command {
         FitCommand::Table2 { format, write } => table2(format, write),
         FitCommand::Data { spec, format } => data(spec, format),
-        FitCommand::Synthesize { out, seed, times } => synthesize(out, seed, times),
+        FitCommand::Synthesize { out, name, seed, times, law, time_offset } => {
+            synthesize(&out, &name, seed, times, law, time_offset)
+        }
         FitCommand::Profile { format, out, spread, points, map_points, seed } => {
             if !(3..=101).contains(&points) || !(3..=201).contains(&map_points) {
                 return Err(format!("--points must be in 3..=101 and --map-points in 3..=201 (got {points}, {map_points})"));
@@ -143,16 +154,8 @@ fn table2(format: Format, write: Option<PathBuf>) -> CliResult {
 
 fn data(spec_path: PathBuf, format: Format) -> CliResult {
     let (spec, observations) = FitSpec::load(&spec_path).map_err(text)?;
-    let start = spec.scenario.build().map_err(|e| format!("{}: {e}", spec_path.display()))?;
-    let mut free = Vec::new();
-    for name in &spec.free {
-        free.push(Parameter::from_name(name).ok_or_else(|| {
-            text(IdentifyError::UnknownParameter {
-                name: name.clone(),
-                expected: Parameter::ALL.map(|p| p.name()).join(", "),
-            })
-        })?);
-    }
+    let start = spec.start(&spec_path.display().to_string()).map_err(text)?;
+    let free = spec.free_parameters().map_err(text)?;
     let report = fit(&FitProblem { start, free, observations }, &FitOptions::default()).map_err(text)?;
     match format {
         Format::Json => println!("{}", json(&report)?),
@@ -166,6 +169,7 @@ fn data(spec_path: PathBuf, format: Format) -> CliResult {
 }
 
 fn print_report(report: &FitReport) {
+    println!("contact law: {}", report.law.name());
     println!("{:<12} {:>16} {:>14} {:>16}", "parameter", "estimate", "std. unc.", "start");
     for e in &report.estimates {
         println!(
@@ -197,34 +201,71 @@ fn print_report(report: &FitReport) {
     }
 }
 
-fn synthesize(out: PathBuf, seed: u64, times: usize) -> CliResult {
+fn synthesize(out: &Path, name: &str, seed: u64, times: usize, law: LawArgs, time_offset: f64) -> CliResult {
     if !(2..=100_000).contains(&times) {
         return Err(format!("--times must be in 2..=100000 (got {times})"));
     }
-    let truth = Scenario::baseline();
+    if name.is_empty() || name.contains(['/', '\\']) {
+        return Err(format!("--name must be a plain file stem (got `{name}`)"));
+    }
+    let scenario = Scenario::baseline().with_law(law.law, law.restitution).map_err(|e| e.to_string())?;
+    let truth = ModelPoint::new(scenario, time_offset).map_err(text)?;
     let options = FitOptions::default();
     let sigma = synthetic::lab_sigma(&Channel::ALL);
-    let data = synthetic::history(&options.solver, &truth, synthetic::time_grid(&truth, times, 1.2), &sigma, seed)
-        .map_err(text)?;
+    let grid = synthetic::time_grid(&scenario, times, 1.2);
+    let data = synthetic::history(&options.solver, &truth, grid, &sigma, seed).map_err(text)?;
     let history = data.history.ok_or("no history produced")?;
-    std::fs::create_dir_all(&out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    let csv = out.join("synthetic.csv");
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let csv = out.join(format!("{name}.csv"));
     std::fs::write(&csv, history.data.to_csv()).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
-    let sigma_text: Vec<String> = sigma.iter().map(|(c, s)| format!("{} = {s:e}", c.name())).collect();
-    let spec = format!(
-        "# Synthetic data: Table 1's baseline plus Gaussian noise (seed {seed}), written by\n\
-         # `kick fit synthesize`. Fit back with `kick fit data {}`.\n\
-         free = [\"foot_mass\", \"stiffness\", \"damping\", \"exponent\"]\n\n\
-         [scenario] # starting guesses; the truth is 3.0, 4.2e5, 120, 1.35\n\
-         foot_mass = 3.6\nstiffness = 3.0e5\ndamping = 160.0\nexponent = 1.25\n\n\
-         [history]\nfile = \"synthetic.csv\"\nsigma = {{ {} }}\n",
-        out.join("synthetic.toml").display(),
-        sigma_text.join(", ")
-    );
-    let toml_path = out.join("synthetic.toml");
+    let toml_path = out.join(format!("{name}.toml"));
+    let spec = synthetic_spec(&truth, &format!("{name}.csv"), &sigma, seed, &toml_path);
     std::fs::write(&toml_path, spec).map_err(|e| format!("cannot write {}: {e}", toml_path.display()))?;
     println!("wrote {} and {}", csv.display(), toml_path.display());
     Ok(())
+}
+
+/// Starting guesses of a synthetic fit, as factors of the truth: far enough
+/// that the fit has to travel, near enough to stay in the basin.
+const SYNTHETIC_START: [(Parameter, f64); 4] =
+    [(Parameter::FootMass, 1.2), (Parameter::Stiffness, 0.714), (Parameter::Damping, 1.333), (Parameter::Exponent, 0.926)];
+
+/// The fit specification of synthetic data: the law's fittable parameters
+/// among m_f, k, c, n (and e, t0), started away from the truth.
+fn synthetic_spec(truth: &ModelPoint, csv: &str, sigma: &BTreeMap<Channel, f64>, seed: u64, path: &Path) -> String {
+    let mut free = Vec::new();
+    let mut guesses = Vec::new();
+    let mut truths = Vec::new();
+    for (p, factor) in SYNTHETIC_START {
+        if truth.check_fittable(p.into(), true).is_ok() {
+            free.push(format!("\"{}\"", p.name()));
+            guesses.push(format!("{} = {:.4e}", p.name(), truth.scenario.get(p) * factor));
+            truths.push(format!("{} {:e}", p.name(), truth.scenario.get(p)));
+        }
+    }
+    let mut top = String::new();
+    if let Some(e) = truth.scenario.restitution_target() {
+        free.push("\"restitution\"".into());
+        top.push_str(&format!("law = \"{}\"\nrestitution = {:e} # start; the truth is {e:e}\n", truth.scenario.law_kind().name(), 0.8 * e));
+    }
+    if truth.time_offset != 0.0 {
+        free.push("\"time_offset\"".into());
+        top.push_str(&format!("time_offset = 0.0 # start; the truth is {:e} s\n", truth.time_offset));
+    }
+    let sigma_text: Vec<String> = sigma.iter().map(|(c, s)| format!("{} = {s:e}", c.name())).collect();
+    format!(
+        "# Synthetic data: Table 1's baseline with contact law {} plus Gaussian noise (seed {seed}),\n\
+         # written by `kick fit synthesize`. Fit back with `kick fit data {}`.\n\
+         free = [{}]\n{top}\n\
+         [scenario] # starting guesses; the truth is {}\n{}\n\n\
+         [history]\nfile = \"{csv}\"\nsigma = {{ {} }}\n",
+        truth.scenario.law_kind().name(),
+        path.display(),
+        free.join(", "),
+        truths.join(", "),
+        guesses.join("\n"),
+        sigma_text.join(", ")
+    )
 }
 
 fn print_study(study: &IdentifiabilityStudy) {

@@ -4,8 +4,11 @@
 //! parameters, the known values and starting guesses, and the data:
 //!
 //! ```toml
-//! free = ["foot_mass", "stiffness", "damping", "exponent"]
-//! [scenario]            # any ScenarioSpec field; the rest is Table 1's baseline
+//! free = ["foot_mass", "stiffness", "damping", "exponent"]  # FitParameter names
+//! law = "power-law"     # optional contact law, as in experiment files (default: Eq. 20)
+//! restitution = 0.66    # target restitution of the other laws (a start when free)
+//! time_offset = 0.0     # t0, s: data time of first touch (a start when free)
+//! [scenario]            # the eight parameters; the rest is Table 1's baseline
 //! foot_mass = 2.5       # starting guess for a free parameter, known value otherwise
 //! [[scalar]]            # zero or more scalar observations, SI units
 //! observable = "v_ball_out"
@@ -18,11 +21,12 @@
 //!
 //! The history CSV has a header `time,<channel>,...` with channels among
 //! `force` (N), `compression` (m), `foot_velocity`, `ball_velocity` (m/s);
-//! times in s from first touch, strictly increasing; lines starting with `#`
-//! are comments. Every channel in the file needs a sigma.
+//! times in s, strictly increasing, first touch at t0 (`time_offset`); lines
+//! starting with `#` are comments. Every channel in the file needs a sigma.
 
+use crate::parameter::{FitParameter, ModelPoint};
 use crate::IdentifyError;
-use kick_core::{Outcome, ScenarioSpec};
+use kick_core::{LawKind, Outcome, ScenarioSpec};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -310,6 +314,15 @@ pub struct HistorySpec {
 #[serde(deny_unknown_fields)]
 pub struct FitSpec {
     pub free: Vec<String>,
+    /// Contact law of the forward model, by `LawKind` name (default: the paper's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub law: Option<String>,
+    /// Target restitution of a law other than the paper's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub restitution: Option<f64>,
+    /// t0, s: the data's time of first touch (default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time_offset: Option<f64>,
     #[serde(default)]
     pub scenario: ScenarioSpec,
     #[serde(default)]
@@ -326,6 +339,24 @@ impl FitSpec {
         } else {
             toml::from_str(text).map_err(|e| IdentifyError::data(source_name, e.to_string()))
         }
+    }
+
+    /// Known values and starting guesses: the scenario with its law, and t0.
+    pub fn start(&self, source_name: &str) -> Result<ModelPoint, IdentifyError> {
+        let law = match &self.law {
+            Some(name) => Some(LawKind::from_name(name).map_err(|e| IdentifyError::data(source_name, e.to_string()))?),
+            None => None,
+        };
+        let spec = self.scenario.with_law_keys(law, self.restitution).map_err(|key| {
+            IdentifyError::data(source_name, format!("`{key}` is set both at the top level and in [scenario]; set it once, at the top level"))
+        })?;
+        let scenario = spec.build().map_err(|e| IdentifyError::data(source_name, e.to_string()))?;
+        ModelPoint::new(scenario, self.time_offset.unwrap_or(0.0))
+    }
+
+    /// The free parameters, by name.
+    pub fn free_parameters(&self) -> Result<Vec<FitParameter>, IdentifyError> {
+        self.free.iter().map(|name| FitParameter::from_name(name)).collect()
     }
 
     /// Read the specification and the history file it names (relative to it).
