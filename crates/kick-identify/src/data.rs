@@ -17,6 +17,8 @@
 //! [history]             # optional time history
 //! file = "kick.csv"     # relative to the specification file
 //! sigma = { force = 40.0, compression = 2e-4, ball_velocity = 0.05 }
+//! [truth]               # optional: true values (synthetic data), for the pulls
+//! stiffness = 4.2e5
 //! ```
 //!
 //! The history CSV has a header `time,<channel>,...` with channels among
@@ -64,6 +66,16 @@ impl Observable {
             Observable::ContactTime => "contact_time",
             Observable::PeakForce => "peak_force",
             Observable::MaxCompression => "max_compression",
+        }
+    }
+
+    /// SI unit.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Observable::VBallOut | Observable::VFootOut => "m/s",
+            Observable::ContactTime => "s",
+            Observable::PeakForce => "N",
+            Observable::MaxCompression => "m",
         }
     }
 
@@ -118,6 +130,15 @@ impl Channel {
             Channel::Compression => "compression",
             Channel::FootVelocity => "foot_velocity",
             Channel::BallVelocity => "ball_velocity",
+        }
+    }
+
+    /// SI unit.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Channel::Force => "N",
+            Channel::Compression => "m",
+            Channel::FootVelocity | Channel::BallVelocity => "m/s",
         }
     }
 
@@ -329,6 +350,10 @@ pub struct FitSpec {
     pub scalar: Vec<ScalarObservation>,
     #[serde(default)]
     pub history: Option<HistorySpec>,
+    /// The true values, when known (synthetic data): `kick fit data`
+    /// reports (estimate − truth)/σ for the free parameters named here.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub truth: Option<BTreeMap<String, f64>>,
 }
 
 impl FitSpec {
@@ -357,6 +382,22 @@ impl FitSpec {
     /// The free parameters, by name.
     pub fn free_parameters(&self) -> Result<Vec<FitParameter>, IdentifyError> {
         self.free.iter().map(|name| FitParameter::from_name(name)).collect()
+    }
+
+    /// The `[truth]` table by parameter; names are checked, values must be finite.
+    pub fn truth(&self) -> Result<Vec<(FitParameter, f64)>, IdentifyError> {
+        let Some(truth) = &self.truth else { return Ok(Vec::new()) };
+        truth
+            .iter()
+            .map(|(name, &value)| {
+                let p = FitParameter::from_name(name)?;
+                if value.is_finite() {
+                    Ok((p, value))
+                } else {
+                    Err(IdentifyError::data(format!("truth.{name}"), format!("{value} is not finite")))
+                }
+            })
+            .collect()
     }
 
     /// Read the specification and the history file it names (relative to it).

@@ -46,6 +46,18 @@ pub fn printed_observations(row: &PrintedRow) -> Observations {
     }
 }
 
+/// A solver's unrounded values of the four printed observables, with the
+/// printed precision as σ (to fit the same model to them as to the print).
+pub fn unrounded_observations(outcome: &kick_core::Outcome) -> Observations {
+    Observations {
+        scalars: PRINTED_SIGMA
+            .iter()
+            .map(|&(observable, sigma)| ScalarObservation { observable, value: observable.value(outcome), sigma })
+            .collect(),
+        history: None,
+    }
+}
+
 /// One row's answer.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Table2Fit {

@@ -5,9 +5,12 @@
 
 use kick_core::{LawKind, Parameter, Scenario};
 use kick_identify::data::{Channel, FitSpec, Observable};
-use kick_identify::fit::{fit, FitOptions, FitProblem, FitReport};
+use kick_identify::fit::{fit, FitOptions, FitProblem};
 use kick_identify::synthetic::{history, lab_sigma, scalars, time_grid};
 use kick_identify::{FitParameter, IdentifyError, ModelPoint};
+
+mod common;
+use common::assert_recovered;
 
 const ALL_CHANNELS: [Channel; 4] = [Channel::Force, Channel::Compression, Channel::FootVelocity, Channel::BallVelocity];
 
@@ -21,21 +24,6 @@ fn start_from(truth: &ModelPoint, moves: &[(FitParameter, f64)]) -> ModelPoint {
         FitParameter::TimeOffset => point.with(p, v).unwrap(),
         _ => point.with(p, truth.get(p).unwrap() * v).unwrap(),
     })
-}
-
-/// |estimate − truth| < 3σ for every parameter; s² within four standard
-/// deviations √(2/ν) of 1.
-fn assert_recovered(truth: &ModelPoint, report: &FitReport) {
-    assert!(report.converged, "{}", report.termination);
-    for e in &report.estimates {
-        let sigma = e.standard_uncertainty.expect("identified");
-        let t = truth.get(e.parameter).unwrap();
-        println!("{:<12} {:.6e} ± {:.3e} (truth {t:.6e}, pull {:+.2})", e.parameter.name(), e.value, sigma, (e.value - t) / sigma);
-        assert!((e.value - t).abs() < 3.0 * sigma, "{}: {} vs truth {t} (σ = {sigma})", e.parameter.name(), e.value);
-    }
-    let nu = report.degrees_of_freedom as f64;
-    let s2 = report.residual_variance.unwrap();
-    assert!((s2 - 1.0).abs() < 4.0 * (2.0 / nu).sqrt(), "s² = {s2} with ν = {nu}");
 }
 
 /// Data from `hunt-crossley-exact` (e = 0.66): m_f, k, n and the target

@@ -8,6 +8,9 @@ use kick_identify::fit::{fit, FitOptions, FitProblem};
 use kick_identify::profile::{log_factors, profiles};
 use kick_identify::synthetic::{history, lab_sigma, scalars, time_grid};
 use kick_identify::{IdentifyError, ModelPoint};
+
+mod common;
+use common::assert_recovered;
 use std::collections::BTreeMap;
 
 use kick_identify::profile::MODEL_PARAMETERS as FOUR;
@@ -20,25 +23,6 @@ fn start_from(truth: &Scenario, factors: &[(Parameter, f64)]) -> ModelPoint {
     factors.iter().fold(*truth, |s, &(p, f)| s.with(p, truth.get(p) * f).unwrap()).into()
 }
 
-/// |estimate − truth| < 3σ for each parameter, and s² within four standard
-/// deviations of its expectation 1 (s² ~ χ²_ν/ν has sd √(2/ν)).
-fn assert_recovered(truth: &Scenario, report: &kick_identify::FitReport) {
-    assert!(report.converged, "{}", report.termination);
-    for e in &report.estimates {
-        let sigma = e.standard_uncertainty.expect("identified");
-        let t = ModelPoint::from(*truth).get(e.parameter).unwrap();
-        assert!(
-            (e.value - t).abs() < 3.0 * sigma,
-            "{}: {} vs truth {t} (σ = {sigma})",
-            e.parameter.name(),
-            e.value
-        );
-    }
-    let nu = report.degrees_of_freedom as f64;
-    let s2 = report.residual_variance.unwrap();
-    assert!((s2 - 1.0).abs() < 4.0 * (2.0 / nu).sqrt(), "s² = {s2} with ν = {nu}");
-}
-
 #[test]
 fn recovers_stiffness_and_damping_from_force_and_compression() {
     let truth = Scenario::baseline();
@@ -48,7 +32,7 @@ fn recovers_stiffness_and_damping_from_force_and_compression() {
     let start = start_from(&truth, &[(Parameter::Stiffness, 1.5), (Parameter::Damping, 0.6)]);
     let problem = FitProblem { start, free: vec![Parameter::Stiffness.into(), Parameter::Damping.into()], observations: data };
     let report = fit(&problem, &options).unwrap();
-    assert_recovered(&truth, &report);
+    assert_recovered(&truth.into(), &report);
     let r = report.correlation.as_ref().unwrap();
     assert!((r[0][1] - r[1][0]).abs() < 1e-12 && r[0][0] == 1.0);
 }
@@ -66,7 +50,7 @@ fn recovers_all_four_from_full_histories() {
     );
     let problem = FitProblem { start, free: FOUR.to_vec(), observations: data };
     let report = fit(&problem, &options).unwrap();
-    assert_recovered(&truth, &report);
+    assert_recovered(&truth.into(), &report);
     // k and n trade off (k δⁿ at δ ≈ δ_max): their estimates are strongly
     // correlated, and the matrix is a valid correlation matrix.
     let r = report.correlation.as_ref().unwrap();
