@@ -363,14 +363,17 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, String> {
         lo,
         hi
     );
+    let t0 = law_fit.estimate("time_offset").and_then(|x| x.truth).unwrap_or(f64::NAN);
     let _ = writeln!(
         w,
         "## Another law, and a late first touch\n\n\
-         The same recipe with `--law hunt-crossley-exact --restitution 0.66 --time-offset 2.5e-4 --seed 2` \
-         (`synthetic_hunt_crossley.toml`): the data come from the hysteresis law and start 0.25 ms before \
-         first touch; the specification names the law and frees m_f, k, n, the restitution e (damping is \
-         refused under this law) and t0, started at 0. Result (`{SYNTHETIC_LAW_FIT}`, law `{}`):\n",
-        law_fit.law
+         The same recipe with `kick fit synthesize --name synthetic_hunt_crossley --law {law} --restitution \
+         {e} --time-offset {t0}`: the data come from the hysteresis law and start {} ms before first touch; the \
+         specification (`synthetic_hunt_crossley.toml`) names the law and frees m_f, k, n, the restitution e \
+         (damping is refused under this law) and t0, started at 0. Result (`{SYNTHETIC_LAW_FIT}`):\n",
+        num(t0 * 1e3, 3),
+        law = law_fit.law,
+        e = law_fit.estimate("restitution").and_then(|x| x.truth).unwrap_or(f64::NAN),
     );
     estimate_table(w, &law_fit);
     let times = open(&law_path)?.values("fit/residuals/force/time").map_err(|e| e.to_string())?;
