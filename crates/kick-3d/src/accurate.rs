@@ -490,6 +490,7 @@ pub(crate) fn outcome(
         },
         evaluations,
         solver,
+        law: kick.law.kind(),
     };
     out.derive_summary();
     Ok(out.check_finite()?)

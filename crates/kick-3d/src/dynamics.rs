@@ -3,10 +3,11 @@
 //! This module is the one boundary between parry's glam types (`Vec3`,
 //! `Rot3`, `Pose3`) and the nalgebra state vector that ode_solvers integrates.
 //!
-//! Contact law (one law for both paths):
-//! - normal: F_n = k δⁿ + c max(δ̇, 0) (Eq. 20), δ the overlap from parry's
-//!   ball–box query, δ̇ = n·(v_foot − v_ball) at the witness points (the exact
-//!   rate of a convex distance);
+//! Contact law (one law for every path):
+//! - normal: F_n = F(δ, δ̇) of the kick's contact law ([`Kick3d::law`]: the
+//!   paper's k δⁿ + c max(δ̇, 0), Eq. 20, or any law of `kick_core::laws`), δ
+//!   the overlap from parry's ball–box query, δ̇ = n·(v_foot − v_ball) at the
+//!   witness points (the exact rate of a convex distance);
 //! - tangential: a spring k_t and damper c_t in series with a Coulomb slider
 //!   capped by μ F_n (Cundall–Strack). The spring extension ξ is state. While
 //!   |k_t ξ + c_t v_t| ≤ μ F_n the contact grips (ξ̇ = v_t); otherwise it slips
@@ -19,7 +20,7 @@
 //! pair's angular momentum is conserved exactly.
 
 use crate::model::Kick3d;
-use kick_core::{ContactLaw, PowerLawContact};
+use kick_core::{AnyLaw, ContactLaw};
 use nalgebra::SVector;
 use parry3d_f64::math::{Pose3, Rot3, Vec3};
 use parry3d_f64::query::details::contact_convex_polyhedron_ball;
@@ -109,7 +110,7 @@ impl ContactEval {
 /// Right-hand side of one kick.
 #[derive(Debug, Clone, Copy)]
 pub struct Dynamics {
-    pub law: PowerLawContact,
+    pub law: AnyLaw,
     pub foot_mass: f64,
     pub foot_inertia: Vec3,
     pub ball_mass: f64,
@@ -168,7 +169,8 @@ impl Dynamics {
         }
     }
 
-    /// The contact law at state y (on the contact branch: F(0⁺) = c δ̇).
+    /// The contact law at state y (on the contact branch: F(0⁺) = c δ̇ for
+    /// the paper's law, 0 for the hysteresis laws).
     #[inline]
     pub fn contact(&self, y: &State) -> ContactEval {
         let foot = Self::foot_pose(y);
@@ -187,9 +189,10 @@ impl Dynamics {
         // normal component of v_rel is the exact −δ̇ of the parry distance.
         let rate = -n.dot(v_rel);
         let sliding = v_rel + n * rate;
-        let normal_force = self.law.contact_force(delta, rate); // Eq. 20
+        let normal_force = self.law.contact_force(delta, rate); // Eq. 20 for the paper's law
         let elastic = self.law.contact_force(delta, 0.0);
-        let damping_power = (normal_force - elastic) * rate; // Eq. 25
+        // d/dt of kinetic + U(δ) is −(F − F(δ, 0)) δ̇: Eq. 25 for the paper's law.
+        let damping_power = (normal_force - elastic) * rate;
 
         let xi = vec3(y, SPRING);
         let xi_t = xi - n * xi.dot(n);

@@ -16,4 +16,6 @@ pub enum Kick3dError {
     UnsupportedScene { path: &'static str, reason: &'static str },
     #[error("unknown 3D solver `{name}`: expected one of {expected}")]
     UnknownSolver { name: String, expected: &'static str },
+    #[error("3D experiment: {reason}")]
+    Experiment { reason: String },
 }

@@ -1,5 +1,6 @@
-//! Off-center 3D kicks: a sphere and a rigid instep with the paper's normal
-//! law (Eq. 20), Coulomb friction with tangential compliance, and the spin
+//! Off-center 3D kicks: a sphere and a rigid instep with the scenario's normal
+//! contact law (the paper's Eq. 20 or any law of `kick_core::laws`), Coulomb
+//! friction with tangential compliance, and the spin
 //! that an off-center contact gives (Eq. 61). Section 17 of the paper lists
 //! what its 1D model leaves out; this crate adds 17.4–17.5.
 //!

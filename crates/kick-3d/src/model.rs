@@ -16,9 +16,15 @@
 //!
 //! Normal approach speed V_n = (V cos α − v_b) cos φ; the tangential sliding
 //! speed at first touch is V sin φ horizontally and V sin α vertically.
+//!
+//! Normal law: the scenario's contact law (`Scenario::contact_law`; Eq. 20
+//! unless another is chosen). A law other than the paper's takes its damping
+//! from its target restitution at the normal approach speed V_n, so the
+//! normal impact has the restitution asked for, and a central square kick is
+//! exactly the 1D scenario.
 
 use crate::error::Kick3dError;
-use kick_core::{PowerLawContact, Scenario};
+use kick_core::{AnyLaw, Scenario};
 use parry3d_f64::math::{Rot3, Vec3};
 use serde::{Deserialize, Serialize};
 
@@ -104,6 +110,9 @@ pub const GRAVITY: f64 = 9.81;
 pub struct Kick3d {
     /// Masses, speeds (magnitudes), the normal law and the drive of the 1D model.
     pub base: Scenario,
+    /// The normal contact law: `base`'s law at the normal approach speed
+    /// (see the module docs), set by [`Kick3d::new`].
+    pub law: AnyLaw,
     pub ball_radius: f64,
     pub ball_inertia: f64,
     pub foot_inertia: [f64; 3],
@@ -188,8 +197,9 @@ impl Kick3d {
             positive("tangential_stiffness", spec.tangential_stiffness.unwrap_or(Self::DEFAULT_TANGENTIAL_STIFFNESS))?;
         let tangential_damping =
             positive("tangential_damping", spec.tangential_damping.unwrap_or(Self::DEFAULT_TANGENTIAL_DAMPING))?;
-        let kick = Kick3d {
+        let mut kick = Kick3d {
             base,
+            law: base.contact_law(),
             ball_radius: radius,
             ball_inertia,
             foot_inertia,
@@ -210,6 +220,7 @@ impl Kick3d {
                 ball_speed: base.ball_speed() * kick.obliquity().cos(),
             }));
         }
+        kick.law = kick.normal_scenario()?.contact_law();
         Ok(kick)
     }
 
@@ -270,8 +281,9 @@ impl Kick3d {
         }
     }
 
-    pub fn law(&self) -> PowerLawContact {
-        self.base.law()
+    /// The normal contact law (see the module docs).
+    pub fn law(&self) -> AnyLaw {
+        self.law
     }
 
     /// Drive force on the foot, along its initial direction of motion.
@@ -288,7 +300,8 @@ impl Kick3d {
     }
 
     /// The 1D scenario along the initial normal: the same masses and law, the
-    /// normal components of the speeds and of the drive. Exact for a
+    /// normal components of the speeds and of the drive (a law other than the
+    /// paper's recomputes its damping at this approach speed). Exact for a
     /// frictionless contact (the normal force passes through both centres of mass).
     pub fn normal_scenario(&self) -> Result<Scenario, Kick3dError> {
         let n = self.initial_normal();

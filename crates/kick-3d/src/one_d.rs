@@ -83,6 +83,7 @@ pub fn solve_along_normal(kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
         },
         evaluations: o.evaluations,
         solver: "1d",
+        law: scenario.law_kind(),
     };
     out.derive_summary();
     Ok(out.check_finite()?)

@@ -19,7 +19,9 @@ pub struct EnergyPartition {
     pub foot: f64,
     /// U(δ) of the normal law plus ½ k_t |ξ|² of the tangential spring at the end.
     pub elastic_final: f64,
-    /// ∫ c max(δ̇,0) δ̇ dt (Eq. 25).
+    /// ∫ (F_n(δ, δ̇) − F_n(δ, 0)) δ̇ dt, the normal law's loss (Eq. 25 for the
+    /// paper's law; a clamped Kelvin–Voigt also loses the spring energy left
+    /// when its force reaches zero).
     pub normal_damping_loss: f64,
     /// ∫ (c_t |ξ̇|² + μ F_n |slip speed|) dt: tangential damper and Coulomb slider.
     pub friction_loss: f64,
@@ -79,6 +81,8 @@ pub struct Outcome3d {
     /// Right-hand-side evaluations (0 for closed forms), or scene steps.
     pub evaluations: u64,
     pub solver: &'static str,
+    /// The normal contact law.
+    pub law: kick_core::LawKind,
 }
 
 impl Outcome3d {

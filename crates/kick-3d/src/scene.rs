@@ -11,7 +11,10 @@
 //! accurate path, `kick simulate3d --scene-convergence`). Across the swept
 //! range (offset to ±9 cm, approach angle to 40°, μ from 0 to 2) launch
 //! velocity and spin are off by at most 2e-4 relative per microsecond of step
-//! (measured 1.0–1.4e-4); tests/scene.rs holds both the order and this bound.
+//! (measured 1.0–1.4e-4) with the paper's law; with the other laws the
+//! constant differs (Hunt–Crossley and Kelvin–Voigt at e = 0.6 on a 5 cm,
+//! 10° kick: up to 2.04e-4 per microsecond, bound 3e-4); tests/scene.rs
+//! holds the order and both bounds.
 //! The default step of 1e-6 s (~5300 steps per contact) gives ~1e-4. The
 //! contact time is the linear interpolation of δ between the last two steps.
 //! The path exists for

@@ -148,15 +148,22 @@ pub struct Range {
 /// Largest sweep an experiment file may ask for.
 pub const MAX_POINTS: usize = 10_000;
 
-/// An `experiments/3d/*.toml` file: one axis swept over a range, the 1D
-/// parameters in `[scenario]` and the 3D extras in `[kick3d]` (both optional,
-/// defaults as in `kick simulate3d`).
+/// An `experiments/3d/*.toml` file: one axis swept over a range, the contact
+/// law in the top-level `law` and `restitution` keys (as in the 1D experiment
+/// files), the 1D parameters in `[scenario]` and the 3D extras in `[kick3d]`
+/// (all optional, defaults as in `kick simulate3d`).
 #[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Experiment3d {
     pub description: String,
     pub axis: Axis,
     pub values: Range,
+    /// Normal contact law by `LawKind` name (default: the paper's, Eq. 20).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub law: Option<String>,
+    /// Target restitution of a law other than the paper's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub restitution: Option<f64>,
     #[serde(default)]
     pub scenario: kick_core::ScenarioSpec,
     #[serde(default)]
@@ -172,7 +179,7 @@ impl Experiment3d {
             return Err(format!("values: need finite from/to and 1..={MAX_POINTS} points, got {from}..{to} x {count}"));
         }
         // Validate the base scenario and every point before running anything.
-        let base = e.scenario.build().map_err(|err| err.to_string())?;
+        let base = e.base()?;
         for v in linspace(from, to, count) {
             let mut s = e.kick3d;
             e.axis.apply(&mut s, v);
@@ -181,9 +188,22 @@ impl Experiment3d {
         Ok(e)
     }
 
+    /// The 1D scenario with its contact law.
+    pub fn base(&self) -> Result<Scenario, String> {
+        let law = match &self.law {
+            Some(name) => Some(kick_core::LawKind::from_name(name).map_err(|e| format!("law: {e}"))?),
+            None => None,
+        };
+        let spec = self.scenario.with_law_keys(law, self.restitution).map_err(|key| {
+            format!("`{key}` is set both at the top level and in [scenario]; set it once, at the top level")
+        })?;
+        spec.build().map_err(|err| err.to_string())
+    }
+
     /// Run the sweep on the accurate path.
     pub fn run(&self) -> Result<Vec<SweepPoint>, Kick3dError> {
-        let base = self.scenario.build()?;
+        // `parse` validated the base; a hand-built experiment reports its problem here.
+        let base = self.base().map_err(|reason| Kick3dError::Experiment { reason })?;
         sweep(&base, &self.kick3d, self.axis, &linspace(self.values.from, self.values.to, self.values.count))
     }
 }

@@ -3,7 +3,7 @@
 use kick_3d::checks::{kick, MATCH_1D};
 use kick_3d::dynamics::{self, Dynamics};
 use kick_3d::{Accurate3d, FootShape, Kick3d, Kick3dError, Kick3dSpec, Solver3d};
-use kick_core::{KickError, Parameter, Scenario};
+use kick_core::{AnyLaw, KickError, LawKind, Parameter, Scenario};
 
 fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
@@ -32,6 +32,50 @@ fn rounded_box_central_frictionless_matches_1d() {
     ] {
         assert!(rel(a, b) <= MATCH_1D, "{a} vs {b}: {:.2e}", rel(a, b));
     }
+}
+
+/// Every contact law of the family, not only Eq. 20: a central frictionless
+/// kick is the 1D kick with the same law, on the accurate path and on the 1d
+/// path, to the 1D solver's accuracy (MATCH_1D = 1e-9), and the energy the
+/// law dissipates matches the 1D solver's.
+#[test]
+fn central_frictionless_kick_matches_1d_for_every_law() {
+    for kind in LawKind::ALL {
+        let base = Scenario::baseline().with_law(kind, Some(0.6)).unwrap();
+        let k = Kick3d::new(base, &Kick3dSpec { friction: Some(0.0), ..Kick3dSpec::default() }).unwrap();
+        assert_eq!(k.law(), base.contact_law(), "central kick: V_n = V0, the same law");
+        let o1 = kick_core::Solver::solve(&kick_compliant::Accurate::default(), &base).unwrap();
+        let o3 = solve(&k);
+        let one_d = Solver3d::OneD.solve(&k).unwrap();
+        assert_eq!((o3.law, one_d.law), (kind, kind));
+        for (name, three, path, one) in [
+            ("v_ball_out", o3.launch_velocity[0], one_d.launch_velocity[0], o1.v_ball_out),
+            ("v_foot_out", o3.foot_velocity[0], one_d.foot_velocity[0], o1.v_foot_out),
+            ("contact_time", o3.contact_time, one_d.contact_time, o1.contact_time),
+            ("peak_force", o3.peak_normal_force, one_d.peak_normal_force, o1.peak_force),
+            ("max_compression", o3.max_compression, one_d.max_compression, o1.max_compression),
+            ("dissipated", o3.energy.normal_damping_loss, one_d.energy.normal_damping_loss, o1.energy.dissipated),
+        ] {
+            println!("{:<20} {name:<16} 3D {:.2e}", kind.name(), rel(three, one));
+            assert!(rel(three, one) <= MATCH_1D, "{}: {name} {three} vs {one}: {:.2e}", kind.name(), rel(three, one));
+            assert_eq!(path, one, "{}: the 1d path is the 1D solver", kind.name());
+        }
+        assert!(o3.energy.relative_residual().abs() <= MATCH_1D);
+    }
+}
+
+/// An oblique kick's normal approach speed V_n = V0 cos φ sets the
+/// hysteresis factor: χ = f(e)/V_n, so the normal impact has restitution e.
+#[test]
+fn other_laws_take_their_damping_at_the_normal_approach_speed() {
+    let base = Scenario::baseline().with_law(LawKind::HuntCrossleyExact, Some(0.6)).unwrap();
+    let k = Kick3d::new(base, &Kick3dSpec { offset: Some(0.06), ..Kick3dSpec::default() }).unwrap();
+    let v_n = k.normal_approach_speed();
+    let cos_phi = (1.0 - (0.06f64 / k.ball_radius).powi(2)).sqrt();
+    assert!(rel(v_n, base.approach_speed() * cos_phi) <= 1e-15);
+    let AnyLaw::Hysteresis(h) = k.law() else { panic!("hysteresis law expected") };
+    let chi_v0 = kick_core::laws::exact_hysteresis(0.6);
+    assert!(rel(h.hysteresis * v_n, chi_v0) <= 1e-15, "{} vs {chi_v0}", h.hysteresis * v_n);
 }
 
 #[test]
@@ -198,6 +242,26 @@ fn experiment_files_parse_and_bad_ones_are_refused() {
     assert!(err.contains("offset"), "{err}");
     let typo = "description = \"x\"\naxis = \"offset\"\nvalues = { from = 0.0, to = 0.05, count = 3 }\n[kick3d]\nfrction = 0.3\n";
     assert!(kick_3d::sweep::Experiment3d::parse(typo).unwrap_err().contains("frction"));
+    // Contact law keys at the top level, as in the 1D experiment files.
+    let head = "description = \"x\"\naxis = \"offset\"\nvalues = { from = 0.0, to = 0.04, count = 2 }\n";
+    let with_law = format!("{head}law = \"flores\"\nrestitution = 0.7\n");
+    let e = kick_3d::sweep::Experiment3d::parse(&with_law).unwrap();
+    let base = e.base().unwrap();
+    assert_eq!((base.law_kind(), base.restitution_target()), (LawKind::Flores, Some(0.7)));
+    let points = e.run().unwrap();
+    let paper = kick_3d::sweep::Experiment3d::parse(head).unwrap().run().unwrap();
+    // Central kick, μ = 0.5: the 1D kick with Flores's law; the paper's law gives another speed.
+    let one = kick_core::Solver::solve(&kick_compliant::Accurate::default(), &base).unwrap();
+    assert!(rel(points[0].speed, one.v_ball_out) <= MATCH_1D, "{} vs {}", points[0].speed, one.v_ball_out);
+    assert!(rel(paper[0].speed, one.v_ball_out) > 1e-3);
+    for (text, word) in [
+        (format!("{head}law = \"hertz\"\n"), "unknown contact law `hertz`"),
+        (format!("{head}law = \"flores\"\n"), "restitution"),
+        (format!("{head}law = \"flores\"\nrestitution = 0.7\n[scenario]\nlaw = \"flores\"\n"), "`law` is set both"),
+    ] {
+        let err = kick_3d::sweep::Experiment3d::parse(&text).unwrap_err();
+        assert!(err.contains(word), "{err}");
+    }
 }
 
 #[test]

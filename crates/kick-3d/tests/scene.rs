@@ -3,7 +3,8 @@
 
 use kick_3d::checks::kick;
 use kick_3d::scene::Scene;
-use kick_3d::{Accurate3d, Kick3dSpec};
+use kick_3d::{Accurate3d, Kick3d, Kick3dSpec};
+use kick_core::{LawKind, Scenario};
 
 fn spec() -> Kick3dSpec {
     Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() }
@@ -65,6 +66,35 @@ fn ground_and_gravity_live_in_the_scene() {
     assert!((free.launch_velocity[2] - fall).abs() <= 1e-2 * fall.abs());
     // On the ground the ball cannot fall (rapier's soft contact may let it sink a little).
     assert!(floor.launch_velocity[2].abs() <= 1e-3 * fall.abs(), "{}", floor.launch_velocity[2]);
+}
+
+/// The scene path applies the kick's own law: with Hunt–Crossley and
+/// Kelvin–Voigt (e = 0.6) it converges at first order to the accurate path
+/// (which matches the 1D solver with that law, tests/accurate.rs), within
+/// the bound scene.rs documents for them, 3e-4 relative per microsecond of
+/// step (measured up to 2.04e-4, Hunt–Crossley's spin).
+#[test]
+fn scene_path_runs_the_kicks_law() {
+    for kind in [LawKind::HuntCrossleyExact, LawKind::KelvinVoigt] {
+        let base = Scenario::baseline().with_law(kind, Some(0.6)).unwrap();
+        let k = Kick3d::new(base, &spec()).unwrap();
+        let steps = [2e-5, 1e-5];
+        let (rows, _) = kick_3d::scene::convergence(&k, &steps).unwrap();
+        for r in &rows {
+            println!("{} dt {:.1e}: velocity {:.3e} spin {:.3e}", kind.name(), r.step, r.velocity_error, r.spin_error);
+            let bound = 3e-4 * r.step / 1e-6;
+            assert!(r.velocity_error <= bound && r.spin_error <= bound, "{}: {r:?}", kind.name());
+        }
+        for (e0, e1) in [(rows[0].velocity_error, rows[1].velocity_error), (rows[0].spin_error, rows[1].spin_error)] {
+            let order = (e0 / e1).log2();
+            assert!((0.9..=1.1).contains(&order), "{}: order {order}", kind.name());
+        }
+        let o = Scene::new(1e-5).unwrap().solve(&k).unwrap();
+        assert_eq!(o.law, kind);
+        // The paper's law on the same kick is much farther off: the law matters.
+        let paper = Accurate3d::default().solve(&kick(spec())).unwrap();
+        assert!((paper.speed - o.speed).abs() / o.speed > 10.0 * rows[1].velocity_error, "{}: {} vs {}", kind.name(), paper.speed, o.speed);
+    }
 }
 
 #[test]

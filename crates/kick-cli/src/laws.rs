@@ -1,9 +1,12 @@
-//! `kick laws`: the contact-law family on Table 2's scenarios.
+//! `kick laws`: the contact-law family on Table 2's scenarios, written to
+//! `DIR/laws.h5` (layout in `identify_files`) with its figure drawn from that file.
 
 use crate::output::{json, CliResult, Format};
 use kick_compliant::Accurate;
-use kick_identify::laws::{compare, LawComparison};
-use std::path::PathBuf;
+use kick_core::Scenario;
+use kick_identify::laws::{compare, restitution_table, LawComparison};
+use kick_runner::Provenance;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -12,7 +15,8 @@ pub struct Args {
     /// Scenario file with the rows' parameters
     #[arg(long, default_value = "experiments/table2.toml")]
     scenarios: PathBuf,
-    /// Write laws.json (outcomes and force pulses) and laws.png/svg here
+    /// Write laws.h5 (outcomes, force pulses, restitution of each formula) and
+    /// laws.png/svg, drawn from laws.h5, here
     #[arg(long)]
     out: Option<PathBuf>,
     /// Pulse samples per undamped contact time (at most)
@@ -35,13 +39,29 @@ pub fn comparisons(args: &Args) -> Result<Vec<LawComparison>, String> {
         .collect()
 }
 
+/// Targets of the restitution table (how far each χ formula misses its target).
+pub const FORMULA_TARGETS: [f64; 7] = [0.99, 0.95, 0.9, 0.8, 0.7, 0.5, 0.3];
+
+/// Write `dir/laws.h5` and draw `dir/laws.{png,svg}` from it.
+fn write(args: &Args, all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let scenarios = std::fs::read_to_string(&args.scenarios).map_err(|e| format!("{}: {e}", args.scenarios.display()))?;
+    let text = format!("# kick laws --scenarios {} --samples {}
+{scenarios}", args.scenarios.display(), args.samples);
+    let provenance = Provenance::now("laws", &args.scenarios.display().to_string(), &text);
+    let formulas = restitution_table(&Scenario::baseline(), &FORMULA_TARGETS, &Accurate::default()).map_err(|e| e.to_string())?;
+    let h5 = crate::identify_files::write_laws(&dir.join("laws.h5"), &provenance, all, args.samples, &FORMULA_TARGETS, &formulas)?;
+    let mut written = vec![h5.clone()];
+    written.extend(crate::identify_figures::laws(&h5, dir)?);
+    Ok(written)
+}
+
 pub fn run(args: Args) -> CliResult {
     let all = comparisons(&args)?;
     if let Some(dir) = &args.out {
-        std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-        let path = dir.join("laws.json");
-        std::fs::write(&path, json(&all)?).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-        crate::identify_figures::laws(&all, dir)?;
+        for path in write(&args, &all, dir)? {
+            eprintln!("wrote {}", path.display());
+        }
     }
     match args.format {
         Format::Json => println!("{}", json(&all)?),

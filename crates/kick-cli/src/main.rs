@@ -4,6 +4,8 @@ mod bench;
 mod check;
 mod fit;
 mod identify_figures;
+mod identify_files;
+mod identify_report;
 mod laws;
 mod leg;
 mod output;

@@ -1,6 +1,7 @@
 //! `kick reproduce`: every experiment, the figures, the cross-model checks and
 //! the reproduction report.
 
+use crate::identify_report::{LAWS, SYNTHETIC_FIT, SYNTHETIC_LAW_FIT, TABLE2_FIT};
 use crate::output::CliResult;
 use kick_runner::report::CheckLine;
 use std::path::{Component, Path, PathBuf};
@@ -96,6 +97,24 @@ pub fn run(args: Args) -> CliResult {
     commands.push(["kick", "leg", "--knee", "30", "--ankle", "60", "--sweep-out", &out].map(String::from).to_vec());
     commands.push(["kick", "laws", "--out", &identification].map(String::from).to_vec());
     commands.push(["kick", "fit", "profile", "--out", &identification].map(String::from).to_vec());
+    // Synthetic data (the paper's law; Hunt–Crossley with a late first touch), fitted back.
+    let fits = args.out.join("identification");
+    let spec = |name: &str| fits.join(format!("{name}.toml")).display().to_string();
+    let fit_file = |name: &str| fits.join(name).display().to_string();
+    commands.push(["kick", "fit", "synthesize", "--out", &identification, "--seed", "1"].map(String::from).to_vec());
+    commands.push(
+        [
+            "kick", "fit", "synthesize", "--out", &identification, "--name", "synthetic_hunt_crossley", "--seed", "2", "--law",
+            "hunt-crossley-exact", "--restitution", "0.66", "--time-offset", "2.5e-4",
+        ]
+        .map(String::from)
+        .to_vec(),
+    );
+    commands.push(["kick", "fit", "data", &spec("synthetic"), "--out", &fit_file(SYNTHETIC_FIT)].map(String::from).to_vec());
+    commands.push(
+        ["kick", "fit", "data", &spec("synthetic_hunt_crossley"), "--out", &fit_file(SYNTHETIC_LAW_FIT)].map(String::from).to_vec(),
+    );
+    commands.push(["kick", "fit", "table2", "--out", &fit_file(TABLE2_FIT)].map(String::from).to_vec());
     commands.push(["kick", "bench", "--out", &out, "--report", &solvers_report].map(String::from).to_vec());
     for argv in &commands {
         println!("\n$ {}", argv.join(" "));
@@ -116,6 +135,13 @@ pub fn run(args: Args) -> CliResult {
          ![exit speed]({figures_from_report}/leg_exit_speed.png)\n"
     );
     std::fs::write(report_dir.join("leg.md"), leg).map_err(|e| format!("cannot write leg.md: {e}"))?;
+    // Contact laws and identification: from results/identification/*.h5.
+    let identification_from_report = relative(&report_dir, &fits);
+    let laws = crate::identify_report::laws(&fits.join(LAWS), &identification_from_report)?;
+    std::fs::write(report_dir.join("laws.md"), laws).map_err(|e| format!("cannot write laws.md: {e}"))?;
+    let identification = crate::identify_report::identification(&fits, &identification_from_report)?;
+    std::fs::write(report_dir.join("identification.md"), identification)
+        .map_err(|e| format!("cannot write identification.md: {e}"))?;
     // Point the report at the sections written beside it.
     let mut text = std::fs::read_to_string(&args.report).map_err(|e| format!("cannot read {}: {e}", args.report.display()))?;
     let sections = [

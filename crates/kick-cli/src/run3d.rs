@@ -27,9 +27,14 @@ const RED: RGBColor = RGBColor(214, 39, 40);
 fn write_h5(path: &Path, file: &Path, text: &str, e: &Experiment3d, points: &[SweepPoint]) -> Result<PathBuf, String> {
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("3d");
     let provenance = Provenance::now(name, &file.display().to_string(), text);
+    let law = e.base()?;
     let set = OutcomeSet {
         solver: "accurate-3d".into(),
-        settings: "Dop853 rtol 1e-12 atol 1e-15, located events".into(),
+        settings: format!(
+            "Dop853 rtol 1e-12 atol 1e-15, located events; normal law {}{}",
+            law.law_kind().name(),
+            law.restitution_target().map(|r| format!(" (target restitution {r})")).unwrap_or_default()
+        ),
         numeric_settings: vec![("relative_tolerance".into(), 1e-12), ("absolute_tolerance".into(), 1e-15)],
         columns: COLUMNS.iter().map(|(n, u)| Column::new(n, u)).collect(),
     };

@@ -1,9 +1,26 @@
 use crate::output::{json, CliResult, Format};
 use kick_compliant::SolverChoice;
-use kick_core::{Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, OBSERVABLES};
+use kick_core::{LawKind, Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, OBSERVABLES};
 use serde_json::{Map, Value};
 
-/// The eight parameters of Table 1 as flags; left out, each takes the baseline.
+/// The contact law as flags (`--law`, `--restitution`), shared by every
+/// command that builds scenarios.
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct LawArgs {
+    /// Contact law: power-law (the paper's, Eq. 20), hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt
+    #[arg(long, default_value = "power-law", value_parser = parse_law)]
+    pub law: LawKind,
+    /// Target restitution e of the laws other than the paper's (their damping follows from it)
+    #[arg(long, allow_negative_numbers = true)]
+    pub restitution: Option<f64>,
+}
+
+fn parse_law(name: &str) -> Result<LawKind, String> {
+    LawKind::from_name(name).map_err(|e| e.to_string())
+}
+
+/// The eight parameters of Table 1 and the contact law as flags; left out,
+/// each parameter takes the baseline and the law is the paper's.
 #[derive(clap::Args, Debug)]
 pub struct ScenarioArgs {
     /// Effective foot mass m_f, kg [3.0]
@@ -30,10 +47,12 @@ pub struct ScenarioArgs {
     /// Drive force on the foot along its velocity during contact, N [0]
     #[arg(long, allow_negative_numbers = true)]
     pub drive_force: Option<f64>,
+    #[command(flatten)]
+    pub law: LawArgs,
 }
 
 impl ScenarioArgs {
-    /// The parameters given, with the paper's law.
+    /// The parameters and the law given.
     pub fn spec(&self) -> ScenarioSpec {
         ScenarioSpec {
             foot_mass: self.foot_mass,
@@ -44,8 +63,8 @@ impl ScenarioArgs {
             damping: self.damping,
             exponent: self.exponent,
             drive_force: self.drive_force,
-            law: None,
-            restitution: None,
+            law: Some(self.law.law),
+            restitution: self.law.restitution,
         }
     }
 }
@@ -54,12 +73,6 @@ impl ScenarioArgs {
 pub struct Args {
     #[command(flatten)]
     scenario: ScenarioArgs,
-    /// Contact law: power-law (the paper's, Eq. 20), hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt
-    #[arg(long, default_value = "power-law")]
-    law: String,
-    /// Target restitution e of the laws other than the paper's (their damping follows from it)
-    #[arg(long, allow_negative_numbers = true)]
-    restitution: Option<f64>,
     /// Step of seed-rk4, s
     #[arg(long, default_value_t = 5e-6, allow_negative_numbers = true)]
     dt: f64,
@@ -70,16 +83,6 @@ pub struct Args {
     /// Also output the time history, sampled at most this far apart (s)
     #[arg(long)]
     history: Option<f64>,
-}
-
-impl Args {
-    fn spec(&self) -> Result<ScenarioSpec, String> {
-        Ok(ScenarioSpec {
-            law: Some(kick_core::LawKind::from_name(&self.law).map_err(|e| e.to_string())?),
-            restitution: self.restitution,
-            ..self.scenario.spec()
-        })
-    }
 }
 
 /// The JSON object of one run: every observable, the energy residual, the
@@ -104,7 +107,7 @@ pub fn outcome_json(scenario: &Scenario, solver: &str, outcome: &Outcome) -> Map
 }
 
 pub fn run(args: Args) -> CliResult {
-    let scenario = args.spec()?.build().map_err(|e| e.to_string())?;
+    let scenario = args.scenario.spec().build().map_err(|e| e.to_string())?;
     let solver = SolverChoice::from_name(&args.solver, args.dt).map_err(|e| e.to_string())?;
     let (outcome, history) = match args.history {
         Some(interval) => {

@@ -65,12 +65,8 @@ pub struct Args {
 
 impl Args {
     fn kick(&self) -> Result<Kick3d, String> {
-        // The 3D model's normal force is the paper's law (Eq. 20).
-        let base = self
-            .scenario
-            .spec()
-            .build()
-        .map_err(|e| e.to_string())?;
+        // The normal force is the scenario's law (--law, --restitution).
+        let base = self.scenario.spec().build().map_err(|e| e.to_string())?;
         let three = |v: &Option<Vec<f64>>, name: &str| -> Result<Option<[f64; 3]>, String> {
             match v.as_deref() {
                 None => Ok(None),
@@ -101,11 +97,13 @@ impl Args {
     }
 }
 
-/// The JSON object of one 3D run.
-pub fn outcome_json(o: &Outcome3d) -> Result<Map<String, Value>, String> {
+/// The JSON object of one 3D run: the outcome (with `law`, the normal law's
+/// name), the energy residual and `law_parameters` (the law as solved).
+pub fn outcome_json(kick: &Kick3d, o: &Outcome3d) -> Result<Map<String, Value>, String> {
     match serde_json::to_value(o).map_err(|e| e.to_string())? {
         Value::Object(mut m) => {
             m.insert("energy_residual".into(), o.energy.residual().into());
+            m.insert("law_parameters".into(), serde_json::to_value(kick.law()).map_err(|e| e.to_string())?);
             Ok(m)
         }
         _ => Err("outcome is not an object".into()),
@@ -138,10 +136,10 @@ pub fn run(args: Args) -> CliResult {
         eprintln!("solver {} took {:.3} ms", o.solver, elapsed.as_secs_f64() * 1e3);
     }
     match args.format {
-        Format::Json => println!("{}", json(&outcome_json(&o)?)?),
+        Format::Json => println!("{}", json(&outcome_json(&kick, &o)?)?),
         Format::Text => {
             let v = |a: [f64; 3], unit: &str| format!("[{:+.6e}, {:+.6e}, {:+.6e}] {unit}", a[0], a[1], a[2]);
-            println!("solver: {}", o.solver);
+            println!("solver: {}, normal law: {}", o.solver, o.law.name());
             println!("{:<24} {}", "launch_velocity", v(o.launch_velocity, "m/s"));
             println!("{:<24} {}", "spin", v(o.spin, "rad/s"));
             for (name, value, unit) in [

@@ -26,12 +26,9 @@ pub struct Args {
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
-    /// Contact law of every scenario (see `kick simulate --help`)
-    #[arg(long, default_value = "power-law")]
-    law: String,
-    /// Target restitution of a law other than the paper's
-    #[arg(long)]
-    restitution: Option<f64>,
+    /// Contact law of every scenario
+    #[command(flatten)]
+    law: crate::simulate::LawArgs,
 }
 
 pub fn run(args: Args) -> CliResult {
@@ -48,8 +45,7 @@ pub fn run(args: Args) -> CliResult {
         .to_string();
     let directory = args.out.parent().map(PathBuf::from).unwrap_or_default();
     let solver = SolverChoice::from_name(&args.solver, args.dt).map_err(|e| e.to_string())?;
-    let law = kick_core::LawKind::from_name(&args.law).map_err(|e| e.to_string())?;
-    let sweep = SampledSweep { samples: args.samples, seed: args.seed, law, restitution: args.restitution };
+    let sweep = SampledSweep { samples: args.samples, seed: args.seed, law: args.law.law, restitution: args.law.restitution };
     sweep.scenario(0).map_err(|e| e.to_string())?;
     // The provenance keeps what made the file: the command and the ranges.
     let text = format!(
@@ -59,8 +55,8 @@ pub fn run(args: Args) -> CliResult {
         args.seed,
         args.solver,
         args.dt,
-        args.law,
-        args.restitution,
+        args.law.law.name(),
+        args.law.restitution,
         RANGES.lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n")
     );
     let experiment = Experiment {

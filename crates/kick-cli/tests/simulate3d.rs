@@ -53,6 +53,34 @@ fn simulate3d_central_frictionless_runs_the_1d_solver() {
     assert_eq!(vec3(&v["spin"]), [0.0; 3]);
 }
 
+/// `--law` and `--restitution` reach the 3D model: a central frictionless
+/// kick with Hunt–Crossley's law (1d and accurate paths) gives `kick
+/// simulate`'s numbers with the same flags, and the JSON names the law.
+#[test]
+fn simulate3d_takes_the_contact_law_flags() {
+    let law = ["--law", "hunt-crossley-exact", "--restitution", "0.6"];
+    let one = kick(&[&["simulate", "--format", "json", "--solver", "accurate"][..], &law].concat());
+    assert!(one.status.success(), "{}", String::from_utf8_lossy(&one.stderr));
+    let one: serde_json::Value = serde_json::from_slice(&one.stdout).unwrap();
+    for solver in ["1d", "accurate"] {
+        let out = kick(&[&["simulate3d", "--friction", "0", "--format", "json", "--solver", solver][..], &law].concat());
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["law"], "hunt-crossley-exact");
+        assert_eq!(v["law_parameters"]["model"], "exact");
+        assert_eq!(v["law_parameters"]["target_restitution"], 0.6);
+        let (a, b) = (vec3(&v["launch_velocity"])[0], one["v_ball_out"].as_f64().unwrap());
+        // The 3D accurate path matches the 1D solver to 1e-9 (kick-3d's MATCH_1D).
+        assert!((a - b).abs() <= 1e-9 * b, "{solver}: {a} vs {b}");
+    }
+    let out = kick(&["simulate3d", "--law", "hertz"]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown contact law `hertz`"));
+    let out = kick(&["simulate3d", "--law", "flores"]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("restitution"));
+}
+
 #[test]
 fn simulate3d_refuses_bad_input_by_name() {
     for (args, word) in [

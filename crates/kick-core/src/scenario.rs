@@ -112,6 +112,21 @@ impl ScenarioSpec {
         *slot = Some(value);
     }
 
+    /// This spec with a file's top-level `law` and `restitution` keys, the
+    /// place experiment files give them. `Err(key)` names a key that the
+    /// scenario table sets too: the law is chosen in one place.
+    pub fn with_law_keys(mut self, law: Option<LawKind>, restitution: Option<f64>) -> Result<ScenarioSpec, &'static str> {
+        if law.is_some() && self.law.is_some() {
+            return Err("law");
+        }
+        if restitution.is_some() && self.restitution.is_some() {
+            return Err("restitution");
+        }
+        self.law = law.or(self.law);
+        self.restitution = restitution.or(self.restitution);
+        Ok(self)
+    }
+
     /// Fill the gaps from Table 1 and validate.
     pub fn build(&self) -> Result<Scenario, KickError> {
         let base = Scenario::BASELINE;

@@ -4,8 +4,11 @@
 //! parameters, the known values and starting guesses, and the data:
 //!
 //! ```toml
-//! free = ["foot_mass", "stiffness", "damping", "exponent"]
-//! [scenario]            # any ScenarioSpec field; the rest is Table 1's baseline
+//! free = ["foot_mass", "stiffness", "damping", "exponent"]  # FitParameter names
+//! law = "power-law"     # optional contact law, as in experiment files (default: Eq. 20)
+//! restitution = 0.66    # target restitution of the other laws (a start when free)
+//! time_offset = 0.0     # t0, s: data time of first touch (a start when free)
+//! [scenario]            # the eight parameters; the rest is Table 1's baseline
 //! foot_mass = 2.5       # starting guess for a free parameter, known value otherwise
 //! [[scalar]]            # zero or more scalar observations, SI units
 //! observable = "v_ball_out"
@@ -14,15 +17,18 @@
 //! [history]             # optional time history
 //! file = "kick.csv"     # relative to the specification file
 //! sigma = { force = 40.0, compression = 2e-4, ball_velocity = 0.05 }
+//! [truth]               # optional: true values (synthetic data), for the pulls
+//! stiffness = 4.2e5
 //! ```
 //!
 //! The history CSV has a header `time,<channel>,...` with channels among
 //! `force` (N), `compression` (m), `foot_velocity`, `ball_velocity` (m/s);
-//! times in s from first touch, strictly increasing; lines starting with `#`
-//! are comments. Every channel in the file needs a sigma.
+//! times in s, strictly increasing, first touch at t0 (`time_offset`); lines
+//! starting with `#` are comments. Every channel in the file needs a sigma.
 
+use crate::parameter::{FitParameter, ModelPoint};
 use crate::IdentifyError;
-use kick_core::{Outcome, ScenarioSpec};
+use kick_core::{LawKind, Outcome, ScenarioSpec};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -60,6 +66,16 @@ impl Observable {
             Observable::ContactTime => "contact_time",
             Observable::PeakForce => "peak_force",
             Observable::MaxCompression => "max_compression",
+        }
+    }
+
+    /// SI unit.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Observable::VBallOut | Observable::VFootOut => "m/s",
+            Observable::ContactTime => "s",
+            Observable::PeakForce => "N",
+            Observable::MaxCompression => "m",
         }
     }
 
@@ -114,6 +130,15 @@ impl Channel {
             Channel::Compression => "compression",
             Channel::FootVelocity => "foot_velocity",
             Channel::BallVelocity => "ball_velocity",
+        }
+    }
+
+    /// SI unit.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Channel::Force => "N",
+            Channel::Compression => "m",
+            Channel::FootVelocity | Channel::BallVelocity => "m/s",
         }
     }
 
@@ -310,12 +335,25 @@ pub struct HistorySpec {
 #[serde(deny_unknown_fields)]
 pub struct FitSpec {
     pub free: Vec<String>,
+    /// Contact law of the forward model, by `LawKind` name (default: the paper's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub law: Option<String>,
+    /// Target restitution of a law other than the paper's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub restitution: Option<f64>,
+    /// t0, s: the data's time of first touch (default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time_offset: Option<f64>,
     #[serde(default)]
     pub scenario: ScenarioSpec,
     #[serde(default)]
     pub scalar: Vec<ScalarObservation>,
     #[serde(default)]
     pub history: Option<HistorySpec>,
+    /// The true values, when known (synthetic data): `kick fit data`
+    /// reports (estimate − truth)/σ for the free parameters named here.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub truth: Option<BTreeMap<String, f64>>,
 }
 
 impl FitSpec {
@@ -326,6 +364,40 @@ impl FitSpec {
         } else {
             toml::from_str(text).map_err(|e| IdentifyError::data(source_name, e.to_string()))
         }
+    }
+
+    /// Known values and starting guesses: the scenario with its law, and t0.
+    pub fn start(&self, source_name: &str) -> Result<ModelPoint, IdentifyError> {
+        let law = match &self.law {
+            Some(name) => Some(LawKind::from_name(name).map_err(|e| IdentifyError::data(source_name, e.to_string()))?),
+            None => None,
+        };
+        let spec = self.scenario.with_law_keys(law, self.restitution).map_err(|key| {
+            IdentifyError::data(source_name, format!("`{key}` is set both at the top level and in [scenario]; set it once, at the top level"))
+        })?;
+        let scenario = spec.build().map_err(|e| IdentifyError::data(source_name, e.to_string()))?;
+        ModelPoint::new(scenario, self.time_offset.unwrap_or(0.0))
+    }
+
+    /// The free parameters, by name.
+    pub fn free_parameters(&self) -> Result<Vec<FitParameter>, IdentifyError> {
+        self.free.iter().map(|name| FitParameter::from_name(name)).collect()
+    }
+
+    /// The `[truth]` table by parameter; names are checked, values must be finite.
+    pub fn truth(&self) -> Result<Vec<(FitParameter, f64)>, IdentifyError> {
+        let Some(truth) = &self.truth else { return Ok(Vec::new()) };
+        truth
+            .iter()
+            .map(|(name, &value)| {
+                let p = FitParameter::from_name(name)?;
+                if value.is_finite() {
+                    Ok((p, value))
+                } else {
+                    Err(IdentifyError::data(format!("truth.{name}"), format!("{value} is not finite")))
+                }
+            })
+            .collect()
     }
 
     /// Read the specification and the history file it names (relative to it).

@@ -1,21 +1,25 @@
-//! Levenberg–Marquardt over a subset of the scenario's parameters.
+//! Levenberg–Marquardt over a subset of the model's parameters
+//! ([`FitParameter`]: the scenario's, the target restitution, the time offset).
 //!
 //! Residuals are r_i = (model_i − data_i)/σ_i. Parameters that must be
-//! positive (masses, k, c, n) are fitted as θ = ln p, so every trial point is
-//! a valid scenario and steps are relative; speeds and the drive are fitted
-//! as they are. The Jacobian is taken by central differences (Accurate's
+//! positive (masses, k, c, n) are fitted as θ = ln p and the restitution as
+//! θ = ln(e/(1 − e)), so every trial point is a valid scenario and steps are
+//! relative; speeds, the drive and the time offset are fitted as they are
+//! ([`Coordinate`]). The Jacobian is taken by central differences (Accurate's
 //! outputs are smooth in the parameters to its 1e-12 tolerance).
 //!
 //! Uncertainties: with J the Jacobian of r in θ at the estimate, m residuals
-//! and n parameters, s² = Σ r²/(m − n) and cov θ = s² (JᵀJ)⁻¹; a log-space
-//! parameter's standard uncertainty is p σ_θ (first order). The correlation
-//! matrix is scale-free, so it is the same in θ and in p.
+//! and n parameters, s² = Σ r²/(m − n) and cov θ = s² (JᵀJ)⁻¹; a parameter's
+//! standard uncertainty is |dp/dθ| σ_θ (first order). The correlation matrix
+//! is invariant under these one-to-one rescalings to first order, so it is
+//! the same in θ and in p.
 
 use crate::data::Observations;
 use crate::model::predict;
+use crate::parameter::{Coordinate, FitParameter, ModelPoint};
 use crate::IdentifyError;
 use kick_compliant::Accurate;
-use kick_core::{Parameter, Scenario};
+use kick_core::{LawKind, Parameter};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
 use serde::Serialize;
@@ -26,15 +30,17 @@ use std::cell::RefCell;
 /// directions weaker than that are not resolved by the data.
 pub const RANK_TOLERANCE: f64 = 1e-6;
 
-/// Central-difference step in θ (relative step for log-space parameters).
+/// Central-difference step in θ (relative step for log and logit
+/// coordinates; for the time offset, this fraction of the contact time).
 pub const JACOBIAN_STEP: f64 = 1e-6;
 
 /// What to fit.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FitProblem {
-    /// Known values and starting guesses of the free parameters.
-    pub start: Scenario,
-    pub free: Vec<Parameter>,
+    /// Known values and starting guesses of the free parameters; the
+    /// scenario's contact law is the forward model's.
+    pub start: ModelPoint,
+    pub free: Vec<FitParameter>,
     pub observations: Observations,
 }
 
@@ -57,13 +63,14 @@ impl Default for FitOptions {
 /// One fitted parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Estimate {
-    pub parameter: Parameter,
+    pub parameter: FitParameter,
     pub value: f64,
     /// Standard uncertainty; `None` when the data do not determine it
     /// (JᵀJ singular, or no more residuals than parameters).
     pub standard_uncertainty: Option<f64>,
     pub start: f64,
-    pub log_space: bool,
+    /// The optimiser's coordinate θ of this parameter.
+    pub coordinate: Coordinate,
 }
 
 /// One residual.
@@ -80,6 +87,8 @@ pub struct Residual {
 /// The answer of a fit.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FitReport {
+    /// The forward model's contact law.
+    pub law: LawKind,
     pub estimates: Vec<Estimate>,
     pub residuals: Vec<Residual>,
     /// Σ r².
@@ -103,17 +112,15 @@ pub struct FitReport {
 }
 
 impl FitReport {
-    pub fn estimate(&self, parameter: Parameter) -> Option<&Estimate> {
+    pub fn estimate(&self, parameter: impl Into<FitParameter>) -> Option<&Estimate> {
+        let parameter = parameter.into();
         self.estimates.iter().find(|e| e.parameter == parameter)
     }
 }
 
-/// Parameters fitted as ln p because they must be positive.
+/// Scenario parameters fitted as ln p because they must be positive.
 pub fn log_space(parameter: Parameter) -> bool {
-    matches!(
-        parameter,
-        Parameter::FootMass | Parameter::BallMass | Parameter::Stiffness | Parameter::Damping | Parameter::Exponent
-    )
+    FitParameter::Scenario(parameter).coordinate() == Coordinate::Log
 }
 
 /// The LM problem in θ.
@@ -130,17 +137,17 @@ struct Problem<'a> {
 }
 
 impl Problem<'_> {
-    fn scenario(&self, theta: &DVector<f64>) -> Result<Scenario, IdentifyError> {
-        let mut s = self.problem.start;
+    fn point(&self, theta: &DVector<f64>) -> Result<ModelPoint, IdentifyError> {
+        let mut point = self.problem.start;
         for (p, &t) in self.problem.free.iter().zip(theta.iter()) {
-            s = s.with(*p, if log_space(*p) { t.exp() } else { t })?;
+            point = point.with(*p, p.coordinate().value(t))?;
         }
-        Ok(s)
+        Ok(point)
     }
 
     fn weighted(&self, theta: &DVector<f64>) -> Result<DVector<f64>, IdentifyError> {
-        let scenario = self.scenario(theta)?;
-        let predicted = predict(&self.options.solver, &scenario, &self.problem.observations)?;
+        let point = self.point(theta)?;
+        let predicted = predict(&self.options.solver, &point, &self.problem.observations)?;
         Ok(DVector::from_iterator(
             predicted.len(),
             predicted.iter().zip(self.observed.iter()).zip(self.sigma.iter()).map(|((p, o), s)| (p - o) / s),
@@ -166,11 +173,16 @@ impl Problem<'_> {
     }
 
     fn steps(&self) -> Vec<f64> {
+        let time_scale = self.problem.start.scenario.elastic_contact_time();
         self.problem
             .free
             .iter()
             .zip(self.theta.iter())
-            .map(|(p, &t)| if log_space(*p) { JACOBIAN_STEP } else { JACOBIAN_STEP * t.abs().max(1.0) })
+            .map(|(p, &t)| match (p, p.coordinate()) {
+                (FitParameter::TimeOffset, _) => JACOBIAN_STEP * time_scale,
+                (_, Coordinate::Linear) => JACOBIAN_STEP * t.abs().max(1.0),
+                (_, Coordinate::Log | Coordinate::Logit) => JACOBIAN_STEP,
+            })
             .collect()
     }
 
@@ -215,8 +227,60 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
     }
 }
 
+/// Restarts of the onset search (see [`fit`]).
+pub const MAX_ONSET_RESTARTS: usize = 20;
+
 /// Fit `problem` and report estimates, uncertainties, residuals and correlations.
+///
+/// With the time offset free, χ² jumps whenever a history sample crosses
+/// the onset t0: Eq. 20's force jumps to c V0 at first touch, and every
+/// law's velocities and compression have a kink there. Levenberg–Marquardt
+/// cannot step across such a jump, so it can stop with a sample on the
+/// wrong side. After it converges, the fit restarts from its estimate with
+/// t0 moved past the neighbouring sample on either side, keeps the lower
+/// χ², and repeats until neither side improves.
 pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, IdentifyError> {
+    let mut best = fit_from(problem, options)?;
+    let (Some(index), Some(history)) = (
+        problem.free.iter().position(|&p| p == FitParameter::TimeOffset),
+        problem.observations.history.as_ref(),
+    ) else {
+        return Ok(best);
+    };
+    let times = &history.data.times;
+    for _ in 0..MAX_ONSET_RESTARTS {
+        let t0 = best.estimates[index].value;
+        // Samples i−1 < t0 ≤ i: move the onset past sample i (later) or i−1 (earlier).
+        let i = times.partition_point(|&t| t < t0);
+        let later = (i < times.len()).then(|| times[i] + 0.5 * (times.get(i + 1).unwrap_or(&times[i]) - times[i]).max(0.0));
+        let earlier = (i >= 1).then(|| times[i - 1] - 0.5 * (times[i - 1] - times[i.saturating_sub(2)]));
+        let mut improved = false;
+        for candidate in [later, earlier].into_iter().flatten() {
+            let mut start = problem.start;
+            for e in &best.estimates {
+                start = start.with(e.parameter, e.value)?;
+            }
+            let restart = FitProblem { start: start.with(FitParameter::TimeOffset, candidate)?, ..problem.clone() };
+            // A restart the model cannot compute is no better.
+            let Ok(mut report) = fit_from(&restart, options) else { continue };
+            if report.chi_square < best.chi_square {
+                report.evaluations += best.evaluations;
+                for (e, first) in report.estimates.iter_mut().zip(&best.estimates) {
+                    e.start = first.start;
+                }
+                best = report;
+                improved = true;
+            }
+        }
+        if !improved {
+            break;
+        }
+    }
+    Ok(best)
+}
+
+/// One Levenberg–Marquardt run from `problem.start`.
+fn fit_from(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, IdentifyError> {
     if problem.free.is_empty() {
         return Err(IdentifyError::NoFreeParameters);
     }
@@ -228,15 +292,15 @@ pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Iden
     problem.observations.validate()?;
     let mut theta0 = Vec::with_capacity(problem.free.len());
     for &p in &problem.free {
-        let v = problem.start.get(p);
-        if log_space(p) {
-            if !(v > 0.0) {
-                return Err(IdentifyError::NotPositive { name: p.name(), value: v });
-            }
-            theta0.push(v.ln());
-        } else {
-            theta0.push(v);
-        }
+        problem.start.check_fittable(p, problem.observations.history.is_some())?;
+        let v = problem.start.get(p)?;
+        let coordinate = p.coordinate();
+        let theta = coordinate.theta(v).ok_or(IdentifyError::StartOutOfRange {
+            name: p.name(),
+            value: v,
+            requirement: coordinate.requirement(),
+        })?;
+        theta0.push(theta);
     }
     let (observed, sigma, labels) = flatten(&problem.observations);
     let lm_problem = Problem {
@@ -266,7 +330,7 @@ pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Iden
     let theta = solved.theta.clone();
     let residual_vector = solved.weighted(&theta)?;
     let jacobian = solved.jacobian_at(&theta)?;
-    let scenario = solved.scenario(&theta)?;
+    let point = solved.point(&theta)?;
 
     let m = residual_vector.len();
     let n = theta.len();
@@ -297,17 +361,17 @@ pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Iden
         .iter()
         .enumerate()
         .map(|(i, &p)| {
-            let value = scenario.get(p);
+            let value = point.get(p)?;
             let sigma_theta = covariance.as_ref().map(|c| c[(i, i)].sqrt());
-            Estimate {
+            Ok(Estimate {
                 parameter: p,
                 value,
-                standard_uncertainty: sigma_theta.map(|s| if log_space(p) { value * s } else { s }),
-                start: problem.start.get(p),
-                log_space: log_space(p),
-            }
+                standard_uncertainty: sigma_theta.map(|s| p.coordinate().slope(value).abs() * s),
+                start: problem.start.get(p)?,
+                coordinate: p.coordinate(),
+            })
         })
-        .collect();
+        .collect::<Result<Vec<_>, IdentifyError>>()?;
     let correlation = covariance.as_ref().map(|c| {
         (0..n)
             .map(|i| (0..n).map(|j| c[(i, j)] / (c[(i, i)] * c[(j, j)]).sqrt()).collect())
@@ -329,6 +393,7 @@ pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Iden
         })
         .collect();
     Ok(FitReport {
+        law: point.scenario.law_kind(),
         estimates,
         residuals,
         chi_square,
@@ -366,9 +431,9 @@ pub fn flatten(observations: &Observations) -> (Vec<f64>, Vec<f64>, Vec<String>)
     (observed, sigma, labels)
 }
 
-/// χ² = Σ ((model − data)/σ)² of a scenario against observations.
-pub fn misfit(solver: &Accurate, scenario: &Scenario, observations: &Observations) -> Result<f64, IdentifyError> {
-    let predicted = predict(solver, scenario, observations)?;
+/// χ² = Σ ((model − data)/σ)² of a model point against observations.
+pub fn misfit(solver: &Accurate, point: &ModelPoint, observations: &Observations) -> Result<f64, IdentifyError> {
+    let predicted = predict(solver, point, observations)?;
     let (observed, sigma, _) = flatten(observations);
     Ok(predicted.iter().zip(&observed).zip(&sigma).map(|((p, o), s)| ((p - o) / s).powi(2)).sum())
 }

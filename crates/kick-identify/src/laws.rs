@@ -1,28 +1,11 @@
 //! The contact-law comparison: every law of `kick_core::laws` on a scenario,
-//! solved by `kick_compliant::Accurate::solve_law_recorded` (Dop853 with
-//! located events, generic over the law).
+//! chosen the way every command chooses a law (`Scenario::with_law`) and
+//! solved by `kick_compliant::Accurate` (Dop853 with located events).
 
 use kick_compliant::Accurate;
-use kick_core::laws::{AnyLaw, LawError, LawKind, LawParameters};
-use kick_core::{KickError, Outcome, Scenario};
+use kick_core::laws::{AnyLaw, LawKind};
+use kick_core::{KickError, Outcome, RecordingSolver, Scenario, Solver};
 use serde::Serialize;
-
-/// Each law's parameters for one scenario: the hysteresis laws keep the
-/// scenario's k and n and take χ from `restitution` at the scenario's V0;
-/// Kelvin–Voigt takes the secant stiffness k δ_ref^(n−1) at the power law's
-/// maximum compression `reference_compression`, and c from `restitution`.
-pub fn law_parameters(scenario: &Scenario, restitution: f64, reference_compression: f64) -> LawParameters {
-    let law = scenario.law();
-    LawParameters {
-        stiffness: law.stiffness,
-        exponent: law.exponent,
-        damping: law.damping,
-        restitution,
-        impact_speed: scenario.approach_speed(),
-        reduced_mass: scenario.reduced_mass(),
-        linear_stiffness: law.stiffness * reference_compression.powf(law.exponent - 1.0),
-    }
-}
 
 /// One law on one scenario.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -44,21 +27,39 @@ pub struct LawComparison {
     pub runs: Vec<LawRun>,
 }
 
-/// Compare the five laws on `scenario`: the paper's law first, then the
-/// others given its effective restitution and (Kelvin–Voigt) its δ_max.
+/// Compare the laws on `scenario`: the paper's law first, then the others
+/// with its restitution as their target (`Scenario::with_law`: the
+/// hysteresis laws keep k and n and take χ from e at V0; Kelvin–Voigt takes
+/// the secant stiffness k δ*ⁿ⁻¹ at the undamped maximum compression δ* and
+/// c from e). Pulses are recorded at most `interval` apart.
 pub fn compare(name: &str, scenario: &Scenario, solver: &Accurate, interval: f64) -> Result<LawComparison, KickError> {
-    let paper = solver.solve_law(scenario, scenario.law())?;
-    let parameters = law_parameters(scenario, paper.restitution.clamp(f64::MIN_POSITIVE, 1.0), paper.max_compression);
+    let paper = solver.solve(&scenario.with_law(LawKind::PowerLaw, None)?)?;
+    // A fully plastic paper's law (e = 0) has no target the others can take.
+    let target = paper.restitution.clamp(f64::MIN_POSITIVE, 1.0);
     let mut runs = Vec::new();
     for kind in LawKind::ALL {
-        let law = AnyLaw::new(kind, &parameters).map_err(|e| match e {
-            LawError::Invalid(k) => k,
-            other => KickError::Integration { time: 0.0, reason: other.to_string() },
-        })?;
-        let (outcome, history) = solver.solve_law_recorded(scenario, law, interval)?;
-        let pulse = history.samples.iter().map(|s| (s.time, s.force)).collect();
-        runs.push(LawRun { law: kind, parameters: law, outcome, pulse });
+        let s = scenario.with_law(kind, Some(target))?;
+        let (outcome, history) = solver.solve_recorded(&s, interval)?;
+        let pulse = history.samples.iter().map(|x| (x.time, x.force)).collect();
+        runs.push(LawRun { law: kind, parameters: s.contact_law(), outcome, pulse });
     }
     Ok(LawComparison { name: name.into(), scenario: *scenario, restitution: paper.restitution, runs })
 }
 
+/// The laws that take their damping from a target restitution.
+pub const RESTITUTION_LAWS: [LawKind; 5] =
+    [LawKind::HuntCrossley, LawKind::LankaraniNikravesh, LawKind::Flores, LawKind::HuntCrossleyExact, LawKind::KelvinVoigt];
+
+/// Restitution each law gives when asked for e, on `scenario`: one row per
+/// target, one value per [`RESTITUTION_LAWS`] entry (simulated, not a formula).
+pub fn restitution_table(scenario: &Scenario, targets: &[f64], solver: &Accurate) -> Result<Vec<Vec<f64>>, KickError> {
+    targets
+        .iter()
+        .map(|&e| {
+            RESTITUTION_LAWS
+                .iter()
+                .map(|&kind| Ok(solver.solve(&scenario.with_law(kind, Some(e))?)?.restitution))
+                .collect()
+        })
+        .collect()
+}

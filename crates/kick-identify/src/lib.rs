@@ -3,11 +3,14 @@
 //! - [`data`]: observations — scalar observables (exit speed, contact time,
 //!   peak force, maximum compression) or time histories (force, compression,
 //!   velocities) — and the fit specification file.
-//! - [`model`]: the forward model, `kick_compliant::Accurate`, evaluated at
-//!   the observations (histories by Hermite interpolation between its steps).
+//! - [`model`]: the forward model, `kick_compliant::Accurate` with the
+//!   scenario's contact law, evaluated at the observations (histories by
+//!   Hermite interpolation between its steps, shifted by the time offset).
+//! - [`parameter`]: what a fit can vary: the scenario's parameters, the
+//!   target restitution of the laws other than the paper's, the time offset.
 //! - [`fit`]: Levenberg–Marquardt (crate `levenberg-marquardt`) over any subset
-//!   of the scenario's parameters, positive ones in log space, with standard
-//!   uncertainties from the Jacobian, residuals and the correlation matrix.
+//!   of those, positive ones in log space, the restitution in logit space, with
+//!   standard uncertainties from the Jacobian, residuals and the correlation matrix.
 //! - [`profile`]: misfit profiles and maps for the identifiability question.
 //! - [`table2`]: Table 2's changed parameter per row from the four printed observables.
 //! - [`synthetic`]: data from known parameters plus seeded Gaussian noise.
@@ -17,12 +20,14 @@ pub mod data;
 pub mod fit;
 pub mod laws;
 pub mod model;
+pub mod parameter;
 pub mod profile;
 pub mod synthetic;
 pub mod table2;
 
 pub use data::{Channel, FitSpec, HistoryData, Observable, Observations, ScalarObservation};
 pub use fit::{fit, Estimate, FitOptions, FitProblem, FitReport};
+pub use parameter::{Coordinate, FitParameter, ModelPoint};
 
 use kick_core::KickError;
 use thiserror::Error;
@@ -38,8 +43,10 @@ pub enum IdentifyError {
     DuplicateParameter(&'static str),
     #[error("unknown parameter `{name}`: expected one of {expected}")]
     UnknownParameter { name: String, expected: String },
-    #[error("parameter `{name}` starts at {value}: it is fitted in log space, so it must be > 0")]
-    NotPositive { name: &'static str, value: f64 },
+    #[error("parameter `{name}` starts at {value}: it must be {requirement}")]
+    StartOutOfRange { name: &'static str, value: f64, requirement: &'static str },
+    #[error("parameter `{parameter}` does not apply {context}: {reason}")]
+    NotApplicable { parameter: &'static str, context: String, reason: &'static str },
     #[error("no observations to fit")]
     NoData,
     #[error("unknown observable `{name}`: expected one of {expected}")]

@@ -6,8 +6,9 @@
 //! departure (one parameter of interest).
 
 use crate::data::{Channel, Observable, Observations};
-use crate::synthetic;
 use crate::fit::{fit, misfit, FitOptions, FitProblem};
+use crate::parameter::{FitParameter, ModelPoint};
+use crate::synthetic;
 use crate::IdentifyError;
 use kick_core::{Parameter, Scenario};
 use serde::Serialize;
@@ -20,12 +21,12 @@ pub struct ProfilePoint {
     /// Minimum χ² over the other free parameters.
     pub chi_square: f64,
     /// The other parameters at that minimum, as factors of their truth.
-    pub others: Vec<(Parameter, f64)>,
+    pub others: Vec<(FitParameter, f64)>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Profile {
-    pub parameter: Parameter,
+    pub parameter: FitParameter,
     pub truth: f64,
     pub points: Vec<ProfilePoint>,
 }
@@ -33,30 +34,34 @@ pub struct Profile {
 /// Profile each of `free` over `factors` × its value in `truth`, re-fitting
 /// the others from the truth (a start that favours the flat direction least).
 pub fn profiles(
-    truth: &Scenario,
-    free: &[Parameter],
+    truth: &ModelPoint,
+    free: &[FitParameter],
     factors: &[f64],
     observations: &Observations,
     options: &FitOptions,
 ) -> Result<Vec<Profile>, IdentifyError> {
     let mut out = Vec::new();
     for &p in free {
-        let others: Vec<Parameter> = free.iter().copied().filter(|&q| q != p).collect();
+        let others: Vec<FitParameter> = free.iter().copied().filter(|&q| q != p).collect();
         let mut points = Vec::new();
         for &factor in factors {
-            let value = truth.get(p) * factor;
+            let value = truth.get(p)? * factor;
             let start = truth.with(p, value)?;
             let (chi_square, refit) = if others.is_empty() {
                 (misfit(&options.solver, &start, observations)?, Vec::new())
             } else {
                 let problem = FitProblem { start, free: others.clone(), observations: observations.clone() };
                 let report = fit(&problem, options)?;
-                let refit = report.estimates.iter().map(|e| (e.parameter, e.value / truth.get(e.parameter))).collect();
+                let refit = report
+                    .estimates
+                    .iter()
+                    .map(|e| Ok((e.parameter, e.value / truth.get(e.parameter)?)))
+                    .collect::<Result<Vec<_>, IdentifyError>>()?;
                 (report.chi_square, refit)
             };
             points.push(ProfilePoint { factor, value, chi_square, others: refit });
         }
-        out.push(Profile { parameter: p, truth: truth.get(p), points });
+        out.push(Profile { parameter: p, truth: truth.get(p)?, points });
     }
     Ok(out)
 }
@@ -64,8 +69,8 @@ pub fn profiles(
 /// χ² on a grid of factors of two parameters, the rest at `truth`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MisfitMap {
-    pub x: Parameter,
-    pub y: Parameter,
+    pub x: FitParameter,
+    pub y: FitParameter,
     pub x_factors: Vec<f64>,
     pub y_factors: Vec<f64>,
     /// chi_square[iy][ix].
@@ -73,19 +78,20 @@ pub struct MisfitMap {
 }
 
 pub fn misfit_map(
-    truth: &Scenario,
-    (x, y): (Parameter, Parameter),
+    truth: &ModelPoint,
+    (x, y): (FitParameter, FitParameter),
     x_factors: &[f64],
     y_factors: &[f64],
     observations: &Observations,
     options: &FitOptions,
 ) -> Result<MisfitMap, IdentifyError> {
     let mut chi_square = Vec::with_capacity(y_factors.len());
+    let (x0, y0) = (truth.get(x)?, truth.get(y)?);
     for &fy in y_factors {
         let mut row = Vec::with_capacity(x_factors.len());
         for &fx in x_factors {
-            let s = truth.with(x, truth.get(x) * fx)?.with(y, truth.get(y) * fy)?;
-            row.push(misfit(&options.solver, &s, observations)?);
+            let point = truth.with(x, x0 * fx)?.with(y, y0 * fy)?;
+            row.push(misfit(&options.solver, &point, observations)?);
         }
         chi_square.push(row);
     }
@@ -118,8 +124,12 @@ pub struct IdentifiabilityStudy {
 }
 
 /// The four parameters of the paper's inverse problem (Section 19).
-pub const MODEL_PARAMETERS: [Parameter; 4] =
-    [Parameter::FootMass, Parameter::Stiffness, Parameter::Damping, Parameter::Exponent];
+pub const MODEL_PARAMETERS: [FitParameter; 4] = [
+    FitParameter::Scenario(Parameter::FootMass),
+    FitParameter::Scenario(Parameter::Stiffness),
+    FitParameter::Scenario(Parameter::Damping),
+    FitParameter::Scenario(Parameter::Exponent),
+];
 
 /// Profiles over `profile_points` factors in [1/spread, spread] and maps on a
 /// `map_points`² grid, for `truth` with exit-speed σ 0.01 m/s and the four
@@ -140,20 +150,21 @@ pub fn identifiability_study(
     let exit = synthetic::scalars(&options.solver, truth, &[(Observable::VBallOut, exit_speed_sigma)], None)?;
     let channels = Channel::ALL;
     let sigma = synthetic::lab_sigma(&channels);
+    let point = ModelPoint::from(*truth);
     let histories =
-        synthetic::history(&options.solver, truth, synthetic::time_grid(truth, times, 1.2), &sigma, seed)?;
+        synthetic::history(&options.solver, &point, synthetic::time_grid(truth, times, 1.2), &sigma, seed)?;
     let factors = log_factors(spread, profile_points);
     let map_factors = log_factors(spread, map_points);
-    let pair = (Parameter::Stiffness, Parameter::Damping);
+    let pair = (Parameter::Stiffness.into(), Parameter::Damping.into());
     Ok(IdentifiabilityStudy {
         truth: *truth,
         exit_speed_sigma,
         history_sigma: sigma.into_iter().collect(),
         history_times: times,
         seed,
-        exit_speed_profiles: profiles(truth, &MODEL_PARAMETERS, &factors, &exit, options)?,
-        history_profiles: profiles(truth, &MODEL_PARAMETERS, &factors, &histories, options)?,
-        exit_speed_map: misfit_map(truth, pair, &map_factors, &map_factors, &exit, options)?,
-        history_map: misfit_map(truth, pair, &map_factors, &map_factors, &histories, options)?,
+        exit_speed_profiles: profiles(&point, &MODEL_PARAMETERS, &factors, &exit, options)?,
+        history_profiles: profiles(&point, &MODEL_PARAMETERS, &factors, &histories, options)?,
+        exit_speed_map: misfit_map(&point, pair, &map_factors, &map_factors, &exit, options)?,
+        history_map: misfit_map(&point, pair, &map_factors, &map_factors, &histories, options)?,
     })
 }

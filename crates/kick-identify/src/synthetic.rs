@@ -3,6 +3,7 @@
 
 use crate::data::{Channel, HistoryData, Observable, Observations, ScalarObservation, WeightedHistory};
 use crate::model::predict;
+use crate::parameter::ModelPoint;
 use crate::IdentifyError;
 use kick_compliant::Accurate;
 use kick_core::Scenario;
@@ -58,10 +59,11 @@ pub fn time_grid(scenario: &Scenario, count: usize, span: f64) -> Vec<f64> {
     (0..count).map(|i| end * i as f64 / (count - 1) as f64).collect()
 }
 
-/// Channels of `truth` at `times`, each plus N(0, sigma²) noise from `seed`.
+/// Channels of `truth` (its scenario, law and time offset) at `times`, each
+/// plus N(0, sigma²) noise from `seed`.
 pub fn history(
     solver: &Accurate,
-    truth: &Scenario,
+    truth: &ModelPoint,
     times: Vec<f64>,
     sigma: &BTreeMap<Channel, f64>,
     seed: u64,

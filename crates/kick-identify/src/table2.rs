@@ -46,6 +46,18 @@ pub fn printed_observations(row: &PrintedRow) -> Observations {
     }
 }
 
+/// A solver's unrounded values of the four printed observables, with the
+/// printed precision as σ (to fit the same model to them as to the print).
+pub fn unrounded_observations(outcome: &kick_core::Outcome) -> Observations {
+    Observations {
+        scalars: PRINTED_SIGMA
+            .iter()
+            .map(|&(observable, sigma)| ScalarObservation { observable, value: observable.value(outcome), sigma })
+            .collect(),
+        history: None,
+    }
+}
+
 /// One row's answer.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Table2Fit {
@@ -97,7 +109,7 @@ pub fn fit_row_to(index: usize, observations: Observations, options: &FitOptions
         }
         Some(p) => {
             let start = scan(p, low, high, &observations, options)?;
-            let problem = FitProblem { start, free: vec![p], observations };
+            let problem = FitProblem { start: start.into(), free: vec![p.into()], observations };
             let report = fit(&problem, options)?;
             Ok(Table2Fit { name: row.name.into(), parameter: Some(p), report: Some(report), baseline_residuals: None })
         }
@@ -111,7 +123,7 @@ fn scan(p: Parameter, low: f64, high: f64, observations: &Observations, options:
         let u = i as f64 / (SCAN_POINTS - 1) as f64;
         let v = if log_space(p) { low * (high / low).powf(u) } else { low + (high - low) * u };
         let Ok(s) = Scenario::baseline().with(p, v) else { continue };
-        let Ok(chi_square) = misfit(&options.solver, &s, observations) else { continue };
+        let Ok(chi_square) = misfit(&options.solver, &s.into(), observations) else { continue };
         if best.is_none_or(|(b, _)| chi_square < b) {
             best = Some((chi_square, s));
         }

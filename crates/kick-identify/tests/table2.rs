@@ -17,9 +17,8 @@ use kick_compliant::table2::Table2File;
 use kick_compliant::SeedRk4;
 use kick_core::paper::TABLE2;
 use kick_core::Solver;
-use kick_identify::data::{Observations, ScalarObservation};
 use kick_identify::fit::{log_space, FitOptions};
-use kick_identify::table2::{fit_row, fit_row_to, PRINTED_SIGMA};
+use kick_identify::table2::{fit_row, fit_row_to, unrounded_observations};
 
 fn scenario_file() -> Table2File {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../experiments/table2.toml");
@@ -44,14 +43,7 @@ fn scenario_file_agrees_with_least_squares_fit() {
 
         // Same fit to seed-rk4's unrounded outputs at the file's value.
         let outcome = seed.solve(scenario).unwrap();
-        let observations = Observations::scalars(
-            PRINTED_SIGMA
-                .iter()
-                .map(|&(observable, s)| ScalarObservation { observable, value: observable.value(&outcome), sigma: s })
-                .collect(),
-        )
-        .unwrap();
-        let unrounded = fit_row_to(index, observations, &options).unwrap();
+        let unrounded = fit_row_to(index, unrounded_observations(&outcome), &options).unwrap();
         let seed_value = unrounded.value().unwrap();
 
         // Worst-case rounding bound Σ|g_i| with g = J/(JᵀJ) (one parameter).

@@ -19,6 +19,11 @@
 //! /solvers/<solver>/...  outcomes, failures and histories of every further solver
 //! /scenario_names        string[rows] (named scenarios only)
 //! ```
+//!
+//! Results that are not one table (a fit report, misfit profiles) use
+//! [`ResultWriter`] and [`ResultFile`]: the same provenance, temporary name
+//! and `units` on every dataset, in a group layout of their own, named by the
+//! root attribute `layout`.
 
 use crate::provenance::Provenance;
 use hdf5::types::VarLenUnicode;
@@ -238,11 +243,7 @@ impl SweepWriter {
                 return Err(layout(path, "`status` is reserved for the status dataset"));
             }
         }
-        let mut temporary = path.as_os_str().to_owned();
-        temporary.push(".tmp");
-        let temporary = PathBuf::from(temporary);
-        let file = File::create(&temporary).map_err(h5err(path))?;
-        write_provenance(&file, path, provenance)?;
+        let (file, temporary) = create_file(path, provenance)?;
         write_u64_attr(&file, path, "layout_version", u64::from(LAYOUT_VERSION))?;
         write_set_attrs(&file, path, &sets[0])?;
 
@@ -428,10 +429,158 @@ impl SweepWriter {
         let SweepWriter { path, temporary, file, parameters, sets, .. } = self;
         drop(parameters);
         drop(sets);
-        file.close().map_err(h5err(&path))?;
-        std::fs::rename(&temporary, &path)
-            .map_err(|e| layout(&path, format!("cannot rename {}: {e}", temporary.display())))?;
-        Ok(path)
+        close_file(file, &temporary, path)
+    }
+}
+
+/// `NAME.h5.tmp` with the provenance at its root.
+fn create_file(path: &Path, provenance: &Provenance) -> Result<(File, PathBuf), H5Error> {
+    disable_file_locking();
+    let mut temporary = path.as_os_str().to_owned();
+    temporary.push(".tmp");
+    let temporary = PathBuf::from(temporary);
+    let file = File::create(&temporary).map_err(h5err(path))?;
+    write_provenance(&file, path, provenance)?;
+    Ok((file, temporary))
+}
+
+/// Close the temporary file and give it its final name.
+fn close_file(file: File, temporary: &Path, path: PathBuf) -> Result<PathBuf, H5Error> {
+    file.close().map_err(h5err(&path))?;
+    std::fs::rename(temporary, &path).map_err(|e| layout(&path, format!("cannot rename {}: {e}", temporary.display())))?;
+    Ok(path)
+}
+
+/// Writes a result file of one's own group layout: provenance and `layout`
+/// at the root, every dataset 1D with a `units` attribute (scalars are
+/// one-element datasets), written as `NAME.h5.tmp` and renamed on
+/// [`ResultWriter::finish`]. Groups are slash-separated paths below the root.
+pub struct ResultWriter {
+    path: PathBuf,
+    temporary: PathBuf,
+    file: File,
+}
+
+impl ResultWriter {
+    /// Create the file; `layout` names its group layout (documented where it is written).
+    pub fn create(path: &Path, provenance: &Provenance, layout: &str) -> Result<ResultWriter, H5Error> {
+        let (file, temporary) = create_file(path, provenance)?;
+        write_str_attr(&file, path, "layout", layout)?;
+        Ok(ResultWriter { path: path.to_path_buf(), temporary, file })
+    }
+
+    fn group(&self, group: &str) -> Result<Group, H5Error> {
+        group_at(&self.file, group, &self.path)
+    }
+
+    /// A 1D f64 dataset `group/column.name` with its unit.
+    pub fn column(&self, group: &str, column: &Column, values: &[f64]) -> Result<(), H5Error> {
+        write_column(&self.group(group)?, &self.path, column, values)
+    }
+
+    /// A one-element f64 dataset `group/name` with its unit.
+    pub fn scalar(&self, group: &str, name: &str, unit: &str, value: f64) -> Result<(), H5Error> {
+        self.column(group, &Column::new(name, unit), &[value])
+    }
+
+    /// A 1D string dataset `group/name` (units empty).
+    pub fn strings(&self, group: &str, name: &str, values: &[String]) -> Result<(), H5Error> {
+        write_strings(&self.group(group)?, &self.path, name, values)
+    }
+
+    /// A string attribute of `group` ("" for the root).
+    pub fn text(&self, group: &str, name: &str, value: &str) -> Result<(), H5Error> {
+        let location = self.group(group)?;
+        write_str_attr(&location, &self.path, name, value)
+    }
+
+    /// Close and rename the file.
+    pub fn finish(self) -> Result<PathBuf, H5Error> {
+        close_file(self.file, &self.temporary, self.path)
+    }
+}
+
+/// A result file opened for reading by dataset path.
+pub struct ResultFile {
+    path: PathBuf,
+    file: File,
+}
+
+impl ResultFile {
+    pub fn open(path: &Path) -> Result<ResultFile, H5Error> {
+        disable_file_locking();
+        let file = File::open(path).map_err(h5err(path))?;
+        Ok(ResultFile { path: path.to_path_buf(), file })
+    }
+
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// The dataset at `path` with its unit; a dataset without one is a layout error.
+    pub fn column(&self, path: &str) -> Result<(Column, Vec<f64>), H5Error> {
+        let dataset = self.file.dataset(path).map_err(|e| layout(&self.path, format!("{path}: {e}")))?;
+        let unit =
+            read_str_attr(&dataset, "units").ok_or_else(|| layout(&self.path, format!("dataset {path} has no units attribute")))?;
+        let values = dataset.read_raw::<f64>().map_err(h5err(&self.path))?;
+        let name = path.rsplit('/').next().unwrap_or(path).to_string();
+        Ok((Column { name, unit }, values))
+    }
+
+    /// The values of the dataset at `path`.
+    pub fn values(&self, path: &str) -> Result<Vec<f64>, H5Error> {
+        Ok(self.column(path)?.1)
+    }
+
+    /// The one value of a one-element dataset.
+    pub fn scalar(&self, path: &str) -> Result<f64, H5Error> {
+        match self.values(path)?.as_slice() {
+            [v] => Ok(*v),
+            other => Err(layout(&self.path, format!("{path}: {} values, expected one", other.len()))),
+        }
+    }
+
+    /// Whether a dataset or group exists at `path`.
+    pub fn exists(&self, path: &str) -> bool {
+        let mut group: Group = (*self.file).clone();
+        let parts: Vec<&str> = path.split('/').filter(|p| !p.is_empty()).collect();
+        for (i, part) in parts.iter().enumerate() {
+            if !group.link_exists(part) {
+                return false;
+            }
+            if i + 1 < parts.len() {
+                match group.group(part) {
+                    Ok(g) => group = g,
+                    Err(_) => return false,
+                }
+            }
+        }
+        true
+    }
+
+    pub fn strings(&self, path: &str) -> Result<Vec<String>, H5Error> {
+        let raw = self
+            .file
+            .dataset(path)
+            .and_then(|d| d.read_raw::<VarLenUnicode>())
+            .map_err(|e| layout(&self.path, format!("{path}: {e}")))?;
+        Ok(raw.iter().map(|s| s.as_str().to_string()).collect())
+    }
+
+    /// A string attribute of the group at `group` ("" for the root).
+    pub fn text(&self, group: &str, name: &str) -> Result<String, H5Error> {
+        let location: Group = if group.is_empty() {
+            (*self.file).clone()
+        } else {
+            self.file.group(group).map_err(|e| layout(&self.path, format!("{group}: {e}")))?
+        };
+        read_str_attr(&location, name).ok_or_else(|| layout(&self.path, format!("{group}: no attribute `{name}`")))
+    }
+
+    /// Names of the members of the group at `group`, in HDF5's (alphabetical) order.
+    pub fn members(&self, group: &str) -> Result<Vec<String>, H5Error> {
+        let g = self.file.group(group).map_err(|e| layout(&self.path, format!("{group}: {e}")))?;
+        g.member_names().map_err(h5err(&self.path))
     }
 }
 

@@ -16,6 +16,6 @@ pub mod run;
 pub mod sample;
 
 pub use experiment::{Experiment, ExperimentError, Output, Scenarios};
-pub use h5::{Column, OutcomeSet, SweepData, SweepWriter};
+pub use h5::{Column, OutcomeSet, ResultFile, ResultWriter, SweepData, SweepWriter};
 pub use provenance::Provenance;
 pub use run::{run, RunSummary};

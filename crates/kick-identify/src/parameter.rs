@@ -1,0 +1,250 @@
+//! What a fit can vary: the scenario's parameters, the target restitution of
+//! the laws other than the paper's, and the data's time offset.
+
+use crate::IdentifyError;
+use kick_core::{LawKind, Parameter, Scenario};
+use serde::{Serialize, Serializer};
+
+/// One fitted quantity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FitParameter {
+    /// One of the eight scenario parameters (Table 1).
+    Scenario(Parameter),
+    /// e, the target restitution from which every law but the paper's takes
+    /// its damping (`Scenario::with_law`).
+    Restitution,
+    /// t0, s: the data's time of first touch; the model is read at t − t0.
+    TimeOffset,
+}
+
+impl FitParameter {
+    pub const NAMES: &'static str = "foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, \
+                                     drive_force, restitution, time_offset";
+
+    /// Name in fit specifications and reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            FitParameter::Scenario(p) => p.name(),
+            FitParameter::Restitution => "restitution",
+            FitParameter::TimeOffset => "time_offset",
+        }
+    }
+
+    pub fn unit(self) -> &'static str {
+        match self {
+            FitParameter::Scenario(p) => p.unit(),
+            FitParameter::Restitution => "1",
+            FitParameter::TimeOffset => "s",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Result<FitParameter, IdentifyError> {
+        match name {
+            "restitution" => Ok(FitParameter::Restitution),
+            "time_offset" => Ok(FitParameter::TimeOffset),
+            _ => Parameter::from_name(name).map(FitParameter::Scenario).ok_or_else(|| IdentifyError::UnknownParameter {
+                name: name.to_string(),
+                expected: FitParameter::NAMES.to_string(),
+            }),
+        }
+    }
+
+    /// The coordinate the optimiser moves in: every trial point is then valid.
+    pub fn coordinate(self) -> Coordinate {
+        match self {
+            FitParameter::Scenario(
+                Parameter::FootMass | Parameter::BallMass | Parameter::Stiffness | Parameter::Damping | Parameter::Exponent,
+            ) => Coordinate::Log,
+            FitParameter::Scenario(_) | FitParameter::TimeOffset => Coordinate::Linear,
+            FitParameter::Restitution => Coordinate::Logit,
+        }
+    }
+}
+
+impl From<Parameter> for FitParameter {
+    fn from(p: Parameter) -> Self {
+        FitParameter::Scenario(p)
+    }
+}
+
+impl Serialize for FitParameter {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.name())
+    }
+}
+
+/// θ, the optimiser's coordinate of a parameter p.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Coordinate {
+    /// θ = p (speeds, drive force, time offset).
+    Linear,
+    /// θ = ln p (masses, k, c, n: positive).
+    Log,
+    /// θ = ln(p/(1 − p)) (restitution, in (0, 1)).
+    Logit,
+}
+
+impl Coordinate {
+    /// θ of p; `None` where p is outside the coordinate's domain.
+    pub fn theta(self, p: f64) -> Option<f64> {
+        let theta = match self {
+            Coordinate::Linear => p,
+            Coordinate::Log if p > 0.0 => p.ln(),
+            Coordinate::Logit if p > 0.0 && p < 1.0 => (p / (1.0 - p)).ln(),
+            _ => return None,
+        };
+        theta.is_finite().then_some(theta)
+    }
+
+    /// p of θ.
+    pub fn value(self, theta: f64) -> f64 {
+        match self {
+            Coordinate::Linear => theta,
+            Coordinate::Log => theta.exp(),
+            Coordinate::Logit => 1.0 / (1.0 + (-theta).exp()),
+        }
+    }
+
+    /// dp/dθ at p: turns a standard uncertainty in θ into one in p (first order).
+    pub fn slope(self, p: f64) -> f64 {
+        match self {
+            Coordinate::Linear => 1.0,
+            Coordinate::Log => p,
+            Coordinate::Logit => p * (1.0 - p),
+        }
+    }
+
+    /// What the domain requires, for error messages.
+    pub fn requirement(self) -> &'static str {
+        match self {
+            Coordinate::Linear => "finite",
+            Coordinate::Log => "> 0 (it is fitted as ln p)",
+            Coordinate::Logit => "in (0, 1) (it is fitted as ln(e/(1 − e)))",
+        }
+    }
+}
+
+/// A point of the model the data are compared with: the scenario (with its
+/// contact law) and the time offset t0 of the data.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ModelPoint {
+    pub scenario: Scenario,
+    /// t0, s: data time t is model time t − t0.
+    pub time_offset: f64,
+}
+
+impl From<Scenario> for ModelPoint {
+    fn from(scenario: Scenario) -> Self {
+        ModelPoint { scenario, time_offset: 0.0 }
+    }
+}
+
+impl ModelPoint {
+    pub fn new(scenario: Scenario, time_offset: f64) -> Result<ModelPoint, IdentifyError> {
+        ModelPoint::from(scenario).with(FitParameter::TimeOffset, time_offset)
+    }
+
+    /// The value of `parameter` at this point.
+    pub fn get(&self, parameter: FitParameter) -> Result<f64, IdentifyError> {
+        match parameter {
+            FitParameter::Scenario(p) => Ok(self.scenario.get(p)),
+            // None exactly for the paper's law.
+            FitParameter::Restitution => self.scenario.restitution_target().ok_or_else(|| {
+                self.refusal(parameter, true)
+                    .unwrap_or_else(|| IdentifyError::data("restitution", "the scenario has no target restitution"))
+            }),
+            FitParameter::TimeOffset => Ok(self.time_offset),
+        }
+    }
+
+    /// A copy with `parameter` set to `value`, validated (the law kept; a
+    /// law other than the paper's recomputes its damping from its target
+    /// restitution at the new masses and speeds).
+    pub fn with(&self, parameter: FitParameter, value: f64) -> Result<ModelPoint, IdentifyError> {
+        match parameter {
+            FitParameter::Scenario(p) => Ok(ModelPoint { scenario: self.scenario.with(p, value)?, ..*self }),
+            FitParameter::Restitution => {
+                if let Some(refused) = self.refusal(parameter, true) {
+                    return Err(refused);
+                }
+                let scenario = self.scenario.with_law(self.scenario.law_kind(), Some(value))?;
+                Ok(ModelPoint { scenario, ..*self })
+            }
+            FitParameter::TimeOffset => {
+                if !value.is_finite() {
+                    return Err(IdentifyError::data("time_offset", format!("{value}: must be finite")));
+                }
+                Ok(ModelPoint { time_offset: value, ..*self })
+            }
+        }
+    }
+
+    /// Refuse to fit a parameter that does not act on the model's
+    /// predictions here (the law, and whether the data include a history):
+    /// it would be a flat direction of χ², not an estimate.
+    pub fn check_fittable(&self, parameter: FitParameter, has_history: bool) -> Result<(), IdentifyError> {
+        match self.refusal(parameter, has_history) {
+            Some(refused) => Err(refused),
+            None => Ok(()),
+        }
+    }
+
+    /// Why `parameter` cannot be fitted at this point, if it cannot.
+    fn refusal(&self, parameter: FitParameter, has_history: bool) -> Option<IdentifyError> {
+        let law = self.scenario.law_kind();
+        let (context, reason) = match parameter {
+            FitParameter::Scenario(Parameter::Damping) if law != LawKind::PowerLaw => {
+                (law, "its damping follows from the target restitution; fit `restitution` instead")
+            }
+            FitParameter::Scenario(Parameter::Exponent) if law == LawKind::KelvinVoigt => {
+                (law, "the law is linear; n only sets its secant stiffness k δ*^(n−1), which `stiffness` already moves")
+            }
+            FitParameter::Restitution if law == LawKind::PowerLaw => {
+                (law, "the paper's law (Eq. 20) has no target restitution; fit `damping`, or choose another law")
+            }
+            FitParameter::TimeOffset if !has_history => {
+                return Some(IdentifyError::NotApplicable {
+                    parameter: parameter.name(),
+                    context: "to scalar observations".into(),
+                    reason: "a time offset only shifts a recorded history; add a [history]",
+                })
+            }
+            _ => return None,
+        };
+        Some(IdentifyError::NotApplicable {
+            parameter: parameter.name(),
+            context: format!("to contact law `{}`", context.name()),
+            reason,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn coordinates_invert_and_refuse_their_outside() {
+        for (c, p) in [(Coordinate::Linear, -3.5), (Coordinate::Log, 4.2e5), (Coordinate::Logit, 0.662)] {
+            let theta = c.theta(p).unwrap();
+            assert!((c.value(theta) - p).abs() <= 4.0 * f64::EPSILON * p.abs());
+            // dp/dθ against a central difference of value(θ).
+            let h = 1e-6;
+            let fd = (c.value(theta + h) - c.value(theta - h)) / (2.0 * h);
+            assert!((fd - c.slope(p)).abs() <= 1e-8 * c.slope(p).abs(), "{c:?}: {fd} vs {}", c.slope(p));
+        }
+        assert_eq!(Coordinate::Log.theta(0.0), None);
+        assert_eq!(Coordinate::Logit.theta(1.0), None);
+        assert_eq!(Coordinate::Logit.theta(0.0), None);
+        assert_eq!(Coordinate::Linear.theta(f64::NAN), None);
+    }
+
+    #[test]
+    fn names_round_trip() {
+        for p in Parameter::ALL.map(FitParameter::from).into_iter().chain([FitParameter::Restitution, FitParameter::TimeOffset]) {
+            assert_eq!(FitParameter::from_name(p.name()).unwrap(), p);
+        }
+        assert!(matches!(FitParameter::from_name("t0"), Err(IdentifyError::UnknownParameter { .. })));
+    }
+}
