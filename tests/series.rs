@@ -1,6 +1,8 @@
 //! The `series` solver (power series through compression, energy integral
 //! back) against closed forms, an independent closed form with a drive, the
 //! tight `accurate` reference, and itself as its tolerance tightens.
+//! Its documented accuracy at the default tolerance: 1e-10 relative on every
+//! observable (`kick_compliant::series`); the target is 1e-9.
 
 use kick_compliant::precision::max_relative_error;
 use kick_compliant::{closed::ClosedForm, Accurate, Series};
@@ -17,7 +19,7 @@ fn matches_the_closed_forms() {
         let exact = ClosedForm.solve(&scenario).unwrap();
         let series = Series::default().solve(&scenario).unwrap();
         let error = max_relative_error(&series, &exact);
-        assert!(error < 1e-11, "{name}: {error:e}");
+        assert!(error < 1e-10, "{name}: {error:e}");
         assert_eq!(series.method, "series");
     }
 }
@@ -79,7 +81,7 @@ fn linear_law_under_a_drive_matches_its_closed_form() {
             ("v_b⁺", o.v_ball_out, v_ball),
             ("e", o.restitution, restitution),
         ] {
-            assert!(relative(got, want) < 1e-11, "drive {drive} N, {what}: {got} vs {want} ({:e})", relative(got, want));
+            assert!(relative(got, want) < 1e-10, "drive {drive} N, {what}: {got} vs {want} ({:e})", relative(got, want));
         }
     }
 }

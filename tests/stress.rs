@@ -154,8 +154,9 @@ fn check_scene(scene: Scene) -> Result<(), TestCaseError> {
             prop_assert!(disagreement(a, r, approach) <= 1e-8 * ratio, "auto ({}) vs reduced: {:e}", a.method, disagreement(a, r, approach));
             prop_assert!(disagreement(p, r, approach) <= 1e-8 * ratio, "series vs reduced: {:e}", disagreement(p, r, approach));
             if s.get(kick_core::Parameter::Damping) == 0.0 {
-                // Nothing dissipates: ½ μ w² = ½ μ V0² whatever the drive did.
-                prop_assert!((p.restitution - 1.0).abs() <= 1e-12, "series: c = 0 but e = {}", p.restitution);
+                // Nothing dissipates: ½ μ w² = ½ μ V0² whatever the drive did,
+                // to the series' documented accuracy (1e-10).
+                prop_assert!((p.restitution - 1.0).abs() <= 1e-10, "series: c = 0 but e = {}", p.restitution);
             }
             if ClosedForm::applies(&s) {
                 let exact = ClosedForm.solve(&s).unwrap();

@@ -50,11 +50,12 @@ impl SolverChoice {
     /// Look a solver up by its `--solver` name at default settings; `step` is
     /// the fixed step of `seed-rk4` and `rk4-events`.
     pub fn from_name(name: &str, step: f64) -> Result<SolverChoice, KickError> {
-        let tolerance = match name {
-            "dopri5" => DOPRI5_DEFAULT_TOLERANCE,
-            _ => Accurate::default().relative_tolerance,
-        };
-        SolverChoice::with_settings(name, step, tolerance)
+        match name {
+            "auto" => Ok(SolverChoice::Auto(Auto::default())),
+            "series" => Ok(SolverChoice::Series(Series::default())),
+            "dopri5" => SolverChoice::with_settings(name, step, DOPRI5_DEFAULT_TOLERANCE),
+            _ => SolverChoice::with_settings(name, step, Accurate::default().relative_tolerance),
+        }
     }
 
     /// As `from_name` with the adaptive methods' tolerance (relative and

@@ -32,20 +32,36 @@ pub fn return_time(max_compression: f64, exit_speed: f64, exponent: f64) -> f64 
 /// y^(n+1) branch point at y = 0 and, as β → 1, a 1/√y end, is left to
 /// tanh–sinh quadrature on z ∈ (0, 1), refined by halving the step until two
 /// levels agree to 1e-9 (the error squares per halving, so the result is then
-/// good to rounding; the tests compare it with the Beta function and with an
-/// independent adaptive Simpson rule).
+/// good to rounding). With a margin of at least 1/2 a fixed 24-point
+/// Gauss–Legendre rule after z = 1 − u² does as well for less. The tests
+/// compare both with the Beta function, with each other and with an
+/// independent adaptive Simpson rule.
 pub fn driven_return_integral(exponent: f64, margin: f64) -> f64 {
     if !(margin >= 0.0) || !(exponent > 0.0) {
         return f64::NAN;
     }
-    let beta = 1.0 - margin;
     if margin == 1.0 {
         let a = 1.0 / (exponent + 1.0);
         return beta_function_return(a);
     }
-    let power = exponent + 1.0;
-    // 2 / √r(z), r = q(1 − z²)/z², computed without cancellation at both ends.
-    let integrand = |z: f64, complement: f64| {
+    let integrand = return_integrand(exponent, margin);
+    if margin >= GAUSS_MARGIN {
+        // z = 1 − u²: the y^(n+1) end becomes u^(2n+2), smooth enough for
+        // Gauss–Legendre; with the margin this wide the nearest complex
+        // singularity (u ≈ ±i √(margin/2β)) is far from [0, 1].
+        return gauss_legendre(|u| {
+            let complement = u * u;
+            2.0 * u * integrand(1.0 - complement, complement)
+        });
+    }
+    tanh_sinh(integrand, 1e-9)
+}
+
+/// The integrand of I(n, β) after y = 1 − z², as a function of z and 1 − z:
+/// 2/√r(z), r = q(1 − z²)/z², computed without cancellation at both ends.
+fn return_integrand(exponent: f64, margin: f64) -> impl Fn(f64, f64) -> f64 {
+    let (power, beta) = (exponent + 1.0, 1.0 - margin);
+    move |z: f64, complement: f64| {
         let z2 = z * z;
         let q = if z < 0.5 {
             // y near 1: 1 − y^(n+1) = −expm1((n+1) ln(1 − z²)).
@@ -56,8 +72,42 @@ pub fn driven_return_integral(exponent: f64, margin: f64) -> f64 {
             margin + y * (beta - y.powf(exponent))
         };
         2.0 / (q / z2).sqrt()
-    };
-    tanh_sinh(integrand, 1e-9)
+    }
+}
+
+/// Margins from which the fixed Gauss–Legendre rule is used (tested against
+/// tanh–sinh and an independent Simpson rule down to this value).
+const GAUSS_MARGIN: f64 = 0.5;
+const GAUSS_NODES: usize = 24;
+
+/// ∫₀¹ f by Gauss–Legendre with GAUSS_NODES nodes (computed once by Newton
+/// steps on the Legendre polynomial).
+fn gauss_legendre(f: impl Fn(f64) -> f64) -> f64 {
+    static RULE: std::sync::OnceLock<[(f64, f64); GAUSS_NODES]> = std::sync::OnceLock::new();
+    let rule = RULE.get_or_init(|| {
+        let n = GAUSS_NODES;
+        std::array::from_fn(|i| {
+            // Root i of P_n on (−1, 1), from the Chebyshev-like first guess.
+            let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+            let mut derivative = 0.0;
+            for _ in 0..100 {
+                let (mut p0, mut p1) = (1.0, x);
+                for k in 2..=n {
+                    let k = k as f64;
+                    (p0, p1) = (p1, ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k);
+                }
+                derivative = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+                let step = p1 / derivative;
+                x -= step;
+                if step.abs() < 1e-16 {
+                    break;
+                }
+            }
+            // Mapped to (0, 1): node (1 − x)/2, weight 1/((1 − x²) P_n'²).
+            ((1.0 - x) / 2.0, 1.0 / ((1.0 - x * x) * derivative * derivative))
+        })
+    });
+    rule.iter().map(|&(node, weight)| weight * f(node)).sum()
 }
 
 fn beta_function_return(a: f64) -> f64 {
@@ -203,6 +253,17 @@ mod tests {
                 let quadrature = driven_return_integral(exponent, 1.0 - beta);
                 let reference = independent(exponent, beta);
                 assert!((quadrature / reference - 1.0).abs() < 1e-10, "n = {exponent}, β = {beta}: {quadrature} vs {reference}");
+            }
+        }
+    }
+
+    #[test]
+    fn gauss_legendre_and_tanh_sinh_agree_where_they_meet() {
+        for exponent in [1.0, 1.35, 1.9, 3.0] {
+            for margin in [GAUSS_MARGIN, 0.7, 1.5, 6.0] {
+                let gauss = driven_return_integral(exponent, margin);
+                let tanh = tanh_sinh(return_integrand(exponent, margin), 1e-12);
+                assert!((gauss / tanh - 1.0).abs() < 1e-13, "n = {exponent}, margin {margin}: {gauss} vs {tanh}");
             }
         }
     }

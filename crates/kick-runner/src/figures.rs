@@ -96,7 +96,7 @@ impl Panel {
 }
 
 /// The palette of every figure: black first (a reference curve), then tab10.
-pub const COLORS: [RGBColor; 7] = [
+pub const COLORS: [RGBColor; 9] = [
     RGBColor(0, 0, 0),
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
@@ -104,6 +104,8 @@ pub const COLORS: [RGBColor; 7] = [
     RGBColor(148, 103, 189),
     RGBColor(255, 127, 14),
     RGBColor(23, 190, 207),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
 ];
 
 /// Colour of the i-th curve of a figure (skipping the reference black).

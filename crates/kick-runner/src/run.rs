@@ -108,11 +108,87 @@ fn solve(solver: &SolverChoice, scenario: &Result<Scenario, KickError>) -> Resul
     scenario.clone().and_then(|s| solver.solve(&s))
 }
 
+/// One chunk of rows: its scenarios and every solver's results.
+struct Chunk {
+    start: u64,
+    end: u64,
+    scenarios: Vec<Result<Scenario, KickError>>,
+    outcomes: Vec<Vec<Result<Outcome, KickError>>>,
+    histories: Vec<Vec<Result<(Outcome, History), KickError>>>,
+}
+
+impl Chunk {
+    fn new(solvers: usize) -> Chunk {
+        Chunk {
+            start: 0,
+            end: 0,
+            scenarios: Vec::with_capacity(CHUNK_ROWS),
+            outcomes: vec![Vec::with_capacity(CHUNK_ROWS); solvers],
+            histories: vec![Vec::new(); solvers],
+        }
+    }
+
+    /// Make and solve rows start..end in parallel.
+    fn solve(&mut self, experiment: &Experiment, start: u64, end: u64) {
+        (self.start, self.end) = (start, end);
+        // Scenario i is a pure function of i (sampled sweeps included).
+        (0..(end - start) as usize)
+            .into_par_iter()
+            .map(|j| experiment.scenarios.scenario(start + j as u64))
+            .collect_into_vec(&mut self.scenarios);
+        for (k, solver) in experiment.solvers.iter().enumerate() {
+            match experiment.output {
+                Output::Summary => self.scenarios.par_iter().map(|s| solve(solver, s)).collect_into_vec(&mut self.outcomes[k]),
+                Output::History { interval } => {
+                    self.scenarios
+                        .par_iter()
+                        .map(|s| s.clone().and_then(|s| solver.solve_recorded(&s, interval)))
+                        .collect_into_vec(&mut self.histories[k]);
+                }
+            }
+        }
+    }
+
+    /// Append the chunk's rows to the file, in order; nothing when empty.
+    fn write(&self, writer: &mut SweepWriter, experiment: &Experiment) -> Result<(), RunError> {
+        if self.start == self.end {
+            return Ok(());
+        }
+        for (j, scenario) in self.scenarios.iter().enumerate() {
+            let row = self.start as usize + j;
+            let values = match scenario {
+                Ok(s) => s.values(),
+                Err(_) => [f64::NAN; 8],
+            };
+            writer.push_parameters(&values)?;
+            for k in 0..experiment.solvers.len() {
+                let result = match experiment.output {
+                    Output::Summary => self.outcomes[k][j].as_ref().map(|o| o.observable_values()),
+                    Output::History { .. } => self.histories[k][j].as_ref().map(|(o, _)| o.observable_values()),
+                };
+                match result {
+                    Ok(values) => writer.push_outcome(k, Ok(&values))?,
+                    Err(e) => writer.push_outcome(k, Err(&e.to_string()))?,
+                }
+                if let Output::History { .. } = experiment.output {
+                    if let Ok((_, history)) = &self.histories[k][j] {
+                        let columns = history_columns(history);
+                        let refs: Vec<(Column, &[f64])> = columns.iter().map(|(c, v)| (c.clone(), v.as_slice())).collect();
+                        writer.write_history(k, row, &refs)?;
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
 /// Run `experiment` and write `out_dir/NAME.h5`.
 ///
 /// Scenarios are solved in parallel (rayon's current pool) chunk by chunk and
 /// written in input order, so the file's numbers do not depend on the number
-/// of threads. Summary-only runs hold one chunk of outcomes at a time.
+/// of threads; a chunk is written while the next one is solved. Summary-only
+/// runs hold two chunks of outcomes at a time.
 pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Result<RunSummary, RunError> {
     std::fs::create_dir_all(out_dir).map_err(|e| RunError::Io { path: out_dir.to_path_buf(), message: e.to_string() })?;
     let path = out_dir.join(format!("{}.h5", experiment.name));
@@ -130,54 +206,22 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
     let total = experiment.scenarios.len();
     let bar = progress(total, show_progress);
     bar.set_message(experiment.name.clone());
-    let mut scenarios: Vec<Result<Scenario, KickError>> = Vec::with_capacity(CHUNK_ROWS);
-    let mut outcomes: Vec<Vec<Result<Outcome, KickError>>> = vec![Vec::with_capacity(CHUNK_ROWS); experiment.solvers.len()];
-    let mut histories: Vec<Vec<Result<(Outcome, History), KickError>>> = vec![Vec::new(); experiment.solvers.len()];
+    // Two chunks in flight: while one is written (HDF5 is serial), the next is
+    // solved on the rest of the pool. Their buffers are swapped, not reallocated.
+    let mut solving = Chunk::new(experiment.solvers.len());
+    let mut writing = Chunk::new(experiment.solvers.len());
     let mut start = 0u64;
-    while start < total {
+    while start < total || writing.start < writing.end {
         let end = (start + CHUNK_ROWS as u64).min(total);
-        // Scenario i is a pure function of i (sampled sweeps included).
-        (0..(end - start) as usize)
-            .into_par_iter()
-            .map(|j| experiment.scenarios.scenario(start + j as u64))
-            .collect_into_vec(&mut scenarios);
-        for (k, solver) in experiment.solvers.iter().enumerate() {
-            match experiment.output {
-                Output::Summary => scenarios.par_iter().map(|s| solve(solver, s)).collect_into_vec(&mut outcomes[k]),
-                Output::History { interval } => {
-                    scenarios
-                        .par_iter()
-                        .map(|s| s.clone().and_then(|s| solver.solve_recorded(&s, interval)))
-                        .collect_into_vec(&mut histories[k]);
-                }
-            }
-        }
-        for (j, scenario) in scenarios.iter().enumerate() {
-            let row = start as usize + j;
-            let values = match scenario {
-                Ok(s) => s.values(),
-                Err(_) => [f64::NAN; 8],
-            };
-            writer.push_parameters(&values)?;
-            for k in 0..experiment.solvers.len() {
-                let result = match experiment.output {
-                    Output::Summary => outcomes[k][j].as_ref().map(|o| o.observable_values()),
-                    Output::History { .. } => histories[k][j].as_ref().map(|(o, _)| o.observable_values()),
-                };
-                match result {
-                    Ok(values) => writer.push_outcome(k, Ok(&values))?,
-                    Err(e) => writer.push_outcome(k, Err(&e.to_string()))?,
-                }
-                if let Output::History { .. } = experiment.output {
-                    if let Ok((_, history)) = &histories[k][j] {
-                        let columns = history_columns(history);
-                        let refs: Vec<(Column, &[f64])> = columns.iter().map(|(c, v)| (c.clone(), v.as_slice())).collect();
-                        writer.write_history(k, row, &refs)?;
-                    }
-                }
-            }
-        }
-        bar.inc(end - start);
+        let (written, ()) = rayon::join(
+            || writing.write(&mut writer, experiment),
+            || solving.solve(experiment, start, end),
+        );
+        written?;
+        bar.inc(writing.end - writing.start);
+        std::mem::swap(&mut solving, &mut writing);
+        solving.start = end;
+        solving.end = end;
         start = end;
     }
     bar.finish_and_clear();
