@@ -164,10 +164,15 @@ fn check_scene(scene: Scene) -> Result<(), TestCaseError> {
             }
         }
         _ => {
-            // All four agree that it fails, and why.
+            // All four agree that it fails, and why; unless the drive's work
+            // exceeds ½ μ V0² by more than double precision resolves (1e12),
+            // when whether the ball gets back is decided by rounding and each
+            // result need only be finite or a typed error.
+            let unresolvable = reduced.as_ref().is_ok_and(|r| drive_ratio(&s, r) > 1e12);
             for result in [&reduced, &full, &auto, &series] {
                 match result {
                     Err(e) => prop_assert!(acceptable(e), "unexpected error: {e}"),
+                    Ok(o) if unresolvable => prop_assert!(o.contact_time.is_finite() && o.v_ball_out.is_finite()),
                     Ok(o) => prop_assert!(false, "{} succeeded where another failed: {reduced:?} / {full:?} / {auto:?} / {series:?}", o.method),
                 }
             }

@@ -42,14 +42,7 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
         let w = (2.0 * stored / mu).sqrt();
         (w, special::return_time(end.max_compression, w, exponent))
     } else {
-        // ½ μ w² = U(δ_max) − f_s δ_max = ½ μ V0² − D: both differences can
-        // cancel, so take the one whose terms are smaller (a strong drive makes
-        // U and f_s δ large; heavy damping makes D close to ½ μ V0²).
-        let released = if scenario.relative_kinetic_energy() < stored {
-            scenario.relative_kinetic_energy() - end.dissipated
-        } else {
-            stored - drive_share * end.max_compression
-        };
+        let (released, _) = released_energy(scenario, &end);
         if !(released >= 0.0) {
             return Err(KickError::NoSeparation {
                 time: end.max_compression_time,
@@ -103,6 +96,30 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
         method: "closed-form",
     };
     crate::ode::check_finite(&outcome)
+}
+
+/// ½ μ w², the energy the return gives back, from the end of compression of
+/// the paper's law, and how much its computation amplifies relative errors
+/// of δ_max or D (the size of the terms over their difference).
+///
+/// ½ μ w² = U(δ_max) − f_s δ_max = ½ μ V0² − D. Both differences can cancel,
+/// so the one whose terms are smaller is taken: a strong drive makes U and
+/// f_s δ large, heavy damping makes D close to ½ μ V0². Near a trapping drive
+/// both cancel, and w is only as good as δ_max or D times the amplification.
+pub fn released_energy(scenario: &Scenario, end: &CompressionEnd) -> (f64, f64) {
+    let mu = scenario.reduced_mass();
+    let drive_share = mu / scenario.effective_foot_mass() * scenario.drive_force();
+    let stored = scenario.law().potential(end.max_compression);
+    let kinetic = scenario.relative_kinetic_energy();
+    if drive_share == 0.0 {
+        return (stored, 1.0);
+    }
+    let (released, terms) = if kinetic < stored {
+        (kinetic - end.dissipated, kinetic)
+    } else {
+        (stored - drive_share * end.max_compression, stored + (drive_share * end.max_compression).abs())
+    };
+    (released, terms / released.abs())
 }
 
 /// c = 0 and no drive: the whole contact in closed form (Eqs. 33–34).

@@ -46,7 +46,7 @@
 //! that accuracy: order 16 beat 12, 14, 18, 20 and 24.
 //! No allocation: coefficient arrays live on the stack.
 
-use crate::closed::{undamped_return, CompressionEnd};
+use crate::closed::{released_energy, undamped_return, CompressionEnd};
 use kick_core::{roots, KickError, LawKind, Outcome, Scenario, Solver, StopReason};
 
 /// Order of the Taylor steps.
@@ -55,6 +55,11 @@ pub const ORDER: usize = 16;
 /// x'' (Taylor steps), and in the scaled units at the onset (where x' ≈ 1).
 /// Observables then come out within 1e-10 (module docs).
 pub const DEFAULT_TOLERANCE: f64 = 3e-11;
+/// Amplification of errors in the exit speed accepted at the set tolerance;
+/// beyond it the compression is redone with the tolerance scaled down.
+const AMPLIFICATION_ALLOWED: f64 = 10.0;
+/// The tightest tolerance a refinement goes to (rounding sets the floor).
+const TIGHTEST_TOLERANCE: f64 = 1e-15;
 /// Highest total weight i + j(n+1) kept in the onset series.
 const ONSET_WEIGHT: f64 = 12.0;
 const ONSET_COLUMNS: usize = 13;
@@ -80,6 +85,18 @@ struct Scaled {
 }
 
 impl Scaled {
+    /// (x, xⁿ, x') at τ with xⁿ from x itself. The series' own xⁿ is only as
+    /// good as the motion needs it, which is little when a is small; a
+    /// located force (and its rate: peaks are flat, so their time is only as
+    /// good as df/dτ) needs it in full.
+    fn located(&self, segment: &impl Segment, tau: f64) -> (f64, f64, f64) {
+        let (x, _, v) = segment.state(tau);
+        (x, x.max(0.0).powf(self.exponent), v)
+    }
+    fn located_force_rate(&self, segment: &impl Segment, tau: f64) -> f64 {
+        let (x, p, v) = self.located(segment, tau);
+        self.force_rate(x, p, v)
+    }
     /// Force in units of μ V0²/L: f = a xⁿ + γ x'.
     #[inline]
     fn force(&self, power: f64, rate: f64) -> f64 {
@@ -359,8 +376,6 @@ trait Segment {
     fn state(&self, tau: f64) -> (f64, f64, f64);
     /// x' at τ.
     fn rate(&self, tau: f64) -> f64;
-    /// df/dτ at τ.
-    fn force_rate(&self, tau: f64) -> f64;
     /// (x', df/dτ) at the sample points.
     fn samples<const N: usize>(&self, taus: &[f64; N]) -> [(f64, f64); N];
 }
@@ -379,10 +394,6 @@ impl Segment for OnsetSegment<'_> {
     fn rate(&self, tau: f64) -> f64 {
         self.state(tau).2
     }
-    fn force_rate(&self, tau: f64) -> f64 {
-        let (x, p, v) = self.state(tau);
-        self.scaled.force_rate(x, p, v)
-    }
     fn samples<const N: usize>(&self, taus: &[f64; N]) -> [(f64, f64); N] {
         taus.map(|tau| {
             let (x, p, v) = self.state(tau);
@@ -393,7 +404,6 @@ impl Segment for OnsetSegment<'_> {
 
 /// A Taylor step as polynomials in h = τ − τ0: x, xⁿ, x' and df/dτ.
 struct TaylorSegment {
-    scaled: Scaled,
     start: f64,
     step: TaylorStep,
     /// x' = Σ rate_m h^m.
@@ -412,7 +422,7 @@ impl TaylorSegment {
             let second = if m + 2 <= ORDER { m1 * (m1 + 1.0) * step.x[m + 2] } else { 0.0 };
             force_rate[m] = s.a * m1 * step.p[m + 1] + s.gamma * second;
         }
-        TaylorSegment { scaled: *s, start, step, rate, force_rate }
+        TaylorSegment { start, step, rate, force_rate }
     }
 }
 
@@ -444,13 +454,6 @@ impl Segment for TaylorSegment {
     }
     fn rate(&self, tau: f64) -> f64 {
         horner(&self.rate, tau - self.start)
-    }
-    /// From the state rather than the differentiated polynomial: located
-    /// peaks are flat, so their time is only as good as df/dτ, and the state
-    /// carries the series' full accuracy.
-    fn force_rate(&self, tau: f64) -> f64 {
-        let (x, p, v) = self.state(tau);
-        self.scaled.force_rate(x, p, v)
     }
     fn samples<const N: usize>(&self, taus: &[f64; N]) -> [(f64, f64); N] {
         // The points in lockstep: independent Horner chains.
@@ -489,12 +492,12 @@ fn watch<const N: usize>(
             None
         };
         let (end, end_force_rate) = match turn {
-            Some(t) => (t, segment.force_rate(t)),
+            Some(t) => (t, s.located_force_rate(segment, t)),
             None => (tau, here.1),
         };
         if prev.1 > 0.0 && end_force_rate <= 0.0 {
-            if let Some(r) = roots::brent(|t| segment.force_rate(t), tau_prev, end, tolerance, 200) {
-                let (_, p, v) = segment.state(r.x);
+            if let Some(r) = roots::brent(|t| s.located_force_rate(segment, t), tau_prev, end, tolerance, 200) {
+                let (_, p, v) = s.located(segment, r.x);
                 peak.offer(s.force(p, v), r.x);
             }
         }
@@ -508,7 +511,7 @@ fn watch<const N: usize>(
 
 /// The end of compression at a located turnaround τ.
 fn turnaround(segment: &impl Segment, s: &Scaled, tau_max: f64, mut peak: Peak, dissipated: f64, powers: u64) -> ScaledCompression {
-    let (x, p, _) = segment.state(tau_max);
+    let (x, p, _) = s.located(segment, tau_max);
     peak.offer(s.a * p, tau_max);
     ScaledCompression { tau_max, x_max: x, dissipated, peak, powers }
 }
@@ -668,7 +671,16 @@ impl Solver for Series {
                 reason: "its power series and energy-integral return are written for the paper's law (Eq. 20)",
             });
         }
-        let (end, powers) = self.compression(scenario)?;
+        let (mut end, mut powers) = self.compression(scenario)?;
+        // Near a trapping drive the exit speed is a small difference of
+        // larger energies (`released_energy`): tighten the tolerance by the
+        // amplification so that w keeps the accuracy of the other observables.
+        let (_, amplification) = released_energy(scenario, &end);
+        let tightened = (self.tolerance * AMPLIFICATION_ALLOWED / amplification).max(TIGHTEST_TOLERANCE);
+        if amplification > AMPLIFICATION_ALLOWED && tightened < self.tolerance {
+            let (refined, more) = Series { tolerance: tightened }.compression(scenario)?;
+            (end, powers) = (refined, powers + more);
+        }
         let mut outcome = undamped_return(scenario, end)?;
         outcome.evaluations = powers;
         outcome.method = "series";
