@@ -696,7 +696,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
 /// the return from δ_max conserves ½ μ δ̇² + U(δ) − (μ/m_f) F_drive δ. The
 /// ball reaches δ = 0 only if U(δ_max) ≥ (μ/m_f) F_drive δ_max; otherwise it
 /// turns back before release, and later compressions only lose energy.
-pub(crate) fn check_release<L: ContactLaw>(
+fn check_release<L: ContactLaw>(
     scenario: &Scenario,
     law: &L,
     max_compression: f64,
