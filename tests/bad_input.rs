@@ -1,7 +1,7 @@
 //! Every bad input gets a typed error that names the problem; no NaN, no hang.
 
 use kick_compliant::{Accurate, SeedRk4, SolverChoice};
-use kick_core::{KickError, Parameter, Scenario, ScenarioSpec, Solver};
+use kick_core::{KickError, Parameter, Scenario, ScenarioSpec, Solver, Status};
 
 fn spec_with(parameter: Parameter, value: f64) -> ScenarioSpec {
     let mut spec = ScenarioSpec::default();
@@ -49,15 +49,19 @@ fn a_foot_not_faster_than_the_ball_is_no_contact() {
 }
 
 /// A drive that keeps the ball pressed: the accurate solver proves it at the
-/// first maximum compression; the seed method stops at the documented horizon.
+/// first maximum compression (trapped, a physical outcome); the seed method
+/// stops at the documented horizon (a numerical limit, not a proof).
 #[test]
 fn a_drive_that_never_lets_go_is_an_error_not_a_hang() {
     let scenario = Scenario::baseline().with(Parameter::DriveForce, 5.0e4).unwrap();
-    for solver in [SolverChoice::Accurate(Accurate::default()), SolverChoice::SeedRk4(SeedRk4::new(5e-5).unwrap())] {
-        let error = solver.solve(&scenario).unwrap_err();
-        assert!(matches!(error, KickError::NoSeparation { .. }), "{}: {error:?}", solver.name());
-        assert!(error.to_string().contains("no separation"), "{error}");
-    }
+    let error = Accurate::default().solve(&scenario).unwrap_err();
+    assert!(matches!(error, KickError::Trapped { .. }), "{error:?}");
+    assert_eq!(error.status(), Status::Trapped);
+    assert!(error.to_string().starts_with("trapped"), "{error}");
+    let error = SeedRk4::new(5e-5).unwrap().solve(&scenario).unwrap_err();
+    assert!(matches!(error, KickError::NoSeparation { .. }), "{error:?}");
+    assert_eq!(error.status(), Status::NumericalFailure);
+    assert!(error.to_string().contains("not proven trapped"), "{error}");
 }
 
 /// Without damping, ½μδ̇² + U(δ) − (μ/m_f)F_drive δ is conserved through the
@@ -81,7 +85,7 @@ fn release_criterion_agrees_with_the_seed_method() {
     let accurate = Accurate::default();
     let releases = |drive: f64| match accurate.solve(&base.with(Parameter::DriveForce, drive).unwrap()) {
         Ok(_) => true,
-        Err(KickError::NoSeparation { .. }) => false,
+        Err(KickError::Trapped { .. }) => false,
         Err(e) => panic!("{e}"),
     };
     let (mut low, mut high) = (0.0, 1.0e5);

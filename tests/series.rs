@@ -108,7 +108,7 @@ fn a_trapping_drive_is_found_like_the_event_engine_finds_it() {
     let base = Scenario::baseline();
     let traps = |drive: f64| {
         let s = base.with(kick_core::Parameter::DriveForce, drive).unwrap();
-        matches!(tight().solve(&s), Err(KickError::NoSeparation { .. }))
+        matches!(tight().solve(&s), Err(KickError::Trapped { .. }))
     };
     let (mut low, mut high) = (0.0, 1.0e5);
     assert!(!traps(low) && traps(high));
@@ -121,7 +121,7 @@ fn a_trapping_drive_is_found_like_the_event_engine_finds_it() {
         let series = Series::default().solve(&s);
         match (factor < 1.0, &series) {
             (true, Ok(o)) => assert!(o.restitution >= 0.0),
-            (false, Err(KickError::NoSeparation { .. })) => {}
+            (false, Err(KickError::Trapped { .. })) => {}
             _ => panic!("drive {} x critical: {series:?}", factor),
         }
     }
@@ -157,7 +157,7 @@ proptest! {
                 let error = max_relative_error(&series, &reference);
                 prop_assert!(error < 1e-9, "{error:e}");
             }
-            (Err(KickError::NoSeparation { .. }), Err(KickError::NoSeparation { .. })) => {}
+            (Err(KickError::Trapped { .. }), Err(KickError::Trapped { .. })) => {}
             (a, b) => prop_assert!(false, "accurate {a:?} vs series {b:?}"),
         }
     }

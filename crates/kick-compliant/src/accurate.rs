@@ -6,11 +6,18 @@
 //! (Dop853, rtol = atol = 1e-12 in scaled units) is within 1e-9 relative of
 //! the closed forms on every observable across the stress ranges of the
 //! README; `dopri5` at its default 1e-11 reaches ~1e-9; `rk4-events` has the
-//! fourth-order error of its step but no step quantisation of the stop.
+//! fourth-order error of its step but no step quantisation of the stop, and
+//! refuses a step too large for the contact ([`crate::stability`]).
 
-use crate::events::{Engine, Method, StopAt};
+use crate::events::{Engine, Method, Recorder, StopAt};
+use crate::history::{self, Sampler};
 use crate::ode::{self, Branch, ContactOde, Extremes, State};
-use kick_core::{AnyLaw, ContactLaw, History, KickError, Outcome, RecordingSolver, Scenario, Solver, StopReason};
+use crate::stability;
+use kick_core::{
+    AnyLaw, ContactLaw, ContactPhase, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing, StopReason,
+    Streamed,
+};
+use std::ops::ControlFlow;
 
 /// Adaptive Dop853 with located events: the default accurate solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,14 +49,15 @@ impl Accurate {
     pub fn solve_law<L: ContactLaw + Copy>(&self, scenario: &Scenario, law: L) -> Result<Outcome, KickError> {
         FullState { method: self.method(), name: "accurate" }.run(scenario, law, None)
     }
-    /// As [`Accurate::solve_law`], recording samples at most `interval` apart.
-    pub fn solve_law_recorded<L: ContactLaw + Copy>(
+    /// As [`Accurate::solve_law`], streaming a history (see [`RecordingSolver`]).
+    pub fn solve_law_streamed<L: ContactLaw + Copy>(
         &self,
         scenario: &Scenario,
         law: L,
-        interval: f64,
-    ) -> Result<(Outcome, History), KickError> {
-        FullState { method: self.method(), name: "accurate" }.run_recorded(scenario, law, interval)
+        spacing: Spacing,
+        sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+    ) -> Result<Streamed, KickError> {
+        FullState { method: self.method(), name: "accurate" }.streamed(scenario, law, spacing, sink)
     }
 }
 
@@ -66,10 +74,15 @@ impl Solver for Accurate {
 }
 
 impl RecordingSolver for Accurate {
-    fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
+    fn solve_streamed(
+        &self,
+        scenario: &Scenario,
+        spacing: Spacing,
+        sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+    ) -> Result<Streamed, KickError> {
         match scenario.contact_law() {
-            AnyLaw::PowerLaw(law) => self.solve_law_recorded(scenario, law, interval),
-            law => self.solve_law_recorded(scenario, law, interval),
+            AnyLaw::PowerLaw(law) => self.solve_law_streamed(scenario, law, spacing, sink),
+            law => self.solve_law_streamed(scenario, law, spacing, sink),
         }
     }
 }
@@ -96,15 +109,16 @@ impl FullState {
         &self,
         scenario: &Scenario,
         law: L,
-        recorder: Option<(&mut History, f64)>,
+        sampler: Option<&mut Sampler>,
     ) -> Result<Outcome, KickError> {
         let system = ContactOde::new(scenario, law, Branch::InContact);
         let mut engine = Engine::new(self.method, system, scenario)?;
         let y0 = ode::initial_state(scenario);
-        let end = match recorder {
-            Some((history, interval)) => {
-                let mut record = |t: f64, y: &State| history.samples.push(system.sample(t, y));
-                engine.run(scenario, &law, y0, StopAt::Separation, Some((&mut record, interval)))?
+        let end = match sampler {
+            Some(sampler) => {
+                let sample = |t: f64, y: &State, phase: ContactPhase| system.sample(t, y, phase);
+                let mut recorder = Recorder { sampler, sample: &sample };
+                engine.run(scenario, &law, y0, StopAt::Separation, Some(&mut recorder))?
             }
             None => engine.run(scenario, &law, y0, StopAt::Separation, None)?,
         };
@@ -114,7 +128,7 @@ impl FullState {
             max_compression: end.max_compression,
             max_compression_time: end.max_compression_time,
         };
-        ode::outcome(
+        let outcome = ode::outcome(
             scenario,
             &system,
             &end.state,
@@ -122,21 +136,21 @@ impl FullState {
             StopReason::Separated { t: end.time },
             engine.evaluations,
             self.name,
-        )
+        )?;
+        if let Some(step) = self.method.fixed_step() {
+            stability::check_energy(scenario, &law, &outcome.energy, step, outcome.contact_time)?;
+        }
+        Ok(outcome)
     }
 
-    fn run_recorded<L: ContactLaw + Copy>(
+    fn streamed<L: ContactLaw + Copy>(
         &self,
         scenario: &Scenario,
         law: L,
-        interval: f64,
-    ) -> Result<(Outcome, History), KickError> {
-        if !(interval.is_finite() && interval > 0.0) {
-            return Err(KickError::InvalidParameter { name: "interval", value: interval, requirement: "finite and > 0" });
-        }
-        let mut history = History::default();
-        let outcome = self.run(scenario, law, Some((&mut history, interval)))?;
-        Ok((outcome, history))
+        spacing: Spacing,
+        sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+    ) -> Result<Streamed, KickError> {
+        history::stream(spacing, sink, |o| o.contact_time, |sampler| self.run(scenario, law, sampler))
     }
 }
 
@@ -153,10 +167,15 @@ impl Solver for FullState {
 }
 
 impl RecordingSolver for FullState {
-    fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
+    fn solve_streamed(
+        &self,
+        scenario: &Scenario,
+        spacing: Spacing,
+        sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+    ) -> Result<Streamed, KickError> {
         match scenario.contact_law() {
-            AnyLaw::PowerLaw(law) => self.run_recorded(scenario, law, interval),
-            law => self.run_recorded(scenario, law, interval),
+            AnyLaw::PowerLaw(law) => self.streamed(scenario, law, spacing, sink),
+            law => self.streamed(scenario, law, spacing, sink),
         }
     }
 }

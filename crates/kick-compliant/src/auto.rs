@@ -6,15 +6,18 @@
 //! | no drive, n = 1 | `closed-form` (damped oscillator, undamped return) |
 //! | the paper's law | `series` (power series to δ_max, energy integral back) |
 //! | another contact law | `reduced` (δ through the whole contact) |
-//! | time history wanted | `accurate` (full state, every sample real) |
 //!
-//! The chosen path is reported in [`kick_core::Outcome::method`].
+//! A time history comes from `accurate` (the full state, every sample a
+//! state of the integration); the outcome stays the path's own, so it is
+//! the same with and without a history. The chosen path is reported in
+//! [`kick_core::Outcome::method`].
 
 use crate::closed::ClosedForm;
 use crate::reduced::Reduced;
 use crate::series::Series;
 use crate::Accurate;
-use kick_core::{History, KickError, Outcome, RecordingSolver, Scenario, Solver};
+use kick_core::{KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing, Streamed};
+use std::ops::ControlFlow;
 
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Auto {
@@ -50,7 +53,12 @@ impl Solver for Auto {
 }
 
 impl RecordingSolver for Auto {
-    fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
-        self.accurate.solve_recorded(scenario, interval)
+    fn solve_streamed(
+        &self,
+        scenario: &Scenario,
+        spacing: Spacing,
+        sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+    ) -> Result<Streamed, KickError> {
+        crate::history_through(self, &self.accurate, scenario, spacing, sink)
     }
 }

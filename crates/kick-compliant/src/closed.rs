@@ -27,7 +27,7 @@ pub struct CompressionEnd {
 /// δ_max: the law does not damp while δ̇ < 0, so with a constant drive share
 /// f_s = (μ/m_f) F_drive the return conserves ½ μ δ̇² + U(δ) − f_s δ.
 /// The ball leaves with ½ μ w² = U(δ_max) − f_s δ_max = ½ μ V0² − D (a
-/// `NoSeparation` error when that is negative; `end.dissipated` must be the
+/// `Trapped` error when that is negative; `end.dissipated` must be the
 /// integrated D under a drive), after the Beta-function time without a drive
 /// and [`special::driven_return_integral`] with one. The centre of
 /// mass gains F_drive t / M (Eq. 26) and the drive does work F_drive x_f(t_c).
@@ -44,7 +44,7 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
     } else {
         let (released, _) = released_energy(scenario, &end);
         if !(released >= 0.0) {
-            return Err(KickError::NoSeparation {
+            return Err(KickError::Trapped {
                 time: end.max_compression_time,
                 reason: format!(
                     "at maximum compression U(δ_max) − (μ/m_f) F_drive δ_max = ½μV0² − D = {released:.6e} J < 0, \

@@ -13,11 +13,16 @@
 //! peak (dF/dt: + → −) does not: its step is remembered and the peak is
 //! located after the phase, so the integrator keeps its step size.
 //!
+//! Histories ([`Recorder`]) are sampled between accepted steps by
+//! re-integrating from the step's start to each grid time with the same
+//! method ([`crate::history`]); the steps never see the grid.
+//!
 //! States are integrated in units of the scenario ([`Scales`]): lengths in
 //! δ* (the undamped maximum compression), speeds in V0, time in δ*/V0, so one
 //! relative and absolute tolerance serve every scenario from k = 1e2 to 1e12.
 
-use kick_core::{roots, ContactLaw, KickError, Scenario};
+use crate::history::Sampler;
+use kick_core::{roots, ContactLaw, ContactPhase, KickError, Sample, Scenario};
 use nalgebra::SVector;
 use ode_solvers::{dop853::Dop853, dopri5::Dopri5, rk4::Rk4, OutputType, System};
 
@@ -42,6 +47,9 @@ pub trait ContactSystem<const N: usize>: Copy {
     ///
     /// Also the unit of the event functions: δ in `length`, δ̇ in `speed`.
     fn units(&self, scales: &Scales) -> SVector<f64, N>;
+    /// The energy budget (Eqs. 30–33) at time t, for the fixed-step check
+    /// of a run that ends without separating ([`crate::stability`]).
+    fn budget(&self, scenario: &Scenario, t: f64, y: &SVector<f64, N>) -> kick_core::EnergyBudget;
 }
 
 /// One classical RK4 step of size `h` for ẏ = f(y) (the paper's method, and
@@ -104,6 +112,14 @@ pub enum Method {
 }
 
 impl Method {
+    /// The step of a fixed-step method, in s.
+    pub fn fixed_step(&self) -> Option<f64> {
+        match *self {
+            Method::Rk4 { step } => Some(step),
+            _ => None,
+        }
+    }
+
     pub fn validate(&self) -> Result<(), KickError> {
         let check = |name: &'static str, value: f64, ok: bool, requirement: &'static str| {
             if ok {
@@ -228,8 +244,19 @@ struct PeakStep<const N: usize> {
     sampled_force: f64,
 }
 
+/// Samples the span from an accepted point (τ_a, y_a) to τ_b (`inclusive`
+/// of τ_b or not), scaled units.
+type Fill<'f, const N: usize> = dyn FnMut(f64, SVector<f64, N>, f64, bool) -> Result<(), KickError> + 'f;
+
+/// A history being recorded: where samples go, and how an SI state at a
+/// time and phase becomes one.
+pub struct Recorder<'r, 's, const N: usize> {
+    pub sampler: &'r mut Sampler<'s>,
+    pub sample: &'r dyn Fn(f64, &SVector<f64, N>, ContactPhase) -> Sample,
+}
+
 /// Watches for events after each accepted step.
-struct Watcher<'a, 'r, S, const N: usize> {
+struct Watcher<'a, 'f, S, const N: usize> {
     scaled: Scaled<S, N>,
     events: &'static [Event],
     /// Terminal-event values and dF/dt at the last accepted step, so each
@@ -239,7 +266,8 @@ struct Watcher<'a, 'r, S, const N: usize> {
     previous_tau: f64,
     previous_state: SVector<f64, N>,
     peak: &'a mut Option<PeakStep<N>>,
-    recorder: Option<&'r mut dyn FnMut(f64, &SVector<f64, N>)>,
+    fill: Option<&'f mut Fill<'f, N>>,
+    failure: &'a mut Option<KickError>,
 }
 
 impl<S: ContactSystem<N>, const N: usize> System<f64, SVector<f64, N>> for Watcher<'_, '_, S, N> {
@@ -270,8 +298,11 @@ impl<S: ContactSystem<N>, const N: usize> System<f64, SVector<f64, N>> for Watch
             }
         }
 
-        if let Some(record) = self.recorder.as_deref_mut() {
-            record(tau * self.scaled.time, &after);
+        if let Some(fill) = self.fill.as_deref_mut() {
+            if let Err(error) = fill(self.previous_tau, self.previous_state, tau, true) {
+                *self.failure = Some(error);
+                return true;
+            }
         }
         self.previous = values;
         self.previous_force_rate = force_rate;
@@ -376,6 +407,32 @@ struct PhaseEnd<const N: usize> {
     event: Option<(Event, f64, SVector<f64, N>)>,
     peak: Option<(f64, SVector<f64, N>)>,
     last_step: f64,
+    /// The last accepted point (scaled units).
+    last: Option<(f64, SVector<f64, N>)>,
+}
+
+/// y(τ1) from y(τ0) (scaled units), in one step when the error estimate allows.
+fn advance<S: ContactSystem<N>, const N: usize>(
+    method: Method,
+    scaled: Scaled<S, N>,
+    tau0: f64,
+    y0: SVector<f64, N>,
+    tau1: f64,
+    evaluations: &mut u64,
+) -> Result<SVector<f64, N>, KickError> {
+    if tau1 <= tau0 {
+        return Ok(y0);
+    }
+    let h = tau1 - tau0;
+    // Below the adaptive methods' step-size floor one RK4 step is exact to
+    // rounding; for the fixed-step method it is the method itself (ode_solvers'
+    // Rk4 rounds the step count up and could overshoot τ1).
+    if h <= 1e3 * f64::EPSILON * tau0.abs() || matches!(method, Method::Rk4 { .. }) {
+        *evaluations += 4;
+        return Ok(rk4_step(|y| scaled.derivative(tau0, y), &y0, h));
+    }
+    let steps = integrate(method, Plain(scaled), tau0, tau1, y0, h, h, scaled.time, evaluations)?;
+    steps.last.map(|(_, y)| y).ok_or_else(|| integration_error(tau0, scaled.time, "empty step"))
 }
 
 /// The engine for one scenario.
@@ -421,21 +478,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
 
     /// y(t1) from y(t0), in one step when the error estimate allows.
     fn advance(&mut self, tau0: f64, y0: SVector<f64, N>, tau1: f64) -> Result<SVector<f64, N>, KickError> {
-        if tau1 <= tau0 {
-            return Ok(y0);
-        }
-        let h = tau1 - tau0;
-        // Below the adaptive methods' step-size floor one RK4 step is exact to
-        // rounding; for the fixed-step method it is the method itself (ode_solvers'
-        // Rk4 rounds the step count up and could overshoot τ1).
-        if h <= 1e3 * f64::EPSILON * tau0.abs() || matches!(self.method, Method::Rk4 { .. }) {
-            self.evaluations += 4;
-            return Ok(rk4_step(|y| self.scaled.derivative(tau0, y), &y0, h));
-        }
-        let steps = integrate(
-            self.method, Plain(self.scaled), tau0, tau1, y0, h, h, self.scaled.time, &mut self.evaluations,
-        )?;
-        steps.last.map(|(_, y)| y).ok_or_else(|| integration_error(tau0, self.scaled.time, "empty step"))
+        advance(self.method, self.scaled, tau0, y0, tau1, &mut self.evaluations)
     }
 
     /// The event's time between two accepted points, and the state there on
@@ -512,9 +555,23 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         tau_end: f64,
         max_step: f64,
         first_step: f64,
-        recorder: Option<&mut dyn FnMut(f64, &SVector<f64, N>)>,
+        recorder: Option<&mut Recorder<N>>,
     ) -> Result<PhaseEnd<N>, KickError> {
         self.scaled.system = self.system.for_phase(phase == Phase::Compression);
+        let (method, scaled) = (self.method, self.scaled);
+        let contact_phase = match phase {
+            Phase::Compression => ContactPhase::Compressing,
+            Phase::Restitution => ContactPhase::Restoring,
+        };
+        // Grid samples in a span of accepted points, re-integrated from its start.
+        let mut fill = recorder.map(|Recorder { sampler, sample }| {
+            move |tau_a: f64, y_a: SVector<f64, N>, tau_b: f64, inclusive: bool| {
+                sampler.fill(tau_b * scaled.time, inclusive, |t, evaluations| {
+                    let y = advance(method, scaled, tau_a, y_a, t / scaled.time, evaluations)?;
+                    Ok(sample(t, &scaled.unscale(&y), contact_phase))
+                })
+            }
+        });
         let start = self.scaled.unscale(&y);
         let mut previous = [0.0; 3];
         for (slot, event) in previous.iter_mut().zip(phase.events()) {
@@ -523,6 +580,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             *slot = if value.abs() <= event.unit(&self.scales) * 1e-12 { 0.0 } else { value };
         }
         let mut peak = None;
+        let mut failure = None;
         let watcher = Watcher {
             scaled: self.scaled,
             events: phase.events(),
@@ -531,7 +589,8 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             previous_tau: tau,
             previous_state: y,
             peak: &mut peak,
-            recorder,
+            fill: fill.as_mut().map(|f| f as &mut Fill<N>),
+            failure: &mut failure,
         };
         let first_step = match self.method {
             Method::Rk4 { step } => step / self.scaled.time,
@@ -539,8 +598,12 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         };
         let steps = integrate(
             self.method, watcher, tau, tau_end, y, max_step, first_step, self.scaled.time, &mut self.evaluations,
-        )?;
-        let mut end = PhaseEnd { event: None, peak: None, last_step: 0.0 };
+        );
+        if let Some(error) = failure {
+            return Err(error);
+        }
+        let steps = steps?;
+        let mut end = PhaseEnd { event: None, peak: None, last_step: 0.0, last: steps.last };
         if let (Some((tau_a, y_a)), Some((tau_b, y_b))) = (steps.before_last, steps.last) {
             end.last_step = tau_b - tau_a;
             let system = self.scaled.system;
@@ -559,6 +622,10 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
                     (tau_event, state) = self.locate(Event::Separation, tau_a, y_a, tau_event, state)?;
                     event = Event::Separation;
                 }
+                // The history ends just before separation; its row follows.
+                if let Some(fill) = fill.as_mut() {
+                    fill(tau_a, y_a, tau_event, event != Event::Separation)?;
+                }
                 end.event = Some((event, tau_event, state));
             }
         }
@@ -573,16 +640,19 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
     }
 
     /// Integrate a contact from first touch (`y0`, SI units) to `stop`.
-    /// `recorder` sees SI time and state at every accepted step and event;
-    /// steps are then at most `interval` seconds apart.
+    /// `recorder` receives the history's grid samples and, at separation,
+    /// the separation row; it does not change the steps.
     pub fn run<L: ContactLaw>(
         &mut self,
         scenario: &Scenario,
         law: &L,
         y0: SVector<f64, N>,
         stop: StopAt,
-        mut recorder: Option<(&mut dyn FnMut(f64, &SVector<f64, N>), f64)>,
+        mut recorder: Option<&mut Recorder<N>>,
     ) -> Result<RunEnd<N>, KickError> {
+        if let Some(step) = self.method.fixed_step() {
+            crate::stability::check_rk4_step(scenario, law, step)?;
+        }
         let mut horizon = scenario.contact_horizon();
         let mut t = 0.0;
         let mut state = y0;
@@ -595,25 +665,21 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             max_compression: 0.0,
             max_compression_time: 0.0,
         };
-        if let Some((record, _)) = recorder.as_mut() {
-            record(0.0, &y0);
+        if let Some(Recorder { sampler, sample }) = recorder.as_deref_mut() {
+            sampler.fill(0.0, true, |t, _| Ok(sample(t, &y0, ContactPhase::Compressing)))?;
         }
         let mut phase = Phase::Compression;
         let mut first_step_seconds = 0.0;
         for _ in 0..MAX_PHASES {
             let time_unit = self.scaled.time;
-            let (record, max_step) = match recorder.as_mut() {
-                Some((r, interval)) => (Some(&mut **r as &mut dyn FnMut(f64, &SVector<f64, N>)), *interval / time_unit),
-                None => (None, horizon / time_unit),
-            };
             let phase_end = self.phase(
                 phase,
                 t / time_unit,
                 self.scaled.scale(&state),
                 horizon / time_unit,
-                max_step,
+                horizon / time_unit,
                 first_step_seconds / time_unit,
-                record,
+                recorder.as_deref_mut(),
             )?;
             first_step_seconds = phase_end.last_step * time_unit;
             if let Some((tau_peak, y_peak)) = phase_end.peak {
@@ -625,6 +691,13 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
                 }
             }
             let Some((event, tau_event, y_event)) = phase_end.event else {
+                // Still in contact at the horizon: a fixed step is to blame
+                // if the energy budget shows it.
+                if let (Some(step), Some((tau_last, y_last))) = (self.method.fixed_step(), phase_end.last) {
+                    let t_last = tau_last * time_unit;
+                    let budget = system.budget(scenario, t_last, &self.scaled.unscale(&y_last));
+                    crate::stability::check_energy(scenario, law, &budget, step, t_last)?;
+                }
                 return Err(KickError::NoSeparation {
                     time: horizon,
                     reason: format!(
@@ -643,9 +716,6 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             if compression > end.max_compression {
                 end.max_compression = compression;
                 end.max_compression_time = t;
-            }
-            if let Some((record, _)) = recorder.as_mut() {
-                record(t, &state);
             }
             end.time = t;
             end.state = state;
@@ -676,8 +746,16 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
                         }
                     }
                 }
-                Event::Separation => return Ok(end),
+                Event::Separation => {
+                    if let Some(Recorder { sampler, sample }) = recorder.as_deref_mut() {
+                        sampler.finish(sample(t, &state, ContactPhase::Separation));
+                    }
+                    return Ok(end);
+                }
             }
+        }
+        if let Some(step) = self.method.fixed_step() {
+            crate::stability::check_energy(scenario, law, &system.budget(scenario, t, &state), step, t)?;
         }
         Err(KickError::NoSeparation {
             time: t,
@@ -709,7 +787,7 @@ fn check_release<L: ContactLaw>(
     let drive_share = scenario.reduced_mass() / scenario.effective_foot_mass() * drive;
     let stored = law.potential(max_compression);
     if stored < drive_share * max_compression {
-        return Err(KickError::NoSeparation {
+        return Err(KickError::Trapped {
             time: t,
             reason: format!(
                 "at maximum compression the stored energy U(δ_max) = {stored:.6e} J is below the \

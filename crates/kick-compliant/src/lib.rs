@@ -13,11 +13,13 @@ pub mod accurate;
 pub mod auto;
 pub mod closed;
 pub mod events;
+pub mod history;
 pub mod ode;
 pub mod precision;
 pub mod reduced;
 pub mod seed;
 pub mod series;
+pub mod stability;
 pub mod table2;
 
 pub use accurate::{Accurate, FullState};
@@ -27,7 +29,8 @@ pub use reduced::{Reduced, ReducedReturn};
 pub use seed::SeedRk4;
 pub use series::Series;
 
-use kick_core::{History, KickError, Outcome, RecordingSolver, Scenario, Solver};
+use kick_core::{KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing, Streamed};
+use std::ops::ControlFlow;
 
 /// The solvers selectable by name (`--solver`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -114,17 +117,35 @@ impl Solver for SolverChoice {
 
 impl RecordingSolver for SolverChoice {
     /// Solvers without a time history of their own (closed forms and the
-    /// split path) record through `accurate`.
-    fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
+    /// split path) take it from `accurate`; their outcome is their own.
+    fn solve_streamed(
+        &self,
+        scenario: &Scenario,
+        spacing: Spacing,
+        sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+    ) -> Result<Streamed, KickError> {
         match self {
-            SolverChoice::SeedRk4(s) => s.solve_recorded(scenario, interval),
-            SolverChoice::FullState(s) => s.solve_recorded(scenario, interval),
-            SolverChoice::Reduced(s) => s.solve_recorded(scenario, interval),
-            SolverChoice::Auto(s) => s.solve_recorded(scenario, interval),
-            SolverChoice::Accurate(s) => s.solve_recorded(scenario, interval),
+            SolverChoice::SeedRk4(s) => s.solve_streamed(scenario, spacing, sink),
+            SolverChoice::FullState(s) => s.solve_streamed(scenario, spacing, sink),
+            SolverChoice::Reduced(s) => s.solve_streamed(scenario, spacing, sink),
+            SolverChoice::Auto(s) => s.solve_streamed(scenario, spacing, sink),
+            SolverChoice::Accurate(s) => s.solve_streamed(scenario, spacing, sink),
             SolverChoice::ReducedReturn(_) | SolverChoice::ClosedForm(_) | SolverChoice::Series(_) => {
-                Accurate::default().solve_recorded(scenario, interval)
+                history_through(self, &Accurate::default(), scenario, spacing, sink)
             }
         }
     }
+}
+
+/// `solver`'s outcome with `recorder`'s history.
+pub(crate) fn history_through(
+    solver: &dyn Solver,
+    recorder: &dyn RecordingSolver,
+    scenario: &Scenario,
+    spacing: Spacing,
+    sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+) -> Result<Streamed, KickError> {
+    let outcome = solver.solve(scenario)?;
+    let streamed = recorder.solve_streamed(scenario, spacing, sink)?;
+    Ok(Streamed { outcome, samples: streamed.samples })
 }

@@ -1,7 +1,7 @@
 //! The 1D compliant system (Eqs. 13–14, 20) on the state of Eq. 47, extended
 //! by three running integrals so the energy budget is measured, not inferred.
 
-use kick_core::{ContactLaw, EnergyBudget, Outcome, Sample, Scenario, StopReason};
+use kick_core::{ContactLaw, ContactPhase, EnergyBudget, Outcome, Sample, Scenario, StopReason};
 use nalgebra::SVector;
 
 /// (x_f, v_f, x_b, v_b, J, D, W): Eq. 47 plus impulse ∫F dt, dissipation
@@ -110,7 +110,18 @@ impl<L: ContactLaw + Copy> ContactOde<L> {
         0.5 * self.foot_mass * y[FOOT_VELOCITY].powi(2) + 0.5 * self.ball_mass * y[BALL_VELOCITY].powi(2)
     }
 
-    pub fn sample(&self, t: f64, y: &State) -> Sample {
+    /// The energy budget (Eqs. 30–33) at state `y`.
+    pub fn budget(&self, scenario: &Scenario, y: &State) -> EnergyBudget {
+        EnergyBudget {
+            kinetic_initial: scenario.initial_kinetic_energy(),
+            kinetic_final: self.kinetic_energy(y),
+            elastic_final: self.law.potential(compression(y)),
+            dissipated: y[DISSIPATED],
+            drive_work: y[DRIVE_WORK],
+        }
+    }
+
+    pub fn sample(&self, t: f64, y: &State, phase: ContactPhase) -> Sample {
         Sample {
             time: t,
             foot_position: y[FOOT_POSITION],
@@ -123,6 +134,7 @@ impl<L: ContactLaw + Copy> ContactOde<L> {
             elastic: self.law.potential(compression(y)),
             dissipated: y[DISSIPATED],
             drive_work: y[DRIVE_WORK],
+            phase,
         }
     }
 }
@@ -157,6 +169,9 @@ impl<L: ContactLaw + Copy> crate::events::ContactSystem<7> for ContactOde<L> {
     }
     fn units(&self, s: &crate::events::Scales) -> State {
         State::from([s.length, s.speed, s.length, s.speed, s.momentum, s.energy, s.energy])
+    }
+    fn budget(&self, scenario: &Scenario, _t: f64, y: &State) -> EnergyBudget {
+        ContactOde::budget(self, scenario, y)
     }
 }
 
@@ -232,13 +247,7 @@ pub fn outcome<L: ContactLaw + Copy>(
         max_compression_time: extremes.max_compression_time,
         impulse: y[IMPULSE],
         restitution: (v_ball_out - v_foot_out) / scenario.approach_speed(), // Eq. 36
-        energy: EnergyBudget {
-            kinetic_initial: scenario.initial_kinetic_energy(),
-            kinetic_final: ode.kinetic_energy(y),
-            elastic_final: ode.law.potential(compression(y)),
-            dissipated: y[DISSIPATED],
-            drive_work: y[DRIVE_WORK],
-        },
+        energy: ode.budget(scenario, y),
         stop,
         evaluations,
         method,

@@ -12,10 +12,13 @@
 //! ([`crate::closed::undamped_return`]).
 
 use crate::closed::{undamped_return, CompressionEnd};
-use crate::events::{ContactSystem, Engine, Method, Scales, StopAt};
+use crate::events::{ContactSystem, Engine, Method, Recorder, Scales, StopAt};
+use crate::history::{self, Sampler};
 use kick_core::{
-    AnyLaw, ContactLaw, LawKind, EnergyBudget, History, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, StopReason,
+    AnyLaw, ContactLaw, ContactPhase, EnergyBudget, KickError, LawKind, Outcome, RecordingSolver, Sample, Scenario, Solver,
+    Spacing, StopReason, Streamed,
 };
+use std::ops::ControlFlow;
 use nalgebra::SVector;
 
 /// (δ, δ̇, D).
@@ -91,6 +94,17 @@ impl<L: ContactLaw + Copy> ContactSystem<3> for RelativeOde<L> {
     fn units(&self, s: &Scales) -> RelativeState {
         RelativeState::new(s.length, s.speed, s.energy)
     }
+    fn budget(&self, scenario: &Scenario, t: f64, y: &RelativeState) -> EnergyBudget {
+        let r = reconstruct(scenario, t, y);
+        EnergyBudget {
+            kinetic_initial: scenario.initial_kinetic_energy(),
+            kinetic_final: 0.5 * scenario.effective_foot_mass() * r.foot_velocity.powi(2)
+                + 0.5 * scenario.ball_mass() * r.ball_velocity.powi(2),
+            elastic_final: self.law.potential(y[0]),
+            dissipated: y[2],
+            drive_work: r.drive_work,
+        }
+    }
 }
 
 /// Foot and ball from the relative state at time t.
@@ -120,7 +134,7 @@ fn reconstruct(scenario: &Scenario, t: f64, y: &RelativeState) -> Reconstruction
     }
 }
 
-fn sample<L: ContactLaw>(scenario: &Scenario, law: &L, t: f64, y: &RelativeState) -> Sample {
+fn sample<L: ContactLaw>(scenario: &Scenario, law: &L, t: f64, y: &RelativeState, phase: ContactPhase) -> Sample {
     let r = reconstruct(scenario, t, y);
     Sample {
         time: t,
@@ -135,6 +149,7 @@ fn sample<L: ContactLaw>(scenario: &Scenario, law: &L, t: f64, y: &RelativeState
         elastic: law.potential(y[0]),
         dissipated: y[2],
         drive_work: r.drive_work,
+        phase,
     }
 }
 
@@ -161,21 +176,20 @@ impl Reduced {
         &self,
         scenario: &Scenario,
         law: L,
-        recorder: Option<(&mut History, f64)>,
+        sampler: Option<&mut Sampler>,
     ) -> Result<Outcome, KickError> {
         let system = RelativeOde::new(scenario, law);
         let mut engine = Engine::new(self.method, system, scenario)?;
         let y0 = RelativeState::new(0.0, scenario.approach_speed(), 0.0);
-        let end = match recorder {
-            Some((history, interval)) => {
-                let mut record = |t: f64, y: &RelativeState| history.samples.push(sample(scenario, &law, t, y));
-                engine.run(scenario, &law, y0, StopAt::Separation, Some((&mut record, interval)))?
+        let end = match sampler {
+            Some(sampler) => {
+                let sample = |t: f64, y: &RelativeState, phase: ContactPhase| sample(scenario, &law, t, y, phase);
+                let mut recorder = Recorder { sampler, sample: &sample };
+                engine.run(scenario, &law, y0, StopAt::Separation, Some(&mut recorder))?
             }
             None => engine.run(scenario, &law, y0, StopAt::Separation, None)?,
         };
         let r = reconstruct(scenario, end.time, &end.state);
-        let kinetic_final = 0.5 * scenario.effective_foot_mass() * r.foot_velocity.powi(2)
-            + 0.5 * scenario.ball_mass() * r.ball_velocity.powi(2);
         let outcome = Outcome {
             v_ball_out: r.ball_velocity,
             v_foot_out: r.foot_velocity,
@@ -189,18 +203,16 @@ impl Reduced {
             // Eq. 36 from δ̇ itself: v_b − v_f = −δ̇ without the cancellation
             // of two lab-frame speeds.
             restitution: -end.state[1] / scenario.approach_speed(),
-            energy: EnergyBudget {
-                kinetic_initial: scenario.initial_kinetic_energy(),
-                kinetic_final,
-                elastic_final: law.potential(end.state[0]),
-                dissipated: end.state[2],
-                drive_work: r.drive_work,
-            },
+            energy: ContactSystem::budget(&system, scenario, end.time, &end.state),
             stop: StopReason::Separated { t: end.time },
             evaluations: engine.evaluations,
             method: "reduced",
         };
-        crate::ode::check_finite(&outcome)
+        crate::ode::check_finite(&outcome)?;
+        if let Some(step) = self.method.fixed_step() {
+            crate::stability::check_energy(scenario, &law, &outcome.energy, step, outcome.contact_time)?;
+        }
+        Ok(outcome)
     }
 }
 
@@ -217,17 +229,17 @@ impl Solver for Reduced {
 }
 
 impl RecordingSolver for Reduced {
-    fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
-        if !(interval.is_finite() && interval > 0.0) {
-            return Err(KickError::InvalidParameter { name: "interval", value: interval, requirement: "finite and > 0" });
+    fn solve_streamed(
+        &self,
+        scenario: &Scenario,
+        spacing: Spacing,
+        sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+    ) -> Result<Streamed, KickError> {
+        let end = |o: &Outcome| o.contact_time;
+        match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => history::stream(spacing, sink, end, |s| self.solve_law(scenario, law, s)),
+            law => history::stream(spacing, sink, end, |s| self.solve_law(scenario, law, s)),
         }
-        let mut history = History::default();
-        let recorder = Some((&mut history, interval));
-        let outcome = match scenario.contact_law() {
-            AnyLaw::PowerLaw(law) => self.solve_law(scenario, law, recorder)?,
-            law => self.solve_law(scenario, law, recorder)?,
-        };
-        Ok((outcome, history))
     }
 }
 

@@ -14,11 +14,23 @@
 //! step, and the exit velocities carry the error of the last partial step
 //! (relative error ~1e-4 at 5 µs on the baseline). The peak force of a
 //! damped run misses the jump F(0⁺) = c V0 at the first instant.
+//!
+//! A step too large for the contact is refused ([`crate::stability`]):
+//! before integrating if RK4 is unstable on the linearised law, after it if
+//! the energy budget does not close to [`crate::stability::ENERGY_RESIDUAL_BOUND`]
+//! (also when the run ends at its horizon or in a non-finite state).
+//!
+//! Histories: grid samples between step points are one RK4 step from the
+//! step point before them; the separation row is the state where Eq. 48
+//! held (t_end one step after the contact time).
 
-use crate::ode::{self, Branch, ContactOde, Extremes};
+use crate::history::{self, Sampler};
+use crate::ode::{self, Branch, ContactOde, Extremes, State};
+use crate::stability;
 use kick_core::{
-    AnyLaw, History, KickError, Outcome, RecordingSolver, Scenario, Solver, StopReason,
+    AnyLaw, ContactPhase, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing, StopReason, Streamed,
 };
+use std::ops::ControlFlow;
 
 /// The paper's fixed-step RK4.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -53,9 +65,10 @@ impl SeedRk4 {
         &self,
         scenario: &Scenario,
         law: L,
-        mut history: Option<(&mut History, f64)>,
+        mut sampler: Option<&mut Sampler>,
     ) -> Result<Outcome, KickError> {
         let ode = ContactOde::new(scenario, law, Branch::Literal);
+        stability::check_rk4_step(scenario, &law, self.step)?;
         let horizon = scenario.contact_horizon();
         let max_steps = (horizon / self.step).ceil();
         if max_steps > MAX_SEED_STEPS as f64 {
@@ -70,37 +83,39 @@ impl SeedRk4 {
         let mut y = ode::initial_state(scenario);
         let mut extremes = Extremes::new(ode.force(&y));
         let mut compressed = false;
-        let mut last_recorded = f64::NEG_INFINITY;
-        if let Some((hist, _)) = history.as_mut() {
-            hist.samples.push(ode.sample(0.0, &y));
-            last_recorded = 0.0;
-        }
+        // Samples between step points: one RK4 step from the point before.
+        let sample = |t: f64, y: &State| {
+            let phase = if ode::compression_rate(y) > 0.0 { ContactPhase::Compressing } else { ContactPhase::Restoring };
+            ode.sample(t, y, phase)
+        };
         let mut t = 0.0;
         for step in 1..=max_steps {
+            let before = y;
             y = ode.rk4_step(&y, h);
             let last_in_contact = t;
             t += h;
             let delta = ode::compression(&y);
             let force = ode.force(&y);
             if !(force.is_finite() && delta.is_finite()) {
+                // A blow-up: the step, if the budget before it shows it.
+                stability::check_energy(scenario, &law, &ode.budget(scenario, &before), h, last_in_contact)?;
                 return Err(KickError::NonFinite { quantity: "state", time: t });
             }
             extremes.observe(t, force, delta);
-            if let Some((hist, interval)) = history.as_mut() {
-                if t - last_recorded >= *interval * (1.0 - 1e-9) {
-                    hist.samples.push(ode.sample(t, &y));
-                    last_recorded = t;
-                }
-            }
             compressed |= delta > 0.0;
             // Eq. 48
-            if compressed && delta <= 0.0 && y[ode::BALL_VELOCITY] >= y[ode::FOOT_VELOCITY] {
-                if let Some((hist, _)) = history.as_mut() {
-                    if last_recorded < t {
-                        hist.samples.push(ode.sample(t, &y));
-                    }
+            let stop = compressed && delta <= 0.0 && y[ode::BALL_VELOCITY] >= y[ode::FOOT_VELOCITY];
+            if let Some(sampler) = sampler.as_deref_mut() {
+                sampler.fill(t, !stop, |tk, evaluations| {
+                    *evaluations += 4;
+                    Ok(sample(tk, &ode.rk4_step(&before, tk - last_in_contact)))
+                })?;
+                if stop {
+                    sampler.finish(ode.sample(t, &y, ContactPhase::Separation));
                 }
-                return ode::outcome(
+            }
+            if stop {
+                let outcome = ode::outcome(
                     scenario,
                     &ode,
                     &y,
@@ -108,11 +123,15 @@ impl SeedRk4 {
                     StopReason::StepCondition { t: last_in_contact },
                     4 * step,
                     "seed-rk4",
-                );
+                )?;
+                stability::check_energy(scenario, &law, &outcome.energy, h, t)?;
+                return Ok(outcome);
             }
         }
+        // Not a proof of trapping; but first, whether the step is to blame.
+        stability::check_energy(scenario, &law, &ode.budget(scenario, &y), h, t)?;
         Err(KickError::NoSeparation {
-            time: max_steps as f64 * h,
+            time: t,
             reason: format!(
                 "contact outlasted the horizon of {horizon:.6e} s = {} x the undriven elastic contact time",
                 kick_core::scenario::CONTACT_HORIZON_FACTOR
@@ -134,17 +153,17 @@ impl Solver for SeedRk4 {
 }
 
 impl RecordingSolver for SeedRk4 {
-    fn solve_recorded(
+    fn solve_streamed(
         &self,
         scenario: &Scenario,
-        interval: f64,
-    ) -> Result<(Outcome, History), KickError> {
-        let mut history = History::default();
-        let recorder = Some((&mut history, interval.max(0.0)));
-        let outcome = match scenario.contact_law() {
-            AnyLaw::PowerLaw(law) => self.run(scenario, law, recorder)?,
-            law => self.run(scenario, law, recorder)?,
-        };
-        Ok((outcome, history))
+        spacing: Spacing,
+        sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+    ) -> Result<Streamed, KickError> {
+        // The history ends where Eq. 48 held, one step after the contact time.
+        let end = |o: &Outcome| o.contact_time + self.step;
+        match scenario.contact_law() {
+            AnyLaw::PowerLaw(law) => history::stream(spacing, sink, end, |s| self.run(scenario, law, s)),
+            law => history::stream(spacing, sink, end, |s| self.run(scenario, law, s)),
+        }
     }
 }

@@ -23,7 +23,7 @@
 //!   re-integrating.
 //! - Trapping under a drive: E = ½ μ δ̇² + U(δ) − f_s δ only falls while
 //!   compressing (dE/dt = −c δ̇²). The ball reaches δ = 0 again only if
-//!   E(δ_max) ≥ 0, so the run stops as soon as E < 0 (a `NoSeparation`),
+//!   E(δ_max) ≥ 0, so the run stops as soon as E < 0 (`Trapped`),
 //!   which also bounds an over-damped creep towards the drive's equilibrium.
 //! - Return: undamped, so δ̇(δ) follows from E and only the time needs a
 //!   quadrature: the Beta function without a drive, tanh–sinh with one
@@ -633,7 +633,7 @@ impl Series {
         let compression = match compress(&scaled, self.tolerance)? {
             Ok(c) => c,
             Err(tau) => {
-                return Err(KickError::NoSeparation {
+                return Err(KickError::Trapped {
                     time: tau * time,
                     reason: "while compressing, ½μδ̇² + U(δ) − (μ/m_f)F_drive δ fell below zero, \
                              so the ball cannot get back to δ = 0 (the drive keeps it pressed)"

@@ -1,6 +1,11 @@
+use serde::Serialize;
 use thiserror::Error;
 
 /// Every way a kick computation can refuse or fail. Messages name the problem.
+///
+/// [`KickError::status`] sorts them: a ball proven trapped is a physical
+/// outcome ([`KickError::Trapped`]); a run a numerical limit ended is a
+/// failure ([`KickError::NoSeparation`] among others), never physics.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum KickError {
     #[error("invalid parameter `{name}` = {value}: must be {requirement}")]
@@ -14,8 +19,39 @@ pub enum KickError {
          so they never touch"
     )]
     NoContact { foot_speed: f64, ball_speed: f64 },
-    #[error("no separation: the foot never releases the ball ({reason}; last checked at t = {time} s)")]
+    /// Proven: the ball never leaves the foot (a drive keeps it pressed).
+    /// `time` is where the proof was made.
+    #[error("trapped: the ball never leaves the foot, no separation ({reason}; proven at t = {time} s)")]
+    Trapped { time: f64, reason: String },
+    /// Still in contact when a solver's limit ran out (its time horizon, its
+    /// step budget): a numerical limit, not a proof that the ball is trapped.
+    #[error(
+        "no separation found within the solver's limits ({reason}; last checked at t = {time} s); \
+         not proven trapped"
+    )]
     NoSeparation { time: f64, reason: String },
+    /// A fixed step beyond the stability limit of its method on this contact
+    /// (linearised law, checked before integrating).
+    #[error(
+        "step too large: dt = {step:e} s exceeds {largest_stable_step:e} s, the largest step \
+         {method} keeps stable on this contact ({reason}); use a smaller dt or an adaptive solver"
+    )]
+    StepTooLarge { method: &'static str, step: f64, largest_stable_step: f64, reason: String },
+    /// A fixed step whose energy budget does not close: the residual
+    /// (K⁻ + W) − (K⁺ + U⁺ + D) relative to the energy through the contact
+    /// exceeds the bound (checked after integrating).
+    #[error(
+        "step too large: dt = {step:e} s leaves an energy residual of {relative_residual:e} of the \
+         energy through the contact (bound {bound:e}) at t = {time} s; use a smaller dt or an \
+         adaptive solver"
+    )]
+    StepTooInaccurate { step: f64, relative_residual: f64, bound: f64, time: f64 },
+    /// The collecting form of a history would hold more samples than allowed.
+    #[error(
+        "history too long: it needs {needed} samples, more than the limit of {limit}; use a \
+         longer interval or fewer samples, or stream the history"
+    )]
+    HistoryTooLong { needed: u64, limit: u64 },
     #[error("unknown solver `{name}`: expected one of {expected}")]
     UnknownSolver { name: String, expected: &'static str },
     #[error("solver `{solver}` does not apply to this scenario: {reason}")]
@@ -26,12 +62,71 @@ pub enum KickError {
     NonFinite { quantity: &'static str, time: f64 },
 }
 
+/// What became of a scenario: the status column of result files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Status {
+    /// The ball left the foot; there is an outcome.
+    Separated,
+    /// Proven that the ball never leaves the foot: a physical outcome.
+    Trapped,
+    /// A numerical limit ended the run (step too large, integration
+    /// failure, non-finite state, horizon or step budget reached without a
+    /// proof): no statement about the physics.
+    NumericalFailure,
+    /// The input or request was refused (invalid parameter, no contact,
+    /// unknown or inapplicable solver, history beyond its limit).
+    Refused,
+}
+
+impl Status {
+    pub fn of<T>(result: &Result<T, KickError>) -> Status {
+        match result {
+            Ok(_) => Status::Separated,
+            Err(e) => e.status(),
+        }
+    }
+    /// Code for integer status columns.
+    pub fn code(self) -> u8 {
+        match self {
+            Status::Separated => 0,
+            Status::NumericalFailure => 1,
+            Status::Trapped => 2,
+            Status::Refused => 3,
+        }
+    }
+    pub fn name(self) -> &'static str {
+        match self {
+            Status::Separated => "separated",
+            Status::Trapped => "trapped",
+            Status::NumericalFailure => "numerical failure",
+            Status::Refused => "refused",
+        }
+    }
+}
+
 impl KickError {
     pub(crate) fn invalid(name: &'static str, value: f64, requirement: &'static str) -> Self {
         KickError::InvalidParameter {
             name,
             value,
             requirement,
+        }
+    }
+
+    pub fn status(&self) -> Status {
+        match self {
+            KickError::Trapped { .. } => Status::Trapped,
+            KickError::NoSeparation { .. }
+            | KickError::StepTooLarge { .. }
+            | KickError::StepTooInaccurate { .. }
+            | KickError::Integration { .. }
+            | KickError::NonFinite { .. } => Status::NumericalFailure,
+            KickError::InvalidParameter { .. }
+            | KickError::NoContact { .. }
+            | KickError::HistoryTooLong { .. }
+            | KickError::UnknownSolver { .. }
+            | KickError::NotApplicable { .. } => Status::Refused,
         }
     }
 }

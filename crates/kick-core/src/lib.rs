@@ -15,10 +15,14 @@ pub mod roots;
 pub mod scenario;
 pub mod special;
 
-pub use error::KickError;
+pub use error::{KickError, Status};
+use std::ops::ControlFlow;
 pub use law::{ContactLaw, PowerLawContact};
 pub use laws::{AnyLaw, LawKind};
-pub use outcome::{EnergyBudget, ExitVelocities, History, Outcome, Sample, StopReason, OBSERVABLES};
+pub use outcome::{
+    ContactPhase, EnergyBudget, ExitVelocities, Grid, History, Outcome, Sample, Spacing, StopReason, HISTORY_COLUMNS,
+    MAX_HISTORY_SAMPLES, OBSERVABLES,
+};
 pub use scenario::{Parameter, Scenario, ScenarioSpec};
 
 /// A solver turns a scenario into an outcome (argmin-style: one required method).
@@ -29,11 +33,59 @@ pub trait Solver {
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError>;
 }
 
-/// A solver that can also record the time history of the contact.
+/// The answer of [`RecordingSolver::solve_streamed`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Streamed {
+    pub outcome: Outcome,
+    /// Samples in the full history (more than the sink took if it stopped).
+    pub samples: u64,
+}
+
+/// A solver that can also record the time history of the contact, as
+/// uniformly spaced samples ([`Spacing`]).
+///
+/// Sampling never changes the steps, the physics or the step budget: the
+/// outcome is bit-identical to [`Solver::solve`]'s (the samples' own
+/// evaluations are not counted in [`Outcome::evaluations`]).
 pub trait RecordingSolver: Solver {
-    /// Solve and record samples spaced by at most `interval` seconds (plus every event).
-    fn solve_recorded(&self, scenario: &Scenario, interval: f64)
-        -> Result<(Outcome, History), KickError>;
+    /// Solve and hand each sample to `sink` in time order as it is made;
+    /// nothing is kept, so a writer can stream a history of any length.
+    /// `sink` returns `Break` to stop sampling; the solve still runs to its
+    /// outcome.
+    fn solve_streamed(
+        &self,
+        scenario: &Scenario,
+        spacing: Spacing,
+        sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
+    ) -> Result<Streamed, KickError>;
+
+    /// Solve and collect the history, at most `limit` samples; a longer one
+    /// is a [`KickError::HistoryTooLong`] that states the size it needs.
+    fn solve_sampled(&self, scenario: &Scenario, spacing: Spacing, limit: usize) -> Result<(Outcome, History), KickError> {
+        if let Spacing::Count(n) = spacing.validate()? {
+            if n > limit {
+                return Err(KickError::HistoryTooLong { needed: n as u64, limit: limit as u64 });
+            }
+        }
+        let mut samples = Vec::new();
+        let streamed = self.solve_streamed(scenario, spacing, &mut |sample| {
+            if samples.len() < limit {
+                samples.push(*sample);
+                ControlFlow::Continue(())
+            } else {
+                ControlFlow::Break(())
+            }
+        })?;
+        if streamed.samples > limit as u64 {
+            return Err(KickError::HistoryTooLong { needed: streamed.samples, limit: limit as u64 });
+        }
+        Ok((streamed.outcome, History { samples }))
+    }
+
+    /// Samples `interval` seconds apart, at most [`MAX_HISTORY_SAMPLES`].
+    fn solve_recorded(&self, scenario: &Scenario, interval: f64) -> Result<(Outcome, History), KickError> {
+        self.solve_sampled(scenario, Spacing::Interval(interval), MAX_HISTORY_SAMPLES)
+    }
 }
 
 /// A model level that predicts exit velocities from a scenario and its own

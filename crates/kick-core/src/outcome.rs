@@ -1,5 +1,6 @@
 //! What a model level returns.
 
+use crate::KickError;
 use serde::Serialize;
 
 /// Exit velocities of foot and ball, the common answer of every model level.
@@ -101,6 +102,37 @@ impl Outcome {
     }
 }
 
+/// Which part of the contact a history sample belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ContactPhase {
+    /// δ̇ > 0: the foot gains on the ball (damping on, for the paper's law).
+    Compressing,
+    /// δ̇ < 0: the ball pulls away.
+    Restoring,
+    /// The separation state, a history's last row (off the uniform grid).
+    Separation,
+}
+
+impl ContactPhase {
+    /// Numeric code for columns of numbers: +1 compressing, −1 restoring,
+    /// 0 the separation row.
+    pub fn code(self) -> f64 {
+        match self {
+            ContactPhase::Compressing => 1.0,
+            ContactPhase::Restoring => -1.0,
+            ContactPhase::Separation => 0.0,
+        }
+    }
+    pub fn name(self) -> &'static str {
+        match self {
+            ContactPhase::Compressing => "compressing",
+            ContactPhase::Restoring => "restoring",
+            ContactPhase::Separation => "separation",
+        }
+    }
+}
+
 /// One sample of a time history, SI units.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Sample {
@@ -115,12 +147,141 @@ pub struct Sample {
     pub elastic: f64,
     pub dissipated: f64,
     pub drive_work: f64,
+    pub phase: ContactPhase,
 }
 
-/// A recorded time history.
+/// Names and units of a history's columns, in [`Sample::values`] order; the
+/// phase column holds [`ContactPhase::code`].
+pub const HISTORY_COLUMNS: [(&str, &str); 12] = [
+    ("time", "s"),
+    ("foot_position", "m"),
+    ("foot_velocity", "m/s"),
+    ("ball_position", "m"),
+    ("ball_velocity", "m/s"),
+    ("compression", "m"),
+    ("force", "N"),
+    ("kinetic", "J"),
+    ("elastic", "J"),
+    ("dissipated", "J"),
+    ("drive_work", "J"),
+    ("phase", "1"),
+];
+
+impl Sample {
+    /// Values in [`HISTORY_COLUMNS`] order.
+    pub fn values(&self) -> [f64; 12] {
+        [
+            self.time,
+            self.foot_position,
+            self.foot_velocity,
+            self.ball_position,
+            self.ball_velocity,
+            self.compression,
+            self.force,
+            self.kinetic,
+            self.elastic,
+            self.dissipated,
+            self.drive_work,
+            self.phase.code(),
+        ]
+    }
+}
+
+/// A recorded time history (see [`Spacing`] for where its samples fall).
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct History {
     pub samples: Vec<Sample>,
+}
+
+/// Most samples the collecting form of a history keeps by default
+/// ([`crate::RecordingSolver::solve_recorded`]): 10⁶ samples, about 100 MB.
+/// Longer histories are streamed ([`crate::RecordingSolver::solve_streamed`]).
+pub const MAX_HISTORY_SAMPLES: usize = 1_000_000;
+
+/// Where the samples of a 1D time history fall.
+///
+/// Samples lie on a uniform grid t_k = k Δ from first touch (k = 0, t = 0),
+/// every grid time strictly before the end of the contact, followed by one
+/// more row, the separation state (phase [`ContactPhase::Separation`]) at the
+/// contact's end t_end. So the last grid point is < t_end and the separation
+/// row at most Δ after it (up to rounding of k Δ). t_end is the contact time for the solvers
+/// that locate separation; for `seed-rk4` it is the step at which Eq. 48
+/// held, one step after its contact time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Spacing {
+    /// Δ in s; ⌈t_end/Δ⌉ grid samples plus the separation row.
+    Interval(f64),
+    /// This many samples in all (≥ 2): Δ = t_end/(N − 1), N − 1 grid samples
+    /// plus the separation row. t_end is not known in advance, so the
+    /// contact is solved once for it first.
+    Count(usize),
+}
+
+impl Spacing {
+    /// Refuses a spacing that does not make a grid, naming `interval` or `samples`.
+    pub fn validate(self) -> Result<Spacing, KickError> {
+        match self {
+            Spacing::Interval(dt) if !(dt.is_finite() && dt > 0.0) => {
+                Err(KickError::InvalidParameter { name: "interval", value: dt, requirement: "finite and > 0 (s)" })
+            }
+            Spacing::Count(n) if n < 2 => Err(KickError::InvalidParameter {
+                name: "samples",
+                value: n as f64,
+                requirement: "at least 2 (first touch and separation)",
+            }),
+            _ => Ok(self),
+        }
+    }
+
+    /// The grid for a contact ending at `end` (needed only by `Count`).
+    pub fn grid(self, end: f64) -> Grid {
+        match self {
+            Spacing::Interval(interval) => Grid { interval, last: None },
+            Spacing::Count(n) => Grid { interval: end / (n - 1) as f64, last: Some(n as u64 - 2) },
+        }
+    }
+}
+
+/// A history's time grid: t_k = k Δ for k = 0, 1, … (at most `last`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Grid {
+    /// Δ in s.
+    pub interval: f64,
+    /// Largest index k on the grid, if bounded.
+    pub last: Option<u64>,
+}
+
+impl Grid {
+    /// t_k, computed from k (never accumulated).
+    #[inline]
+    pub fn time(&self, k: u64) -> f64 {
+        k as f64 * self.interval
+    }
+    /// Whether t_k is on the grid and not past `end` (`inclusive`) or before it.
+    #[inline]
+    pub fn admits(&self, k: u64, end: f64, inclusive: bool) -> bool {
+        let t = self.time(k);
+        self.last.is_none_or(|last| k <= last) && if inclusive { t <= end } else { t < end }
+    }
+    /// How many samples a history ending at `end` holds: the grid points
+    /// before `end` plus the separation row.
+    pub fn samples_until(&self, end: f64) -> u64 {
+        // The grid points are those k below the first one `admits` refuses
+        // (it is monotone in k): start from the ratio, settle the rounding
+        // with the predicate itself.
+        let ratio = (end / self.interval).ceil();
+        let mut k = if ratio.is_finite() && ratio > 0.0 { ratio as u64 } else { 0 };
+        if let Some(last) = self.last {
+            k = k.min(last + 1);
+        }
+        while self.admits(k, end, false) {
+            k += 1;
+        }
+        while k > 0 && !self.admits(k - 1, end, false) {
+            k -= 1;
+        }
+        k + 1
+    }
 }
 
 /// Names and units of the scalar observables of an [`Outcome`], as used by
