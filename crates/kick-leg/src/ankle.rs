@@ -13,9 +13,19 @@
 //!   v̇_b = F/m_b,               δ̇ = v_c − v_b.
 //! With κ = 0 this is exactly the 1D model with m_f = m_free; as κ → ∞ the
 //! ankle locks and 1/m_locked = 1/m_free − c² I_a (the Schur complement).
+//!
+//! A stiff ankle is a fast mode, ω_a² = κ/I_a: the fixed RK4 step is kept
+//! below [`ANKLE_MODE_STEP`]/|λ|max of the linearised system, so no κ makes
+//! it unstable. The gap to the locked leg falls as 1/κ (measured ≈ 0.64
+//! κ_c/κ in exit speed for the default pose, κ_c = I_a (π/t_c)² the
+//! inertial stiffness of [`Leg::effective_mass`]); beyond
+//! [`locked_limit_stiffness`], where it is far below the coupled run's own
+//! error, the locked leg is returned in closed form (the 1D model with
+//! m_locked, the ankle deflected quasi-statically by the contact torque).
 
 use crate::{exit_outcome, AnkleJoint, Impact, Leg, LegEffectiveMass, LegError, Pose};
-use kick_core::{roots, ContactLaw, Outcome, Scenario};
+use kick_core::{roots, ContactLaw, Outcome, Parameter, Scenario};
+use std::f64::consts::PI;
 
 /// The ball's exit from a leg with an elastic ankle, frozen geometry.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -26,6 +36,9 @@ pub struct CoupledContact {
     pub contact_time: f64,
     /// Largest |θ|, rad: the frozen-geometry assumption needs it small.
     pub max_ankle_deflection: f64,
+    /// True when κ is beyond [`locked_limit_stiffness`] and the locked leg
+    /// was taken in closed form instead of integrating.
+    pub locked_limit: bool,
 }
 
 /// The three numbers of M⁻¹ the elastic ankle needs (see the module docs).
@@ -95,9 +108,52 @@ fn rk4<L: ContactLaw>(system: &Reduced, law: &L, y: &State, h: f64) -> State {
     std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
 }
 
-/// Integrate the coupled contact with `steps` RK4 steps per 1D contact time
-/// of the locked leg (the step is fixed; separation is interpolated linearly
-/// within the last step, where the force is already near zero).
+/// Largest h |λ|max of the coupled run's fixed RK4 step: well inside RK4's
+/// stability region (|hλ| ≤ 2.6 in every direction), and fine enough that
+/// the ankle mode, whose amplitude is O(1/κ), adds nothing measurable.
+pub const ANKLE_MODE_STEP: f64 = 0.5;
+
+/// Estimated relative gap in exit speed to the locked leg at which the
+/// locked limit is taken instead of integrating: far below the coupled
+/// run's own error (~1e-8 at [`ELASTIC_STEPS`]).
+pub const LOCKED_LIMIT_GAP: f64 = 1e-9;
+
+/// κ_c = I_a (π/t_c)², the ankle's inertial stiffness over the locked leg's
+/// contact (see [`Leg::effective_mass`]); the gap to the locked leg is
+/// ≈ 0.64 κ_c/κ in exit speed for the default pose.
+fn inertial_stiffness(mobilities: &AnkleMobilities, locked_contact_time: f64) -> f64 {
+    (PI / locked_contact_time).powi(2) / mobilities.ankle
+}
+
+/// The ankle stiffness beyond which [`coupled_ankle_contact`] returns the
+/// locked leg: κ_c / [`LOCKED_LIMIT_GAP`], with κ_c the ankle's inertial
+/// stiffness over the locked leg's contact (≈ 3.7e12 N m/rad for the default
+/// pose). The coupled run and the locked limit agree there to 1e-8
+/// (tests/elastic_ankle.rs).
+pub fn locked_limit_stiffness(leg: &Leg, pose: &Pose, impact: &Impact, base: &Scenario) -> Result<f64, LegError> {
+    let mobilities = AnkleMobilities::of(leg, pose, impact)?;
+    let locked = leg.effective_mass(pose, impact, AnkleJoint::Locked)?.locked_ankle;
+    let contact_time = exit_outcome(locked, base)?.contact_time;
+    Ok(inertial_stiffness(&mobilities, contact_time) / LOCKED_LIMIT_GAP)
+}
+
+/// The locked leg as a [`CoupledContact`]: the 1D contact with m_locked,
+/// the ankle deflected quasi-statically, θ = −c F/(κ/I_a).
+fn locked_limit(mobilities: &AnkleMobilities, stiffness: f64, locked: &Outcome) -> CoupledContact {
+    CoupledContact {
+        v_ball_out: locked.v_ball_out,
+        v_contact_out: locked.v_foot_out,
+        contact_time: locked.contact_time,
+        max_ankle_deflection: (mobilities.coupling * locked.peak_force / (stiffness * mobilities.ankle)).abs(),
+        locked_limit: true,
+    }
+}
+
+/// Integrate the coupled contact with at least `steps` RK4 steps per 1D
+/// contact time of the locked leg, and more when the ankle mode is fast
+/// (h |λ|max ≤ [`ANKLE_MODE_STEP`]); separation is interpolated linearly
+/// within the last step, where the force is already near zero. Beyond
+/// [`locked_limit_stiffness`] the locked leg is returned in closed form.
 pub fn coupled_ankle_contact(
     leg: &Leg,
     pose: &Pose,
@@ -124,8 +180,21 @@ pub fn coupled_ankle_contact(
     };
     let law = base.law();
     let locked = leg.effective_mass(pose, impact, AnkleJoint::Locked)?.locked_ankle;
-    let estimate = exit_outcome(locked, base)?.contact_time;
-    let h = estimate / f64::from(steps);
+    let locked_outcome = exit_outcome(locked, base)?;
+    let estimate = locked_outcome.contact_time;
+    if stiffness >= inertial_stiffness(&mobilities, estimate) / LOCKED_LIMIT_GAP {
+        return Ok(locked_limit(&mobilities, stiffness, &locked_outcome));
+    }
+    // |λ|max of the linearised system: the ankle mode κ/I_a and the contact
+    // (stiffest at the free leg's deepest compression) share the trace of
+    // M⁻¹K, and the damping adds at most c (1/m_free + 1/m_b).
+    let contact_mobility = mobilities.free + 1.0 / base.ball_mass();
+    let free = base.with(Parameter::FootMass, 1.0 / mobilities.free)?;
+    let deepest = kick_compliant::stability::reference_compression(&free, &law);
+    let (_, contact_stiffness, contact_damping) = law.force_and_gradient(deepest, base.approach_speed());
+    let fastest = (contact_stiffness * contact_mobility + stiffness * mobilities.ankle).sqrt()
+        + contact_damping * contact_mobility;
+    let h = (estimate / f64::from(steps)).min(ANKLE_MODE_STEP / fastest);
     // Before contact the leg swings with a still ankle (ω_a = 0, θ = 0); the
     // equations are linear in the leg, so only the response to F matters.
     let mut y: State = [base.foot_speed(), 0.0, 0.0, base.ball_speed(), 0.0];
@@ -133,7 +202,7 @@ pub fn coupled_ankle_contact(
     let mut max_deflection: f64 = 0.0;
     let mut compressing = true;
     // Generous bound: an elastic ankle lengthens the contact, not by 100×.
-    let limit = 100 * u64::from(steps);
+    let limit = (100.0 * (estimate / h).ceil()) as u64;
     for _ in 0..limit {
         let next = rk4(&system, &law, &y, h);
         max_deflection = max_deflection.max(next[2].abs());
@@ -149,6 +218,7 @@ pub fn coupled_ankle_contact(
                 v_contact_out: lerp(0),
                 contact_time: t + s * h,
                 max_ankle_deflection: max_deflection,
+                locked_limit: false,
             };
             for v in [out.v_ball_out, out.v_contact_out, out.contact_time] {
                 kick_core::error::finite("coupled leg-ball state", v, out.contact_time)?;
@@ -195,6 +265,14 @@ pub fn elastic_ankle(
 ) -> Result<ElasticAnkle, LegError> {
     let coupled = coupled_ankle_contact(leg, pose, impact, stiffness, base, ELASTIC_STEPS)?;
     let limits = leg.effective_mass(pose, impact, AnkleJoint::Free)?;
+    let interpolated = |contact_time| {
+        leg.effective_mass(pose, impact, AnkleJoint::Elastic { stiffness, contact_time })
+    };
+    if coupled.locked_limit {
+        let equivalent_mass = limits.locked_ankle;
+        let outcome = exit_outcome(equivalent_mass, base)?;
+        return Ok(ElasticAnkle { equivalent_mass, coupled, outcome, interpolated: interpolated(coupled.contact_time)? });
+    }
     let mut failure = None;
     let mut miss = |m: f64| match exit_outcome(m, base) {
         Ok(o) => o.v_ball_out - coupled.v_ball_out,
@@ -218,10 +296,10 @@ pub fn elastic_ankle(
             ))
         })?
         .x;
-    let interpolated = leg.effective_mass(
-        pose,
-        impact,
-        AnkleJoint::Elastic { stiffness, contact_time: coupled.contact_time },
-    )?;
-    Ok(ElasticAnkle { equivalent_mass, coupled, outcome: exit_outcome(equivalent_mass, base)?, interpolated })
+    Ok(ElasticAnkle {
+        equivalent_mass,
+        coupled,
+        outcome: exit_outcome(equivalent_mass, base)?,
+        interpolated: interpolated(coupled.contact_time)?,
+    })
 }

@@ -2,7 +2,7 @@
 //! in its two exact limits, and the 1D-equivalent mass.
 
 use kick_core::Scenario;
-use kick_leg::ankle::{coupled_ankle_contact, elastic_ankle, AnkleMobilities};
+use kick_leg::ankle::{coupled_ankle_contact, elastic_ankle, locked_limit_stiffness, AnkleMobilities, ELASTIC_STEPS};
 use kick_leg::{exit_outcome, AnkleJoint, Impact, Leg, Pose};
 
 fn setup() -> (Leg, Pose, Impact, Scenario) {
@@ -78,4 +78,63 @@ fn equivalent_mass_spans_free_to_locked_and_reproduces_the_coupled_speed() {
     for e in [soft, stiff, elastic_ankle(&leg, &pose, &impact, 300.0, &base).unwrap()] {
         assert!((e.outcome.v_ball_out - e.coupled.v_ball_out).abs() < 1e-10 * e.coupled.v_ball_out);
     }
+}
+
+/// A very stiff ankle is the locked leg: no wrong number (once −409 m/s at
+/// κ = 1e13) and no false "no separation" (at 1e16), up to f64::MAX.
+#[test]
+fn a_very_stiff_ankle_is_the_locked_leg() {
+    let (leg, pose, impact, base) = setup();
+    let locked_mass = leg.effective_mass(&pose, &impact, AnkleJoint::Locked).unwrap().locked_ankle;
+    let locked = exit_outcome(locked_mass, &base).unwrap();
+    for k in [1e13, 1e16, 1e300, f64::MAX] {
+        let c = coupled_ankle_contact(&leg, &pose, &impact, k, &base, ELASTIC_STEPS).unwrap();
+        assert!(c.locked_limit, "{k:e}");
+        assert_eq!((c.v_ball_out, c.v_contact_out, c.contact_time), (locked.v_ball_out, locked.v_foot_out, locked.contact_time), "{k:e}");
+        assert!(c.max_ankle_deflection.is_finite() && c.max_ankle_deflection < 1e-10, "{k:e}: {}", c.max_ankle_deflection);
+        let e = elastic_ankle(&leg, &pose, &impact, k, &base).unwrap();
+        assert_eq!(e.equivalent_mass, locked_mass);
+        assert_eq!(e.outcome.v_ball_out, locked.v_ball_out);
+    }
+}
+
+/// At the switch stiffness the coupled run (integrated just below it) and
+/// the locked limit (taken just above it) agree to the coupled run's own
+/// accuracy, 1e-8, over knee and ankle angles.
+#[test]
+fn the_coupled_run_meets_the_locked_limit_at_the_switch() {
+    let (leg, _, impact, base) = setup();
+    for knee in [0.0, 30.0, 70.0] {
+        for ankle in [20.0, 60.0] {
+            let pose = Pose { knee_flexion: knee, plantarflexion: ankle, ..Pose::default() };
+            let switch = locked_limit_stiffness(&leg, &pose, &impact, &base).unwrap();
+            let below = coupled_ankle_contact(&leg, &pose, &impact, switch * (1.0 - 1e-9), &base, ELASTIC_STEPS).unwrap();
+            let above = coupled_ankle_contact(&leg, &pose, &impact, switch, &base, ELASTIC_STEPS).unwrap();
+            assert!(!below.locked_limit && above.locked_limit);
+            let case = format!("knee {knee}, ankle {ankle}, κ = {switch:.3e}");
+            assert!((below.v_ball_out - above.v_ball_out).abs() < 1e-8 * above.v_ball_out, "{case}: {} vs {}", below.v_ball_out, above.v_ball_out);
+            assert!((below.v_contact_out - above.v_contact_out).abs() < 1e-8 * above.v_ball_out, "{case}");
+            assert!((below.contact_time - above.contact_time).abs() < 1e-8 * above.contact_time, "{case}");
+            // The quasi-static deflection is the coupled run's up to its
+            // dynamic overshoot (at most 3x for a single-humped force).
+            assert!(below.max_ankle_deflection <= 3.0 * above.max_ankle_deflection && below.max_ankle_deflection >= above.max_ankle_deflection, "{case}");
+        }
+    }
+}
+
+/// Up to the switch, the ankle mode (ω² = κ/I_a, up to ~2e7 rad/s) is
+/// integrated stably: the gap to the locked leg keeps falling as 1/κ.
+#[test]
+fn a_stiff_ankle_below_the_switch_keeps_the_one_over_stiffness_gap() {
+    let (leg, pose, impact, base) = setup();
+    let locked = leg.effective_mass(&pose, &impact, AnkleJoint::Locked).unwrap().locked_ankle;
+    let truth = exit_outcome(locked, &base).unwrap().v_ball_out;
+    let gap = |k: f64| {
+        let c = coupled_ankle_contact(&leg, &pose, &impact, k, &base, ELASTIC_STEPS).unwrap();
+        assert!(!c.locked_limit);
+        (c.v_ball_out - truth) / truth
+    };
+    let (g9, g11) = (gap(1e9), gap(1e11));
+    assert!(g9 > 0.0 && g11 > 0.0, "{g9} {g11}");
+    assert!((50.0..200.0).contains(&(g9 / g11)), "{g9} {g11}");
 }
