@@ -13,6 +13,13 @@
 //! standard uncertainty is |dp/dθ| σ_θ (first order). The correlation matrix
 //! is invariant under these one-to-one rescalings to first order, so it is
 //! the same in θ and in p.
+//!
+//! Refused: fewer observations than free parameters
+//! ([`IdentifyError::UnderDetermined`]), and any non-finite χ², estimate,
+//! uncertainty, correlation or singular value ([`IdentifyError::NonFinite`]):
+//! weighted residuals beyond ~1e154 overflow χ² even where the optimiser's
+//! own norm does not. How the optimiser stopped is a [`FitStop`], printed
+//! in words.
 
 use crate::data::Observations;
 use crate::model::predict;
@@ -20,7 +27,7 @@ use crate::parameter::{Coordinate, FitParameter, ModelPoint};
 use crate::IdentifyError;
 use kick_compliant::Accurate;
 use kick_core::{LawKind, Parameter};
-use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
+use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt, TerminationReason};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
 use serde::Serialize;
 use std::cell::RefCell;
@@ -57,6 +64,73 @@ pub struct FitOptions {
 impl Default for FitOptions {
     fn default() -> Self {
         FitOptions { solver: Accurate::default(), patience: 100, tolerance: 1e-10 }
+    }
+}
+
+/// How the optimiser stopped (Levenberg–Marquardt's termination, in words
+/// by `Display`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "kind")]
+pub enum FitStop {
+    /// MINPACK's tests: `ftol`, the relative reduction of χ² (actual and
+    /// predicted) below tolerance; `xtol`, the relative step below tolerance.
+    Converged { ftol: bool, xtol: bool },
+    /// The weighted residuals are exactly zero.
+    ResidualsZero,
+    /// The residuals are orthogonal to the Jacobian's columns (gradient zero).
+    Orthogonal,
+    /// A tolerance was set below what rounding allows.
+    NoImprovementPossible { tolerance: &'static str },
+    /// The evaluation budget (patience) ran out.
+    LostPatience,
+    /// The model could not be evaluated.
+    ModelFailed,
+    /// A non-finite value stopped the optimiser.
+    NonFinite { quantity: &'static str },
+    /// The problem had no parameters, no residuals or inconsistent sizes.
+    Malformed { problem: &'static str },
+}
+
+impl FitStop {
+    fn of(reason: &TerminationReason) -> FitStop {
+        match *reason {
+            TerminationReason::Converged { ftol, xtol } => FitStop::Converged { ftol, xtol },
+            TerminationReason::ResidualsZero => FitStop::ResidualsZero,
+            TerminationReason::Orthogonal => FitStop::Orthogonal,
+            TerminationReason::NoImprovementPossible(tolerance) => FitStop::NoImprovementPossible { tolerance },
+            TerminationReason::LostPatience => FitStop::LostPatience,
+            TerminationReason::User(_) => FitStop::ModelFailed,
+            TerminationReason::Numerical(quantity) => FitStop::NonFinite { quantity },
+            TerminationReason::NoParameters => FitStop::Malformed { problem: "no parameters" },
+            TerminationReason::NoResiduals => FitStop::Malformed { problem: "no residuals" },
+            TerminationReason::WrongDimensions(what) => FitStop::Malformed { problem: what },
+        }
+    }
+
+    /// A stop at a (local) minimum.
+    pub fn converged(&self) -> bool {
+        matches!(self, FitStop::Converged { .. } | FitStop::ResidualsZero | FitStop::Orthogonal)
+    }
+}
+
+impl std::fmt::Display for FitStop {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            FitStop::Converged { ftol: true, xtol: true } => {
+                write!(f, "converged: reduction of chi-square and parameter step both below tolerance")
+            }
+            FitStop::Converged { ftol: true, xtol: false } => write!(f, "converged: reduction of chi-square below tolerance"),
+            FitStop::Converged { .. } => write!(f, "converged: parameter step below tolerance"),
+            FitStop::ResidualsZero => write!(f, "converged: residuals exactly zero"),
+            FitStop::Orthogonal => write!(f, "converged: residuals orthogonal to the Jacobian (gradient zero)"),
+            FitStop::NoImprovementPossible { tolerance } => {
+                write!(f, "stopped: no improvement possible at the set {tolerance} (below rounding)")
+            }
+            FitStop::LostPatience => write!(f, "stopped: evaluation budget exhausted before convergence"),
+            FitStop::ModelFailed => write!(f, "stopped: the model could not be evaluated"),
+            FitStop::NonFinite { quantity } => write!(f, "stopped: non-finite {quantity}"),
+            FitStop::Malformed { problem } => write!(f, "stopped: malformed problem ({problem})"),
+        }
     }
 }
 
@@ -102,6 +176,8 @@ pub struct FitReport {
     /// Singular values of J (θ space), largest first: a near-zero one marks an
     /// unidentifiable combination.
     pub singular_values: Vec<f64>,
+    pub stop: FitStop,
+    /// `stop` in words.
     pub termination: String,
     pub converged: bool,
     pub evaluations: usize,
@@ -239,8 +315,22 @@ pub const MAX_ONSET_RESTARTS: usize = 20;
 /// wrong side. After it converges, the fit restarts from its estimate with
 /// t0 moved past the neighbouring sample on either side, keeps the lower
 /// χ², and repeats until neither side improves.
+///
+/// Fewer observations than free parameters is refused
+/// ([`IdentifyError::UnderDetermined`]); [`minimise`] allows it.
 pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, IdentifyError> {
-    let mut best = fit_from(problem, options)?;
+    fit_checked(problem, options, true)
+}
+
+/// As [`fit`], but an under-determined problem is minimised too: for
+/// misfit profiles ([`crate::profile`]), where a χ² minimum that other
+/// parameters reach exactly is the finding. Uncertainties are then `None`.
+pub fn minimise(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, IdentifyError> {
+    fit_checked(problem, options, false)
+}
+
+fn fit_checked(problem: &FitProblem, options: &FitOptions, determined: bool) -> Result<FitReport, IdentifyError> {
+    let mut best = fit_from(problem, options, determined)?;
     let (Some(index), Some(history)) = (
         problem.free.iter().position(|&p| p == FitParameter::TimeOffset),
         problem.observations.history.as_ref(),
@@ -262,7 +352,7 @@ pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Iden
             }
             let restart = FitProblem { start: start.with(FitParameter::TimeOffset, candidate)?, ..problem.clone() };
             // A restart the model cannot compute is no better.
-            let Ok(mut report) = fit_from(&restart, options) else { continue };
+            let Ok(mut report) = fit_from(&restart, options, determined) else { continue };
             if report.chi_square < best.chi_square {
                 report.evaluations += best.evaluations;
                 for (e, first) in report.estimates.iter_mut().zip(&best.estimates) {
@@ -279,8 +369,9 @@ pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Iden
     Ok(best)
 }
 
-/// One Levenberg–Marquardt run from `problem.start`.
-fn fit_from(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, IdentifyError> {
+/// One Levenberg–Marquardt run from `problem.start`; `determined` refuses
+/// fewer observations than free parameters.
+fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool) -> Result<FitReport, IdentifyError> {
     if problem.free.is_empty() {
         return Err(IdentifyError::NoFreeParameters);
     }
@@ -302,6 +393,11 @@ fn fit_from(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Ide
         })?;
         theta0.push(theta);
     }
+    // After the per-parameter checks, which name the more specific problem.
+    let (observations, parameters) = (problem.observations.len(), problem.free.len());
+    if determined && observations < parameters {
+        return Err(IdentifyError::UnderDetermined { observations, parameters });
+    }
     let (observed, sigma, labels) = flatten(&problem.observations);
     let lm_problem = Problem {
         problem,
@@ -322,10 +418,20 @@ fn fit_from(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Ide
         .with_gtol(0.0)
         .with_patience(options.patience.max(1));
     let (solved, report) = lm.minimize(lm_problem);
-    let converged = report.termination.was_successful();
-    if let levenberg_marquardt::TerminationReason::User(_) = report.termination {
-        let failure = solved.failure.borrow().clone();
-        return Err(failure.unwrap_or(IdentifyError::NotConverged(format!("{:?}", report.termination))));
+    let stop = FitStop::of(&report.termination);
+    let converged = stop.converged();
+    match stop {
+        FitStop::ModelFailed => {
+            let failure = solved.failure.borrow().clone();
+            return Err(failure.unwrap_or(IdentifyError::NotConverged(stop.to_string())));
+        }
+        FitStop::NonFinite { quantity } => {
+            return Err(IdentifyError::NonFinite {
+                quantity,
+                reason: "the optimiser met it (data or sigmas beyond what double precision resolves?)".into(),
+            })
+        }
+        _ => {}
     }
     let theta = solved.theta.clone();
     let residual_vector = solved.weighted(&theta)?;
@@ -334,7 +440,7 @@ fn fit_from(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Ide
 
     let m = residual_vector.len();
     let n = theta.len();
-    let chi_square = residual_vector.norm_squared();
+    let chi_square = chi_square_of(&residual_vector)?;
     let dof = m as i64 - n as i64;
     let residual_variance = (dof > 0).then(|| chi_square / dof as f64);
 
@@ -392,7 +498,7 @@ fn fit_from(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Ide
             }
         })
         .collect();
-    Ok(FitReport {
+    let report = FitReport {
         law: point.scenario.law_kind(),
         estimates,
         residuals,
@@ -401,11 +507,55 @@ fn fit_from(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, Ide
         residual_variance,
         correlation,
         singular_values: singular,
-        termination: format!("{:?}", report.termination),
+        stop,
+        termination: stop.to_string(),
         converged,
         evaluations: report.number_of_evaluations,
         jacobian: (0..m).map(|i| jacobian.row(i).iter().copied().collect()).collect(),
+    };
+    check_finite(&report)?;
+    Ok(report)
+}
+
+/// χ² = Σ r², refused when it overflows (residuals beyond ~1e154).
+fn chi_square_of(residuals: &DVector<f64>) -> Result<f64, IdentifyError> {
+    let chi_square = residuals.norm_squared();
+    if chi_square.is_finite() {
+        return Ok(chi_square);
+    }
+    let largest = residuals.iter().fold(0.0f64, |a, r| a.max(r.abs()));
+    Err(IdentifyError::NonFinite {
+        quantity: "chi-square",
+        reason: format!(
+            "at the estimate the weighted residuals (model − data)/sigma reach {largest:e}, so their sum of squares \
+             overflows; check the data's values and sigmas"
+        ),
     })
+}
+
+/// Every number of a report is finite, or the fit is refused naming it.
+fn check_finite(report: &FitReport) -> Result<(), IdentifyError> {
+    let bad = |quantity: &'static str, detail: String| {
+        Err(IdentifyError::NonFinite { quantity, reason: format!("{detail}; the data do not determine it in double precision") })
+    };
+    for e in &report.estimates {
+        if !e.value.is_finite() {
+            return bad("estimate", format!("`{}` = {}", e.parameter.name(), e.value));
+        }
+        if let Some(u) = e.standard_uncertainty.filter(|u| !u.is_finite()) {
+            return bad("uncertainty", format!("`{}` ± {u}", e.parameter.name()));
+        }
+    }
+    if let Some(v) = report.residual_variance.filter(|v| !v.is_finite()) {
+        return bad("residual variance", format!("s² = {v}"));
+    }
+    if let Some(r) = report.correlation.iter().flatten().flatten().find(|r| !r.is_finite()) {
+        return bad("correlation", format!("a correlation coefficient is {r}"));
+    }
+    if let Some(s) = report.singular_values.iter().find(|s| !s.is_finite()) {
+        return bad("singular value", format!("a singular value of the Jacobian is {s}"));
+    }
+    Ok(())
 }
 
 /// Observed values, sigmas and labels in [`predict`]'s order.

@@ -26,7 +26,7 @@ pub mod synthetic;
 pub mod table2;
 
 pub use data::{Channel, FitSpec, HistoryData, Observable, Observations, ScalarObservation};
-pub use fit::{fit, Estimate, FitOptions, FitProblem, FitReport};
+pub use fit::{fit, Estimate, FitOptions, FitProblem, FitReport, FitStop};
 pub use parameter::{Coordinate, FitParameter, ModelPoint};
 
 use kick_core::KickError;
@@ -57,6 +57,13 @@ pub enum IdentifyError {
     Data { source_name: String, message: String },
     #[error("the fit stopped without converging: {0}")]
     NotConverged(String),
+    #[error(
+        "under-determined fit: {parameters} free parameters but only {observations} observations; \
+         fix some parameters or add observations"
+    )]
+    UnderDetermined { observations: usize, parameters: usize },
+    #[error("non-finite {quantity} in the fit: {reason}")]
+    NonFinite { quantity: &'static str, reason: String },
 }
 
 impl IdentifyError {

@@ -6,7 +6,7 @@
 //! departure (one parameter of interest).
 
 use crate::data::{Channel, Observable, Observations};
-use crate::fit::{fit, misfit, FitOptions, FitProblem};
+use crate::fit::{minimise, misfit, FitOptions, FitProblem};
 use crate::parameter::{FitParameter, ModelPoint};
 use crate::synthetic;
 use crate::IdentifyError;
@@ -51,7 +51,9 @@ pub fn profiles(
                 (misfit(&options.solver, &start, observations)?, Vec::new())
             } else {
                 let problem = FitProblem { start, free: others.clone(), observations: observations.clone() };
-                let report = fit(&problem, options)?;
+                // The exit speed alone leaves the others under-determined:
+                // that flat minimum is what a profile shows.
+                let report = minimise(&problem, options)?;
                 let refit = report
                     .estimates
                     .iter()

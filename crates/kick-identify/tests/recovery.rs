@@ -4,7 +4,7 @@
 use kick_compliant::Accurate;
 use kick_core::{Parameter, Scenario};
 use kick_identify::data::{Channel, Observable};
-use kick_identify::fit::{fit, FitOptions, FitProblem};
+use kick_identify::fit::{fit, minimise, FitOptions, FitProblem};
 use kick_identify::profile::{log_factors, profiles};
 use kick_identify::synthetic::{history, lab_sigma, scalars, time_grid};
 use kick_identify::{IdentifyError, ModelPoint};
@@ -92,10 +92,11 @@ fn uncertainties_match_the_scatter_over_noise_seeds() {
     }
 }
 
-/// Exit speed alone: four parameters, one number. The Jacobian has rank one,
-/// so no uncertainty can be reported; each profile is flat (another
-/// parameter compensates exactly), while the histories' profiles rise by
-/// more than 25 (five sigma) within a factor 1.4 either side.
+/// Exit speed alone: four parameters, one number. A fit refuses it as
+/// under-determined; minimised anyway, the Jacobian has rank one, so no
+/// uncertainty can be reported; each profile is flat (another parameter
+/// compensates exactly), while the histories' profiles rise by more than 25
+/// (five sigma) within a factor 1.4 either side.
 #[test]
 fn exit_speed_alone_does_not_identify_while_histories_do() {
     let truth = Scenario::baseline();
@@ -103,7 +104,9 @@ fn exit_speed_alone_does_not_identify_while_histories_do() {
     let exit = scalars(&options.solver, &truth, &[(Observable::VBallOut, 0.01)], None).unwrap();
 
     let start = start_from(&truth, &[(Parameter::Stiffness, 1.3), (Parameter::Damping, 0.8)]);
-    let report = fit(&FitProblem { start, free: FOUR.to_vec(), observations: exit.clone() }, &options).unwrap();
+    let problem = FitProblem { start, free: FOUR.to_vec(), observations: exit.clone() };
+    assert_eq!(fit(&problem, &options).unwrap_err(), IdentifyError::UnderDetermined { observations: 1, parameters: 4 });
+    let report = minimise(&problem, &options).unwrap();
     assert!(report.estimates.iter().all(|e| e.standard_uncertainty.is_none()));
     assert!(report.correlation.is_none());
     assert!(report.chi_square < 1e-6, "one equation, four unknowns: matched exactly ({})", report.chi_square);

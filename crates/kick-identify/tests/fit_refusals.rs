@@ -1,0 +1,79 @@
+//! What a fit refuses, and how it says why it stopped.
+
+use kick_compliant::Accurate;
+use kick_core::{Parameter, Scenario, Solver};
+use kick_identify::data::{Observable, ScalarObservation};
+use kick_identify::fit::{fit, FitOptions, FitProblem, FitStop};
+use kick_identify::{IdentifyError, Observations};
+
+fn exit_speed(value: f64, sigma: f64) -> ScalarObservation {
+    ScalarObservation { observable: Observable::VBallOut, value, sigma }
+}
+
+fn problem(free: &[Parameter], observations: Vec<ScalarObservation>) -> FitProblem {
+    FitProblem {
+        start: Scenario::baseline().into(),
+        free: free.iter().map(|&p| p.into()).collect(),
+        observations: Observations::scalars(observations).unwrap(),
+    }
+}
+
+/// Three free parameters from one number: "−2 degrees of freedom" is not a fit.
+#[test]
+fn fewer_observations_than_free_parameters_is_refused() {
+    let p = problem(&[Parameter::Stiffness, Parameter::Damping, Parameter::Exponent], vec![exit_speed(26.0, 0.1)]);
+    let error = fit(&p, &FitOptions::default()).unwrap_err();
+    assert_eq!(error, IdentifyError::UnderDetermined { observations: 1, parameters: 3 });
+    let text = error.to_string();
+    assert!(text.contains("under-determined") && text.contains("3 free parameters") && text.contains("1 observation"), "{text}");
+    // As many observations as parameters is determined: no variance, no
+    // uncertainties, but an answer.
+    let truth = Accurate::default().solve(&Scenario::baseline().with(Parameter::Stiffness, 5e5).unwrap()).unwrap();
+    let exact = problem(&[Parameter::Stiffness], vec![exit_speed(truth.v_ball_out, 0.1)]);
+    let report = fit(&exact, &FitOptions::default()).unwrap();
+    assert_eq!(report.degrees_of_freedom, 0);
+    assert!(report.residual_variance.is_none() && report.estimates[0].standard_uncertainty.is_none());
+    assert!((report.estimates[0].value - 5e5).abs() < 1e-6 * 5e5, "{}", report.estimates[0].value);
+}
+
+/// Weighted residuals beyond ~1e154 overflow χ²: refused, never "converged"
+/// with an infinite χ² and NaN correlations.
+#[test]
+fn an_overflowing_chi_square_is_refused() {
+    for (value, sigma) in [(1e160, 1.0), (26.0, 1e-300)] {
+        let p = problem(&[Parameter::Stiffness], vec![exit_speed(value, sigma)]);
+        match fit(&p, &FitOptions::default()) {
+            Err(IdentifyError::NonFinite { quantity, reason }) => {
+                assert_eq!(quantity, "chi-square");
+                assert!(reason.contains("sigma"), "{reason}");
+            }
+            other => panic!("{value} ± {sigma}: {other:?}"),
+        }
+    }
+    // An extreme sigma alone is fine when the model meets the data exactly.
+    let p = problem(&[Parameter::Stiffness], vec![exit_speed(26.0, 1e-160)]);
+    let report = fit(&p, &FitOptions::default()).unwrap();
+    assert!(report.chi_square.is_finite() && report.converged, "{report:?}");
+}
+
+#[test]
+fn stop_reasons_print_as_words() {
+    let cases = [
+        (FitStop::Converged { ftol: true, xtol: true }, "converged: reduction of chi-square and parameter step both below tolerance"),
+        (FitStop::Converged { ftol: true, xtol: false }, "converged: reduction of chi-square below tolerance"),
+        (FitStop::Converged { ftol: false, xtol: true }, "converged: parameter step below tolerance"),
+        (FitStop::ResidualsZero, "converged: residuals exactly zero"),
+        (FitStop::Orthogonal, "converged: residuals orthogonal to the Jacobian (gradient zero)"),
+        (FitStop::LostPatience, "stopped: evaluation budget exhausted before convergence"),
+        (FitStop::NonFinite { quantity: "residuals norm" }, "stopped: non-finite residuals norm"),
+    ];
+    for (stop, words) in cases {
+        assert_eq!(stop.to_string(), words);
+        assert_eq!(stop.converged(), words.starts_with("converged"));
+    }
+    let truth = Accurate::default().solve(&Scenario::baseline().with(Parameter::Damping, 150.0).unwrap()).unwrap();
+    let p = problem(&[Parameter::Damping], vec![exit_speed(truth.v_ball_out, 0.01), ScalarObservation { observable: Observable::ContactTime, value: truth.contact_time, sigma: 1e-5 }]);
+    let report = fit(&p, &FitOptions::default()).unwrap();
+    assert_eq!(report.termination, report.stop.to_string());
+    assert!(report.termination.starts_with("converged: "), "{}", report.termination);
+}
