@@ -34,7 +34,7 @@ pub use anthropometry::{Anthropometry, Segment, DE_LEVA_MALE};
 pub use chain::{Body, Chain, Joint, Motion};
 
 use kick_compliant::Accurate;
-use kick_core::{KickError, Outcome, Parameter, Scenario, Solver};
+use kick_core::{KickError, Outcome, Parameter, Scenario, Solver, Status};
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use std::f64::consts::PI;
 use thiserror::Error;
@@ -52,6 +52,17 @@ pub enum LegError {
     Degenerate(String),
     #[error(transparent)]
     Contact(#[from] KickError),
+}
+
+impl LegError {
+    /// What became of the computation (see [`kick_core::Status`]): a
+    /// trapped ball or a numerical failure of the contact, else refused.
+    pub fn status(&self) -> Status {
+        match self {
+            LegError::Contact(e) => e.status(),
+            LegError::InvalidInput { .. } | LegError::Degenerate(_) => Status::Refused,
+        }
+    }
 }
 
 pub(crate) fn check_range(name: &'static str, value: f64, low: f64, high: f64, unit: &str) -> Result<f64, LegError> {

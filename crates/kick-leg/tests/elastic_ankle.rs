@@ -138,3 +138,15 @@ fn a_stiff_ankle_below_the_switch_keeps_the_one_over_stiffness_gap() {
     assert!(g9 > 0.0 && g11 > 0.0, "{g9} {g11}");
     assert!((50.0..200.0).contains(&(g9 / g11)), "{g9} {g11}");
 }
+
+/// A drive that keeps the ball pressed is a trapped ball through the leg
+/// too, not a numerical failure.
+#[test]
+fn a_trapping_drive_is_trapped_through_the_leg() {
+    let (leg, pose, impact, _) = setup();
+    let pressed = Scenario::baseline().with(kick_core::Parameter::DriveForce, 5e4).unwrap();
+    let mass = leg.effective_mass(&pose, &impact, AnkleJoint::Locked).unwrap().effective_mass;
+    let error = exit_outcome(mass, &pressed).unwrap_err();
+    assert!(matches!(error, kick_leg::LegError::Contact(kick_core::KickError::Trapped { .. })), "{error:?}");
+    assert_eq!(error.status(), kick_core::Status::Trapped);
+}
