@@ -8,6 +8,12 @@
 //! - [`Series`]: the paper's law by power series through compression and the
 //!   energy integral back (the fast accurate path).
 //! - [`Auto`]: the cheapest exact path for the scene.
+//!
+//! Every solver records uniform time histories ([`kick_core::RecordingSolver`],
+//! [`history`]) without changing its steps or its outcome; the fixed-step
+//! methods refuse a step too large for the contact ([`stability`]); a ball
+//! proven trapped is [`kick_core::KickError::Trapped`], a limit reached
+//! without a proof [`kick_core::KickError::NoSeparation`].
 
 pub mod accurate;
 pub mod auto;

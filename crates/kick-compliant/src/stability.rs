@@ -191,8 +191,8 @@ mod tests {
     #[test]
     fn the_linear_oscillator_limit_is_two_root_two_over_omega() {
         // No damping: λ = ±iω, h_max = 2√2/ω; critical damping: λ = −ω twice.
-        let (mu, k) = (0.5, 2.0e5);
-        let omega = (k / mu as f64).sqrt();
+        let (mu, k): (f64, f64) = (0.5, 2.0e5);
+        let omega = (k / mu).sqrt();
         assert!((largest_step_for(mu, 0.0, k) * omega - 8f64.sqrt()).abs() < 1e-12);
         // (A double root: rounding in c² − 4μk moves it by ~√ε.)
         let critical = 2.0 * (k * mu).sqrt();
