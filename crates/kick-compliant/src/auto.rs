@@ -6,10 +6,10 @@
 //! | no drive, n = 1 | `closed-form` (damped oscillator, undamped return) |
 //! | the paper's law | `series` (power series to δ_max, energy integral back) |
 //! | another contact law | `reduced` (δ through the whole contact) |
+//! | time history wanted | `accurate` (full state; outcome and history from one run) |
 //!
-//! A time history comes from `accurate` (the full state, every sample a
-//! state of the integration); the outcome stays the path's own, so it is
-//! the same with and without a history. The chosen path is reported in
+//! With a history the outcome is `accurate`'s (method "accurate"), bit for
+//! bit what `accurate` gives without one. The chosen path is reported in
 //! [`kick_core::Outcome::method`].
 
 use crate::closed::ClosedForm;
@@ -59,6 +59,6 @@ impl RecordingSolver for Auto {
         spacing: Spacing,
         sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
     ) -> Result<Streamed, KickError> {
-        crate::history_through(self, &self.accurate, scenario, spacing, sink)
+        self.accurate.solve_streamed(scenario, spacing, sink)
     }
 }

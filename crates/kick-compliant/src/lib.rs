@@ -123,7 +123,7 @@ impl Solver for SolverChoice {
 
 impl RecordingSolver for SolverChoice {
     /// Solvers without a time history of their own (closed forms and the
-    /// split path) take it from `accurate`; their outcome is their own.
+    /// split path) record through `accurate`: outcome and history of one run.
     fn solve_streamed(
         &self,
         scenario: &Scenario,
@@ -137,21 +137,8 @@ impl RecordingSolver for SolverChoice {
             SolverChoice::Auto(s) => s.solve_streamed(scenario, spacing, sink),
             SolverChoice::Accurate(s) => s.solve_streamed(scenario, spacing, sink),
             SolverChoice::ReducedReturn(_) | SolverChoice::ClosedForm(_) | SolverChoice::Series(_) => {
-                history_through(self, &Accurate::default(), scenario, spacing, sink)
+                Accurate::default().solve_streamed(scenario, spacing, sink)
             }
         }
     }
-}
-
-/// `solver`'s outcome with `recorder`'s history.
-pub(crate) fn history_through(
-    solver: &dyn Solver,
-    recorder: &dyn RecordingSolver,
-    scenario: &Scenario,
-    spacing: Spacing,
-    sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
-) -> Result<Streamed, KickError> {
-    let outcome = solver.solve(scenario)?;
-    let streamed = recorder.solve_streamed(scenario, spacing, sink)?;
-    Ok(Streamed { outcome, samples: streamed.samples })
 }

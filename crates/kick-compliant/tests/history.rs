@@ -30,16 +30,23 @@ fn scenarios() -> Vec<(String, Scenario)> {
     all
 }
 
-/// The end of the history: the contact time, for the seed method the step
-/// at which Eq. 48 held, and for the solvers without a history of their own
-/// `accurate`'s contact time (their history is `accurate`'s).
-fn history_end(solver: &SolverChoice, s: &Scenario, outcome: &Outcome) -> f64 {
+/// The end of the history: the contact time, or for the seed method the
+/// step at which Eq. 48 held.
+fn history_end(solver: &SolverChoice, outcome: &Outcome) -> f64 {
     match solver {
         SolverChoice::SeedRk4(seed) => outcome.contact_time + seed.step,
-        SolverChoice::Auto(_) | SolverChoice::ClosedForm(_) | SolverChoice::Series(_) | SolverChoice::ReducedReturn(_) => {
-            Accurate::default().solve(s).unwrap().contact_time
-        }
         _ => outcome.contact_time,
+    }
+}
+
+/// The path that records: solvers without a history of their own record
+/// through `accurate` (outcome and history of one run).
+fn recording_path(solver: &SolverChoice) -> SolverChoice {
+    match solver {
+        SolverChoice::Auto(_) | SolverChoice::ClosedForm(_) | SolverChoice::Series(_) | SolverChoice::ReducedReturn(_) => {
+            SolverChoice::Accurate(Accurate::default())
+        }
+        other => *other,
     }
 }
 
@@ -57,13 +64,14 @@ fn bits(o: &Outcome) -> Vec<u64> {
 }
 
 /// Sampling never changes the steps: the outcome with any history is the
-/// outcome without one, bit for bit (evaluations included). A fine interval
-/// once capped the steps of a phase and ended in a false "no separation".
+/// recording path's outcome without one, bit for bit (evaluations
+/// included). A fine interval once capped the steps of a phase and ended in
+/// a false "no separation".
 #[test]
 fn the_outcome_with_a_history_is_bit_identical() {
     for solver in solvers() {
         for (case, s) in scenarios() {
-            let plain = solver.solve(&s);
+            let plain = recording_path(&solver).solve(&s);
             for spacing in [Spacing::Interval(1e-4), Spacing::Interval(3.3e-7), Spacing::Count(2), Spacing::Count(777)] {
                 let recorded = solver.solve_sampled(&s, spacing, usize::MAX);
                 match (&plain, &recorded) {
@@ -86,7 +94,7 @@ fn a_fine_interval_is_no_false_no_separation() {
     for name in ["accurate", "auto", "reduced", "dopri5"] {
         let solver = SolverChoice::from_name(name, 5e-6).unwrap();
         let (outcome, history) = solver.solve_recorded(&s, 2e-8).unwrap();
-        assert_eq!(outcome, solver.solve(&s).unwrap(), "{name}");
+        assert_eq!(outcome, recording_path(&solver).solve(&s).unwrap(), "{name}");
         let expected = (outcome.contact_time / 2e-8).ceil() as usize + 1;
         assert!(history.samples.len().abs_diff(expected) <= 1, "{name}: {} samples", history.samples.len());
     }
@@ -98,8 +106,8 @@ fn a_fine_interval_is_no_false_no_separation() {
 fn samples_lie_on_the_uniform_grid_then_the_separation_row() {
     for solver in solvers() {
         for (case, s) in scenarios() {
-            let Ok(outcome) = solver.solve(&s) else { continue };
-            let end = history_end(&solver, &s, &outcome);
+            let Ok(outcome) = recording_path(&solver).solve(&s) else { continue };
+            let end = history_end(&solver, &outcome);
             for interval in [end / 10.0, end / 9.5, 1.234e-5] {
                 let (_, history) = solver.solve_recorded(&s, interval).unwrap();
                 let samples = &history.samples;
@@ -213,7 +221,7 @@ fn a_stopped_sink_stops_sampling_only() {
             })
             .unwrap();
         assert_eq!(taken.len(), 10, "{}", solver.name());
-        assert_eq!(streamed.outcome, solver.solve(&s).unwrap());
+        assert_eq!(streamed.outcome, recording_path(&solver).solve(&s).unwrap());
         let (_, full) = solver.solve_recorded(&s, 1e-6).unwrap();
         assert_eq!(streamed.samples, full.samples.len() as u64);
         assert_eq!(&full.samples[..10], &taken[..]);
