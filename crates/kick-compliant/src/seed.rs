@@ -21,8 +21,10 @@
 //! (also when the run ends at its horizon or in a non-finite state).
 //!
 //! Histories: grid samples between step points are one RK4 step from the
-//! step point before them; the separation row is the state where Eq. 48
-//! held (t_end one step after the contact time).
+//! step point before them, phased by the sign of δ̇ there; the separation
+//! row is the state where Eq. 48 held (t_end one step after the contact
+//! time), so the last grid samples may lie just past the true separation
+//! (δ < 0, no force), as the method's own step points do.
 
 use crate::history::{self, Sampler};
 use crate::ode::{self, Branch, ContactOde, Extremes, State};
