@@ -58,7 +58,7 @@ pub enum IdentifyError {
     #[error("the fit stopped without converging: {0}")]
     NotConverged(String),
     #[error(
-        "under-determined fit: {parameters} free parameters but only {observations} observations; \
+        "under-determined fit: more free parameters ({parameters}) than observations ({observations}); \
          fix some parameters or add observations"
     )]
     UnderDetermined { observations: usize, parameters: usize },

@@ -25,7 +25,7 @@ fn fewer_observations_than_free_parameters_is_refused() {
     let error = fit(&p, &FitOptions::default()).unwrap_err();
     assert_eq!(error, IdentifyError::UnderDetermined { observations: 1, parameters: 3 });
     let text = error.to_string();
-    assert!(text.contains("under-determined") && text.contains("3 free parameters") && text.contains("1 observation"), "{text}");
+    assert!(text.contains("under-determined") && text.contains("free parameters (3)") && text.contains("observations (1)"), "{text}");
     // As many observations as parameters is determined: no variance, no
     // uncertainties, but an answer.
     let truth = Accurate::default().solve(&Scenario::baseline().with(Parameter::Stiffness, 5e5).unwrap()).unwrap();
