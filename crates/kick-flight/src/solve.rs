@@ -1,0 +1,323 @@
+//! One flight: equations of motion, the event loop, the outcome and the history.
+
+use crate::coefficients::{DragLaw, LiftModel, SaturatingLift};
+use crate::dop853::{Dense, StepFailure, Stepper, System};
+use crate::{Flight, FlightError, HORIZON_FACTOR, MAX_SAMPLES, MAX_STEPS};
+use kick_core::roots::brent;
+use nalgebra::{SVector, Vector3};
+use serde::Serialize;
+
+/// r, v, ω.
+type State = SVector<f64, 9>;
+const X: usize = 0;
+const Y: usize = 1;
+const Z: usize = 2;
+const VZ: usize = 5;
+
+/// Where the ball crosses the vertical plane x = d.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Crossing {
+    /// d, m.
+    pub distance: f64,
+    /// s after launch.
+    pub time: f64,
+    /// Height of the ball's centre above the ground, m.
+    pub height: f64,
+    /// y of the centre, m.
+    pub lateral_offset: f64,
+    /// m/s.
+    pub velocity: [f64; 3],
+}
+
+/// Summary of one flight, SI units, world frame.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FlightOutcome {
+    /// From launch to landing (centre back at z = R), s.
+    pub flight_time: f64,
+    /// (x, y) of the centre at landing, m.
+    pub landing_point: [f64; 2],
+    /// Greatest height of the centre above the ground, m.
+    pub apex_height: f64,
+    /// When the apex is reached, s.
+    pub apex_time: f64,
+    /// m/s.
+    pub landing_velocity: [f64; 3],
+    /// rad/s.
+    pub landing_spin: [f64; 3],
+    /// At x = d when a distance is given and the ball gets there before landing.
+    pub crossing: Option<Crossing>,
+    /// Accepted integrator steps.
+    pub steps: u64,
+    /// Right-hand-side evaluations.
+    pub evaluations: u64,
+}
+
+/// One point of a flight's history.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FlightSample {
+    pub time: f64,
+    pub position: [f64; 3],
+    pub velocity: [f64; 3],
+    pub spin: [f64; 3],
+}
+
+/// How a history is sampled.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Sampling {
+    /// n ≥ 2 samples at t = T i/(n − 1), i = 0..n−1 (T the flight time: both ends included).
+    Samples(usize),
+    /// t = k Δt for k Δt < T, then the landing at T.
+    Interval(f64),
+}
+
+/// A flight's outcome and its uniformly spaced samples.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FlightHistory {
+    pub outcome: FlightOutcome,
+    pub samples: Vec<FlightSample>,
+}
+
+/// The equations of motion of one flight.
+#[derive(Debug, Clone, Copy)]
+struct Dynamics {
+    gravity: f64,
+    /// ρ A/(2 m), 1/m.
+    aero: f64,
+    drag: DragLaw,
+    lift: LiftModel,
+    radius_squared: f64,
+    /// 3 ρ A k_M/(4 m), 1/m: dω/dt = −decay |v| ω.
+    decay: f64,
+}
+
+impl Dynamics {
+    fn new(flight: &Flight) -> Dynamics {
+        let air = flight.air();
+        let m = flight.ball_mass();
+        let area = flight.area();
+        let reynolds_per_speed = air.density * 2.0 * flight.ball_radius() / air.viscosity;
+        Dynamics {
+            gravity: flight.gravity(),
+            aero: air.density * area / (2.0 * m),
+            drag: DragLaw::new(flight.drag(), reynolds_per_speed),
+            lift: flight.lift(),
+            radius_squared: flight.ball_radius().powi(2),
+            decay: 3.0 * air.density * area * flight.spin_decay() / (4.0 * m),
+        }
+    }
+}
+
+impl System<9> for Dynamics {
+    #[inline]
+    fn derivative(&self, y: &State) -> State {
+        let v = Vector3::new(y[3], y[4], y[5]);
+        let w = Vector3::new(y[6], y[7], y[8]);
+        let v2 = v.norm_squared();
+        let speed = v2.sqrt();
+        // Drag (−½ρA C_D |v| v)/m and gravity.
+        let mut a = v * (-self.aero * self.drag.at_speed(speed) * speed);
+        a.z -= self.gravity;
+        // Magnus lift ½ρA C_L |v|² (ω×v)/|ω×v| / m; S = R|ω×v|/|v|².
+        let c = w.cross(&v);
+        let c2 = c.norm_squared();
+        if c2 > 0.0 {
+            let cl = match self.lift {
+                LiftModel::Constant { value } => value,
+                LiftModel::Saturating => SaturatingLift::of_square(self.radius_squared * c2 / (v2 * v2)),
+            };
+            a += c * (self.aero * cl * v2 / c2.sqrt());
+        }
+        let dw = w * (-self.decay * speed);
+        State::from_column_slice(&[v.x, v.y, v.z, a.x, a.y, a.z, dw.x, dw.y, dw.z])
+    }
+}
+
+/// Root of `f` in [lo, hi] where f(lo) and f(hi) should differ in sign; on
+/// the dense output the end values may differ from the step's by rounding, so
+/// without a sign change the end nearer zero is the root.
+fn locate(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
+    let tol = 4.0 * f64::EPSILON * hi.abs().max(lo.abs());
+    match brent(&f, lo, hi, tol, 200) {
+        Some(root) => root.x,
+        None => {
+            if f(lo).abs() < f(hi).abs() {
+                lo
+            } else {
+                hi
+            }
+        }
+    }
+}
+
+fn vector(y: &State, first: usize) -> [f64; 3] {
+    [y[first], y[first + 1], y[first + 2]]
+}
+
+fn finite(quantity: &'static str, values: &[f64], time: f64) -> Result<(), FlightError> {
+    if values.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(FlightError::NonFinite { quantity, time })
+    }
+}
+
+/// Integrate to the landing; `on_step` (if any) sees every step's dense
+/// output and the end of its part of the flight (the landing in the last step).
+fn run(flight: &Flight, mut on_step: Option<&mut dyn FnMut(&Dense<9>, f64)>) -> Result<FlightOutcome, FlightError> {
+    let dynamics = Dynamics::new(flight);
+    let radius = flight.ball_radius();
+    let v0 = flight.launch_velocity();
+    let w0 = flight.spin();
+    let y0 = State::from_column_slice(&[0.0, 0.0, radius, v0[0], v0[1], v0[2], w0[0], w0[1], w0[2]]);
+    // Units of the absolute tolerance: lengths in |v0|²/g (not below R), speeds in |v0|, spins in |ω0| (not below |v0|/R).
+    let speed = flight.speed();
+    let length = (speed * speed / flight.gravity()).max(radius);
+    let spin = (w0[0] * w0[0] + w0[1] * w0[1] + w0[2] * w0[2]).sqrt().max(speed / radius);
+    let rtol = flight.relative_tolerance();
+    let atol = State::from_column_slice(&[length, length, length, speed, speed, speed, spin, spin, spin]) * rtol;
+    let horizon = flight.horizon();
+    let mut stepper = Stepper::new(&dynamics, 0.0, y0, rtol, atol, horizon);
+
+    let mut apex: Option<(f64, f64)> = None;
+    let mut crossing: Option<Crossing> = None;
+    loop {
+        stepper.step(&dynamics).map_err(|failure| match failure {
+            StepFailure::StepSizeUnderflow { time } => FlightError::Integration { time, reason: "step size underflow" },
+            StepFailure::Rejections { time } => {
+                FlightError::Integration { time, reason: "every step size tried was rejected (non-finite trial states)" }
+            }
+        })?;
+        let (t0, _, start) = stepper.last_step();
+        let (start, end, t1) = (*start, *stepper.state(), stepper.time());
+        let apex_here = start[VZ] > 0.0 && end[VZ] <= 0.0;
+        // At launch z = R exactly: the first step lands only past an apex.
+        let lands_here = end[Z] - radius <= 0.0 && (start[Z] - radius > 0.0 || apex_here);
+        let crosses_here = match (flight.distance(), crossing) {
+            (Some(d), None) => start[X] < d && end[X] >= d,
+            _ => false,
+        };
+        if apex_here || lands_here || crosses_here || on_step.is_some() {
+            let dense = stepper.dense(&dynamics);
+            let mut t_apex = t0;
+            if apex_here {
+                t_apex = locate(|t| dense.component(VZ, t), t0, t1);
+                let z = dense.component(Z, t_apex);
+                if apex.is_none_or(|(_, best)| z > best) {
+                    apex = Some((t_apex, z));
+                }
+            }
+            let t_land = if lands_here {
+                let lo = if start[Z] - radius > 0.0 { t0 } else { t_apex };
+                Some(locate(|t| dense.component(Z, t) - radius, lo, t1))
+            } else {
+                None
+            };
+            if crosses_here {
+                let d = flight.distance().unwrap_or(f64::INFINITY);
+                let t_cross = locate(|t| dense.component(X, t) - d, t0, t1);
+                if t_land.is_none_or(|t| t_cross <= t) {
+                    let s = dense.at(t_cross);
+                    crossing = Some(Crossing {
+                        distance: d,
+                        time: t_cross,
+                        height: s[Z],
+                        lateral_offset: s[Y],
+                        velocity: vector(&s, 3),
+                    });
+                }
+            }
+            if let Some(callback) = on_step.as_deref_mut() {
+                callback(&dense, t_land.unwrap_or(t1));
+            }
+            if let Some(t) = t_land {
+                let s = dense.at(t);
+                let (apex_time, apex_height) = apex.unwrap_or((t0, start[Z]));
+                let outcome = FlightOutcome {
+                    flight_time: t,
+                    landing_point: [s[X], s[Y]],
+                    apex_height,
+                    apex_time,
+                    landing_velocity: vector(&s, 3),
+                    landing_spin: vector(&s, 6),
+                    crossing,
+                    steps: stepper.accepted,
+                    evaluations: stepper.evaluations,
+                };
+                finite("landing state", s.as_slice(), t)?;
+                finite("apex", &[apex_time, apex_height], t)?;
+                if let Some(c) = crossing {
+                    finite("crossing", &[c.time, c.height, c.lateral_offset], c.time)?;
+                    finite("crossing velocity", &c.velocity, c.time)?;
+                }
+                return Ok(outcome);
+            }
+        }
+        stepper.advance();
+        if t1 >= horizon {
+            return Err(FlightError::NoLanding { horizon, factor: HORIZON_FACTOR, height: end[Z] });
+        }
+        if stepper.accepted >= MAX_STEPS {
+            return Err(FlightError::Integration { time: t1, reason: "more steps than kick_flight::MAX_STEPS" });
+        }
+    }
+}
+
+/// Solve one flight to its landing (no allocation).
+pub fn solve(flight: &Flight) -> Result<FlightOutcome, FlightError> {
+    run(flight, None)
+}
+
+/// The flight's samples at uniform times: the same steps as [`solve`], read
+/// from each step's dense output, so outcome and last sample are [`solve`]'s
+/// to the bit.
+pub fn history(flight: &Flight, sampling: Sampling) -> Result<FlightHistory, FlightError> {
+    let outcome = solve(flight)?;
+    let flight_time = outcome.flight_time;
+    let times: Vec<f64> = match sampling {
+        Sampling::Samples(n) => {
+            if n < 2 {
+                return Err(FlightError::InvalidParameter {
+                    name: "samples",
+                    value: n as f64,
+                    requirement: ">= 2 (both ends)",
+                });
+            }
+            if n > MAX_SAMPLES {
+                return Err(FlightError::TooManySamples { name: "samples", requested: n as f64, limit: MAX_SAMPLES });
+            }
+            (0..n).map(|i| if i + 1 == n { flight_time } else { flight_time * i as f64 / (n - 1) as f64 }).collect()
+        }
+        Sampling::Interval(dt) => {
+            if !(dt.is_finite() && dt > 0.0) {
+                return Err(FlightError::InvalidParameter { name: "interval", value: dt, requirement: "finite and > 0, s" });
+            }
+            let count = (flight_time / dt).ceil() + 1.0;
+            if !(count <= MAX_SAMPLES as f64) {
+                return Err(FlightError::TooManySamples { name: "interval", requested: count, limit: MAX_SAMPLES });
+            }
+            let mut times: Vec<f64> = (0..count as usize).map(|k| k as f64 * dt).take_while(|&t| t < flight_time).collect();
+            times.push(flight_time);
+            times
+        }
+    };
+    let v0 = flight.launch_velocity();
+    let start = FlightSample { time: 0.0, position: [0.0, 0.0, flight.ball_radius()], velocity: v0, spin: flight.spin() };
+    let mut samples = Vec::with_capacity(times.len());
+    let mut next = 0;
+    while next < times.len() && times[next] == 0.0 {
+        samples.push(start);
+        next += 1;
+    }
+    let mut record = |dense: &Dense<9>, until: f64| {
+        while next < times.len() && times[next] <= until {
+            let t = times[next];
+            let s = dense.at(t);
+            samples.push(FlightSample { time: t, position: vector(&s, 0), velocity: vector(&s, 3), spin: vector(&s, 6) });
+            next += 1;
+        }
+    };
+    let again = run(flight, Some(&mut record))?;
+    // Same steps; only the dense outputs of the steps without events add evaluations.
+    debug_assert_eq!(FlightOutcome { evaluations: outcome.evaluations, ..again }, outcome);
+    Ok(FlightHistory { outcome, samples })
+}
