@@ -19,10 +19,11 @@ pub const SEA_LEVEL_TEMPERATURE: f64 = 288.15;
 pub const SEA_LEVEL_PRESSURE: f64 = 101_325.0;
 /// L, K/m: the troposphere's temperature lapse rate.
 pub const LAPSE_RATE: f64 = 0.0065;
-/// R_air = R*/M for dry air, J/(kg K) (R* = 8.314462618 J/(mol K), M = 0.0289644 kg/mol).
-pub const GAS_CONSTANT_AIR: f64 = 8.314462618 / 0.0289644;
+/// R_air = R*/M for dry air, J/(kg K), with the standard atmosphere's own
+/// R* = 8.31432 J/(mol K) and M = 0.0289644 kg/mol (so that p0/(R_air T0) is its 1.2250 kg/m³).
+pub const GAS_CONSTANT_AIR: f64 = 8.31432 / 0.0289644;
 /// g0 M/(R* L), the exponent of the troposphere's pressure law (g0 = 9.80665 m/s²).
-pub const PRESSURE_EXPONENT: f64 = 9.80665 * 0.0289644 / (8.314462618 * LAPSE_RATE);
+pub const PRESSURE_EXPONENT: f64 = 9.80665 * 0.0289644 / (8.31432 * LAPSE_RATE);
 /// Altitudes where the troposphere law above holds (−500 m … 11 km).
 pub const ALTITUDE_RANGE: (f64, f64) = (-500.0, 11_000.0);
 /// Default density: ρ of the standard atmosphere at sea level, kg/m³.
@@ -84,6 +85,9 @@ impl Air {
             }
             return Ok(Air { density: rho, viscosity: sutherland_viscosity(SEA_LEVEL_TEMPERATURE) });
         }
+        if temperature.is_none() && pressure.is_none() && altitude.is_none() {
+            return Ok(Air::standard());
+        }
         if let (Some(_), Some(_), Some(_)) = (temperature, pressure, altitude) {
             // Altitude only supplies what is not given: with both, it would be ignored.
             return Err(FlightError::Conflict { first: "altitude", second: "temperature and pressure" });
@@ -119,7 +123,8 @@ mod tests {
     #[test]
     fn standard_sea_level() {
         // ISA sea level: 1.2250 kg/m³, 1.7894e-5 Pa s (ISO 2533 tables).
-        let air = Air::new(None, None, None, None).unwrap();
+        assert_eq!(Air::new(None, None, None, None).unwrap(), Air::standard());
+        let air = Air::new(None, None, None, Some(0.0)).unwrap();
         assert!((air.density - 1.2250).abs() < 5e-5, "{}", air.density);
         assert!((air.viscosity - 1.7894e-5).abs() < 5e-10, "{}", air.viscosity);
     }

@@ -42,7 +42,7 @@ pub use spec::{Flight, FlightParameter, FlightSpec, ParameterInfo};
 use thiserror::Error;
 
 /// Default relative tolerance of the integrator (see the crate docs).
-pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-11;
+pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-12;
 /// A flight still in the air after this many vacuum flight times of a
 /// vertical launch at the same speed (2|v0|/g) is refused as not landing.
 pub const HORIZON_FACTOR: f64 = 100.0;
@@ -64,8 +64,8 @@ pub enum FlightError {
     UnknownParameter { name: String, expected: String },
     #[error("`{first}` and `{second}` cannot both be given")]
     Conflict { first: &'static str, second: &'static str },
-    #[error("the ball has not landed after {horizon} s (the horizon: {factor} x 2|v0|/g); last height {height} m")]
-    NoLanding { horizon: f64, factor: f64, height: f64 },
+    #[error("the ball has not landed within the horizon of {horizon} s (last height of its centre {height} m)")]
+    NoLanding { horizon: f64, height: f64 },
     #[error("integration failed at t = {time} s: {reason} (a numerical failure, not physics)")]
     Integration { time: f64, reason: &'static str },
     #[error("non-finite {quantity} at t = {time} s")]

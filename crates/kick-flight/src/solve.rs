@@ -2,7 +2,7 @@
 
 use crate::coefficients::{DragLaw, LiftModel, SaturatingLift};
 use crate::dop853::{Dense, StepFailure, Stepper, System};
-use crate::{Flight, FlightError, HORIZON_FACTOR, MAX_SAMPLES, MAX_STEPS};
+use crate::{Flight, FlightError, MAX_SAMPLES, MAX_STEPS};
 use kick_core::roots::brent;
 use nalgebra::{SVector, Vector3};
 use serde::Serialize;
@@ -169,10 +169,13 @@ fn run(flight: &Flight, mut on_step: Option<&mut dyn FnMut(&Dense<9>, f64)>) -> 
     let v0 = flight.launch_velocity();
     let w0 = flight.spin();
     let y0 = State::from_column_slice(&[0.0, 0.0, radius, v0[0], v0[1], v0[2], w0[0], w0[1], w0[2]]);
-    // Units of the absolute tolerance: lengths in |v0|²/g (not below R), speeds in |v0|, spins in |ω0| (not below |v0|/R).
+    // Units of the absolute tolerance: lengths in R (z never drops below it
+    // in flight, so heights are held relatively), speeds in |v0|, spins in
+    // |ω0| (|v0|/R without spin, which then stays zero).
     let speed = flight.speed();
-    let length = (speed * speed / flight.gravity()).max(radius);
-    let spin = (w0[0] * w0[0] + w0[1] * w0[1] + w0[2] * w0[2]).sqrt().max(speed / radius);
+    let length = radius;
+    let spin = (w0[0] * w0[0] + w0[1] * w0[1] + w0[2] * w0[2]).sqrt();
+    let spin = if spin > 0.0 { spin } else { speed / radius };
     let rtol = flight.relative_tolerance();
     let atol = State::from_column_slice(&[length, length, length, speed, speed, speed, spin, spin, spin]) * rtol;
     let horizon = flight.horizon();
@@ -230,6 +233,9 @@ fn run(flight: &Flight, mut on_step: Option<&mut dyn FnMut(&Dense<9>, f64)>) -> 
                 callback(&dense, t_land.unwrap_or(t1));
             }
             if let Some(t) = t_land {
+                if t > horizon {
+                    return Err(FlightError::NoLanding { horizon, height: dense.component(Z, horizon) });
+                }
                 let s = dense.at(t);
                 let (apex_time, apex_height) = apex.unwrap_or((t0, start[Z]));
                 let outcome = FlightOutcome {
@@ -254,7 +260,7 @@ fn run(flight: &Flight, mut on_step: Option<&mut dyn FnMut(&Dense<9>, f64)>) -> 
         }
         stepper.advance();
         if t1 >= horizon {
-            return Err(FlightError::NoLanding { horizon, factor: HORIZON_FACTOR, height: end[Z] });
+            return Err(FlightError::NoLanding { horizon, height: end[Z] });
         }
         if stepper.accepted >= MAX_STEPS {
             return Err(FlightError::Integration { time: t1, reason: "more steps than kick_flight::MAX_STEPS" });
@@ -320,4 +326,85 @@ pub fn history(flight: &Flight, sampling: Sampling) -> Result<FlightHistory, Fli
     // Same steps; only the dense outputs of the steps without events add evaluations.
     debug_assert_eq!(FlightOutcome { evaluations: outcome.evaluations, ..again }, outcome);
     Ok(FlightHistory { outcome, samples })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{models, FlightSpec};
+
+    #[test]
+    fn history_samples_are_uniform_and_end_at_the_landing() {
+        let flight = models::free_kick();
+        let outcome = solve(&flight).unwrap();
+        let h = history(&flight, Sampling::Samples(50)).unwrap();
+        assert_eq!(h.outcome, outcome);
+        assert_eq!(h.samples.len(), 50);
+        let first = h.samples[0];
+        assert_eq!(first.position, [0.0, 0.0, flight.ball_radius()]);
+        assert_eq!(first.velocity, flight.launch_velocity());
+        let last = h.samples[49];
+        assert_eq!(last.time, outcome.flight_time);
+        assert_eq!([last.position[0], last.position[1]], outcome.landing_point);
+        assert_eq!(last.velocity, outcome.landing_velocity);
+        let dt = outcome.flight_time / 49.0;
+        for (i, s) in h.samples.iter().enumerate() {
+            assert!((s.time - i as f64 * dt).abs() <= 1e-15 * outcome.flight_time);
+        }
+        // In flight the centre stays above the ground.
+        assert!(h.samples[1..49].iter().all(|s| s.position[2] > flight.ball_radius()));
+    }
+
+    #[test]
+    fn interval_history_and_vacuum_positions() {
+        let spec = FlightSpec {
+            drag_coefficient: Some(0.0),
+            lift_coefficient: Some(0.0),
+            ..FlightSpec::from_exit_speed(20.0, 40.0)
+        };
+        let flight = spec.build().unwrap();
+        let h = history(&flight, Sampling::Interval(0.1)).unwrap();
+        let t_end = h.outcome.flight_time;
+        assert_eq!(h.samples.len(), (t_end / 0.1).ceil() as usize + 1);
+        let [u, _, w] = flight.launch_velocity();
+        for (k, s) in h.samples.iter().enumerate() {
+            let t = if k + 1 == h.samples.len() { t_end } else { k as f64 * 0.1 };
+            assert_eq!(s.time, t);
+            let (x, z) = (u * t, flight.ball_radius() + w * t - 0.5 * flight.gravity() * t * t);
+            assert!((s.position[0] - x).abs() <= 1e-9 * 40.0, "x at {t}");
+            assert!((s.position[2] - z).abs() <= 1e-9 * 40.0, "z at {t}");
+        }
+    }
+
+    #[test]
+    fn bad_sampling_is_refused_by_name() {
+        let flight = models::plain_kick();
+        assert!(matches!(
+            history(&flight, Sampling::Samples(1)),
+            Err(FlightError::InvalidParameter { name: "samples", .. })
+        ));
+        assert!(matches!(
+            history(&flight, Sampling::Interval(0.0)),
+            Err(FlightError::InvalidParameter { name: "interval", .. })
+        ));
+        assert!(matches!(
+            history(&flight, Sampling::Interval(f64::NAN)),
+            Err(FlightError::InvalidParameter { name: "interval", .. })
+        ));
+        assert!(matches!(
+            history(&flight, Sampling::Interval(1e-9)),
+            Err(FlightError::TooManySamples { name: "interval", .. })
+        ));
+        assert!(matches!(
+            history(&flight, Sampling::Samples(MAX_SAMPLES + 1)),
+            Err(FlightError::TooManySamples { name: "samples", .. })
+        ));
+    }
+
+    #[test]
+    fn same_flight_same_bits() {
+        let a = solve(&models::free_kick()).unwrap();
+        let b = solve(&models::free_kick()).unwrap();
+        assert_eq!(serde_json::to_string(&a).unwrap(), serde_json::to_string(&b).unwrap());
+    }
 }

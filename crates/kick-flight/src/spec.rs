@@ -323,6 +323,7 @@ impl FlightSpec {
             spin,
             distance,
             relative_tolerance: DEFAULT_RELATIVE_TOLERANCE,
+            horizon: None,
         })
     }
 }
@@ -341,6 +342,8 @@ pub struct Flight {
     spin: [f64; 3],
     distance: Option<f64>,
     relative_tolerance: f64,
+    /// Set by `with_horizon`; otherwise HORIZON_FACTOR × 2|v0|/g.
+    horizon: Option<f64>,
 }
 
 impl Flight {
@@ -377,6 +380,12 @@ impl Flight {
             relative_tolerance > 0.0 && relative_tolerance <= 1e-3,
             "in (0, 1e-3]",
         )?;
+        Ok(self)
+    }
+
+    /// The same flight with another horizon (s, > 0): still in the air then, it is refused.
+    pub fn with_horizon(mut self, horizon: f64) -> Result<Flight, FlightError> {
+        self.horizon = Some(check("horizon", horizon, horizon > 0.0, "finite and > 0, s")?);
         Ok(self)
     }
 
@@ -435,9 +444,10 @@ impl Flight {
     pub fn reynolds(&self, v: f64) -> f64 {
         self.air.density * v * 2.0 * self.ball_radius / self.air.viscosity
     }
-    /// Time after which a flight that has not landed is refused, s.
+    /// Time after which a flight that has not landed is refused, s:
+    /// [`crate::HORIZON_FACTOR`] × 2|v0|/g unless set by [`Flight::with_horizon`].
     pub fn horizon(&self) -> f64 {
-        crate::HORIZON_FACTOR * 2.0 * self.speed() / self.gravity
+        self.horizon.unwrap_or(crate::HORIZON_FACTOR * 2.0 * self.speed() / self.gravity)
     }
 }
 
