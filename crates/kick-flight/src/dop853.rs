@@ -12,6 +12,9 @@
 //! summary path must not allocate. The dense output costs three more
 //! right-hand sides per step, so it is formed only for the steps that ask.
 
+// The published coefficients keep all their digits.
+#![allow(clippy::excessive_precision)]
+
 use nalgebra::SVector;
 
 /// An autonomous system y' = f(y).

@@ -161,9 +161,12 @@ fn finite(quantity: &'static str, values: &[f64], time: f64) -> Result<(), Fligh
     }
 }
 
-/// Integrate to the landing; `on_step` (if any) sees every step's dense
-/// output and the end of its part of the flight (the landing in the last step).
-fn run(flight: &Flight, mut on_step: Option<&mut dyn FnMut(&Dense<9>, f64)>) -> Result<FlightOutcome, FlightError> {
+/// Sees every step's dense output and the end of its part of the flight
+/// (the landing in the last step).
+type StepObserver<'a> = Option<&'a mut dyn FnMut(&Dense<9>, f64)>;
+
+/// Integrate to the landing.
+fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, FlightError> {
     let dynamics = Dynamics::new(flight);
     let radius = flight.ball_radius();
     let v0 = flight.launch_velocity();
@@ -298,7 +301,7 @@ pub fn history(flight: &Flight, sampling: Sampling) -> Result<FlightHistory, Fli
                 return Err(FlightError::InvalidParameter { name: "interval", value: dt, requirement: "finite and > 0, s" });
             }
             let count = (flight_time / dt).ceil() + 1.0;
-            if !(count <= MAX_SAMPLES as f64) {
+            if count > MAX_SAMPLES as f64 {
                 return Err(FlightError::TooManySamples { name: "interval", requested: count, limit: MAX_SAMPLES });
             }
             let mut times: Vec<f64> = (0..count as usize).map(|k| k as f64 * dt).take_while(|&t| t < flight_time).collect();
