@@ -181,3 +181,34 @@ fn a_flight_past_its_horizon_is_refused() {
     // The default horizon is far beyond any kick's flight.
     assert!(models::free_kick().horizon() > 100.0);
 }
+
+/// Lift alone (no drag, gravity 1e-12 m/s²) with backspin across the
+/// velocity: |v| and S stay constant, so the ball runs round a circle of
+/// radius r = 1/(k C_L(S)), k = ρA/(2m). Launched at θ it comes back to
+/// z = R behind the start at x = −2 r sin θ after an arc of 2π − 2θ, with its
+/// apex at R + r(1 + cos θ). Holds the Magnus force's size and direction,
+/// for a constant C_L and for the saturating C_L(S).
+#[test]
+fn magnus_loop_without_gravity_or_drag() {
+    let (speed, angle, w) = (20.0, 30.0_f64, 60.0);
+    let k = 1.225 * std::f64::consts::PI * R * R / (2.0 * 0.43);
+    let s = R * w / speed;
+    for (lift, cl) in [(Some(0.3), 0.3), (None, kick_flight::coefficients::SaturatingLift::at(s))] {
+        let spec = FlightSpec {
+            gravity: Some(1e-12),
+            drag_coefficient: Some(0.0),
+            lift_coefficient: lift,
+            spin: Some([0.0, -w, 0.0]),
+            ..FlightSpec::from_exit_speed(speed, angle)
+        };
+        let o = solve(&spec.build().unwrap()).unwrap();
+        let r = 1.0 / (k * cl);
+        let th = angle.to_radians();
+        let t = r * (2.0 * std::f64::consts::PI - 2.0 * th) / speed;
+        assert!(rel(o.flight_time, t) <= ACCURACY, "{lift:?}: time {:.2e}", rel(o.flight_time, t));
+        assert!(rel(o.landing_point[0], -2.0 * r * th.sin()) <= ACCURACY, "landing {:.2e}", rel(o.landing_point[0], -2.0 * r * th.sin()));
+        assert!(rel(o.apex_height, R + r * (1.0 + th.cos())) <= ACCURACY, "apex");
+        assert!(rel(o.landing_velocity[0], speed * th.cos()) <= ACCURACY);
+        assert!(rel(o.landing_velocity[2], -speed * th.sin()) <= ACCURACY);
+    }
+}
