@@ -404,6 +404,23 @@ mod tests {
         ));
     }
 
+    /// Lift from the spin across the flight direction only: with ω = (a, b, 0)
+    /// and v = (v, 0, 0), S = R|b|/v whatever a is, and the force points along ω × v.
+    #[test]
+    fn lift_uses_the_spin_across_the_velocity() {
+        let flight = models::free_kick();
+        let dynamics = Dynamics::new(&flight);
+        let (v, a, b) = (20.0, 150.0, -40.0);
+        let y = State::from_column_slice(&[0.0, 0.0, 1.0, v, 0.0, 0.0, a, b, 0.0]);
+        let dy = dynamics.derivative(&y);
+        let k = dynamics.aero;
+        let s = flight.ball_radius() * b.abs() / v;
+        // ω × v = (0, 0, −b v): straight up for backspin b < 0.
+        assert_eq!([dy[4], dy[3] + k * dynamics.drag.at_speed(v) * v * v], [0.0, 0.0]);
+        let lift = dy[5] + dynamics.gravity;
+        assert!((lift / (k * SaturatingLift::at(s) * v * v) - 1.0).abs() < 1e-14, "{lift}");
+    }
+
     #[test]
     fn same_flight_same_bits() {
         let a = solve(&models::free_kick()).unwrap();
