@@ -102,8 +102,8 @@ pub struct Kick3dSpec {
     pub ground: Option<bool>,
 }
 
-/// Standard gravity, m/s².
-pub const GRAVITY: f64 = 9.81;
+/// Standard gravity, m/s² (one value for every model level: kick-core's).
+pub use kick_core::GRAVITY;
 
 /// A validated 3D kick.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -144,7 +144,7 @@ fn invalid(name: &'static str, value: f64, requirement: &'static str) -> Kick3dE
 }
 
 impl Kick3d {
-    pub const DEFAULT_BALL_RADIUS: f64 = 0.11;
+    pub const DEFAULT_BALL_RADIUS: f64 = kick_core::DEFAULT_BALL_RADIUS;
     pub const DEFAULT_FRICTION: f64 = 0.5;
     /// About 0.8 of the normal law's tangent stiffness n k δ^(n−1) at the
     /// baseline's δ_max (1.2e5 N/m), a Mindlin-like ratio. Assumed.

@@ -25,6 +25,14 @@ pub use outcome::{
 };
 pub use scenario::{Parameter, Scenario, ScenarioSpec};
 
+/// Standard gravity of every model level that has gravity (kick-3d's scene,
+/// kick-flight), m/s².
+pub const GRAVITY: f64 = 9.81;
+/// m_b of Table 1's baseline, kg (inside Law 2's 410–450 g).
+pub const DEFAULT_BALL_MASS: f64 = 0.43;
+/// R of the default ball, m (circumference 0.691 m, inside Law 2's 0.68–0.70 m).
+pub const DEFAULT_BALL_RADIUS: f64 = 0.11;
+
 /// A solver turns a scenario into an outcome (argmin-style: one required method).
 pub trait Solver {
     /// Short stable name, as used by `--solver` and written to result files.

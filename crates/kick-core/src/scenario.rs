@@ -163,7 +163,7 @@ impl Scenario {
     /// Table 1's baseline.
     pub const BASELINE: Scenario = Scenario {
         foot_mass: 3.0,
-        ball_mass: 0.43,
+        ball_mass: crate::DEFAULT_BALL_MASS,
         foot_speed: 22.0,
         ball_speed: 0.0,
         stiffness: 4.2e5,

@@ -1,0 +1,88 @@
+//! The ball's flight after the kick: gravity, drag with the drag crisis,
+//! Magnus lift and (optionally) spin decay, from the launch state a kick
+//! gives to the landing on flat ground.
+//!
+//! Frame as in kick-3d: x horizontal along the kick, y lateral, z up. The
+//! ball's centre starts at (0, 0, R) on the ground and lands when it comes
+//! back down to z = R. State: position r, velocity v, spin ω.
+//!
+//! - gravity (0, 0, −g);
+//! - drag −½ ρ A C_D(Re) |v| v, Re = ρ |v| 2R/μ, A = π R²;
+//! - Magnus lift ½ ρ A C_L(S) |v|² (ω × v)/|ω × v|, zero when ω × v = 0,
+//!   with S = R |ω × v|/|v|², the spin parameter R|ω|/|v| of the spin
+//!   component across the flight direction (the only one that lifts);
+//! - spin decay by an aerodynamic torque −½ ρ A R² k_M |v| ω (moment
+//!   coefficient C_M = k_M S, the form of Smits & Smith's (1994) golf-ball
+//!   spin-decay law), on a thin-shell ball I = ⅔ m R²: dω/dt = −(3 ρ A k_M/(4 m)) |v| ω.
+//!   Off (k_M = 0) by default: the default coefficients come from trajectory
+//!   and wind-tunnel analyses that hold the spin constant.
+//!
+//! Coefficient models: [`coefficients`]; every number's source and how far
+//! it was checked: `SOURCES.md` beside `Cargo.toml`.
+//!
+//! Numerics: Dormand–Prince 8(5,3) ([`dop853`]) at a relative tolerance of
+//! [`DEFAULT_RELATIVE_TOLERANCE`] (absolute tolerances: that times R, |v0|
+//! and |ω0|); landing, apex and the crossing of a plane x = d are located by
+//! Brent's method on the step's 7th-order dense output, which is formed only
+//! for the steps that hold an event, so `solve` allocates nothing.
+//!
+//! Accuracy (held by `tests/closed_forms.rs`): flight time, apex height,
+//! landing point and crossing are within 1e-9 relative of closed forms
+//! (vacuum parabola; vertical flight with quadratic drag; spin decay along a
+//! vacuum parabola) and of a solve at a 100× tighter tolerance, over kicks of
+//! 3–40 m/s at 3–85° with spins up to 80 rad/s per axis (64 random kicks in
+//! the test; `examples/accuracy.rs` found 1.5e-10 at worst over 20000). The
+//! landing point is measured against the flight's size (range, or apex
+//! height for a steep kick landing near its start), the crossing point
+//! against its distance from the launch point: a ball dropping steeply
+//! through the plane has an ill-conditioned crossing height.
+//!
+//! A flight that has not landed after [`HORIZON_FACTOR`] × 2|v0|/g (or the
+//! horizon set by [`Flight::with_horizon`]) is refused.
+
+pub mod air;
+pub mod coefficients;
+pub mod dop853;
+pub mod models;
+pub mod solve;
+pub mod spec;
+
+pub use air::Air;
+pub use coefficients::{DragModel, LiftModel};
+pub use solve::{history, solve, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
+pub use spec::{Flight, FlightParameter, FlightSpec, ParameterInfo};
+
+use thiserror::Error;
+
+/// Default relative tolerance of the integrator (see the crate docs).
+pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-12;
+/// A flight still in the air after this many vacuum flight times of a
+/// vertical launch at the same speed (2|v0|/g) is refused as not landing.
+pub const HORIZON_FACTOR: f64 = 100.0;
+/// Bound on accepted steps of one flight.
+pub const MAX_STEPS: u64 = 1_000_000;
+/// Bound on the samples of one history.
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// Every way a flight computation can refuse or fail; messages name the parameter.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum FlightError {
+    #[error("invalid parameter `{name}` = {value}: must be {requirement}")]
+    InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
+    #[error("parameter `{name}` is required")]
+    Missing { name: &'static str },
+    #[error("parameter `{name}` takes {expected} numbers, got {found}")]
+    WrongLength { name: &'static str, expected: usize, found: usize },
+    #[error("unknown flight parameter `{name}`: expected one of {expected}")]
+    UnknownParameter { name: String, expected: String },
+    #[error("`{first}` and `{second}` cannot both be given")]
+    Conflict { first: &'static str, second: &'static str },
+    #[error("the ball has not landed within the horizon of {horizon} s (last height of its centre {height} m)")]
+    NoLanding { horizon: f64, height: f64 },
+    #[error("integration failed at t = {time} s: {reason} (a numerical failure, not physics)")]
+    Integration { time: f64, reason: &'static str },
+    #[error("non-finite {quantity} at t = {time} s")]
+    NonFinite { quantity: &'static str, time: f64 },
+    #[error("`{name}` asks for {requested} samples, more than the limit {limit}")]
+    TooManySamples { name: &'static str, requested: f64, limit: usize },
+}

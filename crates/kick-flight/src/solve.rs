@@ -1,0 +1,430 @@
+//! One flight: equations of motion, the event loop, the outcome and the history.
+
+use crate::coefficients::{DragLaw, LiftModel, SaturatingLift};
+use crate::dop853::{Dense, StepFailure, Stepper, System};
+use crate::{Flight, FlightError, MAX_SAMPLES, MAX_STEPS};
+use kick_core::roots::brent;
+use nalgebra::{SVector, Vector3};
+use serde::Serialize;
+
+/// r, v, ω.
+type State = SVector<f64, 9>;
+const X: usize = 0;
+const Y: usize = 1;
+const Z: usize = 2;
+const VZ: usize = 5;
+
+/// Where the ball crosses the vertical plane x = d.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Crossing {
+    /// d, m.
+    pub distance: f64,
+    /// s after launch.
+    pub time: f64,
+    /// Height of the ball's centre above the ground, m.
+    pub height: f64,
+    /// y of the centre, m.
+    pub lateral_offset: f64,
+    /// m/s.
+    pub velocity: [f64; 3],
+}
+
+/// Summary of one flight, SI units, world frame.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FlightOutcome {
+    /// From launch to landing (centre back at z = R), s.
+    pub flight_time: f64,
+    /// (x, y) of the centre at landing, m.
+    pub landing_point: [f64; 2],
+    /// Greatest height of the centre above the ground, m.
+    pub apex_height: f64,
+    /// When the apex is reached, s.
+    pub apex_time: f64,
+    /// m/s.
+    pub landing_velocity: [f64; 3],
+    /// rad/s.
+    pub landing_spin: [f64; 3],
+    /// At x = d when a distance is given and the ball gets there before landing.
+    pub crossing: Option<Crossing>,
+    /// Accepted integrator steps.
+    pub steps: u64,
+    /// Right-hand-side evaluations.
+    pub evaluations: u64,
+}
+
+/// One point of a flight's history.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FlightSample {
+    pub time: f64,
+    pub position: [f64; 3],
+    pub velocity: [f64; 3],
+    pub spin: [f64; 3],
+}
+
+/// How a history is sampled.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Sampling {
+    /// n ≥ 2 samples at t = T i/(n − 1), i = 0..n−1 (T the flight time: both ends included).
+    Samples(usize),
+    /// t = k Δt for k Δt < T, then the landing at T.
+    Interval(f64),
+}
+
+/// A flight's outcome and its uniformly spaced samples.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FlightHistory {
+    pub outcome: FlightOutcome,
+    pub samples: Vec<FlightSample>,
+}
+
+/// The equations of motion of one flight.
+#[derive(Debug, Clone, Copy)]
+struct Dynamics {
+    gravity: f64,
+    /// ρ A/(2 m), 1/m.
+    aero: f64,
+    drag: DragLaw,
+    lift: LiftModel,
+    radius_squared: f64,
+    /// 3 ρ A k_M/(4 m), 1/m: dω/dt = −decay |v| ω.
+    decay: f64,
+}
+
+impl Dynamics {
+    fn new(flight: &Flight) -> Dynamics {
+        let air = flight.air();
+        let m = flight.ball_mass();
+        let area = flight.area();
+        let reynolds_per_speed = air.density * 2.0 * flight.ball_radius() / air.viscosity;
+        Dynamics {
+            gravity: flight.gravity(),
+            aero: air.density * area / (2.0 * m),
+            drag: DragLaw::new(flight.drag(), reynolds_per_speed),
+            lift: flight.lift(),
+            radius_squared: flight.ball_radius().powi(2),
+            decay: 3.0 * air.density * area * flight.spin_decay() / (4.0 * m),
+        }
+    }
+}
+
+impl System<9> for Dynamics {
+    #[inline]
+    fn derivative(&self, y: &State) -> State {
+        let v = Vector3::new(y[3], y[4], y[5]);
+        let w = Vector3::new(y[6], y[7], y[8]);
+        let v2 = v.norm_squared();
+        let speed = v2.sqrt();
+        // Drag (−½ρA C_D |v| v)/m and gravity.
+        let mut a = v * (-self.aero * self.drag.at_speed(speed) * speed);
+        a.z -= self.gravity;
+        // Magnus lift ½ρA C_L |v|² (ω×v)/|ω×v| / m; S = R|ω×v|/|v|².
+        let c = w.cross(&v);
+        let c2 = c.norm_squared();
+        if c2 > 0.0 {
+            let cl = match self.lift {
+                LiftModel::Constant { value } => value,
+                LiftModel::Saturating => SaturatingLift::of_square(self.radius_squared * c2 / (v2 * v2)),
+            };
+            a += c * (self.aero * cl * v2 / c2.sqrt());
+        }
+        let dw = w * (-self.decay * speed);
+        State::from_column_slice(&[v.x, v.y, v.z, a.x, a.y, a.z, dw.x, dw.y, dw.z])
+    }
+}
+
+/// Root of `f` in [lo, hi] where f(lo) and f(hi) should differ in sign; on
+/// the dense output the end values may differ from the step's by rounding, so
+/// without a sign change the end nearer zero is the root.
+fn locate(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
+    let tol = 4.0 * f64::EPSILON * hi.abs().max(lo.abs());
+    match brent(&f, lo, hi, tol, 200) {
+        Some(root) => root.x,
+        None => {
+            if f(lo).abs() < f(hi).abs() {
+                lo
+            } else {
+                hi
+            }
+        }
+    }
+}
+
+fn vector(y: &State, first: usize) -> [f64; 3] {
+    [y[first], y[first + 1], y[first + 2]]
+}
+
+fn finite(quantity: &'static str, values: &[f64], time: f64) -> Result<(), FlightError> {
+    if values.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(FlightError::NonFinite { quantity, time })
+    }
+}
+
+/// Sees every step's dense output and the end of its part of the flight
+/// (the landing in the last step).
+type StepObserver<'a> = Option<&'a mut dyn FnMut(&Dense<9>, f64)>;
+
+/// Integrate to the landing.
+fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, FlightError> {
+    let dynamics = Dynamics::new(flight);
+    let radius = flight.ball_radius();
+    let v0 = flight.launch_velocity();
+    let w0 = flight.spin();
+    let y0 = State::from_column_slice(&[0.0, 0.0, radius, v0[0], v0[1], v0[2], w0[0], w0[1], w0[2]]);
+    // Units of the absolute tolerance: lengths in R (z never drops below it
+    // in flight, so heights are held relatively), speeds in |v0|, spins in
+    // |ω0| (|v0|/R without spin, which then stays zero).
+    let speed = flight.speed();
+    let length = radius;
+    let spin = (w0[0] * w0[0] + w0[1] * w0[1] + w0[2] * w0[2]).sqrt();
+    let spin = if spin > 0.0 { spin } else { speed / radius };
+    let rtol = flight.relative_tolerance();
+    let atol = State::from_column_slice(&[length, length, length, speed, speed, speed, spin, spin, spin]) * rtol;
+    let horizon = flight.horizon();
+    let mut stepper = Stepper::new(&dynamics, 0.0, y0, rtol, atol, horizon);
+
+    let mut apex: Option<(f64, f64)> = None;
+    let mut crossing: Option<Crossing> = None;
+    loop {
+        stepper.step(&dynamics).map_err(|failure| match failure {
+            StepFailure::StepSizeUnderflow { time } => FlightError::Integration { time, reason: "step size underflow" },
+            StepFailure::Rejections { time } => {
+                FlightError::Integration { time, reason: "every step size tried was rejected (non-finite trial states)" }
+            }
+        })?;
+        let (t0, _, start) = stepper.last_step();
+        let (start, end, t1) = (*start, *stepper.state(), stepper.time());
+        let apex_here = start[VZ] > 0.0 && end[VZ] <= 0.0;
+        // At launch z = R exactly: the first step lands only past an apex.
+        let lands_here = end[Z] - radius <= 0.0 && (start[Z] - radius > 0.0 || apex_here);
+        let crosses_here = match (flight.distance(), crossing) {
+            (Some(d), None) => start[X] < d && end[X] >= d,
+            _ => false,
+        };
+        if apex_here || lands_here || crosses_here || on_step.is_some() {
+            let dense = stepper.dense(&dynamics);
+            let mut t_apex = t0;
+            if apex_here {
+                t_apex = locate(|t| dense.component(VZ, t), t0, t1);
+                let z = dense.component(Z, t_apex);
+                if apex.is_none_or(|(_, best)| z > best) {
+                    apex = Some((t_apex, z));
+                }
+            }
+            let t_land = if lands_here {
+                let lo = if start[Z] - radius > 0.0 { t0 } else { t_apex };
+                Some(locate(|t| dense.component(Z, t) - radius, lo, t1))
+            } else {
+                None
+            };
+            if crosses_here {
+                let d = flight.distance().unwrap_or(f64::INFINITY);
+                let t_cross = locate(|t| dense.component(X, t) - d, t0, t1);
+                if t_land.is_none_or(|t| t_cross <= t) {
+                    let s = dense.at(t_cross);
+                    crossing = Some(Crossing {
+                        distance: d,
+                        time: t_cross,
+                        height: s[Z],
+                        lateral_offset: s[Y],
+                        velocity: vector(&s, 3),
+                    });
+                }
+            }
+            if let Some(callback) = on_step.as_deref_mut() {
+                callback(&dense, t_land.unwrap_or(t1));
+            }
+            if let Some(t) = t_land {
+                if t > horizon {
+                    return Err(FlightError::NoLanding { horizon, height: dense.component(Z, horizon) });
+                }
+                let s = dense.at(t);
+                let (apex_time, apex_height) = apex.unwrap_or((t0, start[Z]));
+                let outcome = FlightOutcome {
+                    flight_time: t,
+                    landing_point: [s[X], s[Y]],
+                    apex_height,
+                    apex_time,
+                    landing_velocity: vector(&s, 3),
+                    landing_spin: vector(&s, 6),
+                    crossing,
+                    steps: stepper.accepted,
+                    evaluations: stepper.evaluations,
+                };
+                finite("landing state", s.as_slice(), t)?;
+                finite("apex", &[apex_time, apex_height], t)?;
+                if let Some(c) = crossing {
+                    finite("crossing", &[c.time, c.height, c.lateral_offset], c.time)?;
+                    finite("crossing velocity", &c.velocity, c.time)?;
+                }
+                return Ok(outcome);
+            }
+        }
+        stepper.advance();
+        if t1 >= horizon {
+            return Err(FlightError::NoLanding { horizon, height: end[Z] });
+        }
+        if stepper.accepted >= MAX_STEPS {
+            return Err(FlightError::Integration { time: t1, reason: "more steps than kick_flight::MAX_STEPS" });
+        }
+    }
+}
+
+/// Solve one flight to its landing (no allocation).
+pub fn solve(flight: &Flight) -> Result<FlightOutcome, FlightError> {
+    run(flight, None)
+}
+
+/// The flight's samples at uniform times: the same steps as [`solve`], read
+/// from each step's dense output, so outcome and last sample are [`solve`]'s
+/// to the bit.
+pub fn history(flight: &Flight, sampling: Sampling) -> Result<FlightHistory, FlightError> {
+    let outcome = solve(flight)?;
+    let flight_time = outcome.flight_time;
+    let times: Vec<f64> = match sampling {
+        Sampling::Samples(n) => {
+            if n < 2 {
+                return Err(FlightError::InvalidParameter {
+                    name: "samples",
+                    value: n as f64,
+                    requirement: ">= 2 (both ends)",
+                });
+            }
+            if n > MAX_SAMPLES {
+                return Err(FlightError::TooManySamples { name: "samples", requested: n as f64, limit: MAX_SAMPLES });
+            }
+            (0..n).map(|i| if i + 1 == n { flight_time } else { flight_time * i as f64 / (n - 1) as f64 }).collect()
+        }
+        Sampling::Interval(dt) => {
+            if !(dt.is_finite() && dt > 0.0) {
+                return Err(FlightError::InvalidParameter { name: "interval", value: dt, requirement: "finite and > 0, s" });
+            }
+            let count = (flight_time / dt).ceil() + 1.0;
+            if count > MAX_SAMPLES as f64 {
+                return Err(FlightError::TooManySamples { name: "interval", requested: count, limit: MAX_SAMPLES });
+            }
+            let mut times: Vec<f64> = (0..count as usize).map(|k| k as f64 * dt).take_while(|&t| t < flight_time).collect();
+            times.push(flight_time);
+            times
+        }
+    };
+    let v0 = flight.launch_velocity();
+    let start = FlightSample { time: 0.0, position: [0.0, 0.0, flight.ball_radius()], velocity: v0, spin: flight.spin() };
+    let mut samples = Vec::with_capacity(times.len());
+    let mut next = 0;
+    while next < times.len() && times[next] == 0.0 {
+        samples.push(start);
+        next += 1;
+    }
+    let mut record = |dense: &Dense<9>, until: f64| {
+        while next < times.len() && times[next] <= until {
+            let t = times[next];
+            let s = dense.at(t);
+            samples.push(FlightSample { time: t, position: vector(&s, 0), velocity: vector(&s, 3), spin: vector(&s, 6) });
+            next += 1;
+        }
+    };
+    let again = run(flight, Some(&mut record))?;
+    // Same steps; only the dense outputs of the steps without events add evaluations.
+    debug_assert_eq!(FlightOutcome { evaluations: outcome.evaluations, ..again }, outcome);
+    Ok(FlightHistory { outcome, samples })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{models, FlightSpec};
+
+    #[test]
+    fn history_samples_are_uniform_and_end_at_the_landing() {
+        let flight = models::free_kick();
+        let outcome = solve(&flight).unwrap();
+        let h = history(&flight, Sampling::Samples(50)).unwrap();
+        assert_eq!(h.outcome, outcome);
+        assert_eq!(h.samples.len(), 50);
+        let first = h.samples[0];
+        assert_eq!(first.position, [0.0, 0.0, flight.ball_radius()]);
+        assert_eq!(first.velocity, flight.launch_velocity());
+        let last = h.samples[49];
+        assert_eq!(last.time, outcome.flight_time);
+        assert_eq!([last.position[0], last.position[1]], outcome.landing_point);
+        assert_eq!(last.velocity, outcome.landing_velocity);
+        let dt = outcome.flight_time / 49.0;
+        for (i, s) in h.samples.iter().enumerate() {
+            assert!((s.time - i as f64 * dt).abs() <= 1e-15 * outcome.flight_time);
+        }
+        // In flight the centre stays above the ground.
+        assert!(h.samples[1..49].iter().all(|s| s.position[2] > flight.ball_radius()));
+    }
+
+    #[test]
+    fn interval_history_and_vacuum_positions() {
+        let spec = FlightSpec {
+            drag_coefficient: Some(0.0),
+            lift_coefficient: Some(0.0),
+            ..FlightSpec::from_exit_speed(20.0, 40.0)
+        };
+        let flight = spec.build().unwrap();
+        let h = history(&flight, Sampling::Interval(0.1)).unwrap();
+        let t_end = h.outcome.flight_time;
+        assert_eq!(h.samples.len(), (t_end / 0.1).ceil() as usize + 1);
+        let [u, _, w] = flight.launch_velocity();
+        for (k, s) in h.samples.iter().enumerate() {
+            let t = if k + 1 == h.samples.len() { t_end } else { k as f64 * 0.1 };
+            assert_eq!(s.time, t);
+            let (x, z) = (u * t, flight.ball_radius() + w * t - 0.5 * flight.gravity() * t * t);
+            assert!((s.position[0] - x).abs() <= 1e-9 * 40.0, "x at {t}");
+            assert!((s.position[2] - z).abs() <= 1e-9 * 40.0, "z at {t}");
+        }
+    }
+
+    #[test]
+    fn bad_sampling_is_refused_by_name() {
+        let flight = models::plain_kick();
+        assert!(matches!(
+            history(&flight, Sampling::Samples(1)),
+            Err(FlightError::InvalidParameter { name: "samples", .. })
+        ));
+        assert!(matches!(
+            history(&flight, Sampling::Interval(0.0)),
+            Err(FlightError::InvalidParameter { name: "interval", .. })
+        ));
+        assert!(matches!(
+            history(&flight, Sampling::Interval(f64::NAN)),
+            Err(FlightError::InvalidParameter { name: "interval", .. })
+        ));
+        assert!(matches!(
+            history(&flight, Sampling::Interval(1e-9)),
+            Err(FlightError::TooManySamples { name: "interval", .. })
+        ));
+        assert!(matches!(
+            history(&flight, Sampling::Samples(MAX_SAMPLES + 1)),
+            Err(FlightError::TooManySamples { name: "samples", .. })
+        ));
+    }
+
+    /// Lift from the spin across the flight direction only: with ω = (a, b, 0)
+    /// and v = (v, 0, 0), S = R|b|/v whatever a is, and the force points along ω × v.
+    #[test]
+    fn lift_uses_the_spin_across_the_velocity() {
+        let flight = models::free_kick();
+        let dynamics = Dynamics::new(&flight);
+        let (v, a, b) = (20.0, 150.0, -40.0);
+        let y = State::from_column_slice(&[0.0, 0.0, 1.0, v, 0.0, 0.0, a, b, 0.0]);
+        let dy = dynamics.derivative(&y);
+        let k = dynamics.aero;
+        let s = flight.ball_radius() * b.abs() / v;
+        // ω × v = (0, 0, −b v): straight up for backspin b < 0.
+        assert_eq!([dy[4], dy[3] + k * dynamics.drag.at_speed(v) * v * v], [0.0, 0.0]);
+        let lift = dy[5] + dynamics.gravity;
+        assert!((lift / (k * SaturatingLift::at(s) * v * v) - 1.0).abs() < 1e-14, "{lift}");
+    }
+
+    #[test]
+    fn same_flight_same_bits() {
+        let a = solve(&models::free_kick()).unwrap();
+        let b = solve(&models::free_kick()).unwrap();
+        assert_eq!(serde_json::to_string(&a).unwrap(), serde_json::to_string(&b).unwrap());
+    }
+}
