@@ -45,6 +45,21 @@ pub enum Checked {
 }
 
 impl Checked {
+    /// text > abstract > secondary > unchecked.
+    fn rank(&self) -> u8 {
+        match self {
+            Checked::Text => 3,
+            Checked::Abstract => 2,
+            Checked::Secondary(_) => 1,
+            Checked::Unchecked => 0,
+        }
+    }
+
+    /// The less checked of two (the first on a tie).
+    pub fn weaker(a: &Checked, b: &Checked) -> Checked {
+        if b.rank() < a.rank() { b.clone() } else { a.clone() }
+    }
+
     fn parse(s: &str) -> Option<Checked> {
         match s.trim() {
             "text" => Some(Checked::Text),
@@ -424,13 +439,31 @@ impl Measured {
         if bl <= 0.0 || bh <= 0.0 {
             return None;
         }
-        let weaker = if matches!(a.checked, Checked::Text) { b.checked.clone() } else { a.checked.clone() };
+        let weaker = Checked::weaker(&a.checked, &b.checked);
         Some(Measured {
             key: format!("{}/{}", a.key, b.key),
             low: Some(al / bh),
             high: Some(ah / bl),
             unit: "1",
             source: if a.source == b.source { a.source.clone() } else { format!("{}/{}", a.source, b.source) },
+            checked: weaker,
+        })
+    }
+
+    /// This interval times a dimensionless measured factor (bounds multiplied
+    /// low by low, high by high), in this unit.
+    pub fn scaled_by(&self, factor: &Measured) -> Option<Measured> {
+        let (l, h, fl, fh) = (self.low?, self.high?, factor.low?, factor.high?);
+        if factor.unit != "1" || fl < 0.0 {
+            return None;
+        }
+        let weaker = Checked::weaker(&self.checked, &factor.checked);
+        Some(Measured {
+            key: format!("{}*{}", self.key, factor.key),
+            low: Some(l * fl),
+            high: Some(h * fh),
+            unit: self.unit,
+            source: if self.source == factor.source { self.source.clone() } else { format!("{}*{}", self.source, factor.source) },
             checked: weaker,
         })
     }
