@@ -511,6 +511,23 @@ impl Comparison {
     }
 }
 
+/// One line: quantity, measured [low, high] unit, model, ratio, miss, key and check.
+impl std::fmt::Display for Comparison {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let m = &self.measured;
+        match (m.low, m.high) {
+            (Some(lo), Some(hi)) if lo == hi => write!(f, "{}: measured {lo:.4e} {}", self.quantity, m.unit)?,
+            (Some(lo), Some(hi)) => write!(f, "{}: measured [{lo:.4e}, {hi:.4e}] {}", self.quantity, m.unit)?,
+            _ => write!(f, "{}: measured (a claim in words)", self.quantity)?,
+        }
+        write!(f, ", model {:.4e}", self.model)?;
+        if let (Some(r), Some(o)) = (self.ratio, self.outside) {
+            write!(f, ", ratio {r:.3}, outside {o:+.3e}")?;
+        }
+        write!(f, " [{}; {}]", m.key, m.checked)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
