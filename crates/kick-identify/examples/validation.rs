@@ -15,7 +15,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         println!("{row}\n    {}", row.note);
     }
     println!("\n== implied parameters (targets: contact time, ball speed, peak force)");
-    for i in implied_parameter_study(&m)? {
+    let study = implied_parameter_study(&m)?;
+    for i in &study {
         println!(
             "law {} e {:?} v_f {} m/s: chi2 {:.4}, dof {}",
             i.law.name(),
@@ -38,6 +39,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         for r in &i.residuals {
             println!("    {:<14} observed {:.4e} ± {:.3e}, model {:.4e}", r.label, r.observed, r.sigma, r.predicted);
         }
+    }
+    // The Hunt–Crossley setup at 22 m/s with k and m_f free, set beside everything again.
+    let hc = &study[2];
+    let mut s = Scenario::baseline().with_law(hc.law, hc.restitution)?;
+    for e in &hc.estimates {
+        if let kick_identify::FitParameter::Scenario(p) = e.parameter {
+            s = s.with(p, e.value)?;
+        }
+    }
+    println!("\n== at the implied Hunt-Crossley point (k, m_f above, v_f {} m/s)", hc.foot_speed);
+    for row in contact_comparisons(&m, &s)? {
+        println!("{row}");
     }
     Ok(())
 }

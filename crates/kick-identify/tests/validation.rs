@@ -163,3 +163,14 @@ fn implied_stiffness_meets_the_closed_form_contact_time() {
         }
     }
 }
+
+/// Matching Tol et al.'s ball speed fixes the impulse at m_b v_b (ball at
+/// rest before), so mean force × contact time is 0.43 kg × 24.6 m/s.
+#[test]
+fn matched_ball_speed_fixes_the_impulse() {
+    let s = kick_identify::validation::with_ball_speed(&Scenario::baseline(), 24.6).unwrap();
+    let model = contact_model(&s).unwrap();
+    assert!((model.ball_speed - 24.6).abs() < 1e-9, "{}", model.ball_speed);
+    let impulse = model.mean_force * model.contact_time;
+    assert!((impulse - 0.43 * 24.6).abs() < 1e-9, "{impulse}");
+}
