@@ -24,6 +24,7 @@ pub mod outcome;
 #[cfg(feature = "rapier")]
 pub mod scene;
 pub mod sweep;
+pub mod validation;
 
 pub use accurate::Accurate3d;
 pub use error::Kick3dError;

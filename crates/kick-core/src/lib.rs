@@ -8,6 +8,7 @@ pub mod error;
 pub mod check;
 pub mod law;
 pub mod laws;
+pub mod measurements;
 pub mod models;
 pub mod outcome;
 pub mod paper;

@@ -46,6 +46,7 @@ pub mod dop853;
 pub mod models;
 pub mod solve;
 pub mod spec;
+pub mod validation;
 
 pub use air::Air;
 pub use coefficients::{DragModel, LiftModel};

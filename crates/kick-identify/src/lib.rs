@@ -15,6 +15,8 @@
 //! - [`table2`]: Table 2's changed parameter per row from the four printed observables.
 //! - [`synthetic`]: data from known parameters plus seeded Gaussian noise.
 //! - [`laws`]: the contact-law comparison on Table 2's scenarios.
+//! - [`validation`]: the 1D contact beside published measurements, and the
+//!   stiffness and foot mass they imply.
 
 pub mod data;
 pub mod fit;
@@ -24,6 +26,7 @@ pub mod parameter;
 pub mod profile;
 pub mod synthetic;
 pub mod table2;
+pub mod validation;
 
 pub use data::{Channel, FitSpec, HistoryData, Observable, Observations, ScalarObservation};
 pub use fit::{fit, Estimate, FitOptions, FitProblem, FitReport, FitStop};
