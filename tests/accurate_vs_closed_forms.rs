@@ -64,7 +64,7 @@ fn eq43_contact_time_of_the_linear_spring() {
 #[test]
 fn eq34_eq35_scaling_is_exact_without_damping() {
     for (case, scenario) in models::elastic() {
-        let law = scenario.law();
+        let law = scenario.paper_law();
         let n = law.exponent;
         let mu = scenario.reduced_mass();
         let v0 = scenario.approach_speed();
@@ -116,7 +116,7 @@ fn linear_peak_force_against_a_dense_scan_of_the_accurate_history() {
         )
         .unwrap();
         let scanned = history.samples.iter().map(|s| s.force).fold(0.0, f64::max);
-        let onset = scenario.law().onset_force(scenario.approach_speed());
+        let onset = scenario.paper_law().onset_force(scenario.approach_speed());
         // A scan can only undershoot the supremum, by at most the curvature term.
         assert!(scanned.max(onset) <= exact.peak_force * (1.0 + 1e-12), "{case}");
         assert!(scanned.max(onset) >= exact.peak_force * (1.0 - 1e-6), "{case}");

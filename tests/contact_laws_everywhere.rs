@@ -37,7 +37,7 @@ fn the_law_choice_survives_parameter_changes_and_routes_auto() {
     assert!(matches!(ClosedForm.solve(&changed), Err(KickError::NotApplicable { .. })));
     // Back to the paper's law.
     let paper = changed.with_law(LawKind::PowerLaw, None).unwrap();
-    assert_eq!(paper.contact_law(), kick_core::AnyLaw::PowerLaw(paper.law()));
+    assert_eq!(paper.contact_law(), kick_core::AnyLaw::PowerLaw(paper.paper_law()));
 }
 
 #[test]

@@ -38,7 +38,7 @@ fn matches_the_tight_reference_on_table2_and_driven_runs() {
 /// the solver): compression is a damped oscillator about δe = f_s/k, the
 /// return an undamped one about the same point.
 fn linear_driven(scenario: &Scenario) -> (f64, f64, f64, f64, f64) {
-    let (k, c) = (scenario.law().stiffness, scenario.law().damping);
+    let (k, c) = (scenario.paper_law().stiffness, scenario.paper_law().damping);
     let mu = scenario.reduced_mass();
     let v0 = scenario.approach_speed();
     let share = mu / scenario.effective_foot_mass() * scenario.drive_force();

@@ -48,7 +48,7 @@ fn the_scenario_file_is_what_the_fit_finds() {
 fn accurate_peak_is_the_onset_jump_where_damping_dominates() {
     for (name, scenario) in models::table2() {
         let accurate = Accurate::default().solve(&scenario).unwrap();
-        let onset = scenario.law().onset_force(scenario.approach_speed());
+        let onset = scenario.paper_law().onset_force(scenario.approach_speed());
         let seed = SeedRk4::default().solve(&scenario).unwrap();
         if name == "Very soft ball" || name == "Highly damped" {
             assert_eq!(accurate.peak_force, onset, "{name}");

@@ -17,9 +17,12 @@ fn solve(k: &Kick3d) -> kick_3d::Outcome3d {
 fn rounded_box_central_frictionless_matches_1d() {
     let k = kick(Kick3dSpec {
         friction: Some(0.0),
-        foot_shape: Some(FootShape::RoundedBox { half_extents: [0.02, 0.11, 0.04], border_radius: 0.01 }),
+        // Outer half-extents 0.03, 0.12, 0.05 with a 1 cm border: inner 0.02, 0.11, 0.04.
+        foot_half_extents: Some([0.03, 0.12, 0.05]),
+        border_radius: Some(0.01),
         ..Kick3dSpec::default()
     });
+    assert!(matches!(k.foot_shape, FootShape::RoundedBox { border_radius: 0.01, .. }));
     let one = kick_3d::one_d::solve(&k).unwrap();
     let three = solve(&k);
     assert_eq!(one.solver, "1d");

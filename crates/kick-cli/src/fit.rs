@@ -1,6 +1,6 @@
 use crate::output::{json, CliResult, Format};
-use crate::simulate::LawArgs;
-use kick_core::{Parameter, Scenario};
+use crate::flags::Flags;
+use kick_core::{Parameter, Scenario, ScenarioSpec};
 use kick_identify::data::{Channel, FitSpec};
 use kick_identify::fit::{fit, FitOptions, FitProblem, FitReport};
 use kick_identify::profile::{identifiability_study, IdentifiabilityStudy};
@@ -51,8 +51,9 @@ pub enum FitCommand {
         /// Samples over 1.2 contact times (from t = 0, whatever the time offset)
         #[arg(long, default_value_t = 80)]
         times: usize,
+        /// The truth: Table 1's baseline with the 1D parameters and law given
         #[command(flatten)]
-        law: crate::simulate::LawArgs,
+        truth: Flags<ScenarioSpec>,
         /// Time of first touch in the data, s; when non-zero the specification also fits `time_offset`
         #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
         time_offset: f64,
@@ -86,8 +87,8 @@ pub fn run(command: FitCommand) -> CliResult {
     match command {
         FitCommand::Table2 { format, write, out, scenarios } => table2(format, write, out, &scenarios),
         FitCommand::Data { spec, format, out } => data(spec, format, out),
-        FitCommand::Synthesize { out, name, seed, times, law, time_offset } => {
-            synthesize(&out, &name, seed, times, law, time_offset)
+        FitCommand::Synthesize { out, name, seed, times, truth, time_offset } => {
+            synthesize(&out, &name, seed, times, &truth.spec(), time_offset)
         }
         FitCommand::Profile { format, out, spread, points, map_points, seed } => {
             if !(3..=101).contains(&points) || !(3..=201).contains(&map_points) {
@@ -267,14 +268,14 @@ fn print_report(report: &FitReport, truth: &[(FitParameter, f64)]) {
     }
 }
 
-fn synthesize(out: &Path, name: &str, seed: u64, times: usize, law: LawArgs, time_offset: f64) -> CliResult {
+fn synthesize(out: &Path, name: &str, seed: u64, times: usize, truth: &ScenarioSpec, time_offset: f64) -> CliResult {
     if !(2..=100_000).contains(&times) {
         return Err(format!("--times must be in 2..=100000 (got {times})"));
     }
     if name.is_empty() || name.contains(['/', '\\']) {
         return Err(format!("--name must be a plain file stem (got `{name}`)"));
     }
-    let scenario = Scenario::baseline().with_law(law.law, law.restitution).map_err(|e| e.to_string())?;
+    let scenario = truth.build().map_err(|e| e.to_string())?;
     let truth = ModelPoint::new(scenario, time_offset).map_err(text)?;
     let options = FitOptions::default();
     let sigma = synthetic::lab_sigma(&Channel::ALL);

@@ -3,6 +3,7 @@
 mod bench;
 mod check;
 mod fit;
+mod flags;
 mod identify_figures;
 mod identify_files;
 mod identify_report;

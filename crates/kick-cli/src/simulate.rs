@@ -1,78 +1,14 @@
+use crate::flags::Flags;
 use crate::output::{json, CliResult, Format};
 use kick_compliant::SolverChoice;
-use kick_core::{LawKind, Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, OBSERVABLES};
+use kick_core::{Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, OBSERVABLES};
 use serde_json::{Map, Value};
-
-/// The contact law as flags (`--law`, `--restitution`), shared by every
-/// command that builds scenarios.
-#[derive(clap::Args, Debug, Clone, Copy)]
-pub struct LawArgs {
-    /// Contact law: power-law (the paper's, Eq. 20), hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt
-    #[arg(long, default_value = "power-law", value_parser = parse_law)]
-    pub law: LawKind,
-    /// Target restitution e of the laws other than the paper's (their damping follows from it)
-    #[arg(long, allow_negative_numbers = true)]
-    pub restitution: Option<f64>,
-}
-
-fn parse_law(name: &str) -> Result<LawKind, String> {
-    LawKind::from_name(name).map_err(|e| e.to_string())
-}
-
-/// The eight parameters of Table 1 and the contact law as flags; left out,
-/// each parameter takes the baseline and the law is the paper's.
-#[derive(clap::Args, Debug)]
-pub struct ScenarioArgs {
-    /// Effective foot mass m_f, kg [3.0]
-    #[arg(long, allow_negative_numbers = true)]
-    pub foot_mass: Option<f64>,
-    /// Ball mass m_b, kg [0.43]
-    #[arg(long, allow_negative_numbers = true)]
-    pub ball_mass: Option<f64>,
-    /// Foot speed before contact v_f⁻, m/s [22]
-    #[arg(long, allow_negative_numbers = true)]
-    pub foot_speed: Option<f64>,
-    /// Ball speed before contact v_b⁻ (along the foot's path in 3D), m/s [0]
-    #[arg(long, allow_negative_numbers = true)]
-    pub ball_speed: Option<f64>,
-    /// Stiffness k, N/m^n [4.2e5]
-    #[arg(long, allow_negative_numbers = true)]
-    pub stiffness: Option<f64>,
-    /// Damping c, N s/m [120]
-    #[arg(long, allow_negative_numbers = true)]
-    pub damping: Option<f64>,
-    /// Exponent n [1.35]
-    #[arg(long, allow_negative_numbers = true)]
-    pub exponent: Option<f64>,
-    /// Drive force on the foot along its velocity during contact, N [0]
-    #[arg(long, allow_negative_numbers = true)]
-    pub drive_force: Option<f64>,
-    #[command(flatten)]
-    pub law: LawArgs,
-}
-
-impl ScenarioArgs {
-    /// The parameters and the law given.
-    pub fn spec(&self) -> ScenarioSpec {
-        ScenarioSpec {
-            foot_mass: self.foot_mass,
-            ball_mass: self.ball_mass,
-            foot_speed: self.foot_speed,
-            ball_speed: self.ball_speed,
-            stiffness: self.stiffness,
-            damping: self.damping,
-            exponent: self.exponent,
-            drive_force: self.drive_force,
-            law: Some(self.law.law),
-            restitution: self.law.restitution,
-        }
-    }
-}
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
+    /// The declared 1D parameters and --law; left out, Table 1's baseline and the paper's law.
     #[command(flatten)]
-    scenario: ScenarioArgs,
+    scenario: Flags<ScenarioSpec>,
     /// Step of seed-rk4, s
     #[arg(long, default_value_t = 5e-6, allow_negative_numbers = true)]
     dt: f64,

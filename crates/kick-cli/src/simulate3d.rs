@@ -1,51 +1,16 @@
 //! `kick simulate3d`: one off-center 3D kick (spin, friction; kick-3d).
 
 use crate::output::{json, CliResult, Format};
-use kick_3d::{FootShape, Kick3d, Kick3dSpec, Outcome3d, Solver3d};
+use crate::flags::Flags;
+use kick_3d::{Kick3d, KickSpec, Outcome3d, Solver3d};
 use serde_json::{Map, Value};
 use std::time::Instant;
 
 #[derive(clap::Args, Debug)]
 pub struct Args {
+    /// The declared 1D and 3D parameters and --law (the normal force's law).
     #[command(flatten)]
-    scenario: crate::simulate::ScenarioArgs,
-    /// Lateral offset of the foot's line of motion from the ball centre, m [0]
-    #[arg(long, allow_negative_numbers = true)]
-    offset: Option<f64>,
-    /// Elevation of the foot's velocity above the horizontal, degrees [0]
-    #[arg(long, allow_negative_numbers = true)]
-    approach_angle: Option<f64>,
-    /// Coulomb friction coefficient μ ("inf": never slips) [0.5]
-    #[arg(long, allow_negative_numbers = true)]
-    friction: Option<f64>,
-    /// Ball radius R, m [0.11]
-    #[arg(long, allow_negative_numbers = true)]
-    ball_radius: Option<f64>,
-    /// Ball moment of inertia I_b, kg m² [2/3 m_b R², thin shell]
-    #[arg(long, allow_negative_numbers = true)]
-    ball_inertia: Option<f64>,
-    /// Tangential stiffness k_t, N/m [1e5]
-    #[arg(long, allow_negative_numbers = true)]
-    tangential_stiffness: Option<f64>,
-    /// Tangential damping c_t, N s/m [100]
-    #[arg(long, allow_negative_numbers = true)]
-    tangential_damping: Option<f64>,
-    /// Principal moments of inertia of the foot about its centre of mass,
-    /// kg m², as Ix,Iy,Iz (x: face normal) [uniform solid box of the instep]
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
-    foot_inertia: Option<Vec<f64>>,
-    /// Half-extents of the instep box, m, as hx,hy,hz (hx along the face normal) [0.03,0.12,0.05]
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
-    foot_half_extents: Option<Vec<f64>>,
-    /// Round the instep box's edges with this radius, m [0: plain box]
-    #[arg(long, allow_negative_numbers = true)]
-    border_radius: Option<f64>,
-    /// Gravity on both bodies
-    #[arg(long)]
-    gravity: bool,
-    /// A ground plane under the ball (rapier scene path)
-    #[arg(long)]
-    ground: bool,
+    kick: Flags<KickSpec>,
     /// auto | accurate | 1d | rapier
     #[arg(long, default_value = "auto", value_parser = Solver3d::NAMES)]
     solver: String,
@@ -65,35 +30,7 @@ pub struct Args {
 
 impl Args {
     fn kick(&self) -> Result<Kick3d, String> {
-        // The normal force is the scenario's law (--law, --restitution).
-        let base = self.scenario.spec().build().map_err(|e| e.to_string())?;
-        let three = |v: &Option<Vec<f64>>, name: &str| -> Result<Option<[f64; 3]>, String> {
-            match v.as_deref() {
-                None => Ok(None),
-                Some(&[a, b, c]) => Ok(Some([a, b, c])),
-                Some(other) => Err(format!("--{name} takes three numbers, got {}", other.len())),
-            }
-        };
-        let outer = three(&self.foot_half_extents, "foot-half-extents")?.unwrap_or(FootShape::DEFAULT_HALF_EXTENTS);
-        // The rounded box keeps the outer size: the border comes out of the inner box.
-        let foot_shape = match self.border_radius {
-            Some(b) => FootShape::RoundedBox { half_extents: outer.map(|h| h - b), border_radius: b },
-            None => FootShape::Box { half_extents: outer },
-        };
-        let spec = Kick3dSpec {
-            ball_radius: self.ball_radius,
-            ball_inertia: self.ball_inertia,
-            foot_inertia: three(&self.foot_inertia, "foot-inertia")?,
-            foot_shape: Some(foot_shape),
-            offset: self.offset,
-            approach_angle_deg: self.approach_angle,
-            friction: self.friction,
-            tangential_stiffness: self.tangential_stiffness,
-            tangential_damping: self.tangential_damping,
-            gravity: Some(self.gravity),
-            ground: Some(self.ground),
-        };
-        Kick3d::new(base, &spec).map_err(|e| e.to_string())
+        self.kick.spec().build().map_err(|e| e.to_string())
     }
 }
 

@@ -3,7 +3,9 @@
 
 use crate::output::CliResult;
 use kick_compliant::{Auto, SolverChoice};
-use kick_runner::sample::{SampledSweep, RANGES};
+use crate::flags::Flags;
+use kick_core::ScenarioSpec;
+use kick_runner::sample::{ranges, SampledSweep};
 use kick_runner::{Experiment, Output, Scenarios};
 use std::path::PathBuf;
 
@@ -26,9 +28,10 @@ pub struct Args {
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
-    /// Contact law of every scenario
+    /// A 1D parameter given is held at that value instead of drawn; --law
+    /// and --restitution set the contact law of every scenario
     #[command(flatten)]
-    law: crate::simulate::LawArgs,
+    fixed: Flags<ScenarioSpec>,
 }
 
 pub fn run(args: Args) -> CliResult {
@@ -45,19 +48,22 @@ pub fn run(args: Args) -> CliResult {
         .to_string();
     let directory = args.out.parent().map(PathBuf::from).unwrap_or_default();
     let solver = SolverChoice::from_name(&args.solver, args.dt).map_err(|e| e.to_string())?;
-    let sweep = SampledSweep { samples: args.samples, seed: args.seed, law: args.law.law, restitution: args.law.restitution };
+    let sweep = SampledSweep { samples: args.samples, seed: args.seed, fixed: args.fixed.spec() };
     sweep.scenario(0).map_err(|e| e.to_string())?;
     // The provenance keeps what made the file: the command and the ranges.
+    let fixed: String = args.fixed.given.iter().map(|(p, v)| format!(" {} {}", p.flag(), match v {
+        kick_core::Value::Number(x) => x.to_string(),
+        other => format!("{other:?}"),
+    })).collect();
     let text = format!(
-        "# kick sweep --samples {} --seed {} --solver {} --dt {} --law {} --restitution {:?}\n# ranges:\n{}\n# auto paths: no drive and c = 0 or n = 1 -> closed-form; \
+        "# kick sweep --samples {} --seed {} --solver {} --dt {} --law {}{fixed}\n# ranges (a parameter given is fixed):\n{}\n# auto paths: no drive and c = 0 or n = 1 -> closed-form; \
          otherwise the paper's law -> series; another law -> reduced\n",
         args.samples,
         args.seed,
         args.solver,
         args.dt,
-        args.law.law.name(),
-        args.law.restitution,
-        RANGES.lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n")
+        args.fixed.law.unwrap_or(kick_core::LawKind::PowerLaw).name(),
+        ranges().lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n")
     );
     let experiment = Experiment {
         name: name.clone(),

@@ -89,7 +89,9 @@ fn simulate3d_refuses_bad_input_by_name() {
         (vec!["simulate3d", "--friction", "-1"], "friction"),
         (vec!["simulate3d", "--solver", "rapier", "--dt", "0"], "dt"),
         (vec!["simulate3d", "--foot-inertia", "1,2"], "foot-inertia"),
-        (vec!["simulate3d", "--border-radius", "0.04"], "foot_half_extent"),
+        // The flag given is blamed, not the inner half-extent it would make negative.
+        (vec!["simulate3d", "--border-radius", "0.04"], "border_radius"),
+        (vec!["simulate3d", "--foot-half-extents", "0.03,0,0.05"], "foot_half_extents"),
     ] {
         let out = kick(&args);
         assert!(!out.status.success(), "{args:?}");

@@ -267,7 +267,7 @@ impl Solver for ReducedReturn {
                 reason: "its return phase is in closed form only for the paper's law, which does not damp while restituting",
             });
         }
-        let law = scenario.law();
+        let law = scenario.paper_law();
         let system = RelativeOde::new(scenario, law);
         let mut engine = Engine::new(self.reduced.method, system, scenario)?;
         let y0 = RelativeState::new(0.0, scenario.approach_speed(), 0.0);

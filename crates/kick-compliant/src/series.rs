@@ -608,7 +608,7 @@ impl Series {
     /// Maximum compression, its time, the force peak and the dissipated
     /// energy of the compression phase, in SI units.
     pub fn compression(&self, scenario: &Scenario) -> Result<(CompressionEnd, u64), KickError> {
-        let law = scenario.law();
+        let law = scenario.paper_law();
         let mu = scenario.reduced_mass();
         let v0 = scenario.approach_speed();
         let drive_share = mu / scenario.effective_foot_mass() * scenario.drive_force();

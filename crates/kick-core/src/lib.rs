@@ -10,6 +10,7 @@ pub mod law;
 pub mod laws;
 pub mod models;
 pub mod outcome;
+pub mod parameters;
 pub mod paper;
 pub mod roots;
 pub mod scenario;
@@ -23,6 +24,7 @@ pub use outcome::{
     ContactPhase, EnergyBudget, ExitVelocities, Grid, History, Outcome, Sample, Spacing, StopReason, HISTORY_COLUMNS,
     MAX_HISTORY_SAMPLES, OBSERVABLES,
 };
+pub use parameters::{Level, ParameterDef, SetParameter, Value, PARAMETERS};
 pub use scenario::{Parameter, Scenario, ScenarioSpec};
 
 /// Standard gravity of every model level that has gravity (kick-3d's scene,

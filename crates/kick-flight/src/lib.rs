@@ -50,7 +50,7 @@ pub mod spec;
 pub use air::Air;
 pub use coefficients::{DragModel, LiftModel};
 pub use solve::{history, solve, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
-pub use spec::{Flight, FlightParameter, FlightSpec, ParameterInfo};
+pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 
 use thiserror::Error;
 

@@ -23,7 +23,7 @@ fn dissipation_per_cycle_matches_small_damping_closed_form() {
         let v0 = s.approach_speed();
         for model in [HysteresisModel::HuntCrossley, HysteresisModel::LankaraniNikravesh, HysteresisModel::Flores] {
             let ratio = |chi_v0: f64| {
-                let mut law = HysteresisContact::new(model, s.law().stiffness, exponent, 1.0, v0).unwrap();
+                let mut law = HysteresisContact::new(model, s.paper_law().stiffness, exponent, 1.0, v0).unwrap();
                 law.hysteresis = chi_v0 / v0;
                 let o = solver.solve_law(&s, law).unwrap();
                 // Relative energy lost: kinetic of the relative motion, Eq. 31–32.
@@ -102,7 +102,7 @@ fn simulated_restitution_matches_exact_closed_form() {
             let mut sims = Vec::new();
             for model in [HysteresisModel::HuntCrossley, HysteresisModel::LankaraniNikravesh, HysteresisModel::Flores] {
                 let s = Scenario::baseline().with(Parameter::Exponent, n).unwrap();
-                let law = HysteresisContact::new(model, s.law().stiffness, n, e, s.approach_speed()).unwrap();
+                let law = HysteresisContact::new(model, s.paper_law().stiffness, n, e, s.approach_speed()).unwrap();
                 let e_sim = solver.solve_law(&s, law).unwrap().restitution;
                 let exact = law.exact_restitution(s.approach_speed()).unwrap();
                 assert!((e_sim - exact).abs() < 1e-8, "{model:?} n={n} e={e}: {e_sim} vs exact {exact}");
@@ -110,7 +110,7 @@ fn simulated_restitution_matches_exact_closed_form() {
             }
             // χ from the exact relation meets the target itself.
             let s = Scenario::baseline().with(Parameter::Exponent, n).unwrap();
-            let law = HysteresisContact::new(HysteresisModel::Exact, s.law().stiffness, n, e, s.approach_speed()).unwrap();
+            let law = HysteresisContact::new(HysteresisModel::Exact, s.paper_law().stiffness, n, e, s.approach_speed()).unwrap();
             let e_sim = solver.solve_law(&s, law).unwrap().restitution;
             assert!((e_sim - e).abs() < 1e-8, "exact χ, n={n} e={e}: {e_sim}");
             if e >= 0.9 {

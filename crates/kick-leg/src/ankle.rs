@@ -178,7 +178,7 @@ pub fn coupled_ankle_contact(
         stiffness,
         ball_mass: base.ball_mass(),
     };
-    let law = base.law();
+    let law = base.paper_law();
     let locked = leg.effective_mass(pose, impact, AnkleJoint::Locked)?.locked_ankle;
     let locked_outcome = exit_outcome(locked, base)?;
     let estimate = locked_outcome.contact_time;

@@ -43,9 +43,15 @@ pub struct RunSummary {
     pub failures: Vec<(String, u64)>,
 }
 
-/// Parameter columns of the 1D model: the eight [`Parameter`]s.
-pub fn parameter_columns() -> Vec<Column> {
-    Parameter::ALL.iter().map(|p| Column::new(p.name(), p.unit())).collect()
+/// Parameter columns of the 1D model: the eight [`Parameter`]s, and the
+/// target restitution when the law takes one (names and units as declared).
+pub fn parameter_columns(with_restitution: bool) -> Vec<Column> {
+    let mut columns: Vec<Column> = Parameter::ALL.iter().map(|p| Column::new(p.name(), p.unit())).collect();
+    if with_restitution {
+        let e = &kick_core::parameters::RESTITUTION;
+        columns.push(Column::new(e.name, e.unit));
+    }
+    columns
 }
 
 /// Outcome columns of the 1D model: [`OBSERVABLES`].
@@ -156,11 +162,12 @@ impl Chunk {
         }
         for (j, scenario) in self.scenarios.iter().enumerate() {
             let row = self.start as usize + j;
-            let values = match scenario {
-                Ok(s) => s.values(),
-                Err(_) => [f64::NAN; 8],
-            };
-            writer.push_parameters(&values)?;
+            let mut values = [f64::NAN; 9];
+            if let Ok(s) = scenario {
+                values[..8].copy_from_slice(&s.values());
+                values[8] = s.restitution_target().unwrap_or(f64::NAN);
+            }
+            writer.push_parameters(&values[..if experiment.scenarios.has_restitution() { 9 } else { 8 }])?;
             for k in 0..experiment.solvers.len() {
                 let result = match experiment.output {
                     Output::Summary => self.outcomes[k][j].as_ref().map(|o| o.observable_values()),
@@ -194,7 +201,13 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
     let path = out_dir.join(format!("{}.h5", experiment.name));
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     let sets: Vec<OutcomeSet> = experiment.solvers.iter().map(outcome_set).collect();
-    let mut writer = SweepWriter::create(&path, &provenance, &parameter_columns(), &sets, experiment.scenarios.len())?;
+    let mut writer = SweepWriter::create(
+        &path,
+        &provenance,
+        &parameter_columns(experiment.scenarios.has_restitution()),
+        &sets,
+        experiment.scenarios.len(),
+    )?;
     crate::h5::write_str_attr(writer.file(), &path, "description", &experiment.description)?;
     if let Some(names) = experiment.scenarios.names() {
         crate::h5::write_strings(writer.file(), &path, "scenario_names", names)?;

@@ -133,7 +133,7 @@ fn result_file_reads_back_against_independent_solves() {
     // And against the closed form (Eq. 33, c = 0): the accurate solver's
     // stated 1e-9 relative accuracy.
     let v_ball = read(&file, "outcomes/v_ball_out");
-    for (row, scenario) in expected_rows.iter().enumerate().filter(|(_, s)| s.law().damping == 0.0) {
+    for (row, scenario) in expected_rows.iter().enumerate().filter(|(_, s)| s.paper_law().damping == 0.0) {
         let exact = closed::elastic(scenario).expect("c = 0 has a closed form").unwrap();
         let error = (v_ball[row] - exact.v_ball_out).abs() / exact.v_ball_out;
         assert!(error < 1e-9, "row {row}: relative error {error:e}");
