@@ -35,7 +35,7 @@ pub enum RunError {
 }
 
 /// What a run produced.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct RunSummary {
     pub path: PathBuf,
     pub scenarios: u64,
@@ -246,4 +246,34 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
         .collect();
     let path = writer.finish()?;
     Ok(RunSummary { path, scenarios: total, failures })
+}
+
+/// What [`run_file`] did: the file given, the result file and the counts.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct RunReport {
+    pub file: PathBuf,
+    pub summary: RunSummary,
+    pub seconds: f64,
+}
+
+/// Load and run one experiment file into `out/NAME.h5`.
+pub fn run_file(file: &Path, out: &Path) -> Result<RunReport, String> {
+    let experiment = crate::experiment::load(file).map_err(|e| e.to_string())?;
+    let started = std::time::Instant::now();
+    let summary = run(&experiment, out, true).map_err(|e| e.to_string())?;
+    Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
+}
+
+impl crate::Printable for RunReport {
+    fn text(&self) -> String {
+        let failures: Vec<String> = self.summary.failures.iter().map(|(solver, n)| format!("{solver}: {n} failed")).collect();
+        format!(
+            "{}: {} scenarios -> {} ({}; {:.1} s)\n",
+            self.file.display(),
+            self.summary.scenarios,
+            self.summary.path.display(),
+            failures.join(", "),
+            self.seconds
+        )
+    }
 }

@@ -1,72 +1,94 @@
 //! `kick leg`: effective mass of the articulated leg (Eq. 11, kick-leg) and
 //! the 1D exit speed that follows with m_f = m_eff (Section 14.1).
 
-use crate::output::{json, CliResult, Format};
-use kick_core::Scenario;
+use crate::printable::Printable;
+use kick_core::{Outcome, Scenario};
 use kick_leg::{
     anthropometry::{DE_LEVA_BODY_MASS, DE_LEVA_STATURE},
-    exit_outcome, AnkleJoint, HipSupport, Impact, Leg, Pose, Variant,
+    exit_outcome, AnkleJoint, HipSupport, Impact, Leg, LegEffectiveMass, Pose, Variant,
 };
 use nalgebra::Vector3;
+use serde::ser::{Serialize, Serializer};
 use serde_json::{json as value, Value};
+use std::fmt::Write as _;
+use std::path::PathBuf;
 
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    /// Knee flexion, degrees (0 = straight)
-    #[arg(long, allow_negative_numbers = true)]
-    knee: f64,
-    /// Ankle plantarflexion from neutral, degrees (0 = foot at right angles to the shank)
-    #[arg(long, allow_negative_numbers = true)]
-    ankle: f64,
-    /// Thigh angle from the downward vertical, degrees, positive forward
-    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
-    hip: f64,
-    /// Ankle rigid during contact (default: a free hinge)
-    #[arg(long, conflicts_with = "ankle_stiffness")]
-    locked_ankle: bool,
-    /// Ankle torsional stiffness, N m/rad: leg and ball integrated together, m_eff = the 1D-equivalent mass
-    #[arg(long, allow_negative_numbers = true)]
-    ankle_stiffness: Option<f64>,
-    /// Knee rigid during contact (default: a free hinge)
-    #[arg(long)]
-    locked_knee: bool,
-    /// Let the hip translate freely (default: pinned hip)
-    #[arg(long)]
-    free_hip: bool,
-    /// Spatial leg (ball-joint hip); enables --abduction, --rotation, --lateral-offset
-    #[arg(long)]
-    spatial: bool,
-    /// Spatial: hip abduction, degrees
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-    abduction: f64,
-    /// Spatial: thigh rotation about its long axis, degrees
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-    rotation: f64,
-    /// Spatial: contact offset along the foot's mediolateral axis, m
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-    lateral_offset: f64,
-    /// Contact point from the ankle along the foot, fraction of foot length
-    #[arg(long, default_value_t = 0.65, allow_negative_numbers = true)]
-    contact: f64,
-    /// Impact direction in the sagittal plane, degrees above horizontal-forward
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-    direction: f64,
-    /// Body mass, kg [de Leva's reference subject]
-    #[arg(long, default_value_t = DE_LEVA_BODY_MASS, allow_negative_numbers = true)]
-    body_mass: f64,
-    /// Stature, m [de Leva's reference subject]
-    #[arg(long, default_value_t = DE_LEVA_STATURE, allow_negative_numbers = true)]
-    height: f64,
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    format: Format,
-    /// Also write the figure data to DIR (kick-runner's HDF5 sweep layout):
-    /// leg_effective_mass.h5 (knee 0-120 x ankle 0-90 deg, locked and free
-    /// ankle) and leg_exit_speed.h5 (v_b+ vs m_f); other settings as given
-    #[arg(long, value_name = "DIR")]
-    sweep_out: Option<std::path::PathBuf>,
+/// The leg, its pose and the impact, as given (angles in degrees).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LegSettings {
+    /// Knee flexion (0 = straight).
+    pub knee: f64,
+    /// Ankle plantarflexion from neutral (0 = foot at right angles to the shank).
+    pub ankle: f64,
+    /// Thigh angle from the downward vertical, positive forward.
+    pub hip: f64,
+    pub locked_ankle: bool,
+    /// Ankle torsional stiffness, N m/rad: leg and ball integrated together.
+    pub ankle_stiffness: Option<f64>,
+    pub locked_knee: bool,
+    pub free_hip: bool,
+    /// Spatial leg (ball-joint hip): abduction, rotation and lateral offset apply.
+    pub spatial: bool,
+    pub abduction: f64,
+    pub rotation: f64,
+    /// Contact offset along the foot's mediolateral axis, m.
+    pub lateral_offset: f64,
+    /// Contact point from the ankle along the foot, fraction of foot length.
+    pub contact: f64,
+    /// Impact direction in the sagittal plane, degrees above horizontal-forward.
+    pub direction: f64,
+    pub body_mass: f64,
+    pub height: f64,
+    /// Also write the figure data (HDF5) and figures here.
+    pub sweep_out: Option<PathBuf>,
+    /// The command that asked, for the files' provenance.
+    pub command: String,
 }
 
-pub fn run(args: Args) -> CliResult {
+impl Default for LegSettings {
+    /// The documented default pose: knee 30°, ankle 60°, thigh 10° forward,
+    /// free knee and ankle, pinned hip, planar, instep at 0.65 of the foot,
+    /// horizontal impact, de Leva's reference subject.
+    fn default() -> Self {
+        LegSettings {
+            knee: 30.0,
+            ankle: 60.0,
+            hip: 10.0,
+            locked_ankle: false,
+            ankle_stiffness: None,
+            locked_knee: false,
+            free_hip: false,
+            spatial: false,
+            abduction: 0.0,
+            rotation: 0.0,
+            lateral_offset: 0.0,
+            contact: 0.65,
+            direction: 0.0,
+            body_mass: DE_LEVA_BODY_MASS,
+            height: DE_LEVA_STATURE,
+            sweep_out: None,
+            command: "kick leg".into(),
+        }
+    }
+}
+
+/// The leg's effective mass and the 1D contact it gives.
+#[derive(Debug, Clone)]
+pub struct LegReport {
+    pub settings: LegSettings,
+    pub mass: LegEffectiveMass,
+    pub leg_mass: f64,
+    pub outcome: Outcome,
+    /// "free", "locked" or "elastic, κ N m/rad".
+    pub ankle: String,
+    pub elastic: Option<kick_leg::ankle::ElasticAnkle>,
+    pub written: Vec<PathBuf>,
+}
+
+/// Effective mass of the leg (Eq. 11) and the 1D exit speed with m_f = m_eff;
+/// with `sweep_out`, the figure data and figures too.
+pub fn leg(settings: &LegSettings) -> Result<LegReport, String> {
+    let args = settings;
     let mut leg = Leg::de_leva(args.body_mass, args.height).map_err(|e| e.to_string())?;
     leg.hip = if args.free_hip { HipSupport::Free } else { HipSupport::Pinned };
     leg.variant = if args.spatial { Variant::Spatial } else { Variant::Planar };
@@ -81,6 +103,9 @@ pub fn run(args: Args) -> CliResult {
     if !args.direction.is_finite() {
         return Err(format!("invalid `direction` = {}: must be finite", args.direction));
     }
+    if args.locked_ankle && args.ankle_stiffness.is_some() {
+        return Err("--locked-ankle and --ankle-stiffness exclude each other".into());
+    }
     let angle = args.direction.to_radians();
     let impact = Impact {
         contact_fraction: args.contact,
@@ -93,7 +118,7 @@ pub fn run(args: Args) -> CliResult {
     let (mass, outcome, ankle, elastic) = match (args.locked_ankle, args.ankle_stiffness) {
         (_, Some(k)) => {
             let e = kick_leg::ankle::elastic_ankle(&leg, &pose, &impact, k, &base).map_err(|e| e.to_string())?;
-            let mass = kick_leg::LegEffectiveMass { effective_mass: e.equivalent_mass, ..e.interpolated };
+            let mass = LegEffectiveMass { effective_mass: e.equivalent_mass, ..e.interpolated };
             (mass, e.outcome, format!("elastic, {k} N m/rad"), Some(e))
         }
         (locked, None) => {
@@ -103,65 +128,82 @@ pub fn run(args: Args) -> CliResult {
             (mass, outcome, if locked { "locked".into() } else { "free".into() }, None)
         }
     };
+    let mut written = Vec::new();
     if let Some(dir) = &args.sweep_out {
-        for path in write_sweeps(dir, &leg, &pose, &impact, &base)? {
-            eprintln!("wrote {}", path.display());
-        }
-        for path in draw_figures(dir, &dir.join("figures"))? {
-            eprintln!("wrote {}", path.display());
-        }
+        written.extend(write_sweeps(dir, &leg, &pose, &impact, &base, &args.command)?);
+        written.extend(draw_figures(dir, &dir.join("figures"))?);
     }
-    match args.format {
-        Format::Json => {
-            let object: Value = value!({
-                "effective_mass": mass.effective_mass,
-                "locked_ankle": mass.locked_ankle,
-                "free_ankle": mass.free_ankle,
-                "locked_share": mass.locked_share,
-                "ankle_inertia": mass.ankle_inertia,
-                "leg_mass": leg.segments.total_mass(),
-                "ankle": ankle,
-                "hip": if args.free_hip { "free" } else { "pinned" },
-                "knee": if args.locked_knee { "locked" } else { "free" },
-                "variant": if args.spatial { "spatial" } else { "planar" },
-                "v_ball_out": outcome.v_ball_out,
-                "v_foot_out": outcome.v_foot_out,
-                "speed_ratio": outcome.speed_ratio,
-                "contact_time": outcome.contact_time,
-                "solver": "accurate",
-            });
-            let mut object = object;
-            if let Some(e) = &elastic {
-                object["interpolated_mass"] = value!(e.interpolated.effective_mass);
-                object["max_ankle_deflection"] = value!(e.coupled.max_ankle_deflection);
-                object["coupled_v_ball_out"] = value!(e.coupled.v_ball_out);
-                object["coupled_contact_time"] = value!(e.coupled.contact_time);
-            }
-            println!("{}", json(&object)?);
-        }
-        Format::Text => {
-            println!("leg: de Leva (1996) male, {} kg, {} m, {} hip, {} knee, {} ankle ({})",
-                args.body_mass, args.height, if args.free_hip { "free" } else { "pinned" },
-                if args.locked_knee { "locked" } else { "free" }, ankle,
-                if args.spatial { "spatial" } else { "planar" });
-            println!("{:<20} {:>12.6} kg", "effective_mass", mass.effective_mass);
-            println!("{:<20} {:>12.6} kg", "locked_ankle", mass.locked_ankle);
-            println!("{:<20} {:>12.6} kg", "free_ankle", mass.free_ankle);
-            println!("{:<20} {:>12.6}", "locked_share", mass.locked_share);
-            println!("{:<20} {:>12.6} kg", "leg_mass", leg.segments.total_mass());
-            if let Some(e) = &elastic {
-                println!("{:<20} {:>12.6} kg (series-spring interpolation, for comparison)", "interpolated_mass", e.interpolated.effective_mass);
-                println!("{:<20} {:>12.6} rad (coupled leg-ball run, frozen geometry)", "max_ankle_deflection", e.coupled.max_ankle_deflection);
-                println!("{:<20} {:>12.6e} s (coupled leg-ball run)", "coupled_contact_time", e.coupled.contact_time);
-            }
-            println!("1D contact with m_f = effective_mass (Table 1 otherwise, accurate solver):");
-            println!("{:<20} {:>12.6} m/s", "v_ball_out", outcome.v_ball_out);
-            println!("{:<20} {:>12.6} m/s", "v_foot_out", outcome.v_foot_out);
-            println!("{:<20} {:>12.6}", "speed_ratio", outcome.speed_ratio);
-            println!("{:<20} {:>12.6e} s", "contact_time", outcome.contact_time);
-        }
+    Ok(LegReport { settings: settings.clone(), mass, leg_mass: leg.segments.total_mass(), outcome, ankle, elastic, written })
+}
+
+impl LegReport {
+    fn labels(&self) -> (&'static str, &'static str, &'static str) {
+        let s = &self.settings;
+        (
+            if s.free_hip { "free" } else { "pinned" },
+            if s.locked_knee { "locked" } else { "free" },
+            if s.spatial { "spatial" } else { "planar" },
+        )
     }
-    Ok(())
+}
+
+impl Serialize for LegReport {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let (hip, knee, variant) = self.labels();
+        let (mass, outcome) = (&self.mass, &self.outcome);
+        let mut object: Value = value!({
+            "effective_mass": mass.effective_mass,
+            "locked_ankle": mass.locked_ankle,
+            "free_ankle": mass.free_ankle,
+            "locked_share": mass.locked_share,
+            "ankle_inertia": mass.ankle_inertia,
+            "leg_mass": self.leg_mass,
+            "ankle": self.ankle,
+            "hip": hip,
+            "knee": knee,
+            "variant": variant,
+            "v_ball_out": outcome.v_ball_out,
+            "v_foot_out": outcome.v_foot_out,
+            "speed_ratio": outcome.speed_ratio,
+            "contact_time": outcome.contact_time,
+            "solver": "accurate",
+        });
+        if let Some(e) = &self.elastic {
+            object["interpolated_mass"] = value!(e.interpolated.effective_mass);
+            object["max_ankle_deflection"] = value!(e.coupled.max_ankle_deflection);
+            object["coupled_v_ball_out"] = value!(e.coupled.v_ball_out);
+            object["coupled_contact_time"] = value!(e.coupled.contact_time);
+        }
+        object.serialize(serializer)
+    }
+}
+
+impl Printable for LegReport {
+    fn text(&self) -> String {
+        let (hip, knee, variant) = self.labels();
+        let (s, mass, outcome) = (&self.settings, &self.mass, &self.outcome);
+        let mut w = String::new();
+        let _ = writeln!(w, "leg: de Leva (1996) male, {} kg, {} m, {hip} hip, {knee} knee, {} ankle ({variant})", s.body_mass, s.height, self.ankle);
+        let _ = writeln!(w, "{:<20} {:>12.6} kg", "effective_mass", mass.effective_mass);
+        let _ = writeln!(w, "{:<20} {:>12.6} kg", "locked_ankle", mass.locked_ankle);
+        let _ = writeln!(w, "{:<20} {:>12.6} kg", "free_ankle", mass.free_ankle);
+        let _ = writeln!(w, "{:<20} {:>12.6}", "locked_share", mass.locked_share);
+        let _ = writeln!(w, "{:<20} {:>12.6} kg", "leg_mass", self.leg_mass);
+        if let Some(e) = &self.elastic {
+            let _ = writeln!(w, "{:<20} {:>12.6} kg (series-spring interpolation, for comparison)", "interpolated_mass", e.interpolated.effective_mass);
+            let _ = writeln!(w, "{:<20} {:>12.6} rad (coupled leg-ball run, frozen geometry)", "max_ankle_deflection", e.coupled.max_ankle_deflection);
+            let _ = writeln!(w, "{:<20} {:>12.6e} s (coupled leg-ball run)", "coupled_contact_time", e.coupled.contact_time);
+        }
+        let _ = writeln!(w, "1D contact with m_f = effective_mass (Table 1 otherwise, accurate solver):");
+        let _ = writeln!(w, "{:<20} {:>12.6} m/s", "v_ball_out", outcome.v_ball_out);
+        let _ = writeln!(w, "{:<20} {:>12.6} m/s", "v_foot_out", outcome.v_foot_out);
+        let _ = writeln!(w, "{:<20} {:>12.6}", "speed_ratio", outcome.speed_ratio);
+        let _ = writeln!(w, "{:<20} {:>12.6e} s", "contact_time", outcome.contact_time);
+        w
+    }
+    fn written(&self) -> &[PathBuf] {
+        &self.written
+    }
 }
 
 /// Knee and ankle angles of the effective-mass figure, degrees.
@@ -178,8 +220,8 @@ fn mass_axis() -> Vec<f64> {
 /// effective mass against knee flexion for several ankle angles (locked and
 /// free ankle), and the 1D exit speed against effective mass (Section 14.1).
 fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<std::path::PathBuf>, String> {
-    use kick_runner::figures::{color, save_grid, Panel, Series};
-    use kick_runner::SweepData;
+    use crate::figures::{color, save_grid, Panel, Series};
+    use crate::SweepData;
     use plotters::prelude::{RGBColor, SeriesLabelPosition};
     let grid = SweepData::read(&results.join("leg_effective_mass.h5")).map_err(|e| e.to_string())?;
     let knee = grid.parameter("knee").map_err(|e| e.to_string())?;
@@ -237,11 +279,11 @@ fn write_sweeps(
     pose: &Pose,
     impact: &Impact,
     base: &Scenario,
+    command: &str,
 ) -> Result<Vec<std::path::PathBuf>, String> {
-    use kick_runner::{Column, OutcomeSet, Provenance, SweepWriter};
+    use crate::{Column, OutcomeSet, Provenance, SweepWriter};
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    let command: Vec<String> = std::env::args().collect();
-    let text = command.join(" ");
+    let text = command.to_string();
     let set = |name: &str, columns: Vec<Column>| OutcomeSet {
         solver: name.into(),
         settings: "kick-leg Eq. 11 (de Leva 1996) + 1D accurate solver".into(),

@@ -49,8 +49,8 @@ use kick_identify::laws::{LawComparison, RESTITUTION_LAWS};
 use kick_identify::profile::{IdentifiabilityStudy, MisfitMap, Profile};
 use kick_identify::table2::Table2Fit;
 use kick_identify::FitParameter;
-use kick_runner::h5::{read_history, H5Error};
-use kick_runner::{Column, OutcomeSet, Provenance, ResultFile, ResultWriter, SweepData, SweepWriter};
+use crate::h5::{read_history, H5Error};
+use crate::{Column, OutcomeSet, Provenance, ResultFile, ResultWriter, SweepData, SweepWriter};
 use std::path::{Path, PathBuf};
 
 fn text(e: H5Error) -> String {
@@ -113,7 +113,7 @@ pub fn write_laws(
         .collect();
     let mut writer = SweepWriter::create(path, provenance, &parameters, &sets, all.len() as u64).map_err(text)?;
     let names: Vec<String> = all.iter().map(|c| c.name.clone()).collect();
-    kick_runner::h5::write_strings(writer.file(), path, "scenario_names", &names).map_err(text)?;
+    crate::h5::write_strings(writer.file(), path, "scenario_names", &names).map_err(text)?;
     for (row, c) in all.iter().enumerate() {
         let mut values = c.scenario.values().to_vec();
         values.push(c.restitution);
@@ -132,12 +132,12 @@ pub fn write_laws(
     }
     let w = writer.file();
     let group = w.create_group("restitution_formulas").map_err(|e| format!("{}: {e}", path.display()))?;
-    kick_runner::h5::write_str_attr(&group, path, "description", "restitution each law gives when asked for target_restitution (baseline masses, k, n, V0; accurate solver)")
+    crate::h5::write_str_attr(&group, path, "description", "restitution each law gives when asked for target_restitution (baseline masses, k, n, V0; accurate solver)")
         .map_err(text)?;
-    kick_runner::h5::write_column(&group, path, &Column::new("target_restitution", "1"), formula_targets).map_err(text)?;
+    crate::h5::write_column(&group, path, &Column::new("target_restitution", "1"), formula_targets).map_err(text)?;
     for (k, law) in RESTITUTION_LAWS.iter().enumerate() {
         let column: Vec<f64> = formulas.iter().map(|row| row[k]).collect();
-        kick_runner::h5::write_column(&group, path, &Column::new(law.name(), "1"), &column).map_err(text)?;
+        crate::h5::write_column(&group, path, &Column::new(law.name(), "1"), &column).map_err(text)?;
     }
     writer.finish().map_err(text)
 }

@@ -1,36 +1,59 @@
 //! `kick bench`: work–precision of every 1D solver, the headline ratios, and
 //! sweep throughput, measured in one run of one binary.
 
-use crate::output::CliResult;
+use crate::figures::{save_grid, Panel, Series};
+use crate::h5::{write_f64_attr, write_strings, Column, OutcomeSet, SweepData, SweepWriter};
+use crate::printable::Printable;
+use crate::sample::SampledSweep;
+use crate::Provenance;
 use kick_compliant::precision::{self, PrecisionPoint};
 use kick_compliant::SolverChoice;
 use kick_core::Solver;
-use kick_runner::figures::{save_grid, Panel, Series};
-use kick_runner::h5::{write_f64_attr, write_strings, Column, OutcomeSet, SweepData, SweepWriter};
-use kick_runner::sample::SampledSweep;
-use kick_runner::Provenance;
 use plotters::prelude::SeriesLabelPosition;
 use rayon::prelude::*;
+use serde::Serialize;
+use std::io::Write;
 use std::path::PathBuf;
 use std::time::Instant;
 
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    /// Directory for work_precision.h5 (figures go to DIR/figures)
-    #[arg(long, default_value = "results")]
-    out: PathBuf,
-    /// Least wall time per measured point, s
-    #[arg(long, default_value_t = 0.3)]
-    min_time: f64,
-    /// Scenarios in the throughput sweep
-    #[arg(long, default_value_t = 200_000)]
-    sweep_samples: u64,
-    /// Short variant for CI: a few ladder points, little time each
-    #[arg(long)]
-    quick: bool,
-    /// Also write a Markdown section with the measured numbers here
-    #[arg(long)]
-    report: Option<PathBuf>,
+/// What to measure and where to write it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BenchSettings {
+    /// Directory for work_precision.h5 (figures go to DIR/figures).
+    pub out: PathBuf,
+    /// Least wall time per measured point, s.
+    pub min_time: f64,
+    /// Scenarios in the throughput sweep.
+    pub sweep_samples: u64,
+    /// Short variant for CI: a few ladder points, little time each.
+    pub quick: bool,
+    /// Also write a Markdown section with the measured numbers here.
+    pub report: Option<PathBuf>,
+}
+
+impl Default for BenchSettings {
+    fn default() -> Self {
+        BenchSettings { out: PathBuf::from("results"), min_time: 0.3, sweep_samples: 200_000, quick: false, report: None }
+    }
+}
+
+/// The headline numbers of a bench run and the files it wrote.
+#[derive(Debug, Clone, Serialize)]
+pub struct BenchReport {
+    /// seed-rk4 / auto cost ratio (median of 5 alternating measurements).
+    pub cost_ratio: f64,
+    pub auto_max_error: f64,
+    pub seed_max_error: f64,
+    pub sweep_per_second_1_thread: f64,
+    pub sweep_per_second_2_threads: f64,
+    #[serde(skip)]
+    pub written: Vec<PathBuf>,
+}
+
+impl Printable for BenchReport {
+    fn text(&self) -> String {
+        self.written.iter().map(|p| format!("-> {}\n", p.display())).collect()
+    }
 }
 
 const COLUMNS: [(&str, &str); 3] = [
@@ -53,7 +76,10 @@ fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) -> Res
     Ok(sweep.samples as f64 / started.elapsed().as_secs_f64())
 }
 
-pub fn run(args: Args) -> CliResult {
+/// Measure every solver's work and precision, the headline ratios and the
+/// sweep throughput (one run, one binary); write work_precision.h5, its
+/// figure and, if asked, the Markdown section. Progress lines go to `log`.
+pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, String> {
     let cases = precision::cases().map_err(|e| e.to_string())?;
     let mut ladder = precision::ladder();
     let min_time = if args.quick { 0.02 } else { args.min_time };
@@ -66,7 +92,8 @@ pub fn run(args: Args) -> CliResult {
     for (name, setting) in ladder {
         let solver = precision::solver(name, setting).map_err(|e| e.to_string())?;
         let point = precision::measure(name, setting, &solver, &cases, min_time).map_err(|e| format!("{name}: {e}"))?;
-        println!(
+        let _ = writeln!(
+            log,
             "{:<16} {:>9.2e}  error {:>9.2e}  {:>9.2} µs/scenario  {:>7.0} evaluations",
             point.solver,
             point.setting,
@@ -91,7 +118,8 @@ pub fn run(args: Args) -> CliResult {
     ratios.sort_by(f64::total_cmp);
     let ratio = ratios[ratios.len() / 2];
     let (seed, auto) = (seed.ok_or("no seed point")?, auto.ok_or("no auto point")?);
-    println!(
+    let _ = writeln!(
+        log,
         "\nauto (default) vs seed-rk4 at 5 µs: error {:.2e} vs {:.2e}; cost ratio {:.1}x (median of 5 alternating runs; {:.1}-{:.1}x)",
         auto.max_error, seed.max_error, ratio, ratios[0], ratios[ratios.len() - 1]
     );
@@ -105,7 +133,8 @@ pub fn run(args: Args) -> CliResult {
     ones.sort_by(f64::total_cmp);
     twos.sort_by(f64::total_cmp);
     let (one, two) = (ones[1], twos[1]);
-    println!(
+    let _ = writeln!(
+        log,
         "sweep of {} sampled scenarios (auto, summary only): {:.0}/s on 1 thread, {:.0}/s on 2 threads, speed-up {:.2}x \
          (medians of 3 alternating runs; 2 threads {:.0}-{:.0}/s)",
         sweep.samples, one, two, two / one, twos[0], twos[2]
@@ -142,16 +171,23 @@ pub fn run(args: Args) -> CliResult {
         write_f64_attr(writer.file(), &path, name, value).map_err(|e| e.to_string())?;
     }
     let path = writer.finish().map_err(|e| e.to_string())?;
-    let figures = draw(&path, &args.out.join("figures"))?;
-    println!("-> {} and {}", path.display(), figures.join(", "));
+    let mut written = vec![path.clone()];
+    written.extend(draw(&path, &args.out.join("figures"))?);
     if let Some(report) = &args.report {
         let depth = report.parent().map_or(0, |p| p.components().count());
         let figure = format!("{}{}/figures/work_precision.png", "../".repeat(depth), args.out.display());
         let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples };
         std::fs::write(report, measured.markdown(&figure, &text)).map_err(|e| format!("cannot write {}: {e}", report.display()))?;
-        println!("-> {}", report.display());
+        written.push(report.clone());
     }
-    Ok(())
+    Ok(BenchReport {
+        cost_ratio: ratio,
+        auto_max_error: auto.max_error,
+        seed_max_error: seed.max_error,
+        sweep_per_second_1_thread: one,
+        sweep_per_second_2_threads: two,
+        written,
+    })
 }
 
 struct Measured<'a> {
@@ -231,13 +267,13 @@ impl Measured<'_> {
 }
 
 /// Error against cost, log–log, one curve per solver, from the file.
-fn draw(path: &std::path::Path, out: &std::path::Path) -> Result<Vec<String>, String> {
+fn draw(path: &std::path::Path, out: &std::path::Path) -> Result<Vec<PathBuf>, String> {
     let data = SweepData::read(path).map_err(|e| e.to_string())?;
     let names = data.names.clone().ok_or("work_precision.h5 has no solver names")?;
     let set = data.set("bench").map_err(|e| e.to_string())?;
     let error = set.column("max_error").ok_or("no max_error")?;
     let seconds = set.column("seconds_per_scenario").ok_or("no seconds_per_scenario")?;
-    let colors = kick_runner::figures::COLORS;
+    let colors = crate::figures::COLORS;
     let mut solvers: Vec<&str> = Vec::new();
     for n in &names {
         if !solvers.contains(&n.as_str()) {
@@ -266,6 +302,5 @@ fn draw(path: &std::path::Path, out: &std::path::Path) -> Result<Vec<String>, St
         y_from_zero: false,
         legend: SeriesLabelPosition::UpperRight,
     };
-    let files = save_grid(out, "work_precision", "kick bench", (1, 1), &[panel]).map_err(|e| e.to_string())?;
-    Ok(files.iter().map(|p| p.display().to_string()).collect())
+    save_grid(out, "work_precision", "kick bench", (1, 1), &[panel]).map_err(|e| e.to_string())
 }

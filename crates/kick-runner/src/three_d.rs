@@ -3,23 +3,15 @@
 //! `DIR/figures/` (spin and speed against the swept axis; for the offset
 //! sweep also the speed–spin trade-off).
 
-use crate::output::CliResult;
-use kick_3d::sweep::{Experiment3d, SweepPoint, COLUMNS};
-use kick_runner::figures::{save_grid, Panel, Series};
-use kick_runner::h5::{Column, OutcomeSet, SweepWriter};
-use kick_runner::Provenance;
+use crate::figures::{save_grid, Panel, Series};
+use crate::h5::{Column, OutcomeSet, SweepWriter};
+use crate::printable::Printable;
+use crate::Provenance;
+use kick_3d::sweep::{Axis, Experiment3d, SweepPoint, COLUMNS};
 use plotters::prelude::RGBColor;
+use serde::Serialize;
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-
-#[derive(clap::Args, Debug)]
-pub struct Args {
-    /// Experiment files (experiments/3d/*.toml)
-    #[arg(required = true)]
-    files: Vec<PathBuf>,
-    /// Directory for the result files (figures go to DIR/figures)
-    #[arg(long, default_value = "results")]
-    out: PathBuf,
-}
 
 const BLUE: RGBColor = RGBColor(31, 119, 180);
 const RED: RGBColor = RGBColor(214, 39, 40);
@@ -64,21 +56,56 @@ fn figures(dir: &Path, name: &str, e: &Experiment3d, points: &[SweepPoint]) -> R
     save_grid(dir, name, &e.description, layout, &panels).map_err(|err| err.to_string())
 }
 
-pub fn run(args: Args) -> CliResult {
-    for file in &args.files {
+/// One 3D experiment file run: its points, result file and figures.
+#[derive(Debug, Clone, Serialize)]
+pub struct Run3d {
+    pub file: PathBuf,
+    pub axis: Axis,
+    pub points: Vec<SweepPoint>,
+    pub h5: PathBuf,
+    pub figures: Vec<PathBuf>,
+    pub seconds: f64,
+}
+
+/// Every 3D experiment file run, in order.
+#[derive(Debug, Clone, Serialize)]
+#[serde(transparent)]
+pub struct Run3dReport {
+    pub runs: Vec<Run3d>,
+}
+
+/// Run each 3D experiment file into `out/3d_NAME.h5` and draw its figures
+/// into `out/figures/`.
+pub fn run3d(files: &[PathBuf], out: &Path) -> Result<Run3dReport, String> {
+    let mut runs = Vec::new();
+    for file in files {
         let text = std::fs::read_to_string(file).map_err(|e| format!("{}: {e}", file.display()))?;
         let e = Experiment3d::parse(&text).map_err(|err| format!("{}: {err}", file.display()))?;
         let stem = file.file_stem().and_then(|s| s.to_str()).ok_or_else(|| format!("{}: no file name", file.display()))?;
         let name = format!("3d_{stem}");
         let started = std::time::Instant::now();
         let points = e.run().map_err(|err| format!("{}: {err}", file.display()))?;
-        std::fs::create_dir_all(&args.out).map_err(|err| format!("{}: {err}", args.out.display()))?;
-        let h5 = write_h5(&args.out.join(format!("{name}.h5")), file, &text, &e, &points)?;
-        let figs = figures(&args.out.join("figures"), &name, &e, &points)?;
-        println!("{}: {} points -> {} and {} figures ({:.2} s)", file.display(), points.len(), h5.display(), figs.len(), started.elapsed().as_secs_f64());
-        for p in &points {
-            println!("  {} = {:<8.4} speed {:>8.4} m/s  spin {:>8.2} rpm  launch angle {:>6.2} deg  azimuth {:>7.2} deg  slip {:.3e} s", e.axis.name(), p.value, p.speed, p.spin_rpm, p.launch_angle, p.launch_azimuth, p.slip_time);
-        }
+        std::fs::create_dir_all(out).map_err(|err| format!("{}: {err}", out.display()))?;
+        let h5 = write_h5(&out.join(format!("{name}.h5")), file, &text, &e, &points)?;
+        let figures = figures(&out.join("figures"), &name, &e, &points)?;
+        runs.push(Run3d { file: file.clone(), axis: e.axis, points, h5, figures, seconds: started.elapsed().as_secs_f64() });
     }
-    Ok(())
+    Ok(Run3dReport { runs })
+}
+
+impl Printable for Run3dReport {
+    fn text(&self) -> String {
+        let mut w = String::new();
+        for r in &self.runs {
+            let _ = writeln!(w, "{}: {} points -> {} and {} figures ({:.2} s)", r.file.display(), r.points.len(), r.h5.display(), r.figures.len(), r.seconds);
+            for p in &r.points {
+                let _ = writeln!(
+                    w,
+                    "  {} = {:<8.4} speed {:>8.4} m/s  spin {:>8.2} rpm  launch angle {:>6.2} deg  azimuth {:>7.2} deg  slip {:.3e} s",
+                    r.axis.name(), p.value, p.speed, p.spin_rpm, p.launch_angle, p.launch_azimuth, p.slip_time
+                );
+            }
+        }
+        w
+    }
 }

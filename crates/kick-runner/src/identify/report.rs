@@ -1,14 +1,14 @@
 //! `paper/laws.md` and `paper/identification.md`, written by `kick
 //! reproduce` from the HDF5 files of `kick laws` and `kick fit` (see
-//! `identify_files`). Every number in them is read from those files; the
+//! [`crate::identify::files`]). Every number in them is read from those files; the
 //! prose around the numbers states what they show only through comparisons
 //! made here on the numbers read.
 
-use crate::identify_files::{
+use crate::identify::files::{
     read_fit, read_identifiability, read_table2_fits, EstimateData, FitData, LawsData,
 };
 use kick_core::laws::LawKind;
-use kick_runner::ResultFile;
+use crate::ResultFile;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -512,7 +512,7 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, String> {
         w,
         "## Data formats\n\n\
          See the README section \"Identification and contact laws\" and the layouts in \
-         `crates/kick-cli/src/identify_files.rs`. Files here: {}.\n\n\
+         `crates/kick-runner/src/identify/files.rs`. Files here: {}.\n\n\
          ## Not covered\n\n\
          - One time offset for all channels (no per-channel delays or clock drift).\n\
          - The (k, c) misfit maps are stored in `{IDENTIFIABILITY}` but not drawn.\n\
