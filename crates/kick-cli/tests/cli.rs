@@ -104,3 +104,34 @@ fn simulate_takes_any_contact_law() {
         assert!(String::from_utf8_lossy(&out.stderr).contains(needle), "{args:?}");
     }
 }
+
+/// A reader that stops early (`kick check | head -1`) closes the pipe: the
+/// command ends quietly with its own status (0 here), no panic, no message.
+#[test]
+fn a_closed_stdout_ends_the_output_quietly() {
+    use std::io::{BufRead, BufReader};
+    use std::process::Stdio;
+    for (args, lines) in [
+        (&["check"][..], 0),
+        (&["check"][..], 1),
+        (&["simulate", "--history", "1e-8"][..], 1),
+        (&["check", "--format", "json"][..], 0),
+    ] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_kick"))
+            .args(args)
+            .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("kick runs");
+        let mut stdout = BufReader::new(child.stdout.take().expect("stdout"));
+        for _ in 0..lines {
+            let mut line = String::new();
+            stdout.read_line(&mut line).expect("a line");
+        }
+        drop(stdout);
+        let out = child.wait_with_output().expect("kick ends");
+        assert_eq!(out.status.code(), Some(0), "{args:?} after {lines} lines: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(out.stderr.is_empty(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+}
