@@ -33,7 +33,7 @@ fn the_law_choice_survives_parameter_changes_and_routes_auto() {
     assert_eq!(changed.restitution_target(), Some(0.7));
     // No closed form and no closed-form return for the other laws.
     assert!(!ClosedForm::applies(&changed.with(Parameter::Damping, 0.0).unwrap()));
-    assert_eq!(Auto::path(&changed), "reduced");
+    assert_eq!(Auto::path(&changed), kick_core::SolverPath::Reduced);
     assert!(matches!(ClosedForm.solve(&changed), Err(KickError::NotApplicable { .. })));
     // Back to the paper's law.
     let paper = changed.with_law(LawKind::PowerLaw, None).unwrap();

@@ -20,7 +20,7 @@ fn matches_the_closed_forms() {
         let series = Series::default().solve(&scenario).unwrap();
         let error = max_relative_error(&series, &exact);
         assert!(error < 1e-10, "{name}: {error:e}");
-        assert_eq!(series.method, "series");
+        assert_eq!(series.method, kick_core::SolverPath::Series);
     }
 }
 

@@ -8,7 +8,7 @@
 //! - [`undamped_return`]: the undamped restitution phase of any run of the
 //!   paper's law, from δ_max, with or without a constant drive.
 
-use kick_core::{
+use kick_core::{SolverPath, 
     roots, special, ContactLaw, EnergyBudget, KickError, Outcome, Scenario, StopReason,
 };
 
@@ -93,7 +93,7 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
         },
         stop: StopReason::ClosedForm { t: contact_time },
         evaluations: 0,
-        method: "closed-form",
+        method: SolverPath::ClosedForm,
     };
     crate::ode::check_finite(&outcome)
 }

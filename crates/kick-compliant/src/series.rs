@@ -47,7 +47,7 @@
 //! No allocation: coefficient arrays live on the stack.
 
 use crate::closed::{released_energy, undamped_return, CompressionEnd};
-use kick_core::{roots, KickError, LawKind, Outcome, Scenario, Solver, StopReason};
+use kick_core::{roots, KickError, LawKind, Outcome, Scenario, Solver, SolverPath, StopReason};
 
 /// Order of the Taylor steps.
 pub const ORDER: usize = 16;
@@ -683,7 +683,7 @@ impl Solver for Series {
         }
         let mut outcome = undamped_return(scenario, end)?;
         outcome.evaluations = powers;
-        outcome.method = "series";
+        outcome.method = SolverPath::Series;
         outcome.stop = StopReason::Separated { t: outcome.contact_time };
         Ok(outcome)
     }

@@ -368,6 +368,23 @@ impl AnyLaw {
         AnyLaw::new(LawKind::from_name(name)?, parameters)
     }
 
+    /// The law's numbers as solved, by name (result files store each as a
+    /// typed attribute): k, c, n of the paper's law; k, n, χ, the target e
+    /// and reference V0 of a hysteresis law; k (N/m) and c of Kelvin–Voigt.
+    pub fn parameters(&self) -> Vec<(&'static str, f64)> {
+        match *self {
+            AnyLaw::PowerLaw(p) => vec![("stiffness", p.stiffness), ("damping", p.damping), ("exponent", p.exponent)],
+            AnyLaw::Hysteresis(h) => vec![
+                ("stiffness", h.stiffness),
+                ("exponent", h.exponent),
+                ("hysteresis", h.hysteresis),
+                ("target_restitution", h.target_restitution),
+                ("impact_speed", h.impact_speed),
+            ],
+            AnyLaw::KelvinVoigt(k) => vec![("stiffness", k.stiffness), ("damping", k.damping)],
+        }
+    }
+
     pub fn kind(&self) -> LawKind {
         match self {
             AnyLaw::PowerLaw(_) => LawKind::PowerLaw,

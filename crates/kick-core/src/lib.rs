@@ -21,7 +21,7 @@ use std::ops::ControlFlow;
 pub use law::{ContactLaw, PowerLawContact};
 pub use laws::{AnyLaw, LawKind};
 pub use outcome::{
-    ContactPhase, EnergyBudget, ExitVelocities, Grid, History, Outcome, Sample, Spacing, StopReason, HISTORY_COLUMNS,
+    ContactPhase, EnergyBudget, ExitVelocities, Grid, History, Outcome, Sample, SolverPath, Spacing, StopReason, HISTORY_COLUMNS,
     MAX_HISTORY_SAMPLES, OBSERVABLES,
 };
 pub use parameters::{Level, ParameterDef, SetParameter, Value, PARAMETERS};

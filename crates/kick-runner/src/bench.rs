@@ -2,7 +2,7 @@
 //! sweep throughput, measured in one run of one binary.
 
 use crate::figures::{save_grid, Panel, Series};
-use crate::h5::{write_f64_attr, write_strings, Column, OutcomeSet, SweepData, SweepWriter};
+use crate::h5::{write_f64_attr, write_strings, Column, OutcomeSet, Setting, SweepData, SweepWriter};
 use crate::printable::Printable;
 use crate::sample::SampledSweep;
 use crate::Provenance;
@@ -147,8 +147,8 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let provenance = Provenance::now("work_precision", "kick bench", &text);
     let set = OutcomeSet {
         solver: "bench".into(),
-        settings: format!("references: closed forms, else accurate at {:e}", precision::REFERENCE_TOLERANCE),
-        numeric_settings: vec![],
+        // References: closed forms, else accurate at this tolerance.
+        settings: Setting::numbers([("reference_tolerance", precision::REFERENCE_TOLERANCE)]),
         columns: COLUMNS.iter().map(|(n, u)| Column::new(n, u)).collect(),
     };
     let parameters = [Column::new("setting", "tolerance (1) or step (s)")];

@@ -281,13 +281,15 @@ fn write_sweeps(
     base: &Scenario,
     command: &str,
 ) -> Result<Vec<std::path::PathBuf>, String> {
-    use crate::{Column, OutcomeSet, Provenance, SweepWriter};
+    use crate::{Column, OutcomeSet, Provenance, Setting, SweepWriter};
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let text = command.to_string();
     let set = |name: &str, columns: Vec<Column>| OutcomeSet {
         solver: name.into(),
-        settings: "kick-leg Eq. 11 (de Leva 1996) + 1D accurate solver".into(),
-        numeric_settings: Vec::new(),
+        settings: vec![
+            ("effective_mass".into(), Setting::Text("Eq. 11, de Leva (1996) segments".into())),
+            ("exit_solver".into(), Setting::Text("accurate".into())),
+        ],
         columns,
     };
     let m_and_v = || vec![Column::new("effective_mass", "kg"), Column::new("v_ball_out", "m/s")];

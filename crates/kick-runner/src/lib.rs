@@ -32,7 +32,7 @@ pub mod table2;
 pub mod three_d;
 
 pub use experiment::{Experiment, ExperimentError, Output, Scenarios};
-pub use h5::{Column, OutcomeSet, ResultFile, ResultWriter, SweepData, SweepWriter};
+pub use h5::{Column, OutcomeSet, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};
 pub use printable::{json, set_threads, Printable};
 pub use provenance::Provenance;
 pub use run::{run, run_file, RunReport, RunSummary};

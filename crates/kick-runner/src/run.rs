@@ -2,7 +2,7 @@
 //! over [`crate::h5::SweepWriter`].
 
 use crate::experiment::{Experiment, Output};
-use crate::h5::{Column, H5Error, OutcomeSet, SweepWriter, CHUNK_ROWS};
+use crate::h5::{Column, H5Error, OutcomeSet, Setting, SweepWriter, CHUNK_ROWS};
 use crate::provenance::Provenance;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use kick_compliant::SolverChoice;
@@ -59,22 +59,12 @@ pub fn outcome_columns() -> Vec<Column> {
     OBSERVABLES.iter().map(|(n, u)| Column::new(n, u)).collect()
 }
 
-/// The outcome-set description of a solver (name, settings).
-pub fn outcome_set(solver: &SolverChoice) -> OutcomeSet {
-    let mut numeric = Vec::new();
-    if let SolverChoice::SeedRk4(s) = solver {
-        numeric.push(("dt".to_string(), s.step));
-    }
-    if let SolverChoice::Accurate(a) = solver {
-        numeric.push(("relative_tolerance".to_string(), a.relative_tolerance));
-        numeric.push(("absolute_tolerance".to_string(), a.absolute_tolerance));
-    }
-    OutcomeSet {
-        solver: solver.name().to_string(),
-        settings: format!("{solver:?}"),
-        numeric_settings: numeric,
-        columns: outcome_columns(),
-    }
+/// The outcome-set description of a solver: its name, its settings and the
+/// scenarios' contact law (`law`; the target restitution is a parameter column).
+pub fn outcome_set(solver: &SolverChoice, law: kick_core::LawKind) -> OutcomeSet {
+    let mut settings = Setting::numbers(solver.settings());
+    settings.push(("law".into(), Setting::Text(law.name().into())));
+    OutcomeSet { solver: solver.name().to_string(), settings, columns: outcome_columns() }
 }
 
 fn history_columns(history: &History) -> Vec<(Column, Vec<f64>)> {
@@ -200,7 +190,9 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
     std::fs::create_dir_all(out_dir).map_err(|e| RunError::Io { path: out_dir.to_path_buf(), message: e.to_string() })?;
     let path = out_dir.join(format!("{}.h5", experiment.name));
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
-    let sets: Vec<OutcomeSet> = experiment.solvers.iter().map(outcome_set).collect();
+    // One law for every scenario of an experiment (the file's `law`).
+    let law = experiment.scenarios.scenario(0).map_or(kick_core::LawKind::PowerLaw, |s| s.law_kind());
+    let sets: Vec<OutcomeSet> = experiment.solvers.iter().map(|s| outcome_set(s, law)).collect();
     let mut writer = SweepWriter::create(
         &path,
         &provenance,

@@ -5,7 +5,7 @@ use crate::printable::Printable;
 use crate::sample::{ranges, SampledSweep};
 use crate::{Experiment, Output, Scenarios};
 use kick_compliant::{Auto, SolverChoice};
-use kick_core::{LawKind, Parameter, ScenarioSpec};
+use kick_core::{LawKind, Parameter, ScenarioSpec, SolverPath};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -36,7 +36,7 @@ pub struct SweepReport {
     pub path: PathBuf,
     pub failed: u64,
     /// Which path `auto` took over the first (at most 100 000) scenarios.
-    pub auto_paths: Option<(u64, BTreeMap<String, u64>)>,
+    pub auto_paths: Option<(u64, BTreeMap<SolverPath, u64>)>,
 }
 
 /// Sample `settings.samples` scenarios, solve them in parallel and stream
@@ -92,7 +92,7 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
         let mut counts = BTreeMap::new();
         for i in 0..counted {
             if let Ok(s) = sweep.scenario(i) {
-                *counts.entry(Auto::path(&s).to_string()).or_insert(0u64) += 1;
+                *counts.entry(Auto::path(&s)).or_insert(0u64) += 1;
             }
         }
         (counted, counts)

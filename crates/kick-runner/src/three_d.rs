@@ -4,7 +4,7 @@
 //! sweep also the speed–spin trade-off).
 
 use crate::figures::{save_grid, Panel, Series};
-use crate::h5::{Column, OutcomeSet, SweepWriter};
+use crate::h5::{law_settings, Column, OutcomeSet, SweepWriter};
 use crate::printable::Printable;
 use crate::Provenance;
 use kick_3d::sweep::{Axis, Experiment3d, SweepPoint, COLUMNS};
@@ -22,12 +22,7 @@ fn write_h5(path: &Path, file: &Path, text: &str, e: &Experiment3d, points: &[Sw
     let law = e.base()?;
     let set = OutcomeSet {
         solver: "accurate-3d".into(),
-        settings: format!(
-            "Dop853 rtol 1e-12 atol 1e-15, located events; normal law {}{}",
-            law.law_kind().name(),
-            law.restitution_target().map(|r| format!(" (target restitution {r})")).unwrap_or_default()
-        ),
-        numeric_settings: vec![("relative_tolerance".into(), 1e-12), ("absolute_tolerance".into(), 1e-15)],
+        settings: law_settings(&law, [("relative_tolerance", 1e-12), ("absolute_tolerance", 1e-15)]),
         columns: COLUMNS.iter().map(|(n, u)| Column::new(n, u)).collect(),
     };
     let mut writer = SweepWriter::create(path, &provenance, &[Column::new(e.axis.name(), e.axis.unit())], &[set], points.len() as u64)

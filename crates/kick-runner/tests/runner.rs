@@ -87,6 +87,11 @@ fn result_file_reads_back_against_independent_solves() {
     }
     let seed_group = file.group("solvers/seed-rk4").expect("second solver");
     assert_eq!(read_f64_attr(&seed_group, "dt"), Some(5e-6));
+    // Settings are typed attributes, one per field, not Debug text.
+    for group in [&*file, &*seed_group] {
+        assert_eq!(read_str_attr(group, "law").as_deref(), Some("power-law"));
+        assert!(group.attr("solver_settings").is_err());
+    }
 
     // Every dataset carries units.
     let mut all = Vec::new();

@@ -50,7 +50,7 @@ use kick_identify::profile::{IdentifiabilityStudy, MisfitMap, Profile};
 use kick_identify::table2::Table2Fit;
 use kick_identify::FitParameter;
 use crate::h5::{read_history, H5Error};
-use crate::{Column, OutcomeSet, Provenance, ResultFile, ResultWriter, SweepData, SweepWriter};
+use crate::{Column, OutcomeSet, Provenance, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};
 use std::path::{Path, PathBuf};
 
 fn text(e: H5Error) -> String {
@@ -102,12 +102,12 @@ pub fn write_laws(
         .iter()
         .map(|&law| OutcomeSet {
             solver: law.name().into(),
-            settings: format!("{ACCURATE}; pulses sampled at most t_c/{samples} apart (t_c the undamped contact time)"),
-            numeric_settings: vec![
-                ("relative_tolerance".into(), 1e-12),
-                ("absolute_tolerance".into(), 1e-12),
-                ("samples_per_contact_time".into(), f64::from(samples)),
-            ],
+            // Pulses sampled at most t_c/samples apart, t_c the undamped contact time.
+            settings: Setting::numbers([
+                ("relative_tolerance", 1e-12),
+                ("absolute_tolerance", 1e-12),
+                ("samples_per_contact_time", f64::from(samples)),
+            ]),
             columns: law_columns(law),
         })
         .collect();
