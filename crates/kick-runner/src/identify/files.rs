@@ -57,9 +57,6 @@ fn text(e: H5Error) -> String {
     e.to_string()
 }
 
-/// The solver every file here was computed with.
-const ACCURATE: &str = "accurate (Dop853, rtol = atol = 1e-12 in scaled units, located events)";
-
 /// Columns of a law's outcome set beyond the observables.
 fn law_columns(law: LawKind) -> Vec<Column> {
     let mut columns: Vec<Column> = OBSERVABLES.iter().map(|(n, u)| Column::new(n, u)).collect();

@@ -4,7 +4,7 @@ use kick_compliant::events::{Engine, StopAt};
 use kick_compliant::ode::{self, Branch, ContactOde};
 use kick_compliant::{Accurate, SeedRk4};
 use kick_core::{models, Parameter, RecordingSolver, Scenario, Solver};
-use kick_suite::assert_close;
+use crate::support::assert_close;
 
 fn passive_models() -> Vec<(&'static str, Scenario)> {
     let mut all = models::table2();

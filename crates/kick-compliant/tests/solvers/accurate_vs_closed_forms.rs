@@ -2,7 +2,7 @@
 
 use kick_compliant::{closed, Accurate};
 use kick_core::{models, special, ContactLaw, Outcome, Parameter, Scenario, Solver};
-use kick_suite::assert_close;
+use crate::support::assert_close;
 
 const TARGET: f64 = 1e-9;
 

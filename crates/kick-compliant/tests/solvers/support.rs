@@ -1,4 +1,4 @@
-//! Helpers shared by the workspace tests in `tests/`.
+//! Helpers shared by the solver tests.
 
 /// |a − b| / |b|, or |a| when b = 0.
 pub fn relative_error(actual: f64, expected: f64) -> f64 {

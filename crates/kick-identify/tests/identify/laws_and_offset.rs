@@ -9,7 +9,7 @@ use kick_identify::fit::{fit, FitOptions, FitProblem};
 use kick_identify::synthetic::{history, lab_sigma, scalars, time_grid};
 use kick_identify::{FitParameter, IdentifyError, ModelPoint};
 
-mod common;
+use crate::common;
 use common::assert_recovered;
 
 const ALL_CHANNELS: [Channel; 4] = [Channel::Force, Channel::Compression, Channel::FootVelocity, Channel::BallVelocity];

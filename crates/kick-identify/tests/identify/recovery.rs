@@ -9,7 +9,7 @@ use kick_identify::profile::{log_factors, profiles};
 use kick_identify::synthetic::{history, lab_sigma, scalars, time_grid};
 use kick_identify::{IdentifyError, ModelPoint};
 
-mod common;
+use crate::common;
 use common::assert_recovered;
 use std::collections::BTreeMap;
 

@@ -1,5 +1,5 @@
 //! Fixed work for instruction counting (repeatable on a noisy machine):
-//! `valgrind --tool=callgrind --callgrind-out-file=/dev/null target/release/examples/count N`
+//! `valgrind --tool=callgrind --callgrind-out-file=/dev/null target/release/examples/flight_count N`
 //! solves the model free kick N times; the difference of two N over the
 //! difference of N is the cost of one flight.
 use kick_flight::{models, solve};

@@ -6,7 +6,7 @@ use kick_core::paper::TABLE2;
 use kick_core::{models, ContactLaw, Solver};
 
 fn scenario_file() -> Table2File {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/experiments/table2.toml");
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../experiments/table2.toml");
     Table2File::parse(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
