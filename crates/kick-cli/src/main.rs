@@ -323,6 +323,9 @@ struct Reproduce {
     /// Report to (re)generate
     #[arg(long, default_value = "paper/README.md")]
     report: PathBuf,
+    /// The benchmark's short variant (as `kick bench --quick`): for tests, not for the committed pages
+    #[arg(long)]
+    quick_bench: bool,
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
@@ -429,7 +432,8 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         }
         Command::Reproduce(a) => {
             set_threads(a.threads)?;
-            let settings = reproduce::ReproduceSettings { experiments: a.experiments, out: a.out, report: a.report };
+            let settings =
+                reproduce::ReproduceSettings { experiments: a.experiments, out: a.out, report: a.report, quick_bench: a.quick_bench };
             let done = reproduce::reproduce(&settings, out)?;
             out.print(Format::Text, &done)?;
             match done.failed_checks {

@@ -40,8 +40,8 @@
 //! At that default every observable is within 1e-10 relative of the closed
 //! forms, of a hand-solved linear law under a drive and of `accurate` at
 //! 1e-14 on the shared test models, and within 1e-9 over the sweep's box
-//! (`tests/series.rs`; `kick bench` measures ~2e-11 on its set); over the
-//! stress box it agrees with `reduced` at 1e-14 (`tests/stress.rs`).
+//! (`tests/solvers/series.rs`; `kick bench` measures ~2e-11 on its set); over the
+//! stress box it agrees with `reduced` at 1e-14 (`tests/solvers/stress.rs`).
 //! Order and tolerance were chosen by instruction counts (callgrind) at
 //! that accuracy: order 16 beat 12, 14, 18, 20 and 24.
 //! No allocation: coefficient arrays live on the stack.

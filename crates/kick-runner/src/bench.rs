@@ -240,11 +240,11 @@ impl Measured<'_> {
              - Sampled sweep of {} scenarios (auto, summary only, no file): {:.0} scenarios/s on 1 thread, \
              {:.0} scenarios/s on 2 threads, parallel speed-up {:.2}x (medians of 3 alternating runs).\n\n\
              ## Where each solver is trustworthy\n\n\
-             Held by `tests/stress.rs` (k 1e2–1e12, n 1–3, ζ 0–50, m_f/m_b 1e-3–1e6, V0 1e-3–1e3 m/s, drives to 1e4 N, \
-             grazing contact) and `tests/accurate_vs_closed_forms.rs`:\n\n\
+             Held by `crates/kick-compliant/tests/solvers/stress.rs` (k 1e2–1e12, n 1–3, ζ 0–50, m_f/m_b 1e-3–1e6, V0 1e-3–1e3 m/s, drives to 1e4 N, \
+             grazing contact) and `crates/kick-compliant/tests/solvers/accurate_vs_closed_forms.rs`:\n\n\
              - `closed-form`, `series`, `reduced-return`, `reduced`, `auto`: agree with each other and the closed forms to \
              1e-8 over the whole box; against the closed forms and `accurate` at 1e-14 on the paper's range and the sweep's \
-             box, 1e-9 (measured ~1e-11; `tests/series.rs`).\n\
+             box, 1e-9 (measured ~1e-11; `crates/kick-compliant/tests/solvers/series.rs`).\n\
              - `accurate`, `dop853`, `dopri5`, `rk4-events` carry x_f, x_b, v_f, v_b, whose differences make δ and δ̇: \
              their error grows with |v|/V0 and |v| t_c/δ_max (grazing contact at high speed, long shallow contacts), \
              and under a drive with (μ/m_f) F δ_max / (½ μ V0²); within 1e-8 times that conditioning.\n\

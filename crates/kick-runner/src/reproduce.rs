@@ -16,6 +16,8 @@ pub struct ReproduceSettings {
     pub out: PathBuf,
     /// Report to (re)generate; the other pages go beside it.
     pub report: PathBuf,
+    /// The benchmark's short variant (`kick bench --quick`), for tests.
+    pub quick_bench: bool,
 }
 
 impl Default for ReproduceSettings {
@@ -24,6 +26,7 @@ impl Default for ReproduceSettings {
             experiments: PathBuf::from("experiments"),
             out: PathBuf::from("results"),
             report: PathBuf::from("paper/README.md"),
+            quick_bench: false,
         }
     }
 }
@@ -161,8 +164,14 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     say(log, &format!("\n# kick fit table2 --out {}\n", fits.join(TABLE2_FIT).display()));
     say(log, &crate::identify::table2(None, Some(&fits.join(TABLE2_FIT)), &laws.scenarios)?.text());
     let solvers_report = report_dir.join("solvers.md");
-    say(log, &format!("\n# kick bench --out {out} --report {}\n", solvers_report.display()));
-    let bench = crate::bench::BenchSettings { out: args.out.clone(), report: Some(solvers_report), ..Default::default() };
+    let quick = if args.quick_bench { " --quick" } else { "" };
+    say(log, &format!("\n# kick bench{quick} --out {out} --report {}\n", solvers_report.display()));
+    let bench = crate::bench::BenchSettings {
+        out: args.out.clone(),
+        report: Some(solvers_report),
+        quick: args.quick_bench,
+        ..Default::default()
+    };
     let bench = crate::bench::bench(&bench, log)?;
     say(log, &bench.text());
 

@@ -70,7 +70,7 @@ fn ground_and_gravity_live_in_the_scene() {
 
 /// The scene path applies the kick's own law: with Hunt–Crossley and
 /// Kelvin–Voigt (e = 0.6) it converges at first order to the accurate path
-/// (which matches the 1D solver with that law, tests/accurate.rs), within
+/// (which matches the 1D solver with that law, tests/model/accurate.rs), within
 /// the bound scene.rs documents for them, 3e-4 relative per microsecond of
 /// step (measured up to 2.04e-4, Hunt–Crossley's spin).
 #[test]

@@ -190,7 +190,7 @@ fn laws_h5_equals_independent_solves() {
             let law = baseline.with_law(kind, Some(e)).unwrap().contact_law();
             let expected = match law {
                 AnyLaw::Hysteresis(h) => h.exact_restitution(baseline.approach_speed()).unwrap(),
-                // Clamped Kelvin–Voigt: checked against its closed form in kick-identify/tests/laws.rs.
+                // Clamped Kelvin–Voigt: checked against its closed form in kick-identify/tests/identify/laws.rs.
                 _ => solver.solve(&baseline.with_law(kind, Some(e)).unwrap()).unwrap().restitution,
             };
             assert!((simulated - expected).abs() < 1e-8, "{} e={e}: {simulated} vs {expected}", kind.name());

@@ -48,7 +48,7 @@ fn reproduce_writes_results_figures_and_report() {
     let dir = scratch("reproduce");
     let results = dir.join("results");
     let report = dir.join("paper/README.md");
-    let out = kick(&["reproduce", "--out", results.to_str().unwrap(), "--report", report.to_str().unwrap()]);
+    let out = kick(&["reproduce", "--quick-bench", "--out", results.to_str().unwrap(), "--report", report.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     for name in ["table2", "figure1", "figure2", "figure3", "figure4", "figure5", "figure6", "figure7"] {
         assert!(results.join(format!("{name}.h5")).exists(), "{name}.h5");

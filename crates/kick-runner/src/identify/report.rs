@@ -233,8 +233,8 @@ pub fn laws(file: &Path, figures: &str) -> Result<String, String> {
 }
 
 const LAWS_TESTS: &str = "\n## Tests\n\n\
-`crates/kick-core/src/laws.rs` (unit), `crates/kick-identify/tests/laws.rs`, `crates/kick-3d/tests/accurate.rs`, \
-`crates/kick-3d/tests/scene.rs`, `crates/kick-cli/tests/fit_and_laws.rs`:\n\n\
+`crates/kick-core/src/laws.rs` (unit), `crates/kick-identify/tests/identify/laws.rs`, `crates/kick-3d/tests/model/accurate.rs`, \
+`crates/kick-3d/tests/model/scene.rs`, `crates/kick-cli/tests/kick/fit_and_laws.rs`:\n\n\
 - `force_gradient` of each law against central differences of its force (1e-7 relative, away from the kinks); \
 no tensile force on a 201 × 201 grid of (δ, δ̇) including δ ≤ 0; U(δ) = ∫ F(s, 0) ds by Simpson (1e-6).\n\
 - Energy dissipated per cycle against the small-damping closed forms 1 − e² = (4/3) χ V0 (hysteresis, n = 1, \
@@ -389,7 +389,7 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, String> {
     );
     let _ = writeln!(
         w,
-        "Tests (`crates/kick-identify/tests/recovery.rs`, `laws_and_offset.rs`) hold, for fixed seeds: (k, c) \
+        "Tests (`crates/kick-identify/tests/identify/recovery.rs`, `laws_and_offset.rs`) hold, for fixed seeds: (k, c) \
          from force and compression, (m_f, k, c, n) from all four channels, (m_f, k, n, e) from \
          `hunt-crossley-exact` data, and (m_f, k, c, n, t0) and (k, e, t0) with the data starting before or \
          after first touch (paper's law, Hunt–Crossley), each recovered within 3σ from a start off by \
