@@ -146,37 +146,12 @@ impl SetParameter for Kick3dSpec {
     }
 }
 
-/// A `[kick3d]` table: the declared 3D parameters only; any other key is
-/// refused at its line with the nearby names.
+/// A `[kick3d]` table: the declared 3D parameters only.
+impl parameters::DeclaredTable for Kick3dSpec {}
+
 impl<'de> Deserialize<'de> for Kick3dSpec {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct Keys;
-        impl<'de> serde::de::Visitor<'de> for Keys {
-            type Value = Kick3dSpec;
-            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                f.write_str("a table of 3D kick parameters")
-            }
-            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Kick3dSpec, A::Error> {
-                let mut spec = Kick3dSpec::default();
-                while let Some(key) = map.next_key::<String>()? {
-                    let Ok(parameter) = parameters::find_at(Kick3dSpec::LEVELS, &key) else {
-                        let valid: Vec<&str> = parameters::at_levels(Kick3dSpec::LEVELS).map(|p| p.name).collect();
-                        return map.next_value_seed(parameters::Refuse(parameters::unknown_key(&key, &valid))).map(|()| spec);
-                    };
-                    // `null` (JSON) leaves a value unset, as left out.
-                    let value = match parameter.shape {
-                        Shape::Scalar => map.next_value::<Option<f64>>()?.map(Value::Number),
-                        Shape::Vector3 => map.next_value::<Option<[f64; 3]>>()?.map(Value::Vector),
-                        Shape::Switch => map.next_value::<Option<bool>>()?.map(Value::Switch),
-                    };
-                    if let Some(value) = value {
-                        spec.set_parameter(parameter, value).map_err(serde::de::Error::custom)?;
-                    }
-                }
-                Ok(spec)
-            }
-        }
-        deserializer.deserialize_map(Keys)
+        parameters::deserialize_table(deserializer)
     }
 }
 

@@ -353,6 +353,60 @@ impl<'de> serde::de::DeserializeSeed<'de> for Refuse {
     }
 }
 
+/// A spec read from a table (TOML, JSON) by the declared names of its
+/// levels, each value by its shape (`null` leaves it unset), plus the keys
+/// in [`DeclaredTable::EXTRA`]; any other key is refused at its line with
+/// the nearby names. Its `Deserialize` is [`deserialize_table`].
+pub trait DeclaredTable: SetParameter + Default {
+    /// Keys beside the declared parameters, read by [`DeclaredTable::read_extra`].
+    const EXTRA: &'static [&'static str] = &[];
+    /// Read the value of the extra key `key`.
+    fn read_extra<'de, A: serde::de::MapAccess<'de>>(&mut self, key: &str, map: &mut A) -> Result<(), A::Error> {
+        let _ = key;
+        map.next_value::<serde::de::IgnoredAny>().map(|_| ())
+    }
+}
+
+/// Deserialize a [`DeclaredTable`].
+pub fn deserialize_table<'de, S: DeclaredTable, D: serde::Deserializer<'de>>(deserializer: D) -> Result<S, D::Error> {
+    struct Keys<S>(std::marker::PhantomData<S>);
+    impl<'de, S: DeclaredTable> serde::de::Visitor<'de> for Keys<S> {
+        type Value = S;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("a table of declared parameters")
+        }
+        fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<S, A::Error> {
+            use serde::de::Error as _;
+            let mut spec = S::default();
+            let mut seen: Vec<String> = Vec::new();
+            while let Some(key) = map.next_key::<String>()? {
+                if seen.contains(&key) {
+                    return Err(A::Error::custom(format!("duplicate key `{key}`")));
+                }
+                if S::EXTRA.contains(&key.as_str()) {
+                    spec.read_extra(&key, &mut map)?;
+                } else if let Ok(parameter) = find_at(S::LEVELS, &key) {
+                    let value = match parameter.shape {
+                        Shape::Scalar => map.next_value::<Option<f64>>()?.map(Value::Number),
+                        Shape::Vector3 => map.next_value::<Option<[f64; 3]>>()?.map(Value::Vector),
+                        Shape::Switch => map.next_value::<Option<bool>>()?.map(Value::Switch),
+                    };
+                    if let Some(value) = value {
+                        spec.set_parameter(parameter, value).map_err(A::Error::custom)?;
+                    }
+                } else {
+                    let mut valid: Vec<&'static str> = at_levels(S::LEVELS).map(|p| p.name).collect();
+                    valid.extend(S::EXTRA);
+                    return map.next_value_seed(Refuse(unknown_key(&key, &valid))).map(|()| spec);
+                }
+                seen.push(key);
+            }
+            Ok(spec)
+        }
+    }
+    deserializer.deserialize_map(Keys(std::marker::PhantomData))
+}
+
 /// The value as a number, or a shape error naming `parameter`.
 pub fn number(parameter: &ParameterDef, value: Value) -> Result<f64, ParameterError> {
     match value {

@@ -146,50 +146,19 @@ impl SetParameter for ScenarioSpec {
     }
 }
 
-/// The key that chooses the contact law beside the declared parameters.
-const LAW_KEY: &str = "law";
-
 /// A [`ScenarioSpec`] table: the declared parameters of the 1D level and
-/// `law`; any other key is refused at its own line with the nearby names.
+/// `law`, the key that chooses the contact law.
+impl parameters::DeclaredTable for ScenarioSpec {
+    const EXTRA: &'static [&'static str] = &["law"];
+    fn read_extra<'de, A: serde::de::MapAccess<'de>>(&mut self, _key: &str, map: &mut A) -> Result<(), A::Error> {
+        self.law = map.next_value()?;
+        Ok(())
+    }
+}
+
 impl<'de> Deserialize<'de> for ScenarioSpec {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct Keys;
-        impl<'de> serde::de::Visitor<'de> for Keys {
-            type Value = ScenarioSpec;
-            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                f.write_str("a table of 1D scenario parameters")
-            }
-            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<ScenarioSpec, A::Error> {
-                let mut spec = ScenarioSpec::default();
-                let mut seen: Vec<String> = Vec::new();
-                while let Some(key) = map.next_key::<String>()? {
-                    if seen.contains(&key) {
-                        return Err(serde::de::Error::custom(format!("duplicate key `{key}`")));
-                    }
-                    // `null` (JSON) leaves a value unset, as left out.
-                    if key == LAW_KEY {
-                        spec.law = map.next_value()?;
-                    } else {
-                        match parameters::find_at(ScenarioSpec::LEVELS, &key) {
-                            Ok(parameter) => {
-                                if let Some(x) = map.next_value::<Option<f64>>()? {
-                                    spec.set_parameter(parameter, Value::Number(x)).map_err(serde::de::Error::custom)?;
-                                }
-                            }
-                            // Refused while reading the value, so the error points at the key's line.
-                            Err(_) => {
-                                let mut valid: Vec<&str> = parameters::at_levels(ScenarioSpec::LEVELS).map(|p| p.name).collect();
-                                valid.push(LAW_KEY);
-                                return map.next_value_seed(parameters::Refuse(parameters::unknown_key(&key, &valid))).map(|()| spec);
-                            }
-                        }
-                    }
-                    seen.push(key);
-                }
-                Ok(spec)
-            }
-        }
-        deserializer.deserialize_map(Keys)
+        parameters::deserialize_table(deserializer)
     }
 }
 

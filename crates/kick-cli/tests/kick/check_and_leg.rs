@@ -1,15 +1,7 @@
 //! `kick check` and `kick leg`: exit codes, JSON keys, agreement with the libraries.
 
 use kick_leg::{AnkleJoint, Impact, Leg, Pose};
-use std::process::Command;
-
-fn kick(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_kick"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-        .output()
-        .expect("kick runs")
-}
+use crate::kick;
 
 #[test]
 fn check_json_lists_every_row_and_exits_zero_when_all_pass() {

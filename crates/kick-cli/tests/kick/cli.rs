@@ -1,14 +1,6 @@
 //! The `kick` binary's contract: names other tools read, exit codes, messages.
 
-use std::process::Command;
-
-fn kick(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_kick"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-        .output()
-        .expect("kick runs")
-}
+use crate::kick;
 
 #[test]
 fn simulate_json_has_the_contract_keys_in_si_units() {
@@ -117,7 +109,7 @@ fn a_closed_stdout_ends_the_output_quietly() {
         (&["simulate", "--history", "1e-8"][..], 1),
         (&["check", "--format", "json"][..], 0),
     ] {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_kick"))
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kick"))
             .args(args)
             .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
             .stdout(Stdio::piped())

@@ -1,14 +1,6 @@
 //! Contract of `kick fit` and `kick laws`: JSON keys, round trips, refusals.
 
-use std::process::Command;
-
-fn kick(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_kick"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-        .output()
-        .expect("kick runs")
-}
+use crate::kick;
 
 fn scratch(name: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("kick-fit-test-{}-{name}", std::process::id()));

@@ -5,3 +5,12 @@ mod cli;
 mod fit_and_laws;
 mod run_reproduce;
 mod simulate3d;
+
+/// Run `kick` with `args` in the workspace root.
+fn kick(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_kick"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+        .output()
+        .expect("kick runs")
+}

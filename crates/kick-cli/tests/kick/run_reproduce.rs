@@ -1,15 +1,7 @@
 //! `kick run` and `kick reproduce`: exit codes, located errors, files written.
 
 use std::path::PathBuf;
-use std::process::Command;
-
-fn kick(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_kick"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-        .output()
-        .expect("kick runs")
-}
+use crate::kick;
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("kick-cli-{}-{name}", std::process::id()));

@@ -1,14 +1,6 @@
 //! `kick simulate3d` and `kick run3d`: JSON contract, agreement with kick-3d, errors.
 
-use std::process::Command;
-
-fn kick(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_kick"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-        .output()
-        .expect("kick runs")
-}
+use crate::kick;
 
 fn vec3(v: &serde_json::Value) -> [f64; 3] {
     let a = v.as_array().expect("array");
