@@ -28,7 +28,7 @@ pub mod validation;
 
 pub use accurate::Accurate3d;
 pub use error::Kick3dError;
-pub use model::{FootShape, Kick3d, Kick3dSpec};
+pub use model::{FootShape, Kick3d, Kick3dSpec, KickSpec};
 pub use outcome::{EnergyPartition, Outcome3d};
 
 /// The 3D solvers selectable by name (`--solver`).

@@ -24,7 +24,8 @@
 //! exactly the 1D scenario.
 
 use crate::error::Kick3dError;
-use kick_core::{AnyLaw, Scenario};
+use kick_core::parameters::{self, Level, ParameterDef, ParameterError, SetParameter, Value};
+use kick_core::{AnyLaw, Scenario, ScenarioSpec};
 use parry3d_f64::math::{Rot3, Vec3};
 use serde::{Deserialize, Serialize};
 
@@ -42,7 +43,7 @@ pub enum FootShape {
 impl FootShape {
     /// Default instep: 6 cm thick (along the contact normal), 24 cm long
     /// (across the line of motion), 10 cm high. An assumption, not a measurement.
-    pub const DEFAULT_HALF_EXTENTS: [f64; 3] = [0.03, 0.12, 0.05];
+    pub const DEFAULT_HALF_EXTENTS: [f64; 3] = parameters::FOOT_HALF_EXTENTS.default_vector();
 
     pub fn half_extents(&self) -> [f64; 3] {
         match *self {
@@ -73,18 +74,12 @@ impl Default for FootShape {
     }
 }
 
-/// Everything beyond the 1D parameters, as given by the user; `None` takes the default.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+/// Everything beyond the 1D parameters, as given by the user; `None` takes
+/// the default. Each field is a declared parameter of [`Level::Kick3d`]
+/// (`kick_core::parameters`: name, unit, default, valid range), set by name
+/// through [`SetParameter`] and read from TOML by those names only.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct Kick3dSpec {
-    /// R, m [0.11]
-    pub ball_radius: Option<f64>,
-    /// I_b, kg m² [2/3 m_b R², thin shell]
-    pub ball_inertia: Option<f64>,
-    /// Principal moments of the foot about its centre of mass, body axes, kg m²
-    /// [uniform solid box of the instep's size and mass m_f]
-    pub foot_inertia: Option<[f64; 3]>,
-    pub foot_shape: Option<FootShape>,
     /// e, m [0]
     pub offset: Option<f64>,
     /// α, degrees [0]
@@ -92,14 +87,98 @@ pub struct Kick3dSpec {
     pub approach_angle_deg: Option<f64>,
     /// μ, Coulomb coefficient; `f64::INFINITY` means the contact never slips [0.5]
     pub friction: Option<f64>,
+    /// R, m [0.11]
+    pub ball_radius: Option<f64>,
+    /// I_b, kg m² [2/3 m_b R², thin shell]
+    pub ball_inertia: Option<f64>,
     /// k_t, N/m [1e5]
     pub tangential_stiffness: Option<f64>,
     /// c_t, N s/m [100]
     pub tangential_damping: Option<f64>,
+    /// Principal moments of the foot about its centre of mass, body axes, kg m²
+    /// [uniform solid box of the instep's size and mass m_f]
+    pub foot_inertia: Option<[f64; 3]>,
+    /// Outer half-extents of the instep box, m [0.03, 0.12, 0.05]
+    pub foot_half_extents: Option<[f64; 3]>,
+    /// Edges rounded with this radius inside the outer size, m [0: a plain box]
+    pub border_radius: Option<f64>,
     /// Uniform gravity (0, 0, −9.81 m/s²) on both bodies [off]
     pub gravity: Option<bool>,
     /// A ground plane under the ball (scene path only) [off]
     pub ground: Option<bool>,
+}
+
+impl Kick3dSpec {
+    /// The instep's shape: a box of the outer half-extents, rounded inside
+    /// them by a positive border radius (unchecked; see [`Kick3d::new`]).
+    pub fn foot_shape(&self) -> FootShape {
+        let outer = self.foot_half_extents.unwrap_or(FootShape::DEFAULT_HALF_EXTENTS);
+        match self.border_radius {
+            Some(b) if b > 0.0 => FootShape::RoundedBox { half_extents: outer.map(|h| h - b), border_radius: b },
+            _ => FootShape::Box { half_extents: outer },
+        }
+    }
+}
+
+impl SetParameter for Kick3dSpec {
+    const LEVELS: &'static [Level] = &[Level::Kick3d];
+
+    fn set_parameter(&mut self, parameter: &'static ParameterDef, value: Value) -> Result<(), ParameterError> {
+        let number = || parameters::number(parameter, value).map(Some);
+        let vector = || parameters::vector(parameter, value).map(Some);
+        let switch = || parameters::switch(parameter, value).map(Some);
+        match parameter.name {
+            "offset" => self.offset = number()?,
+            "approach_angle" => self.approach_angle_deg = number()?,
+            "friction" => self.friction = number()?,
+            "ball_radius" => self.ball_radius = number()?,
+            "ball_inertia" => self.ball_inertia = number()?,
+            "tangential_stiffness" => self.tangential_stiffness = number()?,
+            "tangential_damping" => self.tangential_damping = number()?,
+            "foot_inertia" => self.foot_inertia = vector()?,
+            "foot_half_extents" => self.foot_half_extents = vector()?,
+            "border_radius" => self.border_radius = number()?,
+            "gravity" => self.gravity = switch()?,
+            "ground" => self.ground = switch()?,
+            _ => return Err(parameters::unknown(Self::LEVELS, parameter.name)),
+        }
+        Ok(())
+    }
+}
+
+/// A `[kick3d]` table: the declared 3D parameters only.
+impl parameters::DeclaredTable for Kick3dSpec {}
+
+impl<'de> Deserialize<'de> for Kick3dSpec {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        parameters::deserialize_table(deserializer)
+    }
+}
+
+/// A 3D kick as given: the 1D scenario (with its law) and the 3D extras,
+/// every declared parameter of both levels settable by name.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+pub struct KickSpec {
+    pub scenario: ScenarioSpec,
+    pub kick3d: Kick3dSpec,
+}
+
+impl KickSpec {
+    /// Fill the gaps with the defaults and validate.
+    pub fn build(&self) -> Result<Kick3d, Kick3dError> {
+        Kick3d::new(self.scenario.build()?, &self.kick3d)
+    }
+}
+
+impl SetParameter for KickSpec {
+    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Kick3d];
+
+    fn set_parameter(&mut self, parameter: &'static ParameterDef, value: Value) -> Result<(), ParameterError> {
+        match parameter.level {
+            Level::Scenario => self.scenario.set_parameter(parameter, value),
+            _ => self.kick3d.set_parameter(parameter, value),
+        }
+    }
 }
 
 /// Standard gravity, m/s² (one value for every model level: kick-core's).
@@ -143,60 +222,61 @@ fn invalid(name: &'static str, value: f64, requirement: &'static str) -> Kick3dE
     Kick3dError::InvalidParameter { name, value, requirement }
 }
 
+/// `value` if the declaration of `parameter` accepts it, else the error naming it.
+fn check(parameter: &ParameterDef, value: f64) -> Result<f64, Kick3dError> {
+    if parameter.valid.contains(value) {
+        Ok(value)
+    } else {
+        Err(invalid(parameter.name, value, parameter.valid.requirement))
+    }
+}
+
 impl Kick3d {
-    pub const DEFAULT_BALL_RADIUS: f64 = kick_core::DEFAULT_BALL_RADIUS;
-    pub const DEFAULT_FRICTION: f64 = 0.5;
+    pub const DEFAULT_BALL_RADIUS: f64 = parameters::BALL_RADIUS.default_number();
+    pub const DEFAULT_FRICTION: f64 = parameters::FRICTION.default_number();
     /// About 0.8 of the normal law's tangent stiffness n k δ^(n−1) at the
     /// baseline's δ_max (1.2e5 N/m), a Mindlin-like ratio. Assumed.
-    pub const DEFAULT_TANGENTIAL_STIFFNESS: f64 = 1.0e5;
+    pub const DEFAULT_TANGENTIAL_STIFFNESS: f64 = parameters::TANGENTIAL_STIFFNESS.default_number();
     /// Damping ratio ≈ 0.4 of the tangential mode at the defaults. Assumed.
-    pub const DEFAULT_TANGENTIAL_DAMPING: f64 = 100.0;
+    pub const DEFAULT_TANGENTIAL_DAMPING: f64 = parameters::TANGENTIAL_DAMPING.default_number();
 
     /// Validate; every problem is a typed error naming the parameter.
     pub fn new(base: Scenario, spec: &Kick3dSpec) -> Result<Kick3d, Kick3dError> {
-        let positive = |name, v: f64| {
-            if v.is_finite() && v > 0.0 {
-                Ok(v)
-            } else {
-                Err(invalid(name, v, "finite and > 0"))
-            }
-        };
-        let radius = positive("ball_radius", spec.ball_radius.unwrap_or(Self::DEFAULT_BALL_RADIUS))?;
+        use parameters as p;
+        let radius = check(&p::BALL_RADIUS, spec.ball_radius.unwrap_or(Self::DEFAULT_BALL_RADIUS))?;
         let m_b = base.ball_mass();
         let shell = 2.0 / 3.0 * m_b * radius * radius;
-        let ball_inertia = positive("ball_inertia", spec.ball_inertia.unwrap_or(shell))?;
+        let ball_inertia = check(&p::BALL_INERTIA, spec.ball_inertia.unwrap_or(shell))?;
         // A thin shell puts all the mass at R: no sphere of radius R can exceed it.
         if ball_inertia > shell * (1.0 + 1e-12) {
             return Err(invalid("ball_inertia", ball_inertia, "<= 2/3 m_b R^2 (thin shell, the most a sphere can have)"));
         }
-        let foot_shape = spec.foot_shape.unwrap_or_default();
-        for h in foot_shape.half_extents() {
-            positive("foot_half_extent", h)?;
+        let outer = spec.foot_half_extents.unwrap_or(FootShape::DEFAULT_HALF_EXTENTS);
+        for h in outer {
+            check(&p::FOOT_HALF_EXTENTS, h)?;
         }
-        let border = foot_shape.border_radius();
-        if !(border.is_finite() && border >= 0.0) {
-            return Err(invalid("border_radius", border, "finite and >= 0"));
+        if let Some(border) = spec.border_radius {
+            // The border comes out of the outer size, so it must leave an inner box.
+            let smallest = outer.iter().copied().fold(f64::INFINITY, f64::min);
+            if check(&p::BORDER_RADIUS, border)? >= smallest {
+                return Err(invalid("border_radius", border, p::BORDER_RADIUS.valid.requirement));
+            }
         }
+        let foot_shape = spec.foot_shape();
         let foot_inertia = spec.foot_inertia.unwrap_or_else(|| foot_shape.solid_inertia(base.effective_foot_mass()));
         for i in foot_inertia {
-            positive("foot_inertia", i)?;
+            check(&p::FOOT_INERTIA, i)?;
         }
-        let offset = spec.offset.unwrap_or(0.0);
+        let offset = spec.offset.unwrap_or(p::OFFSET.default_number());
         if !(offset.is_finite() && offset.abs() < radius) {
             return Err(Kick3dError::OffsetOutsideBall { offset, radius });
         }
-        let alpha_deg = spec.approach_angle_deg.unwrap_or(0.0);
-        if !(alpha_deg.is_finite() && alpha_deg.abs() < 90.0) {
-            return Err(invalid("approach_angle", alpha_deg, "finite, in (-90, 90) degrees"));
-        }
-        let friction = spec.friction.unwrap_or(Self::DEFAULT_FRICTION);
-        if friction.is_nan() || friction < 0.0 {
-            return Err(invalid("friction", friction, ">= 0 (inf: never slips)"));
-        }
+        let alpha_deg = check(&p::APPROACH_ANGLE, spec.approach_angle_deg.unwrap_or(p::APPROACH_ANGLE.default_number()))?;
+        let friction = check(&p::FRICTION, spec.friction.unwrap_or(Self::DEFAULT_FRICTION))?;
         let tangential_stiffness =
-            positive("tangential_stiffness", spec.tangential_stiffness.unwrap_or(Self::DEFAULT_TANGENTIAL_STIFFNESS))?;
+            check(&p::TANGENTIAL_STIFFNESS, spec.tangential_stiffness.unwrap_or(Self::DEFAULT_TANGENTIAL_STIFFNESS))?;
         let tangential_damping =
-            positive("tangential_damping", spec.tangential_damping.unwrap_or(Self::DEFAULT_TANGENTIAL_DAMPING))?;
+            check(&p::TANGENTIAL_DAMPING, spec.tangential_damping.unwrap_or(Self::DEFAULT_TANGENTIAL_DAMPING))?;
         let mut kick = Kick3d {
             base,
             law: base.contact_law(),
@@ -337,5 +417,60 @@ impl Kick3d {
         let s = self.initial_state();
         0.5 * self.base.effective_foot_mass() * s.foot_velocity.length_squared()
             + 0.5 * self.base.ball_mass() * s.ball_velocity.length_squared()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kick_core::parameters::Shape;
+
+    /// Every declared 1D and 3D parameter is settable by name on a
+    /// [`KickSpec`], and every 3D one is a `[kick3d]` key reaching the same spec.
+    #[test]
+    fn every_declared_parameter_is_a_key_and_settable_by_name() {
+        for p in parameters::at_levels(KickSpec::LEVELS) {
+            let (value, literal) = match p.shape {
+                Shape::Scalar => (Value::Number(0.25), "0.25".to_string()),
+                Shape::Vector3 => (Value::Vector([0.25, 0.5, 0.75]), "[0.25, 0.5, 0.75]".to_string()),
+                Shape::Switch => (Value::Switch(true), "true".to_string()),
+            };
+            let mut by_name = KickSpec::default();
+            by_name.set_named(p.name, value).unwrap();
+            assert_ne!(by_name, KickSpec::default(), "{}", p.name);
+            if p.level == Level::Kick3d {
+                let from_toml: Kick3dSpec = toml::from_str(&format!("{} = {literal}", p.name)).unwrap();
+                assert_eq!(from_toml, by_name.kick3d, "{}", p.name);
+            }
+        }
+        assert!(KickSpec::default().set_named("offset", Value::Switch(true)).is_err());
+        let error = KickSpec::default().set_named("ofset", Value::Number(0.1)).unwrap_err();
+        assert!(error.to_string().contains("did you mean `offset`?"), "{error}");
+        let error = toml::from_str::<Kick3dSpec>("friction = 0.4\nfrction = 0.5").unwrap_err();
+        assert!(error.to_string().contains("line 2") && error.message().contains("did you mean `friction`?"), "{error}");
+    }
+
+    /// The declared defaults are the kick's defaults.
+    #[test]
+    fn declared_defaults_build_the_baseline() {
+        let k = Kick3d::baseline();
+        assert_eq!(k.friction, parameters::FRICTION.default_number());
+        assert_eq!(k.ball_radius, parameters::BALL_RADIUS.default_number());
+        assert_eq!(k.foot_shape, FootShape::Box { half_extents: parameters::FOOT_HALF_EXTENTS.default_vector() });
+        assert_eq!(KickSpec::default().build().unwrap(), k);
+    }
+
+    /// A border too large for the foot is refused naming the border radius
+    /// (it used to blame the inner half-extent it makes negative).
+    #[test]
+    fn a_border_too_large_names_the_border_radius() {
+        let spec = Kick3dSpec { border_radius: Some(1.0), ..Kick3dSpec::default() };
+        match Kick3d::new(Scenario::baseline(), &spec) {
+            Err(Kick3dError::InvalidParameter { name, value, .. }) => assert_eq!((name, value), ("border_radius", 1.0)),
+            other => panic!("{other:?}"),
+        }
+        let spec = Kick3dSpec { border_radius: Some(0.01), ..Kick3dSpec::default() };
+        let k = Kick3d::new(Scenario::baseline(), &spec).unwrap();
+        assert_eq!(k.foot_shape.outer_half_extents(), FootShape::DEFAULT_HALF_EXTENTS.map(|h| h - 0.01 + 0.01));
     }
 }

@@ -13,7 +13,7 @@
 //! velocity and spin are off by at most 2e-4 relative per microsecond of step
 //! (measured 1.0–1.4e-4) with the paper's law; with the other laws the
 //! constant differs (Hunt–Crossley and Kelvin–Voigt at e = 0.6 on a 5 cm,
-//! 10° kick: up to 2.04e-4 per microsecond, bound 3e-4); tests/scene.rs
+//! 10° kick: up to 2.04e-4 per microsecond, bound 3e-4); tests/model/scene.rs
 //! holds the order and both bounds.
 //! The default step of 1e-6 s (~5300 steps per contact) gives ~1e-4. The
 //! contact time is the linear interpolation of δ between the last two steps.

@@ -4,6 +4,7 @@
 use crate::accurate::Accurate3d;
 use crate::error::Kick3dError;
 use crate::model::{Kick3d, Kick3dSpec};
+use kick_core::parameters::{self, ParameterDef, SetParameter, Value};
 use kick_core::Scenario;
 use serde::Serialize;
 
@@ -20,26 +21,23 @@ pub enum Axis {
 }
 
 impl Axis {
-    pub fn name(self) -> &'static str {
+    /// The declared parameter swept.
+    pub fn def(self) -> &'static ParameterDef {
         match self {
-            Axis::Offset => "offset",
-            Axis::Friction => "friction",
-            Axis::ApproachAngle => "approach_angle",
+            Axis::Offset => &parameters::OFFSET,
+            Axis::Friction => &parameters::FRICTION,
+            Axis::ApproachAngle => &parameters::APPROACH_ANGLE,
         }
+    }
+    pub fn name(self) -> &'static str {
+        self.def().name
     }
     pub fn unit(self) -> &'static str {
-        match self {
-            Axis::Offset => "m",
-            Axis::Friction => "1",
-            Axis::ApproachAngle => "deg",
-        }
+        self.def().unit
     }
     fn apply(self, spec: &mut Kick3dSpec, value: f64) {
-        match self {
-            Axis::Offset => spec.offset = Some(value),
-            Axis::Friction => spec.friction = Some(value),
-            Axis::ApproachAngle => spec.approach_angle_deg = Some(value),
-        }
+        // A declared scalar of the 3D level: setting it cannot fail.
+        let _ = spec.set_parameter(self.def(), Value::Number(value));
     }
 }
 

@@ -119,7 +119,7 @@ pub fn impulse_model(solver: &dyn Solver) -> Vec<CheckRow> {
 /// U(δ_max) back into relative kinetic energy and e² = U(δ_max) / (½ μ V0²)
 /// (numerics note). It uses δ_max only, not the exit velocities.
 pub fn energy_restitution(scenario: &Scenario, outcome: &Outcome) -> f64 {
-    (scenario.law().potential(outcome.max_compression) / scenario.relative_kinetic_energy()).sqrt()
+    (scenario.paper_law().potential(outcome.max_compression) / scenario.relative_kinetic_energy()).sqrt()
 }
 
 /// Eq. 37: the restitution model fed the compliant run's effective e (from its

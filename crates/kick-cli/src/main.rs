@@ -1,23 +1,17 @@
-//! `kick`: the command line of the kick workspace.
+//! `kick`: the command line of the kick workspace. Each subcommand parses its
+//! arguments, calls one function of `kick_runner` and prints what it returns.
 
-mod bench;
-mod check;
-mod fit;
-mod identify_figures;
-mod identify_files;
-mod identify_report;
-mod laws;
-mod leg;
+mod flags;
 mod output;
-mod reproduce;
-mod run;
-mod simulate;
-mod simulate3d;
-mod sweep;
-mod run3d;
-mod table2;
 
-use clap::{Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
+use flags::Flags;
+use kick_3d::{KickSpec, Solver3d};
+use kick_compliant::SolverChoice;
+use kick_core::ScenarioSpec;
+use kick_leg::anthropometry::{DE_LEVA_BODY_MASS, DE_LEVA_STATURE};
+use output::{note, CliResult, Format, Out};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -30,63 +24,422 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Simulate one 1D contact (defaults: Table 1's baseline).
-    Simulate(simulate::Args),
+    Simulate(Simulate),
     /// Simulate one off-center 3D kick: spin, friction, launch direction.
-    Simulate3d(simulate3d::Args),
+    Simulate3d(Simulate3d),
     /// Run 3D sweeps (experiments/3d/*.toml) into HDF5 and figures.
-    Run3d(run3d::Args),
+    Run3d(Run3d),
     /// Table 2 side by side: printed, seed-rk4 and accurate values.
-    Table2(table2::Args),
+    Table2(Table2),
     /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
-    Check(check::Args),
+    Check(FormatOnly),
     /// Effective mass of the articulated leg (Eq. 11) and the exit speed it gives.
-    Leg(leg::Args),
+    Leg(Leg),
     /// Contact laws (paper, Hunt–Crossley, Lankarani–Nikravesh, Flores, Kelvin–Voigt) on Table 2's scenarios.
-    Laws(laws::Args),
+    Laws(Laws),
     /// Identify parameters from printed or measured data.
     #[command(subcommand)]
-    Fit(fit::FitCommand),
+    Fit(Fit),
     /// Run one experiment file (experiments/*.toml) into DIR/NAME.h5.
-    Run(run::Args),
+    Run(Run),
     /// Work–precision of every 1D solver, cost ratios and sweep throughput (HDF5 + figure).
-    Bench(bench::Args),
+    Bench(Bench),
     /// Random scenarios around the baseline, solved in parallel into one HDF5 file.
-    Sweep(sweep::Args),
+    Sweep(Sweep),
     /// Run every experiment, draw the figures, run the checks, write paper/README.md.
-    Reproduce(reproduce::Args),
+    Reproduce(Reproduce),
 }
 
-/// Run one `kick` command line from inside the program (`kick reproduce` uses it).
-pub(crate) fn dispatch(argv: &[String]) -> Result<(), String> {
-    let cli = Cli::try_parse_from(argv).map_err(|e| e.to_string())?;
-    execute(cli.command)
+#[derive(Args)]
+struct FormatOnly {
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+#[derive(Args)]
+struct Simulate {
+    /// The declared 1D parameters and --law; left out, Table 1's baseline and the paper's law.
+    #[command(flatten)]
+    scenario: Flags<ScenarioSpec>,
+    /// Step of the fixed-step solvers, s
+    #[arg(long, default_value_t = 5e-6, allow_negative_numbers = true)]
+    dt: f64,
+    #[arg(long, default_value = "auto", value_parser = SolverChoice::NAMES)]
+    solver: String,
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+    /// Also output the time history, sampled at most this far apart (s)
+    #[arg(long)]
+    history: Option<f64>,
+}
+
+#[derive(Args)]
+struct Simulate3d {
+    /// The declared 1D and 3D parameters and --law (the normal force's law).
+    #[command(flatten)]
+    kick: Flags<KickSpec>,
+    /// auto | accurate | 1d | rapier
+    #[arg(long, default_value = "auto", value_parser = Solver3d::NAMES)]
+    solver: String,
+    /// Step of the rapier scene path, s
+    #[arg(long, default_value_t = 1e-6, allow_negative_numbers = true)]
+    dt: f64,
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+    /// Print the wall time of the solve (one run) on stderr
+    #[arg(long)]
+    time: bool,
+    /// Instead of one solve: the rapier scene path at steps 4e-5 s halving to
+    /// 6.25e-7 s against the accurate path (error, observed order, wall time)
+    #[arg(long)]
+    scene_convergence: bool,
+}
+
+#[derive(Args)]
+struct Run3d {
+    /// Experiment files (experiments/3d/*.toml)
+    #[arg(required = true)]
+    files: Vec<PathBuf>,
+    /// Directory for the result files (figures go to DIR/figures)
+    #[arg(long, default_value = "results")]
+    out: PathBuf,
+}
+
+#[derive(Args)]
+struct Table2 {
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+    /// Scenario file with the rows' parameters
+    #[arg(long, default_value = "experiments/table2.toml")]
+    scenarios: PathBuf,
+}
+
+#[derive(Args)]
+struct Leg {
+    /// Knee flexion, degrees (0 = straight)
+    #[arg(long, default_value_t = 30.0, allow_negative_numbers = true)]
+    knee: f64,
+    /// Ankle plantarflexion from neutral, degrees (0 = foot at right angles to the shank)
+    #[arg(long, default_value_t = 60.0, allow_negative_numbers = true)]
+    ankle: f64,
+    /// Thigh angle from the downward vertical, degrees, positive forward
+    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
+    hip: f64,
+    /// Ankle rigid during contact (default: a free hinge)
+    #[arg(long, conflicts_with = "ankle_stiffness")]
+    locked_ankle: bool,
+    /// Ankle torsional stiffness, N m/rad: leg and ball integrated together, m_eff = the 1D-equivalent mass
+    #[arg(long, allow_negative_numbers = true)]
+    ankle_stiffness: Option<f64>,
+    /// Knee rigid during contact (default: a free hinge)
+    #[arg(long)]
+    locked_knee: bool,
+    /// Let the hip translate freely (default: pinned hip)
+    #[arg(long)]
+    free_hip: bool,
+    /// Spatial leg (ball-joint hip); enables --abduction, --rotation, --lateral-offset
+    #[arg(long)]
+    spatial: bool,
+    /// Spatial: hip abduction, degrees
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    abduction: f64,
+    /// Spatial: thigh rotation about its long axis, degrees
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    rotation: f64,
+    /// Spatial: contact offset along the foot's mediolateral axis, m
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    lateral_offset: f64,
+    /// Contact point from the ankle along the foot, fraction of foot length
+    #[arg(long, default_value_t = 0.65, allow_negative_numbers = true)]
+    contact: f64,
+    /// Impact direction in the sagittal plane, degrees above horizontal-forward
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    direction: f64,
+    /// Body mass, kg [de Leva's reference subject]
+    #[arg(long, default_value_t = DE_LEVA_BODY_MASS, allow_negative_numbers = true)]
+    body_mass: f64,
+    /// Stature, m [de Leva's reference subject]
+    #[arg(long, default_value_t = DE_LEVA_STATURE, allow_negative_numbers = true)]
+    height: f64,
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+    /// Also write the figure data to DIR (kick-runner's HDF5 sweep layout):
+    /// leg_effective_mass.h5 (knee 0-120 x ankle 0-90 deg, locked and free
+    /// ankle) and leg_exit_speed.h5 (v_b+ vs m_f); other settings as given
+    #[arg(long, value_name = "DIR")]
+    sweep_out: Option<PathBuf>,
+}
+
+#[derive(Args)]
+struct Laws {
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+    /// Scenario file with the rows' parameters
+    #[arg(long, default_value = "experiments/table2.toml")]
+    scenarios: PathBuf,
+    /// Write laws.h5 (outcomes, force pulses, restitution of each formula) and
+    /// laws.png/svg, drawn from laws.h5, here
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Pulse samples per undamped contact time (at most)
+    #[arg(long, default_value_t = 200)]
+    samples: u32,
+}
+
+#[derive(Subcommand)]
+enum Fit {
+    /// Table 2: each row's changed parameter by least squares on the four printed
+    /// observables (accurate solver); --write keeps writing the seed-rk4 scenario file.
+    Table2 {
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Write the scenario file (TOML, seed-rk4 Brent roots) here
+        #[arg(long)]
+        write: Option<PathBuf>,
+        /// Write the fits (HDF5) here, with the scenario file's values and the
+        /// same fits to seed-rk4's unrounded outputs at those values
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// The scenario file whose values --out compares with
+        #[arg(long, default_value = "experiments/table2.toml")]
+        scenarios: PathBuf,
+    },
+    /// Fit the parameters a specification file names to its data (TOML/JSON; see README).
+    Data {
+        /// Fit specification (TOML, or JSON)
+        spec: PathBuf,
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Write the fit report (HDF5: estimates, uncertainties, correlations, residuals) here
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Write a synthetic history (CSV) and a fit specification for it: Table 1's
+    /// baseline (with the parameters and law given) plus seeded noise, to be fitted back with `kick fit data`.
+    Synthesize {
+        /// Directory for NAME.csv and NAME.toml
+        #[arg(long, default_value = "results/identification")]
+        out: PathBuf,
+        /// File stem of the data and the specification
+        #[arg(long, default_value = "synthetic")]
+        name: String,
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Samples over 1.2 contact times (from t = 0, whatever the time offset)
+        #[arg(long, default_value_t = 80)]
+        times: usize,
+        /// The truth: the declared 1D parameters and --law
+        #[command(flatten)]
+        truth: Flags<ScenarioSpec>,
+        /// Time of first touch in the data, s; when non-zero the specification also fits `time_offset`
+        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+        time_offset: f64,
+    },
+    /// Identifiability (Section 17.8): misfit profiles of m_f, k, c, n from the exit
+    /// speed alone and from noisy histories, and (k, c) misfit maps.
+    Profile {
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Write identifiability.h5 and identifiability.png/svg (drawn from it) here
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Profile over [1/spread, spread] x the truth
+        #[arg(long, default_value_t = 1.5)]
+        spread: f64,
+        #[arg(long, default_value_t = 9)]
+        points: usize,
+        /// Grid points per axis of the misfit maps
+        #[arg(long, default_value_t = 21)]
+        map_points: usize,
+        #[arg(long, default_value_t = 5)]
+        seed: u64,
+    },
+}
+
+#[derive(Args)]
+struct Run {
+    /// Experiment file (experiments/*.toml)
+    file: PathBuf,
+    /// Directory for the result file NAME.h5
+    #[arg(long, default_value = "results")]
+    out: PathBuf,
+    /// Worker threads (default: one per core)
+    #[arg(long)]
+    threads: Option<usize>,
+}
+
+#[derive(Args)]
+struct Bench {
+    /// Directory for work_precision.h5 (figures go to DIR/figures)
+    #[arg(long, default_value = "results")]
+    out: PathBuf,
+    /// Least wall time per measured point, s
+    #[arg(long, default_value_t = 0.3)]
+    min_time: f64,
+    /// Scenarios in the throughput sweep
+    #[arg(long, default_value_t = 200_000)]
+    sweep_samples: u64,
+    /// Short variant for CI: a few ladder points, little time each
+    #[arg(long)]
+    quick: bool,
+    /// Also write a Markdown section with the measured numbers here
+    #[arg(long)]
+    report: Option<PathBuf>,
+}
+
+#[derive(Args)]
+struct Sweep {
+    /// Number of scenarios
+    #[arg(long)]
+    samples: u64,
+    /// Seed of the sampler (the same seed gives the same file)
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    #[arg(long, default_value = "auto", value_parser = SolverChoice::NAMES)]
+    solver: String,
+    /// Step of the fixed-step solvers, s
+    #[arg(long, default_value_t = 5e-6)]
+    dt: f64,
+    /// Result file (its directory is created)
+    #[arg(long)]
+    out: PathBuf,
+    /// Worker threads (default: one per core)
+    #[arg(long)]
+    threads: Option<usize>,
+    /// A 1D parameter given is held at that value instead of drawn; --law
+    /// and --restitution set the contact law of every scenario
+    #[command(flatten)]
+    fixed: Flags<ScenarioSpec>,
+}
+
+#[derive(Args)]
+struct Reproduce {
+    /// Directory of experiment files (every *.toml directly inside is run)
+    #[arg(long, default_value = "experiments")]
+    experiments: PathBuf,
+    /// Directory for the result files; figures go to OUT/figures
+    #[arg(long, default_value = "results")]
+    out: PathBuf,
+    /// Report to (re)generate
+    #[arg(long, default_value = "paper/README.md")]
+    report: PathBuf,
+    /// The benchmark's short variant (as `kick bench --quick`): for tests, not for the committed pages
+    #[arg(long)]
+    quick_bench: bool,
+    /// Worker threads (default: one per core)
+    #[arg(long)]
+    threads: Option<usize>,
 }
 
 fn main() -> ExitCode {
     kick_runner::h5::disable_file_locking();
     let cli = Cli::parse();
-    match execute(cli.command) {
+    let mut out = Out::new();
+    match execute(cli.command, &mut out) {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {
-            eprintln!("error: {message}");
+            note(&format!("error: {message}"));
             ExitCode::FAILURE
         }
     }
 }
 
-fn execute(command: Command) -> Result<(), String> {
+fn execute(command: Command, out: &mut Out) -> CliResult {
+    use kick_runner::*;
     match command {
-        Command::Simulate(args) => simulate::run(args),
-        Command::Simulate3d(args) => simulate3d::run(args),
-        Command::Run3d(args) => run3d::run(args),
-        Command::Table2(args) => table2::run(args),
-        Command::Check(args) => check::run(args),
-        Command::Leg(args) => leg::run(args),
-        Command::Laws(args) => laws::run(args),
-        Command::Fit(command) => fit::run(command),
-        Command::Run(args) => run::run(args),
-        Command::Reproduce(args) => reproduce::run(args),
-        Command::Sweep(args) => sweep::run(args),
-        Command::Bench(args) => bench::run(args),
+        Command::Simulate(a) => {
+            let simulation = simulate::simulate(&a.scenario.spec(), &a.solver, a.dt, a.history)?;
+            out.print(a.format, &simulation)
+        }
+        Command::Simulate3d(a) if a.scene_convergence => out.print(Format::Text, &simulate::scene_convergence(&a.kick.spec())?),
+        Command::Simulate3d(a) => {
+            let simulation = simulate::simulate3d(&a.kick.spec(), &a.solver, a.dt)?;
+            if a.time {
+                note(&format!("solver {} took {:.3} ms", simulation.outcome.solver, simulation.seconds * 1e3));
+            }
+            out.print(a.format, &simulation)
+        }
+        Command::Run3d(a) => out.print(Format::Text, &three_d::run3d(&a.files, &a.out)?),
+        Command::Table2(a) => {
+            let table = table2::compare(&a.scenarios)?;
+            out.print(a.format, &table)?;
+            table.all_match().then_some(()).ok_or_else(|| "seed-rk4 does not reproduce every printed digit of Table 2".into())
+        }
+        Command::Check(a) => {
+            let table = checks::run_all();
+            out.print(a.format, &table)?;
+            match table.failed() {
+                0 => Ok(()),
+                failed => Err(format!("{failed} of {} cross-model checks failed", table.rows.len())),
+            }
+        }
+        Command::Leg(a) => {
+            let settings = leg::LegSettings {
+                knee: a.knee,
+                ankle: a.ankle,
+                hip: a.hip,
+                locked_ankle: a.locked_ankle,
+                ankle_stiffness: a.ankle_stiffness,
+                locked_knee: a.locked_knee,
+                free_hip: a.free_hip,
+                spatial: a.spatial,
+                abduction: a.abduction,
+                rotation: a.rotation,
+                lateral_offset: a.lateral_offset,
+                contact: a.contact,
+                direction: a.direction,
+                body_mass: a.body_mass,
+                height: a.height,
+                sweep_out: a.sweep_out,
+                command: std::env::args().collect::<Vec<_>>().join(" "),
+            };
+            out.print(a.format, &leg::leg(&settings)?)
+        }
+        Command::Laws(a) => {
+            let settings = identify::LawsSettings { scenarios: a.scenarios, out: a.out, samples: a.samples };
+            out.print(a.format, &identify::laws(&settings)?)
+        }
+        Command::Fit(Fit::Table2 { format, write, out: file, scenarios }) => {
+            out.print(format, &identify::table2(write.as_deref(), file.as_deref(), &scenarios)?)
+        }
+        Command::Fit(Fit::Data { spec, format, out: file }) => {
+            let fit = identify::data(&spec, file.as_deref())?;
+            out.print(format, &fit)?;
+            fit.converged()
+        }
+        Command::Fit(Fit::Synthesize { out: dir, name, seed, times, truth, time_offset }) => {
+            out.print(Format::Text, &identify::synthesize(&dir, &name, seed, times, &truth.spec(), time_offset)?)
+        }
+        Command::Fit(Fit::Profile { format, out: dir, spread, points, map_points, seed }) => {
+            let settings = identify::ProfileSettings { out: dir, spread, points, map_points, seed };
+            out.print(format, &identify::profile(&settings)?)
+        }
+        Command::Run(a) => {
+            set_threads(a.threads)?;
+            out.print(Format::Text, &run_file(&a.file, &a.out)?)
+        }
+        Command::Bench(a) => {
+            let settings =
+                bench::BenchSettings { out: a.out, min_time: a.min_time, sweep_samples: a.sweep_samples, quick: a.quick, report: a.report };
+            let report = bench::bench(&settings, out)?;
+            out.print(Format::Text, &report)
+        }
+        Command::Sweep(a) => {
+            set_threads(a.threads)?;
+            let settings =
+                sweep::SweepSettings { samples: a.samples, seed: a.seed, solver: a.solver, dt: a.dt, out: a.out, fixed: a.fixed.spec() };
+            out.print(Format::Text, &sweep::sweep(&settings)?)
+        }
+        Command::Reproduce(a) => {
+            set_threads(a.threads)?;
+            let settings =
+                reproduce::ReproduceSettings { experiments: a.experiments, out: a.out, report: a.report, quick_bench: a.quick_bench };
+            let done = reproduce::reproduce(&settings, out)?;
+            out.print(Format::Text, &done)?;
+            match done.failed_checks {
+                0 => Ok(()),
+                failed => Err(format!("{failed} cross-model check(s) failed; see {}", done.report.display())),
+            }
+        }
     }
 }

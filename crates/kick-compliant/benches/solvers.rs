@@ -1,7 +1,7 @@
 //! Cost per scenario of every 1D solver on the shared test models.
 //!
-//! Full run: `cargo bench -p kick-compliant --bench solvers`
-//! Short CI variant: `cargo bench -p kick-compliant --bench solvers -- --quick`
+//! Full run: `cargo bench -p kick-compliant --features bench --bench solvers`
+//! Short CI variant: `cargo bench -p kick-compliant --features bench --bench solvers -- --quick`
 //! Ratios are only meaningful between benches of one run (the machine is shared).
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};

@@ -13,7 +13,7 @@ use crate::events::{Engine, Method, Recorder, StopAt};
 use crate::history::{self, Sampler};
 use crate::ode::{self, Branch, ContactOde, Extremes, State};
 use crate::stability;
-use kick_core::{
+use kick_core::{SolverPath, 
     AnyLaw, ContactLaw, ContactPhase, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing, StopReason,
     Streamed,
 };
@@ -47,7 +47,7 @@ impl Accurate {
     /// Solve the scenario's masses and speeds with any contact law in place
     /// of the scenario's own (Eq. 20).
     pub fn solve_law<L: ContactLaw + Copy>(&self, scenario: &Scenario, law: L) -> Result<Outcome, KickError> {
-        FullState { method: self.method(), name: "accurate" }.run(scenario, law, None)
+        FullState { method: self.method(), path: SolverPath::Accurate }.run(scenario, law, None)
     }
     /// As [`Accurate::solve_law`], streaming a history (see [`RecordingSolver`]).
     pub fn solve_law_streamed<L: ContactLaw + Copy>(
@@ -57,7 +57,7 @@ impl Accurate {
         spacing: Spacing,
         sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
     ) -> Result<Streamed, KickError> {
-        FullState { method: self.method(), name: "accurate" }.streamed(scenario, law, spacing, sink)
+        FullState { method: self.method(), path: SolverPath::Accurate }.streamed(scenario, law, spacing, sink)
     }
 }
 
@@ -91,18 +91,19 @@ impl RecordingSolver for Accurate {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FullState {
     pub method: Method,
-    pub name: &'static str,
+    /// Its path, whose name is the solver's name.
+    pub path: SolverPath,
 }
 
 impl FullState {
     pub fn dop853(relative_tolerance: f64, absolute_tolerance: f64) -> Self {
-        FullState { method: Method::Dop853 { relative_tolerance, absolute_tolerance }, name: "dop853" }
+        FullState { method: Method::Dop853 { relative_tolerance, absolute_tolerance }, path: SolverPath::Dop853 }
     }
     pub fn dopri5(relative_tolerance: f64, absolute_tolerance: f64) -> Self {
-        FullState { method: Method::Dopri5 { relative_tolerance, absolute_tolerance }, name: "dopri5" }
+        FullState { method: Method::Dopri5 { relative_tolerance, absolute_tolerance }, path: SolverPath::Dopri5 }
     }
     pub fn rk4_events(step: f64) -> Self {
-        FullState { method: Method::Rk4 { step }, name: "rk4-events" }
+        FullState { method: Method::Rk4 { step }, path: SolverPath::Rk4Events }
     }
 
     fn run<L: ContactLaw + Copy>(
@@ -135,7 +136,7 @@ impl FullState {
             extremes,
             StopReason::Separated { t: end.time },
             engine.evaluations,
-            self.name,
+            self.path,
         )?;
         if let Some(step) = self.method.fixed_step() {
             stability::check_energy(scenario, &law, &outcome.energy, step, outcome.contact_time)?;
@@ -156,7 +157,7 @@ impl FullState {
 
 impl Solver for FullState {
     fn name(&self) -> &'static str {
-        self.name
+        self.path.name()
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
         match scenario.contact_law() {

@@ -16,7 +16,7 @@ use crate::closed::ClosedForm;
 use crate::reduced::Reduced;
 use crate::series::Series;
 use crate::Accurate;
-use kick_core::{KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing, Streamed};
+use kick_core::{KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, SolverPath, Spacing, Streamed};
 use std::ops::ControlFlow;
 
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -27,14 +27,14 @@ pub struct Auto {
 }
 
 impl Auto {
-    /// The name of the path `solve` takes for this scenario.
-    pub fn path(scenario: &Scenario) -> &'static str {
+    /// The path `solve` takes for this scenario (closed form, series or reduced).
+    pub fn path(scenario: &Scenario) -> SolverPath {
         if ClosedForm::applies(scenario) {
-            "closed-form"
+            SolverPath::ClosedForm
         } else if Series::applies(scenario) {
-            "series"
+            SolverPath::Series
         } else {
-            "reduced"
+            SolverPath::Reduced
         }
     }
 }
@@ -45,8 +45,8 @@ impl Solver for Auto {
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
         match Auto::path(scenario) {
-            "closed-form" => ClosedForm.solve(scenario),
-            "series" => self.series.solve(scenario),
+            SolverPath::ClosedForm => ClosedForm.solve(scenario),
+            SolverPath::Series => self.series.solve(scenario),
             _ => self.reduced.solve(scenario),
         }
     }

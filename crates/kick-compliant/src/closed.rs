@@ -8,7 +8,7 @@
 //! - [`undamped_return`]: the undamped restitution phase of any run of the
 //!   paper's law, from δ_max, with or without a constant drive.
 
-use kick_core::{
+use kick_core::{SolverPath, 
     roots, special, ContactLaw, EnergyBudget, KickError, Outcome, Scenario, StopReason,
 };
 
@@ -32,7 +32,7 @@ pub struct CompressionEnd {
 /// and [`special::driven_return_integral`] with one. The centre of
 /// mass gains F_drive t / M (Eq. 26) and the drive does work F_drive x_f(t_c).
 pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outcome, KickError> {
-    let law = scenario.law();
+    let law = scenario.paper_law();
     let mu = scenario.reduced_mass();
     let drive = scenario.drive_force();
     let drive_share = mu / scenario.effective_foot_mass() * drive;
@@ -93,7 +93,7 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
         },
         stop: StopReason::ClosedForm { t: contact_time },
         evaluations: 0,
-        method: "closed-form",
+        method: SolverPath::ClosedForm,
     };
     crate::ode::check_finite(&outcome)
 }
@@ -109,7 +109,7 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
 pub fn released_energy(scenario: &Scenario, end: &CompressionEnd) -> (f64, f64) {
     let mu = scenario.reduced_mass();
     let drive_share = mu / scenario.effective_foot_mass() * scenario.drive_force();
-    let stored = scenario.law().potential(end.max_compression);
+    let stored = scenario.paper_law().potential(end.max_compression);
     let kinetic = scenario.relative_kinetic_energy();
     if drive_share == 0.0 {
         return (stored, 1.0);
@@ -129,7 +129,7 @@ pub fn elastic(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
     }
     let max_compression = scenario.elastic_max_compression();
     let half = special::return_time(max_compression, scenario.approach_speed(), scenario.get(kick_core::Parameter::Exponent));
-    let force = scenario.law().elastic_force(max_compression);
+    let force = scenario.paper_law().elastic_force(max_compression);
     Some(undamped_return(
         scenario,
         CompressionEnd {
@@ -200,7 +200,7 @@ pub fn linear(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
     if scenario.law_kind() != kick_core::LawKind::PowerLaw || scenario.get(kick_core::Parameter::Exponent) != 1.0 || scenario.drive_force() != 0.0 {
         return None;
     }
-    let law = scenario.law();
+    let law = scenario.paper_law();
     let (k, c) = (law.stiffness, law.damping);
     let mu = scenario.reduced_mass();
     let v0 = scenario.approach_speed();

@@ -95,6 +95,41 @@ impl SolverChoice {
         })
     }
 
+    /// The numeric settings, by name (result files store each as a typed
+    /// attribute): steps in s, tolerances relative/absolute in scaled units.
+    /// `auto`'s name each path: `series_tolerance`, `reduced_*`, and the
+    /// `history_*` of the full-state run it records histories with.
+    pub fn settings(&self) -> Vec<(&'static str, f64)> {
+        fn method(prefix: Option<&'static str>, m: events::Method) -> Vec<(&'static str, f64)> {
+            let (rtol, atol) = match prefix {
+                None => ("relative_tolerance", "absolute_tolerance"),
+                Some("reduced") => ("reduced_relative_tolerance", "reduced_absolute_tolerance"),
+                Some(_) => ("history_relative_tolerance", "history_absolute_tolerance"),
+            };
+            match m {
+                events::Method::Dop853 { relative_tolerance, absolute_tolerance }
+                | events::Method::Dopri5 { relative_tolerance, absolute_tolerance } => {
+                    vec![(rtol, relative_tolerance), (atol, absolute_tolerance)]
+                }
+                events::Method::Rk4 { step } => vec![("dt", step)],
+            }
+        }
+        match self {
+            SolverChoice::Auto(a) => {
+                let mut settings = vec![("series_tolerance", a.series.tolerance)];
+                settings.extend(method(Some("reduced"), a.reduced.method));
+                settings.extend(method(Some("history"), a.accurate.method()));
+                settings
+            }
+            SolverChoice::SeedRk4(s) => vec![("dt", s.step)],
+            SolverChoice::Accurate(a) => method(None, a.method()),
+            SolverChoice::FullState(f) => method(None, f.method),
+            SolverChoice::Reduced(r) | SolverChoice::ReducedReturn(ReducedReturn { reduced: r }) => method(None, r.method),
+            SolverChoice::ClosedForm(_) => Vec::new(),
+            SolverChoice::Series(s) => vec![("tolerance", s.tolerance)],
+        }
+    }
+
     fn solver(&self) -> &dyn Solver {
         match self {
             SolverChoice::Auto(s) => s,

@@ -1,7 +1,7 @@
 //! The 1D compliant system (Eqs. 13–14, 20) on the state of Eq. 47, extended
 //! by three running integrals so the energy budget is measured, not inferred.
 
-use kick_core::{ContactLaw, ContactPhase, EnergyBudget, Outcome, Sample, Scenario, StopReason};
+use kick_core::{ContactLaw, ContactPhase, EnergyBudget, Outcome, Sample, Scenario, SolverPath, StopReason};
 use nalgebra::SVector;
 
 /// (x_f, v_f, x_b, v_b, J, D, W): Eq. 47 plus impulse ∫F dt, dissipation
@@ -231,7 +231,7 @@ pub fn outcome<L: ContactLaw + Copy>(
     extremes: Extremes,
     stop: StopReason,
     evaluations: u64,
-    method: &'static str,
+    method: SolverPath,
 ) -> Result<Outcome, kick_core::KickError> {
     let t = stop.time();
     let v_ball_out = y[BALL_VELOCITY];

@@ -14,7 +14,7 @@
 use crate::closed::{undamped_return, CompressionEnd};
 use crate::events::{ContactSystem, Engine, Method, Recorder, Scales, StopAt};
 use crate::history::{self, Sampler};
-use kick_core::{
+use kick_core::{SolverPath, 
     AnyLaw, ContactLaw, ContactPhase, EnergyBudget, KickError, LawKind, Outcome, RecordingSolver, Sample, Scenario, Solver,
     Spacing, StopReason, Streamed,
 };
@@ -206,7 +206,7 @@ impl Reduced {
             energy: ContactSystem::budget(&system, scenario, end.time, &end.state),
             stop: StopReason::Separated { t: end.time },
             evaluations: engine.evaluations,
-            method: "reduced",
+            method: SolverPath::Reduced,
         };
         crate::ode::check_finite(&outcome)?;
         if let Some(step) = self.method.fixed_step() {
@@ -267,7 +267,7 @@ impl Solver for ReducedReturn {
                 reason: "its return phase is in closed form only for the paper's law, which does not damp while restituting",
             });
         }
-        let law = scenario.law();
+        let law = scenario.paper_law();
         let system = RelativeOde::new(scenario, law);
         let mut engine = Engine::new(self.reduced.method, system, scenario)?;
         let y0 = RelativeState::new(0.0, scenario.approach_speed(), 0.0);
@@ -283,7 +283,7 @@ impl Solver for ReducedReturn {
             },
         )?;
         outcome.evaluations = engine.evaluations;
-        outcome.method = "reduced-return";
+        outcome.method = SolverPath::ReducedReturn;
         outcome.stop = StopReason::Separated { t: outcome.contact_time };
         Ok(outcome)
     }

@@ -29,7 +29,7 @@
 use crate::history::{self, Sampler};
 use crate::ode::{self, Branch, ContactOde, Extremes, State};
 use crate::stability;
-use kick_core::{
+use kick_core::{SolverPath, 
     AnyLaw, ContactPhase, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing, StopReason, Streamed,
 };
 use std::ops::ControlFlow;
@@ -124,7 +124,7 @@ impl SeedRk4 {
                     extremes,
                     StopReason::StepCondition { t: last_in_contact },
                     4 * step,
-                    "seed-rk4",
+                    SolverPath::SeedRk4,
                 )?;
                 stability::check_energy(scenario, &law, &outcome.energy, h, t)?;
                 return Ok(outcome);

@@ -40,14 +40,14 @@
 //! At that default every observable is within 1e-10 relative of the closed
 //! forms, of a hand-solved linear law under a drive and of `accurate` at
 //! 1e-14 on the shared test models, and within 1e-9 over the sweep's box
-//! (`tests/series.rs`; `kick bench` measures ~2e-11 on its set); over the
-//! stress box it agrees with `reduced` at 1e-14 (`tests/stress.rs`).
+//! (`tests/solvers/series.rs`; `kick bench` measures ~2e-11 on its set); over the
+//! stress box it agrees with `reduced` at 1e-14 (`tests/solvers/stress.rs`).
 //! Order and tolerance were chosen by instruction counts (callgrind) at
 //! that accuracy: order 16 beat 12, 14, 18, 20 and 24.
 //! No allocation: coefficient arrays live on the stack.
 
 use crate::closed::{released_energy, undamped_return, CompressionEnd};
-use kick_core::{roots, KickError, LawKind, Outcome, Scenario, Solver, StopReason};
+use kick_core::{roots, KickError, LawKind, Outcome, Scenario, Solver, SolverPath, StopReason};
 
 /// Order of the Taylor steps.
 pub const ORDER: usize = 16;
@@ -608,7 +608,7 @@ impl Series {
     /// Maximum compression, its time, the force peak and the dissipated
     /// energy of the compression phase, in SI units.
     pub fn compression(&self, scenario: &Scenario) -> Result<(CompressionEnd, u64), KickError> {
-        let law = scenario.law();
+        let law = scenario.paper_law();
         let mu = scenario.reduced_mass();
         let v0 = scenario.approach_speed();
         let drive_share = mu / scenario.effective_foot_mass() * scenario.drive_force();
@@ -683,7 +683,7 @@ impl Solver for Series {
         }
         let mut outcome = undamped_return(scenario, end)?;
         outcome.evaluations = powers;
-        outcome.method = "series";
+        outcome.method = SolverPath::Series;
         outcome.stop = StopReason::Separated { t: outcome.contact_time };
         Ok(outcome)
     }

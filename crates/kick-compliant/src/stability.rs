@@ -31,7 +31,7 @@
 //! out of the scale: at a horizon it would grow without bound and hide the
 //! contact's error.) For `rk4-events`, a run that passes has exit velocities
 //! within 0.5 × the bound of V0 on the shared test models (measured, held
-//! by `tests/step_size.rs`). For `seed-rk4` the stop is quantised to the step
+//! by `tests/solvers/step_size.rs`). For `seed-rk4` the stop is quantised to the step
 //! on top of that (see [`crate::seed`]).
 
 use kick_core::{roots, ContactLaw, EnergyBudget, KickError, Scenario};

@@ -368,6 +368,23 @@ impl AnyLaw {
         AnyLaw::new(LawKind::from_name(name)?, parameters)
     }
 
+    /// The law's numbers as solved, by name (result files store each as a
+    /// typed attribute): k, c, n of the paper's law; k, n, χ, the target e
+    /// and reference V0 of a hysteresis law; k (N/m) and c of Kelvin–Voigt.
+    pub fn parameters(&self) -> Vec<(&'static str, f64)> {
+        match *self {
+            AnyLaw::PowerLaw(p) => vec![("stiffness", p.stiffness), ("damping", p.damping), ("exponent", p.exponent)],
+            AnyLaw::Hysteresis(h) => vec![
+                ("stiffness", h.stiffness),
+                ("exponent", h.exponent),
+                ("hysteresis", h.hysteresis),
+                ("target_restitution", h.target_restitution),
+                ("impact_speed", h.impact_speed),
+            ],
+            AnyLaw::KelvinVoigt(k) => vec![("stiffness", k.stiffness), ("damping", k.damping)],
+        }
+    }
+
     pub fn kind(&self) -> LawKind {
         match self {
             AnyLaw::PowerLaw(_) => LawKind::PowerLaw,
@@ -402,28 +419,42 @@ macro_rules! dispatch {
     };
 }
 
-impl ContactLaw for AnyLaw {
+/// Every [`ContactLaw`] method forwarded to the law inside, so a law's own
+/// overrides (the paper's law's smooth `branch_force` past δ̇ = 0, its shared
+/// power in `force_and_gradient`) act through [`AnyLaw`] too. A method added
+/// to the trait goes into this list; `any_law_forwards_every_method` checks
+/// each one against the law inside.
+macro_rules! forward_contact_law {
+    ($($(#[$attr:meta])* fn $name:ident(&self $(, $arg:ident: $ty:ty)*) -> $ret:ty;)*) => {
+        impl ContactLaw for AnyLaw {
+            $(
+                $(#[$attr])*
+                fn $name(&self $(, $arg: $ty)*) -> $ret {
+                    dispatch!(self, law => law.$name($($arg),*))
+                }
+            )*
+        }
+    };
+}
+
+forward_contact_law! {
     #[inline]
-    fn force(&self, compression: f64, compression_rate: f64) -> f64 {
-        dispatch!(self, law => law.force(compression, compression_rate))
-    }
+    fn force(&self, compression: f64, compression_rate: f64) -> f64;
     #[inline]
-    fn potential(&self, compression: f64) -> f64 {
-        dispatch!(self, law => law.potential(compression))
-    }
+    fn potential(&self, compression: f64) -> f64;
     #[inline]
-    fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
-        dispatch!(self, law => law.contact_force(compression, compression_rate))
-    }
-    fn onset_force(&self, approach_speed: f64) -> f64 {
-        dispatch!(self, law => law.onset_force(approach_speed))
-    }
-    fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
-        dispatch!(self, law => law.force_gradient(compression, compression_rate))
-    }
-    fn damps_compression_only(&self) -> bool {
-        dispatch!(self, law => law.damps_compression_only())
-    }
+    fn contact_force(&self, compression: f64, compression_rate: f64) -> f64;
+    fn onset_force(&self, approach_speed: f64) -> f64;
+    #[inline]
+    fn elastic_and_contact_force(&self, compression: f64, compression_rate: f64) -> (f64, f64);
+    fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64);
+    #[inline]
+    fn force_and_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64, f64);
+    #[inline]
+    fn branch_force(&self, compression: f64, compression_rate: f64, compressing: bool) -> (f64, f64);
+    #[inline]
+    fn branch_force_and_gradient(&self, compression: f64, compression_rate: f64, compressing: bool) -> (f64, f64, f64);
+    fn damps_compression_only(&self) -> bool;
 }
 
 fn check_positive(name: &'static str, value: f64) -> Result<f64, KickError> {
@@ -551,6 +582,47 @@ mod tests {
             let x0 = exact_hysteresis(e);
             assert!((exact_restitution(x0) - e).abs() < 1e-12, "e={e}: x0={x0}");
         }
+    }
+
+    /// Each method of `AnyLaw` gives exactly what the law inside gives,
+    /// including the paper's law's overrides (before forwarding, `AnyLaw`
+    /// fell back to the trait's defaults for the branch forces, which clip
+    /// δ̇ at 0 inside the compression phase).
+    #[test]
+    fn any_law_forwards_every_method() {
+        fn same<L: ContactLaw>(any: &AnyLaw, law: &L) {
+            for &d in &[0.0, 1e-9, 0.01, 0.028] {
+                for &r in &[-5.0, -1e-3, 0.0, 0.7, 22.0] {
+                    let kind = any.kind();
+                    assert_eq!(any.force(d, r).to_bits(), law.force(d, r).to_bits(), "{kind:?} force");
+                    assert_eq!(any.contact_force(d, r).to_bits(), law.contact_force(d, r).to_bits(), "{kind:?}");
+                    assert_eq!(any.elastic_and_contact_force(d, r), law.elastic_and_contact_force(d, r), "{kind:?}");
+                    assert_eq!(any.force_gradient(d, r), law.force_gradient(d, r), "{kind:?}");
+                    assert_eq!(any.force_and_gradient(d, r), law.force_and_gradient(d, r), "{kind:?}");
+                    for compressing in [true, false] {
+                        assert_eq!(any.branch_force(d, r, compressing), law.branch_force(d, r, compressing), "{kind:?} {d} {r}");
+                        assert_eq!(
+                            any.branch_force_and_gradient(d, r, compressing),
+                            law.branch_force_and_gradient(d, r, compressing),
+                            "{kind:?} {d} {r}"
+                        );
+                    }
+                }
+                assert_eq!(any.potential(d).to_bits(), law.potential(d).to_bits());
+            }
+            assert_eq!(any.onset_force(22.0), law.onset_force(22.0));
+            assert_eq!(any.damps_compression_only(), law.damps_compression_only());
+        }
+        for any in laws() {
+            match any {
+                AnyLaw::PowerLaw(law) => same(&any, &law),
+                AnyLaw::Hysteresis(law) => same(&any, &law),
+                AnyLaw::KelvinVoigt(law) => same(&any, &law),
+            }
+        }
+        // The case that differed: compressing with δ̇ < 0 keeps the dashpot on.
+        let AnyLaw::PowerLaw(paper) = laws()[0] else { panic!("the paper's law first") };
+        assert_eq!(AnyLaw::PowerLaw(paper).branch_force(0.01, -1.0, true).1, paper.elastic_force(0.01) - paper.damping);
     }
 
     #[test]

@@ -11,6 +11,7 @@ pub mod laws;
 pub mod measurements;
 pub mod models;
 pub mod outcome;
+pub mod parameters;
 pub mod paper;
 pub mod roots;
 pub mod scenario;
@@ -21,9 +22,10 @@ use std::ops::ControlFlow;
 pub use law::{ContactLaw, PowerLawContact};
 pub use laws::{AnyLaw, LawKind};
 pub use outcome::{
-    ContactPhase, EnergyBudget, ExitVelocities, Grid, History, Outcome, Sample, Spacing, StopReason, HISTORY_COLUMNS,
+    ContactPhase, EnergyBudget, ExitVelocities, Grid, History, Outcome, Sample, SolverPath, Spacing, StopReason, HISTORY_COLUMNS,
     MAX_HISTORY_SAMPLES, OBSERVABLES,
 };
+pub use parameters::{Level, ParameterDef, SetParameter, Value, PARAMETERS};
 pub use scenario::{Parameter, Scenario, ScenarioSpec};
 
 /// Standard gravity of every model level that has gravity (kick-3d's scene,

@@ -90,7 +90,46 @@ pub struct Outcome {
     /// Right-hand-side evaluations spent (0 for closed forms).
     pub evaluations: u64,
     /// Which solver path produced it (`--solver auto` picks one per scenario).
-    pub method: &'static str,
+    pub method: SolverPath,
+}
+
+/// The solver path that produced an outcome: each solver's own, and the one
+/// `auto` took for the scenario. Written by its kebab-case name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SolverPath {
+    SeedRk4,
+    Accurate,
+    Dop853,
+    Dopri5,
+    Rk4Events,
+    Reduced,
+    ReducedReturn,
+    ClosedForm,
+    Series,
+}
+
+impl SolverPath {
+    /// The `--solver` name of the path.
+    pub fn name(self) -> &'static str {
+        match self {
+            SolverPath::SeedRk4 => "seed-rk4",
+            SolverPath::Accurate => "accurate",
+            SolverPath::Dop853 => "dop853",
+            SolverPath::Dopri5 => "dopri5",
+            SolverPath::Rk4Events => "rk4-events",
+            SolverPath::Reduced => "reduced",
+            SolverPath::ReducedReturn => "reduced-return",
+            SolverPath::ClosedForm => "closed-form",
+            SolverPath::Series => "series",
+        }
+    }
+}
+
+impl std::fmt::Display for SolverPath {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
 }
 
 impl Outcome {

@@ -3,12 +3,15 @@
 use crate::error::KickError;
 use crate::law::PowerLawContact;
 use crate::laws::{AnyLaw, LawError, LawKind, LawParameters};
+use crate::parameters::{self, Level, ParameterDef, ParameterError, SetParameter, Value};
 use serde::{Deserialize, Serialize};
 
 /// See [`Scenario::contact_horizon`].
 pub const CONTACT_HORIZON_FACTOR: f64 = 1000.0;
 
-/// The eight parameters of a 1D scenario, in the order files and tables list them.
+/// The eight model parameters of a 1D scenario, in the order files and
+/// tables list them: the first eight of [`parameters::PARAMETERS`], where
+/// each is declared (name, symbol, unit, default, valid range, sampling).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Parameter {
@@ -34,30 +37,19 @@ impl Parameter {
         Parameter::DriveForce,
     ];
 
+    /// The declaration of this parameter.
+    pub fn def(self) -> &'static ParameterDef {
+        &parameters::PARAMETERS[self as usize]
+    }
+
     /// Snake-case name used by the CLI, TOML and HDF5 files.
     pub fn name(self) -> &'static str {
-        match self {
-            Parameter::FootMass => "foot_mass",
-            Parameter::BallMass => "ball_mass",
-            Parameter::FootSpeed => "foot_speed",
-            Parameter::BallSpeed => "ball_speed",
-            Parameter::Stiffness => "stiffness",
-            Parameter::Damping => "damping",
-            Parameter::Exponent => "exponent",
-            Parameter::DriveForce => "drive_force",
-        }
+        self.def().name
     }
 
     /// SI unit; the stiffness unit depends on the exponent (Table 1).
     pub fn unit(self) -> &'static str {
-        match self {
-            Parameter::FootMass | Parameter::BallMass => "kg",
-            Parameter::FootSpeed | Parameter::BallSpeed => "m/s",
-            Parameter::Stiffness => "N/m^n",
-            Parameter::Damping => "N s/m",
-            Parameter::Exponent => "1",
-            Parameter::DriveForce => "N",
-        }
+        self.def().unit
     }
 
     pub fn from_name(name: &str) -> Option<Parameter> {
@@ -67,8 +59,10 @@ impl Parameter {
 
 /// Unvalidated scenario as read from a file or the command line: every field
 /// left out takes Table 1's baseline value.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+///
+/// Read from files by the declared names ([`parameters`]): an unknown key is
+/// refused with the nearby valid ones.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct ScenarioSpec {
     pub foot_mass: Option<f64>,
     pub ball_mass: Option<f64>,
@@ -138,6 +132,36 @@ impl ScenarioSpec {
     }
 }
 
+impl SetParameter for ScenarioSpec {
+    const LEVELS: &'static [Level] = &[Level::Scenario];
+
+    fn set_parameter(&mut self, parameter: &'static ParameterDef, value: Value) -> Result<(), ParameterError> {
+        let x = parameters::number(parameter, value)?;
+        match Parameter::from_name(parameter.name) {
+            Some(p) => self.set(p, x),
+            None if parameter.name == parameters::RESTITUTION.name => self.restitution = Some(x),
+            None => return Err(parameters::unknown(Self::LEVELS, parameter.name)),
+        }
+        Ok(())
+    }
+}
+
+/// A [`ScenarioSpec`] table: the declared parameters of the 1D level and
+/// `law`, the key that chooses the contact law.
+impl parameters::DeclaredTable for ScenarioSpec {
+    const EXTRA: &'static [&'static str] = &["law"];
+    fn read_extra<'de, A: serde::de::MapAccess<'de>>(&mut self, _key: &str, map: &mut A) -> Result<(), A::Error> {
+        self.law = map.next_value()?;
+        Ok(())
+    }
+}
+
+impl<'de> Deserialize<'de> for ScenarioSpec {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        parameters::deserialize_table(deserializer)
+    }
+}
+
 /// A validated 1D scenario: masses, initial speeds and the paper's contact law.
 ///
 /// Construction checks every field, so solvers may assume positive masses,
@@ -162,15 +186,19 @@ pub struct Scenario {
 impl Scenario {
     /// Table 1's baseline.
     pub const BASELINE: Scenario = Scenario {
-        foot_mass: 3.0,
-        ball_mass: crate::DEFAULT_BALL_MASS,
-        foot_speed: 22.0,
-        ball_speed: 0.0,
-        stiffness: 4.2e5,
-        damping: 120.0,
-        exponent: 1.35,
-        drive_force: 0.0,
-        contact: AnyLaw::PowerLaw(PowerLawContact { stiffness: 4.2e5, damping: 120.0, exponent: 1.35 }),
+        foot_mass: parameters::FOOT_MASS.default_number(),
+        ball_mass: parameters::BALL_MASS.default_number(),
+        foot_speed: parameters::FOOT_SPEED.default_number(),
+        ball_speed: parameters::BALL_SPEED.default_number(),
+        stiffness: parameters::STIFFNESS.default_number(),
+        damping: parameters::DAMPING.default_number(),
+        exponent: parameters::EXPONENT.default_number(),
+        drive_force: parameters::DRIVE_FORCE.default_number(),
+        contact: AnyLaw::PowerLaw(PowerLawContact {
+            stiffness: parameters::STIFFNESS.default_number(),
+            damping: parameters::DAMPING.default_number(),
+            exponent: parameters::EXPONENT.default_number(),
+        }),
         restitution_target: None,
     };
 
@@ -182,33 +210,16 @@ impl Scenario {
     pub fn from_values(values: [f64; 8]) -> Result<Scenario, KickError> {
         let [foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, drive_force] =
             values;
-        let positive = |p: Parameter, v: f64| {
-            if v.is_finite() && v > 0.0 {
-                Ok(v)
-            } else {
-                Err(KickError::invalid(p.name(), v, "finite and > 0"))
-            }
-        };
-        let finite = |p: Parameter, v: f64| {
-            if v.is_finite() {
-                Ok(v)
-            } else {
-                Err(KickError::invalid(p.name(), v, "finite"))
-            }
-        };
+        let check = |p: Parameter, v: f64| p.def().check(v);
         let scenario = Scenario {
-            foot_mass: positive(Parameter::FootMass, foot_mass)?,
-            ball_mass: positive(Parameter::BallMass, ball_mass)?,
-            foot_speed: finite(Parameter::FootSpeed, foot_speed)?,
-            ball_speed: finite(Parameter::BallSpeed, ball_speed)?,
-            stiffness: positive(Parameter::Stiffness, stiffness)?,
-            damping: if damping.is_finite() && damping >= 0.0 {
-                damping
-            } else {
-                return Err(KickError::invalid("damping", damping, "finite and >= 0"));
-            },
-            exponent: positive(Parameter::Exponent, exponent)?,
-            drive_force: finite(Parameter::DriveForce, drive_force)?,
+            foot_mass: check(Parameter::FootMass, foot_mass)?,
+            ball_mass: check(Parameter::BallMass, ball_mass)?,
+            foot_speed: check(Parameter::FootSpeed, foot_speed)?,
+            ball_speed: check(Parameter::BallSpeed, ball_speed)?,
+            stiffness: check(Parameter::Stiffness, stiffness)?,
+            damping: check(Parameter::Damping, damping)?,
+            exponent: check(Parameter::Exponent, exponent)?,
+            drive_force: check(Parameter::DriveForce, drive_force)?,
             contact: AnyLaw::PowerLaw(PowerLawContact { stiffness, damping, exponent }),
             restitution_target: None,
         };
@@ -253,16 +264,14 @@ impl Scenario {
     /// damping from the target `restitution` e in (0, 1] at this impact speed.
     pub fn with_law(&self, kind: LawKind, restitution: Option<f64>) -> Result<Scenario, KickError> {
         if kind == LawKind::PowerLaw {
-            return Ok(Scenario { contact: AnyLaw::PowerLaw(self.law()), restitution_target: None, ..*self });
+            return Ok(Scenario { contact: AnyLaw::PowerLaw(self.paper_law()), restitution_target: None, ..*self });
         }
         let restitution = restitution.ok_or(KickError::InvalidParameter {
             name: "restitution",
             value: f64::NAN,
             requirement: "given (a target restitution in (0, 1]) for every law but the paper's",
         })?;
-        if !(restitution > 0.0 && restitution <= 1.0) {
-            return Err(KickError::invalid("restitution", restitution, "in (0, 1]"));
-        }
+        parameters::RESTITUTION.check(restitution)?;
         let parameters = LawParameters {
             stiffness: self.stiffness,
             exponent: self.exponent,
@@ -282,7 +291,9 @@ impl Scenario {
         Ok(Scenario { contact, restitution_target: Some(restitution), ..*self })
     }
 
-    /// The contact law in use.
+    /// The contact law in use: the one chosen (`with_law`), Eq. 20 by default.
+    /// Solvers integrate this one; [`Scenario::paper_law`] is Eq. 20 whatever
+    /// the choice.
     pub fn contact_law(&self) -> AnyLaw {
         self.contact
     }
@@ -326,8 +337,9 @@ impl Scenario {
         self.drive_force
     }
     /// The paper's law (Eq. 20) with this scenario's k, c and n, whatever
-    /// law is in use (see [`Scenario::contact_law`]).
-    pub fn law(&self) -> PowerLawContact {
+    /// law is in use: for the paper's own closed forms and series. The law
+    /// the solvers integrate is [`Scenario::contact_law`].
+    pub fn paper_law(&self) -> PowerLawContact {
         PowerLawContact {
             stiffness: self.stiffness,
             damping: self.damping,
@@ -359,7 +371,7 @@ impl Scenario {
     }
     /// δ_max of the undamped, undriven contact (Eqs. 33–34 with equality).
     pub fn elastic_max_compression(&self) -> f64 {
-        self.law().compression_for_energy(self.relative_kinetic_energy())
+        self.paper_law().compression_for_energy(self.relative_kinetic_energy())
     }
     /// Contact time of the undamped, undriven contact: twice the Beta-function
     /// return time (see `special::return_time`).
@@ -385,5 +397,27 @@ impl Scenario {
 impl Default for Scenario {
     fn default() -> Self {
         Scenario::BASELINE
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A spec reads the declared names (and `law`), leaves `null` unset and
+    /// refuses any other key with the nearby names.
+    #[test]
+    fn specs_read_the_declared_names_only() {
+        let spec: ScenarioSpec =
+            serde_json::from_str(r#"{"foot_mass": 2.5, "damping": null, "law": "flores", "restitution": 0.6}"#).unwrap();
+        let expected = ScenarioSpec { foot_mass: Some(2.5), law: Some(LawKind::Flores), restitution: Some(0.6), ..Default::default() };
+        assert_eq!(spec, expected);
+        assert_eq!(serde_json::from_str::<ScenarioSpec>(&serde_json::to_string(&spec).unwrap()).unwrap(), spec);
+        let error = serde_json::from_str::<ScenarioSpec>(r#"{"foot_mass": 2.5, "lw": "flores"}"#).unwrap_err();
+        assert!(error.to_string().contains("unknown key `lw`: did you mean `law`?"), "{error}");
+        let mut by_name = ScenarioSpec::default();
+        by_name.set_named("restitution", Value::Number(0.6)).unwrap();
+        assert_eq!(by_name.restitution, Some(0.6));
+        assert!(by_name.set_named("offset", Value::Number(0.1)).is_err());
     }
 }

@@ -1,6 +1,6 @@
 //! Cost of one flight.
 //!
-//! `cargo bench -p kick-flight --bench flight`
+//! `cargo bench -p kick-flight --features bench --bench flight`
 //! Ratios are meaningful only between benches of one run (the machine is shared).
 
 use criterion::{criterion_group, criterion_main, Criterion};

@@ -1,5 +1,5 @@
 //! Worst relative difference between the default solve and one at a 100×
-//! tighter tolerance over many random kicks (what `tests/closed_forms.rs`
+//! tighter tolerance over many random kicks (what `tests/flight/closed_forms.rs`
 //! samples 64 of), and the mean cost.
 //!
 //! `cargo run --release -p kick-flight --example accuracy -- 20000`

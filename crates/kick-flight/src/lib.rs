@@ -26,7 +26,7 @@
 //! Brent's method on the step's 7th-order dense output, which is formed only
 //! for the steps that hold an event, so `solve` allocates nothing.
 //!
-//! Accuracy (held by `tests/closed_forms.rs`): flight time, apex height,
+//! Accuracy (held by `tests/flight/closed_forms.rs`): flight time, apex height,
 //! landing point and crossing are within 1e-9 relative of closed forms
 //! (vacuum parabola; vertical flight with quadratic drag; spin decay along a
 //! vacuum parabola) and of a solve at a 100× tighter tolerance, over kicks of
@@ -51,7 +51,7 @@ pub mod validation;
 pub use air::Air;
 pub use coefficients::{DragModel, LiftModel};
 pub use solve::{history, solve, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
-pub use spec::{Flight, FlightParameter, FlightSpec, ParameterInfo};
+pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 
 use thiserror::Error;
 

@@ -1,5 +1,6 @@
-//! Flight parameters, declared once ([`FlightParameter::ALL`] with
-//! [`ParameterInfo`]), the unvalidated [`FlightSpec`] and the validated [`Flight`].
+//! Flight parameters, declared once ([`FLIGHT_PARAMETERS`], kick-core's
+//! [`ParameterDef`] at [`Level::Flight`]), the unvalidated [`FlightSpec`] and
+//! the validated [`Flight`].
 //!
 //! Front ends derive flags (`--launch-angle` from `launch_angle`), TOML keys,
 //! result columns and keywords from the declarations; every refusal names
@@ -32,21 +33,77 @@ pub enum FlightParameter {
     Distance,
 }
 
-/// What a front end needs to know of a parameter.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ParameterInfo {
-    /// snake_case key (TOML, result columns, Python); the flag is the same with '-'.
-    pub name: &'static str,
-    pub symbol: &'static str,
-    pub unit: &'static str,
-    /// 1, or 3 for a vector given as three comma-separated numbers.
-    pub components: usize,
-    /// The default as text ("required" where there is none).
-    pub default: &'static str,
-    /// Accepted values.
-    pub range: &'static str,
-    pub doc: &'static str,
+use kick_core::parameters::{Bound, DefaultValue, Level, ParameterDef, Shape, Valid};
+
+#[allow(clippy::too_many_arguments)] // one row of the declaration table
+const fn flight(
+    name: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+    default: DefaultValue,
+    low: Bound,
+    high: Bound,
+    requirement: &'static str,
+    doc: &'static str,
+) -> ParameterDef {
+    ParameterDef {
+        name,
+        symbol,
+        unit,
+        level: Level::Flight,
+        shape: Shape::Scalar,
+        default,
+        valid: Valid { low, high, requirement },
+        sample: None,
+        doc,
+    }
 }
+
+use Bound::{Closed, Open, Unbounded};
+use DefaultValue::{Derived, Number, Unset};
+
+/// The flight parameters, declared with kick-core's [`ParameterDef`] at
+/// [`Level::Flight`] (their own name space: `gravity` here is g, the 3D
+/// kick's is a switch), in [`FlightParameter::ALL`] order. Refusals keep
+/// their own wording (with the unit) in [`FlightSpec::build`]; conditions
+/// between parameters are in the requirement text.
+pub static FLIGHT_PARAMETERS: [ParameterDef; 15] = [
+    flight("speed", "|v0|", "m/s", Unset("required"), Open(0.0), Unbounded, "finite and > 0, m/s", "Launch speed of the ball"),
+    flight("launch_angle", "θ", "deg", Unset("required"), Open(0.0), Closed(90.0), "in (0, 90] degrees (the ball starts on the ground)",
+        "Elevation of the launch velocity above the ground"),
+    flight("azimuth", "ψ", "deg", Number(0.0), Closed(-180.0), Closed(180.0), "in [-180, 180] degrees",
+        "Horizontal direction of launch from the x axis, positive toward +y"),
+    ParameterDef {
+        shape: Shape::Vector3,
+        default: DefaultValue::Vector([0.0; 3]),
+        ..flight("spin", "ω", "rad/s", Number(0.0), Unbounded, Unbounded, "three finite numbers, rad/s",
+            "Spin vector at launch, world frame (x along the kick, z up): for a kick along +x, \
+             ω_z > 0 curves the ball toward +y and ω_y < 0 (backspin) lifts it")
+    },
+    flight("ball_mass", "m", "kg", Number(DEFAULT_BALL_MASS), Open(0.0), Unbounded, "finite and > 0, kg",
+        "Ball mass (Law 2: 0.41-0.45 kg)"),
+    flight("ball_radius", "R", "m", Number(DEFAULT_BALL_RADIUS), Open(0.0), Unbounded, "finite and > 0, m",
+        "Ball radius (Law 2: circumference 0.68-0.70 m)"),
+    flight("gravity", "g", "m/s^2", Number(GRAVITY), Open(0.0), Unbounded, "finite and > 0, m/s^2 (the ball must come down)",
+        "Gravitational acceleration"),
+    flight("air_density", "ρ", "kg/m^3", Number(SEA_LEVEL_DENSITY), Open(0.0), Unbounded,
+        "> 0; not with temperature, pressure or altitude", "Air density (viscosity then at 15 °C)"),
+    flight("temperature", "T", "°C", Derived("standard atmosphere at the altitude (15 at sea level)"), Open(-273.15), Unbounded,
+        "> -273.15", "Air temperature, for density (ideal gas) and viscosity (Sutherland)"),
+    flight("pressure", "p", "Pa", Derived("standard atmosphere at the altitude (101325 at sea level)"), Open(0.0), Unbounded,
+        "> 0", "Air pressure"),
+    flight("altitude", "h", "m", Number(0.0), Closed(-500.0), Closed(11000.0),
+        "[-500, 11000]; not with both temperature and pressure",
+        "Geopotential altitude: standard-atmosphere temperature and pressure where not given"),
+    flight("drag_coefficient", "C_D", "1", Derived("Goff & Carré (2010) drag crisis in Re"), Closed(0.0), Unbounded,
+        "finite and >= 0", "A constant drag coefficient instead of the drag-crisis model"),
+    flight("lift_coefficient", "C_L", "1", Derived("saturating fit in S to published soccer-ball data"), Closed(0.0), Unbounded,
+        "finite and >= 0", "A constant lift coefficient instead of the C_L(S) model"),
+    flight("spin_decay", "k_M", "1", Number(0.0), Closed(0.0), Unbounded, "finite and >= 0",
+        "Slope of the aerodynamic moment coefficient C_M = k_M S; torque -(1/2) ρ A R² k_M |v| ω"),
+    flight("distance", "d", "m", Unset("none"), Open(0.0), Unbounded, "finite and > 0, m",
+        "Report where the ball crosses the vertical plane x = d (wall at 9.15 m, goal line)"),
+];
 
 impl FlightParameter {
     pub const ALL: [FlightParameter; 15] = [
@@ -67,122 +124,22 @@ impl FlightParameter {
         FlightParameter::Distance,
     ];
 
-    pub fn info(self) -> ParameterInfo {
-        let p = |name, symbol, unit, components, default, range, doc| ParameterInfo {
-            name,
-            symbol,
-            unit,
-            components,
-            default,
-            range,
-            doc,
-        };
-        match self {
-            FlightParameter::Speed => p("speed", "|v0|", "m/s", 1, "required", "> 0", "Launch speed of the ball"),
-            FlightParameter::LaunchAngle => {
-                p("launch_angle", "θ", "deg", 1, "required", "(0, 90]", "Elevation of the launch velocity above the ground")
-            }
-            FlightParameter::Azimuth => p(
-                "azimuth",
-                "ψ",
-                "deg",
-                1,
-                "0",
-                "[-180, 180]",
-                "Horizontal direction of launch from the x axis, positive toward +y",
-            ),
-            FlightParameter::Spin => p(
-                "spin",
-                "ω",
-                "rad/s",
-                3,
-                "0,0,0",
-                "three finite numbers",
-                "Spin vector at launch, world frame (x along the kick, z up): for a kick along +x, \
-                 ω_z > 0 curves the ball toward +y and ω_y < 0 (backspin) lifts it",
-            ),
-            FlightParameter::BallMass => p("ball_mass", "m", "kg", 1, "0.43", "> 0", "Ball mass (Law 2: 0.41-0.45 kg)"),
-            FlightParameter::BallRadius => {
-                p("ball_radius", "R", "m", 1, "0.11", "> 0", "Ball radius (Law 2: circumference 0.68-0.70 m)")
-            }
-            FlightParameter::Gravity => p("gravity", "g", "m/s^2", 1, "9.81", "> 0", "Gravitational acceleration"),
-            FlightParameter::AirDensity => p(
-                "air_density",
-                "ρ",
-                "kg/m^3",
-                1,
-                "1.225",
-                "> 0; not with temperature, pressure or altitude",
-                "Air density (viscosity then at 15 °C)",
-            ),
-            FlightParameter::Temperature => p(
-                "temperature",
-                "T",
-                "°C",
-                1,
-                "standard atmosphere at the altitude (15 at sea level)",
-                "> -273.15",
-                "Air temperature, for density (ideal gas) and viscosity (Sutherland)",
-            ),
-            FlightParameter::Pressure => p(
-                "pressure",
-                "p",
-                "Pa",
-                1,
-                "standard atmosphere at the altitude (101325 at sea level)",
-                "> 0",
-                "Air pressure",
-            ),
-            FlightParameter::Altitude => p(
-                "altitude",
-                "h",
-                "m",
-                1,
-                "0",
-                "[-500, 11000]; not with both temperature and pressure",
-                "Geopotential altitude: standard-atmosphere temperature and pressure where not given",
-            ),
-            FlightParameter::DragCoefficient => p(
-                "drag_coefficient",
-                "C_D",
-                "1",
-                1,
-                "Goff & Carré (2010) drag crisis in Re",
-                ">= 0",
-                "A constant drag coefficient instead of the drag-crisis model",
-            ),
-            FlightParameter::LiftCoefficient => p(
-                "lift_coefficient",
-                "C_L",
-                "1",
-                1,
-                "saturating fit in S to published soccer-ball data",
-                ">= 0",
-                "A constant lift coefficient instead of the C_L(S) model",
-            ),
-            FlightParameter::SpinDecay => p(
-                "spin_decay",
-                "k_M",
-                "1",
-                1,
-                "0",
-                ">= 0",
-                "Slope of the aerodynamic moment coefficient C_M = k_M S; torque -(1/2) ρ A R² k_M |v| ω",
-            ),
-            FlightParameter::Distance => p(
-                "distance",
-                "d",
-                "m",
-                1,
-                "none",
-                "> 0",
-                "Report where the ball crosses the vertical plane x = d (wall at 9.15 m, goal line)",
-            ),
-        }
+    /// The declaration: name, symbol, unit, default, valid range, doc.
+    pub fn def(self) -> &'static ParameterDef {
+        &FLIGHT_PARAMETERS[self as usize]
     }
 
     pub fn name(self) -> &'static str {
-        self.info().name
+        self.def().name
+    }
+
+    /// 1, or 3 for a vector given as three numbers.
+    pub fn components(self) -> usize {
+        if self.def().shape == Shape::Vector3 {
+            3
+        } else {
+            1
+        }
     }
 
     pub fn from_name(name: &str) -> Result<FlightParameter, FlightError> {
@@ -241,9 +198,8 @@ impl FlightSpec {
 
     /// Set one parameter from numbers (one, or three for `spin`).
     pub fn set(&mut self, parameter: FlightParameter, values: &[f64]) -> Result<(), FlightError> {
-        let info = parameter.info();
-        if values.len() != info.components {
-            return Err(FlightError::WrongLength { name: info.name, expected: info.components, found: values.len() });
+        if values.len() != parameter.components() {
+            return Err(FlightError::WrongLength { name: parameter.name(), expected: parameter.components(), found: values.len() });
         }
         let x = Some(values[0]);
         match parameter {
@@ -514,6 +470,23 @@ mod tests {
         );
     }
 
+    /// The flight list keeps kick-core's invariants, in `ALL` order, and
+    /// its defaults are the ones `build` fills in.
+    #[test]
+    fn the_declarations_keep_their_invariants() {
+        kick_core::parameters::check_declarations(&FLIGHT_PARAMETERS).unwrap();
+        for (i, p) in FlightParameter::ALL.iter().enumerate() {
+            assert_eq!(serde_json::to_value(p).unwrap(), FLIGHT_PARAMETERS[i].name);
+        }
+        let f = FlightSpec::from_exit_speed(25.0, 20.0).build().unwrap();
+        let number = |p: FlightParameter| p.def().default_number();
+        assert_eq!(f.ball_mass(), number(FlightParameter::BallMass));
+        assert_eq!(f.ball_radius(), number(FlightParameter::BallRadius));
+        assert_eq!(f.gravity(), number(FlightParameter::Gravity));
+        assert_eq!(f.spin_decay(), number(FlightParameter::SpinDecay));
+        assert_eq!(f.air().density, number(FlightParameter::AirDensity));
+    }
+
     #[test]
     fn spin_takes_three_numbers() {
         let mut s = FlightSpec::default();
@@ -537,7 +510,7 @@ mod tests {
         // Every declared name is a field of the spec (round trip through JSON).
         let mut full = FlightSpec::default();
         for p in FlightParameter::ALL {
-            full.set(p, &vec![1.0; p.info().components]).unwrap();
+            full.set(p, &vec![1.0; p.components()]).unwrap();
         }
         let value = serde_json::to_value(full).unwrap();
         for p in FlightParameter::ALL {

@@ -44,8 +44,9 @@ pub enum IdentifyError {
     NoFreeParameters,
     #[error("parameter `{0}` is listed more than once")]
     DuplicateParameter(&'static str),
-    #[error("unknown parameter `{name}`: expected one of {expected}")]
-    UnknownParameter { name: String, expected: String },
+    /// `hint`: ": did you mean ...?" or ": expected one of ...".
+    #[error("unknown parameter `{name}`{hint}")]
+    UnknownParameter { name: String, hint: String },
     #[error("parameter `{name}` starts at {value}: it must be {requirement}")]
     StartOutOfRange { name: &'static str, value: f64, requirement: &'static str },
     #[error("parameter `{parameter}` does not apply {context}: {reason}")]

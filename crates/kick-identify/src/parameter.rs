@@ -2,6 +2,7 @@
 //! the laws other than the paper's, and the data's time offset.
 
 use crate::IdentifyError;
+use kick_core::parameters::{self, Bound, DefaultValue, Level, ParameterDef, Shape, Valid};
 use kick_core::{LawKind, Parameter, Scenario};
 use serde::{Serialize, Serializer};
 
@@ -17,46 +18,72 @@ pub enum FitParameter {
     TimeOffset,
 }
 
+/// t0, the one fitted quantity that is not a scenario parameter: declared
+/// here as the scenario's are in `kick_core::parameters`.
+pub const TIME_OFFSET: ParameterDef = ParameterDef {
+    name: "time_offset",
+    symbol: "t0",
+    unit: "s",
+    level: Level::Scenario,
+    shape: Shape::Scalar,
+    default: DefaultValue::Number(0.0),
+    valid: Valid { low: Bound::Unbounded, high: Bound::Unbounded, requirement: "finite" },
+    sample: None,
+    doc: "Time of first touch in the data; the model is read at t - t0",
+};
+
 impl FitParameter {
-    pub const NAMES: &'static str = "foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, \
-                                     drive_force, restitution, time_offset";
+    /// Every fittable quantity, in the order specifications list them.
+    pub const ALL: [FitParameter; 10] = [
+        FitParameter::Scenario(Parameter::FootMass),
+        FitParameter::Scenario(Parameter::BallMass),
+        FitParameter::Scenario(Parameter::FootSpeed),
+        FitParameter::Scenario(Parameter::BallSpeed),
+        FitParameter::Scenario(Parameter::Stiffness),
+        FitParameter::Scenario(Parameter::Damping),
+        FitParameter::Scenario(Parameter::Exponent),
+        FitParameter::Scenario(Parameter::DriveForce),
+        FitParameter::Restitution,
+        FitParameter::TimeOffset,
+    ];
+
+    /// The declaration: name, unit and valid range.
+    pub fn def(self) -> &'static ParameterDef {
+        match self {
+            FitParameter::Scenario(p) => p.def(),
+            FitParameter::Restitution => &parameters::RESTITUTION,
+            FitParameter::TimeOffset => &TIME_OFFSET,
+        }
+    }
 
     /// Name in fit specifications and reports.
     pub fn name(self) -> &'static str {
-        match self {
-            FitParameter::Scenario(p) => p.name(),
-            FitParameter::Restitution => "restitution",
-            FitParameter::TimeOffset => "time_offset",
-        }
+        self.def().name
     }
 
     pub fn unit(self) -> &'static str {
-        match self {
-            FitParameter::Scenario(p) => p.unit(),
-            FitParameter::Restitution => "1",
-            FitParameter::TimeOffset => "s",
-        }
+        self.def().unit
     }
 
     pub fn from_name(name: &str) -> Result<FitParameter, IdentifyError> {
-        match name {
-            "restitution" => Ok(FitParameter::Restitution),
-            "time_offset" => Ok(FitParameter::TimeOffset),
-            _ => Parameter::from_name(name).map(FitParameter::Scenario).ok_or_else(|| IdentifyError::UnknownParameter {
+        FitParameter::ALL.into_iter().find(|p| p.name() == name).ok_or_else(|| {
+            let valid = FitParameter::ALL.map(|p| p.name());
+            IdentifyError::UnknownParameter {
                 name: name.to_string(),
-                expected: FitParameter::NAMES.to_string(),
-            }),
-        }
+                hint: parameters::did_you_mean(&parameters::nearby(name, &valid), &valid),
+            }
+        })
     }
 
-    /// The coordinate the optimiser moves in: every trial point is then valid.
+    /// The coordinate the optimiser moves in, from the valid range: every
+    /// trial point is then valid (log for a quantity bounded below by 0,
+    /// logit for one bounded on both sides by 0 and 1).
     pub fn coordinate(self) -> Coordinate {
-        match self {
-            FitParameter::Scenario(
-                Parameter::FootMass | Parameter::BallMass | Parameter::Stiffness | Parameter::Damping | Parameter::Exponent,
-            ) => Coordinate::Log,
-            FitParameter::Scenario(_) | FitParameter::TimeOffset => Coordinate::Linear,
-            FitParameter::Restitution => Coordinate::Logit,
+        let valid = self.def().valid;
+        match (valid.low, valid.high) {
+            (Bound::Open(0.0) | Bound::Closed(0.0), Bound::Open(1.0) | Bound::Closed(1.0)) => Coordinate::Logit,
+            (Bound::Open(0.0) | Bound::Closed(0.0), _) => Coordinate::Log,
+            _ => Coordinate::Linear,
         }
     }
 }
@@ -238,6 +265,22 @@ mod tests {
         assert_eq!(Coordinate::Logit.theta(1.0), None);
         assert_eq!(Coordinate::Logit.theta(0.0), None);
         assert_eq!(Coordinate::Linear.theta(f64::NAN), None);
+    }
+
+    /// The coordinates the fits have always used, now derived from the valid ranges.
+    #[test]
+    fn coordinates_follow_the_valid_ranges() {
+        use Parameter::*;
+        for p in [FootMass, BallMass, Stiffness, Damping, Exponent] {
+            assert_eq!(FitParameter::from(p).coordinate(), Coordinate::Log, "{p:?}");
+        }
+        for p in [FootSpeed, BallSpeed, DriveForce] {
+            assert_eq!(FitParameter::from(p).coordinate(), Coordinate::Linear, "{p:?}");
+        }
+        assert_eq!(FitParameter::Restitution.coordinate(), Coordinate::Logit);
+        assert_eq!(FitParameter::TimeOffset.coordinate(), Coordinate::Linear);
+        assert_eq!(FitParameter::Restitution.unit(), "1");
+        assert_eq!(FitParameter::TimeOffset.unit(), "s");
     }
 
     #[test]

@@ -129,7 +129,7 @@ fn inertial_stiffness(mobilities: &AnkleMobilities, locked_contact_time: f64) ->
 /// locked leg: κ_c / [`LOCKED_LIMIT_GAP`], with κ_c the ankle's inertial
 /// stiffness over the locked leg's contact (≈ 3.7e12 N m/rad for the default
 /// pose). The coupled run and the locked limit agree there to 1e-8
-/// (tests/elastic_ankle.rs).
+/// (tests/leg/elastic_ankle.rs).
 pub fn locked_limit_stiffness(leg: &Leg, pose: &Pose, impact: &Impact, base: &Scenario) -> Result<f64, LegError> {
     let mobilities = AnkleMobilities::of(leg, pose, impact)?;
     let locked = leg.effective_mass(pose, impact, AnkleJoint::Locked)?.locked_ankle;
@@ -178,7 +178,7 @@ pub fn coupled_ankle_contact(
         stiffness,
         ball_mass: base.ball_mass(),
     };
-    let law = base.law();
+    let law = base.paper_law();
     let locked = leg.effective_mass(pose, impact, AnkleJoint::Locked)?.locked_ankle;
     let locked_outcome = exit_outcome(locked, base)?;
     let estimate = locked_outcome.contact_time;

@@ -27,6 +27,7 @@
 
 use kick_compliant::table2::Table2File;
 use kick_compliant::SolverChoice;
+use kick_core::parameters::{self, Level, ParameterDef};
 use kick_core::{KickError, Parameter, Scenario};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -71,7 +72,7 @@ struct RawExperiment {
     solver: Option<Spanned<String>>,
     solvers: Option<Spanned<Vec<Spanned<String>>>>,
     dt: Option<Spanned<f64>>,
-    base: Option<RawSpec>,
+    base: Option<RawBase>,
     sweep: Option<Vec<RawAxis>>,
     scenario: Option<Vec<RawNamed>>,
     table2: Option<Spanned<String>>,
@@ -82,41 +83,74 @@ struct RawExperiment {
     restitution: Option<Spanned<f64>>,
 }
 
-macro_rules! spec_struct {
-    ($(#[$meta:meta])* $name:ident { $($extra:ident : $ty:ty),* }) => {
-        $(#[$meta])*
-        #[derive(Debug, Deserialize)]
-        #[serde(deny_unknown_fields)]
-        struct $name {
-            $($extra: $ty,)*
-            foot_mass: Option<Spanned<f64>>,
-            ball_mass: Option<Spanned<f64>>,
-            foot_speed: Option<Spanned<f64>>,
-            ball_speed: Option<Spanned<f64>>,
-            stiffness: Option<Spanned<f64>>,
-            damping: Option<Spanned<f64>>,
-            exponent: Option<Spanned<f64>>,
-            drive_force: Option<Spanned<f64>>,
-        }
-        impl $name {
-            fn get(&self, p: Parameter) -> Option<&Spanned<f64>> {
-                match p {
-                    Parameter::FootMass => self.foot_mass.as_ref(),
-                    Parameter::BallMass => self.ball_mass.as_ref(),
-                    Parameter::FootSpeed => self.foot_speed.as_ref(),
-                    Parameter::BallSpeed => self.ball_speed.as_ref(),
-                    Parameter::Stiffness => self.stiffness.as_ref(),
-                    Parameter::Damping => self.damping.as_ref(),
-                    Parameter::Exponent => self.exponent.as_ref(),
-                    Parameter::DriveForce => self.drive_force.as_ref(),
-                }
-            }
-        }
-    };
+/// A `[base]` or `[[scenario]]` table: values of the declared 1D parameters
+/// (`kick_core::parameters`), with their spans; a `[[scenario]]` table also
+/// has its `name`. Any other key is refused at its line with the nearby names.
+#[derive(Debug, Default)]
+struct RawSpec<const NAMED: bool> {
+    name: Option<Spanned<String>>,
+    values: Vec<(&'static ParameterDef, Spanned<f64>)>,
 }
 
-spec_struct!(#[derive(Default)] RawSpec {});
-spec_struct!(RawNamed { name: Spanned<String> });
+type RawBase = RawSpec<false>;
+type RawNamed = RawSpec<true>;
+
+impl<const NAMED: bool> RawSpec<NAMED> {
+    fn value(&self, parameter: &ParameterDef) -> Option<&Spanned<f64>> {
+        self.values.iter().find(|(p, _)| p.name == parameter.name).map(|(_, v)| v)
+    }
+    fn get(&self, p: Parameter) -> Option<&Spanned<f64>> {
+        self.value(p.def())
+    }
+    fn restitution(&self) -> Option<&Spanned<f64>> {
+        self.value(&parameters::RESTITUTION)
+    }
+    /// The table's name (`[[scenario]]` tables always have one).
+    fn name(&self) -> &Spanned<String> {
+        self.name.as_ref().unwrap_or_else(|| unreachable!("a named table without a name is refused when read"))
+    }
+}
+
+impl<'de, const NAMED: bool> Deserialize<'de> for RawSpec<NAMED> {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Keys<const NAMED: bool>;
+        impl<'de, const NAMED: bool> serde::de::Visitor<'de> for Keys<NAMED> {
+            type Value = RawSpec<NAMED>;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a table of 1D scenario parameters")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<RawSpec<NAMED>, A::Error> {
+                let mut table = RawSpec::<NAMED>::default();
+                while let Some(key) = map.next_key::<String>()? {
+                    if NAMED && key == "name" {
+                        table.name = Some(map.next_value()?);
+                        continue;
+                    }
+                    match parameters::find_at(&[Level::Scenario], &key) {
+                        Ok(parameter) => {
+                            if table.value(parameter).is_some() {
+                                return Err(serde::de::Error::custom(format!("duplicate key `{key}`")));
+                            }
+                            table.values.push((parameter, map.next_value()?));
+                        }
+                        Err(_) => {
+                            let mut valid: Vec<&str> = parameters::at_level(Level::Scenario).map(|p| p.name).collect();
+                            if NAMED {
+                                valid.insert(0, "name");
+                            }
+                            return map.next_value_seed(parameters::Refuse(parameters::unknown_key(&key, &valid))).map(|()| table);
+                        }
+                    }
+                }
+                if NAMED && table.name.is_none() {
+                    return Err(serde::de::Error::missing_field("name"));
+                }
+                Ok(table)
+            }
+        }
+        deserializer.deserialize_map(Keys::<NAMED>)
+    }
+}
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -216,6 +250,16 @@ impl Scenarios {
         }
     }
 
+    /// True when the scenarios' law takes a target restitution (a law other
+    /// than the paper's): result files then have a `restitution` column.
+    pub fn has_restitution(&self) -> bool {
+        match self {
+            Scenarios::Grid { base, .. } => base.restitution_target().is_some(),
+            Scenarios::Named { scenarios, .. } => scenarios.iter().any(|s| s.restitution_target().is_some()),
+            Scenarios::Sampled(sweep) => sweep.fixed.law.is_some_and(|law| law != kick_core::LawKind::PowerLaw),
+        }
+    }
+
     /// Row names, for named scenarios.
     pub fn names(&self) -> Option<&[String]> {
         match self {
@@ -276,15 +320,28 @@ impl Locator<'_> {
     fn toml_error(&self, error: &toml::de::Error) -> ExperimentError {
         let span = error.span().unwrap_or(0..0);
         let under = self.text.get(span.clone()).unwrap_or("").trim();
+        // A bare key under the span (serde's unknown fields); a value (a
+        // refused key's) names the key of its line.
         let key = if !under.is_empty()
             && under.len() < 64
+            && under.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
             && under.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
         {
             under.to_string()
         } else {
             key_before(self.text, span.start)
         };
-        self.error(span, &key, error.message().trim().to_string())
+        let message = error.message().trim();
+        // A key refused while reading its value (`parameters::Refuse`): point at the key.
+        let span = if message.starts_with("unknown key") {
+            let at = span.start.min(self.text.len());
+            let line_start = self.text[..at].rfind('\n').map_or(0, |i| i + 1);
+            let indent = self.text[line_start..].len() - self.text[line_start..].trim_start().len();
+            line_start + indent..span.end
+        } else {
+            span
+        };
+        self.error(span, &key, message.to_string())
     }
 }
 
@@ -372,10 +429,23 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         Some(name) => kick_core::LawKind::from_name(name.get_ref()).map_err(|e| at.error(name.span(), "law", e.to_string()))?,
         None => kick_core::LawKind::PowerLaw,
     };
-    let restitution = raw.restitution.as_ref().map(|r| *r.get_ref());
-    let law_span = raw.restitution.as_ref().map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
-    let with_law = |s: Scenario| s.with_law(law, restitution).map_err(|e| at.error(law_span.clone(), "law", e.to_string()));
-    let base = with_law(build(&at, |p| base_raw.get(p), "base")?)?;
+    // The target restitution is a declared parameter: at the top level beside
+    // `law`, or in a table ([[scenario]] over [base]), but not both.
+    let top_restitution = raw.restitution.as_ref();
+    let law_span = top_restitution.map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
+    let with_law = |s: Scenario, table: &str, given: Option<&Spanned<f64>>| -> Result<Scenario, ExperimentError> {
+        let key = format!("{table}.restitution");
+        if let (Some(_), Some(r)) = (top_restitution, given) {
+            return Err(at.error(r.span(), &key, "`restitution` is also set at the top level; set it in one place"));
+        }
+        let (restitution, span, key) = match given.or(top_restitution) {
+            Some(r) if given.is_some() => (Some(*r.get_ref()), r.span(), key),
+            other => (other.map(|r| *r.get_ref()), law_span.clone(), "law".to_string()),
+        };
+        s.with_law(law, restitution).map_err(|e| at.error(span, &key, e.to_string()))
+    };
+    // The base scenario of a grid; named scenarios build their own over [base].
+    let base = || with_law(build(&at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution());
 
     let sources = [raw.sweep.is_some(), raw.scenario.is_some(), raw.table2.is_some()];
     if sources.iter().filter(|&&s| s).count() > 1 {
@@ -384,6 +454,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     }
 
     let scenarios = if let Some(axes_raw) = &raw.sweep {
+        let base = base()?;
         let mut axes: Vec<Axis> = Vec::new();
         let mut spans = Vec::new();
         let mut total: u64 = 1;
@@ -420,12 +491,13 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         let mut names = Vec::new();
         let mut scenarios = Vec::new();
         for entry in list {
-            let key = format!("scenario.{}", entry.name.get_ref());
-            if names.contains(entry.name.get_ref()) {
-                return Err(at.error(entry.name.span(), &key, "scenario name used twice"));
+            let key = format!("scenario.{}", entry.name().get_ref());
+            if names.contains(entry.name().get_ref()) {
+                return Err(at.error(entry.name().span(), &key, "scenario name used twice"));
             }
-            let scenario = with_law(build(&at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?)?;
-            names.push(entry.name.get_ref().clone());
+            let restitution = entry.restitution().or(base_raw.restitution());
+            let scenario = with_law(build(&at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution)?;
+            names.push(entry.name().get_ref().clone());
             scenarios.push(scenario);
         }
         if scenarios.is_empty() {
@@ -444,7 +516,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         let (names, scenarios) = rows.into_iter().unzip();
         Scenarios::Named { names, scenarios }
     } else {
-        Scenarios::Grid { base, axes: Vec::new() }
+        Scenarios::Grid { base: base()?, axes: Vec::new() }
     };
 
     let output = match &raw.output {
@@ -595,4 +667,47 @@ fn table2_experiment(path: &Path, text: &str, name: String, at: &Locator) -> Res
         scenarios: Scenarios::Named { names, scenarios },
         output: Output::Summary,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse_text(text: &str) -> Result<Experiment, ExperimentError> {
+        parse(Path::new("x.toml"), text)
+    }
+
+    /// Every declared 1D parameter is a key of `[base]` and of
+    /// `[[scenario]]`, and the value reaches the scenario.
+    #[test]
+    fn every_declared_1d_parameter_is_a_toml_key() {
+        for p in parameters::at_level(Level::Scenario) {
+            // A value inside the valid range other than the default.
+            let value = p.sample.map_or(0.5, |s| 0.5 * (s.from + s.to)).max(0.25);
+            let law = if p.name == "restitution" { "law = \"flores\"\n" } else { "" };
+            for table in ["[base]", "[[scenario]]\nname = \"a\""] {
+                let text = format!("{law}{table}\n{} = {value:?}\n", p.name);
+                let experiment = parse_text(&text).unwrap_or_else(|e| panic!("{}: {e}", p.name));
+                let scenario = experiment.scenarios.scenario(0).unwrap();
+                let got = match Parameter::from_name(p.name) {
+                    Some(q) => scenario.get(q),
+                    None => scenario.restitution_target().unwrap(),
+                };
+                assert_eq!(got, value, "{} in {table}", p.name);
+            }
+        }
+    }
+
+    #[test]
+    fn unknown_keys_name_their_line_and_the_nearby_keys() {
+        let e = parse_text("[base]\nfoot_mass = 3\nstifness = 4\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (3, "stifness"), "{e}");
+        assert!(e.message.ends_with("unknown key `stifness`: did you mean `stiffness`?"), "{e}");
+        let e = parse_text("[[scenario]]\nname = \"a\"\nspeed = 3\n").unwrap_err();
+        assert!(e.message.contains("did you mean one of `foot_speed`, `ball_speed`?"), "{e}");
+        let e = parse_text("[[scenario]]\nfoot_mass = 3\n").unwrap_err();
+        assert!(e.message.contains("name"), "{e}");
+        let e = parse_text("restitution = 0.5\nlaw = \"flores\"\n[base]\nrestitution = 0.6\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (4, "base.restitution"), "{e}");
+    }
 }

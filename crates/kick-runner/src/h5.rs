@@ -53,11 +53,34 @@ impl Column {
 pub struct OutcomeSet {
     /// Solver name, written as the `solver` attribute.
     pub solver: String,
-    /// Human-readable settings (tolerances, step), the `solver_settings` attribute.
-    pub settings: String,
-    /// Numeric settings, one attribute each (e.g. `dt`, `relative_tolerance`).
-    pub numeric_settings: Vec<(String, f64)>,
+    /// Settings (step, tolerances, contact law...), one typed attribute each.
+    pub settings: Vec<(String, Setting)>,
     pub columns: Vec<Column>,
+}
+
+/// `numbers` and the scenario's contact law: `law` (its name) and, for a
+/// law other than the paper's, `restitution` (its target).
+pub fn law_settings<'a>(scenario: &kick_core::Scenario, numbers: impl IntoIterator<Item = (&'a str, f64)>) -> Vec<(String, Setting)> {
+    let mut settings = Setting::numbers(numbers);
+    settings.push(("law".into(), Setting::Text(scenario.law_kind().name().into())));
+    if let Some(e) = scenario.restitution_target() {
+        settings.push(("restitution".into(), Setting::Number(e)));
+    }
+    settings
+}
+
+/// The value of one setting attribute: a number or a text, never both in one string.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Setting {
+    Number(f64),
+    Text(String),
+}
+
+impl Setting {
+    /// Numeric settings under their names.
+    pub fn numbers<N: Into<String>>(settings: impl IntoIterator<Item = (N, f64)>) -> Vec<(String, Setting)> {
+        settings.into_iter().map(|(name, value)| (name.into(), Setting::Number(value))).collect()
+    }
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -602,9 +625,11 @@ fn write_provenance(file: &File, path: &Path, p: &Provenance) -> Result<(), H5Er
 
 fn write_set_attrs(location: &hdf5::Location, path: &Path, set: &OutcomeSet) -> Result<(), H5Error> {
     write_str_attr(location, path, "solver", &set.solver)?;
-    write_str_attr(location, path, "solver_settings", &set.settings)?;
-    for (name, value) in &set.numeric_settings {
-        write_f64_attr(location, path, name, *value)?;
+    for (name, value) in &set.settings {
+        match value {
+            Setting::Number(x) => write_f64_attr(location, path, name, *x)?,
+            Setting::Text(text) => write_str_attr(location, path, name, text)?,
+        }
     }
     Ok(())
 }

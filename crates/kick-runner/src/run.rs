@@ -2,7 +2,7 @@
 //! over [`crate::h5::SweepWriter`].
 
 use crate::experiment::{Experiment, Output};
-use crate::h5::{Column, H5Error, OutcomeSet, SweepWriter, CHUNK_ROWS};
+use crate::h5::{Column, H5Error, OutcomeSet, Setting, SweepWriter, CHUNK_ROWS};
 use crate::provenance::Provenance;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use kick_compliant::SolverChoice;
@@ -35,7 +35,7 @@ pub enum RunError {
 }
 
 /// What a run produced.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct RunSummary {
     pub path: PathBuf,
     pub scenarios: u64,
@@ -43,9 +43,15 @@ pub struct RunSummary {
     pub failures: Vec<(String, u64)>,
 }
 
-/// Parameter columns of the 1D model: the eight [`Parameter`]s.
-pub fn parameter_columns() -> Vec<Column> {
-    Parameter::ALL.iter().map(|p| Column::new(p.name(), p.unit())).collect()
+/// Parameter columns of the 1D model: the eight [`Parameter`]s, and the
+/// target restitution when the law takes one (names and units as declared).
+pub fn parameter_columns(with_restitution: bool) -> Vec<Column> {
+    let mut columns: Vec<Column> = Parameter::ALL.iter().map(|p| Column::new(p.name(), p.unit())).collect();
+    if with_restitution {
+        let e = &kick_core::parameters::RESTITUTION;
+        columns.push(Column::new(e.name, e.unit));
+    }
+    columns
 }
 
 /// Outcome columns of the 1D model: [`OBSERVABLES`].
@@ -53,22 +59,12 @@ pub fn outcome_columns() -> Vec<Column> {
     OBSERVABLES.iter().map(|(n, u)| Column::new(n, u)).collect()
 }
 
-/// The outcome-set description of a solver (name, settings).
-pub fn outcome_set(solver: &SolverChoice) -> OutcomeSet {
-    let mut numeric = Vec::new();
-    if let SolverChoice::SeedRk4(s) = solver {
-        numeric.push(("dt".to_string(), s.step));
-    }
-    if let SolverChoice::Accurate(a) = solver {
-        numeric.push(("relative_tolerance".to_string(), a.relative_tolerance));
-        numeric.push(("absolute_tolerance".to_string(), a.absolute_tolerance));
-    }
-    OutcomeSet {
-        solver: solver.name().to_string(),
-        settings: format!("{solver:?}"),
-        numeric_settings: numeric,
-        columns: outcome_columns(),
-    }
+/// The outcome-set description of a solver: its name, its settings and the
+/// scenarios' contact law (`law`; the target restitution is a parameter column).
+pub fn outcome_set(solver: &SolverChoice, law: kick_core::LawKind) -> OutcomeSet {
+    let mut settings = Setting::numbers(solver.settings());
+    settings.push(("law".into(), Setting::Text(law.name().into())));
+    OutcomeSet { solver: solver.name().to_string(), settings, columns: outcome_columns() }
 }
 
 fn history_columns(history: &History) -> Vec<(Column, Vec<f64>)> {
@@ -156,11 +152,12 @@ impl Chunk {
         }
         for (j, scenario) in self.scenarios.iter().enumerate() {
             let row = self.start as usize + j;
-            let values = match scenario {
-                Ok(s) => s.values(),
-                Err(_) => [f64::NAN; 8],
-            };
-            writer.push_parameters(&values)?;
+            let mut values = [f64::NAN; 9];
+            if let Ok(s) = scenario {
+                values[..8].copy_from_slice(&s.values());
+                values[8] = s.restitution_target().unwrap_or(f64::NAN);
+            }
+            writer.push_parameters(&values[..if experiment.scenarios.has_restitution() { 9 } else { 8 }])?;
             for k in 0..experiment.solvers.len() {
                 let result = match experiment.output {
                     Output::Summary => self.outcomes[k][j].as_ref().map(|o| o.observable_values()),
@@ -193,8 +190,16 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
     std::fs::create_dir_all(out_dir).map_err(|e| RunError::Io { path: out_dir.to_path_buf(), message: e.to_string() })?;
     let path = out_dir.join(format!("{}.h5", experiment.name));
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
-    let sets: Vec<OutcomeSet> = experiment.solvers.iter().map(outcome_set).collect();
-    let mut writer = SweepWriter::create(&path, &provenance, &parameter_columns(), &sets, experiment.scenarios.len())?;
+    // One law for every scenario of an experiment (the file's `law`).
+    let law = experiment.scenarios.scenario(0).map_or(kick_core::LawKind::PowerLaw, |s| s.law_kind());
+    let sets: Vec<OutcomeSet> = experiment.solvers.iter().map(|s| outcome_set(s, law)).collect();
+    let mut writer = SweepWriter::create(
+        &path,
+        &provenance,
+        &parameter_columns(experiment.scenarios.has_restitution()),
+        &sets,
+        experiment.scenarios.len(),
+    )?;
     crate::h5::write_str_attr(writer.file(), &path, "description", &experiment.description)?;
     if let Some(names) = experiment.scenarios.names() {
         crate::h5::write_strings(writer.file(), &path, "scenario_names", names)?;
@@ -233,4 +238,34 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
         .collect();
     let path = writer.finish()?;
     Ok(RunSummary { path, scenarios: total, failures })
+}
+
+/// What [`run_file`] did: the file given, the result file and the counts.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct RunReport {
+    pub file: PathBuf,
+    pub summary: RunSummary,
+    pub seconds: f64,
+}
+
+/// Load and run one experiment file into `out/NAME.h5`.
+pub fn run_file(file: &Path, out: &Path) -> Result<RunReport, String> {
+    let experiment = crate::experiment::load(file).map_err(|e| e.to_string())?;
+    let started = std::time::Instant::now();
+    let summary = run(&experiment, out, true).map_err(|e| e.to_string())?;
+    Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
+}
+
+impl crate::Printable for RunReport {
+    fn text(&self) -> String {
+        let failures: Vec<String> = self.summary.failures.iter().map(|(solver, n)| format!("{solver}: {n} failed")).collect();
+        format!(
+            "{}: {} scenarios -> {} ({}; {:.1} s)\n",
+            self.file.display(),
+            self.summary.scenarios,
+            self.summary.path.display(),
+            failures.join(", "),
+            self.seconds
+        )
+    }
 }

@@ -4,41 +4,44 @@
 //! seeded from (s, i), so any scenario can be made on its own, in any order,
 //! on any thread, and a sweep of 10^6 needs no list in memory.
 
-use kick_core::{KickError, Scenario};
+use kick_core::{KickError, LawKind, Parameter, Scenario, ScenarioSpec};
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{RngExt, SeedableRng};
 
-/// The documented sampling ranges (README, "Random sweeps").
-pub const RANGES: &str = "\
-foot_mass   log-uniform 0.5 .. 15 kg
-ball_mass   uniform 0.41 .. 0.45 kg (size-5 ball)
-foot_speed  uniform 12 .. 35 m/s
-ball_speed  uniform -10 .. 10 m/s
-stiffness   log-uniform 1e4 .. 1e7 N/m^n (three decades)
-damping     uniform 0 .. 600 N s/m
-exponent    uniform 1 .. 2
-drive_force 0 N with probability 1/2, else uniform 0 .. 1000 N";
+/// The sampling ranges, one line per parameter, from the declarations
+/// (`kick_core::parameters`: [`kick_core::ParameterDef::sample`]).
+pub fn ranges() -> String {
+    Parameter::ALL
+        .iter()
+        .map(|p| {
+            let def = p.def();
+            let range = def.sample.map_or_else(|| "not sampled".to_string(), |s| s.describe());
+            format!("{:<11} {range} {}", def.name, def.unit)
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
 
 /// A sweep of `samples` random scenarios.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SampledSweep {
     pub samples: u64,
     pub seed: u64,
-    /// Contact law of every scenario, and the target restitution of a law
-    /// other than the paper's.
-    pub law: kick_core::LawKind,
-    pub restitution: Option<f64>,
+    /// Parameters held fixed instead of drawn, and the contact law of every
+    /// scenario with its target restitution (default: the paper's law).
+    pub fixed: ScenarioSpec,
 }
 
 impl SampledSweep {
-    /// A sweep with the paper's law.
+    /// A sweep with the paper's law, every parameter drawn.
     pub fn new(samples: u64, seed: u64) -> SampledSweep {
-        SampledSweep { samples, seed, law: kick_core::LawKind::PowerLaw, restitution: None }
+        SampledSweep { samples, seed, fixed: ScenarioSpec::default() }
     }
-}
 
-impl SampledSweep {
     /// Scenario `index`, the same for every run, thread count and order.
+    /// Each parameter is drawn from its declared range in [`Parameter::ALL`]
+    /// order; a fixed one still takes its draws, so fixing one parameter
+    /// leaves the others' values as they were.
     pub fn scenario(&self, index: u64) -> Result<Scenario, KickError> {
         // Mix the index into the seed (SplitMix64 finaliser) so neighbouring
         // indices start far apart.
@@ -46,17 +49,13 @@ impl SampledSweep {
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
         let mut rng = Xoshiro256PlusPlus::seed_from_u64(z ^ (z >> 31));
-        let mut uniform = |low: f64, high: f64| low + (high - low) * rng.random::<f64>();
-        let foot_mass = 10f64.powf(uniform(0.5f64.log10(), 15f64.log10()));
-        let ball_mass = uniform(0.41, 0.45);
-        let foot_speed = uniform(12.0, 35.0);
-        let ball_speed = uniform(-10.0, 10.0);
-        let stiffness = 10f64.powf(uniform(4.0, 7.0));
-        let damping = uniform(0.0, 600.0);
-        let exponent = uniform(1.0, 2.0);
-        let drive_force = if uniform(0.0, 1.0) < 0.5 { 0.0 } else { uniform(0.0, 1000.0) };
-        Scenario::from_values([foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, drive_force])?
-            .with_law(self.law, self.restitution)
+        let mut uniform = || rng.random::<f64>();
+        let mut values = [0.0; 8];
+        for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
+            let drawn = p.def().sample.map_or(f64::NAN, |range| range.draw(&mut uniform));
+            *slot = self.fixed.get(p).unwrap_or(drawn);
+        }
+        Scenario::from_values(values)?.with_law(self.fixed.law.unwrap_or(LawKind::PowerLaw), self.fixed.restitution)
     }
 }
 
@@ -81,5 +80,49 @@ mod tests {
         // Half driven, within 4 binomial standard deviations (σ ≈ 16).
         assert!((436..=564).contains(&driven), "{driven}");
         assert_ne!(sweep.scenario(0).unwrap(), SampledSweep::new(1, 8).scenario(0).unwrap());
+    }
+
+    /// The draws as they were written by hand before the ranges were
+    /// declared: the sampled scenarios (and every sweep file) stay the same, bit for bit.
+    #[test]
+    fn declared_ranges_draw_the_scenarios_of_the_hand_written_sampler() {
+        fn by_hand(seed: u64, index: u64) -> [f64; 8] {
+            let mut z = seed ^ index.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            let mut rng = Xoshiro256PlusPlus::seed_from_u64(z ^ (z >> 31));
+            let mut uniform = |low: f64, high: f64| low + (high - low) * rng.random::<f64>();
+            let foot_mass = 10f64.powf(uniform(0.5f64.log10(), 15f64.log10()));
+            let ball_mass = uniform(0.41, 0.45);
+            let foot_speed = uniform(12.0, 35.0);
+            let ball_speed = uniform(-10.0, 10.0);
+            let stiffness = 10f64.powf(uniform(4.0, 7.0));
+            let damping = uniform(0.0, 600.0);
+            let exponent = uniform(1.0, 2.0);
+            let drive_force = if uniform(0.0, 1.0) < 0.5 { 0.0 } else { uniform(0.0, 1000.0) };
+            [foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, drive_force]
+        }
+        for seed in [1, 7] {
+            let sweep = SampledSweep::new(2000, seed);
+            for i in 0..sweep.samples {
+                let expected = by_hand(seed, i);
+                let drawn = sweep.scenario(i).map(|s| s.values()).unwrap_or([f64::NAN; 8]);
+                let same = drawn.iter().zip(&expected).all(|(a, b)| a.to_bits() == b.to_bits());
+                // A hand-drawn scenario the model refuses (foot not faster than the ball) is refused now too.
+                assert!(same || Scenario::from_values(expected).is_err(), "seed {seed}, row {i}: {drawn:?} vs {expected:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_fixed_parameter_leaves_the_others_drawn_as_before() {
+        let free = SampledSweep::new(100, 3);
+        let mut fixed = free;
+        fixed.fixed.stiffness = Some(1e6);
+        for i in 0..free.samples {
+            let (a, b) = (free.scenario(i).unwrap(), fixed.scenario(i).unwrap());
+            assert_eq!(b.get(Parameter::Stiffness), 1e6);
+            assert_eq!(a.with(Parameter::Stiffness, 1e6).unwrap(), b);
+        }
     }
 }

@@ -1,0 +1,283 @@
+//! The accurate 3D path against the 1D solver, closed forms and conservation laws.
+
+use kick_3d::checks::{kick, MATCH_1D};
+use kick_3d::dynamics::{self, Dynamics};
+use kick_3d::{Accurate3d, FootShape, Kick3d, Kick3dError, Kick3dSpec, Solver3d};
+use kick_core::{AnyLaw, KickError, LawKind, Parameter, Scenario};
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+fn solve(k: &Kick3d) -> kick_3d::Outcome3d {
+    Accurate3d::default().solve(k).expect("solves")
+}
+
+#[test]
+fn rounded_box_central_frictionless_matches_1d() {
+    let k = kick(Kick3dSpec {
+        friction: Some(0.0),
+        // Outer half-extents 0.03, 0.12, 0.05 with a 1 cm border: inner 0.02, 0.11, 0.04.
+        foot_half_extents: Some([0.03, 0.12, 0.05]),
+        border_radius: Some(0.01),
+        ..Kick3dSpec::default()
+    });
+    assert!(matches!(k.foot_shape, FootShape::RoundedBox { border_radius: 0.01, .. }));
+    let one = kick_3d::one_d::solve(&k).unwrap();
+    let three = solve(&k);
+    assert_eq!(one.solver, "1d");
+    for (a, b) in [
+        (three.launch_velocity[0], one.launch_velocity[0]),
+        (three.foot_velocity[0], one.foot_velocity[0]),
+        (three.contact_time, one.contact_time),
+        (three.peak_normal_force, one.peak_normal_force),
+        (three.max_compression, one.max_compression),
+    ] {
+        assert!(rel(a, b) <= MATCH_1D, "{a} vs {b}: {:.2e}", rel(a, b));
+    }
+}
+
+/// Every contact law of the family, not only Eq. 20: a central frictionless
+/// kick is the 1D kick with the same law, on the accurate path and on the 1d
+/// path, to the 1D solver's accuracy (MATCH_1D = 1e-9), and the energy the
+/// law dissipates matches the 1D solver's.
+#[test]
+fn central_frictionless_kick_matches_1d_for_every_law() {
+    for kind in LawKind::ALL {
+        let base = Scenario::baseline().with_law(kind, Some(0.6)).unwrap();
+        let k = Kick3d::new(base, &Kick3dSpec { friction: Some(0.0), ..Kick3dSpec::default() }).unwrap();
+        assert_eq!(k.law(), base.contact_law(), "central kick: V_n = V0, the same law");
+        let o1 = kick_core::Solver::solve(&kick_compliant::Accurate::default(), &base).unwrap();
+        let o3 = solve(&k);
+        let one_d = Solver3d::OneD.solve(&k).unwrap();
+        assert_eq!((o3.law, one_d.law), (kind, kind));
+        for (name, three, path, one) in [
+            ("v_ball_out", o3.launch_velocity[0], one_d.launch_velocity[0], o1.v_ball_out),
+            ("v_foot_out", o3.foot_velocity[0], one_d.foot_velocity[0], o1.v_foot_out),
+            ("contact_time", o3.contact_time, one_d.contact_time, o1.contact_time),
+            ("peak_force", o3.peak_normal_force, one_d.peak_normal_force, o1.peak_force),
+            ("max_compression", o3.max_compression, one_d.max_compression, o1.max_compression),
+            ("dissipated", o3.energy.normal_damping_loss, one_d.energy.normal_damping_loss, o1.energy.dissipated),
+        ] {
+            println!("{:<20} {name:<16} 3D {:.2e}", kind.name(), rel(three, one));
+            assert!(rel(three, one) <= MATCH_1D, "{}: {name} {three} vs {one}: {:.2e}", kind.name(), rel(three, one));
+            assert_eq!(path, one, "{}: the 1d path is the 1D solver", kind.name());
+        }
+        assert!(o3.energy.relative_residual().abs() <= MATCH_1D);
+    }
+}
+
+/// An oblique kick's normal approach speed V_n = V0 cos φ sets the
+/// hysteresis factor: χ = f(e)/V_n, so the normal impact has restitution e.
+#[test]
+fn other_laws_take_their_damping_at_the_normal_approach_speed() {
+    let base = Scenario::baseline().with_law(LawKind::HuntCrossleyExact, Some(0.6)).unwrap();
+    let k = Kick3d::new(base, &Kick3dSpec { offset: Some(0.06), ..Kick3dSpec::default() }).unwrap();
+    let v_n = k.normal_approach_speed();
+    let cos_phi = (1.0 - (0.06f64 / k.ball_radius).powi(2)).sqrt();
+    assert!(rel(v_n, base.approach_speed() * cos_phi) <= 1e-15);
+    let AnyLaw::Hysteresis(h) = k.law() else { panic!("hysteresis law expected") };
+    let chi_v0 = kick_core::laws::exact_hysteresis(0.6);
+    assert!(rel(h.hysteresis * v_n, chi_v0) <= 1e-15, "{} vs {chi_v0}", h.hysteresis * v_n);
+}
+
+#[test]
+fn frictionless_oblique_kick_is_the_rotated_1d_kick() {
+    // Tilted normal (offset 6 cm) and a rising foot (15°) that cannot turn:
+    // 3D geometry, 1D physics, although the ball slides 6 cm along the face.
+    let k = kick(Kick3dSpec {
+        friction: Some(0.0),
+        offset: Some(0.06),
+        approach_angle_deg: Some(15.0),
+        foot_inertia: Some([1e12; 3]),
+        ..Kick3dSpec::default()
+    });
+    let one = kick_3d::one_d::solve_along_normal(&k).unwrap();
+    let three = solve(&k);
+    let scale = k.base.foot_speed();
+    for i in 0..3 {
+        assert!((three.launch_velocity[i] - one.launch_velocity[i]).abs() / scale <= MATCH_1D);
+        assert!((three.foot_velocity[i] - one.foot_velocity[i]).abs() / scale <= MATCH_1D);
+    }
+    assert!(rel(three.contact_time, one.contact_time) <= MATCH_1D);
+    assert!(rel(three.peak_normal_force, one.peak_normal_force) <= MATCH_1D);
+    assert!(rel(three.max_compression, one.max_compression) <= MATCH_1D);
+    // No friction: no spin (the normal passes through the centre).
+    assert!(three.spin.iter().all(|w| w.abs() * k.ball_radius / scale <= 1e-12));
+}
+
+#[test]
+fn driven_central_kick_matches_1d() {
+    let base = Scenario::baseline().with(Parameter::DriveForce, 800.0).unwrap();
+    let k = Kick3d::new(base, &Kick3dSpec { friction: Some(0.0), ..Kick3dSpec::default() }).unwrap();
+    let one = kick_compliant::Accurate::default();
+    let o1 = kick_core::Solver::solve(&one, &base).unwrap();
+    let o3 = solve(&k);
+    assert!(rel(o3.launch_velocity[0], o1.v_ball_out) <= MATCH_1D);
+    assert!(rel(o3.foot_velocity[0], o1.v_foot_out) <= MATCH_1D);
+    assert!(rel(o3.contact_time, o1.contact_time) <= MATCH_1D);
+    assert!(rel(o3.energy.drive_work, o1.energy.drive_work) <= MATCH_1D);
+}
+
+#[test]
+fn passive_energy_never_rises_and_closes_at_every_step() {
+    let k = kick(Kick3dSpec { offset: Some(0.07), approach_angle_deg: Some(20.0), friction: Some(0.4), ..Kick3dSpec::default() });
+    let (o, samples) = Accurate3d::default().solve_recorded(&k).unwrap();
+    let k0 = k.initial_kinetic_energy();
+    assert!(samples.len() > 20);
+    for w in samples.windows(2) {
+        let ((_, e0, dn0, dt0), (_, e1, dn1, dt1)) = (w[0], w[1]);
+        // Kinetic + elastic can only fall; the losses can only grow (to the solver's error, 1e-9 K).
+        assert!(e1 <= e0 + 1e-9 * k0, "energy rose by {:.3e} J", e1 - e0);
+        assert!(dn1 >= dn0 && dt1 >= dt0);
+        assert!((e1 + dn1 + dt1 - k0).abs() <= 1e-9 * k0);
+    }
+    assert!(o.energy.friction_loss > 0.0 && o.energy.ball_spin > 0.0);
+    assert!(o.slip_time > 0.0 && o.slip_time < o.contact_time, "both grip and slip phases: {} of {}", o.slip_time, o.contact_time);
+}
+
+#[test]
+fn momentum_and_angular_momentum_of_the_pair_are_conserved() {
+    // No drive, no gravity: nothing outside the pair pushes or twists it.
+    let k = kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() });
+    let (m_f, m_b) = (k.base.effective_foot_mass(), k.base.ball_mass());
+    let total = |y: &dynamics::State| {
+        let v = |i| dynamics::vec3(y, i);
+        let momentum = v(dynamics::FOOT_VELOCITY) * m_f + v(dynamics::BALL_VELOCITY) * m_b;
+        let q = dynamics::rot(y, dynamics::FOOT_ROTATION);
+        let [ix, iy, iz] = k.foot_inertia;
+        let foot_spin = q * ((q.inverse() * v(dynamics::FOOT_ANGULAR_VELOCITY)) * parry3d_f64::math::Vec3::new(ix, iy, iz));
+        let angular = v(dynamics::FOOT_POSITION).cross(v(dynamics::FOOT_VELOCITY) * m_f)
+            + foot_spin
+            + v(dynamics::BALL_POSITION).cross(v(dynamics::BALL_VELOCITY) * m_b)
+            + v(dynamics::BALL_ANGULAR_VELOCITY) * k.ball_inertia;
+        (momentum, angular)
+    };
+    let y0 = dynamics::initial_state(&k);
+    let (o, y1) = Accurate3d::default().solve_to_state(&k).unwrap();
+    let ((p0, l0), (p1, l1)) = (total(&y0), total(&y1));
+    let p_scale = p0.length();
+    // Angular momentum scale: the ball's spin part, which the contact creates.
+    let l_scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
+    println!("momentum drift {:.2e}, angular momentum drift {:.2e} (scale {l_scale:.3e})", (p1 - p0).length() / p_scale, (l1 - l0).length() / l_scale);
+    assert!((p1 - p0).length() / p_scale <= 1e-12);
+    // Integrated, not exact: the solver's tolerance (1e-9 of the ball's angular momentum).
+    assert!((l1 - l0).length() / l_scale <= 1e-9);
+    let _ = Dynamics::new(&k);
+}
+
+#[test]
+fn grip_approaches_the_closed_form_as_friction_grows() {
+    let spec = Kick3dSpec { offset: Some(0.05), foot_inertia: Some([1e12; 3]), ..Kick3dSpec::default() };
+    let limit = solve(&kick(Kick3dSpec { friction: Some(f64::INFINITY), ..spec })).spin[2];
+    let errors: Vec<f64> = [0.3, 1.0, 3.0, 10.0, 100.0]
+        .iter()
+        .map(|&mu| rel(solve(&kick(Kick3dSpec { friction: Some(mu), ..spec })).spin[2], limit))
+        .collect();
+    println!("relative distance to mu = inf: {errors:?}");
+    assert!(errors.windows(2).all(|w| w[1] <= w[0]), "{errors:?}");
+    assert!(errors[4] < errors[0] / 10.0, "{errors:?}");
+}
+
+#[test]
+fn spin_grows_and_speed_falls_with_offset() {
+    let points = kick_3d::sweep::sweep(&Scenario::baseline(), &Kick3dSpec::default(), kick_3d::sweep::Axis::Offset, &[0.0, 0.02, 0.04, 0.06, 0.08]).unwrap();
+    assert_eq!(points[0].spin_rpm, 0.0);
+    assert!(points.windows(2).all(|w| w[1].spin_rpm > w[0].spin_rpm && w[1].speed < w[0].speed), "{points:?}");
+}
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    let b = Scenario::baseline();
+    let e = |s: Kick3dSpec| Kick3d::new(b, &s).unwrap_err();
+    assert!(matches!(e(Kick3dSpec { offset: Some(0.11), ..Default::default() }), Kick3dError::OffsetOutsideBall { .. }));
+    assert!(matches!(e(Kick3dSpec { offset: Some(f64::NAN), ..Default::default() }), Kick3dError::OffsetOutsideBall { .. }));
+    assert!(matches!(e(Kick3dSpec { ball_inertia: Some(0.01), ..Default::default() }), Kick3dError::InvalidParameter { name: "ball_inertia", .. }));
+    assert!(matches!(e(Kick3dSpec { friction: Some(-0.1), ..Default::default() }), Kick3dError::InvalidParameter { name: "friction", .. }));
+    assert!(matches!(e(Kick3dSpec { friction: Some(f64::NAN), ..Default::default() }), Kick3dError::InvalidParameter { name: "friction", .. }));
+    assert!(matches!(e(Kick3dSpec { approach_angle_deg: Some(90.0), ..Default::default() }), Kick3dError::InvalidParameter { name: "approach_angle", .. }));
+    assert!(matches!(e(Kick3dSpec { ball_radius: Some(-1.0), ..Default::default() }), Kick3dError::InvalidParameter { name: "ball_radius", .. }));
+    assert!(matches!(e(Kick3dSpec { tangential_damping: Some(0.0), ..Default::default() }), Kick3dError::InvalidParameter { .. }));
+    assert!(matches!(e(Kick3dSpec { foot_inertia: Some([1.0, 0.0, 1.0]), ..Default::default() }), Kick3dError::InvalidParameter { name: "foot_inertia", .. }));
+    // The foot rises so steeply that it no longer closes on the ball.
+    let slow = b.with(Parameter::BallSpeed, 15.0).unwrap();
+    let err = Kick3d::new(slow, &Kick3dSpec { approach_angle_deg: Some(60.0), ..Default::default() }).unwrap_err();
+    assert!(matches!(err, Kick3dError::Core(KickError::NoContact { .. })), "{err}");
+    let ground = kick(Kick3dSpec { ground: Some(true), ..Default::default() });
+    assert!(matches!(Accurate3d::default().solve(&ground), Err(Kick3dError::UnsupportedScene { .. })));
+    assert!(matches!(Solver3d::from_name("euler", 1e-5), Err(Kick3dError::UnknownSolver { .. })));
+    assert!(matches!(Accurate3d::new(0.0, 1e-15), Err(Kick3dError::InvalidParameter { .. })));
+}
+
+#[test]
+fn auto_takes_the_cheapest_path() {
+    let central = kick(Kick3dSpec { friction: Some(0.0), ..Default::default() });
+    assert_eq!(Solver3d::Auto.solve(&central).unwrap().solver, "1d");
+    let central_friction = kick(Kick3dSpec { friction: Some(0.8), ..Default::default() });
+    assert_eq!(Solver3d::Auto.solve(&central_friction).unwrap().solver, "1d");
+    // Frictionless but off-center: the sliding contact turns the foot, so 3D.
+    let oblique = kick(Kick3dSpec { friction: Some(0.0), offset: Some(0.04), ..Default::default() });
+    assert_eq!(Solver3d::Auto.solve(&oblique).unwrap().solver, "accurate-3d");
+    let curve = kick(Kick3dSpec { offset: Some(0.04), ..Default::default() });
+    assert_eq!(Solver3d::Auto.solve(&curve).unwrap().solver, "accurate-3d");
+    let ground = kick(Kick3dSpec { offset: Some(0.04), ground: Some(true), ..Default::default() });
+    assert!(matches!(Solver3d::Auto.resolve(&ground), Solver3d::Rapier(_)));
+}
+
+#[test]
+fn approach_angle_sweep_solves_and_spin_grows() {
+    // Regression: phases that start exactly on a grip/slip switch (16° and 28°
+    // once looped until MAX_PHASES).
+    let values = kick_3d::sweep::linspace(0.0, 40.0, 21);
+    let points = kick_3d::sweep::sweep(&Scenario::baseline(), &Kick3dSpec::default(), kick_3d::sweep::Axis::ApproachAngle, &values).unwrap();
+    assert!(points.windows(2).all(|w| w[1].spin_rpm > w[0].spin_rpm), "{points:?}");
+}
+
+#[test]
+fn experiment_files_parse_and_bad_ones_are_refused() {
+    for name in ["offset", "friction", "approach_angle"] {
+        let path = format!("{}/../../experiments/3d/{name}.toml", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        kick_3d::sweep::Experiment3d::parse(&text).unwrap();
+    }
+    let bad = "description = \"x\"\naxis = \"offset\"\nvalues = { from = 0.0, to = 0.2, count = 3 }\n";
+    let err = kick_3d::sweep::Experiment3d::parse(bad).unwrap_err();
+    assert!(err.contains("offset"), "{err}");
+    let typo = "description = \"x\"\naxis = \"offset\"\nvalues = { from = 0.0, to = 0.05, count = 3 }\n[kick3d]\nfrction = 0.3\n";
+    assert!(kick_3d::sweep::Experiment3d::parse(typo).unwrap_err().contains("frction"));
+    // Contact law keys at the top level, as in the 1D experiment files.
+    let head = "description = \"x\"\naxis = \"offset\"\nvalues = { from = 0.0, to = 0.04, count = 2 }\n";
+    let with_law = format!("{head}law = \"flores\"\nrestitution = 0.7\n");
+    let e = kick_3d::sweep::Experiment3d::parse(&with_law).unwrap();
+    let base = e.base().unwrap();
+    assert_eq!((base.law_kind(), base.restitution_target()), (LawKind::Flores, Some(0.7)));
+    let points = e.run().unwrap();
+    let paper = kick_3d::sweep::Experiment3d::parse(head).unwrap().run().unwrap();
+    // Central kick, μ = 0.5: the 1D kick with Flores's law; the paper's law gives another speed.
+    let one = kick_core::Solver::solve(&kick_compliant::Accurate::default(), &base).unwrap();
+    assert!(rel(points[0].speed, one.v_ball_out) <= MATCH_1D, "{} vs {}", points[0].speed, one.v_ball_out);
+    assert!(rel(paper[0].speed, one.v_ball_out) > 1e-3);
+    for (text, word) in [
+        (format!("{head}law = \"hertz\"\n"), "unknown contact law `hertz`"),
+        (format!("{head}law = \"flores\"\n"), "restitution"),
+        (format!("{head}law = \"flores\"\nrestitution = 0.7\n[scenario]\nlaw = \"flores\"\n"), "`law` is set both"),
+    ] {
+        let err = kick_3d::sweep::Experiment3d::parse(&text).unwrap_err();
+        assert!(err.contains(word), "{err}");
+    }
+}
+
+#[test]
+fn contact_stays_on_the_face_in_the_swept_range() {
+    // The sweeps' extremes: the ball must leave from the flat face, not an edge
+    // (the face is 24 x 10 cm; the contact point is checked in the foot's frame).
+    for (e, a) in [(0.09, 0.0), (0.0, 40.0), (-0.09, 40.0)] {
+        let k = kick(Kick3dSpec { offset: Some(e), approach_angle_deg: Some(a), ..Kick3dSpec::default() });
+        let (_, y) = Accurate3d::default().solve_to_state(&k).unwrap();
+        let c = Dynamics::new(&k).contact(&y);
+        let local = Dynamics::foot_pose(&y).inverse_transform_point(c.point);
+        let [hx, hy, hz] = k.foot_shape.half_extents();
+        println!("e {e} a {a}: contact at {local:?}");
+        assert!((local.x - hx).abs() < 1e-9 && local.y.abs() < hy && local.z.abs() < hz, "{local:?}");
+    }
+}

@@ -1,0 +1,6 @@
+//! kick-3d's tests, one binary: the accurate path, the checks, the rapier scene.
+
+mod accurate;
+mod checks;
+mod scene;
+mod validation;

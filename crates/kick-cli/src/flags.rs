@@ -1,0 +1,180 @@
+//! Command-line flags derived from the declared parameters
+//! (`kick_core::parameters`): one flag per parameter of the spec's levels,
+//! `--` plus the kebab case of its name, with its symbol as the value name
+//! and its doc, unit and default as help. Values are validated where the spec
+//! is built, so a bad value gets the library's typed error naming it.
+
+use clap::{Arg, ArgAction, ArgMatches, Command};
+use kick_core::parameters::{self, ParameterDef, SetParameter, Shape, Value};
+use kick_core::{LawKind, ScenarioSpec};
+use kick_3d::KickSpec;
+use std::marker::PhantomData;
+
+/// A spec the flags fill: its levels' parameters, and the contact law.
+pub trait FlagSpec: SetParameter + Default {
+    fn set_law(&mut self, law: LawKind);
+}
+
+impl FlagSpec for ScenarioSpec {
+    fn set_law(&mut self, law: LawKind) {
+        self.law = Some(law);
+    }
+}
+
+impl FlagSpec for KickSpec {
+    fn set_law(&mut self, law: LawKind) {
+        self.scenario.law = Some(law);
+    }
+}
+
+const LAW: &str = "law";
+
+/// The flags of `S`'s parameters and `--law`; [`Flags::spec`] is what was given.
+#[derive(Debug, Clone, Default)]
+pub struct Flags<S> {
+    /// Each parameter given, in declaration order.
+    pub given: Vec<(&'static ParameterDef, Value)>,
+    pub law: Option<LawKind>,
+    spec: PhantomData<S>,
+}
+
+impl<S: FlagSpec> Flags<S> {
+    /// The spec with the values given (the rest left to the defaults) and the
+    /// law (the paper's unless chosen).
+    pub fn spec(&self) -> S {
+        let mut spec = S::default();
+        spec.set_law(self.law.unwrap_or(LawKind::PowerLaw));
+        for &(parameter, value) in &self.given {
+            // Flags exist only for S's parameters, with their shapes.
+            let _ = spec.set_parameter(parameter, value);
+        }
+        spec
+    }
+}
+
+fn parameter_arg(p: &'static ParameterDef) -> Arg {
+    let arg = Arg::new(p.name).long(p.long()).help(p.help());
+    match p.shape {
+        Shape::Scalar => arg
+            .value_name(p.symbol)
+            .value_parser(clap::value_parser!(f64))
+            .allow_negative_numbers(true)
+            .action(ArgAction::Set),
+        Shape::Vector3 => arg
+            .value_name(format!("{0}x,{0}y,{0}z", p.symbol))
+            .value_parser(clap::value_parser!(f64))
+            .value_delimiter(',')
+            .allow_negative_numbers(true)
+            .action(ArgAction::Append),
+        Shape::Switch => arg.action(ArgAction::SetTrue),
+    }
+}
+
+fn parse_law(name: &str) -> Result<LawKind, String> {
+    LawKind::from_name(name).map_err(|e| e.to_string())
+}
+
+impl<S: FlagSpec> clap::Args for Flags<S> {
+    fn augment_args(mut command: Command) -> Command {
+        for p in parameters::at_levels(S::LEVELS) {
+            command = command.arg(parameter_arg(p));
+        }
+        command.arg(
+            Arg::new(LAW)
+                .long(LAW)
+                .value_name("NAME")
+                .help(format!("Contact law: {} (power-law: the paper's, Eq. 20)", LawKind::NAMES))
+                .default_value("power-law")
+                .value_parser(parse_law),
+        )
+    }
+    fn augment_args_for_update(command: Command) -> Command {
+        Self::augment_args(command)
+    }
+}
+
+impl<S: FlagSpec> clap::FromArgMatches for Flags<S> {
+    fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
+        let mut flags = Flags { given: Vec::new(), law: None, spec: PhantomData };
+        flags.update_from_arg_matches(matches)?;
+        Ok(flags)
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
+        for p in parameters::at_levels(S::LEVELS) {
+            let value = match p.shape {
+                Shape::Scalar => matches.get_one::<f64>(p.name).map(|&x| Value::Number(x)),
+                Shape::Vector3 => match matches.get_many::<f64>(p.name) {
+                    None => None,
+                    Some(values) => match values.copied().collect::<Vec<f64>>()[..] {
+                        [x, y, z] => Some(Value::Vector([x, y, z])),
+                        ref other => {
+                            return Err(clap::Error::raw(
+                                clap::error::ErrorKind::WrongNumberOfValues,
+                                format!("{} takes three numbers (x,y,z), got {}\n", p.flag(), other.len()),
+                            ))
+                        }
+                    },
+                },
+                Shape::Switch => matches.get_flag(p.name).then_some(Value::Switch(true)),
+            };
+            if let Some(value) = value {
+                self.given.retain(|(q, _)| q.name != p.name);
+                self.given.push((p, value));
+            }
+        }
+        if let Some(&law) = matches.get_one::<LawKind>(LAW) {
+            self.law = Some(law);
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::{Args, FromArgMatches};
+
+    fn parse<S: FlagSpec>(args: &[&str]) -> Result<Flags<S>, clap::Error> {
+        let command = Flags::<S>::augment_args(Command::new("kick"));
+        let matches = command.try_get_matches_from(std::iter::once("kick").chain(args.iter().copied()))?;
+        Flags::<S>::from_arg_matches(&matches)
+    }
+
+    /// Every declared 1D and 3D parameter is a flag of `kick simulate3d`,
+    /// every 1D one of `kick simulate`, and the value lands in the spec.
+    #[test]
+    fn every_declared_parameter_is_a_flag() {
+        for p in parameters::at_levels(KickSpec::LEVELS) {
+            let args: Vec<String> = match p.shape {
+                Shape::Scalar => vec![p.flag(), "0.25".into()],
+                Shape::Vector3 => vec![p.flag(), "0.25,0.5,0.75".into()],
+                Shape::Switch => vec![p.flag()],
+            };
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            let flags = parse::<KickSpec>(&args).unwrap_or_else(|e| panic!("{}: {e}", p.name));
+            let mut expected = KickSpec::default();
+            expected.set_law(LawKind::PowerLaw);
+            let value = flags.given.iter().find(|(q, _)| q.name == p.name).map(|(_, v)| *v).expect("given");
+            expected.set_parameter(p, value).unwrap();
+            assert_eq!(flags.spec(), expected, "{}", p.name);
+            if p.level == kick_core::Level::Scenario {
+                assert!(parse::<ScenarioSpec>(&args).is_ok(), "{}", p.name);
+            } else {
+                assert!(parse::<ScenarioSpec>(&args).is_err(), "{} is not a 1D flag", p.name);
+            }
+        }
+    }
+
+    #[test]
+    fn help_and_vector_lengths() {
+        let command = Flags::<KickSpec>::augment_args(Command::new("kick"));
+        let arg = command.get_arguments().find(|a| a.get_id() == "foot_mass").unwrap();
+        assert_eq!(arg.get_help().unwrap().to_string(), "Effective foot mass (Eqs. 11-12): m_f, kg [default: 3]");
+        let error = parse::<KickSpec>(&["--foot-inertia", "1,2"]).unwrap_err();
+        assert!(error.to_string().contains("--foot-inertia takes three numbers"), "{error}");
+        let flags = parse::<ScenarioSpec>(&["--law", "flores", "--restitution", "0.6", "--damping", "-5"]).unwrap();
+        let spec = flags.spec();
+        assert_eq!((spec.law, spec.restitution, spec.damping), (Some(LawKind::Flores), Some(0.6), Some(-5.0)));
+    }
+}

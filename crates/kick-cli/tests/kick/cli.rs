@@ -1,0 +1,129 @@
+//! The `kick` binary's contract: names other tools read, exit codes, messages.
+
+use crate::kick;
+
+#[test]
+fn simulate_json_has_the_contract_keys_in_si_units() {
+    let out = kick(&["simulate", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in [
+        "v_ball_out", "v_foot_out", "speed_ratio", "peak_force", "contact_time",
+        "max_compression", "impulse", "restitution", "energy_dissipated",
+    ] {
+        assert!(value[key].is_f64(), "missing {key}");
+    }
+    // SI: seconds and metres, not ms and mm (baseline: ~5.3 ms, ~28 mm).
+    let contact_time = value["contact_time"].as_f64().unwrap();
+    assert!((5.0e-3..6.0e-3).contains(&contact_time), "{contact_time}");
+    let compression = value["max_compression"].as_f64().unwrap();
+    assert!((0.02..0.04).contains(&compression), "{compression}");
+}
+
+#[test]
+fn simulate_seed_rk4_matches_the_papers_baseline_text() {
+    let out = kick(&["simulate", "--solver", "seed-rk4", "--format", "json"]);
+    assert!(out.status.success());
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    // Eqs. 49–53 as printed (2 decimals of m/s, 3 significant digits elsewhere).
+    assert_eq!(format!("{:.2}", value["v_ball_out"].as_f64().unwrap()), "31.98");
+    assert_eq!(format!("{:.2}", value["v_foot_out"].as_f64().unwrap()), "17.42");
+    assert_eq!(format!("{:.2}", value["contact_time"].as_f64().unwrap() * 1e3), "5.29");
+    assert_eq!(format!("{:.2}", value["peak_force"].as_f64().unwrap() / 1e3), "3.80");
+    assert_eq!(format!("{:.1}", value["max_compression"].as_f64().unwrap() * 1e3), "27.9");
+}
+
+#[test]
+fn bad_input_exits_non_zero_and_names_the_problem() {
+    let cases: [(&[&str], &str); 6] = [
+        (&["simulate", "--foot-mass", "-1"], "foot_mass"),
+        (&["simulate", "--stiffness", "0"], "stiffness"),
+        (&["simulate", "--damping", "-5"], "damping"),
+        (&["simulate", "--exponent", "nan"], "exponent"),
+        (&["simulate", "--foot-speed", "3", "--ball-speed", "5"], "no contact"),
+        (&["simulate", "--drive-force", "50000"], "no separation"),
+    ];
+    for (args, needle) in cases {
+        let out = kick(args);
+        assert!(!out.status.success(), "{args:?} should fail");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(needle), "{args:?}: {stderr}");
+    }
+    let out = kick(&["simulate", "--solver", "euler"]);
+    assert!(!out.status.success());
+}
+
+#[test]
+fn table2_text_and_json() {
+    let out = kick(&["table2", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(rows.as_array().unwrap().len(), 8);
+    for row in rows.as_array().unwrap() {
+        assert_eq!(row["seed_matches_printed"], true, "{}", row["name"]);
+        let cell = &row["columns"]["v_ball_out_m_s"];
+        assert!(cell["paper"].is_f64() && cell["seed_rk4"].is_f64() && cell["accurate"].is_f64());
+    }
+}
+
+#[test]
+fn history_is_given_only_on_request() {
+    let out = kick(&["simulate", "--format", "json"]);
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(value.get("history").is_none());
+    let out = kick(&["simulate", "--format", "json", "--history", "1e-4"]);
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let samples = value["history"].as_array().unwrap();
+    assert!(samples.len() > 50);
+    let last = samples.last().unwrap();
+    assert!((last["time"].as_f64().unwrap() - value["contact_time"].as_f64().unwrap()).abs() < 1e-15);
+}
+
+#[test]
+fn simulate_takes_any_contact_law() {
+    let out = kick(&["simulate", "--law", "hunt-crossley-exact", "--restitution", "0.6", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!((value["restitution"].as_f64().unwrap() - 0.6).abs() < 1e-8);
+    assert_eq!(value["law"]["law"], "hysteresis");
+    for (args, needle) in [
+        (&["simulate", "--law", "rubber"][..], "rubber"),
+        (&["simulate", "--law", "flores"][..], "restitution"),
+        (&["simulate", "--law", "kelvin-voigt", "--restitution", "1.4"][..], "restitution"),
+    ] {
+        let out = kick(args);
+        assert!(!out.status.success(), "{args:?}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains(needle), "{args:?}");
+    }
+}
+
+/// A reader that stops early (`kick check | head -1`) closes the pipe: the
+/// command ends quietly with its own status (0 here), no panic, no message.
+#[test]
+fn a_closed_stdout_ends_the_output_quietly() {
+    use std::io::{BufRead, BufReader};
+    use std::process::Stdio;
+    for (args, lines) in [
+        (&["check"][..], 0),
+        (&["check"][..], 1),
+        (&["simulate", "--history", "1e-8"][..], 1),
+        (&["check", "--format", "json"][..], 0),
+    ] {
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kick"))
+            .args(args)
+            .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("kick runs");
+        let mut stdout = BufReader::new(child.stdout.take().expect("stdout"));
+        for _ in 0..lines {
+            let mut line = String::new();
+            stdout.read_line(&mut line).expect("a line");
+        }
+        drop(stdout);
+        let out = child.wait_with_output().expect("kick ends");
+        assert_eq!(out.status.code(), Some(0), "{args:?} after {lines} lines: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(out.stderr.is_empty(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+}

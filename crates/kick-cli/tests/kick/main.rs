@@ -1,0 +1,16 @@
+//! The `kick` binary's contract, one test binary: names other tools read, exit codes, messages, files.
+
+mod check_and_leg;
+mod cli;
+mod fit_and_laws;
+mod run_reproduce;
+mod simulate3d;
+
+/// Run `kick` with `args` in the workspace root.
+fn kick(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_kick"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+        .output()
+        .expect("kick runs")
+}

@@ -1,0 +1,5 @@
+//! kick-flight's tests, one binary (the allocation count keeps its own, for its global allocator).
+
+mod closed_forms;
+mod robustness;
+mod validation;

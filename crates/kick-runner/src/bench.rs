@@ -1,0 +1,306 @@
+//! `kick bench`: work–precision of every 1D solver, the headline ratios, and
+//! sweep throughput, measured in one run of one binary.
+
+use crate::figures::{save_grid, Panel, Series};
+use crate::h5::{write_f64_attr, write_strings, Column, OutcomeSet, Setting, SweepData, SweepWriter};
+use crate::printable::Printable;
+use crate::sample::SampledSweep;
+use crate::Provenance;
+use kick_compliant::precision::{self, PrecisionPoint};
+use kick_compliant::SolverChoice;
+use kick_core::Solver;
+use plotters::prelude::SeriesLabelPosition;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::io::Write;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// What to measure and where to write it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BenchSettings {
+    /// Directory for work_precision.h5 (figures go to DIR/figures).
+    pub out: PathBuf,
+    /// Least wall time per measured point, s.
+    pub min_time: f64,
+    /// Scenarios in the throughput sweep.
+    pub sweep_samples: u64,
+    /// Short variant for CI: a few ladder points, little time each.
+    pub quick: bool,
+    /// Also write a Markdown section with the measured numbers here.
+    pub report: Option<PathBuf>,
+}
+
+impl Default for BenchSettings {
+    fn default() -> Self {
+        BenchSettings { out: PathBuf::from("results"), min_time: 0.3, sweep_samples: 200_000, quick: false, report: None }
+    }
+}
+
+/// The headline numbers of a bench run and the files it wrote.
+#[derive(Debug, Clone, Serialize)]
+pub struct BenchReport {
+    /// seed-rk4 / auto cost ratio (median of 5 alternating measurements).
+    pub cost_ratio: f64,
+    pub auto_max_error: f64,
+    pub seed_max_error: f64,
+    pub sweep_per_second_1_thread: f64,
+    pub sweep_per_second_2_threads: f64,
+    #[serde(skip)]
+    pub written: Vec<PathBuf>,
+}
+
+impl Printable for BenchReport {
+    fn text(&self) -> String {
+        self.written.iter().map(|p| format!("-> {}\n", p.display())).collect()
+    }
+}
+
+const COLUMNS: [(&str, &str); 3] = [
+    ("max_error", "1"),
+    ("seconds_per_scenario", "s"),
+    ("evaluations_per_scenario", "1"),
+];
+
+/// Scenarios per second of `solver` on the sweep, on a pool of `threads`.
+fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) -> Result<f64, String> {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| e.to_string())?;
+    let started = Instant::now();
+    let solved = pool.install(|| {
+        (0..sweep.samples)
+            .into_par_iter()
+            .map(|i| sweep.scenario(i).and_then(|s| solver.solve(&s)).is_ok() as u64)
+            .sum::<u64>()
+    });
+    std::hint::black_box(solved);
+    Ok(sweep.samples as f64 / started.elapsed().as_secs_f64())
+}
+
+/// Measure every solver's work and precision, the headline ratios and the
+/// sweep throughput (one run, one binary); write work_precision.h5, its
+/// figure and, if asked, the Markdown section. Progress lines go to `log`.
+pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, String> {
+    let cases = precision::cases().map_err(|e| e.to_string())?;
+    let mut ladder = precision::ladder();
+    let min_time = if args.quick { 0.02 } else { args.min_time };
+    if args.quick {
+        ladder.retain(|(name, setting)| {
+            matches!((*name, *setting), ("seed-rk4", s) if s == 5e-6) || *setting == 1e-12 || *setting == 1e-8
+        });
+    }
+    let mut points: Vec<PrecisionPoint> = Vec::new();
+    for (name, setting) in ladder {
+        let solver = precision::solver(name, setting).map_err(|e| e.to_string())?;
+        let point = precision::measure(name, setting, &solver, &cases, min_time).map_err(|e| format!("{name}: {e}"))?;
+        let _ = writeln!(
+            log,
+            "{:<16} {:>9.2e}  error {:>9.2e}  {:>9.2} µs/scenario  {:>7.0} evaluations",
+            point.solver,
+            point.setting,
+            point.max_error,
+            point.seconds_per_scenario * 1e6,
+            point.evaluations_per_scenario
+        );
+        points.push(point);
+    }
+    // Headline ratio: the default path against the paper's method, same
+    // binary, measured in alternation and the median taken (the machine is shared).
+    let seed_rk4 = SolverChoice::from_name("seed-rk4", 5e-6).map_err(|e| e.to_string())?;
+    let default_auto = SolverChoice::from_name("auto", 5e-6).map_err(|e| e.to_string())?;
+    let mut ratios = Vec::new();
+    let (mut seed, mut auto) = (None, None);
+    for _ in 0..5 {
+        let s = precision::measure("seed-rk4", 5e-6, &seed_rk4, &cases, min_time).map_err(|e| e.to_string())?;
+        let a = precision::measure("auto", kick_compliant::series::DEFAULT_TOLERANCE, &default_auto, &cases, min_time).map_err(|e| e.to_string())?;
+        ratios.push(s.seconds_per_scenario / a.seconds_per_scenario);
+        (seed, auto) = (Some(s), Some(a));
+    }
+    ratios.sort_by(f64::total_cmp);
+    let ratio = ratios[ratios.len() / 2];
+    let (seed, auto) = (seed.ok_or("no seed point")?, auto.ok_or("no auto point")?);
+    let _ = writeln!(
+        log,
+        "\nauto (default) vs seed-rk4 at 5 µs: error {:.2e} vs {:.2e}; cost ratio {:.1}x (median of 5 alternating runs; {:.1}-{:.1}x)",
+        auto.max_error, seed.max_error, ratio, ratios[0], ratios[ratios.len() - 1]
+    );
+    let sweep = SampledSweep::new(if args.quick { 2_000 } else { args.sweep_samples }, 1);
+    // 1 and 2 threads in alternation, three times; the medians (shared machine).
+    let (mut ones, mut twos) = (Vec::new(), Vec::new());
+    for _ in 0..3 {
+        ones.push(throughput(&default_auto, sweep, 1)?);
+        twos.push(throughput(&default_auto, sweep, 2)?);
+    }
+    ones.sort_by(f64::total_cmp);
+    twos.sort_by(f64::total_cmp);
+    let (one, two) = (ones[1], twos[1]);
+    let _ = writeln!(
+        log,
+        "sweep of {} sampled scenarios (auto, summary only): {:.0}/s on 1 thread, {:.0}/s on 2 threads, speed-up {:.2}x \
+         (medians of 3 alternating runs; 2 threads {:.0}-{:.0}/s)",
+        sweep.samples, one, two, two / one, twos[0], twos[2]
+    );
+
+    // Results file, then the figure drawn from it.
+    std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create {}: {e}", args.out.display()))?;
+    let path = args.out.join("work_precision.h5");
+    let text = format!("kick bench{} --min-time {min_time}", if args.quick { " --quick" } else { "" });
+    let provenance = Provenance::now("work_precision", "kick bench", &text);
+    let set = OutcomeSet {
+        solver: "bench".into(),
+        // References: closed forms, else accurate at this tolerance.
+        settings: Setting::numbers([("reference_tolerance", precision::REFERENCE_TOLERANCE)]),
+        columns: COLUMNS.iter().map(|(n, u)| Column::new(n, u)).collect(),
+    };
+    let parameters = [Column::new("setting", "tolerance (1) or step (s)")];
+    let mut writer = SweepWriter::create(&path, &provenance, &parameters, &[set], points.len() as u64).map_err(|e| e.to_string())?;
+    for p in &points {
+        writer.push_parameters(&[p.setting]).map_err(|e| e.to_string())?;
+        writer
+            .push_outcome(0, Ok(&[p.max_error, p.seconds_per_scenario, p.evaluations_per_scenario]))
+            .map_err(|e| e.to_string())?;
+    }
+    let names: Vec<String> = points.iter().map(|p| p.solver.to_string()).collect();
+    write_strings(writer.file(), &path, "scenario_names", &names).map_err(|e| e.to_string())?;
+    for (name, value) in [
+        ("auto_vs_seed_cost_ratio", ratio),
+        ("auto_max_error", auto.max_error),
+        ("sweep_per_second_1_thread", one),
+        ("sweep_per_second_2_threads", two),
+        ("sweep_samples", sweep.samples as f64),
+    ] {
+        write_f64_attr(writer.file(), &path, name, value).map_err(|e| e.to_string())?;
+    }
+    let path = writer.finish().map_err(|e| e.to_string())?;
+    let mut written = vec![path.clone()];
+    written.extend(draw(&path, &args.out.join("figures"))?);
+    if let Some(report) = &args.report {
+        let depth = report.parent().map_or(0, |p| p.components().count());
+        let figure = format!("{}{}/figures/work_precision.png", "../".repeat(depth), args.out.display());
+        let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples };
+        std::fs::write(report, measured.markdown(&figure, &text)).map_err(|e| format!("cannot write {}: {e}", report.display()))?;
+        written.push(report.clone());
+    }
+    Ok(BenchReport {
+        cost_ratio: ratio,
+        auto_max_error: auto.max_error,
+        seed_max_error: seed.max_error,
+        sweep_per_second_1_thread: one,
+        sweep_per_second_2_threads: two,
+        written,
+    })
+}
+
+struct Measured<'a> {
+    points: &'a [PrecisionPoint],
+    seed: &'a PrecisionPoint,
+    auto: &'a PrecisionPoint,
+    ratio: f64,
+    ratios: &'a [f64],
+    one: f64,
+    two: f64,
+    samples: u64,
+}
+
+impl Measured<'_> {
+    fn markdown(&self, figure: &str, command: &str) -> String {
+        let mut rows = String::new();
+        for p in self.points {
+            rows.push_str(&format!(
+                "| {} | {:.2e} | {:.2e} | {:.2} | {:.0} |\n",
+                p.solver,
+                p.setting,
+                p.max_error,
+                p.seconds_per_scenario * 1e6,
+                p.evaluations_per_scenario
+            ));
+        }
+        format!(
+            "# Solvers of the 1D model\n\n\
+             Generated by `{command}` (part of `kick reproduce`); every number below was measured in that run, \
+             on the machine that ran it. Timings on a shared machine move by tens of percent between runs; \
+             ratios are taken within one run.\n\n\
+             ## What `auto` runs\n\n\
+             | scene | path | why it is exact |\n| --- | --- | --- |\n\
+             | no drive, c = 0 | `closed-form` | energy integral (Eq. 33), contact time from the Beta function |\n\
+             | no drive, n = 1 | `closed-form` | damped oscillator to δ_max, undamped quarter swing back |\n\
+             | the paper's law, otherwise | `series` | power series through compression (a Frobenius double series in t and t^(n+1) at \
+             first touch, Taylor steps after), the undamped return from its energy integral (Beta function, or tanh–sinh \
+             quadrature under a drive) |\n\
+             | another contact law | `reduced` | Dop853 on δ (Eq. 18) through the whole contact |\n\
+             | a time history is wanted | `accurate` | full state of Eq. 47, every sample an integrator point |\n\n\
+             ## Work–precision\n\n![work–precision]({figure})\n\n\
+             Error: the largest relative error over v_b⁺, v_f⁺, ratio, peak force, contact time, δ_max, impulse and e \
+             (times of the peak and of δ_max relative to the contact time), over Table 2, five elastic, six linear and \
+             three driven scenarios, against the closed forms where they exist and `accurate` at 1e-14 elsewhere.\n\n\
+             | solver | tolerance or step (s) | max error | µs per scenario | evaluations |\n| --- | --- | --- | --- | --- |\n{rows}\n\
+             ## Headline numbers\n\n\
+             - `auto` at its default tolerance: largest error {:.2e}; `seed-rk4` at 5 µs: {:.2e} \
+             (step quantisation of the contact time and the missed onset jump c·V0).\n\
+             - Cost ratio seed-rk4 / auto: **{:.1}x** (median of 5 alternating measurements, range {:.1}–{:.1}x).\n\
+             - Sampled sweep of {} scenarios (auto, summary only, no file): {:.0} scenarios/s on 1 thread, \
+             {:.0} scenarios/s on 2 threads, parallel speed-up {:.2}x (medians of 3 alternating runs).\n\n\
+             ## Where each solver is trustworthy\n\n\
+             Held by `crates/kick-compliant/tests/solvers/stress.rs` (k 1e2–1e12, n 1–3, ζ 0–50, m_f/m_b 1e-3–1e6, V0 1e-3–1e3 m/s, drives to 1e4 N, \
+             grazing contact) and `crates/kick-compliant/tests/solvers/accurate_vs_closed_forms.rs`:\n\n\
+             - `closed-form`, `series`, `reduced-return`, `reduced`, `auto`: agree with each other and the closed forms to \
+             1e-8 over the whole box; against the closed forms and `accurate` at 1e-14 on the paper's range and the sweep's \
+             box, 1e-9 (measured ~1e-11; `crates/kick-compliant/tests/solvers/series.rs`).\n\
+             - `accurate`, `dop853`, `dopri5`, `rk4-events` carry x_f, x_b, v_f, v_b, whose differences make δ and δ̇: \
+             their error grows with |v|/V0 and |v| t_c/δ_max (grazing contact at high speed, long shallow contacts), \
+             and under a drive with (μ/m_f) F δ_max / (½ μ V0²); within 1e-8 times that conditioning.\n\
+             - `seed-rk4`: fourth order between steps, but the contact time is quantised to the step and a damped \
+             contact's peak misses the onset jump; ~2e-2 relative at 5 µs on this set.\n\
+             - A drive that keeps the ball pressed ends in a typed `NoSeparation` error: proved at the first maximum \
+             compression for the paper's law, or after the documented horizon (1000 undriven contact times, or 100 000 \
+             steps in one phase).\n",
+            self.auto.max_error,
+            self.seed.max_error,
+            self.ratio,
+            self.ratios[0],
+            self.ratios[self.ratios.len() - 1],
+            self.samples,
+            self.one,
+            self.two,
+            self.two / self.one,
+        )
+    }
+}
+
+/// Error against cost, log–log, one curve per solver, from the file.
+fn draw(path: &std::path::Path, out: &std::path::Path) -> Result<Vec<PathBuf>, String> {
+    let data = SweepData::read(path).map_err(|e| e.to_string())?;
+    let names = data.names.clone().ok_or("work_precision.h5 has no solver names")?;
+    let set = data.set("bench").map_err(|e| e.to_string())?;
+    let error = set.column("max_error").ok_or("no max_error")?;
+    let seconds = set.column("seconds_per_scenario").ok_or("no seconds_per_scenario")?;
+    let colors = crate::figures::COLORS;
+    let mut solvers: Vec<&str> = Vec::new();
+    for n in &names {
+        if !solvers.contains(&n.as_str()) {
+            solvers.push(n);
+        }
+    }
+    let mut series = Vec::new();
+    for (i, solver) in solvers.iter().enumerate() {
+        let mut rows: Vec<(f64, f64)> = names
+            .iter()
+            .zip(seconds.iter().zip(error))
+            .filter(|(n, _)| n == solver)
+            .map(|(_, (&t, &e))| (t * 1e6, e.max(1e-16).log10()))
+            .collect();
+        rows.sort_by(|a, b| a.0.total_cmp(&b.0));
+        rows.dedup_by(|a, b| a.0 == b.0);
+        let (x, y): (Vec<f64>, Vec<f64>) = rows.into_iter().unzip();
+        series.push(Series::line(solver, colors[i % colors.len()], &x, &y).with_markers());
+    }
+    let panel = Panel {
+        title: "Work-precision of the 1D solvers (Table 2, elastic, linear and driven models)".into(),
+        x_label: "time per scenario (µs, log scale)".into(),
+        y_label: "log10 of the largest relative error".into(),
+        log_x: true,
+        series,
+        y_from_zero: false,
+        legend: SeriesLabelPosition::UpperRight,
+    };
+    save_grid(out, "work_precision", "kick bench", (1, 1), &[panel]).map_err(|e| e.to_string())
+}

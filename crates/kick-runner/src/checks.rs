@@ -1,0 +1,50 @@
+//! `kick check`: every cross-model check row, kick-checks' and the 3D model's.
+
+use crate::printable::Printable;
+use kick_core::check::CheckRow;
+use serde::Serialize;
+use std::fmt::Write as _;
+
+/// The check rows (JSON: the list of rows).
+#[derive(Debug, Clone, Serialize)]
+#[serde(transparent)]
+pub struct CheckTable {
+    pub rows: Vec<CheckRow>,
+}
+
+impl CheckTable {
+    /// Rows that failed.
+    pub fn failed(&self) -> usize {
+        self.rows.iter().filter(|r| !r.passed).count()
+    }
+}
+
+/// Run every check: kick-checks' and the 3D model's, in the same row shape.
+pub fn run_all() -> CheckTable {
+    let mut rows = kick_checks::run_all();
+    rows.extend(kick_3d::checks::checks());
+    CheckTable { rows }
+}
+
+impl Printable for CheckTable {
+    fn text(&self) -> String {
+        let mut w = String::new();
+        let _ = writeln!(w, "{:<6} {:<10} {:>20} {:>20} {:>10} {:>10}  check", "result", "equation", "expected", "actual", "error", "tolerance");
+        for r in &self.rows {
+            let _ = writeln!(
+                w,
+                "{:<6} {:<10} {:>20.12e} {:>20.12e} {:>10.3e} {:>10.3e}  {}",
+                if r.passed { "PASS" } else { "FAIL" },
+                r.equation,
+                r.expected,
+                r.actual,
+                r.error,
+                r.tolerance,
+                r.name
+            );
+        }
+        let passed = self.rows.len() - self.failed();
+        let _ = writeln!(w, "{passed} of {} checks passed", self.rows.len());
+        w
+    }
+}

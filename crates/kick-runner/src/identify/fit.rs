@@ -1,0 +1,357 @@
+//! `kick fit`: Table 2 by least squares, fits of specification files,
+//! synthetic data and the identifiability study, with their result files.
+
+use crate::identify::files;
+use crate::printable::Printable;
+use crate::{Provenance, ResultWriter};
+use kick_core::{Parameter, Scenario, ScenarioSpec};
+use kick_identify::data::{Channel, FitSpec};
+use kick_identify::fit::{fit, FitOptions, FitProblem, FitReport};
+use kick_identify::profile::{identifiability_study, IdentifiabilityStudy};
+use kick_identify::table2::Table2Fit;
+use kick_identify::{synthetic, FitParameter, IdentifyError, ModelPoint};
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+fn text(e: IdentifyError) -> String {
+    e.to_string()
+}
+
+/// The identifiability study's settings (`kick fit profile`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProfileSettings {
+    /// Write identifiability.h5 and its figure here.
+    pub out: Option<PathBuf>,
+    /// Profile over [1/spread, spread] x the truth.
+    pub spread: f64,
+    pub points: usize,
+    /// Grid points per axis of the misfit maps.
+    pub map_points: usize,
+    pub seed: u64,
+}
+
+/// The study and the files written.
+#[derive(Debug, Clone, Serialize)]
+#[serde(transparent)]
+pub struct ProfileReport {
+    pub study: IdentifiabilityStudy,
+    #[serde(skip)]
+    pub written: Vec<PathBuf>,
+}
+
+/// Identifiability (Section 17.8): misfit profiles of m_f, k, c, n from the
+/// exit speed alone and from noisy histories, and (k, c) misfit maps.
+pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, String> {
+    let ProfileSettings { out, spread, points, map_points, seed } = settings.clone();
+    if !(3..=101).contains(&points) || !(3..=201).contains(&map_points) {
+        return Err(format!("--points must be in 3..=101 and --map-points in 3..=201 (got {points}, {map_points})"));
+    }
+    let study = identifiability_study(&Scenario::baseline(), spread, points, map_points, 80, seed, &FitOptions::default())
+        .map_err(text)?;
+    let mut written = Vec::new();
+    if let Some(dir) = out {
+        std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        let command = format!("kick fit profile --spread {spread} --points {points} --map-points {map_points} --seed {seed}");
+        let provenance = Provenance::now("identifiability", "kick fit profile (command line)", &command);
+        let h5 = files::write_identifiability(&dir.join("identifiability.h5"), &provenance, &study)?;
+        written.push(h5.clone());
+        written.extend(crate::identify::figures::identifiability(&h5, &dir)?);
+    }
+    Ok(ProfileReport { study, written })
+}
+
+impl Printable for ProfileReport {
+    fn text(&self) -> String {
+        let mut w = String::new();
+        let study = &self.study;
+        for (title, profiles) in [("exit speed alone", &study.exit_speed_profiles), ("histories", &study.history_profiles)] {
+            let _ = writeln!(w, "Profiles of chi2 ({title}); each point re-fits the other three parameters:");
+            for p in profiles {
+                let values: Vec<String> = p.points.iter().map(|q| format!("{:.3}:{:.3e}", q.factor, q.chi_square)).collect();
+                let _ = writeln!(w, "  {:<10} {}", p.parameter.name(), values.join("  "));
+            }
+        }
+        w
+    }
+    fn written(&self) -> &[PathBuf] {
+        &self.written
+    }
+}
+
+/// Write `kick fit table2 --out`: the fits, the scenario file's values and
+/// the same fits to seed-rk4's unrounded outputs at those values.
+fn write_table2(path: &Path, scenarios: &Path, fits: &[Table2Fit]) -> Result<PathBuf, String> {
+    let file = crate::table2::load(scenarios)?;
+    let seed = kick_compliant::SeedRk4::new(file.dt).map_err(|e| e.to_string())?;
+    let options = FitOptions::default();
+    let mut file_values = Vec::new();
+    let mut seed_fits = Vec::new();
+    let mut observations = Vec::new();
+    for (index, (row, (_, scenario))) in file.row.iter().zip(file.scenarios().map_err(|e| e.to_string())?).enumerate() {
+        observations.push(kick_identify::table2::printed_observations(&kick_core::paper::TABLE2[index]));
+        file_values.push(row.value);
+        seed_fits.push(match row.parameter {
+            None => None,
+            Some(_) => {
+                let outcome = kick_core::Solver::solve(&seed, &scenario).map_err(|e| e.to_string())?;
+                let unrounded = kick_identify::table2::unrounded_observations(&outcome);
+                kick_identify::table2::fit_row_to(index, unrounded, &options).map_err(text)?.value()
+            }
+        });
+    }
+    let text = std::fs::read_to_string(scenarios).map_err(|e| format!("{}: {e}", scenarios.display()))?;
+    let provenance = Provenance::now("table2_fit", &scenarios.display().to_string(), &format!("# kick fit table2 --out
+{text}"));
+    files::write_table2_fits(path, &provenance, fits, &observations, &file_values, &seed_fits)
+}
+
+/// Table 2 by least squares (JSON: the fits).
+#[derive(Debug, Clone, Serialize)]
+#[serde(transparent)]
+pub struct Table2Fits {
+    pub fits: Vec<Table2Fit>,
+    #[serde(skip)]
+    pub written: Vec<PathBuf>,
+}
+
+/// Table 2: each row's changed parameter by least squares on the four
+/// printed observables (accurate solver). `write`: the seed-rk4 scenario
+/// file (Brent roots); `out`: the fits (HDF5) beside the values of the
+/// scenario file `scenarios`.
+pub fn table2(write: Option<&Path>, out: Option<&Path>, scenarios: &Path) -> Result<Table2Fits, String> {
+    let mut written = Vec::new();
+    if let Some(path) = write {
+        let file = kick_compliant::table2::fit().map_err(|e| e.to_string())?;
+        let body = toml::to_string_pretty(&file).map_err(|e| e.to_string())?;
+        let text = format!(
+            "# Generated by `kick fit table2 --write {}`; do not edit.\n\
+             # root: Brent root of seed-rk4's v_b+ on the printed value; value: the root\n\
+             # rounded to the fewest significant digits that reproduce all five printed\n\
+             # columns; residuals: seed-rk4 at value minus printed (m/s, 1, N, ms, mm).\n{body}",
+            path.display()
+        );
+        std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
+    let fits = kick_identify::table2::fit_all(&FitOptions::default()).map_err(text)?;
+    if let Some(path) = out {
+        written.push(write_table2(path, scenarios, &fits)?);
+    }
+    Ok(Table2Fits { fits, written })
+}
+
+impl Printable for Table2Fits {
+    fn text(&self) -> String {
+        let mut w = String::new();
+        let _ = writeln!(w, "Table 2 by least squares (accurate; v_b+, peak force, contact time, compression; σ = half the last printed digit)");
+        for f in &self.fits {
+            match (&f.report, &f.baseline_residuals) {
+                (Some(r), _) => {
+                    let e = &r.estimates[0];
+                    let weighted: Vec<String> = r.residuals.iter().map(|x| format!("{} {:+.2}", x.label, x.weighted)).collect();
+                    let _ = writeln!(
+                        w,
+                        "{:<24} {:<10} {:>14.6} ± {:<10} chi2 {:>7.2}  residuals/σ: {}",
+                        f.name,
+                        e.parameter.name(),
+                        e.value,
+                        e.standard_uncertainty.map(|s| format!("{s:.3e}")).unwrap_or_else(|| "-".into()),
+                        r.chi_square,
+                        weighted.join(", ")
+                    );
+                }
+                (None, Some(res)) => {
+                    let weighted: Vec<String> = res.iter().map(|(o, w)| format!("{} {w:+.2}", o.name())).collect();
+                    let _ = writeln!(w, "{:<24} {:<10} {:>14} {:<13} {:>12}  residuals/σ: {}", f.name, "-", "(Table 1)", "", "", weighted.join(", "));
+                }
+                _ => {}
+            }
+        }
+        w
+    }
+    fn written(&self) -> &[PathBuf] {
+        &self.written
+    }
+}
+
+/// A fit of a specification file: the report and the truth the file names.
+#[derive(Debug, Clone, Serialize)]
+#[serde(transparent)]
+pub struct DataFit {
+    pub report: FitReport,
+    #[serde(skip)]
+    pub truth: Vec<(FitParameter, f64)>,
+    #[serde(skip)]
+    pub written: Vec<PathBuf>,
+}
+
+/// Fit the parameters the specification file `spec_path` names to its data
+/// (TOML/JSON); `out`: the fit report (HDF5).
+pub fn data(spec_path: &Path, out: Option<&Path>) -> Result<DataFit, String> {
+    let (spec, observations) = FitSpec::load(spec_path).map_err(text)?;
+    let name = spec_path.display().to_string();
+    let start = spec.start(&name).map_err(text)?;
+    let free = spec.free_parameters().map_err(text)?;
+    let truth = spec.truth().map_err(text)?;
+    let problem = FitProblem { start, free, observations };
+    let report = fit(&problem, &FitOptions::default()).map_err(text)?;
+    let mut written = Vec::new();
+    if let Some(path) = out {
+        let spec_text = std::fs::read_to_string(spec_path).map_err(|e| format!("{name}: {e}"))?;
+        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("fit");
+        let provenance = Provenance::now(stem, &name, &spec_text);
+        let w = ResultWriter::create(path, &provenance, "kick-fit-1").map_err(|e| e.to_string())?;
+        files::write_fit(&w, "fit", &report, &problem.observations, &truth)?;
+        written.push(w.finish().map_err(|e| e.to_string())?);
+    }
+    Ok(DataFit { report, truth, written })
+}
+
+impl DataFit {
+    /// An error unless the fit converged.
+    pub fn converged(&self) -> Result<(), String> {
+        if self.report.converged {
+            Ok(())
+        } else {
+            Err(format!("the fit stopped without converging: {}", self.report.termination))
+        }
+    }
+}
+
+impl Printable for DataFit {
+    fn text(&self) -> String {
+        report_text(&self.report, &self.truth)
+    }
+    fn written(&self) -> &[PathBuf] {
+        &self.written
+    }
+}
+
+/// A fit report as a table: estimates, uncertainties, pulls, χ², correlations.
+pub fn report_text(report: &FitReport, truth: &[(FitParameter, f64)]) -> String {
+    let mut w = String::new();
+    let _ = writeln!(w, "contact law: {}", report.law.name());
+    let _ = writeln!(w, "{:<12} {:>16} {:>14} {:>16} {:>16}", "parameter", "estimate", "std. unc.", "start", "(est-truth)/σ");
+    for e in &report.estimates {
+        let pull = truth
+            .iter()
+            .find(|(p, _)| *p == e.parameter)
+            .zip(e.standard_uncertainty)
+            .map_or(String::new(), |((_, t), s)| format!("{:+.2}", (e.value - t) / s));
+        let _ = writeln!(w, 
+            "{:<12} {:>16.8e} {:>14} {:>16.8e} {:>16}",
+            e.parameter.name(),
+            e.value,
+            e.standard_uncertainty.map(|s| format!("{s:.3e}")).unwrap_or_else(|| "not identified".into()),
+            e.start,
+            pull
+        );
+    }
+    let _ = writeln!(w, 
+        "chi2 {:.4} over {} residuals, {} degrees of freedom, s2 {}; {} ({} evaluations)",
+        report.chi_square,
+        report.residuals.len(),
+        report.degrees_of_freedom,
+        report.residual_variance.map(|s| format!("{s:.4}")).unwrap_or_else(|| "-".into()),
+        report.termination,
+        report.evaluations
+    );
+    if let Some(c) = &report.correlation {
+        let _ = writeln!(w, "correlation:");
+        for row in c {
+            let _ = writeln!(w, "  {}", row.iter().map(|v| format!("{v:+.4}")).collect::<Vec<_>>().join(" "));
+        }
+    }
+    let worst = report.residuals.iter().max_by(|a, b| a.weighted.abs().total_cmp(&b.weighted.abs()));
+    if let Some(r) = worst {
+        let _ = writeln!(w, "largest residual: {} = {:+.3} σ", r.label, r.weighted);
+    }
+    w
+}
+
+/// The synthetic data and specification written.
+#[derive(Debug, Clone, Serialize)]
+pub struct Synthesized {
+    pub csv: PathBuf,
+    pub spec: PathBuf,
+}
+
+impl Printable for Synthesized {
+    fn text(&self) -> String {
+        format!("wrote {} and {}\n", self.csv.display(), self.spec.display())
+    }
+}
+
+/// Write a synthetic history (CSV, `out/NAME.csv`) and a fit specification
+/// for it (`out/NAME.toml`): the scenario `truth` (Table 1's baseline where
+/// not given) plus seeded noise, `times` samples over 1.2 contact times, the
+/// data's first touch at `time_offset`.
+pub fn synthesize(out: &Path, name: &str, seed: u64, times: usize, truth: &ScenarioSpec, time_offset: f64) -> Result<Synthesized, String> {
+    if !(2..=100_000).contains(&times) {
+        return Err(format!("--times must be in 2..=100000 (got {times})"));
+    }
+    if name.is_empty() || name.contains(['/', '\\']) {
+        return Err(format!("--name must be a plain file stem (got `{name}`)"));
+    }
+    let scenario = truth.build().map_err(|e| e.to_string())?;
+    let truth = ModelPoint::new(scenario, time_offset).map_err(text)?;
+    let options = FitOptions::default();
+    let sigma = synthetic::lab_sigma(&Channel::ALL);
+    let grid = synthetic::time_grid(&scenario, times, 1.2);
+    let data = synthetic::history(&options.solver, &truth, grid, &sigma, seed).map_err(text)?;
+    let history = data.history.ok_or("no history produced")?;
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let csv = out.join(format!("{name}.csv"));
+    std::fs::write(&csv, history.data.to_csv()).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+    let toml_path = out.join(format!("{name}.toml"));
+    let spec = synthetic_spec(&truth, &format!("{name}.csv"), &sigma, seed, &toml_path);
+    std::fs::write(&toml_path, spec).map_err(|e| format!("cannot write {}: {e}", toml_path.display()))?;
+    Ok(Synthesized { csv, spec: toml_path })
+}
+
+/// Starting guesses of a synthetic fit, as factors of the truth: far enough
+/// that the fit has to travel, near enough to stay in the basin.
+const SYNTHETIC_START: [(Parameter, f64); 4] =
+    [(Parameter::FootMass, 1.2), (Parameter::Stiffness, 0.714), (Parameter::Damping, 1.333), (Parameter::Exponent, 0.926)];
+
+/// The fit specification of synthetic data: the law's fittable parameters
+/// among m_f, k, c, n (and e, t0), started away from the truth.
+fn synthetic_spec(truth: &ModelPoint, csv: &str, sigma: &BTreeMap<Channel, f64>, seed: u64, path: &Path) -> String {
+    let mut free = Vec::new();
+    let mut guesses = Vec::new();
+    let mut truths = Vec::new();
+    for (p, factor) in SYNTHETIC_START {
+        if truth.check_fittable(p.into(), true).is_ok() {
+            free.push(format!("\"{}\"", p.name()));
+            guesses.push(format!("{} = {:.4e}", p.name(), truth.scenario.get(p) * factor));
+            truths.push(format!("{} = {:e}", p.name(), truth.scenario.get(p)));
+        }
+    }
+    let mut top = String::new();
+    if let Some(e) = truth.scenario.restitution_target() {
+        free.push("\"restitution\"".into());
+        top.push_str(&format!("law = \"{}\"\nrestitution = {:e} # start\n", truth.scenario.law_kind().name(), 0.8 * e));
+        truths.push(format!("restitution = {e:e}"));
+    }
+    if truth.time_offset != 0.0 {
+        free.push("\"time_offset\"".into());
+        top.push_str("time_offset = 0.0 # start\n");
+        truths.push(format!("time_offset = {:e}", truth.time_offset));
+    }
+    let sigma_text: Vec<String> = sigma.iter().map(|(c, s)| format!("{} = {s:e}", c.name())).collect();
+    format!(
+        "# Synthetic data: Table 1's baseline with contact law {} plus Gaussian noise (seed {seed}),\n\
+         # written by `kick fit synthesize`. Fit back with `kick fit data {}`.\n\
+         free = [{}]\n{top}\n\
+         [scenario] # starting guesses\n{}\n\n\
+         [history]\nfile = \"{csv}\"\nsigma = {{ {} }}\n\n\
+         [truth] # the values the data were made with\n{}\n",
+        truth.scenario.law_kind().name(),
+        path.display(),
+        free.join(", "),
+        guesses.join("\n"),
+        sigma_text.join(", "),
+        truths.join("\n")
+    )
+}

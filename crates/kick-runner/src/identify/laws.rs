@@ -1,0 +1,102 @@
+//! `kick laws`: the contact-law family on Table 2's scenarios, written to
+//! `DIR/laws.h5` (layout in [`crate::identify::files`]) with its figure
+//! drawn from that file.
+
+use crate::printable::Printable;
+use crate::Provenance;
+use kick_compliant::Accurate;
+use kick_core::Scenario;
+use kick_identify::laws::{compare, restitution_table, LawComparison};
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Where the scenarios come from, how finely pulses are sampled, where files go.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LawsSettings {
+    /// Table 2 scenario file with the rows' parameters.
+    pub scenarios: PathBuf,
+    /// Write laws.h5 and laws.png/svg (drawn from laws.h5) here.
+    pub out: Option<PathBuf>,
+    /// Pulse samples per undamped contact time (at most).
+    pub samples: u32,
+}
+
+/// Every law on every scenario (JSON: the comparisons).
+#[derive(Debug, Clone, Serialize)]
+#[serde(transparent)]
+pub struct LawsReport {
+    pub comparisons: Vec<LawComparison>,
+    #[serde(skip)]
+    pub written: Vec<PathBuf>,
+}
+
+/// The contact laws on Table 2's scenarios; with `out`, laws.h5 and its figure.
+pub fn laws(settings: &LawsSettings) -> Result<LawsReport, String> {
+    let comparisons = comparisons(settings)?;
+    let written = match &settings.out {
+        Some(dir) => write(settings, &comparisons, dir)?,
+        None => Vec::new(),
+    };
+    Ok(LawsReport { comparisons, written })
+}
+
+fn comparisons(args: &LawsSettings) -> Result<Vec<LawComparison>, String> {
+    if !(10..=100_000).contains(&args.samples) {
+        return Err(format!("--samples must be in 10..=100000 (got {})", args.samples));
+    }
+    let file = crate::table2::load(&args.scenarios)?;
+    let solver = Accurate::default();
+    file.scenarios()
+        .map_err(|e| e.to_string())?
+        .iter()
+        .map(|(name, s)| {
+            compare(name, s, &solver, s.elastic_contact_time() / args.samples as f64).map_err(|e| format!("{name}: {e}"))
+        })
+        .collect()
+}
+
+/// Targets of the restitution table (how far each χ formula misses its target).
+pub const FORMULA_TARGETS: [f64; 7] = [0.99, 0.95, 0.9, 0.8, 0.7, 0.5, 0.3];
+
+/// Write `dir/laws.h5` and draw `dir/laws.{png,svg}` from it.
+fn write(args: &LawsSettings, all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let scenarios = std::fs::read_to_string(&args.scenarios).map_err(|e| format!("{}: {e}", args.scenarios.display()))?;
+    let text = format!("# kick laws --scenarios {} --samples {}
+{scenarios}", args.scenarios.display(), args.samples);
+    let provenance = Provenance::now("laws", &args.scenarios.display().to_string(), &text);
+    let formulas = restitution_table(&Scenario::baseline(), &FORMULA_TARGETS, &Accurate::default()).map_err(|e| e.to_string())?;
+    let h5 = crate::identify::files::write_laws(&dir.join("laws.h5"), &provenance, all, args.samples, &FORMULA_TARGETS, &formulas)?;
+    let mut written = vec![h5.clone()];
+    written.extend(crate::identify::figures::laws(&h5, dir)?);
+    Ok(written)
+}
+
+impl Printable for LawsReport {
+    fn text(&self) -> String {
+        let mut w = String::new();
+        for c in &self.comparisons {
+            let _ = writeln!(w, "{} (target e = paper's law's e = {:.4})", c.name, c.restitution);
+            let _ = writeln!(w, "  {:<20} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}", "law", "e", "v_b+ m/s", "F(0+) N", "peak N", "t_c ms", "δmax mm");
+            for r in &c.runs {
+                let o = &r.outcome;
+                let _ = writeln!(
+                    w,
+                    "  {:<20} {:>8.4} {:>10.3} {:>10.1} {:>10.1} {:>10.3} {:>10.3}",
+                    r.law.name(),
+                    o.restitution,
+                    o.v_ball_out,
+                    r.pulse.first().map_or(0.0, |p| p.1),
+                    o.peak_force,
+                    o.contact_time * 1e3,
+                    o.max_compression * 1e3
+                );
+            }
+        }
+        w
+    }
+    fn written(&self) -> &[PathBuf] {
+        &self.written
+    }
+}

@@ -1,0 +1,349 @@
+//! `kick leg`: effective mass of the articulated leg (Eq. 11, kick-leg) and
+//! the 1D exit speed that follows with m_f = m_eff (Section 14.1).
+
+use crate::printable::Printable;
+use kick_core::{Outcome, Scenario};
+use kick_leg::{
+    anthropometry::{DE_LEVA_BODY_MASS, DE_LEVA_STATURE},
+    exit_outcome, AnkleJoint, HipSupport, Impact, Leg, LegEffectiveMass, Pose, Variant,
+};
+use nalgebra::Vector3;
+use serde::ser::{Serialize, Serializer};
+use serde_json::{json as value, Value};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+/// The leg, its pose and the impact, as given (angles in degrees).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LegSettings {
+    /// Knee flexion (0 = straight).
+    pub knee: f64,
+    /// Ankle plantarflexion from neutral (0 = foot at right angles to the shank).
+    pub ankle: f64,
+    /// Thigh angle from the downward vertical, positive forward.
+    pub hip: f64,
+    pub locked_ankle: bool,
+    /// Ankle torsional stiffness, N m/rad: leg and ball integrated together.
+    pub ankle_stiffness: Option<f64>,
+    pub locked_knee: bool,
+    pub free_hip: bool,
+    /// Spatial leg (ball-joint hip): abduction, rotation and lateral offset apply.
+    pub spatial: bool,
+    pub abduction: f64,
+    pub rotation: f64,
+    /// Contact offset along the foot's mediolateral axis, m.
+    pub lateral_offset: f64,
+    /// Contact point from the ankle along the foot, fraction of foot length.
+    pub contact: f64,
+    /// Impact direction in the sagittal plane, degrees above horizontal-forward.
+    pub direction: f64,
+    pub body_mass: f64,
+    pub height: f64,
+    /// Also write the figure data (HDF5) and figures here.
+    pub sweep_out: Option<PathBuf>,
+    /// The command that asked, for the files' provenance.
+    pub command: String,
+}
+
+impl Default for LegSettings {
+    /// The documented default pose: knee 30°, ankle 60°, thigh 10° forward,
+    /// free knee and ankle, pinned hip, planar, instep at 0.65 of the foot,
+    /// horizontal impact, de Leva's reference subject.
+    fn default() -> Self {
+        LegSettings {
+            knee: 30.0,
+            ankle: 60.0,
+            hip: 10.0,
+            locked_ankle: false,
+            ankle_stiffness: None,
+            locked_knee: false,
+            free_hip: false,
+            spatial: false,
+            abduction: 0.0,
+            rotation: 0.0,
+            lateral_offset: 0.0,
+            contact: 0.65,
+            direction: 0.0,
+            body_mass: DE_LEVA_BODY_MASS,
+            height: DE_LEVA_STATURE,
+            sweep_out: None,
+            command: "kick leg".into(),
+        }
+    }
+}
+
+/// The leg's effective mass and the 1D contact it gives.
+#[derive(Debug, Clone)]
+pub struct LegReport {
+    pub settings: LegSettings,
+    pub mass: LegEffectiveMass,
+    pub leg_mass: f64,
+    pub outcome: Outcome,
+    /// "free", "locked" or "elastic, κ N m/rad".
+    pub ankle: String,
+    pub elastic: Option<kick_leg::ankle::ElasticAnkle>,
+    pub written: Vec<PathBuf>,
+}
+
+/// Effective mass of the leg (Eq. 11) and the 1D exit speed with m_f = m_eff;
+/// with `sweep_out`, the figure data and figures too.
+pub fn leg(settings: &LegSettings) -> Result<LegReport, String> {
+    let args = settings;
+    let mut leg = Leg::de_leva(args.body_mass, args.height).map_err(|e| e.to_string())?;
+    leg.hip = if args.free_hip { HipSupport::Free } else { HipSupport::Pinned };
+    leg.variant = if args.spatial { Variant::Spatial } else { Variant::Planar };
+    leg.knee_locked = args.locked_knee;
+    let pose = Pose {
+        hip_flexion: args.hip,
+        knee_flexion: args.knee,
+        plantarflexion: args.ankle,
+        hip_abduction: args.abduction,
+        hip_rotation: args.rotation,
+    };
+    if !args.direction.is_finite() {
+        return Err(format!("invalid `direction` = {}: must be finite", args.direction));
+    }
+    if args.locked_ankle && args.ankle_stiffness.is_some() {
+        return Err("--locked-ankle and --ankle-stiffness exclude each other".into());
+    }
+    let angle = args.direction.to_radians();
+    let impact = Impact {
+        contact_fraction: args.contact,
+        lateral_offset: args.lateral_offset,
+        direction: Vector3::new(angle.cos(), angle.sin(), 0.0),
+    };
+    let base = Scenario::baseline();
+    // An elastic ankle is integrated with the ball (kick_leg::ankle); its
+    // m_eff is the 1D-equivalent mass, with the interpolation shown beside it.
+    let (mass, outcome, ankle, elastic) = match (args.locked_ankle, args.ankle_stiffness) {
+        (_, Some(k)) => {
+            let e = kick_leg::ankle::elastic_ankle(&leg, &pose, &impact, k, &base).map_err(|e| e.to_string())?;
+            let mass = LegEffectiveMass { effective_mass: e.equivalent_mass, ..e.interpolated };
+            (mass, e.outcome, format!("elastic, {k} N m/rad"), Some(e))
+        }
+        (locked, None) => {
+            let joint = if locked { AnkleJoint::Locked } else { AnkleJoint::Free };
+            let mass = leg.effective_mass(&pose, &impact, joint).map_err(|e| e.to_string())?;
+            let outcome = exit_outcome(mass.effective_mass, &base).map_err(|e| e.to_string())?;
+            (mass, outcome, if locked { "locked".into() } else { "free".into() }, None)
+        }
+    };
+    let mut written = Vec::new();
+    if let Some(dir) = &args.sweep_out {
+        written.extend(write_sweeps(dir, &leg, &pose, &impact, &base, &args.command)?);
+        written.extend(draw_figures(dir, &dir.join("figures"))?);
+    }
+    Ok(LegReport { settings: settings.clone(), mass, leg_mass: leg.segments.total_mass(), outcome, ankle, elastic, written })
+}
+
+impl LegReport {
+    fn labels(&self) -> (&'static str, &'static str, &'static str) {
+        let s = &self.settings;
+        (
+            if s.free_hip { "free" } else { "pinned" },
+            if s.locked_knee { "locked" } else { "free" },
+            if s.spatial { "spatial" } else { "planar" },
+        )
+    }
+}
+
+impl Serialize for LegReport {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let (hip, knee, variant) = self.labels();
+        let (mass, outcome) = (&self.mass, &self.outcome);
+        let mut object: Value = value!({
+            "effective_mass": mass.effective_mass,
+            "locked_ankle": mass.locked_ankle,
+            "free_ankle": mass.free_ankle,
+            "locked_share": mass.locked_share,
+            "ankle_inertia": mass.ankle_inertia,
+            "leg_mass": self.leg_mass,
+            "ankle": self.ankle,
+            "hip": hip,
+            "knee": knee,
+            "variant": variant,
+            "v_ball_out": outcome.v_ball_out,
+            "v_foot_out": outcome.v_foot_out,
+            "speed_ratio": outcome.speed_ratio,
+            "contact_time": outcome.contact_time,
+            "solver": "accurate",
+        });
+        if let Some(e) = &self.elastic {
+            object["interpolated_mass"] = value!(e.interpolated.effective_mass);
+            object["max_ankle_deflection"] = value!(e.coupled.max_ankle_deflection);
+            object["coupled_v_ball_out"] = value!(e.coupled.v_ball_out);
+            object["coupled_contact_time"] = value!(e.coupled.contact_time);
+        }
+        object.serialize(serializer)
+    }
+}
+
+impl Printable for LegReport {
+    fn text(&self) -> String {
+        let (hip, knee, variant) = self.labels();
+        let (s, mass, outcome) = (&self.settings, &self.mass, &self.outcome);
+        let mut w = String::new();
+        let _ = writeln!(w, "leg: de Leva (1996) male, {} kg, {} m, {hip} hip, {knee} knee, {} ankle ({variant})", s.body_mass, s.height, self.ankle);
+        let _ = writeln!(w, "{:<20} {:>12.6} kg", "effective_mass", mass.effective_mass);
+        let _ = writeln!(w, "{:<20} {:>12.6} kg", "locked_ankle", mass.locked_ankle);
+        let _ = writeln!(w, "{:<20} {:>12.6} kg", "free_ankle", mass.free_ankle);
+        let _ = writeln!(w, "{:<20} {:>12.6}", "locked_share", mass.locked_share);
+        let _ = writeln!(w, "{:<20} {:>12.6} kg", "leg_mass", self.leg_mass);
+        if let Some(e) = &self.elastic {
+            let _ = writeln!(w, "{:<20} {:>12.6} kg (series-spring interpolation, for comparison)", "interpolated_mass", e.interpolated.effective_mass);
+            let _ = writeln!(w, "{:<20} {:>12.6} rad (coupled leg-ball run, frozen geometry)", "max_ankle_deflection", e.coupled.max_ankle_deflection);
+            let _ = writeln!(w, "{:<20} {:>12.6e} s (coupled leg-ball run)", "coupled_contact_time", e.coupled.contact_time);
+        }
+        let _ = writeln!(w, "1D contact with m_f = effective_mass (Table 1 otherwise, accurate solver):");
+        let _ = writeln!(w, "{:<20} {:>12.6} m/s", "v_ball_out", outcome.v_ball_out);
+        let _ = writeln!(w, "{:<20} {:>12.6} m/s", "v_foot_out", outcome.v_foot_out);
+        let _ = writeln!(w, "{:<20} {:>12.6}", "speed_ratio", outcome.speed_ratio);
+        let _ = writeln!(w, "{:<20} {:>12.6e} s", "contact_time", outcome.contact_time);
+        w
+    }
+    fn written(&self) -> &[PathBuf] {
+        &self.written
+    }
+}
+
+/// Knee and ankle angles of the effective-mass figure, degrees.
+fn grid_axes() -> (Vec<f64>, Vec<f64>) {
+    ((0..=24).map(|i| 5.0 * f64::from(i)).collect(), (0..=18).map(|i| 5.0 * f64::from(i)).collect())
+}
+
+/// Effective foot masses of the exit-speed figure: 0.2 to 20 kg, log-spaced.
+fn mass_axis() -> Vec<f64> {
+    (0..=60).map(|i| 0.2 * 100f64.powf(f64::from(i) / 60.0)).collect()
+}
+
+/// The leg's figures, drawn from the two result files (not re-computed):
+/// effective mass against knee flexion for several ankle angles (locked and
+/// free ankle), and the 1D exit speed against effective mass (Section 14.1).
+fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<std::path::PathBuf>, String> {
+    use crate::figures::{color, save_grid, Panel, Series};
+    use crate::SweepData;
+    use plotters::prelude::{RGBColor, SeriesLabelPosition};
+    let grid = SweepData::read(&results.join("leg_effective_mass.h5")).map_err(|e| e.to_string())?;
+    let knee = grid.parameter("knee").map_err(|e| e.to_string())?;
+    let ankle = grid.parameter("ankle").map_err(|e| e.to_string())?;
+    let mut panels = Vec::new();
+    for (set, title) in [("locked-ankle", "Locked ankle"), ("free-ankle", "Free ankle")] {
+        let mass = grid.set(set).map_err(|e| e.to_string())?.column("effective_mass").ok_or("no effective_mass column")?;
+        let series = [0.0, 30.0, 60.0, 90.0]
+            .iter()
+            .enumerate()
+            .map(|(i, &a)| {
+                let (x, y): (Vec<f64>, Vec<f64>) =
+                    knee.iter().zip(ankle).zip(mass).filter(|((_, &an), _)| an == a).map(|((&k, _), &m)| (k, m)).unzip();
+                Series::line(&format!("ankle {a:.0}°"), color(i), &x, &y)
+            })
+            .collect();
+        panels.push(Panel {
+            title: format!("{title}: effective mass at the instep (Eq. 11)"),
+            x_label: "knee flexion (deg)".into(),
+            y_label: "effective foot mass m_eff (kg)".into(),
+            log_x: false,
+            series,
+            y_from_zero: true,
+            legend: SeriesLabelPosition::UpperRight,
+        });
+    }
+    let mut written = save_grid(out, "leg_effective_mass", "Articulated leg (de Leva 1996 segments)", (1, 2), &panels)
+        .map_err(|e| e.to_string())?;
+    let speeds = SweepData::read(&results.join("leg_exit_speed.h5")).map_err(|e| e.to_string())?;
+    let foot_mass = speeds.parameter("foot_mass").map_err(|e| e.to_string())?;
+    let set = speeds.set("accurate").map_err(|e| e.to_string())?;
+    let v = set.column("v_ball_out").ok_or("no v_ball_out column")?;
+    let bound = set.column("elastic_bound_v_ball_out").ok_or("no elastic bound column")?;
+    let panel = Panel {
+        title: "Exit speed against effective foot mass (baseline contact)".into(),
+        x_label: "effective foot mass m_f (kg, log scale)".into(),
+        y_label: "ball exit speed v_b+ (m/s)".into(),
+        log_x: true,
+        series: vec![
+            Series::line("1D model (accurate)", color(0), foot_mass, v),
+            Series::line("perfectly elastic bound (Eq. 38, e = 1)", RGBColor(0, 0, 0), foot_mass, bound).dashed(),
+        ],
+        y_from_zero: true,
+        legend: SeriesLabelPosition::LowerRight,
+    };
+    written.extend(save_grid(out, "leg_exit_speed", "Diminishing returns of effective mass", (1, 1), &[panel]).map_err(|e| e.to_string())?);
+    Ok(written)
+}
+
+/// Figure data through kick-runner's sweep writer: parameters and outcome
+/// columns with units, provenance at the root.
+fn write_sweeps(
+    dir: &std::path::Path,
+    leg: &Leg,
+    pose: &Pose,
+    impact: &Impact,
+    base: &Scenario,
+    command: &str,
+) -> Result<Vec<std::path::PathBuf>, String> {
+    use crate::{Column, OutcomeSet, Provenance, Setting, SweepWriter};
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let text = command.to_string();
+    let set = |name: &str, columns: Vec<Column>| OutcomeSet {
+        solver: name.into(),
+        settings: vec![
+            ("effective_mass".into(), Setting::Text("Eq. 11, de Leva (1996) segments".into())),
+            ("exit_solver".into(), Setting::Text("accurate".into())),
+        ],
+        columns,
+    };
+    let m_and_v = || vec![Column::new("effective_mass", "kg"), Column::new("v_ball_out", "m/s")];
+    let mut written = Vec::new();
+
+    let path = dir.join("leg_effective_mass.h5");
+    let (knees, ankles) = grid_axes();
+    let provenance = Provenance::now("leg_effective_mass", "kick leg (command line)", &text);
+    let mut writer = SweepWriter::create(
+        &path,
+        &provenance,
+        &[Column::new("knee", "deg"), Column::new("ankle", "deg")],
+        &[set("locked-ankle", m_and_v()), set("free-ankle", m_and_v())],
+        (knees.len() * ankles.len()) as u64,
+    )
+    .map_err(|e| e.to_string())?;
+    for &knee in &knees {
+        for &ankle in &ankles {
+            writer.push_parameters(&[knee, ankle]).map_err(|e| e.to_string())?;
+            let p = Pose { knee_flexion: knee, plantarflexion: ankle, ..*pose };
+            for (i, joint) in [AnkleJoint::Locked, AnkleJoint::Free].into_iter().enumerate() {
+                let row = leg
+                    .effective_mass(&p, impact, joint)
+                    .and_then(|m| Ok([m.effective_mass, exit_outcome(m.effective_mass, base)?.v_ball_out]));
+                match row {
+                    Ok(values) => writer.push_outcome(i, Ok(&values)),
+                    Err(e) => writer.push_outcome(i, Err(&e.to_string())),
+                }
+                .map_err(|e| e.to_string())?;
+            }
+        }
+    }
+    written.push(writer.finish().map_err(|e| e.to_string())?);
+
+    let path = dir.join("leg_exit_speed.h5");
+    let masses = mass_axis();
+    let provenance = Provenance::now("leg_exit_speed", "kick leg (command line)", &text);
+    let columns = vec![
+        Column::new("v_ball_out", "m/s"),
+        Column::new("speed_ratio", "1"),
+        // Eq. 38 with e = 1: the perfectly elastic bound.
+        Column::new("elastic_bound_v_ball_out", "m/s"),
+    ];
+    let mut writer = SweepWriter::create(&path, &provenance, &[Column::new("foot_mass", "kg")], &[set("accurate", columns)], masses.len() as u64)
+        .map_err(|e| e.to_string())?;
+    for m in masses {
+        writer.push_parameters(&[m]).map_err(|e| e.to_string())?;
+        let bound = kick_restitution::speed_ratio_ball_at_rest(1.0, m, base.ball_mass()) * base.foot_speed();
+        match exit_outcome(m, base) {
+            Ok(o) => writer.push_outcome(0, Ok(&[o.v_ball_out, o.speed_ratio, bound])),
+            Err(e) => writer.push_outcome(0, Err(&e.to_string())),
+        }
+        .map_err(|e| e.to_string())?;
+    }
+    written.push(writer.finish().map_err(|e| e.to_string())?);
+    Ok(written)
+}

@@ -1,0 +1,106 @@
+//! `kick table2`: Table 2 side by side, the paper's printed values, seed-rk4
+//! and accurate, from a Table 2 scenario file.
+
+use crate::printable::Printable;
+use kick_compliant::table2::{columns, printed_columns, Table2File};
+use kick_compliant::{Accurate, SeedRk4};
+use kick_core::paper::{TABLE2, TABLE2_DECIMALS};
+use kick_core::Solver;
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::Path;
+
+const COLUMNS: [&str; 5] = ["v_ball_out_m_s", "speed_ratio", "peak_force_N", "contact_time_ms", "max_compression_mm"];
+
+#[derive(Debug, Clone, Serialize)]
+pub struct Cell {
+    pub paper: f64,
+    pub seed_rk4: f64,
+    pub accurate: f64,
+    /// (seed − paper)/paper
+    pub seed_vs_paper: f64,
+    /// (accurate − seed)/seed
+    pub accurate_vs_seed: f64,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct Row {
+    pub name: String,
+    pub parameter: Option<String>,
+    pub value: Option<f64>,
+    pub columns: std::collections::BTreeMap<&'static str, Cell>,
+    pub seed_matches_printed: bool,
+}
+
+/// Every row of Table 2 (JSON: the list of rows).
+#[derive(Debug, Clone, Serialize)]
+#[serde(transparent)]
+pub struct Table2Comparison {
+    pub rows: Vec<Row>,
+}
+
+impl Table2Comparison {
+    /// True when seed-rk4 reproduces every printed digit.
+    pub fn all_match(&self) -> bool {
+        self.rows.iter().all(|r| r.seed_matches_printed)
+    }
+}
+
+/// Read a Table 2 scenario file (`kick fit table2 --write`).
+pub fn load(path: &Path) -> Result<Table2File, String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    Table2File::parse(&text).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Table 2 from the scenario file `scenarios`: printed, seed-rk4 and accurate.
+pub fn compare(scenarios: &Path) -> Result<Table2Comparison, String> {
+    let file = load(scenarios)?;
+    let scenarios = file.scenarios().map_err(|e| e.to_string())?;
+    let seed = SeedRk4::new(file.dt).map_err(|e| e.to_string())?;
+    let accurate = Accurate::default();
+    let mut rows = Vec::new();
+    for ((name, scenario), (printed, spec)) in scenarios.iter().zip(TABLE2.iter().zip(&file.row)) {
+        let s = seed.solve(scenario).map_err(|e| format!("{name}: {e}"))?;
+        let a = accurate.solve(scenario).map_err(|e| format!("{name}: {e}"))?;
+        let mut cells = std::collections::BTreeMap::new();
+        for (i, column) in COLUMNS.iter().enumerate() {
+            let (p, sv, av) = (printed_columns(printed)[i], columns(&s)[i], columns(&a)[i]);
+            cells.insert(
+                *column,
+                Cell { paper: p, seed_rk4: sv, accurate: av, seed_vs_paper: (sv - p) / p, accurate_vs_seed: (av - sv) / sv },
+            );
+        }
+        rows.push(Row {
+            name: name.clone(),
+            parameter: spec.parameter.map(|p| p.name().to_string()),
+            value: spec.value,
+            seed_matches_printed: kick_compliant::table2::matches_printed(&s, printed),
+            columns: cells,
+        });
+    }
+    Ok(Table2Comparison { rows })
+}
+
+impl Printable for Table2Comparison {
+    fn text(&self) -> String {
+        let mut w = String::new();
+        for row in &self.rows {
+            let changed = match (&row.parameter, row.value) {
+                (Some(p), Some(v)) => format!("{p} = {v}"),
+                _ => "baseline".into(),
+            };
+            let _ = writeln!(w, "{} ({changed}); seed-rk4 prints as the paper: {}", row.name, if row.seed_matches_printed { "yes" } else { "NO" });
+            let _ = writeln!(w, "  {:<20} {:>10} {:>12} {:>16} {:>11} {:>11}", "column", "paper", "seed-rk4", "accurate", "seed/paper-1", "acc/seed-1");
+            for (column, decimals) in COLUMNS.iter().zip(TABLE2_DECIMALS) {
+                let c = &row.columns[column];
+                let _ = writeln!(
+                    w,
+                    "  {:<20} {:>10.*} {:>12.*} {:>16.10} {:>+11.2e} {:>+11.2e}",
+                    column, decimals as usize, c.paper, decimals as usize + 2, c.seed_rk4, c.accurate, c.seed_vs_paper, c.accurate_vs_seed
+                );
+            }
+        }
+        w
+    }
+}

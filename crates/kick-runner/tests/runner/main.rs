@@ -1,0 +1,5 @@
+//! kick-runner's tests, one binary: experiment files in, result files out, read back.
+
+mod law;
+mod result_file;
+mod runner;
