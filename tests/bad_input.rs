@@ -114,3 +114,50 @@ fn bad_solver_settings_are_named() {
     assert!(Accurate::new(0.0, 1e-12).is_err());
     assert!(Accurate::new(1e-10, f64::NAN).is_err());
 }
+
+/// Significant digits of the longest number in `text` (mantissas only: the
+/// digits before an exponent, leading zeros not counted).
+fn longest_number(text: &str) -> usize {
+    let mut longest = 0;
+    let mut digits = 0;
+    let mut leading = true;
+    let mut in_exponent = false;
+    let mut previous = ' ';
+    for c in text.chars() {
+        if c.is_ascii_digit() && !in_exponent {
+            if c != '0' || !leading {
+                leading = false;
+                digits += 1;
+            }
+        } else if c == '.' && previous.is_ascii_digit() {
+        } else if c == 'e' && previous.is_ascii_digit() {
+            in_exponent = true;
+        } else if in_exponent && (c.is_ascii_digit() || c == '-') {
+        } else {
+            longest = longest.max(digits);
+            (digits, leading, in_exponent) = (0, true, false);
+        }
+        previous = c;
+    }
+    longest.max(digits)
+}
+
+/// Numbers in messages are in one short form (kick_core::short): 1e308 is
+/// not 309 digits, a computed step not 16 (issue 13).
+#[test]
+fn numbers_in_messages_are_short() {
+    assert_eq!(longest_number("dt = 1.047530233023196e-7 s, 0.00056, 717.433796 s, 1e308"), 16);
+    assert_eq!(longest_number("dt = 1.0475e-7 s at 0.0056108 s"), 5);
+    let error = spec_with(Parameter::FootMass, -1e308).build().unwrap_err();
+    assert!(error.to_string().contains("`foot_mass` = -1e308:"), "{error}");
+    let too_large = SeedRk4::default().solve(&Scenario::baseline().with(Parameter::Damping, 1e7).unwrap()).unwrap_err();
+    let too_inaccurate = SolverChoice::from_name("rk4-events", 5e-6)
+        .unwrap()
+        .solve(&Scenario::baseline().with(Parameter::Stiffness, 1e12).unwrap())
+        .unwrap_err();
+    let horizon = SeedRk4::new(5e-5).unwrap().solve(&Scenario::baseline().with(Parameter::DriveForce, 5e4).unwrap()).unwrap_err();
+    for error in [error, too_large, too_inaccurate, horizon, SeedRk4::new(1e-13).unwrap().solve(&Scenario::baseline()).unwrap_err()] {
+        let text = error.to_string();
+        assert!(longest_number(&text) <= kick_core::number::SHORT_DIGITS, "{text}");
+    }
+}

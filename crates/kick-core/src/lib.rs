@@ -9,6 +9,7 @@ pub mod check;
 pub mod law;
 pub mod laws;
 pub mod models;
+pub mod number;
 pub mod outcome;
 pub mod paper;
 pub mod roots;
@@ -16,6 +17,7 @@ pub mod scenario;
 pub mod special;
 
 pub use error::{KickError, Status};
+pub use number::short;
 use std::ops::ControlFlow;
 pub use law::{ContactLaw, PowerLawContact};
 pub use laws::{AnyLaw, LawKind};

@@ -43,7 +43,7 @@ pub enum IdentifyError {
     DuplicateParameter(&'static str),
     #[error("unknown parameter `{name}`: expected one of {expected}")]
     UnknownParameter { name: String, expected: String },
-    #[error("parameter `{name}` starts at {value}: it must be {requirement}")]
+    #[error("parameter `{name}` starts at {}: it must be {requirement}", kick_core::short(*.value))]
     StartOutOfRange { name: &'static str, value: f64, requirement: &'static str },
     #[error("parameter `{parameter}` does not apply {context}: {reason}")]
     NotApplicable { parameter: &'static str, context: String, reason: &'static str },
