@@ -148,7 +148,7 @@ pub fn run(args: Args) -> CliResult {
         let depth = report.parent().map_or(0, |p| p.components().count());
         let figure = format!("{}{}/figures/work_precision.png", "../".repeat(depth), args.out.display());
         let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples };
-        std::fs::write(report, measured.markdown(&figure, &text)).map_err(|e| format!("cannot write {}: {e}", report.display()))?;
+        kick_runner::output::write(report, measured.markdown(&figure, &text)).map_err(|e| e.to_string())?;
         println!("-> {}", report.display());
     }
     Ok(())

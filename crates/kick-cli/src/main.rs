@@ -64,6 +64,9 @@ pub(crate) fn dispatch(argv: &[String]) -> Result<(), String> {
 
 fn main() -> ExitCode {
     kick_runner::h5::disable_file_locking();
+    if let Err(e) = kick_runner::output::install_signal_cleanup() {
+        eprintln!("warning: {e}; an interrupted run may leave a temporary file");
+    }
     let cli = Cli::parse();
     match execute(cli.command) {
         Ok(()) => ExitCode::SUCCESS,

@@ -134,14 +134,14 @@ pub fn run(args: Args) -> CliResult {
          elastic bound of Eq. 38: gains flatten once m_f is several ball masses (Section 14.1).\n\n\
          ![exit speed]({figures_from_report}/leg_exit_speed.png)\n"
     );
-    std::fs::write(report_dir.join("leg.md"), leg).map_err(|e| format!("cannot write leg.md: {e}"))?;
+    kick_runner::output::write(report_dir.join("leg.md"), leg).map_err(|e| e.to_string())?;
     // Contact laws and identification: from results/identification/*.h5.
     let identification_from_report = relative(&report_dir, &fits);
     let laws = crate::identify_report::laws(&fits.join(LAWS), &identification_from_report)?;
-    std::fs::write(report_dir.join("laws.md"), laws).map_err(|e| format!("cannot write laws.md: {e}"))?;
+    kick_runner::output::write(report_dir.join("laws.md"), laws).map_err(|e| e.to_string())?;
     let identification = crate::identify_report::identification(&fits, &identification_from_report)?;
-    std::fs::write(report_dir.join("identification.md"), identification)
-        .map_err(|e| format!("cannot write identification.md: {e}"))?;
+    kick_runner::output::write(report_dir.join("identification.md"), identification)
+        .map_err(|e| e.to_string())?;
     // Point the report at the sections written beside it.
     let mut text = std::fs::read_to_string(&args.report).map_err(|e| format!("cannot read {}: {e}", args.report.display()))?;
     let sections = [
@@ -160,7 +160,7 @@ pub fn run(args: Args) -> CliResult {
         text.push_str("\n## Further sections\n\n");
         text.push_str(&present.join("\n"));
         text.push('\n');
-        std::fs::write(&args.report, text).map_err(|e| format!("cannot write {}: {e}", args.report.display()))?;
+        kick_runner::output::write(&args.report, text).map_err(|e| e.to_string())?;
     }
     if failed > 0 {
         return Err(format!("{failed} cross-model check(s) failed; see {}", args.report.display()));

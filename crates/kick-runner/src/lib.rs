@@ -2,6 +2,7 @@
 //! written to HDF5, figures drawn from those files, and the reproduction report.
 //!
 //! - [`experiment`]: `experiments/*.toml` parsed and validated (errors name file, line and key).
+//! - [`output`]: whole-or-nothing files: temporary name, one writer per file, cleanup on signals.
 //! - [`h5`]: the model-independent HDF5 writer/reader (parameter and outcome columns with units, provenance).
 //! - [`run`]: the 1D model's runner over [`h5`] (rayon, chunked streaming).
 //! - [`figures`]: Figures 1–7 from the result files (plotters, bundled DejaVu Sans).
@@ -10,6 +11,7 @@
 pub mod experiment;
 pub mod figures;
 pub mod h5;
+pub mod output;
 pub mod provenance;
 pub mod report;
 pub mod run;

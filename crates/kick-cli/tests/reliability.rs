@@ -1,0 +1,132 @@
+//! Faults around result files (issue 13): two writers of one file, a run
+//! stopped by SIGINT, SIGTERM or SIGKILL. The result file is always one whole
+//! run and no temporary or lock file is left behind.
+
+use kick_runner::SweepData;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+fn kick() -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_kick"));
+    command.current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
+    command
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("kick-reliability-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    v.sort();
+    v
+}
+
+/// `kick sweep` of `samples` scenarios on one thread into `out`.
+fn sweep(samples: u64, out: &Path) -> Command {
+    let mut command = kick();
+    command.args(["sweep", "--samples", &samples.to_string(), "--threads", "1", "--out", out.to_str().unwrap()]);
+    command
+}
+
+fn start(mut command: Command) -> Child {
+    command.stdout(Stdio::null()).stderr(Stdio::piped()).spawn().expect("kick starts")
+}
+
+/// Wait until a file whose name contains `part` appears in `dir`.
+fn wait_for(dir: &Path, part: &str) {
+    let started = Instant::now();
+    while !names(dir).iter().any(|n| n.contains(part)) {
+        assert!(started.elapsed() < Duration::from_secs(60), "no `{part}` in {dir:?}: {:?}", names(dir));
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+fn signal(child: &Child, signal: i32) {
+    let pid = i32::try_from(child.id()).unwrap();
+    // SAFETY: kill(2) on our own child's pid has no memory effects.
+    assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
+}
+
+#[test]
+fn a_second_writer_of_the_same_file_is_refused_and_the_first_completes() {
+    let dir = scratch("two");
+    let out = dir.join("s.h5");
+    let rows = 100_000;
+    let first = start(sweep(rows, &out));
+    wait_for(&dir, "tmp");
+    let second = sweep(rows, &out).output().unwrap();
+    let first = first.wait_with_output().unwrap();
+    assert!(first.status.success(), "{}", String::from_utf8_lossy(&first.stderr));
+    assert!(!second.status.success(), "a second writer of {out:?} must be refused");
+    let message = String::from_utf8_lossy(&second.stderr);
+    assert!(message.contains(out.to_str().unwrap()) && message.contains("another process"), "{message}");
+    // One whole run: every row there and readable.
+    let data = SweepData::read(&out).unwrap();
+    assert_eq!(data.rows() as u64, rows);
+    assert_eq!(data.sets[0].status.len() as u64, rows);
+    assert_eq!(names(&dir), ["s.h5"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn writers_started_together_leave_one_whole_file() {
+    let dir = scratch("together");
+    let out = dir.join("s.h5");
+    let rows = 50_000;
+    let children: Vec<Child> = (0..2).map(|_| start(sweep(rows, &out))).collect();
+    let outputs: Vec<_> = children.into_iter().map(|c| c.wait_with_output().unwrap()).collect();
+    assert!(outputs.iter().any(|o| o.status.success()));
+    for o in outputs.iter().filter(|o| !o.status.success()) {
+        let message = String::from_utf8_lossy(&o.stderr);
+        assert!(message.contains("another process"), "{message}");
+    }
+    assert_eq!(SweepData::read(&out).unwrap().rows() as u64, rows);
+    assert_eq!(names(&dir), ["s.h5"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A long run into a file that exists, stopped by `sig` once it is writing.
+fn interrupt(name: &str, sig: i32) -> (PathBuf, std::process::ExitStatus, Vec<u8>) {
+    let dir = scratch(name);
+    let out = dir.join("s.h5");
+    assert!(sweep(20, &out).output().unwrap().status.success());
+    let before = std::fs::read(&out).unwrap();
+    let child = start(sweep(100_000_000, &out));
+    wait_for(&dir, "tmp");
+    std::thread::sleep(Duration::from_millis(200));
+    signal(&child, sig);
+    let status = child.wait_with_output().unwrap().status;
+    assert_eq!(std::fs::read(&out).unwrap(), before, "the existing result file changed");
+    (dir, status, before)
+}
+
+#[test]
+fn sigint_and_sigterm_remove_the_temporary_file_and_keep_the_old_result() {
+    for (sig, code) in [(libc::SIGINT, 130), (libc::SIGTERM, 143)] {
+        let (dir, status, _) = interrupt(&format!("signal{sig}"), sig);
+        assert_eq!(status.code(), Some(code), "signal {sig}: {status:?}");
+        assert_eq!(names(&dir), ["s.h5"], "signal {sig}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
+#[test]
+fn sigkill_keeps_the_old_result_and_the_next_run_clears_what_it_left() {
+    use std::os::unix::process::ExitStatusExt;
+    let (dir, status, before) = interrupt("kill", libc::SIGKILL);
+    assert_eq!(status.signal(), Some(libc::SIGKILL));
+    assert!(SweepData::read(&dir.join("s.h5")).is_ok());
+    // Its temporary and lock files stay (nothing runs after SIGKILL); the
+    // next writer of the file takes the lock over and removes them.
+    let out = dir.join("s.h5");
+    assert!(sweep(30, &out).output().unwrap().status.success());
+    assert_ne!(std::fs::read(&out).unwrap(), before);
+    assert_eq!(SweepData::read(&out).unwrap().rows(), 30);
+    assert_eq!(names(&dir), ["s.h5"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
