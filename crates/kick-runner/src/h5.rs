@@ -429,6 +429,47 @@ impl SweepWriter {
         Ok(())
     }
 
+    /// Append samples to the history of `row` in set `set`, one slice per
+    /// column (equal lengths), creating `[solvers/<solver>/]histories/<row>`
+    /// with extendable datasets on the first call: a history of any length
+    /// is streamed in blocks. (A history known whole is [`Self::write_history`].)
+    pub fn append_history(&mut self, set: usize, row: usize, columns: &[(Column, &[f64])]) -> Result<(), H5Error> {
+        let path = self.path.clone();
+        let writer = self.sets.get(set).ok_or_else(|| layout(&path, format!("no outcome set {set}")))?;
+        let name = format!("histories/{row:06}");
+        let new = !writer.group.link_exists("histories") || !writer.group.group("histories").is_ok_and(|g| g.link_exists(&format!("{row:06}")));
+        let group = group_at(&writer.group, &name, &path)?;
+        if new {
+            write_u64_attr(&group, &path, "row", row as u64)?;
+        }
+        for (column, values) in columns {
+            let dataset = if new {
+                extendable::<f64>(&group, &column.name, &column.unit, CHUNK_ROWS, &path)?
+            } else {
+                group.dataset(&column.name).map_err(h5err(&path))?
+            };
+            let start = dataset.size();
+            let end = start + values.len();
+            dataset.resize(end).map_err(h5err(&path))?;
+            dataset.write_slice(values, start..end).map_err(h5err(&path))?;
+        }
+        Ok(())
+    }
+
+    /// Remove the history of `row` in set `set`, if any (a solve that failed
+    /// after part of its history was streamed).
+    pub fn remove_history(&mut self, set: usize, row: usize) -> Result<(), H5Error> {
+        let path = self.path.clone();
+        let writer = self.sets.get(set).ok_or_else(|| layout(&path, format!("no outcome set {set}")))?;
+        if let Ok(histories) = writer.group.group("histories") {
+            let name = format!("{row:06}");
+            if histories.link_exists(&name) {
+                histories.unlink(&name).map_err(h5err(&path))?;
+            }
+        }
+        Ok(())
+    }
+
     /// Flush the last rows, record the row count, close and rename the file.
     pub fn finish(mut self) -> Result<PathBuf, H5Error> {
         self.flush()?;
