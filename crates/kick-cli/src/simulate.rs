@@ -2,6 +2,7 @@ use crate::output::{json, CliResult, Format};
 use kick_compliant::SolverChoice;
 use kick_core::{LawKind, Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, OBSERVABLES};
 use serde_json::{Map, Value};
+use std::io::Write;
 
 /// The contact law as flags (`--law`, `--restitution`), shared by every
 /// command that builds scenarios.
@@ -118,11 +119,25 @@ pub fn run(args: Args) -> CliResult {
     };
     match args.format {
         Format::Json => {
-            let mut object = outcome_json(&scenario, solver.name(), &outcome);
-            if let Some(h) = &history {
-                object.insert("history".into(), serde_json::to_value(&h.samples).map_err(|e| e.to_string())?);
+            let object = outcome_json(&scenario, solver.name(), &outcome);
+            match &history {
+                None => println!("{}", json(&object)?),
+                // Samples serialised as written: no JSON tree of the history (~2.5 kB a sample).
+                Some(h) => {
+                    #[derive(serde::Serialize)]
+                    struct WithHistory<'a> {
+                        #[serde(flatten)]
+                        outcome: &'a Map<String, Value>,
+                        history: &'a [kick_core::Sample],
+                    }
+                    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+                    serde_json::to_writer_pretty(&mut out, &WithHistory { outcome: &object, history: &h.samples })
+                        .map_err(std::io::Error::from)
+                        .and_then(|()| writeln!(out))
+                        .and_then(|()| out.flush())
+                        .map_err(|e| format!("cannot write JSON: {e}"))?;
+                }
             }
-            println!("{}", json(&object)?);
         }
         Format::Text => {
             println!("solver: {} (path: {})", solver.name(), outcome.method);

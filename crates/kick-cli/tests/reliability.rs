@@ -130,3 +130,24 @@ fn sigkill_keeps_the_old_result_and_the_next_run_clears_what_it_left() {
     assert_eq!(names(&dir), ["s.h5"]);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Largest resident set of any child of this test process so far, bytes.
+fn children_peak_rss() -> u64 {
+    // SAFETY: getrusage fills the zeroed struct it is given.
+    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+    assert_eq!(unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut usage) }, 0);
+    u64::try_from(usage.ru_maxrss).unwrap() * 1024
+}
+
+/// `kick simulate --history 2e-8 --format json`: 2.6e5 samples, ~100 MB of
+/// JSON, written as serialised (it took 791 MB as a JSON tree). The other
+/// tests' children stay far below the bound.
+#[test]
+fn a_fine_json_history_is_written_without_a_tree_in_memory() {
+    let out = kick().args(["simulate", "--history", "2e-8", "--format", "json"]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.len() > 50_000_000 && text.contains("\"history\": ["), "{} bytes", text.len());
+    let peak = children_peak_rss();
+    assert!(peak < 250_000_000, "peak resident set of kick: {peak} bytes");
+}
