@@ -15,18 +15,9 @@ pub struct Args {
     threads: Option<usize>,
 }
 
-/// Use `threads` rayon workers for the rest of the process (if given).
+/// Use `threads` rayon workers for the rest of the process (if given), within the machine's bound.
 pub fn set_threads(threads: Option<usize>) -> CliResult {
-    if let Some(n) = threads {
-        if n == 0 {
-            return Err("--threads must be at least 1".into());
-        }
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build_global()
-            .map_err(|e| format!("cannot start {n} threads: {e}"))?;
-    }
-    Ok(())
+    kick_runner::limits::use_threads(threads, "--threads").map_err(|e| e.to_string())
 }
 
 /// Load, run and report one experiment file; returns the result file's path.

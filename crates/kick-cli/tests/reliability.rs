@@ -33,8 +33,30 @@ fn sweep(samples: u64, out: &Path) -> Command {
     command
 }
 
-fn start(mut command: Command) -> Child {
-    command.stdout(Stdio::null()).stderr(Stdio::piped()).spawn().expect("kick starts")
+/// A running kick, killed if the test fails before it ends (a sweep left
+/// running would fill the disk).
+struct Running(Option<Child>);
+
+impl Running {
+    fn id(&self) -> u32 {
+        self.0.as_ref().unwrap().id()
+    }
+    fn finish(mut self) -> std::process::Output {
+        self.0.take().unwrap().wait_with_output().unwrap()
+    }
+}
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        if let Some(child) = &mut self.0 {
+            let _ = child.kill();
+            let _ = child.wait();
+        }
+    }
+}
+
+fn start(mut command: Command) -> Running {
+    Running(Some(command.stdout(Stdio::null()).stderr(Stdio::piped()).spawn().expect("kick starts")))
 }
 
 /// Wait until a file whose name contains `part` appears in `dir`.
@@ -46,7 +68,7 @@ fn wait_for(dir: &Path, part: &str) {
     }
 }
 
-fn signal(child: &Child, signal: i32) {
+fn signal(child: &Running, signal: i32) {
     let pid = i32::try_from(child.id()).unwrap();
     // SAFETY: kill(2) on our own child's pid has no memory effects.
     assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
@@ -60,7 +82,7 @@ fn a_second_writer_of_the_same_file_is_refused_and_the_first_completes() {
     let first = start(sweep(rows, &out));
     wait_for(&dir, "tmp");
     let second = sweep(rows, &out).output().unwrap();
-    let first = first.wait_with_output().unwrap();
+    let first = first.finish();
     assert!(first.status.success(), "{}", String::from_utf8_lossy(&first.stderr));
     assert!(!second.status.success(), "a second writer of {out:?} must be refused");
     let message = String::from_utf8_lossy(&second.stderr);
@@ -78,8 +100,8 @@ fn writers_started_together_leave_one_whole_file() {
     let dir = scratch("together");
     let out = dir.join("s.h5");
     let rows = 50_000;
-    let children: Vec<Child> = (0..2).map(|_| start(sweep(rows, &out))).collect();
-    let outputs: Vec<_> = children.into_iter().map(|c| c.wait_with_output().unwrap()).collect();
+    let children: Vec<Running> = (0..2).map(|_| start(sweep(rows, &out))).collect();
+    let outputs: Vec<_> = children.into_iter().map(Running::finish).collect();
     assert!(outputs.iter().any(|o| o.status.success()));
     for o in outputs.iter().filter(|o| !o.status.success()) {
         let message = String::from_utf8_lossy(&o.stderr);
@@ -96,11 +118,12 @@ fn interrupt(name: &str, sig: i32) -> (PathBuf, std::process::ExitStatus, Vec<u8
     let out = dir.join("s.h5");
     assert!(sweep(20, &out).output().unwrap().status.success());
     let before = std::fs::read(&out).unwrap();
-    let child = start(sweep(100_000_000, &out));
+    // 2e6 rows (370 MB), stopped within a second of starting.
+    let child = start(sweep(2_000_000, &out));
     wait_for(&dir, "tmp");
     std::thread::sleep(Duration::from_millis(200));
     signal(&child, sig);
-    let status = child.wait_with_output().unwrap().status;
+    let status = child.finish().status;
     assert_eq!(std::fs::read(&out).unwrap(), before, "the existing result file changed");
     (dir, status, before)
 }
@@ -150,4 +173,51 @@ fn a_fine_json_history_is_written_without_a_tree_in_memory() {
     assert!(text.len() > 50_000_000 && text.contains("\"history\": ["), "{} bytes", text.len());
     let peak = children_peak_rss();
     assert!(peak < 250_000_000, "peak resident set of kick: {peak} bytes");
+}
+
+/// A sweep beyond the row bound and a thread count beyond the machine's
+/// are refused at once, naming the setting (both used to start).
+#[test]
+fn oversized_sweeps_and_thread_counts_are_refused_before_starting() {
+    let dir = scratch("caps");
+    let out = dir.join("s.h5");
+    for (args, named) in [
+        (vec!["--samples", "1000000000000"], "samples = 1000000000000"),
+        (vec!["--samples", "10", "--threads", "5000"], "`--threads` = 5000"),
+        (vec!["--samples", "10", "--threads", "20000"], "`--threads` = 20000"),
+    ] {
+        let mut command = kick();
+        command.args(["sweep", "--out", out.to_str().unwrap()]).args(&args);
+        // A run that started is stopped by the guard: the test must not run it to its end.
+        let mut child = start(command);
+        let started = Instant::now();
+        while child.0.as_mut().unwrap().try_wait().unwrap().is_none() {
+            assert!(started.elapsed() < Duration::from_secs(20), "{args:?} still running after 20 s");
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        let output = child.finish();
+        let message = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(1), "{args:?} must be refused: {message}");
+        assert!(message.contains(named), "{message}");
+    }
+    assert!(names(&dir).is_empty(), "{:?}", names(&dir));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A large run states its rows and estimated bytes on stderr before it starts.
+#[test]
+fn a_large_run_states_its_size_first() {
+    use std::io::BufRead;
+    let dir = scratch("large");
+    let out = dir.join("s.h5");
+    let mut child = start(sweep(1_000_000, &out));
+    let mut line = String::new();
+    let stderr = child.0.as_mut().unwrap().stderr.take().unwrap();
+    std::io::BufReader::new(stderr).read_line(&mut line).unwrap();
+    signal(&child, libc::SIGTERM);
+    assert_eq!(child.finish().status.code(), Some(143));
+    // 185 bytes a row: 8 parameters, 15 outcomes, a status byte.
+    assert!(line.contains("1000000 rows, about 185 MB") && line.contains("s.h5"), "{line}");
+    assert!(names(&dir).is_empty(), "{:?}", names(&dir));
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -3,6 +3,7 @@
 //!
 //! - [`experiment`]: `experiments/*.toml` parsed and validated (errors name file, line and key).
 //! - [`output`]: whole-or-nothing files: temporary name, one writer per file, cleanup on signals.
+//! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 //! - [`h5`]: the model-independent HDF5 writer/reader (parameter and outcome columns with units, provenance).
 //! - [`run`]: the 1D model's runner over [`h5`] (rayon, chunked streaming).
 //! - [`figures`]: Figures 1–7 from the result files (plotters, bundled DejaVu Sans).
@@ -11,6 +12,7 @@
 pub mod experiment;
 pub mod figures;
 pub mod h5;
+pub mod limits;
 pub mod output;
 pub mod provenance;
 pub mod report;

@@ -19,10 +19,10 @@ use std::sync::Mutex;
 pub enum RunError {
     #[error(transparent)]
     H5(#[from] H5Error),
-    #[error("cannot create {path}: {message}")]
-    Io { path: PathBuf, message: String },
     #[error("the worker solving row {row} stopped without its result")]
     Worker { row: usize },
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
 }
 
 /// What a run produced.
@@ -267,6 +267,10 @@ fn receive_histories(
 
 /// Run `experiment` and write `out_dir/NAME.h5`.
 ///
+/// Refused before it starts beyond the bounds of [`crate::limits::check`]
+/// (rows, free space); with `show_progress`, a large run states its size on
+/// stderr first and draws a progress bar on a terminal.
+///
 /// Scenarios are solved in parallel (rayon's current pool, or as many
 /// threads for histories) and written in input order, so the file does not
 /// depend on the number of threads. Summary runs go chunk by chunk, a chunk
@@ -274,8 +278,11 @@ fn receive_histories(
 /// histories are streamed to the file in blocks (see `write_histories`), so
 /// memory does not grow with their length.
 pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Result<RunSummary, RunError> {
-    std::fs::create_dir_all(out_dir).map_err(|e| RunError::Io { path: out_dir.to_path_buf(), message: e.to_string() })?;
+    let size = crate::limits::check(experiment, out_dir)?;
     let path = out_dir.join(format!("{}.h5", experiment.name));
+    if show_progress && size.is_large() {
+        eprintln!("{}: {} -> {}", experiment.name, size.describe(), path.display());
+    }
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     let sets: Vec<OutcomeSet> = experiment.solvers.iter().map(outcome_set).collect();
     let mut writer = SweepWriter::create(&path, &provenance, &parameter_columns(), &sets, experiment.scenarios.len())?;
