@@ -62,6 +62,14 @@ pub enum KickError {
          longer interval or fewer samples, or stream the history"
     )]
     HistoryTooLong { needed: u64, limit: u64 },
+    /// Valid parameters whose contact leaves double precision's working
+    /// range ([`crate::scenario::SCALE_RANGE`]).
+    #[error(
+        "parameters out of range: the {quantity} is {} {unit}, outside 1e-100 .. 1e100; \
+         change {parameters}",
+        short(*.value)
+    )]
+    OutOfRange { quantity: &'static str, value: f64, unit: &'static str, parameters: &'static str },
     #[error("unknown solver `{name}`: expected one of {expected}")]
     UnknownSolver { name: String, expected: &'static str },
     #[error("solver `{solver}` does not apply to this scenario: {reason}")]
@@ -134,6 +142,7 @@ impl KickError {
             | KickError::NonFinite { .. } => Status::NumericalFailure,
             KickError::InvalidParameter { .. }
             | KickError::NoContact { .. }
+            | KickError::OutOfRange { .. }
             | KickError::HistoryTooLong { .. }
             | KickError::UnknownSolver { .. }
             | KickError::NotApplicable { .. } => Status::Refused,
