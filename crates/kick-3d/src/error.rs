@@ -1,4 +1,4 @@
-use kick_core::KickError;
+use kick_core::{short, KickError};
 use thiserror::Error;
 
 /// Every way a 3D kick computation can refuse or fail; messages name the problem.
@@ -6,11 +6,11 @@ use thiserror::Error;
 pub enum Kick3dError {
     #[error(transparent)]
     Core(#[from] KickError),
-    #[error("invalid parameter `{name}` = {value}: must be {requirement}")]
+    #[error("invalid parameter `{name}` = {}: must be {requirement}", short(*.value))]
     InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
-    #[error("offset {offset} m misses the ball: |offset| must be below the ball radius {radius} m")]
+    #[error("offset {} m misses the ball: |offset| must be below the ball radius {} m", short(*.offset), short(*.radius))]
     OffsetOutsideBall { offset: f64, radius: f64 },
-    #[error("contact geometry failed at t = {time} s: {reason}")]
+    #[error("contact geometry failed at t = {} s: {reason}", short(*.time))]
     Geometry { time: f64, reason: String },
     #[error("the {path} path cannot run this scene: {reason}")]
     UnsupportedScene { path: &'static str, reason: &'static str },

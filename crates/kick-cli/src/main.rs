@@ -333,6 +333,9 @@ struct Reproduce {
 
 fn main() -> ExitCode {
     kick_runner::h5::disable_file_locking();
+    if let Err(e) = kick_runner::output::install_signal_cleanup() {
+        eprintln!("warning: {e}; an interrupted run may leave a temporary file");
+    }
     let cli = Cli::parse();
     let mut out = Out::new();
     match execute(cli.command, &mut out) {

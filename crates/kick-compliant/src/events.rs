@@ -701,7 +701,8 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
                 return Err(KickError::NoSeparation {
                     time: horizon,
                     reason: format!(
-                        "contact outlasted the horizon of {horizon:.6e} s = {} x the undriven elastic contact time",
+                        "contact outlasted the horizon of {} s = {} x the undriven elastic contact time",
+                        kick_core::short(horizon),
                         kick_core::scenario::CONTACT_HORIZON_FACTOR
                     ),
                 });
@@ -790,9 +791,10 @@ fn check_release<L: ContactLaw>(
         return Err(KickError::Trapped {
             time: t,
             reason: format!(
-                "at maximum compression the stored energy U(δ_max) = {stored:.6e} J is below the \
-                 drive's share (μ/m_f) F_drive δ_max = {:.6e} J, so the ball turns back before release",
-                drive_share * max_compression
+                "at maximum compression the stored energy U(δ_max) = {} J is below the \
+                 drive's share (μ/m_f) F_drive δ_max = {} J, so the ball turns back before release",
+                kick_core::short(stored),
+                kick_core::short(drive_share * max_compression)
             ),
         });
     }

@@ -135,7 +135,8 @@ impl SeedRk4 {
         Err(KickError::NoSeparation {
             time: t,
             reason: format!(
-                "contact outlasted the horizon of {horizon:.6e} s = {} x the undriven elastic contact time",
+                "contact outlasted the horizon of {} s = {} x the undriven elastic contact time",
+                kick_core::short(horizon),
                 kick_core::scenario::CONTACT_HORIZON_FACTOR
             ),
         })

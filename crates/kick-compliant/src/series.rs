@@ -557,7 +557,7 @@ fn compress(s: &Scaled, tolerance: f64) -> Result<Result<ScaledCompression, f64>
         }
         let h = step.step(tolerance);
         if !(h.is_finite() && h > 0.0) {
-            return Err(KickError::Integration { time: tau, reason: format!("series step {h} at scaled time {tau}") });
+            return Err(KickError::Integration { time: tau, reason: format!("series step {} at scaled time {}", kick_core::short(h), kick_core::short(tau)) });
         }
         let segment = TaylorSegment::new(s, tau, step);
         let start = (v, segment.force_rate[0]);
@@ -630,7 +630,12 @@ impl Series {
             gamma: law.damping * length / (mu * v0),
             phi: drive_share * length / (mu * v0 * v0),
         };
-        let compression = match compress(&scaled, self.tolerance)? {
+        // compress works in scaled time; errors leave in seconds.
+        let in_seconds = |e: KickError| match e {
+            KickError::Integration { time: tau, reason } => KickError::Integration { time: tau * time, reason },
+            e => e,
+        };
+        let compression = match compress(&scaled, self.tolerance).map_err(in_seconds)? {
             Ok(c) => c,
             Err(tau) => {
                 return Err(KickError::Trapped {

@@ -132,8 +132,8 @@ pub fn check_rk4_step<L: ContactLaw>(scenario: &Scenario, law: &L, step: f64) ->
         step,
         largest_stable_step: largest,
         reason: format!(
-            "|R(hλ)| ≤ 1 for both roots λ of the law linearised at the deepest compression {:.4e} m",
-            reference_compression(scenario, law)
+            "|R(hλ)| ≤ 1 for both roots λ of the law linearised at the deepest compression {} m",
+            kick_core::short(reference_compression(scenario, law))
         ),
     })
 }

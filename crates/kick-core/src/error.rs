@@ -1,3 +1,4 @@
+use crate::number::short;
 use serde::Serialize;
 use thiserror::Error;
 
@@ -8,42 +9,51 @@ use thiserror::Error;
 /// failure ([`KickError::NoSeparation`] among others), never physics.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum KickError {
-    #[error("invalid parameter `{name}` = {value}: must be {requirement}")]
+    #[error("invalid parameter `{name}` = {}: must be {requirement}", short(*.value))]
     InvalidParameter {
         name: &'static str,
         value: f64,
         requirement: &'static str,
     },
     #[error(
-        "no contact: the foot ({foot_speed} m/s) is not faster than the ball ({ball_speed} m/s), \
-         so they never touch"
+        "no contact: the foot ({} m/s) is not faster than the ball ({} m/s), \
+         so they never touch",
+        short(*.foot_speed),
+        short(*.ball_speed)
     )]
     NoContact { foot_speed: f64, ball_speed: f64 },
     /// Proven: the ball never leaves the foot (a drive keeps it pressed).
     /// `time` is where the proof was made.
-    #[error("trapped: the ball never leaves the foot, no separation ({reason}; proven at t = {time} s)")]
+    #[error("trapped: the ball never leaves the foot, no separation ({reason}; proven at t = {} s)", short(*.time))]
     Trapped { time: f64, reason: String },
     /// Still in contact when a solver's limit ran out (its time horizon, its
     /// step budget): a numerical limit, not a proof that the ball is trapped.
     #[error(
-        "no separation found within the solver's limits ({reason}; last checked at t = {time} s); \
-         not proven trapped"
+        "no separation found within the solver's limits ({reason}; last checked at t = {} s); \
+         not proven trapped",
+        short(*.time)
     )]
     NoSeparation { time: f64, reason: String },
     /// A fixed step beyond the stability limit of its method on this contact
     /// (linearised law, checked before integrating).
     #[error(
-        "step too large: dt = {step:e} s exceeds {largest_stable_step:e} s, the largest step \
-         {method} keeps stable on this contact ({reason}); use a smaller dt or an adaptive solver"
+        "step too large: dt = {} s exceeds {} s, the largest step \
+         {method} keeps stable on this contact ({reason}); use a smaller dt or an adaptive solver",
+        short(*.step),
+        short(*.largest_stable_step)
     )]
     StepTooLarge { method: &'static str, step: f64, largest_stable_step: f64, reason: String },
     /// A fixed step whose energy budget does not close: the residual
     /// (K⁻ + W) − (K⁺ + U⁺ + D) relative to the energy through the contact
     /// exceeds the bound (checked after integrating).
     #[error(
-        "step too large: dt = {step:e} s leaves an energy residual of {relative_residual:e} of the \
-         energy through the contact (bound {bound:e}) at t = {time} s; use a smaller dt or an \
-         adaptive solver"
+        "step too large: dt = {} s leaves an energy residual of {} of the \
+         energy through the contact (bound {}) at t = {} s; use a smaller dt or an \
+         adaptive solver",
+        short(*.step),
+        short(*.relative_residual),
+        short(*.bound),
+        short(*.time)
     )]
     StepTooInaccurate { step: f64, relative_residual: f64, bound: f64, time: f64 },
     /// The collecting form of a history would hold more samples than allowed.
@@ -52,13 +62,21 @@ pub enum KickError {
          longer interval or fewer samples, or stream the history"
     )]
     HistoryTooLong { needed: u64, limit: u64 },
+    /// Valid parameters whose contact leaves double precision's working
+    /// range ([`crate::scenario::SCALE_RANGE`]).
+    #[error(
+        "parameters out of range: the {quantity} is {} {unit}, outside 1e-100 .. 1e100; \
+         change {parameters}",
+        short(*.value)
+    )]
+    OutOfRange { quantity: &'static str, value: f64, unit: &'static str, parameters: &'static str },
     #[error("unknown solver `{name}`: expected one of {expected}")]
     UnknownSolver { name: String, expected: &'static str },
     #[error("solver `{solver}` does not apply to this scenario: {reason}")]
     NotApplicable { solver: &'static str, reason: &'static str },
-    #[error("integration failed at t = {time} s: {reason}")]
+    #[error("integration failed at t = {} s: {reason}", short(*.time))]
     Integration { time: f64, reason: String },
-    #[error("non-finite {quantity} at t = {time} s")]
+    #[error("non-finite {quantity} at t = {} s", short(*.time))]
     NonFinite { quantity: &'static str, time: f64 },
 }
 
@@ -124,6 +142,7 @@ impl KickError {
             | KickError::NonFinite { .. } => Status::NumericalFailure,
             KickError::InvalidParameter { .. }
             | KickError::NoContact { .. }
+            | KickError::OutOfRange { .. }
             | KickError::HistoryTooLong { .. }
             | KickError::UnknownSolver { .. }
             | KickError::NotApplicable { .. } => Status::Refused,

@@ -10,6 +10,7 @@ pub mod law;
 pub mod laws;
 pub mod measurements;
 pub mod models;
+pub mod number;
 pub mod outcome;
 pub mod parameters;
 pub mod paper;
@@ -18,6 +19,7 @@ pub mod scenario;
 pub mod special;
 
 pub use error::{KickError, Status};
+pub use number::short;
 use std::ops::ControlFlow;
 pub use law::{ContactLaw, PowerLawContact};
 pub use laws::{AnyLaw, LawKind};

@@ -134,22 +134,14 @@ impl DefaultValue {
     /// The default as help text shows it.
     pub fn text(&self) -> String {
         match self {
-            DefaultValue::Number(x) => short(*x),
-            DefaultValue::Vector([a, b, c]) => format!("{},{},{}", short(*a), short(*b), short(*c)),
+            DefaultValue::Number(x) => crate::short(*x).to_string(),
+            DefaultValue::Vector([a, b, c]) => format!("{},{},{}", crate::short(*a), crate::short(*b), crate::short(*c)),
             DefaultValue::Off => "off".to_string(),
             DefaultValue::Derived(text) | DefaultValue::Unset(text) => (*text).to_string(),
         }
     }
 }
 
-/// A number as help text writes it: 4.2e5, not 420000.
-fn short(x: f64) -> String {
-    if x != 0.0 && !(1e-3..1e4).contains(&x.abs()) {
-        format!("{x:e}")
-    } else {
-        format!("{x}")
-    }
-}
 
 /// Spacing of a sampling range.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

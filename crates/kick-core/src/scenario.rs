@@ -9,6 +9,12 @@ use serde::{Deserialize, Serialize};
 /// See [`Scenario::contact_horizon`].
 pub const CONTACT_HORIZON_FACTOR: f64 = 1000.0;
 
+/// Range every scale of a contact (energies, compression, forces, contact
+/// time, acceleration) must lie in: products and quotients of three such
+/// stay inside double precision's normal range (2.2e-308 .. 1.8e308).
+/// Table 1's scenarios sit within 1e-6 .. 1e6 of it.
+pub const SCALE_RANGE: (f64, f64) = (1e-100, 1e100);
+
 /// The eight model parameters of a 1D scenario, in the order files and
 /// tables list them: the first eight of [`parameters::PARAMETERS`], where
 /// each is declared (name, symbol, unit, default, valid range, sampling).
@@ -232,7 +238,44 @@ impl Scenario {
                 ball_speed,
             });
         }
+        scenario.check_scales()?;
         Ok(scenario)
+    }
+
+    /// Each parameter may be valid and the contact they make still leave
+    /// double precision: 1e308 kg at 1e308 m/s has no finite energy. Every
+    /// scale of the contact must lie within [`SCALE_RANGE`], so that the
+    /// solvers' products of up to three of them (work = force x speed x
+    /// time) stay finite and normal; the error names the quantity and the
+    /// parameters it comes from.
+    fn check_scales(&self) -> Result<(), KickError> {
+        const MASSES_AND_SPEEDS: &str = "foot_mass, ball_mass, foot_speed, ball_speed";
+        const CONTACT: &str = "foot_mass, ball_mass, foot_speed, ball_speed, stiffness, exponent";
+        let law = self.paper_law();
+        let approach = self.approach_speed();
+        let compression = self.elastic_max_compression();
+        let force = law.stiffness * compression.powf(law.exponent);
+        let time = self.elastic_contact_time();
+        let acceleration = (force + law.damping * approach + self.drive_force.abs()) / self.foot_mass.min(self.ball_mass);
+        // (quantity, value, unit, from which parameters, whether it may be 0)
+        let scales = [
+            ("foot kinetic energy ½ m_f v_f²", 0.5 * self.foot_mass * self.foot_speed.powi(2), "J", "foot_mass, foot_speed", true),
+            ("ball kinetic energy ½ m_b v_b²", 0.5 * self.ball_mass * self.ball_speed.powi(2), "J", "ball_mass, ball_speed", true),
+            ("impact energy ½ μ V0²", self.relative_kinetic_energy(), "J", MASSES_AND_SPEEDS, false),
+            ("elastic maximum compression", compression, "m", CONTACT, false),
+            ("elastic peak force k δ_max^n", force, "N", CONTACT, false),
+            ("elastic contact time", time, "s", CONTACT, false),
+            ("damping force c V0", law.damping * approach, "N", "damping, foot_speed, ball_speed", true),
+            ("drive force", self.drive_force.abs(), "N", "drive_force", true),
+            ("largest acceleration (forces over the lighter mass)", acceleration, "m/s²", "every parameter", false),
+        ];
+        for (quantity, value, unit, parameters, may_be_zero) in scales {
+            let inside = (SCALE_RANGE.0..=SCALE_RANGE.1).contains(&value) || (may_be_zero && value == 0.0);
+            if !inside {
+                return Err(KickError::OutOfRange { quantity, value, unit, parameters });
+            }
+        }
+        Ok(())
     }
 
     pub fn get(&self, parameter: Parameter) -> f64 {

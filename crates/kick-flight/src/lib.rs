@@ -53,6 +53,7 @@ pub use coefficients::{DragModel, LiftModel};
 pub use solve::{history, solve, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
 pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 
+use kick_core::short;
 use thiserror::Error;
 
 /// Default relative tolerance of the integrator (see the crate docs).
@@ -68,7 +69,7 @@ pub const MAX_SAMPLES: usize = 1_000_000;
 /// Every way a flight computation can refuse or fail; messages name the parameter.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum FlightError {
-    #[error("invalid parameter `{name}` = {value}: must be {requirement}")]
+    #[error("invalid parameter `{name}` = {}: must be {requirement}", short(*.value))]
     InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
     #[error("parameter `{name}` is required")]
     Missing { name: &'static str },
@@ -78,12 +79,12 @@ pub enum FlightError {
     UnknownParameter { name: String, expected: String },
     #[error("`{first}` and `{second}` cannot both be given")]
     Conflict { first: &'static str, second: &'static str },
-    #[error("the ball has not landed within the horizon of {horizon} s (last height of its centre {height} m)")]
+    #[error("the ball has not landed within the horizon of {} s (last height of its centre {} m)", short(*.horizon), short(*.height))]
     NoLanding { horizon: f64, height: f64 },
-    #[error("integration failed at t = {time} s: {reason} (a numerical failure, not physics)")]
+    #[error("integration failed at t = {} s: {reason} (a numerical failure, not physics)", short(*.time))]
     Integration { time: f64, reason: &'static str },
-    #[error("non-finite {quantity} at t = {time} s")]
+    #[error("non-finite {quantity} at t = {} s", short(*.time))]
     NonFinite { quantity: &'static str, time: f64 },
-    #[error("`{name}` asks for {requested} samples, more than the limit {limit}")]
+    #[error("`{name}` asks for {} samples, more than the limit {limit}", short(*.requested))]
     TooManySamples { name: &'static str, requested: f64, limit: usize },
 }

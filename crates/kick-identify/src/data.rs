@@ -256,7 +256,7 @@ impl WeightedHistory {
                 Some(&s) => {
                     return Err(IdentifyError::data(
                         "history sigma",
-                        format!("`{}` = {s}: must be finite and > 0", channel.name()),
+                        format!("`{}` = {}: must be finite and > 0", channel.name(), kick_core::short(s)),
                     ))
                 }
                 None => {
@@ -315,7 +315,7 @@ impl Observations {
                 return Err(IdentifyError::data(s.observable.name(), format!("value {} is not finite", s.value)));
             }
             if !(s.sigma.is_finite() && s.sigma > 0.0) {
-                return Err(IdentifyError::data(s.observable.name(), format!("sigma {}: must be finite and > 0", s.sigma)));
+                return Err(IdentifyError::data(s.observable.name(), format!("sigma {}: must be finite and > 0", kick_core::short(s.sigma))));
             }
         }
         Ok(())

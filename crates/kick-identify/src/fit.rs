@@ -527,8 +527,9 @@ fn chi_square_of(residuals: &DVector<f64>) -> Result<f64, IdentifyError> {
     Err(IdentifyError::NonFinite {
         quantity: "chi-square",
         reason: format!(
-            "at the estimate the weighted residuals (model − data)/sigma reach {largest:e}, so their sum of squares \
-             overflows; check the data's values and sigmas"
+            "at the estimate the weighted residuals (model − data)/sigma reach {}, so their sum of squares \
+             overflows; check the data's values and sigmas",
+            kick_core::short(largest)
         ),
     })
 }

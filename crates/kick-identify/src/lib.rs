@@ -47,7 +47,7 @@ pub enum IdentifyError {
     /// `hint`: ": did you mean ...?" or ": expected one of ...".
     #[error("unknown parameter `{name}`{hint}")]
     UnknownParameter { name: String, hint: String },
-    #[error("parameter `{name}` starts at {value}: it must be {requirement}")]
+    #[error("parameter `{name}` starts at {}: it must be {requirement}", kick_core::short(*.value))]
     StartOutOfRange { name: &'static str, value: f64, requirement: &'static str },
     #[error("parameter `{parameter}` does not apply {context}: {reason}")]
     NotApplicable { parameter: &'static str, context: String, reason: &'static str },

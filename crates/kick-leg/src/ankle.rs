@@ -291,8 +291,10 @@ pub fn elastic_ankle(
     let equivalent_mass = root
         .ok_or_else(|| {
             LegError::Degenerate(format!(
-                "no foot mass in [{low:.4}, {high:.4}] kg gives the 1D model the coupled exit speed {:.6} m/s",
-                coupled.v_ball_out
+                "no foot mass in [{}, {}] kg gives the 1D model the coupled exit speed {} m/s",
+                kick_core::short(low),
+                kick_core::short(high),
+                kick_core::short(coupled.v_ball_out)
             ))
         })?
         .x;

@@ -42,7 +42,7 @@ use thiserror::Error;
 /// Every way a leg computation can refuse or fail.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum LegError {
-    #[error("invalid leg input `{name}` = {value}: must be {requirement}")]
+    #[error("invalid leg input `{name}` = {}: must be {requirement}", kick_core::short(*.value))]
     InvalidInput {
         name: &'static str,
         value: f64,
@@ -72,7 +72,7 @@ pub(crate) fn check_range(name: &'static str, value: f64, low: f64, high: f64, u
         Err(LegError::InvalidInput {
             name,
             value,
-            requirement: format!("finite and in [{low}, {high}] {unit}"),
+            requirement: format!("finite and in [{}, {}] {unit}", kick_core::short(low), kick_core::short(high)),
         })
     }
 }

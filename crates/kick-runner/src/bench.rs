@@ -177,7 +177,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         let depth = report.parent().map_or(0, |p| p.components().count());
         let figure = format!("{}{}/figures/work_precision.png", "../".repeat(depth), args.out.display());
         let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples };
-        std::fs::write(report, measured.markdown(&figure, &text)).map_err(|e| format!("cannot write {}: {e}", report.display()))?;
+        crate::output::write(report, measured.markdown(&figure, &text)).map_err(|e| e.to_string())?;
         written.push(report.clone());
     }
     Ok(BenchReport {

@@ -28,7 +28,7 @@
 use kick_compliant::table2::Table2File;
 use kick_compliant::SolverChoice;
 use kick_core::parameters::{self, Level, ParameterDef};
-use kick_core::{KickError, Parameter, Scenario};
+use kick_core::{short, KickError, Parameter, Scenario};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
@@ -396,7 +396,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         Some(dt) => {
             let v = *dt.get_ref();
             if !(v.is_finite() && v > 0.0) {
-                return Err(at.error(dt.span(), "dt", format!("{v} must be finite and > 0 (s)")));
+                return Err(at.error(dt.span(), "dt", format!("{} must be finite and > 0 (s)", short(v))));
             }
             v
         }
@@ -474,7 +474,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
             }
             // Each value alone against the base, so the error names its line.
             for (&v, value_span) in values.iter().zip(&value_spans) {
-                base.with(parameter, v).map_err(|e| at.error(value_span.clone(), &key, format!("value {v}: {e}")))?;
+                base.with(parameter, v).map_err(|e| at.error(value_span.clone(), &key, format!("value {}: {e}", short(v))))?;
             }
             axes.push(Axis { parameter, values });
             spans.push(span);
@@ -535,7 +535,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
                 ("history", Some(i)) => {
                     let v = *i.get_ref();
                     if !(v.is_finite() && v > 0.0) {
-                        return Err(at.error(i.span(), "output.interval", format!("{v} must be finite and > 0 (s)")));
+                        return Err(at.error(i.span(), "output.interval", format!("{} must be finite and > 0 (s)", short(v))));
                     }
                     if scenarios.len() > MAX_HISTORY_SCENARIOS {
                         return Err(at.error(mode_span, "output.mode", format!(
@@ -608,7 +608,7 @@ fn axis_values(at: &Locator, axis: &RawAxis, key: &str) -> Result<(Vec<f64>, Spa
         return Err(at.error(range.span(), key, "`from` and `to` must be finite"));
     }
     if is_log && !(r.from > 0.0 && r.to > 0.0) {
-        return Err(at.error(range.span(), key, format!("a log range needs from > 0 and to > 0, got {} and {}", r.from, r.to)));
+        return Err(at.error(range.span(), key, format!("a log range needs from > 0 and to > 0, got {} and {}", short(r.from), short(r.to))));
     }
     let values = if is_log {
         log_range(r.from, r.to, count as usize)

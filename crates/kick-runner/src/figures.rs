@@ -6,6 +6,7 @@
 //! font library is needed.
 
 use crate::h5::{read_history, Column, H5Error, SweepData};
+use crate::output::{OutputError, Staged};
 use kick_core::paper::TABLE2;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -23,6 +24,8 @@ pub enum FigureError {
     H5(#[from] H5Error),
     #[error("figure {figure}: {message}")]
     Draw { figure: String, message: String },
+    #[error(transparent)]
+    Output(#[from] OutputError),
 }
 
 fn register_font() -> Result<(), FigureError> {
@@ -226,12 +229,11 @@ fn draw_grid<DB: DrawingBackend>(
 /// Write `name.png` and `name.svg` of a grid of panels.
 pub fn save_grid(dir: &Path, name: &str, title: &str, layout: (usize, usize), panels: &[Panel]) -> Result<Vec<PathBuf>, FigureError> {
     register_font()?;
-    std::fs::create_dir_all(dir).map_err(|e| draw_err(name)(e.to_string()))?;
-    let png = dir.join(format!("{name}.png"));
-    let svg = dir.join(format!("{name}.svg"));
-    draw_grid(BitMapBackend::new(&png, SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
-    draw_grid(SVGBackend::new(&svg, SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
-    Ok(vec![png, svg])
+    let png = Staged::begin(&dir.join(format!("{name}.png")))?;
+    let svg = Staged::begin(&dir.join(format!("{name}.svg")))?;
+    draw_grid(BitMapBackend::new(png.temporary(), SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
+    draw_grid(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
+    Ok(vec![png.commit()?, svg.commit()?])
 }
 
 fn column<'a>(columns: &'a [(Column, Vec<f64>)], name: &str, path: &Path) -> Result<&'a [f64], FigureError> {
@@ -602,12 +604,11 @@ pub fn figure7(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> 
         let v = set.column("v_ball_out").ok_or_else(|| draw_err("figure7")("no v_ball_out".into()))?;
         groups.push((set.solver.clone(), v.to_vec()));
     }
-    std::fs::create_dir_all(out).map_err(|e| draw_err("figure7")(e.to_string()))?;
-    let png = out.join("figure7.png");
-    let svg = out.join("figure7.svg");
-    draw_bars(BitMapBackend::new(&png, SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
-    draw_bars(SVGBackend::new(&svg, SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
-    Ok(vec![png, svg])
+    let png = Staged::begin(&out.join("figure7.png"))?;
+    let svg = Staged::begin(&out.join("figure7.svg"))?;
+    draw_bars(BitMapBackend::new(png.temporary(), SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
+    draw_bars(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
+    Ok(vec![png.commit()?, svg.commit()?])
 }
 
 /// A figure: its name and the function drawing it.

@@ -24,7 +24,11 @@
 //! [`ResultWriter`] and [`ResultFile`]: the same provenance, temporary name
 //! and `units` on every dataset, in a group layout of their own, named by the
 //! root attribute `layout`.
+//!
+//! Both writers go through [`crate::output::Staged`]: one writer per file,
+//! a temporary name of this process's own, the final name only when whole.
 
+use crate::output::{OutputError, Staged};
 use crate::provenance::Provenance;
 use hdf5::types::VarLenUnicode;
 use hdf5::{Dataset, File, Group};
@@ -89,6 +93,8 @@ pub enum H5Error {
     Hdf5 { path: PathBuf, message: String },
     #[error("result file {path}: {message}")]
     Layout { path: PathBuf, message: String },
+    #[error(transparent)]
+    Output(#[from] OutputError),
 }
 
 fn h5err(path: &Path) -> impl Fn(hdf5::Error) -> H5Error + '_ {
@@ -212,11 +218,11 @@ struct SetWriter {
 }
 
 /// Turn HDF5's file locking off for this process, before the library reads
-/// its settings. Result files are written under a temporary name and renamed
-/// when complete, so readers never meet a half-written file; and a lock would
-/// otherwise outlive the writer whenever another thread forks a child (e.g.
-/// `git` for the provenance) while the file is open, since HDF5's descriptors
-/// are inherited.
+/// its settings. Writers hold a lock of their own ([`crate::output`]) and
+/// write under a temporary name renamed when complete, so readers never meet
+/// a half-written file; and HDF5's lock would otherwise outlive the writer
+/// whenever another thread forks a child (e.g. `git` for the provenance)
+/// while the file is open, since HDF5's descriptors are inherited.
 pub fn disable_file_locking() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| std::env::set_var("HDF5_USE_FILE_LOCKING", "FALSE"));
@@ -226,16 +232,18 @@ pub fn disable_file_locking() {
 ///
 /// Usage: [`SweepWriter::create`], then per row [`SweepWriter::push_parameters`]
 /// followed by one [`SweepWriter::push_outcome`] per outcome set, and finally
-/// [`SweepWriter::finish`]. The file is written as `NAME.h5.tmp` and renamed
-/// when finished, so a crashed run never leaves a truncated `NAME.h5`.
+/// [`SweepWriter::finish`]. The file is written under a temporary name
+/// ([`Staged`]) and renamed when finished, so a crashed run never leaves a
+/// truncated `NAME.h5`; a second writer of the same file is refused.
 pub struct SweepWriter {
     path: PathBuf,
-    temporary: PathBuf,
     file: File,
     parameters: Vec<Dataset>,
     parameter_buffer: Vec<Vec<f64>>,
     sets: Vec<SetWriter>,
     rows_written: usize,
+    // After `file`: the file is closed before an abandoned temporary is removed.
+    staged: Staged,
 }
 
 impl SweepWriter {
@@ -266,7 +274,7 @@ impl SweepWriter {
                 return Err(layout(path, "`status` is reserved for the status dataset"));
             }
         }
-        let (file, temporary) = create_file(path, provenance)?;
+        let (file, staged) = create_file(path, provenance)?;
         write_u64_attr(&file, path, "layout_version", u64::from(LAYOUT_VERSION))?;
         write_set_attrs(&file, path, &sets[0])?;
 
@@ -310,7 +318,7 @@ impl SweepWriter {
         }
         Ok(SweepWriter {
             path: path.to_path_buf(),
-            temporary,
+            staged,
             file,
             parameter_buffer: vec![Vec::with_capacity(CHUNK_ROWS); parameter_datasets.len()],
             parameters: parameter_datasets,
@@ -444,52 +452,90 @@ impl SweepWriter {
         Ok(())
     }
 
+    /// Append samples to the history of `row` in set `set`, one slice per
+    /// column (equal lengths), creating `[solvers/<solver>/]histories/<row>`
+    /// with extendable datasets on the first call: a history of any length
+    /// is streamed in blocks. (A history known whole is [`Self::write_history`].)
+    pub fn append_history(&mut self, set: usize, row: usize, columns: &[(Column, &[f64])]) -> Result<(), H5Error> {
+        let path = self.path.clone();
+        let writer = self.sets.get(set).ok_or_else(|| layout(&path, format!("no outcome set {set}")))?;
+        let name = format!("histories/{row:06}");
+        let new = !writer.group.link_exists("histories") || !writer.group.group("histories").is_ok_and(|g| g.link_exists(&format!("{row:06}")));
+        let group = group_at(&writer.group, &name, &path)?;
+        if new {
+            write_u64_attr(&group, &path, "row", row as u64)?;
+        }
+        for (column, values) in columns {
+            let dataset = if new {
+                extendable::<f64>(&group, &column.name, &column.unit, CHUNK_ROWS, &path)?
+            } else {
+                group.dataset(&column.name).map_err(h5err(&path))?
+            };
+            let start = dataset.size();
+            let end = start + values.len();
+            dataset.resize(end).map_err(h5err(&path))?;
+            dataset.write_slice(values, start..end).map_err(h5err(&path))?;
+        }
+        Ok(())
+    }
+
+    /// Remove the history of `row` in set `set`, if any (a solve that failed
+    /// after part of its history was streamed).
+    pub fn remove_history(&mut self, set: usize, row: usize) -> Result<(), H5Error> {
+        let path = self.path.clone();
+        let writer = self.sets.get(set).ok_or_else(|| layout(&path, format!("no outcome set {set}")))?;
+        if let Ok(histories) = writer.group.group("histories") {
+            let name = format!("{row:06}");
+            if histories.link_exists(&name) {
+                histories.unlink(&name).map_err(h5err(&path))?;
+            }
+        }
+        Ok(())
+    }
+
     /// Flush the last rows, record the row count, close and rename the file.
     pub fn finish(mut self) -> Result<PathBuf, H5Error> {
         self.flush()?;
         let rows = self.rows_written as u64;
         write_u64_attr(&self.file, &self.path, "rows", rows)?;
-        let SweepWriter { path, temporary, file, parameters, sets, .. } = self;
+        let SweepWriter { path, staged, file, parameters, sets, .. } = self;
         drop(parameters);
         drop(sets);
-        close_file(file, &temporary, path)
+        close_file(file, staged, &path)
     }
 }
 
-/// `NAME.h5.tmp` with the provenance at its root.
-fn create_file(path: &Path, provenance: &Provenance) -> Result<(File, PathBuf), H5Error> {
+/// The staged file of `path` with the provenance at its root.
+fn create_file(path: &Path, provenance: &Provenance) -> Result<(File, Staged), H5Error> {
     disable_file_locking();
-    let mut temporary = path.as_os_str().to_owned();
-    temporary.push(".tmp");
-    let temporary = PathBuf::from(temporary);
-    let file = File::create(&temporary).map_err(h5err(path))?;
+    let staged = Staged::begin(path)?;
+    let file = File::create(staged.temporary()).map_err(h5err(path))?;
     write_provenance(&file, path, provenance)?;
-    Ok((file, temporary))
+    Ok((file, staged))
 }
 
 /// Close the temporary file and give it its final name.
-fn close_file(file: File, temporary: &Path, path: PathBuf) -> Result<PathBuf, H5Error> {
-    file.close().map_err(h5err(&path))?;
-    std::fs::rename(temporary, &path).map_err(|e| layout(&path, format!("cannot rename {}: {e}", temporary.display())))?;
-    Ok(path)
+fn close_file(file: File, staged: Staged, path: &Path) -> Result<PathBuf, H5Error> {
+    file.close().map_err(h5err(path))?;
+    Ok(staged.commit()?)
 }
 
 /// Writes a result file of one's own group layout: provenance and `layout`
 /// at the root, every dataset 1D with a `units` attribute (scalars are
-/// one-element datasets), written as `NAME.h5.tmp` and renamed on
+/// one-element datasets), written under a temporary name and renamed on
 /// [`ResultWriter::finish`]. Groups are slash-separated paths below the root.
 pub struct ResultWriter {
     path: PathBuf,
-    temporary: PathBuf,
     file: File,
+    staged: Staged,
 }
 
 impl ResultWriter {
     /// Create the file; `layout` names its group layout (documented where it is written).
     pub fn create(path: &Path, provenance: &Provenance, layout: &str) -> Result<ResultWriter, H5Error> {
-        let (file, temporary) = create_file(path, provenance)?;
+        let (file, staged) = create_file(path, provenance)?;
         write_str_attr(&file, path, "layout", layout)?;
-        Ok(ResultWriter { path: path.to_path_buf(), temporary, file })
+        Ok(ResultWriter { path: path.to_path_buf(), file, staged })
     }
 
     fn group(&self, group: &str) -> Result<Group, H5Error> {
@@ -519,7 +565,7 @@ impl ResultWriter {
 
     /// Close and rename the file.
     pub fn finish(self) -> Result<PathBuf, H5Error> {
-        close_file(self.file, &self.temporary, self.path)
+        close_file(self.file, self.staged, &self.path)
     }
 }
 

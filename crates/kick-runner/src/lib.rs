@@ -3,6 +3,8 @@
 //! that returns a value with a text and a JSON form ([`Printable`]).
 //!
 //! - [`experiment`]: `experiments/*.toml` parsed and validated (errors name file, line and key).
+//! - [`output`]: whole-or-nothing files: temporary name, one writer per file, cleanup on signals.
+//! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 //! - [`h5`]: the model-independent HDF5 writer/reader (parameter and outcome columns with units, provenance).
 //! - [`run`]: the 1D model's runner over [`h5`] (rayon, chunked streaming); [`sample`], [`sweep`]: random sweeps.
 //! - [`simulate`]: one contact, 1D or 3D; [`table2`]: Table 2 side by side; [`checks`]: every cross-model check.
@@ -20,6 +22,8 @@ pub mod figures;
 pub mod h5;
 pub mod identify;
 pub mod leg;
+pub mod limits;
+pub mod output;
 pub mod printable;
 pub mod provenance;
 pub mod report;

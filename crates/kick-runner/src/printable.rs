@@ -25,14 +25,5 @@ pub fn json<T: Serialize + ?Sized>(value: &T) -> Result<String, String> {
 
 /// Use `threads` rayon workers for the rest of the process (if given).
 pub fn set_threads(threads: Option<usize>) -> Result<(), String> {
-    if let Some(n) = threads {
-        if n == 0 {
-            return Err("--threads must be at least 1".into());
-        }
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build_global()
-            .map_err(|e| format!("cannot start {n} threads: {e}"))?;
-    }
-    Ok(())
+    crate::limits::use_threads(threads, "--threads").map_err(|e| e.to_string())
 }

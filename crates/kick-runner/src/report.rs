@@ -18,8 +18,8 @@ pub enum ReportError {
     H5(#[from] H5Error),
     #[error("report: {0}")]
     Content(String),
-    #[error("cannot write {path}: {message}")]
-    Io { path: String, message: String },
+    #[error(transparent)]
+    Output(#[from] crate::output::OutputError),
 }
 
 fn content(message: impl Into<String>) -> ReportError {
@@ -50,10 +50,8 @@ fn prints_as(value: f64, printed: f64, decimals: i32) -> bool {
 /// (None when they were not run).
 pub fn write(results: &Path, figures: &str, checks: Option<&[CheckLine]>, out: &Path) -> Result<(), ReportError> {
     let text = render(results, figures, checks)?;
-    if let Some(dir) = out.parent() {
-        std::fs::create_dir_all(dir).map_err(|e| ReportError::Io { path: dir.display().to_string(), message: e.to_string() })?;
-    }
-    std::fs::write(out, text).map_err(|e| ReportError::Io { path: out.display().to_string(), message: e.to_string() })
+    crate::output::write(out, text)?;
+    Ok(())
 }
 
 /// The report's Markdown.

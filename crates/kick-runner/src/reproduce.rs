@@ -189,14 +189,13 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
          elastic bound of Eq. 38: gains flatten once m_f is several ball masses (Section 14.1).\n\n\
          ![exit speed]({figures_from_report}/leg_exit_speed.png)\n"
     );
-    std::fs::write(report_dir.join("leg.md"), leg_page).map_err(|e| format!("cannot write leg.md: {e}"))?;
+    crate::output::write(report_dir.join("leg.md"), leg_page).map_err(|e| e.to_string())?;
     // Contact laws and identification: from results/identification/*.h5.
     let identification_from_report = relative(&report_dir, &fits);
     let laws_page = crate::identify::report::laws(&fits.join(LAWS), &identification_from_report)?;
-    std::fs::write(report_dir.join("laws.md"), laws_page).map_err(|e| format!("cannot write laws.md: {e}"))?;
+    crate::output::write(report_dir.join("laws.md"), laws_page).map_err(|e| e.to_string())?;
     let identification_page = crate::identify::report::identification(&fits, &identification_from_report)?;
-    std::fs::write(report_dir.join("identification.md"), identification_page)
-        .map_err(|e| format!("cannot write identification.md: {e}"))?;
+    crate::output::write(report_dir.join("identification.md"), identification_page).map_err(|e| e.to_string())?;
     // Point the report at the sections written beside it.
     let mut text = std::fs::read_to_string(&args.report).map_err(|e| format!("cannot read {}: {e}", args.report.display()))?;
     let sections = [
@@ -215,7 +214,7 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
         text.push_str("\n## Further sections\n\n");
         text.push_str(&present.join("\n"));
         text.push('\n');
-        std::fs::write(&args.report, text).map_err(|e| format!("cannot write {}: {e}", args.report.display()))?;
+        crate::output::write(&args.report, text).map_err(|e| e.to_string())?;
     }
     Ok(Reproduction { checks: checks.len(), failed_checks: failed, report: args.report.clone() })
 }

@@ -6,32 +6,23 @@ use crate::h5::{Column, H5Error, OutcomeSet, Setting, SweepWriter, CHUNK_ROWS};
 use crate::provenance::Provenance;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use kick_compliant::SolverChoice;
-use kick_core::{History, KickError, Outcome, Parameter, RecordingSolver, Scenario, Solver, OBSERVABLES};
+use kick_core::{KickError, Outcome, Parameter, RecordingSolver, Scenario, Solver, Spacing, HISTORY_COLUMNS, OBSERVABLES};
 use rayon::prelude::*;
 use std::io::IsTerminal;
+use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
-
-/// Names and units of the columns of a recorded history (the fields of [`kick_core::Sample`]).
-pub const HISTORY_COLUMNS: [(&str, &str); 11] = [
-    ("time", "s"),
-    ("foot_position", "m"),
-    ("foot_velocity", "m/s"),
-    ("ball_position", "m"),
-    ("ball_velocity", "m/s"),
-    ("compression", "m"),
-    ("force", "N"),
-    ("kinetic", "J"),
-    ("elastic", "J"),
-    ("dissipated", "J"),
-    ("drive_work", "J"),
-];
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
+use std::sync::Mutex;
 
 #[derive(Debug, thiserror::Error)]
 pub enum RunError {
     #[error(transparent)]
     H5(#[from] H5Error),
-    #[error("cannot create {path}: {message}")]
-    Io { path: PathBuf, message: String },
+    #[error("the worker solving row {row} stopped without its result")]
+    Worker { row: usize },
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
 }
 
 /// What a run produced.
@@ -67,25 +58,6 @@ pub fn outcome_set(solver: &SolverChoice, law: kick_core::LawKind) -> OutcomeSet
     OutcomeSet { solver: solver.name().to_string(), settings, columns: outcome_columns() }
 }
 
-fn history_columns(history: &History) -> Vec<(Column, Vec<f64>)> {
-    let s = &history.samples;
-    let pick = |f: fn(&kick_core::Sample) -> f64| s.iter().map(f).collect::<Vec<f64>>();
-    let data = [
-        pick(|x| x.time),
-        pick(|x| x.foot_position),
-        pick(|x| x.foot_velocity),
-        pick(|x| x.ball_position),
-        pick(|x| x.ball_velocity),
-        pick(|x| x.compression),
-        pick(|x| x.force),
-        pick(|x| x.kinetic),
-        pick(|x| x.elastic),
-        pick(|x| x.dissipated),
-        pick(|x| x.drive_work),
-    ];
-    HISTORY_COLUMNS.iter().zip(data).map(|((n, u), v)| (Column::new(n, u), v)).collect()
-}
-
 /// A progress bar on a terminal, nothing otherwise.
 fn progress(total: u64, show: bool) -> ProgressBar {
     if show && std::io::stderr().is_terminal() {
@@ -104,13 +76,12 @@ fn solve(solver: &SolverChoice, scenario: &Result<Scenario, KickError>) -> Resul
     scenario.clone().and_then(|s| solver.solve(&s))
 }
 
-/// One chunk of rows: its scenarios and every solver's results.
+/// One chunk of rows of a summary run: its scenarios and every solver's results.
 struct Chunk {
     start: u64,
     end: u64,
     scenarios: Vec<Result<Scenario, KickError>>,
     outcomes: Vec<Vec<Result<Outcome, KickError>>>,
-    histories: Vec<Vec<Result<(Outcome, History), KickError>>>,
 }
 
 impl Chunk {
@@ -120,7 +91,6 @@ impl Chunk {
             end: 0,
             scenarios: Vec::with_capacity(CHUNK_ROWS),
             outcomes: vec![Vec::with_capacity(CHUNK_ROWS); solvers],
-            histories: vec![Vec::new(); solvers],
         }
     }
 
@@ -133,62 +103,184 @@ impl Chunk {
             .map(|j| experiment.scenarios.scenario(start + j as u64))
             .collect_into_vec(&mut self.scenarios);
         for (k, solver) in experiment.solvers.iter().enumerate() {
-            match experiment.output {
-                Output::Summary => self.scenarios.par_iter().map(|s| solve(solver, s)).collect_into_vec(&mut self.outcomes[k]),
-                Output::History { interval } => {
-                    self.scenarios
-                        .par_iter()
-                        .map(|s| s.clone().and_then(|s| solver.solve_recorded(&s, interval)))
-                        .collect_into_vec(&mut self.histories[k]);
-                }
-            }
+            self.scenarios.par_iter().map(|s| solve(solver, s)).collect_into_vec(&mut self.outcomes[k]);
         }
     }
 
     /// Append the chunk's rows to the file, in order; nothing when empty.
-    fn write(&self, writer: &mut SweepWriter, experiment: &Experiment) -> Result<(), RunError> {
+    fn write(&self, experiment: &Experiment, writer: &mut SweepWriter) -> Result<(), RunError> {
         if self.start == self.end {
             return Ok(());
         }
         for (j, scenario) in self.scenarios.iter().enumerate() {
-            let row = self.start as usize + j;
-            let mut values = [f64::NAN; 9];
-            if let Ok(s) = scenario {
-                values[..8].copy_from_slice(&s.values());
-                values[8] = s.restitution_target().unwrap_or(f64::NAN);
-            }
-            writer.push_parameters(&values[..if experiment.scenarios.has_restitution() { 9 } else { 8 }])?;
-            for k in 0..experiment.solvers.len() {
-                let result = match experiment.output {
-                    Output::Summary => self.outcomes[k][j].as_ref().map(|o| o.observable_values()),
-                    Output::History { .. } => self.histories[k][j].as_ref().map(|(o, _)| o.observable_values()),
-                };
-                match result {
-                    Ok(values) => writer.push_outcome(k, Ok(&values))?,
-                    Err(e) => writer.push_outcome(k, Err(&e.to_string()))?,
-                }
-                if let Output::History { .. } = experiment.output {
-                    if let Ok((_, history)) = &self.histories[k][j] {
-                        let columns = history_columns(history);
-                        let refs: Vec<(Column, &[f64])> = columns.iter().map(|(c, v)| (c.clone(), v.as_slice())).collect();
-                        writer.write_history(k, row, &refs)?;
-                    }
-                }
-            }
+            push_row(writer, experiment, scenario, self.outcomes.iter().map(|o| &o[j]))?;
         }
         Ok(())
     }
 }
 
+/// One row of the table: the scenario's parameters and each set's outcome.
+fn push_row<'a>(
+    writer: &mut SweepWriter,
+    experiment: &Experiment,
+    scenario: &Result<Scenario, KickError>,
+    outcomes: impl Iterator<Item = &'a Result<Outcome, KickError>>,
+) -> Result<(), RunError> {
+    let mut values = [f64::NAN; 9];
+    if let Ok(s) = scenario {
+        values[..8].copy_from_slice(&s.values());
+        values[8] = s.restitution_target().unwrap_or(f64::NAN);
+    }
+    writer.push_parameters(&values[..if experiment.scenarios.has_restitution() { 9 } else { 8 }])?;
+    for (k, result) in outcomes.enumerate() {
+        match result {
+            Ok(o) => writer.push_outcome(k, Ok(&o.observable_values()))?,
+            Err(e) => writer.push_outcome(k, Err(&e.to_string()))?,
+        }
+    }
+    Ok(())
+}
+
+/// Samples per streamed block of a history, and per HDF5 chunk of a long one.
+const HISTORY_BLOCK: usize = CHUNK_ROWS;
+/// Blocks a row may have in flight to the writer.
+const HISTORY_BLOCKS_IN_FLIGHT: usize = 2;
+
+/// From a worker solving one row to the writer.
+enum Message {
+    /// The next samples of set `set`'s history, one vector per column.
+    Block { set: usize, columns: Vec<Vec<f64>> },
+    /// Set `set` solved: its outcome and the last samples.
+    Done { set: usize, result: Result<Outcome, KickError>, columns: Vec<Vec<f64>> },
+}
+
+fn empty_block() -> Vec<Vec<f64>> {
+    (0..HISTORY_COLUMNS.len()).map(|_| Vec::with_capacity(HISTORY_BLOCK)).collect()
+}
+
+/// Solve row `row` with every solver, streaming each history to `to_writer`
+/// in blocks: a worker holds one block, the channel a few.
+fn stream_row(experiment: &Experiment, row: usize, interval: f64, to_writer: &SyncSender<Message>) {
+    let scenario = experiment.scenarios.scenario(row as u64);
+    for (set, solver) in experiment.solvers.iter().enumerate() {
+        let mut block = empty_block();
+        let result = scenario.clone().and_then(|s| {
+            let mut sink = |sample: &kick_core::Sample| {
+                for (column, value) in block.iter_mut().zip(sample.values()) {
+                    column.push(value);
+                }
+                if block[0].len() == HISTORY_BLOCK {
+                    let full = std::mem::replace(&mut block, empty_block());
+                    if to_writer.send(Message::Block { set, columns: full }).is_err() {
+                        // The writer stopped; the solve ends without sampling.
+                        return ControlFlow::Break(());
+                    }
+                }
+                ControlFlow::Continue(())
+            };
+            solver.solve_streamed(&s, Spacing::Interval(interval), &mut sink).map(|streamed| streamed.outcome)
+        });
+        if to_writer.send(Message::Done { set, result, columns: block }).is_err() {
+            return;
+        }
+    }
+}
+
+/// Histories of every row, written in row order as they are solved.
+///
+/// Rows are claimed in order by `threads` workers, each streaming its row's
+/// histories through a bounded channel of that row; the writer empties the
+/// rows' channels in order. The row the writer waits for is always being
+/// solved (claimed before any later row), so nothing waits in a circle, and
+/// memory is a few blocks per worker whatever the histories' lengths. The
+/// file's content does not depend on the number of threads.
+fn write_histories(experiment: &Experiment, writer: &mut SweepWriter, interval: f64, bar: &ProgressBar) -> Result<(), RunError> {
+    let rows = experiment.scenarios.len() as usize;
+    let solvers = experiment.solvers.len();
+    let threads = rayon::current_num_threads().clamp(1, rows.max(1));
+    let (senders, receivers): (Vec<_>, Vec<_>) =
+        (0..rows).map(|_| sync_channel::<Message>(HISTORY_BLOCKS_IN_FLIGHT)).map(|(s, r)| (Mutex::new(Some(s)), r)).unzip();
+    let next = AtomicUsize::new(0);
+    let stop = AtomicBool::new(false);
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| {
+                while !stop.load(Ordering::Relaxed) {
+                    let row = next.fetch_add(1, Ordering::Relaxed);
+                    if row >= rows {
+                        break;
+                    }
+                    let sender = senders[row].lock().unwrap_or_else(|e| e.into_inner()).take();
+                    if let Some(sender) = sender {
+                        stream_row(experiment, row, interval, &sender);
+                    }
+                }
+            });
+        }
+        let written = receive_histories(experiment, writer, receivers, solvers, bar);
+        // On an error the receivers are gone: workers stop at their next send.
+        stop.store(true, Ordering::Relaxed);
+        written
+    })
+}
+
+fn receive_histories(
+    experiment: &Experiment,
+    writer: &mut SweepWriter,
+    receivers: Vec<Receiver<Message>>,
+    solvers: usize,
+    bar: &ProgressBar,
+) -> Result<(), RunError> {
+    let names: Vec<Column> = HISTORY_COLUMNS.iter().map(|(n, u)| Column::new(n, u)).collect();
+    fn pair<'a>(columns: &[Column], values: &'a [Vec<f64>]) -> Vec<(Column, &'a [f64])> {
+        columns.iter().cloned().zip(values.iter().map(Vec::as_slice)).collect()
+    }
+    let mut outcomes: Vec<Result<Outcome, KickError>> = Vec::with_capacity(solvers);
+    for (row, receiver) in receivers.into_iter().enumerate() {
+        outcomes.clear();
+        let mut streamed = vec![false; solvers];
+        while outcomes.len() < solvers {
+            let message = receiver.recv().map_err(|_| RunError::Worker { row })?;
+            match message {
+                Message::Block { set, columns } => {
+                    writer.append_history(set, row, &pair(&names, &columns))?;
+                    streamed[set] = true;
+                }
+                Message::Done { set, result, columns } => {
+                    match (&result, streamed[set]) {
+                        (Ok(_), true) => writer.append_history(set, row, &pair(&names, &columns))?,
+                        (Ok(_), false) => writer.write_history(set, row, &pair(&names, &columns))?,
+                        (Err(_), true) => writer.remove_history(set, row)?,
+                        (Err(_), false) => {}
+                    }
+                    outcomes.push(result);
+                }
+            }
+        }
+        push_row(writer, experiment, &experiment.scenarios.scenario(row as u64), outcomes.iter())?;
+        bar.inc(1);
+    }
+    Ok(())
+}
+
 /// Run `experiment` and write `out_dir/NAME.h5`.
 ///
-/// Scenarios are solved in parallel (rayon's current pool) chunk by chunk and
-/// written in input order, so the file's numbers do not depend on the number
-/// of threads; a chunk is written while the next one is solved. Summary-only
-/// runs hold two chunks of outcomes at a time.
+/// Refused before it starts beyond the bounds of [`crate::limits::check`]
+/// (rows, free space); with `show_progress`, a large run states its size on
+/// stderr first and draws a progress bar on a terminal.
+///
+/// Scenarios are solved in parallel (rayon's current pool, or as many
+/// threads for histories) and written in input order, so the file does not
+/// depend on the number of threads. Summary runs go chunk by chunk, a chunk
+/// written while the next one is solved, two chunks of outcomes in memory;
+/// histories are streamed to the file in blocks (see `write_histories`), so
+/// memory does not grow with their length.
 pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Result<RunSummary, RunError> {
-    std::fs::create_dir_all(out_dir).map_err(|e| RunError::Io { path: out_dir.to_path_buf(), message: e.to_string() })?;
+    let size = crate::limits::check(experiment, out_dir)?;
     let path = out_dir.join(format!("{}.h5", experiment.name));
+    if show_progress && size.is_large() {
+        eprintln!("{}: {} -> {}", experiment.name, size.describe(), path.display());
+    }
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     // One law for every scenario of an experiment (the file's `law`).
     let law = experiment.scenarios.scenario(0).map_or(kick_core::LawKind::PowerLaw, |s| s.law_kind());
@@ -211,6 +303,10 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
     let total = experiment.scenarios.len();
     let bar = progress(total, show_progress);
     bar.set_message(experiment.name.clone());
+    if let Output::History { interval } = experiment.output {
+        write_histories(experiment, &mut writer, interval, &bar)?;
+        return finish(experiment, writer, &bar);
+    }
     // Two chunks in flight: while one is written (HDF5 is serial), the next is
     // solved on the rest of the pool. Their buffers are swapped, not reallocated.
     let mut solving = Chunk::new(experiment.solvers.len());
@@ -219,7 +315,7 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
     while start < total || writing.start < writing.end {
         let end = (start + CHUNK_ROWS as u64).min(total);
         let (written, ()) = rayon::join(
-            || writing.write(&mut writer, experiment),
+            || writing.write(experiment, &mut writer),
             || solving.solve(experiment, start, end),
         );
         written?;
@@ -229,6 +325,10 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
         solving.end = end;
         start = end;
     }
+    finish(experiment, writer, &bar)
+}
+
+fn finish(experiment: &Experiment, writer: SweepWriter, bar: &ProgressBar) -> Result<RunSummary, RunError> {
     bar.finish_and_clear();
     let failures = experiment
         .solvers
@@ -237,7 +337,7 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
         .zip(writer.failure_counts())
         .collect();
     let path = writer.finish()?;
-    Ok(RunSummary { path, scenarios: total, failures })
+    Ok(RunSummary { path, scenarios: experiment.scenarios.len(), failures })
 }
 
 /// What [`run_file`] did: the file given, the result file and the counts.

@@ -14,3 +14,4 @@ fn kick(args: &[&str]) -> std::process::Output {
         .output()
         .expect("kick runs")
 }
+mod reliability;

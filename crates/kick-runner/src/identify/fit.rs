@@ -132,7 +132,7 @@ pub fn table2(write: Option<&Path>, out: Option<&Path>, scenarios: &Path) -> Res
              # columns; residuals: seed-rk4 at value minus printed (m/s, 1, N, ms, mm).\n{body}",
             path.display()
         );
-        std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        crate::output::write(path, text).map_err(|e| e.to_string())?;
     }
     let fits = kick_identify::table2::fit_all(&FitOptions::default()).map_err(text)?;
     if let Some(path) = out {
@@ -303,10 +303,10 @@ pub fn synthesize(out: &Path, name: &str, seed: u64, times: usize, truth: &Scena
     let history = data.history.ok_or("no history produced")?;
     std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let csv = out.join(format!("{name}.csv"));
-    std::fs::write(&csv, history.data.to_csv()).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+    crate::output::write(&csv, history.data.to_csv()).map_err(|e| e.to_string())?;
     let toml_path = out.join(format!("{name}.toml"));
     let spec = synthetic_spec(&truth, &format!("{name}.csv"), &sigma, seed, &toml_path);
-    std::fs::write(&toml_path, spec).map_err(|e| format!("cannot write {}: {e}", toml_path.display()))?;
+    crate::output::write(&toml_path, spec).map_err(|e| e.to_string())?;
     Ok(Synthesized { csv, spec: toml_path })
 }
 

@@ -3,3 +3,4 @@
 mod law;
 mod result_file;
 mod runner;
+mod histories;

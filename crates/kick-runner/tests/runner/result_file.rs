@@ -18,7 +18,8 @@ fn result_files_round_trip_with_units_and_provenance() {
     w.text("a/b", "parameter", "stiffness").unwrap();
     assert!(!path.exists(), "written under a temporary name until finished");
     assert_eq!(w.finish().unwrap(), path);
-    assert!(!dir.join("r.h5.tmp").exists());
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(left, ["r.h5"], "no temporary or lock file left");
 
     // Independently, with the hdf5 crate.
     let file = hdf5::File::open(&path).unwrap();

@@ -1,0 +1,223 @@
+//! Faults around result files (issue 13): two writers of one file, a run
+//! stopped by SIGINT, SIGTERM or SIGKILL. The result file is always one whole
+//! run and no temporary or lock file is left behind.
+
+use kick_runner::SweepData;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+fn kick() -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_kick"));
+    command.current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
+    command
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("kick-reliability-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    v.sort();
+    v
+}
+
+/// `kick sweep` of `samples` scenarios on one thread into `out`.
+fn sweep(samples: u64, out: &Path) -> Command {
+    let mut command = kick();
+    command.args(["sweep", "--samples", &samples.to_string(), "--threads", "1", "--out", out.to_str().unwrap()]);
+    command
+}
+
+/// A running kick, killed if the test fails before it ends (a sweep left
+/// running would fill the disk).
+struct Running(Option<Child>);
+
+impl Running {
+    fn id(&self) -> u32 {
+        self.0.as_ref().unwrap().id()
+    }
+    fn finish(mut self) -> std::process::Output {
+        self.0.take().unwrap().wait_with_output().unwrap()
+    }
+}
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        if let Some(child) = &mut self.0 {
+            let _ = child.kill();
+            let _ = child.wait();
+        }
+    }
+}
+
+fn start(mut command: Command) -> Running {
+    Running(Some(command.stdout(Stdio::null()).stderr(Stdio::piped()).spawn().expect("kick starts")))
+}
+
+/// Wait until a file whose name contains `part` appears in `dir`.
+fn wait_for(dir: &Path, part: &str) {
+    let started = Instant::now();
+    while !names(dir).iter().any(|n| n.contains(part)) {
+        assert!(started.elapsed() < Duration::from_secs(60), "no `{part}` in {dir:?}: {:?}", names(dir));
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+fn signal(child: &Running, signal: i32) {
+    let pid = i32::try_from(child.id()).unwrap();
+    // SAFETY: kill(2) on our own child's pid has no memory effects.
+    assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
+}
+
+#[test]
+fn a_second_writer_of_the_same_file_is_refused_and_the_first_completes() {
+    let dir = scratch("two");
+    let out = dir.join("s.h5");
+    let rows = 100_000;
+    let first = start(sweep(rows, &out));
+    wait_for(&dir, "tmp");
+    let second = sweep(rows, &out).output().unwrap();
+    let first = first.finish();
+    assert!(first.status.success(), "{}", String::from_utf8_lossy(&first.stderr));
+    assert!(!second.status.success(), "a second writer of {out:?} must be refused");
+    let message = String::from_utf8_lossy(&second.stderr);
+    assert!(message.contains(out.to_str().unwrap()) && message.contains("another process"), "{message}");
+    // One whole run: every row there and readable.
+    let data = SweepData::read(&out).unwrap();
+    assert_eq!(data.rows() as u64, rows);
+    assert_eq!(data.sets[0].status.len() as u64, rows);
+    assert_eq!(names(&dir), ["s.h5"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn writers_started_together_leave_one_whole_file() {
+    let dir = scratch("together");
+    let out = dir.join("s.h5");
+    let rows = 50_000;
+    let children: Vec<Running> = (0..2).map(|_| start(sweep(rows, &out))).collect();
+    let outputs: Vec<_> = children.into_iter().map(Running::finish).collect();
+    assert!(outputs.iter().any(|o| o.status.success()));
+    for o in outputs.iter().filter(|o| !o.status.success()) {
+        let message = String::from_utf8_lossy(&o.stderr);
+        assert!(message.contains("another process"), "{message}");
+    }
+    assert_eq!(SweepData::read(&out).unwrap().rows() as u64, rows);
+    assert_eq!(names(&dir), ["s.h5"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A long run into a file that exists, stopped by `sig` once it is writing.
+fn interrupt(name: &str, sig: i32) -> (PathBuf, std::process::ExitStatus, Vec<u8>) {
+    let dir = scratch(name);
+    let out = dir.join("s.h5");
+    assert!(sweep(20, &out).output().unwrap().status.success());
+    let before = std::fs::read(&out).unwrap();
+    // 2e6 rows (370 MB), stopped within a second of starting.
+    let child = start(sweep(2_000_000, &out));
+    wait_for(&dir, "tmp");
+    std::thread::sleep(Duration::from_millis(200));
+    signal(&child, sig);
+    let status = child.finish().status;
+    assert_eq!(std::fs::read(&out).unwrap(), before, "the existing result file changed");
+    (dir, status, before)
+}
+
+#[test]
+fn sigint_and_sigterm_remove_the_temporary_file_and_keep_the_old_result() {
+    for (sig, code) in [(libc::SIGINT, 130), (libc::SIGTERM, 143)] {
+        let (dir, status, _) = interrupt(&format!("signal{sig}"), sig);
+        assert_eq!(status.code(), Some(code), "signal {sig}: {status:?}");
+        assert_eq!(names(&dir), ["s.h5"], "signal {sig}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
+#[test]
+fn sigkill_keeps_the_old_result_and_the_next_run_clears_what_it_left() {
+    use std::os::unix::process::ExitStatusExt;
+    let (dir, status, before) = interrupt("kill", libc::SIGKILL);
+    assert_eq!(status.signal(), Some(libc::SIGKILL));
+    assert!(SweepData::read(&dir.join("s.h5")).is_ok());
+    // Its temporary and lock files stay (nothing runs after SIGKILL); the
+    // next writer of the file takes the lock over and removes them.
+    let out = dir.join("s.h5");
+    assert!(sweep(30, &out).output().unwrap().status.success());
+    assert_ne!(std::fs::read(&out).unwrap(), before);
+    assert_eq!(SweepData::read(&out).unwrap().rows(), 30);
+    assert_eq!(names(&dir), ["s.h5"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Largest resident set of any child of this test process so far, bytes.
+fn children_peak_rss() -> u64 {
+    // SAFETY: getrusage fills the zeroed struct it is given.
+    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+    assert_eq!(unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut usage) }, 0);
+    u64::try_from(usage.ru_maxrss).unwrap() * 1024
+}
+
+/// `kick simulate --history 2e-8 --format json`: 2.6e5 samples, ~100 MB of
+/// JSON, written as serialised (it took 791 MB as a JSON tree). The other
+/// tests' children stay far below the bound.
+#[test]
+fn a_fine_json_history_is_written_without_a_tree_in_memory() {
+    let out = kick().args(["simulate", "--history", "2e-8", "--format", "json"]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.len() > 50_000_000 && text.contains("\"history\": ["), "{} bytes", text.len());
+    let peak = children_peak_rss();
+    assert!(peak < 250_000_000, "peak resident set of kick: {peak} bytes");
+}
+
+/// A sweep beyond the row bound and a thread count beyond the machine's
+/// are refused at once, naming the setting (both used to start).
+#[test]
+fn oversized_sweeps_and_thread_counts_are_refused_before_starting() {
+    let dir = scratch("caps");
+    let out = dir.join("s.h5");
+    for (args, named) in [
+        (vec!["--samples", "1000000000000"], "samples = 1000000000000"),
+        (vec!["--samples", "10", "--threads", "5000"], "`--threads` = 5000"),
+        (vec!["--samples", "10", "--threads", "20000"], "`--threads` = 20000"),
+    ] {
+        let mut command = kick();
+        command.args(["sweep", "--out", out.to_str().unwrap()]).args(&args);
+        // A run that started is stopped by the guard: the test must not run it to its end.
+        let mut child = start(command);
+        let started = Instant::now();
+        while child.0.as_mut().unwrap().try_wait().unwrap().is_none() {
+            assert!(started.elapsed() < Duration::from_secs(20), "{args:?} still running after 20 s");
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        let output = child.finish();
+        let message = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(1), "{args:?} must be refused: {message}");
+        assert!(message.contains(named), "{message}");
+    }
+    assert!(names(&dir).is_empty(), "{:?}", names(&dir));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A large run states its rows and estimated bytes on stderr before it starts.
+#[test]
+fn a_large_run_states_its_size_first() {
+    use std::io::BufRead;
+    let dir = scratch("large");
+    let out = dir.join("s.h5");
+    let mut child = start(sweep(1_000_000, &out));
+    let mut line = String::new();
+    let stderr = child.0.as_mut().unwrap().stderr.take().unwrap();
+    std::io::BufReader::new(stderr).read_line(&mut line).unwrap();
+    signal(&child, libc::SIGTERM);
+    assert_eq!(child.finish().status.code(), Some(143));
+    // 185 bytes a row: 8 parameters, 15 outcomes, a status byte.
+    assert!(line.contains("1000000 rows, about 185 MB") && line.contains("s.h5"), "{line}");
+    assert!(names(&dir).is_empty(), "{:?}", names(&dir));
+    let _ = std::fs::remove_dir_all(&dir);
+}

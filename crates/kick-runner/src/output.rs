@@ -1,0 +1,338 @@
+//! Whole-or-nothing output files: every result file, figure and report page
+//! of the workspace is written through [`Staged`] (or [`write`]).
+//!
+//! - The content goes to a temporary file beside the target, named for this
+//!   process (`NAME.<pid>-<n>.tmp.EXT`, the extension kept for writers that
+//!   pick a format from it), and is renamed onto the target when complete:
+//!   the target is always one whole run, the old one or the new one.
+//! - One writer per target: an advisory lock on `NAME.EXT.lock` is held from
+//!   [`Staged::begin`] to the end, and a second writer, in this process or
+//!   another, is refused naming the file and the holder. The lock file is
+//!   removed when the writer ends; one left by a killed process holds no lock
+//!   and is taken over.
+//! - Temporary files left by a killed writer of the same target are removed
+//!   once the lock is held (no live writer can own them then).
+//! - [`install_signal_cleanup`] makes SIGINT, SIGTERM and SIGHUP remove this
+//!   process's temporary and lock files before it exits (130, 143, 129).
+
+use std::fs::{File, OpenOptions, TryLockError};
+use std::io::{Read, Seek, SeekFrom, Write};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Mutex, MutexGuard};
+
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    #[error(
+        "{}: another process{} is writing this file now (lock {}); wait for it to end or write elsewhere",
+        path.display(),
+        holder.map(|p| format!(" (pid {p})")).unwrap_or_default(),
+        lock.display()
+    )]
+    Busy { path: PathBuf, lock: PathBuf, holder: Option<u32> },
+    #[error("cannot write {}: {message}", path.display())]
+    Io { path: PathBuf, message: String },
+}
+
+fn io(path: &Path) -> impl Fn(std::io::Error) -> OutputError + '_ {
+    move |e| OutputError::Io { path: path.to_path_buf(), message: e.to_string() }
+}
+
+/// Files to remove if a signal ends the process: temporary and lock files.
+static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
+    // A panic elsewhere must not keep the cleanup from running.
+    PENDING.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+fn register(path: &Path) {
+    pending().push(path.to_path_buf());
+}
+
+fn unregister(list: &mut Vec<PathBuf>, path: &Path) {
+    if let Some(i) = list.iter().rposition(|p| p == path) {
+        list.swap_remove(i);
+    }
+}
+
+/// On SIGINT, SIGTERM or SIGHUP: remove this process's temporary and lock
+/// files and exit with 128 + the signal (130, 143, 129). Call once, early, in
+/// a program (not a library host with signal handling of its own); later
+/// calls do nothing. The work runs on a thread of its own, not in the
+/// handler; the exit skips atexit handlers, which could meet HDF5 mid-call.
+pub fn install_signal_cleanup() -> Result<(), OutputError> {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    static INSTALLED: Mutex<bool> = Mutex::new(false);
+    let mut installed = INSTALLED.lock().unwrap_or_else(|e| e.into_inner());
+    if *installed {
+        return Ok(());
+    }
+    let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
+        .map_err(|e| OutputError::Io { path: PathBuf::from("(signal handler)"), message: e.to_string() })?;
+    std::thread::Builder::new()
+        .name("kick-signals".into())
+        .spawn(move || {
+            if let Some(signal) = signals.forever().next() {
+                // Held to the exit: a commit in progress finishes first or not at all.
+                let list = pending();
+                for path in list.iter() {
+                    let _ = std::fs::remove_file(path);
+                }
+                signal_hook::low_level::exit(128 + signal);
+            }
+        })
+        .map_err(|e| OutputError::Io { path: PathBuf::from("(signal thread)"), message: e.to_string() })?;
+    *installed = true;
+    Ok(())
+}
+
+/// `NAME.EXT.lock` beside `target`.
+pub fn lock_path(target: &Path) -> PathBuf {
+    let mut name = target.file_name().unwrap_or_default().to_owned();
+    name.push(".lock");
+    target.with_file_name(name)
+}
+
+/// (stem, ".EXT" or "") of the target's file name.
+fn split_name(target: &Path) -> (String, String) {
+    let stem = target.file_stem().unwrap_or_default().to_string_lossy().into_owned();
+    let ext = target.extension().map(|e| format!(".{}", e.to_string_lossy())).unwrap_or_default();
+    (stem, ext)
+}
+
+/// Whether `name` is a temporary file of a target with this stem and extension.
+fn is_temporary_of(name: &str, stem: &str, ext: &str) -> bool {
+    let Some(middle) = name.strip_prefix(stem).and_then(|r| r.strip_prefix('.')).and_then(|r| r.strip_suffix(ext)) else {
+        return false;
+    };
+    let Some(ids) = middle.strip_suffix(".tmp") else {
+        return false;
+    };
+    let mut parts = ids.split('-');
+    let numeric = |p: Option<&str>| p.is_some_and(|p| !p.is_empty() && p.bytes().all(|b| b.is_ascii_digit()));
+    numeric(parts.next()) && numeric(parts.next()) && parts.next().is_none()
+}
+
+/// A held lock on a target: the lock file exists and is locked by us.
+struct Lock {
+    path: PathBuf,
+    _file: File,
+}
+
+impl Lock {
+    fn acquire(target: &Path) -> Result<Lock, OutputError> {
+        let path = lock_path(target);
+        // A few tries: the holder may remove its lock file between our open
+        // and our lock, leaving us a lock on a file no longer there.
+        for _ in 0..100 {
+            let mut file = OpenOptions::new().read(true).write(true).create(true).truncate(false).open(&path).map_err(io(&path))?;
+            match file.try_lock() {
+                Ok(()) => {}
+                Err(TryLockError::WouldBlock) => {
+                    let mut text = String::new();
+                    let _ = file.read_to_string(&mut text);
+                    return Err(OutputError::Busy { path: target.to_path_buf(), lock: path, holder: text.trim().parse().ok() });
+                }
+                Err(TryLockError::Error(e)) => return Err(io(&path)(e)),
+            }
+            if !same_file(&file, &path) {
+                continue;
+            }
+            // Registered before anything else can fail, so a signal removes it.
+            register(&path);
+            let lock = Lock { path, _file: file };
+            let mut file = &lock._file;
+            file.set_len(0)
+                .and_then(|()| file.seek(SeekFrom::Start(0)))
+                .and_then(|_| write!(file, "{}", std::process::id()))
+                .map_err(io(&lock.path))?;
+            return Ok(lock);
+        }
+        Err(OutputError::Io { path, message: "the lock file keeps being replaced".into() })
+    }
+}
+
+impl Drop for Lock {
+    fn drop(&mut self) {
+        // Removed while still locked, then unlocked when the file closes.
+        let mut list = pending();
+        let _ = std::fs::remove_file(&self.path);
+        unregister(&mut list, &self.path);
+    }
+}
+
+#[cfg(unix)]
+fn same_file(file: &File, path: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    match (file.metadata(), std::fs::metadata(path)) {
+        (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+        _ => false,
+    }
+}
+
+#[cfg(not(unix))]
+fn same_file(_file: &File, path: &Path) -> bool {
+    path.exists()
+}
+
+/// A file being written: write [`Staged::temporary`], then [`Staged::commit`].
+/// Dropped without a commit, the temporary file is removed and the target
+/// left as it was.
+pub struct Staged {
+    target: PathBuf,
+    temporary: PathBuf,
+    committed: bool,
+    // Dropped last: the lock outlives the temporary file.
+    _lock: Lock,
+}
+
+impl Staged {
+    /// Take the target's lock (creating its directory) and name a fresh
+    /// temporary file beside it; refused if another writer holds the lock.
+    pub fn begin(target: &Path) -> Result<Staged, OutputError> {
+        static SEQUENCE: AtomicU64 = AtomicU64::new(0);
+        let directory = match target.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        std::fs::create_dir_all(&directory).map_err(io(&directory))?;
+        let lock = Lock::acquire(target)?;
+        let (stem, ext) = split_name(target);
+        remove_stale_temporaries(&directory, &stem, &ext);
+        let n = SEQUENCE.fetch_add(1, Ordering::Relaxed);
+        let temporary = target.with_file_name(format!("{stem}.{}-{n}.tmp{ext}", std::process::id()));
+        register(&temporary);
+        Ok(Staged { target: target.to_path_buf(), temporary, committed: false, _lock: lock })
+    }
+
+    /// Where to write the content.
+    pub fn temporary(&self) -> &Path {
+        &self.temporary
+    }
+
+    /// The file this becomes.
+    pub fn target(&self) -> &Path {
+        &self.target
+    }
+
+    /// Flush the temporary file to disk and rename it onto the target.
+    pub fn commit(mut self) -> Result<PathBuf, OutputError> {
+        File::open(&self.temporary).and_then(|f| f.sync_all()).map_err(io(&self.temporary))?;
+        {
+            // Under the registry's lock: a signal sees the rename done or not begun.
+            let mut list = pending();
+            std::fs::rename(&self.temporary, &self.target).map_err(io(&self.target))?;
+            unregister(&mut list, &self.temporary);
+            self.committed = true;
+        }
+        // The rename itself made durable (best effort: not every system opens directories).
+        if let Some(dir) = self.target.parent().filter(|d| !d.as_os_str().is_empty()) {
+            let _ = File::open(dir).and_then(|d| d.sync_all());
+        }
+        Ok(self.target.clone())
+    }
+}
+
+impl Drop for Staged {
+    fn drop(&mut self) {
+        if !self.committed {
+            let mut list = pending();
+            let _ = std::fs::remove_file(&self.temporary);
+            unregister(&mut list, &self.temporary);
+        }
+    }
+}
+
+/// Temporary files of this target whose writer is gone (we hold the lock).
+fn remove_stale_temporaries(directory: &Path, stem: &str, ext: &str) {
+    let Ok(entries) = std::fs::read_dir(directory) else { return };
+    for entry in entries.flatten() {
+        if entry.file_name().to_str().is_some_and(|name| is_temporary_of(name, stem, ext)) {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
+}
+
+/// Write `bytes` as the whole of `target`, or leave it as it was.
+pub fn write(target: impl AsRef<Path>, bytes: impl AsRef<[u8]>) -> Result<PathBuf, OutputError> {
+    let staged = Staged::begin(target.as_ref())?;
+    File::create(staged.temporary())
+        .and_then(|mut f| f.write_all(bytes.as_ref()))
+        .map_err(io(staged.target()))?;
+    staged.commit()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("kick-output-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    fn names(dir: &Path) -> Vec<String> {
+        let mut v: Vec<String> =
+            std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn temporary_names_are_recognised_exactly() {
+        assert!(is_temporary_of("run.12-0.tmp.h5", "run", ".h5"));
+        assert!(is_temporary_of("README.7-3.tmp", "README", ""));
+        for other in ["run.h5", "run.h5.tmp", "run.12.tmp.h5", "run.1-2-3.tmp.h5", "run.a-0.tmp.h5", "runx.1-0.tmp.h5", "run.1-0.tmp.png"] {
+            assert!(!is_temporary_of(other, "run", ".h5"), "{other}");
+        }
+    }
+
+    #[test]
+    fn a_second_writer_is_refused_and_nothing_is_left() {
+        let dir = scratch("busy");
+        let target = dir.join("a.h5");
+        let first = Staged::begin(&target).unwrap();
+        std::fs::write(first.temporary(), b"first").unwrap();
+        let refused = Staged::begin(&target).err().expect("second writer must be refused");
+        let message = refused.to_string();
+        assert!(message.contains("a.h5") && message.contains(&format!("pid {}", std::process::id())), "{message}");
+        // Another target in the same directory is independent.
+        write(&dir.join("b.h5"), b"b").unwrap();
+        first.commit().unwrap();
+        assert_eq!(std::fs::read(&target).unwrap(), b"first");
+        assert_eq!(names(&dir), ["a.h5", "b.h5"]);
+        // Free again after the first ended.
+        write(&target, b"second").unwrap();
+        assert_eq!(std::fs::read(&target).unwrap(), b"second");
+        assert_eq!(names(&dir), ["a.h5", "b.h5"]);
+    }
+
+    #[test]
+    fn an_abandoned_write_keeps_the_old_file() {
+        let dir = scratch("abandon");
+        let target = dir.join("fig.png");
+        write(&target, b"old").unwrap();
+        {
+            let staged = Staged::begin(&target).unwrap();
+            std::fs::write(staged.temporary(), b"half").unwrap();
+            assert!(staged.temporary().to_string_lossy().ends_with(".tmp.png"));
+        }
+        assert_eq!(std::fs::read(&target).unwrap(), b"old");
+        assert_eq!(names(&dir), ["fig.png"]);
+    }
+
+    #[test]
+    fn leftovers_of_a_killed_writer_are_taken_over() {
+        let dir = scratch("stale");
+        let target = dir.join("s.h5");
+        // What a SIGKILLed writer leaves: an unlocked lock file and its temporary file.
+        std::fs::write(lock_path(&target), b"999999").unwrap();
+        std::fs::write(dir.join("s.999999-0.tmp.h5"), b"partial").unwrap();
+        std::fs::write(dir.join("unrelated.999999-0.tmp.h5"), b"keep").unwrap();
+        write(&target, b"whole").unwrap();
+        assert_eq!(names(&dir), ["s.h5", "unrelated.999999-0.tmp.h5"]);
+    }
+}
