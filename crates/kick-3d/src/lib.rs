@@ -19,6 +19,7 @@ pub mod checks;
 pub mod dynamics;
 pub mod error;
 pub mod model;
+pub mod models;
 pub mod one_d;
 pub mod outcome;
 #[cfg(feature = "rapier")]

@@ -65,6 +65,7 @@ pub struct Outcome3d {
     pub peak_normal_force_time: f64,
     /// sup |F_t|, N.
     pub peak_tangential_force: f64,
+    pub peak_tangential_force_time: f64,
     pub max_compression: f64,
     pub max_compression_time: f64,
     /// Total time the tangential spring slides on its Coulomb cap, s.
