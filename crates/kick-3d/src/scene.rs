@@ -20,11 +20,10 @@
 //! The path exists for
 //! scenes the accurate path cannot hold (ground, later a leg), not for precision.
 
-use crate::accurate::{Peak, Peaks};
+use crate::outcome::{self, Outcome3d, Peak, Peaks};
 use crate::dynamics::{self, Dynamics, State};
 use crate::error::Kick3dError;
 use crate::model::{FootShape, Kick3d};
-use crate::outcome::Outcome3d;
 use parry3d_f64::math::Vec3;
 use rapier3d_f64::prelude::*;
 
@@ -127,7 +126,8 @@ impl Scene {
                     compression: max_compression,
                     slip_time,
                 };
-                let mut out = crate::accurate::outcome(kick, &dynamics, &y, t_sep, peaks, step, "rapier")?;
+                let end = dynamics.end_state(kick, &y, t_sep);
+                let mut out = outcome::assemble(kick, &end, peaks, step, "rapier")?;
                 out.evaluations = step;
                 return Ok(out);
             }

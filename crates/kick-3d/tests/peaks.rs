@@ -4,7 +4,7 @@
 
 mod support;
 
-use kick_3d::{Accurate3d, Kick3d};
+use kick_3d::{Accurate3d, FullState3d, Kick3d};
 use support::fine_rk4;
 
 /// The accurate path's promise on peaks and their times.
@@ -32,6 +32,7 @@ fn check(name: &str, kick: &Kick3d, solve: impl Fn(&Kick3d) -> kick_3d::Outcome3
 #[test]
 fn peaks_after_a_switch_match_fine_rk4() {
     for (name, kick) in kick_3d::models::peak_after_switch().unwrap() {
-        check(name, &kick, |k| Accurate3d::default().solve(k).unwrap());
+        check(&format!("accurate, {name}"), &kick, |k| Accurate3d::default().solve(k).unwrap());
+        check(&format!("full-state, {name}"), &kick, |k| FullState3d::default().solve(k).unwrap());
     }
 }

@@ -159,6 +159,17 @@ impl ContactLaw for HysteresisContact {
     fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
         self.raw(compression, compression_rate).max(0.0)
     }
+    /// One power for both (the same values as the two calls).
+    #[inline]
+    fn elastic_and_contact_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        let (elastic, raw) = self.unclamped_force(compression, compression_rate);
+        (elastic, raw.max(0.0))
+    }
+    #[inline]
+    fn unclamped_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        let elastic = if compression > 0.0 { self.stiffness * compression.powf(self.exponent) } else { 0.0 };
+        (elastic, elastic * (1.0 + self.hysteresis * compression_rate))
+    }
     fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
         let factor = 1.0 + self.hysteresis * compression_rate;
         if factor <= 0.0 {
@@ -236,6 +247,10 @@ impl ContactLaw for KelvinVoigt {
     #[inline]
     fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
         self.raw(compression, compression_rate).max(0.0)
+    }
+    #[inline]
+    fn unclamped_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        (self.stiffness * compression.max(0.0), self.raw(compression, compression_rate))
     }
     fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
         if self.raw(compression, compression_rate) <= 0.0 {
@@ -420,6 +435,25 @@ impl ContactLaw for AnyLaw {
     }
     fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
         dispatch!(self, law => law.force_gradient(compression, compression_rate))
+    }
+    #[inline]
+    fn elastic_and_contact_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        dispatch!(self, law => law.elastic_and_contact_force(compression, compression_rate))
+    }
+    fn force_and_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64, f64) {
+        dispatch!(self, law => law.force_and_gradient(compression, compression_rate))
+    }
+    #[inline]
+    fn unclamped_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        dispatch!(self, law => law.unclamped_force(compression, compression_rate))
+    }
+    // Without these the paper's law behind `AnyLaw` would lose its branches.
+    #[inline]
+    fn branch_force(&self, compression: f64, compression_rate: f64, compressing: bool) -> (f64, f64) {
+        dispatch!(self, law => law.branch_force(compression, compression_rate, compressing))
+    }
+    fn branch_force_and_gradient(&self, compression: f64, compression_rate: f64, compressing: bool) -> (f64, f64, f64) {
+        dispatch!(self, law => law.branch_force_and_gradient(compression, compression_rate, compressing))
     }
     fn damps_compression_only(&self) -> bool {
         dispatch!(self, law => law.damps_compression_only())

@@ -8,8 +8,8 @@
 //! in [1/3, 6], no PI term). The coefficients are the published ones.
 //!
 //! Why not `ode_solvers::Dop853`: it integrates to a fixed end and collects
-//! every step into vectors; a flight needs to stop at located events and its
-//! summary path must not allocate. The dense output costs three more
+//! every step into vectors; a flight (kick-flight) and a contact (kick-3d)
+//! need to stop at located events, and their summary paths must not allocate. The dense output costs three more
 //! right-hand sides per step, so it is formed only for the steps that ask.
 
 // The published coefficients keep all their digits.
@@ -17,9 +17,9 @@
 
 use nalgebra::SVector;
 
-/// An autonomous system y' = f(y).
+/// A system y' = f(x, y) (x: the independent variable, usually time).
 pub trait System<const N: usize> {
-    fn derivative(&self, y: &SVector<f64, N>) -> SVector<f64, N>;
+    fn derivative(&self, x: f64, y: &SVector<f64, N>) -> SVector<f64, N>;
 }
 
 /// Why stepping stopped short.
@@ -34,8 +34,7 @@ pub enum StepFailure {
 /// Most rejected tries for one step before giving up.
 pub const MAX_REJECTIONS: u32 = 100;
 
-/// Nodes c_i (the system is autonomous: only the tests use them, to check the tableau).
-#[cfg(test)]
+/// Nodes c_i.
 const C: [f64; 16] = [
     0.0,
     0.526001519587677318785587544488E-01,
@@ -365,7 +364,7 @@ impl<const N: usize> Stepper<N> {
         absolute_tolerance: SVector<f64, N>,
         h_max: f64,
     ) -> Self {
-        let f0 = system.derivative(&y);
+        let f0 = system.derivative(t, &y);
         let mut k = [SVector::<f64, N>::zeros(); 13];
         k[0] = f0;
         let mut stepper = Stepper {
@@ -402,7 +401,7 @@ impl<const N: usize> Stepper<N> {
         }
         let mut h0 = if d0 < 1e-10 || d1 < 1e-10 { 1e-6 } else { 0.01 * (d0 / d1).sqrt() };
         h0 = h0.min(self.h_max);
-        let f1 = system.derivative(&(self.y + f0 * h0));
+        let f1 = system.derivative(self.t + h0, &(self.y + f0 * h0));
         self.evaluations += 1;
         let mut d2 = 0.0;
         for i in 0..N {
@@ -437,7 +436,7 @@ impl<const N: usize> Stepper<N> {
             let k = &mut self.k;
             for s in 1..12 {
                 let increment = combine(&A[s - 1], &k[..s]);
-                k[s] = system.derivative(&(self.y + increment * h));
+                k[s] = system.derivative(self.t + C[s] * h, &(self.y + increment * h));
             }
             self.evaluations += 11;
             let b_sum = combine(&B, &k[..12]);
@@ -470,7 +469,7 @@ impl<const N: usize> Stepper<N> {
             let fac = (fac11 / SAFETY).clamp(GROWTH_LIMIT, SHRINK_LIMIT);
             let mut h_new = h / fac;
             if err <= 1.0 {
-                self.k[12] = system.derivative(&y_new);
+                self.k[12] = system.derivative(self.t + h, &y_new);
                 self.evaluations += 1;
                 if self.rejected_last {
                     h_new = h_new.min(h);
@@ -496,6 +495,40 @@ impl<const N: usize> Stepper<N> {
         }
     }
 
+    /// y' at the end of the last accepted step (k13; call before `advance`).
+    pub fn end_derivative(&self) -> &SVector<f64, N> {
+        &self.k[12]
+    }
+
+    /// y' at the start of the next step (k1: after `advance` or `restart`).
+    pub fn start_derivative(&self) -> &SVector<f64, N> {
+        &self.k[0]
+    }
+
+    /// Go on from (t, y) with `system` (a new right-hand side after a
+    /// located switch), keeping the step size: one evaluation.
+    pub fn restart<S: System<N>>(&mut self, system: &S, t: f64, y: SVector<f64, N>) {
+        self.t = t;
+        self.y = y;
+        self.k[0] = system.derivative(t, &y);
+        self.evaluations += 1;
+        self.rejected_last = false;
+    }
+
+    /// The size the next step will try.
+    pub fn next_step(&self) -> f64 {
+        self.h
+    }
+    /// Try `h` next (after a change of independent variable).
+    pub fn set_next_step(&mut self, h: f64) {
+        self.h = h;
+    }
+
+    /// Bound later steps to `h_max` (to land on a known end of the independent variable).
+    pub fn set_max_step(&mut self, h_max: f64) {
+        self.h_max = h_max;
+    }
+
     /// Set k1 of the next step: after `step`, k13 of this one.
     /// (Kept apart so `dense` can still read this step's stages.)
     pub fn advance(&mut self) {
@@ -510,9 +543,9 @@ impl<const N: usize> Stepper<N> {
         let k = &self.k;
         let mut all = [SVector::<f64, N>::zeros(); 16];
         all[..13].copy_from_slice(k);
-        all[13] = system.derivative(&(y0 + combine(&A14, &all[..13]) * h));
-        all[14] = system.derivative(&(y0 + combine(&A15, &all[..14]) * h));
-        all[15] = system.derivative(&(y0 + combine(&A16, &all[..15]) * h));
+        all[13] = system.derivative(self.last_t + C[13] * h, &(y0 + combine(&A14, &all[..13]) * h));
+        all[14] = system.derivative(self.last_t + C[14] * h, &(y0 + combine(&A15, &all[..14]) * h));
+        all[15] = system.derivative(self.last_t + C[15] * h, &(y0 + combine(&A16, &all[..15]) * h));
         self.evaluations += 3;
         let y_diff = self.y - y0;
         let bspl = k[0] * h - y_diff;
@@ -570,7 +603,7 @@ mod tests {
     /// Harmonic oscillator y'' = −y: exact solution (cos t, −sin t).
     struct Oscillator;
     impl System<2> for Oscillator {
-        fn derivative(&self, y: &Vector2<f64>) -> Vector2<f64> {
+        fn derivative(&self, _t: f64, y: &Vector2<f64>) -> Vector2<f64> {
             Vector2::new(y[1], -y[0])
         }
     }
