@@ -58,7 +58,7 @@ pub struct Accurate3d {
 
 /// Default tolerance: the largest that keeps every observable within 1e-9
 /// of the tightened reference over the box (module docs).
-pub const DEFAULT_TOLERANCE: f64 = 1e-11;
+pub const DEFAULT_TOLERANCE: f64 = 1e-13;
 
 impl Default for Accurate3d {
     fn default() -> Self {
@@ -341,19 +341,16 @@ impl Accurate3d {
                         continue;
                     }
                     let d = dense.get_or_insert_with(|| stepper.dense(&system));
-                    let mut count = 0;
                     let least = roots::brent(
                         |x| {
                             let y = d.at(x);
-                            count += 1;
-                            rates(&system, x, &y, &system.derivative(x, &y), dx)[i]
+                            rates(&system, x, &y, &d.derivative_at(x), dx)[i]
                         },
                         point.x,
                         x1,
                         4.0 * f64::EPSILON * x1.abs().max(dx),
                         200,
                     );
-                    extra_evaluations += count;
                     let Some(least) = least else { continue };
                     let y = d.at(least.x);
                     if sign * switch.value(&system, &system.local(least.x, &y), &y) > 0.0 {
@@ -402,19 +399,16 @@ impl Accurate3d {
             for k in 0..2 {
                 if point.rates[k] > 0.0 && rates_end[k] <= 0.0 {
                     let d = dense.get_or_insert_with(|| stepper.dense(&system));
-                    let mut count = 0u64;
                     let root = roots::brent(
                         |x| {
                             let y = d.at(x);
-                            count += 1;
-                            rates(&system, x, &y, &system.derivative(x, &y), dx)[k]
+                            rates(&system, x, &y, &d.derivative_at(x), dx)[k]
                         },
                         point.x,
                         x_end,
                         4.0 * f64::EPSILON * x_end.abs().max(dx),
                         200,
                     );
-                    extra_evaluations += count;
                     // No sign change between the ends as evaluated on the
                     // dense output: the maximum is an end, sampled there.
                     if let Some(root) = root {
@@ -466,7 +460,7 @@ impl Accurate3d {
                             let x = if clock == Clock::Time { t_end } else { 0.0 };
                             let rate_after = system.clock_rate(x, &y1);
                             stepper.restart(&system, x, y1);
-                            stepper.set_next_step(h / rate_after);
+                            stepper.set_next_step(0.7 * h / rate_after);
                             stepper.set_max_step(if let Clock::Release { start } = clock { start } else { horizon });
                             point = Point { x, rates: rates(&system, x, &y1, stepper.start_derivative(), step_of(clock)) };
                         }

@@ -265,24 +265,32 @@ impl Relative {
     /// The law at (x, y) on this phase's branches.
     #[inline]
     pub fn local(&self, x: f64, y: &State) -> Local {
+        match self.phase.geometry {
+            Geometry::Face => self.local_on::<true>(x, y),
+            Geometry::Border => self.local_on::<false>(x, y),
+        }
+    }
+
+    /// [`Relative::local`] compiled apart for the face (n = e_x known), the common case.
+    #[inline(always)]
+    fn local_on<const FACE: bool>(&self, x: f64, y: &State) -> Local {
         let r = self.centre(y);
-        let (delta, n) = match self.phase.geometry {
-            Geometry::Face => (-y[DISPLACEMENT], Vec3::X),
-            Geometry::Border => {
-                let (delta, n, _) = geometry(&self.cuboid, self.ball_radius, self.border, &Pose3::IDENTITY, r);
-                (delta, n)
-            }
+        let (delta, n) = if FACE {
+            (-y[DISPLACEMENT], Vec3::X)
+        } else {
+            let (delta, n, _) = geometry(&self.cuboid, self.ball_radius, self.border, &Pose3::IDENTITY, r);
+            (delta, n)
         };
         let delta = self.clock_compression(x).unwrap_or(delta);
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
-        let lever_ball = -n * self.ball_radius;
+        let lever_ball = along::<FACE>(n, -self.ball_radius);
         let point = r + lever_ball;
-        // Ball's material point minus the foot's, at p.
-        let v_rel = w + spin.cross(lever_ball) - omega.cross(point);
-        let rate = -n.dot(v_rel);
-        let sliding = v_rel + n * rate;
+        // Ball's material point minus the foot's, at p (ω_b × (−R n) = −R (ω_b × n)).
+        let v_rel = w - cross_normal::<FACE>(spin, n) * self.ball_radius - omega.cross(point);
+        let rate = -dot_normal::<FACE>(n, v_rel);
+        let sliding = tangential::<FACE>(n, v_rel);
         let (elastic, normal_force, unclamped_force) = if self.clamps {
             let (elastic, raw) = self.law.unclamped_force(delta, rate);
             (elastic, if self.phase.clamped { 0.0 } else { raw }, raw)
@@ -293,7 +301,7 @@ impl Relative {
         let damping_power = (normal_force - elastic) * rate;
 
         let xi = vec3(y, SPRING);
-        let xi_t = xi - n * xi.dot(n);
+        let xi_t = tangential::<FACE>(n, xi);
         let (k_t, c_t) = (self.tangential_stiffness, self.tangential_damping);
         let trial = xi_t * k_t + sliding * c_t;
         let trial_size = trial.length();
@@ -337,8 +345,16 @@ impl Relative {
     /// dy/dx at (x, y).
     #[inline]
     pub fn derivative(&self, x: f64, y: &State) -> State {
-        let c = self.local(x, y);
-        let force = c.normal * c.normal_force + c.tangential_force;
+        match self.phase.geometry {
+            Geometry::Face => self.derivative_on::<true>(x, y),
+            Geometry::Border => self.derivative_on::<false>(x, y),
+        }
+    }
+
+    #[inline(always)]
+    fn derivative_on<const FACE: bool>(&self, x: f64, y: &State) -> State {
+        let c = self.local_on::<FACE>(x, y);
+        let force = along::<FACE>(c.normal, c.normal_force) + c.tangential_force;
         let r = self.centre(y);
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
@@ -356,7 +372,8 @@ impl Relative {
         let (qw, qv) = (y[FOOT_ROTATION], Vec3::new(y[FOOT_ROTATION + 1], y[FOOT_ROTATION + 2], y[FOOT_ROTATION + 3]));
         dy[FOOT_ROTATION] = -0.5 * qv.dot(omega);
         put3(&mut dy, FOOT_ROTATION + 1, (omega * qw + qv.cross(omega)) * 0.5);
-        let torque_ball = (-c.normal * self.ball_radius).cross(force);
+        // (−R n) × F = R (F × n)
+        let torque_ball = cross_normal::<FACE>(force, c.normal) * self.ball_radius;
         put3(&mut dy, BALL_ANGULAR_VELOCITY, torque_ball / self.ball_inertia - omega.cross(spin));
         put3(&mut dy, SPRING, c.spring_rate);
         dy[NORMAL_IMPULSE] = c.normal_force;
@@ -395,6 +412,50 @@ impl kick_core::dop853::System<DIM> for Relative {
     #[inline]
     fn derivative(&self, x: f64, y: &State) -> State {
         Relative::derivative(self, x, y)
+    }
+}
+
+// Products with the normal n, written out for the face (n = e_x) where the
+// zeros would otherwise be multiplied (IEEE rules keep the compiler from
+// dropping them).
+
+/// n · v
+#[inline(always)]
+fn dot_normal<const FACE: bool>(n: Vec3, v: Vec3) -> f64 {
+    if FACE {
+        v.x
+    } else {
+        n.dot(v)
+    }
+}
+
+/// s n
+#[inline(always)]
+fn along<const FACE: bool>(n: Vec3, s: f64) -> Vec3 {
+    if FACE {
+        Vec3::new(s, 0.0, 0.0)
+    } else {
+        n * s
+    }
+}
+
+/// v − (v · n) n
+#[inline(always)]
+fn tangential<const FACE: bool>(n: Vec3, v: Vec3) -> Vec3 {
+    if FACE {
+        Vec3::new(0.0, v.y, v.z)
+    } else {
+        v - n * v.dot(n)
+    }
+}
+
+/// v × n
+#[inline(always)]
+fn cross_normal<const FACE: bool>(v: Vec3, n: Vec3) -> Vec3 {
+    if FACE {
+        Vec3::new(0.0, v.z, -v.y)
+    } else {
+        v.cross(n)
     }
 }
 

@@ -14,7 +14,8 @@
 //! - separation: δ from + to − (contact onset is t = 0 by construction:
 //!   free flight before touch is exact in a force-free world);
 //! - δ̇ changes sign (the damping switch of Eq. 20; + → − is max compression);
-//! - grip ↔ slip of the tangential element (μ F_n − |k_t ξ + c_t v_t| changes sign).
+//! - grip ↔ slip of the tangential element (μ F_n − |k_t ξ + c_t v_t| changes sign);
+//! - the clamp at F = 0 of a law that would pull (Kelvin–Voigt).
 //!
 //! Peaks (normal force, |tangential force|): every event point is a sample
 //! of both the phase it ends and the phase it starts (both forces are
@@ -45,7 +46,7 @@ use crate::dynamics::{self, Dynamics, State};
 use crate::error::Kick3dError;
 use crate::model::Kick3d;
 use crate::outcome::{self, EndState, EnergySample, Outcome3d, Peak, Peaks};
-use kick_core::{roots, KickError};
+use kick_core::{roots, ContactLaw, KickError};
 use ode_solvers::dop853::Dop853;
 use ode_solvers::{OutputType, System};
 
@@ -76,9 +77,11 @@ enum Event {
     Separation,
     CompressionRate,
     GripSlip,
+    /// The force of a law that would pull reaches zero (its clamp).
+    Clamp,
 }
 
-const EVENTS: [Event; 3] = [Event::Separation, Event::CompressionRate, Event::GripSlip];
+const EVENTS: [Event; 4] = [Event::Separation, Event::CompressionRate, Event::GripSlip, Event::Clamp];
 
 impl Event {
     fn value(self, dynamics: &Dynamics, y: &State) -> f64 {
@@ -87,6 +90,7 @@ impl Event {
             Event::Separation => c.compression,
             Event::CompressionRate => c.compression_rate,
             Event::GripSlip => c.grip_margin,
+            Event::Clamp => dynamics.law.unclamped_force(c.compression, c.compression_rate).1,
         }
     }
     /// A sign change away from a non-zero value: a phase that starts exactly
@@ -95,13 +99,15 @@ impl Event {
         match self {
             Event::Separation => before > 0.0 && after <= 0.0,
             Event::CompressionRate | Event::GripSlip => (before > 0.0 && after <= 0.0) || (before < 0.0 && after >= 0.0),
+            // Strict: every law's force is zero beyond separation.
+            Event::Clamp => (before > 0.0 && after < 0.0) || (before < 0.0 && after > 0.0),
         }
     }
 }
 
-fn event_values(dynamics: &Dynamics, y: &State) -> [f64; 3] {
+fn event_values(dynamics: &Dynamics, y: &State) -> [f64; 4] {
     let c = dynamics.contact(y);
-    [c.compression, c.compression_rate, c.grip_margin]
+    [c.compression, c.compression_rate, c.grip_margin, dynamics.law.unclamped_force(c.compression, c.compression_rate).1]
 }
 
 /// The quantities whose supremum over the contact is reported.
@@ -159,7 +165,7 @@ struct Bracket {
 /// The last accepted point, the samples and the brackets of one phase.
 struct Watch {
     /// (t, y, event values, dQ/dt)
-    previous: (f64, State, [f64; 3], [f64; 2]),
+    previous: (f64, State, [f64; 4], [f64; 2]),
     crossing: Option<(Event, f64, State, f64)>,
     peaks: [Peak; 2],
     brackets: Vec<Bracket>,
@@ -438,7 +444,7 @@ impl FullState3d {
                 r.push(sample(&dynamics, t, &y));
             }
             match event {
-                Event::CompressionRate | Event::GripSlip => {
+                Event::CompressionRate | Event::GripSlip | Event::Clamp => {
                     if c.compression > max_compression.0 {
                         max_compression = (c.compression, t);
                     }

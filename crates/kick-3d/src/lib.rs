@@ -28,6 +28,7 @@ pub mod model;
 pub mod models;
 pub mod one_d;
 pub mod outcome;
+pub mod precision;
 #[cfg(feature = "rapier")]
 pub mod scene;
 pub mod sweep;

@@ -63,28 +63,35 @@ impl OffCenterBox {
 /// The seed of the box sample used by the benches and `kick bench`.
 pub const BENCH_SEED: u64 = 2024;
 
-fn named(spec: Kick3dSpec, law: LawKind) -> (Scenario, Kick3dSpec, LawKind) {
-    (Scenario::baseline(), spec, law)
-}
-
-/// Named kicks: (name, kick). Each stands for a kind of contact the solvers must get right.
+/// Named kicks: (name, kick). Each stands for a kind of contact the solvers
+/// must get right: both laws' families, μ from 0 to ∞, rounded and sharp
+/// edges (two leave the flat face over an edge or a rounded border), a
+/// drive, an incoming ball, gravity.
 pub fn named_kicks() -> Result<Vec<(&'static str, Kick3d)>, Kick3dError> {
     let d = Kick3dSpec::default();
     let rounded = FootShape::RoundedBox { half_extents: [0.02, 0.11, 0.04], border_radius: 0.01 };
+    let baseline = Scenario::baseline();
+    let soft = baseline.with(Parameter::Stiffness, 1.0e5)?;
     let cases = [
-        ("central frictionless", named(Kick3dSpec { friction: Some(0.0), ..d }, LawKind::PowerLaw)),
-        ("curve 5 cm", named(Kick3dSpec { offset: Some(0.05), ..d }, LawKind::PowerLaw)),
-        ("curve 5 cm rising 10 deg", named(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..d }, LawKind::PowerLaw)),
-        ("grip 7 cm mu inf", named(Kick3dSpec { offset: Some(0.07), friction: Some(f64::INFINITY), ..d }, LawKind::PowerLaw)),
-        ("slide 9 cm mu 0.2", named(Kick3dSpec { offset: Some(0.09), friction: Some(0.2), ..d }, LawKind::PowerLaw)),
-        ("frictionless 6 cm", named(Kick3dSpec { offset: Some(0.06), friction: Some(0.0), ..d }, LawKind::PowerLaw)),
-        ("rounded 4 cm rising 20 deg", named(Kick3dSpec { offset: Some(0.04), approach_angle_deg: Some(20.0), foot_shape: Some(rounded), ..d }, LawKind::PowerLaw)),
-        ("lankarani-nikravesh 6 cm", named(Kick3dSpec { offset: Some(0.06), approach_angle_deg: Some(5.0), ..d }, LawKind::LankaraniNikravesh)),
-        ("kelvin-voigt 3 cm", named(Kick3dSpec { offset: Some(0.03), ..d }, LawKind::KelvinVoigt)),
+        ("central frictionless", baseline, Kick3dSpec { friction: Some(0.0), ..d }, LawKind::PowerLaw),
+        ("curve 5 cm", baseline, Kick3dSpec { offset: Some(0.05), ..d }, LawKind::PowerLaw),
+        ("curve 5 cm rising 10 deg", baseline, Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..d }, LawKind::PowerLaw),
+        ("grip 7 cm mu inf", baseline, Kick3dSpec { offset: Some(0.07), friction: Some(f64::INFINITY), ..d }, LawKind::PowerLaw),
+        ("slide 9 cm mu 0.2", baseline, Kick3dSpec { offset: Some(0.09), friction: Some(0.2), ..d }, LawKind::PowerLaw),
+        ("frictionless 6 cm", baseline, Kick3dSpec { offset: Some(0.06), friction: Some(0.0), ..d }, LawKind::PowerLaw),
+        ("rounded 4 cm rising 20 deg", baseline, Kick3dSpec { offset: Some(0.04), approach_angle_deg: Some(20.0), foot_shape: Some(rounded), ..d }, LawKind::PowerLaw),
+        ("over the sharp edge: soft ball 9 cm", soft, Kick3dSpec { offset: Some(0.09), friction: Some(0.2), ..d }, LawKind::PowerLaw),
+        ("onto the rounded border: soft ball rising 30 deg", soft, Kick3dSpec { approach_angle_deg: Some(30.0), friction: Some(0.05), foot_shape: Some(rounded), ..d }, LawKind::PowerLaw),
+        ("driven 800 N 5 cm", baseline.with(Parameter::DriveForce, 800.0)?, Kick3dSpec { offset: Some(0.05), ..d }, LawKind::PowerLaw),
+        ("incoming ball 8 m/s 4 cm", baseline.with(Parameter::BallSpeed, -8.0)?, Kick3dSpec { offset: Some(0.04), approach_angle_deg: Some(-10.0), ..d }, LawKind::PowerLaw),
+        ("gravity 5 cm", baseline, Kick3dSpec { offset: Some(0.05), gravity: Some(true), ..d }, LawKind::PowerLaw),
+        ("lankarani-nikravesh 6 cm", baseline, Kick3dSpec { offset: Some(0.06), approach_angle_deg: Some(5.0), ..d }, LawKind::LankaraniNikravesh),
+        ("hunt-crossley-exact 3 cm mu 1", baseline, Kick3dSpec { offset: Some(0.03), friction: Some(1.0), ..d }, LawKind::HuntCrossleyExact),
+        ("kelvin-voigt 3 cm", baseline, Kick3dSpec { offset: Some(0.03), ..d }, LawKind::KelvinVoigt),
     ];
     cases
         .into_iter()
-        .map(|(name, (base, spec, law))| {
+        .map(|(name, base, spec, law)| {
             let restitution = (law != LawKind::PowerLaw).then_some(BOX_RESTITUTION);
             Ok((name, Kick3d::new(base.with_law(law, restitution)?, &spec)?))
         })

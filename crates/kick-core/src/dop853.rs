@@ -320,6 +320,18 @@ const SAFETY: f64 = 0.9;
 const SHRINK_LIMIT: f64 = 1.0 / 0.333;
 const GROWTH_LIMIT: f64 = 1.0 / 6.0;
 
+/// y + h Σ w_j k_j over the stages with a nonzero weight (one pass).
+#[inline]
+fn combine_from<const N: usize, const M: usize>(y: &SVector<f64, N>, h: f64, weights: &[f64; M], k: &[SVector<f64, N>]) -> SVector<f64, N> {
+    let mut sum = *y;
+    for (w, kj) in weights.iter().zip(k) {
+        if *w != 0.0 {
+            sum.axpy(*w * h, kj, 1.0);
+        }
+    }
+    sum
+}
+
 /// Σ w_j k_j over the stages with a nonzero weight.
 #[inline]
 fn combine<const N: usize, const M: usize>(weights: &[f64; M], k: &[SVector<f64, N>]) -> SVector<f64, N> {
@@ -435,8 +447,8 @@ impl<const N: usize> Stepper<N> {
             }
             let k = &mut self.k;
             for s in 1..12 {
-                let increment = combine(&A[s - 1], &k[..s]);
-                k[s] = system.derivative(self.t + C[s] * h, &(self.y + increment * h));
+                let stage = combine_from(&self.y, h, &A[s - 1], &k[..s]);
+                k[s] = system.derivative(self.t + C[s] * h, &stage);
             }
             self.evaluations += 11;
             let b_sum = combine(&B, &k[..12]);
@@ -586,6 +598,27 @@ impl<const N: usize> Dense<N> {
         r[0] + (r[1] + (r[2] + (r[3] + (r[4] + (r[5] + (r[6] + r[7] * theta) * theta1) * theta) * theta1) * theta) * theta1) * theta
     }
 
+    /// y'(t) of the interpolant (its error is a power of h lower than y's).
+    pub fn derivative_at(&self, t: f64) -> SVector<f64, N> {
+        let theta = (t - self.t0) / self.h;
+        let theta1 = 1.0 - theta;
+        let r = &self.coefficients;
+        // Horner on the nested form of `at`, carrying d/dθ along.
+        let p6 = r[6] + r[7] * theta;
+        let d6 = r[7];
+        let p5 = r[5] + p6 * theta1;
+        let d5 = d6 * theta1 - p6;
+        let p4 = r[4] + p5 * theta;
+        let d4 = d5 * theta + p5;
+        let p3 = r[3] + p4 * theta1;
+        let d3 = d4 * theta1 - p4;
+        let p2 = r[2] + p3 * theta;
+        let d2 = d3 * theta + p3;
+        let p1 = r[1] + p2 * theta1;
+        let d1 = d2 * theta1 - p2;
+        (d1 * theta + p1) / self.h
+    }
+
     /// Component i of y(t).
     pub fn component(&self, i: usize, t: f64) -> f64 {
         let theta = (t - self.t0) / self.h;
@@ -621,6 +654,20 @@ mod tests {
             s.advance();
         }
         (s, worst_dense)
+    }
+
+    #[test]
+    fn dense_derivative_is_the_interpolant_s() {
+        let mut s = Stepper::new(&Oscillator, 0.0, Vector2::new(1.0, 0.0), 1e-10, Vector2::new(1e-12, 1e-12), 0.5);
+        s.step(&Oscillator).unwrap();
+        let d = s.dense(&Oscillator);
+        let t = d.t0 + 0.37 * d.h;
+        let e = 1e-6 * d.h;
+        let difference = (d.at(t + e) - d.at(t - e)) / (2.0 * e);
+        assert!((d.derivative_at(t) - difference).norm() < 1e-7, "{} vs {}", d.derivative_at(t), difference);
+        // y' = (y1, −y0) up to the interpolant's error.
+        let y = d.at(t);
+        assert!((d.derivative_at(t) - Vector2::new(y[1], -y[0])).norm() < 1e-8);
     }
 
     #[test]
