@@ -156,17 +156,7 @@ impl Dynamics {
     /// against the inner box, which is exact for the rounded box).
     /// Returns (δ, n foot → ball, point on the foot's surface).
     pub fn geometry(&self, foot: &Pose3, ball_centre: Vec3) -> (f64, Vec3, Vec3) {
-        let pos12 = foot.inv_mul(&Pose3::from_translation(ball_centre));
-        let ball = Ball::new(self.ball_radius + self.border);
-        match contact_convex_polyhedron_ball(&pos12, &self.cuboid, &ball, f64::INFINITY) {
-            Some(c) => {
-                let n = foot.rotation * c.normal1;
-                let surface = foot.transform_point(c.point1) + n * self.border;
-                (-c.dist, n, surface)
-            }
-            // Only on non-finite input; the NaN is caught before output.
-            None => (f64::NAN, Vec3::NAN, Vec3::NAN),
-        }
+        geometry(&self.cuboid, self.ball_radius, self.border, foot, ball_centre)
     }
 
     /// The contact law at state y (on the contact branch: F(0⁺) = c δ̇ for
@@ -300,11 +290,51 @@ impl Dynamics {
     pub fn elastic_energy(&self, y: &State, compression: f64) -> f64 {
         self.law.potential(compression) + 0.5 * self.tangential_stiffness * vec3(y, SPRING).length_squared()
     }
+    /// The world-frame end state of a run that stopped at state y, time t.
+    pub fn end_state(&self, kick: &Kick3d, y: &State, t: f64) -> crate::outcome::EndState {
+        let _ = kick;
+        crate::outcome::EndState {
+            time: t,
+            foot_position: vec3(y, FOOT_POSITION),
+            foot_orientation: rot(y, FOOT_ROTATION),
+            foot_velocity: vec3(y, FOOT_VELOCITY),
+            foot_angular_velocity: vec3(y, FOOT_ANGULAR_VELOCITY),
+            ball_position: vec3(y, BALL_POSITION),
+            ball_velocity: vec3(y, BALL_VELOCITY),
+            ball_angular_velocity: vec3(y, BALL_ANGULAR_VELOCITY),
+            spring: vec3(y, SPRING),
+            compression: self.contact(y).compression,
+            impulse: vec3(y, IMPULSE),
+            angular_impulse: vec3(y, ANGULAR_IMPULSE),
+            normal_impulse: y[NORMAL_IMPULSE],
+            normal_damping_loss: y[DAMPING_LOSS],
+            friction_loss: y[FRICTION_LOSS],
+            drive_work: y[DRIVE_WORK],
+            gravity_work: y[GRAVITY_WORK],
+        }
+    }
+
     /// Kinetic plus elastic energy (what a passive contact can only lose).
     pub fn mechanical_energy(&self, y: &State) -> f64 {
         let c = self.contact(y);
         self.ball_translation_energy(y) + self.ball_spin_energy(y) + self.foot_energy(y)
             + self.elastic_energy(y, c.compression)
+    }
+}
+
+/// Ball of radius `radius` against `cuboid` ⊕ a sphere of radius `border`
+/// at pose `foot`, by parry: (δ, unit normal foot → ball, point on the
+/// foot's surface); NaN only on non-finite input (caught before output).
+pub fn geometry(cuboid: &Cuboid, radius: f64, border: f64, foot: &Pose3, ball_centre: Vec3) -> (f64, Vec3, Vec3) {
+    let pos12 = foot.inv_mul(&Pose3::from_translation(ball_centre));
+    let ball = Ball::new(radius + border);
+    match contact_convex_polyhedron_ball(&pos12, cuboid, &ball, f64::INFINITY) {
+        Some(c) => {
+            let n = foot.rotation * c.normal1;
+            let surface = foot.transform_point(c.point1) + n * border;
+            (-c.dist, n, surface)
+        }
+        None => (f64::NAN, Vec3::NAN, Vec3::NAN),
     }
 }
 

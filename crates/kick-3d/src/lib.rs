@@ -4,9 +4,13 @@
 //! that an off-center contact gives (Eq. 61). Section 17 of the paper lists
 //! what its 1D model leaves out; this crate adds 17.4–17.5.
 //!
-//! Solvers (one law, three paths):
-//! - [`accurate::Accurate3d`] (`accurate`): both rigid bodies on adaptive
-//!   Dop853 with located events, parry3d giving the geometry;
+//! Solvers (one law, four paths):
+//! - [`accurate::Accurate3d`] (`accurate`): the relative motion in the foot's
+//!   frame ([`contact`]) on DOP853 with switches located on its dense
+//!   output; analytic geometry on the face, parry3d on edges and borders;
+//! - [`full_state::FullState3d`] (`full-state`): both rigid bodies in the
+//!   world frame on ode_solvers' Dop853, parry3d at every evaluation; the
+//!   independent reference of `accurate`;
 //! - [`one_d`] (`1d`): the 1D accurate solver along the normal, exact for
 //!   central, square kicks (nothing slides, so no friction and no torque);
 //! - [`scene::Scene`] (`rapier`, feature `rapier`): a rapier3d world (ground,
@@ -16,11 +20,15 @@
 
 pub mod accurate;
 pub mod checks;
+pub mod contact;
 pub mod dynamics;
 pub mod error;
+pub mod full_state;
 pub mod model;
+pub mod models;
 pub mod one_d;
 pub mod outcome;
+pub mod precision;
 #[cfg(feature = "rapier")]
 pub mod scene;
 pub mod sweep;
@@ -28,6 +36,7 @@ pub mod validation;
 
 pub use accurate::Accurate3d;
 pub use error::Kick3dError;
+pub use full_state::FullState3d;
 pub use model::{FootShape, Kick3d, Kick3dSpec, KickSpec};
 pub use outcome::{EnergyPartition, Outcome3d};
 
@@ -40,6 +49,7 @@ pub enum Solver3d {
     /// normal force then turns the foot, which the 1D model cannot follow.
     Auto,
     Accurate(Accurate3d),
+    FullState(FullState3d),
     OneD,
     #[cfg(feature = "rapier")]
     Rapier(scene::Scene),
@@ -47,21 +57,22 @@ pub enum Solver3d {
 
 impl Solver3d {
     #[cfg(feature = "rapier")]
-    pub const NAMES: [&'static str; 4] = ["auto", "accurate", "1d", "rapier"];
+    pub const NAMES: [&'static str; 5] = ["auto", "accurate", "full-state", "1d", "rapier"];
     #[cfg(not(feature = "rapier"))]
-    pub const NAMES: [&'static str; 3] = ["auto", "accurate", "1d"];
+    pub const NAMES: [&'static str; 4] = ["auto", "accurate", "full-state", "1d"];
 
     /// Look a solver up by name; `scene_step` is the rapier path's step, s.
     pub fn from_name(name: &str, scene_step: f64) -> Result<Solver3d, Kick3dError> {
         match name {
             "auto" => Ok(Solver3d::Auto),
             "accurate" => Ok(Solver3d::Accurate(Accurate3d::default())),
+            "full-state" => Ok(Solver3d::FullState(FullState3d::default())),
             "1d" => Ok(Solver3d::OneD),
             #[cfg(feature = "rapier")]
             "rapier" => Ok(Solver3d::Rapier(scene::Scene::new(scene_step)?)),
             _ => {
                 let _ = scene_step;
-                Err(Kick3dError::UnknownSolver { name: name.to_string(), expected: "auto, accurate, 1d, rapier" })
+                Err(Kick3dError::UnknownSolver { name: name.to_string(), expected: "auto, accurate, full-state, 1d, rapier" })
             }
         }
     }
@@ -88,6 +99,7 @@ impl Solver3d {
     pub fn solve(&self, kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
         match self.resolve(kick) {
             Solver3d::Accurate(s) => s.solve(kick),
+            Solver3d::FullState(s) => s.solve(kick),
             Solver3d::OneD => one_d::solve(kick),
             #[cfg(feature = "rapier")]
             Solver3d::Rapier(s) => s.solve(kick),

@@ -60,6 +60,7 @@ pub fn solve_along_normal(kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
         peak_normal_force: o.peak_force,
         peak_normal_force_time: o.peak_force_time,
         peak_tangential_force: 0.0,
+        peak_tangential_force_time: 0.0,
         max_compression: o.max_compression,
         max_compression_time: o.max_compression_time,
         // Frictionless: no Coulomb element, so no slip phase; a central square

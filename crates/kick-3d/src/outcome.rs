@@ -1,5 +1,9 @@
 //! What a 3D solver returns.
 
+use crate::model::Kick3d;
+use crate::Kick3dError;
+use kick_core::ContactLaw;
+use parry3d_f64::math::{Rot3, Vec3};
 use serde::Serialize;
 
 /// Energy partition at separation, J (Eqs. 30–33 extended by rotation and friction).
@@ -65,6 +69,7 @@ pub struct Outcome3d {
     pub peak_normal_force_time: f64,
     /// sup |F_t|, N.
     pub peak_tangential_force: f64,
+    pub peak_tangential_force_time: f64,
     pub max_compression: f64,
     pub max_compression_time: f64,
     /// Total time the tangential spring slides on its Coulomb cap, s.
@@ -130,4 +135,112 @@ impl Outcome3d {
         }
         Ok(self)
     }
+}
+
+/// A running maximum (value, time).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Peak {
+    pub value: f64,
+    pub time: f64,
+}
+
+impl Peak {
+    pub fn observe(&mut self, value: f64, time: f64) {
+        if value > self.value {
+            *self = Peak { value, time };
+        }
+    }
+}
+
+/// Extremes collected along a run.
+#[derive(Debug, Clone, Copy)]
+pub struct Peaks {
+    pub normal: Peak,
+    pub tangential: Peak,
+    /// (δ_max, its time)
+    pub compression: (f64, f64),
+    pub slip_time: f64,
+}
+
+/// Samples of a recorded run: (t, kinetic + elastic energy, damping loss, friction loss).
+pub type EnergySample = (f64, f64, f64, f64);
+
+/// Both bodies at separation, world frame, with the running integrals.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EndState {
+    pub time: f64,
+    pub foot_position: Vec3,
+    pub foot_orientation: Rot3,
+    pub foot_velocity: Vec3,
+    pub foot_angular_velocity: Vec3,
+    pub ball_position: Vec3,
+    pub ball_velocity: Vec3,
+    pub ball_angular_velocity: Vec3,
+    /// Tangential spring extension ξ.
+    pub spring: Vec3,
+    /// δ at the end (zero up to the event's location).
+    pub compression: f64,
+    /// ∫ F dt and ∫ r × F dt (about the ball centre) on the ball, ∫ F_n dt.
+    pub impulse: Vec3,
+    pub angular_impulse: Vec3,
+    pub normal_impulse: f64,
+    pub normal_damping_loss: f64,
+    pub friction_loss: f64,
+    pub drive_work: f64,
+    pub gravity_work: f64,
+}
+
+impl EndState {
+    /// Kinetic energy of the foot: translation and rotation about its principal axes.
+    pub fn foot_energy(&self, kick: &Kick3d) -> f64 {
+        let [ix, iy, iz] = kick.foot_inertia;
+        let w = self.foot_orientation.inverse() * self.foot_angular_velocity;
+        0.5 * kick.base.effective_foot_mass() * self.foot_velocity.length_squared()
+            + 0.5 * w.dot(w * Vec3::new(ix, iy, iz))
+    }
+}
+
+/// The summary at separation.
+pub(crate) fn assemble(kick: &Kick3d, end: &EndState, peaks: Peaks, evaluations: u64, solver: &'static str) -> Result<Outcome3d, Kick3dError> {
+    let r0 = -kick.initial_normal() * kick.ball_radius;
+    let fixed = r0.cross(end.impulse);
+    let law = kick.law();
+    let mut out = Outcome3d {
+        launch_velocity: end.ball_velocity.to_array(),
+        spin: end.ball_angular_velocity.to_array(),
+        speed: 0.0,
+        spin_rpm: 0.0,
+        launch_angle: 0.0,
+        launch_azimuth: 0.0,
+        foot_velocity: end.foot_velocity.to_array(),
+        foot_angular_velocity: end.foot_angular_velocity.to_array(),
+        contact_time: end.time,
+        peak_normal_force: peaks.normal.value,
+        peak_normal_force_time: peaks.normal.time,
+        peak_tangential_force: peaks.tangential.value,
+        peak_tangential_force_time: peaks.tangential.time,
+        max_compression: peaks.compression.0,
+        max_compression_time: peaks.compression.1,
+        slip_time: peaks.slip_time,
+        impulse: end.impulse.to_array(),
+        normal_impulse: end.normal_impulse,
+        angular_impulse: end.angular_impulse.to_array(),
+        angular_impulse_fixed_point: fixed.to_array(),
+        energy: EnergyPartition {
+            kinetic_initial: kick.initial_kinetic_energy(),
+            ball_translation: 0.5 * kick.base.ball_mass() * end.ball_velocity.length_squared(),
+            ball_spin: 0.5 * kick.ball_inertia * end.ball_angular_velocity.length_squared(),
+            foot: end.foot_energy(kick),
+            elastic_final: law.potential(end.compression) + 0.5 * kick.tangential_stiffness * end.spring.length_squared(),
+            normal_damping_loss: end.normal_damping_loss,
+            friction_loss: end.friction_loss,
+            drive_work: end.drive_work,
+            gravity_work: end.gravity_work,
+        },
+        evaluations,
+        solver,
+        law: law.kind(),
+    };
+    out.derive_summary();
+    Ok(out.check_finite()?)
 }

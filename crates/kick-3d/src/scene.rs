@@ -20,11 +20,10 @@
 //! The path exists for
 //! scenes the accurate path cannot hold (ground, later a leg), not for precision.
 
-use crate::accurate::Peaks;
+use crate::outcome::{self, Outcome3d, Peak, Peaks};
 use crate::dynamics::{self, Dynamics, State};
 use crate::error::Kick3dError;
 use crate::model::{FootShape, Kick3d};
-use crate::outcome::Outcome3d;
 use parry3d_f64::math::Vec3;
 use rapier3d_f64::prelude::*;
 
@@ -108,8 +107,8 @@ impl Scene {
         let max_steps = (horizon / self.step).ceil().min(1e9) as u64;
         let mut y = start;
         let first = dynamics.contact(&y);
-        let mut peak_normal = (first.normal_force, 0.0);
-        let mut peak_tangential = first.tangential_force.length();
+        let mut peak_normal = Peak { value: first.normal_force, time: 0.0 };
+        let mut peak_tangential = Peak { value: first.tangential_force.length(), time: 0.0 };
         let mut max_compression = (0.0f64, 0.0);
         let mut slip_time = 0.0;
         let mut t = 0.0;
@@ -127,17 +126,16 @@ impl Scene {
                     compression: max_compression,
                     slip_time,
                 };
-                let mut out = crate::accurate::outcome(kick, &dynamics, &y, t_sep, peaks, step, "rapier")?;
+                let end = dynamics.end_state(kick, &y, t_sep);
+                let mut out = outcome::assemble(kick, &end, peaks, step, "rapier")?;
                 out.evaluations = step;
                 return Ok(out);
             }
             if c.compression > max_compression.0 {
                 max_compression = (c.compression, t);
             }
-            if c.normal_force > peak_normal.0 {
-                peak_normal = (c.normal_force, t);
-            }
-            peak_tangential = peak_tangential.max(c.tangential_force.length());
+            peak_normal.observe(c.normal_force, t);
+            peak_tangential.observe(c.tangential_force.length(), t);
             if c.is_slipping() {
                 slip_time += dt;
             }

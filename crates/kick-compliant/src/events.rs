@@ -10,8 +10,14 @@
 //!
 //! Events: maximum compression (δ̇: + → −), separation (δ: + → −) and
 //! re-compression (δ̇: − → +, possible with a drive) end a phase; a force
-//! peak (dF/dt: + → −) does not: its step is remembered and the peak is
-//! located after the phase, so the integrator keeps its step size.
+//! peak (dF/dt: + → −) does not: it is located as soon as its step is
+//! accepted (on re-integrations, so the integrator keeps its step size).
+//! Every peak of a phase is located, not only the one whose step ends look
+//! highest. An event point is a sample of the force of both the phase it
+//! ends and the one it starts (F is continuous, only dF/dt jumps): dF/dt at
+//! a phase's start is taken on the new side, and the last stretch of a phase,
+//! from its last accepted point to the event, is searched for a peak with
+//! dF/dt at the event taken on the old side.
 //!
 //! Histories ([`Recorder`]) are sampled between accepted steps by
 //! re-integrating from the step's start to each grid time with the same
@@ -233,16 +239,8 @@ impl<S: ContactSystem<N>, const N: usize> Scaled<S, N> {
     }
 }
 
-/// An accepted step across which dF/dt fell through zero.
-#[derive(Debug, Clone, Copy)]
-struct PeakStep<const N: usize> {
-    tau_a: f64,
-    y_a: SVector<f64, N>,
-    tau_b: f64,
-    y_b: SVector<f64, N>,
-    /// Larger of the forces at the two ends, to keep the highest peak.
-    sampled_force: f64,
-}
+/// The highest force peak located so far in a phase: (F, τ, scaled state).
+type LocatedPeak<const N: usize> = Option<(f64, f64, SVector<f64, N>)>;
 
 /// Samples the span from an accepted point (τ_a, y_a) to τ_b (`inclusive`
 /// of τ_b or not), scaled units.
@@ -265,7 +263,10 @@ struct Watcher<'a, 'f, S, const N: usize> {
     previous_force_rate: f64,
     previous_tau: f64,
     previous_state: SVector<f64, N>,
-    peak: &'a mut Option<PeakStep<N>>,
+    method: Method,
+    peak: &'a mut LocatedPeak<N>,
+    /// Right-hand sides spent locating peaks.
+    evaluations: &'a mut u64,
     fill: Option<&'f mut Fill<'f, N>>,
     failure: &'a mut Option<KickError>,
 }
@@ -278,23 +279,37 @@ impl<S: ContactSystem<N>, const N: usize> System<f64, SVector<f64, N>> for Watch
         let after = self.scaled.unscale(y);
         let system = &self.scaled.system;
         let force_rate = system.force_rate(&after);
-        if Event::ForcePeak.crossed(self.previous_force_rate, force_rate) {
-            let sampled_force = system.force(&after).max(system.force(&self.scaled.unscale(&self.previous_state)));
-            if self.peak.is_none_or(|p| sampled_force > p.sampled_force) {
-                *self.peak = Some(PeakStep {
-                    tau_a: self.previous_tau,
-                    y_a: self.previous_state,
-                    tau_b: tau,
-                    y_b: *y,
-                    sampled_force,
-                });
-            }
-        }
         let mut values = [0.0; 3];
         for (i, event) in self.events.iter().enumerate() {
             values[i] = event.value(system, &after);
             if event.crossed(self.previous[i], values[i]) {
+                // The phase ends in this step; its last stretch is searched
+                // once the event is located.
                 return true;
+            }
+        }
+        if Event::ForcePeak.crossed(self.previous_force_rate, force_rate) {
+            let located = locate(
+                self.method,
+                self.scaled,
+                self.evaluations,
+                Event::ForcePeak,
+                self.previous_tau,
+                self.previous_state,
+                tau,
+                *y,
+            );
+            match located {
+                Ok((tau_peak, y_peak)) => {
+                    let force = system.force(&self.scaled.unscale(&y_peak));
+                    if self.peak.is_none_or(|(best, _, _)| force > best) {
+                        *self.peak = Some((force, tau_peak, y_peak));
+                    }
+                }
+                Err(error) => {
+                    *self.failure = Some(error);
+                    return true;
+                }
             }
         }
 
@@ -435,6 +450,74 @@ fn advance<S: ContactSystem<N>, const N: usize>(
     steps.last.map(|(_, y)| y).ok_or_else(|| integration_error(tau0, scaled.time, "empty step"))
 }
 
+/// The event's time between two accepted points, and the state there on
+/// the far side of the crossing (so the next phase does not see it again).
+///
+/// Start from the cubic Hermite root of g (with dg/dt where the event has
+/// it), then Newton (or secant) steps on g(y(τ)), y(τ) re-integrated from
+/// the step start; a bracket keeps every iterate inside the step.
+#[allow(clippy::too_many_arguments)]
+fn locate<S: ContactSystem<N>, const N: usize>(
+    method: Method,
+    scaled: Scaled<S, N>,
+    evaluations: &mut u64,
+    event: Event,
+    tau_a: f64,
+    y_a: SVector<f64, N>,
+    tau_b: f64,
+    y_b: SVector<f64, N>,
+) -> Result<(f64, SVector<f64, N>), KickError> {
+    let difference_step = 1e-6 * scaled.time * (tau_b - tau_a);
+    let value = |y: &SVector<f64, N>| event.value(&scaled.system, &scaled.unscale(y));
+    let rate = |y: &SVector<f64, N>| event.rate(&scaled.system, &scaled.unscale(y), difference_step) * scaled.time;
+    let (g_a, g_b) = (value(&y_a), value(&y_b));
+    let h = tau_b - tau_a;
+    let tolerance = 4.0 * f64::EPSILON * tau_b.abs().max(h);
+    // First guess: root of the cubic Hermite interpolant of g on [0, 1].
+    let (r_a, r_b) = (rate(&y_a), rate(&y_b));
+    let cubic = |s: f64| {
+        let (s2, s3) = (s * s, s * s * s);
+        (2.0 * s3 - 3.0 * s2 + 1.0) * g_a + (s3 - 2.0 * s2 + s) * h * r_a
+            + (-2.0 * s3 + 3.0 * s2) * g_b + (s3 - s2) * h * r_b
+    };
+    let guess = roots::brent(cubic, 0.0, 1.0, 1e-15, 100).map_or(g_a / (g_a - g_b), |r| r.x);
+    let (mut low, mut high, mut y_high) = (tau_a, tau_b, y_b);
+    let mut tau = tau_a + guess.clamp(0.0, 1.0) * h;
+    let mut previous: Option<(f64, f64)> = None;
+    for _ in 0..MAX_LOCATE_ITERATIONS {
+        if !(tau > low && tau < high) {
+            tau = 0.5 * (low + high);
+        }
+        let y = advance(method, scaled, tau_a, y_a, tau, evaluations)?;
+        let g = value(&y);
+        if g == 0.0 {
+            return Ok((tau, y));
+        }
+        if event.crossed(g_a, g) {
+            high = tau;
+            y_high = y;
+        } else {
+            low = tau;
+        }
+        let r = rate(&y);
+        let step = match previous {
+            _ if r != 0.0 && r.is_finite() => -g / r,
+            Some((tau_p, g_p)) if g != g_p => -g * (tau - tau_p) / (g - g_p),
+            _ => 0.5 * (low + high) - tau,
+        };
+        // Converged: the root is within rounding of τ. The next phase
+        // starts with this event's value taken as exactly zero, so a
+        // state a rounding error short of the crossing is not seen twice.
+        if step.abs() <= tolerance || high - low <= tolerance {
+            return Ok(if high - low <= tolerance { (high, y_high) } else { (tau, y) });
+        }
+        previous = Some((tau, g));
+        tau += step;
+    }
+    Ok((high, y_high))
+}
+
+
 /// The engine for one scenario.
 pub struct Engine<S, const N: usize> {
     method: Method,
@@ -476,17 +559,6 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         })
     }
 
-    /// y(t1) from y(t0), in one step when the error estimate allows.
-    fn advance(&mut self, tau0: f64, y0: SVector<f64, N>, tau1: f64) -> Result<SVector<f64, N>, KickError> {
-        advance(self.method, self.scaled, tau0, y0, tau1, &mut self.evaluations)
-    }
-
-    /// The event's time between two accepted points, and the state there on
-    /// the far side of the crossing (so the next phase does not see it again).
-    ///
-    /// Start from the cubic Hermite root of g (with dg/dt where the event has
-    /// it), then Newton (or secant) steps on g(y(τ)), y(τ) re-integrated from
-    /// the step start; a bracket keeps every iterate inside the step.
     fn locate(
         &mut self,
         event: Event,
@@ -495,55 +567,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         tau_b: f64,
         y_b: SVector<f64, N>,
     ) -> Result<(f64, SVector<f64, N>), KickError> {
-        let scaled = self.scaled;
-        let difference_step = 1e-6 * scaled.time * (tau_b - tau_a);
-        let value = |y: &SVector<f64, N>| event.value(&scaled.system, &scaled.unscale(y));
-        let rate = |y: &SVector<f64, N>| event.rate(&scaled.system, &scaled.unscale(y), difference_step) * scaled.time;
-        let (g_a, g_b) = (value(&y_a), value(&y_b));
-        let h = tau_b - tau_a;
-        let tolerance = 4.0 * f64::EPSILON * tau_b.abs().max(h);
-        // First guess: root of the cubic Hermite interpolant of g on [0, 1].
-        let (r_a, r_b) = (rate(&y_a), rate(&y_b));
-        let cubic = |s: f64| {
-            let (s2, s3) = (s * s, s * s * s);
-            (2.0 * s3 - 3.0 * s2 + 1.0) * g_a + (s3 - 2.0 * s2 + s) * h * r_a
-                + (-2.0 * s3 + 3.0 * s2) * g_b + (s3 - s2) * h * r_b
-        };
-        let guess = roots::brent(cubic, 0.0, 1.0, 1e-15, 100).map_or(g_a / (g_a - g_b), |r| r.x);
-        let (mut low, mut high, mut y_high) = (tau_a, tau_b, y_b);
-        let mut tau = tau_a + guess.clamp(0.0, 1.0) * h;
-        let mut previous: Option<(f64, f64)> = None;
-        for _ in 0..MAX_LOCATE_ITERATIONS {
-            if !(tau > low && tau < high) {
-                tau = 0.5 * (low + high);
-            }
-            let y = self.advance(tau_a, y_a, tau)?;
-            let g = value(&y);
-            if g == 0.0 {
-                return Ok((tau, y));
-            }
-            if event.crossed(g_a, g) {
-                high = tau;
-                y_high = y;
-            } else {
-                low = tau;
-            }
-            let r = rate(&y);
-            let step = match previous {
-                _ if r != 0.0 && r.is_finite() => -g / r,
-                Some((tau_p, g_p)) if g != g_p => -g * (tau - tau_p) / (g - g_p),
-                _ => 0.5 * (low + high) - tau,
-            };
-            // Converged: the root is within rounding of τ. The next phase
-            // starts with this event's value taken as exactly zero, so a
-            // state a rounding error short of the crossing is not seen twice.
-            if step.abs() <= tolerance || high - low <= tolerance {
-                return Ok(if high - low <= tolerance { (high, y_high) } else { (tau, y) });
-            }
-            previous = Some((tau, g));
-            tau += step;
-        }
-        Ok((high, y_high))
+        locate(self.method, self.scaled, &mut self.evaluations, event, tau_a, y_a, tau_b, y_b)
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -579,7 +603,8 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             let value = event.value(&self.scaled.system, &start);
             *slot = if value.abs() <= event.unit(&self.scales) * 1e-12 { 0.0 } else { value };
         }
-        let mut peak = None;
+        let mut peak: LocatedPeak<N> = None;
+        let mut peak_evaluations = 0;
         let mut failure = None;
         let watcher = Watcher {
             scaled: self.scaled,
@@ -588,7 +613,9 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             previous_force_rate: self.scaled.system.force_rate(&start),
             previous_tau: tau,
             previous_state: y,
+            method: self.method,
             peak: &mut peak,
+            evaluations: &mut peak_evaluations,
             fill: fill.as_mut().map(|f| f as &mut Fill<N>),
             failure: &mut failure,
         };
@@ -599,6 +626,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         let steps = integrate(
             self.method, watcher, tau, tau_end, y, max_step, first_step, self.scaled.time, &mut self.evaluations,
         );
+        self.evaluations += peak_evaluations;
         if let Some(error) = failure {
             return Err(error);
         }
@@ -626,16 +654,20 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
                 if let Some(fill) = fill.as_mut() {
                     fill(tau_a, y_a, tau_event, event != Event::Separation)?;
                 }
+                // The last stretch, from the last accepted point to the
+                // event, with dF/dt at the event on this phase's side.
+                let rate_at_event = system.force_rate(&self.scaled.unscale(&state));
+                if Event::ForcePeak.crossed(system.force_rate(&before), rate_at_event) {
+                    let (tau_peak, y_peak) = self.locate(Event::ForcePeak, tau_a, y_a, tau_event, state)?;
+                    let force = system.force(&self.scaled.unscale(&y_peak));
+                    if peak.is_none_or(|(best, _, _)| force > best) {
+                        peak = Some((force, tau_peak, y_peak));
+                    }
+                }
                 end.event = Some((event, tau_event, state));
             }
         }
-        if let Some(p) = peak {
-            let (tau_peak, state) = self.locate(Event::ForcePeak, p.tau_a, p.y_a, p.tau_b, p.y_b)?;
-            // A peak past the phase's end belongs to the next phase's start.
-            if end.event.is_none_or(|(_, tau_event, _)| tau_peak <= tau_event) {
-                end.peak = Some((tau_peak, state));
-            }
-        }
+        end.peak = peak.map(|(_, tau_peak, y_peak)| (tau_peak, y_peak));
         Ok(end)
     }
 

@@ -54,6 +54,13 @@ pub trait ContactLaw {
     fn branch_force_and_gradient(&self, compression: f64, compression_rate: f64, _compressing: bool) -> (f64, f64, f64) {
         self.force_and_gradient(compression, compression_rate)
     }
+    /// (elastic part, force before any clamp at zero) on the contact branch:
+    /// a law that would pull (Kelvin–Voigt, a hysteresis law at 1 + χ δ̇ < 0)
+    /// is clamped to F = 0 where this is negative. Integrators that treat
+    /// the clamp as a switch continue the law smoothly with it.
+    fn unclamped_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        self.elastic_and_contact_force(compression, compression_rate)
+    }
     /// True when the law dissipates only while compressing (δ̇ > 0), so the
     /// restitution phase of a passive run is conservative.
     fn damps_compression_only(&self) -> bool {

@@ -159,6 +159,17 @@ impl ContactLaw for HysteresisContact {
     fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
         self.raw(compression, compression_rate).max(0.0)
     }
+    /// One power for both (the same values as the two calls).
+    #[inline]
+    fn elastic_and_contact_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        let (elastic, raw) = self.unclamped_force(compression, compression_rate);
+        (elastic, raw.max(0.0))
+    }
+    #[inline]
+    fn unclamped_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        let elastic = if compression > 0.0 { self.stiffness * compression.powf(self.exponent) } else { 0.0 };
+        (elastic, elastic * (1.0 + self.hysteresis * compression_rate))
+    }
     fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
         let factor = 1.0 + self.hysteresis * compression_rate;
         if factor <= 0.0 {
@@ -236,6 +247,10 @@ impl ContactLaw for KelvinVoigt {
     #[inline]
     fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
         self.raw(compression, compression_rate).max(0.0)
+    }
+    #[inline]
+    fn unclamped_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
+        (self.stiffness * compression.max(0.0), self.raw(compression, compression_rate))
     }
     fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
         if self.raw(compression, compression_rate) <= 0.0 {
@@ -451,6 +466,8 @@ forward_contact_law! {
     #[inline]
     fn force_and_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64, f64);
     #[inline]
+    fn unclamped_force(&self, compression: f64, compression_rate: f64) -> (f64, f64);
+    #[inline]
     fn branch_force(&self, compression: f64, compression_rate: f64, compressing: bool) -> (f64, f64);
     #[inline]
     fn branch_force_and_gradient(&self, compression: f64, compression_rate: f64, compressing: bool) -> (f64, f64, f64);
@@ -599,6 +616,7 @@ mod tests {
                     assert_eq!(any.elastic_and_contact_force(d, r), law.elastic_and_contact_force(d, r), "{kind:?}");
                     assert_eq!(any.force_gradient(d, r), law.force_gradient(d, r), "{kind:?}");
                     assert_eq!(any.force_and_gradient(d, r), law.force_and_gradient(d, r), "{kind:?}");
+                    assert_eq!(any.unclamped_force(d, r), law.unclamped_force(d, r), "{kind:?}");
                     for compressing in [true, false] {
                         assert_eq!(any.branch_force(d, r, compressing), law.branch_force(d, r, compressing), "{kind:?} {d} {r}");
                         assert_eq!(

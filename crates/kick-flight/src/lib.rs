@@ -42,7 +42,8 @@
 
 pub mod air;
 pub mod coefficients;
-pub mod dop853;
+/// The integrator lives in kick-core (kick-3d steps with it too).
+pub use kick_core::dop853;
 pub mod models;
 pub mod solve;
 pub mod spec;

@@ -109,7 +109,7 @@ impl Dynamics {
 
 impl System<9> for Dynamics {
     #[inline]
-    fn derivative(&self, y: &State) -> State {
+    fn derivative(&self, _t: f64, y: &State) -> State {
         let v = Vector3::new(y[3], y[4], y[5]);
         let w = Vector3::new(y[6], y[7], y[8]);
         let v2 = v.norm_squared();
@@ -412,7 +412,7 @@ mod tests {
         let dynamics = Dynamics::new(&flight);
         let (v, a, b) = (20.0, 150.0, -40.0);
         let y = State::from_column_slice(&[0.0, 0.0, 1.0, v, 0.0, 0.0, a, b, 0.0]);
-        let dy = dynamics.derivative(&y);
+        let dy = dynamics.derivative(0.0, &y);
         let k = dynamics.aero;
         let s = flight.ball_radius() * b.abs() / v;
         // ω × v = (0, 0, −b v): straight up for backspin b < 0.

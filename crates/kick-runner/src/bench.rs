@@ -139,6 +139,15 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
          (medians of 3 alternating runs; 2 threads {:.0}-{:.0}/s)",
         sweep.samples, one, two, two / one, twos[0], twos[2]
     );
+    let kicks = if args.quick { 20 } else { 200 };
+    let cost = kick_3d::precision::cost_ratio(kicks, kick_3d::models::BENCH_SEED, min_time / 30.0).map_err(|e| e.to_string())?;
+    println!(
+        "off-center 3D kick (auto) vs the same kick's 1D contact (auto): {:.1} µs vs {:.2} µs, ratio {:.1}x \
+         (medians over {kicks} kicks of kick_3d::models::OffCenterBox, timed alternately)",
+        cost.seconds_3d * 1e6,
+        cost.seconds_1d * 1e6,
+        cost.ratio
+    );
 
     // Results file, then the figure drawn from it.
     std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create {}: {e}", args.out.display()))?;
@@ -167,6 +176,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         ("sweep_per_second_1_thread", one),
         ("sweep_per_second_2_threads", two),
         ("sweep_samples", sweep.samples as f64),
+        ("off_center_3d_vs_1d_cost_ratio", cost.ratio),
     ] {
         write_f64_attr(writer.file(), &path, name, value).map_err(|e| e.to_string())?;
     }

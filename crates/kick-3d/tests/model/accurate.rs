@@ -1,8 +1,7 @@
 //! The accurate 3D path against the 1D solver, closed forms and conservation laws.
 
 use kick_3d::checks::{kick, MATCH_1D};
-use kick_3d::dynamics::{self, Dynamics};
-use kick_3d::{Accurate3d, FootShape, Kick3d, Kick3dError, Kick3dSpec, Solver3d};
+use kick_3d::{Accurate3d, FootShape, FullState3d, Kick3d, Kick3dError, Kick3dSpec, Solver3d};
 use kick_core::{AnyLaw, KickError, LawKind, Parameter, Scenario};
 
 fn rel(a: f64, b: f64) -> f64 {
@@ -139,31 +138,38 @@ fn passive_energy_never_rises_and_closes_at_every_step() {
 #[test]
 fn momentum_and_angular_momentum_of_the_pair_are_conserved() {
     // No drive, no gravity: nothing outside the pair pushes or twists it.
+    // (The accurate path integrates the relative motion, so its momentum is
+    // exact by construction; its angular momentum is not.)
     let k = kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() });
     let (m_f, m_b) = (k.base.effective_foot_mass(), k.base.ball_mass());
-    let total = |y: &dynamics::State| {
-        let v = |i| dynamics::vec3(y, i);
-        let momentum = v(dynamics::FOOT_VELOCITY) * m_f + v(dynamics::BALL_VELOCITY) * m_b;
-        let q = dynamics::rot(y, dynamics::FOOT_ROTATION);
-        let [ix, iy, iz] = k.foot_inertia;
-        let foot_spin = q * ((q.inverse() * v(dynamics::FOOT_ANGULAR_VELOCITY)) * parry3d_f64::math::Vec3::new(ix, iy, iz));
-        let angular = v(dynamics::FOOT_POSITION).cross(v(dynamics::FOOT_VELOCITY) * m_f)
+    let [ix, iy, iz] = k.foot_inertia;
+    let total = |e: &kick_3d::outcome::EndState| {
+        let momentum = e.foot_velocity * m_f + e.ball_velocity * m_b;
+        let q = e.foot_orientation;
+        let foot_spin = q * ((q.inverse() * e.foot_angular_velocity) * parry3d_f64::math::Vec3::new(ix, iy, iz));
+        let angular = e.foot_position.cross(e.foot_velocity * m_f)
             + foot_spin
-            + v(dynamics::BALL_POSITION).cross(v(dynamics::BALL_VELOCITY) * m_b)
-            + v(dynamics::BALL_ANGULAR_VELOCITY) * k.ball_inertia;
+            + e.ball_position.cross(e.ball_velocity * m_b)
+            + e.ball_angular_velocity * k.ball_inertia;
         (momentum, angular)
     };
-    let y0 = dynamics::initial_state(&k);
-    let (o, y1) = Accurate3d::default().solve_to_state(&k).unwrap();
-    let ((p0, l0), (p1, l1)) = (total(&y0), total(&y1));
-    let p_scale = p0.length();
-    // Angular momentum scale: the ball's spin part, which the contact creates.
-    let l_scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
-    println!("momentum drift {:.2e}, angular momentum drift {:.2e} (scale {l_scale:.3e})", (p1 - p0).length() / p_scale, (l1 - l0).length() / l_scale);
-    assert!((p1 - p0).length() / p_scale <= 1e-12);
-    // Integrated, not exact: the solver's tolerance (1e-9 of the ball's angular momentum).
-    assert!((l1 - l0).length() / l_scale <= 1e-9);
-    let _ = Dynamics::new(&k);
+    let s = k.initial_state();
+    let momentum0 = s.foot_velocity * m_f + s.ball_velocity * m_b;
+    let angular0 = s.foot_position.cross(s.foot_velocity * m_f) + s.ball_position.cross(s.ball_velocity * m_b);
+    for (name, (o, end)) in [
+        ("accurate", Accurate3d::default().solve_to_state(&k).unwrap()),
+        ("full-state", FullState3d::default().solve_to_state(&k).unwrap()),
+    ] {
+        let (p1, l1) = total(&end);
+        let p_scale = momentum0.length();
+        // Angular momentum scale: the ball's spin part, which the contact creates.
+        let l_scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
+        let (dp, dl) = ((p1 - momentum0).length() / p_scale, (l1 - angular0).length() / l_scale);
+        println!("{name}: momentum drift {dp:.2e}, angular momentum drift {dl:.2e} (scale {l_scale:.3e})");
+        assert!(dp <= 1e-12, "{name}");
+        // Integrated, not exact: the solver's tolerance (1e-9 of the ball's angular momentum).
+        assert!(dl <= 1e-9, "{name}");
+    }
 }
 
 #[test]
@@ -206,7 +212,8 @@ fn bad_input_is_a_typed_error() {
     let ground = kick(Kick3dSpec { ground: Some(true), ..Default::default() });
     assert!(matches!(Accurate3d::default().solve(&ground), Err(Kick3dError::UnsupportedScene { .. })));
     assert!(matches!(Solver3d::from_name("euler", 1e-5), Err(Kick3dError::UnknownSolver { .. })));
-    assert!(matches!(Accurate3d::new(0.0, 1e-15), Err(Kick3dError::InvalidParameter { .. })));
+    assert!(matches!(Accurate3d::new(0.0), Err(Kick3dError::InvalidParameter { .. })));
+    assert!(matches!(FullState3d::new(0.0, 1e-15), Err(Kick3dError::InvalidParameter { .. })));
 }
 
 #[test]
@@ -273,9 +280,10 @@ fn contact_stays_on_the_face_in_the_swept_range() {
     // (the face is 24 x 10 cm; the contact point is checked in the foot's frame).
     for (e, a) in [(0.09, 0.0), (0.0, 40.0), (-0.09, 40.0)] {
         let k = kick(Kick3dSpec { offset: Some(e), approach_angle_deg: Some(a), ..Kick3dSpec::default() });
-        let (_, y) = Accurate3d::default().solve_to_state(&k).unwrap();
-        let c = Dynamics::new(&k).contact(&y);
-        let local = Dynamics::foot_pose(&y).inverse_transform_point(c.point);
+        let (_, end) = Accurate3d::default().solve_to_state(&k).unwrap();
+        // The ball's point nearest the foot, in the foot's frame.
+        let centre = end.foot_orientation.inverse() * (end.ball_position - end.foot_position);
+        let local = centre - parry3d_f64::math::Vec3::X * k.ball_radius;
         let [hx, hy, hz] = k.foot_shape.half_extents();
         println!("e {e} a {a}: contact at {local:?}");
         assert!((local.x - hx).abs() < 1e-9 && local.y.abs() < hy && local.z.abs() < hz, "{local:?}");

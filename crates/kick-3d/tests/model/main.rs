@@ -4,3 +4,6 @@ mod accurate;
 mod checks;
 mod scene;
 mod validation;
+mod box_accuracy;
+mod peaks;
+mod support;

@@ -8,8 +8,8 @@
 //! in [1/3, 6], no PI term). The coefficients are the published ones.
 //!
 //! Why not `ode_solvers::Dop853`: it integrates to a fixed end and collects
-//! every step into vectors; a flight needs to stop at located events and its
-//! summary path must not allocate. The dense output costs three more
+//! every step into vectors; a flight (kick-flight) and a contact (kick-3d)
+//! need to stop at located events, and their summary paths must not allocate. The dense output costs three more
 //! right-hand sides per step, so it is formed only for the steps that ask.
 
 // The published coefficients keep all their digits.
@@ -17,9 +17,9 @@
 
 use nalgebra::SVector;
 
-/// An autonomous system y' = f(y).
+/// A system y' = f(x, y) (x: the independent variable, usually time).
 pub trait System<const N: usize> {
-    fn derivative(&self, y: &SVector<f64, N>) -> SVector<f64, N>;
+    fn derivative(&self, x: f64, y: &SVector<f64, N>) -> SVector<f64, N>;
 }
 
 /// Why stepping stopped short.
@@ -34,8 +34,7 @@ pub enum StepFailure {
 /// Most rejected tries for one step before giving up.
 pub const MAX_REJECTIONS: u32 = 100;
 
-/// Nodes c_i (the system is autonomous: only the tests use them, to check the tableau).
-#[cfg(test)]
+/// Nodes c_i.
 const C: [f64; 16] = [
     0.0,
     0.526001519587677318785587544488E-01,
@@ -321,6 +320,18 @@ const SAFETY: f64 = 0.9;
 const SHRINK_LIMIT: f64 = 1.0 / 0.333;
 const GROWTH_LIMIT: f64 = 1.0 / 6.0;
 
+/// y + h Σ w_j k_j over the stages with a nonzero weight (one pass).
+#[inline]
+fn combine_from<const N: usize, const M: usize>(y: &SVector<f64, N>, h: f64, weights: &[f64; M], k: &[SVector<f64, N>]) -> SVector<f64, N> {
+    let mut sum = *y;
+    for (w, kj) in weights.iter().zip(k) {
+        if *w != 0.0 {
+            sum.axpy(*w * h, kj, 1.0);
+        }
+    }
+    sum
+}
+
 /// Σ w_j k_j over the stages with a nonzero weight.
 #[inline]
 fn combine<const N: usize, const M: usize>(weights: &[f64; M], k: &[SVector<f64, N>]) -> SVector<f64, N> {
@@ -365,7 +376,7 @@ impl<const N: usize> Stepper<N> {
         absolute_tolerance: SVector<f64, N>,
         h_max: f64,
     ) -> Self {
-        let f0 = system.derivative(&y);
+        let f0 = system.derivative(t, &y);
         let mut k = [SVector::<f64, N>::zeros(); 13];
         k[0] = f0;
         let mut stepper = Stepper {
@@ -402,7 +413,7 @@ impl<const N: usize> Stepper<N> {
         }
         let mut h0 = if d0 < 1e-10 || d1 < 1e-10 { 1e-6 } else { 0.01 * (d0 / d1).sqrt() };
         h0 = h0.min(self.h_max);
-        let f1 = system.derivative(&(self.y + f0 * h0));
+        let f1 = system.derivative(self.t + h0, &(self.y + f0 * h0));
         self.evaluations += 1;
         let mut d2 = 0.0;
         for i in 0..N {
@@ -436,8 +447,8 @@ impl<const N: usize> Stepper<N> {
             }
             let k = &mut self.k;
             for s in 1..12 {
-                let increment = combine(&A[s - 1], &k[..s]);
-                k[s] = system.derivative(&(self.y + increment * h));
+                let stage = combine_from(&self.y, h, &A[s - 1], &k[..s]);
+                k[s] = system.derivative(self.t + C[s] * h, &stage);
             }
             self.evaluations += 11;
             let b_sum = combine(&B, &k[..12]);
@@ -470,7 +481,7 @@ impl<const N: usize> Stepper<N> {
             let fac = (fac11 / SAFETY).clamp(GROWTH_LIMIT, SHRINK_LIMIT);
             let mut h_new = h / fac;
             if err <= 1.0 {
-                self.k[12] = system.derivative(&y_new);
+                self.k[12] = system.derivative(self.t + h, &y_new);
                 self.evaluations += 1;
                 if self.rejected_last {
                     h_new = h_new.min(h);
@@ -496,6 +507,40 @@ impl<const N: usize> Stepper<N> {
         }
     }
 
+    /// y' at the end of the last accepted step (k13; call before `advance`).
+    pub fn end_derivative(&self) -> &SVector<f64, N> {
+        &self.k[12]
+    }
+
+    /// y' at the start of the next step (k1: after `advance` or `restart`).
+    pub fn start_derivative(&self) -> &SVector<f64, N> {
+        &self.k[0]
+    }
+
+    /// Go on from (t, y) with `system` (a new right-hand side after a
+    /// located switch), keeping the step size: one evaluation.
+    pub fn restart<S: System<N>>(&mut self, system: &S, t: f64, y: SVector<f64, N>) {
+        self.t = t;
+        self.y = y;
+        self.k[0] = system.derivative(t, &y);
+        self.evaluations += 1;
+        self.rejected_last = false;
+    }
+
+    /// The size the next step will try.
+    pub fn next_step(&self) -> f64 {
+        self.h
+    }
+    /// Try `h` next (after a change of independent variable).
+    pub fn set_next_step(&mut self, h: f64) {
+        self.h = h;
+    }
+
+    /// Bound later steps to `h_max` (to land on a known end of the independent variable).
+    pub fn set_max_step(&mut self, h_max: f64) {
+        self.h_max = h_max;
+    }
+
     /// Set k1 of the next step: after `step`, k13 of this one.
     /// (Kept apart so `dense` can still read this step's stages.)
     pub fn advance(&mut self) {
@@ -510,9 +555,9 @@ impl<const N: usize> Stepper<N> {
         let k = &self.k;
         let mut all = [SVector::<f64, N>::zeros(); 16];
         all[..13].copy_from_slice(k);
-        all[13] = system.derivative(&(y0 + combine(&A14, &all[..13]) * h));
-        all[14] = system.derivative(&(y0 + combine(&A15, &all[..14]) * h));
-        all[15] = system.derivative(&(y0 + combine(&A16, &all[..15]) * h));
+        all[13] = system.derivative(self.last_t + C[13] * h, &(y0 + combine(&A14, &all[..13]) * h));
+        all[14] = system.derivative(self.last_t + C[14] * h, &(y0 + combine(&A15, &all[..14]) * h));
+        all[15] = system.derivative(self.last_t + C[15] * h, &(y0 + combine(&A16, &all[..15]) * h));
         self.evaluations += 3;
         let y_diff = self.y - y0;
         let bspl = k[0] * h - y_diff;
@@ -553,6 +598,27 @@ impl<const N: usize> Dense<N> {
         r[0] + (r[1] + (r[2] + (r[3] + (r[4] + (r[5] + (r[6] + r[7] * theta) * theta1) * theta) * theta1) * theta) * theta1) * theta
     }
 
+    /// y'(t) of the interpolant (its error is a power of h lower than y's).
+    pub fn derivative_at(&self, t: f64) -> SVector<f64, N> {
+        let theta = (t - self.t0) / self.h;
+        let theta1 = 1.0 - theta;
+        let r = &self.coefficients;
+        // Horner on the nested form of `at`, carrying d/dθ along.
+        let p6 = r[6] + r[7] * theta;
+        let d6 = r[7];
+        let p5 = r[5] + p6 * theta1;
+        let d5 = d6 * theta1 - p6;
+        let p4 = r[4] + p5 * theta;
+        let d4 = d5 * theta + p5;
+        let p3 = r[3] + p4 * theta1;
+        let d3 = d4 * theta1 - p4;
+        let p2 = r[2] + p3 * theta;
+        let d2 = d3 * theta + p3;
+        let p1 = r[1] + p2 * theta1;
+        let d1 = d2 * theta1 - p2;
+        (d1 * theta + p1) / self.h
+    }
+
     /// Component i of y(t).
     pub fn component(&self, i: usize, t: f64) -> f64 {
         let theta = (t - self.t0) / self.h;
@@ -570,7 +636,7 @@ mod tests {
     /// Harmonic oscillator y'' = −y: exact solution (cos t, −sin t).
     struct Oscillator;
     impl System<2> for Oscillator {
-        fn derivative(&self, y: &Vector2<f64>) -> Vector2<f64> {
+        fn derivative(&self, _t: f64, y: &Vector2<f64>) -> Vector2<f64> {
             Vector2::new(y[1], -y[0])
         }
     }
@@ -588,6 +654,20 @@ mod tests {
             s.advance();
         }
         (s, worst_dense)
+    }
+
+    #[test]
+    fn dense_derivative_is_the_interpolant_s() {
+        let mut s = Stepper::new(&Oscillator, 0.0, Vector2::new(1.0, 0.0), 1e-10, Vector2::new(1e-12, 1e-12), 0.5);
+        s.step(&Oscillator).unwrap();
+        let d = s.dense(&Oscillator);
+        let t = d.t0 + 0.37 * d.h;
+        let e = 1e-6 * d.h;
+        let difference = (d.at(t + e) - d.at(t - e)) / (2.0 * e);
+        assert!((d.derivative_at(t) - difference).norm() < 1e-7, "{} vs {}", d.derivative_at(t), difference);
+        // y' = (y1, −y0) up to the interpolant's error.
+        let y = d.at(t);
+        assert!((d.derivative_at(t) - Vector2::new(y[1], -y[0])).norm() < 1e-8);
     }
 
     #[test]

@@ -1,0 +1,68 @@
+//! Cost per off-center kick of the 3D paths and of the 1D contact along the
+//! same kick's normal, over one seeded sample of the box
+//! (`kick_3d::models::OffCenterBox`, seed `BENCH_SEED`), in one run, so the
+//! 3D/1D ratio comes from one binary on one machine load.
+//!
+//! Full run: `cargo bench -p kick-3d --features bench --bench solve3d`
+//! Short variant: `cargo bench -p kick-3d --features bench --bench solve3d -- --quick`
+//! Criterion reports time per iteration (all kicks) and kicks per second.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use kick_3d::models::{OffCenterBox, BENCH_SEED};
+use kick_3d::{Accurate3d, FullState3d, Solver3d};
+use kick_core::Solver;
+use std::hint::black_box;
+
+/// Kicks in the sample.
+const KICKS: u64 = 50;
+
+fn off_center_box(c: &mut Criterion) {
+    let kicks = OffCenterBox::new(BENCH_SEED).kicks(KICKS).expect("box kicks are valid");
+    let normals: Vec<_> = kicks.iter().map(|k| k.normal_scenario().expect("valid")).collect();
+    let mut group = c.benchmark_group("off_center_box_50_kicks");
+    group.throughput(Throughput::Elements(KICKS));
+    group.bench_function(BenchmarkId::from_parameter("3d accurate"), |b| {
+        let solver = Accurate3d::default();
+        b.iter(|| {
+            for k in &kicks {
+                black_box(solver.solve(black_box(k)).expect("solves"));
+            }
+        })
+    });
+    group.bench_function(BenchmarkId::from_parameter("3d auto"), |b| {
+        b.iter(|| {
+            for k in &kicks {
+                black_box(Solver3d::Auto.solve(black_box(k)).expect("solves"));
+            }
+        })
+    });
+    group.bench_function(BenchmarkId::from_parameter("1d accurate"), |b| {
+        let solver = kick_compliant::Accurate::default();
+        b.iter(|| {
+            for s in &normals {
+                black_box(solver.solve(black_box(s)).expect("solves"));
+            }
+        })
+    });
+    group.bench_function(BenchmarkId::from_parameter("1d auto"), |b| {
+        let solver = kick_compliant::Auto::default();
+        b.iter(|| {
+            for s in &normals {
+                black_box(solver.solve(black_box(s)).expect("solves"));
+            }
+        })
+    });
+    group.sample_size(10);
+    group.bench_function(BenchmarkId::from_parameter("3d full-state (reference)"), |b| {
+        let solver = FullState3d::default();
+        b.iter(|| {
+            for k in &kicks {
+                black_box(solver.solve(black_box(k)).expect("solves"));
+            }
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, off_center_box);
+criterion_main!(benches);

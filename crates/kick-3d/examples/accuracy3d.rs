@@ -1,0 +1,46 @@
+//! Errors of the accurate path over the box against the tightened
+//! full-state reference (`kick_3d::precision`):
+//! `cargo run --release -p kick-3d --example accuracy3d -- [N] [LAW] [RTOL]`
+//! prints the largest and the median relative error of each observable
+//! over the first N kicks (default 200) of the box sample with seed 2024.
+use kick_3d::models::{OffCenterBox, BENCH_SEED};
+use kick_3d::precision::{self, Errors3d};
+use kick_3d::Accurate3d;
+use kick_core::LawKind;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let n: u64 = args.get(1).map_or(200, |s| s.parse().expect("N"));
+    let law = args.get(2).map_or(LawKind::PowerLaw, |s| LawKind::from_name(s).expect("a law name"));
+    let solver = match args.get(3) {
+        Some(r) => Accurate3d::new(r.parse().expect("RTOL")).expect("valid rtol"),
+        None => Accurate3d::default(),
+    };
+    let sample = OffCenterBox { seed: BENCH_SEED, law };
+    let mut errors: Vec<[f64; 8]> = Vec::new();
+    let mut evaluations = Vec::new();
+    let mut residuals = Vec::new();
+    for i in 0..n {
+        let kick = sample.kick(i).expect("box kicks are valid");
+        let solved = solver.solve(&kick).expect("solves");
+        let reference = precision::reference().solve(&kick).expect("reference solves");
+        let e = Errors3d::of(&kick, &solved, &reference);
+        if e.max() > 1e-9 {
+            println!("kick {i}: offset {:.4} approach {:.2} friction {:.3} foot {:.2}: max {:.2e}", kick.offset, kick.approach_angle.to_degrees(), kick.friction, kick.base.effective_foot_mass(), e.max());
+        }
+        errors.push(e.values());
+        evaluations.push(solved.evaluations);
+        residuals.push(solved.energy.relative_residual().abs());
+    }
+    println!("{n} kicks of the box (seed {BENCH_SEED}), law {}, rtol {:.0e}", law.name(), solver.relative_tolerance);
+    println!("{:<28} {:>10} {:>10}", "relative error", "max", "median");
+    for (j, name) in Errors3d::NAMES.iter().enumerate() {
+        let mut column: Vec<f64> = errors.iter().map(|e| e[j]).collect();
+        column.sort_by(f64::total_cmp);
+        println!("{name:<28} {:>10.2e} {:>10.2e}", column[column.len() - 1], column[column.len() / 2]);
+    }
+    residuals.sort_by(f64::total_cmp);
+    println!("{:<28} {:>10.2e} {:>10.2e}", "energy residual (relative)", residuals[residuals.len() - 1], residuals[residuals.len() / 2]);
+    evaluations.sort();
+    println!("{:<28} {:>10} {:>10}", "evaluations", evaluations[evaluations.len() - 1], evaluations[evaluations.len() / 2]);
+}

@@ -1,0 +1,537 @@
+//! The contact in the foot's frame: the accurate path's state and
+//! right-hand side.
+//!
+//! The pair's centre of mass moves under the drive and gravity alone, so it
+//! is known in closed form; what the contact changes is the relative
+//! motion. Everything is written in the foot's body frame, where the
+//! instep's face is fixed: its normal is e_x and the compression on the face
+//! is δ = −s_x, s the ball centre's displacement from where it touched
+//! (no cancellation of two positions), and the tangential spring, glued to
+//! the face, needs no co-rotation term.
+//!
+//! State (23): s, the relative velocity w = v_b − v_f, the foot's angular
+//! velocity Ω and orientation q (world from body), the ball's angular
+//! velocity, the spring ξ (all but q in body components), the normal
+//! impulse, the two losses, and the time (see [`Clock`]). With r = r0 + s the ball centre from the
+//! foot's centre of mass (r0 = (R + h_x, 0, 0)), p = r − R n the contact
+//! point and F = F_n n + F_t the force on the ball:
+//!
+//! - ṡ = w − Ω × r,
+//! - ẇ = F (1/m_b + 1/m_f) − qᵀ F_drive/m_f − Ω × w (gravity acts on both alike),
+//! - I Ω̇ = p × (−F) − Ω × I Ω (Euler's equations),
+//! - q̇ = ½ q ⊗ Ω,
+//! - ω̇_b = (−R n) × F / I_b − Ω × ω_b,
+//! - ξ̇ = the spring–damper element's rate (see [`crate::dynamics`] for the law).
+//!
+//! The right-hand side is the same law as [`crate::dynamics::Dynamics`]
+//! (which writes both bodies in the world frame), with each switch made
+//! explicit in a [`Phase`]: the damping branch of the normal law, grip or
+//! slip, and the geometry (analytic on the face; parry where edges and
+//! rounded borders come in). Within a phase the right-hand side is smooth,
+//! continued past its own switches, so a step that crosses one stays
+//! accurate and its dense output locates the switch.
+//!
+//! First touch and separation: δⁿ is not smooth at δ = 0 (n not an integer),
+//! so the solution has a t^(n+2) term at both ends that would hold a
+//! high-order method to tiny steps there. Near both ends the independent
+//! variable is u = δ^(1/p) instead of t ([`Clock`]): the force's δⁿ becomes
+//! u^(pn), smooth enough for the 8th-order steps, and t is integrated as a
+//! state (dt/du = p u^(p−1)/δ̇, δ̇ kept away from zero). Separation is then
+//! the known end u = 0, not an event.
+
+use crate::dynamics::geometry;
+use crate::model::Kick3d;
+use crate::outcome::EndState;
+use kick_core::{AnyLaw, ContactLaw};
+use nalgebra::SVector;
+use parry3d_f64::math::{Pose3, Rot3, Vec3};
+use parry3d_f64::shape::Cuboid;
+
+pub const DIM: usize = 23;
+pub type State = SVector<f64, DIM>;
+
+/// s: the ball centre's displacement from first touch (body frame).
+pub const DISPLACEMENT: usize = 0;
+/// w = v_b − v_f (body components).
+pub const RELATIVE_VELOCITY: usize = 3;
+/// Ω (body components).
+pub const FOOT_ANGULAR_VELOCITY: usize = 6;
+/// q, world from body: w, x, y, z.
+pub const FOOT_ROTATION: usize = 9;
+/// ω_b (body components).
+pub const BALL_ANGULAR_VELOCITY: usize = 13;
+/// ξ (body components).
+pub const SPRING: usize = 16;
+/// ∫ F_n dt.
+pub const NORMAL_IMPULSE: usize = 19;
+/// ∫ (F_n − F_n(δ, 0)) δ̇ dt.
+pub const DAMPING_LOSS: usize = 20;
+/// ∫ tangential element power dt.
+pub const FRICTION_LOSS: usize = 21;
+/// t (integrated while the independent variable is not the time).
+pub const TIME: usize = 22;
+
+/// The power p of u = δ^(1/p). δⁿ = u^(pn) is still not smooth at u = 0,
+/// but far less steep: p = 2 took the fewest evaluations over the box
+/// (p = 2, 3, 4, 6 tried; 496, 549, 592, 720 evaluations per kick).
+pub const CLOCK_POWER: i32 = 2;
+
+#[inline]
+fn vec3(y: &State, i: usize) -> Vec3 {
+    Vec3::new(y[i], y[i + 1], y[i + 2])
+}
+#[inline]
+fn put3(y: &mut State, i: usize, v: Vec3) {
+    y[i] = v.x;
+    y[i + 1] = v.y;
+    y[i + 2] = v.z;
+}
+#[inline]
+pub(crate) fn rotation(y: &State) -> Rot3 {
+    Rot3::from_xyzw(y[FOOT_ROTATION + 1], y[FOOT_ROTATION + 2], y[FOOT_ROTATION + 3], y[FOOT_ROTATION]).normalize()
+}
+
+/// The tangential element's state of a phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Friction {
+    /// μ = 0: no slider; the spring relaxes through its damper.
+    None,
+    /// The element carries k_t ξ + c_t v_t (always, for μ = ∞).
+    Grip,
+    /// The element carries μ F_n along k_t ξ + c_t v_t.
+    Slip,
+}
+
+/// Where the ball touches the instep.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Geometry {
+    /// The flat face: n = e_x, δ = −s_x.
+    Face,
+    /// An edge, corner or rounded border (parry's ball–box query).
+    Border,
+}
+
+/// The independent variable x of a phase.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Clock {
+    /// x = t.
+    Time,
+    /// From first touch: x = u = δ^(1/p), δ = x^p.
+    Onset,
+    /// Towards separation: x = u_start − u, δ = (u_start − x)^p; separation at x = u_start.
+    Release { start: f64 },
+}
+
+/// The branch of every switch the right-hand side holds through a phase,
+/// and its independent variable.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Phase {
+    /// The normal law's side of δ̇ = 0.
+    pub compressing: bool,
+    pub friction: Friction,
+    pub geometry: Geometry,
+    /// The normal force held at zero where the law would pull (see `ContactLaw::unclamped_force`).
+    pub clamped: bool,
+    pub clock: Clock,
+}
+
+/// The law at one state, body frame.
+#[derive(Debug, Clone, Copy)]
+pub struct Local {
+    pub compression: f64,
+    pub compression_rate: f64,
+    pub normal: Vec3,
+    /// Contact point from the foot's centre of mass.
+    pub point: Vec3,
+    pub sliding_velocity: Vec3,
+    pub normal_force: f64,
+    /// The law's force before its clamp at zero (the normal force for a law that never pulls).
+    pub unclamped_force: f64,
+    pub tangential_force: Vec3,
+    pub spring_rate: Vec3,
+    /// μ F_n − |k_t ξ + c_t v_t| (+1 when μ = ∞, 0 when μ = 0).
+    pub grip_margin: f64,
+    pub damping_power: f64,
+    pub friction_power: f64,
+}
+
+impl Local {
+    /// |F_t| on the branch: exactly μ F_n while slipping.
+    pub fn tangential_force_size(&self) -> f64 {
+        self.tangential_force.length()
+    }
+}
+
+/// The relative motion of one kick in one phase.
+#[derive(Debug, Clone, Copy)]
+pub struct Relative {
+    pub law: AnyLaw,
+    pub foot_mass: f64,
+    pub ball_mass: f64,
+    /// 1/m_b + 1/m_f.
+    inverse_reduced_mass: f64,
+    pub foot_inertia: Vec3,
+    pub ball_inertia: f64,
+    pub ball_radius: f64,
+    /// r0 = (R + h_x outer, 0, 0): the ball centre at first touch.
+    pub touch: Vec3,
+    /// The face's extent in y and z (inner box): beyond it, the border.
+    pub face: (f64, f64),
+    pub cuboid: Cuboid,
+    pub border: f64,
+    pub friction: f64,
+    pub tangential_stiffness: f64,
+    pub tangential_damping: f64,
+    /// True for a law that can pull (damps while restituting): its clamp is a switch.
+    pub clamps: bool,
+    /// F_drive in the world frame.
+    pub drive: Vec3,
+    pub phase: Phase,
+}
+
+impl Relative {
+    pub fn new(kick: &Kick3d, phase: Phase) -> Relative {
+        let [hx, hy, hz] = kick.foot_shape.half_extents();
+        let [ix, iy, iz] = kick.foot_inertia;
+        let (m_f, m_b) = (kick.base.effective_foot_mass(), kick.base.ball_mass());
+        Relative {
+            law: kick.law(),
+            foot_mass: m_f,
+            ball_mass: m_b,
+            inverse_reduced_mass: 1.0 / m_b + 1.0 / m_f,
+            foot_inertia: Vec3::new(ix, iy, iz),
+            ball_inertia: kick.ball_inertia,
+            ball_radius: kick.ball_radius,
+            touch: Vec3::new(kick.ball_radius + kick.face_distance(), 0.0, 0.0),
+            face: (hy, hz),
+            cuboid: Cuboid::new(Vec3::new(hx, hy, hz)),
+            border: kick.foot_shape.border_radius(),
+            friction: kick.friction,
+            tangential_stiffness: kick.tangential_stiffness,
+            tangential_damping: kick.tangential_damping,
+            clamps: !kick.law().damps_compression_only(),
+            drive: kick.drive(),
+            phase,
+        }
+    }
+
+    pub fn in_phase(&self, phase: Phase) -> Relative {
+        Relative { phase, ..*self }
+    }
+
+    /// The ball centre from the foot's centre of mass, body frame.
+    #[inline]
+    pub fn centre(&self, y: &State) -> Vec3 {
+        self.touch + vec3(y, DISPLACEMENT)
+    }
+
+    /// > 0 while the ball centre is over the flat face (the face's region).
+    #[inline]
+    pub fn face_margin(&self, y: &State) -> f64 {
+        let r = self.centre(y);
+        (self.face.0 - r.y.abs()).min(self.face.1 - r.z.abs())
+    }
+
+    /// δ at (x, y): from x near the ends (see [`Clock`]), else from the geometry.
+    #[inline]
+    fn clock_compression(&self, x: f64) -> Option<f64> {
+        match self.phase.clock {
+            Clock::Time => None,
+            Clock::Onset => Some(x.max(0.0).powi(CLOCK_POWER)),
+            Clock::Release { start } => Some((start - x).max(0.0).powi(CLOCK_POWER)),
+        }
+    }
+
+    /// t at (x, y).
+    #[inline]
+    pub fn time(&self, x: f64, y: &State) -> f64 {
+        match self.phase.clock {
+            Clock::Time => x,
+            _ => y[TIME],
+        }
+    }
+
+    /// dt/dx for a compression rate δ̇.
+    #[inline]
+    fn time_rate(&self, x: f64, compression_rate: f64) -> f64 {
+        let p = f64::from(CLOCK_POWER);
+        match self.phase.clock {
+            Clock::Time => 1.0,
+            Clock::Onset => p * x.max(0.0).powi(CLOCK_POWER - 1) / compression_rate,
+            Clock::Release { start } => -p * (start - x).max(0.0).powi(CLOCK_POWER - 1) / compression_rate,
+        }
+    }
+
+    /// The law at (x, y) on this phase's branches.
+    #[inline]
+    pub fn local(&self, x: f64, y: &State) -> Local {
+        match self.phase.geometry {
+            Geometry::Face => self.local_on::<true>(x, y),
+            Geometry::Border => self.local_on::<false>(x, y),
+        }
+    }
+
+    /// [`Relative::local`] compiled apart for the face (n = e_x known), the common case.
+    #[inline(always)]
+    fn local_on<const FACE: bool>(&self, x: f64, y: &State) -> Local {
+        let r = self.centre(y);
+        let (delta, n) = if FACE {
+            (-y[DISPLACEMENT], Vec3::X)
+        } else {
+            let (delta, n, _) = geometry(&self.cuboid, self.ball_radius, self.border, &Pose3::IDENTITY, r);
+            (delta, n)
+        };
+        let delta = self.clock_compression(x).unwrap_or(delta);
+        let w = vec3(y, RELATIVE_VELOCITY);
+        let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
+        let spin = vec3(y, BALL_ANGULAR_VELOCITY);
+        let lever_ball = along::<FACE>(n, -self.ball_radius);
+        let point = r + lever_ball;
+        // Ball's material point minus the foot's, at p (ω_b × (−R n) = −R (ω_b × n)).
+        let v_rel = w - cross_normal::<FACE>(spin, n) * self.ball_radius - omega.cross(point);
+        let rate = -dot_normal::<FACE>(n, v_rel);
+        let sliding = tangential::<FACE>(n, v_rel);
+        let (elastic, normal_force, unclamped_force) = if self.clamps {
+            let (elastic, raw) = self.law.unclamped_force(delta, rate);
+            (elastic, if self.phase.clamped { 0.0 } else { raw }, raw)
+        } else {
+            let (elastic, force) = self.law.branch_force(delta, rate, self.phase.compressing);
+            (elastic, force, force)
+        };
+        let damping_power = (normal_force - elastic) * rate;
+
+        let xi = vec3(y, SPRING);
+        let xi_t = tangential::<FACE>(n, xi);
+        let (k_t, c_t) = (self.tangential_stiffness, self.tangential_damping);
+        let trial = xi_t * k_t + sliding * c_t;
+        let trial_size = trial.length();
+        let cap = if self.friction.is_infinite() { f64::INFINITY } else { self.friction * normal_force };
+        let grip_margin = if self.friction == 0.0 {
+            0.0
+        } else if self.friction.is_infinite() {
+            1.0
+        } else {
+            cap - trial_size
+        };
+        let (tangential_force, spring_rate, friction_power) = match self.phase.friction {
+            Friction::None => {
+                let spring_rate = -xi_t * (k_t / c_t);
+                (Vec3::ZERO, spring_rate, c_t * spring_rate.length_squared())
+            }
+            Friction::Grip => (-trial, sliding, c_t * sliding.length_squared()),
+            Friction::Slip => {
+                let u = if trial_size > 0.0 { trial / trial_size } else { Vec3::ZERO };
+                let spring_rate = (u * cap - xi_t * k_t) / c_t;
+                // damper c_t |ξ̇|² plus slider μ F_n |v_t − ξ̇| = cap (|T| − cap)/c_t
+                (-u * cap, spring_rate, c_t * spring_rate.length_squared() + cap * (trial_size - cap) / c_t)
+            }
+        };
+        Local {
+            compression: delta,
+            compression_rate: rate,
+            normal: n,
+            point,
+            sliding_velocity: sliding,
+            normal_force,
+            unclamped_force,
+            tangential_force,
+            spring_rate,
+            grip_margin,
+            damping_power,
+            friction_power,
+        }
+    }
+
+    /// dy/dx at (x, y).
+    #[inline]
+    pub fn derivative(&self, x: f64, y: &State) -> State {
+        match self.phase.geometry {
+            Geometry::Face => self.derivative_on::<true>(x, y),
+            Geometry::Border => self.derivative_on::<false>(x, y),
+        }
+    }
+
+    #[inline(always)]
+    fn derivative_on<const FACE: bool>(&self, x: f64, y: &State) -> State {
+        let c = self.local_on::<FACE>(x, y);
+        let force = along::<FACE>(c.normal, c.normal_force) + c.tangential_force;
+        let r = self.centre(y);
+        let w = vec3(y, RELATIVE_VELOCITY);
+        let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
+        let spin = vec3(y, BALL_ANGULAR_VELOCITY);
+        let mut dy = State::zeros();
+        put3(&mut dy, DISPLACEMENT, w - omega.cross(r));
+        let mut dw = force * self.inverse_reduced_mass - omega.cross(w);
+        if self.drive != Vec3::ZERO {
+            dw -= rotation(y).inverse() * self.drive / self.foot_mass;
+        }
+        put3(&mut dy, RELATIVE_VELOCITY, dw);
+        let torque = c.point.cross(-force);
+        put3(&mut dy, FOOT_ANGULAR_VELOCITY, (torque - omega.cross(omega * self.foot_inertia)) / self.foot_inertia);
+        // q̇ = ½ q ⊗ (0, Ω)
+        let (qw, qv) = (y[FOOT_ROTATION], Vec3::new(y[FOOT_ROTATION + 1], y[FOOT_ROTATION + 2], y[FOOT_ROTATION + 3]));
+        dy[FOOT_ROTATION] = -0.5 * qv.dot(omega);
+        put3(&mut dy, FOOT_ROTATION + 1, (omega * qw + qv.cross(omega)) * 0.5);
+        // (−R n) × F = R (F × n)
+        let torque_ball = cross_normal::<FACE>(force, c.normal) * self.ball_radius;
+        put3(&mut dy, BALL_ANGULAR_VELOCITY, torque_ball / self.ball_inertia - omega.cross(spin));
+        put3(&mut dy, SPRING, c.spring_rate);
+        dy[NORMAL_IMPULSE] = c.normal_force;
+        dy[DAMPING_LOSS] = c.damping_power;
+        dy[FRICTION_LOSS] = c.friction_power;
+        dy[TIME] = 1.0;
+        match self.phase.clock {
+            Clock::Time => dy,
+            _ => dy * self.time_rate(x, c.compression_rate),
+        }
+    }
+
+    /// dt/dx at (x, y).
+    pub fn clock_rate(&self, x: f64, y: &State) -> f64 {
+        match self.phase.clock {
+            Clock::Time => 1.0,
+            _ => self.time_rate(x, self.local(x, y).compression_rate),
+        }
+    }
+
+    /// Kinetic energy of the relative motion and of both rotations, plus the
+    /// elastic energy (the centre of mass's kinetic energy is apart).
+    pub fn internal_energy(&self, x: f64, y: &State) -> f64 {
+        let reduced = 1.0 / self.inverse_reduced_mass;
+        let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
+        let c = self.local(x, y);
+        0.5 * reduced * vec3(y, RELATIVE_VELOCITY).length_squared()
+            + 0.5 * omega.dot(omega * self.foot_inertia)
+            + 0.5 * self.ball_inertia * vec3(y, BALL_ANGULAR_VELOCITY).length_squared()
+            + self.law.potential(c.compression)
+            + 0.5 * self.tangential_stiffness * vec3(y, SPRING).length_squared()
+    }
+}
+
+impl kick_core::dop853::System<DIM> for Relative {
+    #[inline]
+    fn derivative(&self, x: f64, y: &State) -> State {
+        Relative::derivative(self, x, y)
+    }
+}
+
+// Products with the normal n, written out for the face (n = e_x) where the
+// zeros would otherwise be multiplied (IEEE rules keep the compiler from
+// dropping them).
+
+/// n · v
+#[inline(always)]
+fn dot_normal<const FACE: bool>(n: Vec3, v: Vec3) -> f64 {
+    if FACE {
+        v.x
+    } else {
+        n.dot(v)
+    }
+}
+
+/// s n
+#[inline(always)]
+fn along<const FACE: bool>(n: Vec3, s: f64) -> Vec3 {
+    if FACE {
+        Vec3::new(s, 0.0, 0.0)
+    } else {
+        n * s
+    }
+}
+
+/// v − (v · n) n
+#[inline(always)]
+fn tangential<const FACE: bool>(n: Vec3, v: Vec3) -> Vec3 {
+    if FACE {
+        Vec3::new(0.0, v.y, v.z)
+    } else {
+        v - n * v.dot(n)
+    }
+}
+
+/// v × n
+#[inline(always)]
+fn cross_normal<const FACE: bool>(v: Vec3, n: Vec3) -> Vec3 {
+    if FACE {
+        Vec3::new(0.0, v.z, -v.y)
+    } else {
+        v.cross(n)
+    }
+}
+
+/// The pair's centre of mass: it moves under the drive and gravity alone.
+#[derive(Debug, Clone, Copy)]
+pub struct CentreOfMass {
+    pub position: Vec3,
+    pub velocity: Vec3,
+    pub acceleration: Vec3,
+    pub mass: f64,
+}
+
+impl CentreOfMass {
+    pub fn of(kick: &Kick3d) -> CentreOfMass {
+        let s = kick.initial_state();
+        let (m_f, m_b) = (kick.base.effective_foot_mass(), kick.base.ball_mass());
+        let mass = m_f + m_b;
+        CentreOfMass {
+            position: (s.foot_position * m_f + s.ball_position * m_b) / mass,
+            velocity: (s.foot_velocity * m_f + s.ball_velocity * m_b) / mass,
+            acceleration: kick.drive() / mass + kick.gravity_vector(),
+            mass,
+        }
+    }
+    /// Displacement since first touch at time t.
+    pub fn displacement(&self, t: f64) -> Vec3 {
+        self.velocity * t + self.acceleration * (0.5 * t * t)
+    }
+    pub fn velocity_at(&self, t: f64) -> Vec3 {
+        self.velocity + self.acceleration * t
+    }
+}
+
+/// The state at first touch.
+pub fn initial_state(kick: &Kick3d) -> State {
+    let s = kick.initial_state();
+    let q = s.foot_orientation;
+    let mut y = State::zeros();
+    put3(&mut y, RELATIVE_VELOCITY, q.inverse() * (s.ball_velocity - s.foot_velocity));
+    y[FOOT_ROTATION] = q.w;
+    put3(&mut y, FOOT_ROTATION + 1, Vec3::new(q.x, q.y, q.z));
+    y
+}
+
+/// Both bodies in the world frame at (x, y), time t.
+pub fn end_state(kick: &Kick3d, system: &Relative, x: f64, y: &State, t: f64) -> EndState {
+    let start = kick.initial_state();
+    let com = CentreOfMass::of(kick);
+    let (m_f, m_b, mass) = (system.foot_mass, system.ball_mass, com.mass);
+    let q = rotation(y);
+    let r = q * system.centre(y);
+    let r0 = start.ball_position - start.foot_position;
+    let w = q * vec3(y, RELATIVE_VELOCITY);
+    let shift = com.displacement(t);
+    let v_com = com.velocity_at(t);
+    let foot_shift = shift - (r - r0) * (m_b / mass);
+    let ball_velocity = v_com + w * (m_f / mass);
+    let spin = q * vec3(y, BALL_ANGULAR_VELOCITY);
+    let gravity = kick.gravity_vector();
+    EndState {
+        time: t,
+        foot_position: start.foot_position + foot_shift,
+        foot_orientation: q,
+        foot_velocity: v_com - w * (m_b / mass),
+        foot_angular_velocity: q * vec3(y, FOOT_ANGULAR_VELOCITY),
+        ball_position: start.ball_position + shift + (r - r0) * (m_f / mass),
+        ball_velocity,
+        ball_angular_velocity: spin,
+        spring: q * vec3(y, SPRING),
+        compression: system.local(x, y).compression,
+        impulse: (ball_velocity - start.ball_velocity - gravity * t) * m_b,
+        angular_impulse: spin * system.ball_inertia,
+        normal_impulse: y[NORMAL_IMPULSE],
+        normal_damping_loss: y[DAMPING_LOSS],
+        friction_loss: y[FRICTION_LOSS],
+        drive_work: kick.drive().dot(foot_shift),
+        gravity_work: gravity.dot(shift) * mass,
+    }
+}
