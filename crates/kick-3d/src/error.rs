@@ -19,3 +19,20 @@ pub enum Kick3dError {
     #[error("3D experiment: {reason}")]
     Experiment { reason: String },
 }
+
+impl Kick3dError {
+    /// What became of the kick, for status columns: the core error's own
+    /// status, a geometry query that failed mid-run a numerical failure,
+    /// anything refused before solving `Refused`.
+    pub fn status(&self) -> kick_core::Status {
+        match self {
+            Kick3dError::Core(e) => e.status(),
+            Kick3dError::Geometry { .. } => kick_core::Status::NumericalFailure,
+            Kick3dError::InvalidParameter { .. }
+            | Kick3dError::OffsetOutsideBall { .. }
+            | Kick3dError::UnsupportedScene { .. }
+            | Kick3dError::UnknownSolver { .. }
+            | Kick3dError::Experiment { .. } => kick_core::Status::Refused,
+        }
+    }
+}
