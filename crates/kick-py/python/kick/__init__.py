@@ -286,3 +286,5 @@ _declare(
     "distance, time, height, lateral_offset, velocity when ``distance`` is\n"
     "given and reached), steps, evaluations.",
 )
+
+from . import dask  # noqa: E402  (kick.dask.simulate_many; needs `distributed` only when called)
