@@ -36,3 +36,21 @@ impl Kick3dError {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kick_core::Status;
+
+    #[test]
+    fn status_sorts_refusals_failures_and_physics() {
+        let mut spec = crate::KickSpec::default();
+        spec.kick3d.offset = Some(0.2);
+        assert_eq!(spec.build().unwrap_err().status(), Status::Refused);
+        let trapped = Kick3dError::Core(KickError::Trapped { time: 1e-3, reason: "drive".into() });
+        assert_eq!(trapped.status(), Status::Trapped);
+        assert_eq!(Kick3dError::Geometry { time: 0.0, reason: "none".into() }.status(), Status::NumericalFailure);
+        let limit = Kick3dError::Core(KickError::NoSeparation { time: 1.0, reason: "horizon".into() });
+        assert_eq!(limit.status(), Status::NumericalFailure);
+    }
+}
