@@ -146,6 +146,12 @@ impl SetParameter for ScenarioSpec {
     }
 }
 
+impl parameters::SetLaw for ScenarioSpec {
+    fn set_law(&mut self, law: LawKind) {
+        self.law = Some(law);
+    }
+}
+
 /// The key that chooses the contact law beside the declared parameters.
 const LAW_KEY: &str = "law";
 

@@ -3,28 +3,16 @@
 
 use crate::value_error;
 use kick_3d::KickSpec;
-use kick_core::parameters::{self, ParameterDef, ParameterError, SetParameter, Shape, Value};
+use kick_core::parameters::{self, ParameterDef, ParameterError, SetLaw, SetParameter, Shape, Value};
 use kick_core::{LawKind, ScenarioSpec, Status};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyList};
 
-/// A spec that also takes the contact law (the CLI's `--law`).
-pub trait LawSpec: SetParameter + Default {
-    fn set_law(&mut self, law: LawKind);
-}
+/// A spec keywords fill: its levels' parameters and the contact law.
+pub trait LawSpec: SetParameter + SetLaw + Default {}
 
-impl LawSpec for ScenarioSpec {
-    fn set_law(&mut self, law: LawKind) {
-        self.law = Some(law);
-    }
-}
-
-impl LawSpec for KickSpec {
-    fn set_law(&mut self, law: LawKind) {
-        self.scenario.law = Some(law);
-    }
-}
+impl<S: SetParameter + SetLaw + Default> LawSpec for S {}
 
 /// The shape a Python value has: a bool is a switch, a sequence a vector,
 /// anything `float()` takes a number.
