@@ -19,3 +19,38 @@ pub enum Kick3dError {
     #[error("3D experiment: {reason}")]
     Experiment { reason: String },
 }
+
+impl Kick3dError {
+    /// What became of the kick, for status columns: the core error's own
+    /// status, a geometry query that failed mid-run a numerical failure,
+    /// anything refused before solving `Refused`.
+    pub fn status(&self) -> kick_core::Status {
+        match self {
+            Kick3dError::Core(e) => e.status(),
+            Kick3dError::Geometry { .. } => kick_core::Status::NumericalFailure,
+            Kick3dError::InvalidParameter { .. }
+            | Kick3dError::OffsetOutsideBall { .. }
+            | Kick3dError::UnsupportedScene { .. }
+            | Kick3dError::UnknownSolver { .. }
+            | Kick3dError::Experiment { .. } => kick_core::Status::Refused,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kick_core::Status;
+
+    #[test]
+    fn status_sorts_refusals_failures_and_physics() {
+        let mut spec = crate::KickSpec::default();
+        spec.kick3d.offset = Some(0.2);
+        assert_eq!(spec.build().unwrap_err().status(), Status::Refused);
+        let trapped = Kick3dError::Core(KickError::Trapped { time: 1e-3, reason: "drive".into() });
+        assert_eq!(trapped.status(), Status::Trapped);
+        assert_eq!(Kick3dError::Geometry { time: 0.0, reason: "none".into() }.status(), Status::NumericalFailure);
+        let limit = Kick3dError::Core(KickError::NoSeparation { time: 1.0, reason: "horizon".into() });
+        assert_eq!(limit.status(), Status::NumericalFailure);
+    }
+}

@@ -170,6 +170,12 @@ impl KickSpec {
     }
 }
 
+impl kick_core::parameters::SetLaw for KickSpec {
+    fn set_law(&mut self, law: kick_core::LawKind) {
+        self.scenario.law = Some(law);
+    }
+}
+
 impl SetParameter for KickSpec {
     const LEVELS: &'static [Level] = &[Level::Scenario, Level::Kick3d];
 

@@ -5,27 +5,14 @@
 //! is built, so a bad value gets the library's typed error naming it.
 
 use clap::{Arg, ArgAction, ArgMatches, Command};
-use kick_core::parameters::{self, ParameterDef, SetParameter, Shape, Value};
-use kick_core::{LawKind, ScenarioSpec};
-use kick_3d::KickSpec;
+use kick_core::parameters::{self, ParameterDef, SetLaw, SetParameter, Shape, Value};
+use kick_core::LawKind;
 use std::marker::PhantomData;
 
 /// A spec the flags fill: its levels' parameters, and the contact law.
-pub trait FlagSpec: SetParameter + Default {
-    fn set_law(&mut self, law: LawKind);
-}
+pub trait FlagSpec: SetParameter + SetLaw + Default {}
 
-impl FlagSpec for ScenarioSpec {
-    fn set_law(&mut self, law: LawKind) {
-        self.law = Some(law);
-    }
-}
-
-impl FlagSpec for KickSpec {
-    fn set_law(&mut self, law: LawKind) {
-        self.scenario.law = Some(law);
-    }
-}
+impl<S: SetParameter + SetLaw + Default> FlagSpec for S {}
 
 const LAW: &str = "law";
 
@@ -134,6 +121,8 @@ impl<S: FlagSpec> clap::FromArgMatches for Flags<S> {
 mod tests {
     use super::*;
     use clap::{Args, FromArgMatches};
+    use kick_3d::KickSpec;
+    use kick_core::ScenarioSpec;
 
     fn parse<S: FlagSpec>(args: &[&str]) -> Result<Flags<S>, clap::Error> {
         let command = Flags::<S>::augment_args(Command::new("kick"));

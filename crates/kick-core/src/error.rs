@@ -98,6 +98,9 @@ pub enum Status {
 }
 
 impl Status {
+    /// Every status, in code order.
+    pub const ALL: [Status; 4] = [Status::Separated, Status::NumericalFailure, Status::Trapped, Status::Refused];
+
     pub fn of<T>(result: &Result<T, KickError>) -> Status {
         match result {
             Ok(_) => Status::Separated,
@@ -156,5 +159,18 @@ pub fn finite(quantity: &'static str, value: f64, time: f64) -> Result<f64, Kick
         Ok(value)
     } else {
         Err(KickError::NonFinite { quantity, time })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Status;
+
+    /// `Status::ALL` lists every status once, at the index of its code.
+    #[test]
+    fn all_statuses_in_code_order() {
+        for (i, status) in Status::ALL.iter().enumerate() {
+            assert_eq!(usize::from(status.code()), i, "{status:?}");
+        }
     }
 }

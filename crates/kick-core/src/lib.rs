@@ -28,7 +28,7 @@ pub use outcome::{
     ContactPhase, EnergyBudget, ExitVelocities, Grid, History, Outcome, Sample, SolverPath, Spacing, StopReason, HISTORY_COLUMNS,
     MAX_HISTORY_SAMPLES, OBSERVABLES,
 };
-pub use parameters::{Level, ParameterDef, SetParameter, Value, PARAMETERS};
+pub use parameters::{Level, ParameterDef, SetLaw, SetParameter, Value, PARAMETERS};
 pub use scenario::{Parameter, Scenario, ScenarioSpec};
 
 /// Standard gravity of every model level that has gravity (kick-3d's scene,

@@ -328,6 +328,12 @@ pub trait SetParameter {
     }
 }
 
+/// A spec that also takes the contact law (`--law`, the Python keyword `law`),
+/// beside its declared parameters.
+pub trait SetLaw {
+    fn set_law(&mut self, law: crate::LawKind);
+}
+
 /// The message for an unknown key of a table whose keys are `valid`.
 pub fn unknown_key(key: &str, valid: &[&'static str]) -> String {
     format!("unknown key `{key}`{}", did_you_mean(&nearby(key, valid), valid))

@@ -152,6 +152,12 @@ impl SetParameter for ScenarioSpec {
     }
 }
 
+impl parameters::SetLaw for ScenarioSpec {
+    fn set_law(&mut self, law: LawKind) {
+        self.law = Some(law);
+    }
+}
+
 /// A [`ScenarioSpec`] table: the declared parameters of the 1D level and
 /// `law`, the key that chooses the contact law.
 impl parameters::DeclaredTable for ScenarioSpec {

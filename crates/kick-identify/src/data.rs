@@ -232,6 +232,36 @@ impl HistoryData {
         out
     }
 
+    /// Channels given as arrays (not read from a CSV file): refused, naming
+    /// `source_name`, unless there is a channel, every channel has one value
+    /// per time, every value is finite and the times increase.
+    pub fn checked(self, source_name: &str) -> Result<HistoryData, IdentifyError> {
+        let err = |message: String| Err(IdentifyError::data(source_name, message));
+        if self.times.is_empty() {
+            return err("no samples".into());
+        }
+        if self.channels.is_empty() {
+            return err(format!("no data channel: expected any of {}", Channel::NAMES));
+        }
+        for (k, pair) in self.times.windows(2).enumerate() {
+            if !(pair[1] > pair[0]) {
+                return err(format!("time[{}] = {} does not increase (time[{k}] = {})", k + 1, pair[1], pair[0]));
+            }
+        }
+        if let Some(k) = self.times.iter().position(|t| !t.is_finite()) {
+            return err(format!("time[{k}] = {} is not finite", self.times[k]));
+        }
+        for (channel, values) in &self.channels {
+            if values.len() != self.times.len() {
+                return err(format!("`{}` has {} values for {} times", channel.name(), values.len(), self.times.len()));
+            }
+            if let Some(k) = values.iter().position(|v| !v.is_finite()) {
+                return err(format!("{}[{k}] = {} is not finite", channel.name(), values[k]));
+            }
+        }
+        Ok(self)
+    }
+
     pub fn len(&self) -> usize {
         self.times.len() * self.channels.len()
     }

@@ -192,6 +192,22 @@ impl FitReport {
         let parameter = parameter.into();
         self.estimates.iter().find(|e| e.parameter == parameter)
     }
+
+    /// Covariance of the estimates (in `estimates` order, units of the
+    /// parameters), to first order in the coordinate change θ → p:
+    /// ρ_ij σ_i σ_j. `None` when the uncertainties are.
+    pub fn covariance(&self) -> Option<Vec<Vec<f64>>> {
+        let correlation = self.correlation.as_ref()?;
+        let sigma: Option<Vec<f64>> = self.estimates.iter().map(|e| e.standard_uncertainty).collect();
+        let sigma = sigma?;
+        Some(
+            correlation
+                .iter()
+                .enumerate()
+                .map(|(i, row)| row.iter().enumerate().map(|(j, r)| r * sigma[i] * sigma[j]).collect())
+                .collect(),
+        )
+    }
 }
 
 /// Scenario parameters fitted as ln p because they must be positive.

@@ -77,3 +77,34 @@ fn stop_reasons_print_as_words() {
     assert_eq!(report.termination, report.stop.to_string());
     assert!(report.termination.starts_with("converged: "), "{}", report.termination);
 }
+
+/// Arrays (from Python) get the CSV reader's checks, naming the index.
+#[test]
+fn history_arrays_are_checked() {
+    use kick_identify::data::{Channel, HistoryData};
+    let data = |times: Vec<f64>, force: Vec<f64>| HistoryData { times, channels: vec![(Channel::Force, force)] };
+    assert!(data(vec![0.0, 1e-4], vec![1.0, 2.0]).checked("x").is_ok());
+    let message = |d: HistoryData| d.checked("fit data").unwrap_err().to_string();
+    assert_eq!(message(data(vec![0.0, 0.0], vec![1.0, 2.0])), "fit data: time[1] = 0 does not increase (time[0] = 0)");
+    assert_eq!(message(data(vec![0.0, 1.0], vec![1.0])), "fit data: `force` has 1 values for 2 times");
+    assert_eq!(message(data(vec![0.0, 1.0], vec![1.0, f64::NAN])), "fit data: force[1] = NaN is not finite");
+    assert_eq!(message(data(vec![], vec![])), "fit data: no samples");
+    let none = HistoryData { times: vec![0.0], channels: vec![] };
+    assert!(message(none).starts_with("fit data: no data channel"));
+}
+
+/// Covariance in parameter units: σ² on the diagonal, ρ σ_i σ_j off it.
+#[test]
+fn covariance_from_correlation_and_uncertainties() {
+    let mut observations = vec![exit_speed(30.0, 0.1)];
+    observations.push(ScalarObservation { observable: Observable::ContactTime, value: 9e-3, sigma: 1e-4 });
+    observations.push(ScalarObservation { observable: Observable::PeakForce, value: 4000.0, sigma: 50.0 });
+    let report = fit(&problem(&[Parameter::FootMass, Parameter::Stiffness], observations), &FitOptions::default()).unwrap();
+    let c = report.covariance().expect("determined");
+    let rho = report.correlation.as_ref().unwrap();
+    let s: Vec<f64> = report.estimates.iter().map(|e| e.standard_uncertainty.unwrap()).collect();
+    assert_eq!(c[0][0], s[0] * s[0]);
+    assert_eq!(c[1][1], s[1] * s[1]);
+    assert_eq!(c[0][1], rho[0][1] * s[0] * s[1]);
+    assert_eq!(c[0][1], c[1][0]);
+}

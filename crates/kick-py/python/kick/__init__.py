@@ -1,0 +1,290 @@
+"""kick: the millisecond physics of a soccer kick, from Python.
+
+The same library functions as the ``kick`` command line, numpy in and numpy
+out. Keywords are the declared scenario parameters (``kick.PARAMETERS``, the
+list ``kick_core::parameters`` and ``kick_flight::FLIGHT_PARAMETERS`` of the
+Rust workspace): the name of a parameter is its keyword, its default the
+CLI's, SI units throughout (angles in degrees).
+
+Functions
+---------
+simulate, simulate3d      one contact; the dict ``kick simulate[3d] --format json`` prints
+simulate_many, simulate3d_many
+                          many contacts from arrays (numpy broadcasting), solved in
+                          parallel in Rust; a status per row instead of exceptions
+history                   uniform time history of one 1D contact (dict of 1-D arrays)
+fit                       identify parameters from a measured history (``kick fit data``)
+flight                    the ball's flight after the kick (kick-flight)
+kick.dask.simulate_many   ``simulate_many`` spread over a dask ``distributed`` cluster
+
+Bad input raises ``ValueError`` with the command line's message.
+"""
+
+from __future__ import annotations
+
+import inspect as _inspect
+
+from . import _kick
+from ._kick import (
+    CHANNELS,
+    HISTORY_COLUMNS,
+    LAWS,
+    OBSERVABLES,
+    SOLVERS,
+    SOLVERS_3D,
+    STATUS,
+    __version__,
+)
+
+__all__ = [
+    "simulate",
+    "simulate_many",
+    "simulate3d",
+    "simulate3d_many",
+    "history",
+    "fit",
+    "flight",
+    "PARAMETERS",
+    "STATUS",
+    "OBSERVABLES",
+    "HISTORY_COLUMNS",
+    "CHANNELS",
+    "SOLVERS",
+    "SOLVERS_3D",
+    "LAWS",
+    "keywords",
+]
+
+#: Every declared parameter (1D, 3D, flight): dicts with name, symbol, unit,
+#: level, shape, default, default_text, doc, requirement.
+PARAMETERS = tuple(_kick.parameters())
+
+
+def keywords(function: str) -> list[dict]:
+    """The declared parameters a function takes as keywords, in declaration order."""
+    names = _kick.keywords(function)
+    flight = function == "flight"
+    return [p for n in names for p in PARAMETERS if p["name"] == n and (p["level"] == "flight") == flight]
+
+
+def _unit(p: dict) -> str:
+    return "" if p["unit"] in ("", "1") else f" [{p['unit']}]"
+
+
+def _keyword_docs(function: str) -> str:
+    lines = []
+    for p in keywords(function):
+        lines.append(f"{p['name']} : {p['shape'].replace('_', ' ')}, {p['symbol']}{_unit(p)}, default {p['default_text']}")
+        lines.append(f"    {p['doc']}; must be {p['requirement']}.")
+    return "\n".join(lines)
+
+
+def _outputs_docs(columns) -> str:
+    return "\n".join(f"{name} : {'1' if unit in ('', '1') else unit}" for name, unit in columns)
+
+
+def _declare(func, function: str, head: list, tail: list, intro: str, outputs: str = ""):
+    """Give ``func`` the signature and docstring generated from the declared list."""
+    KW = _inspect.Parameter.KEYWORD_ONLY
+    declared = []
+    for p in keywords(function):
+        default = p["default"]
+        if isinstance(default, list):
+            default = tuple(default)
+        declared.append(_inspect.Parameter(p["name"], KW, default=default))
+    func.__signature__ = _inspect.Signature(head + declared + tail)
+    doc = intro.strip() + "\n\nParameters (keyword only; the declared list)\n" + "-" * 44 + "\n" + _keyword_docs(function)
+    if outputs:
+        doc += "\n\n" + outputs.strip()
+    func.__doc__ = doc
+    return func
+
+
+_KW = _inspect.Parameter.KEYWORD_ONLY
+_solver = _inspect.Parameter("solver", _KW, default="auto")
+_law = _inspect.Parameter("law", _KW, default="power-law")
+_dt = _inspect.Parameter("dt", _KW, default=None)
+_threads = _inspect.Parameter("threads", _KW, default=None)
+
+_STATUS_DOC = ", ".join(f"{code} {name}" for code, name in sorted(STATUS.items()))
+_SOLVER_DOC = f"""
+solver : str, default "auto"
+    One of {", ".join(SOLVERS)} (as ``kick simulate --solver``).
+law : str, default "power-law"
+    Contact law: {", ".join(LAWS)}; the laws other than the paper's need ``restitution``.
+dt : float, optional
+    Step of the fixed-step solvers (seed-rk4, rk4-events), s; default as the CLI's (5e-6 s).
+"""
+_SOLVER3D_DOC = f"""
+solver : str, default "auto"
+    One of {", ".join(SOLVERS_3D)} (as ``kick simulate3d --solver``).
+law : str, default "power-law"
+    Normal contact law: {", ".join(LAWS)}.
+dt : float, optional
+    Step of the rapier scene path, s; default as the CLI's (1e-6 s).
+"""
+_MANY_DOC = f"""
+threads : int, optional
+    Worker threads (an own pool of that many); default: rayon's pool, one per core.
+
+Every parameter is a scalar or an array; they broadcast by numpy's rules to
+the rows' shape S (a vector parameter has a trailing axis of 3). The rows are
+solved in parallel in Rust with the GIL released.
+
+Returns a dict of arrays of shape S (vectors S + (3,)): every outcome below,
+``evaluations`` (uint64), ``status`` (uint8: {_STATUS_DOC}; the codes of
+``kick_core::Status``), and for the rows that did not give an outcome (their
+outcomes NaN) ``failure_index`` (int64, flat C-order row indices) and
+``failure_message`` (list of str, the library's message). No exception for a
+failed row.
+"""
+
+
+def simulate(**params):
+    return _kick.simulate(**params)
+
+
+_declare(
+    simulate,
+    "simulate",
+    [],
+    [_solver, _law, _dt],
+    "Solve one 1D contact (the paper's compliant model), as ``kick simulate``.\n\n"
+    "Returns the dict ``kick simulate --format json`` prints: every observable\n"
+    "(SI units, below), energy_residual (J), solver, method (the path that ran),\n"
+    "stop, evaluations, scenario (the eight parameters used) and law.\n" + _SOLVER_DOC,
+    "Observables\n-----------\n" + _outputs_docs(OBSERVABLES),
+)
+
+
+def simulate_many(**arrays):
+    return _kick.simulate_many(**arrays)
+
+
+_declare(
+    simulate_many,
+    "simulate_many",
+    [],
+    [_solver, _law, _dt, _threads],
+    "Solve many 1D contacts, as ``kick sweep`` does, from arrays.\n" + _SOLVER_DOC + _MANY_DOC,
+    "Outcomes\n--------\n" + _outputs_docs(list(OBSERVABLES) + [("energy_residual", "J")]),
+)
+
+
+def simulate3d(**params):
+    return _kick.simulate3d(**params)
+
+
+_declare(
+    simulate3d,
+    "simulate3d",
+    [],
+    [_solver, _law, _dt],
+    "Solve one off-center 3D kick (spin, friction), as ``kick simulate3d``.\n\n"
+    "Returns the dict ``kick simulate3d --format json`` prints: launch_velocity\n"
+    "and spin (arrays of 3: m/s, rad/s; x along the foot's path, z up), speed,\n"
+    "spin_rpm, launch_angle and launch_azimuth (deg), contact_time (s), peak\n"
+    "forces (N), max_compression (m), slip_time (s), impulses (N s), the energy\n"
+    "partition (J), energy_residual, evaluations, solver, law, law_parameters.\n" + _SOLVER3D_DOC,
+)
+
+
+def simulate3d_many(**arrays):
+    return _kick.simulate3d_many(**arrays)
+
+
+_declare(
+    simulate3d_many,
+    "simulate3d_many",
+    [],
+    [_solver, _law, _dt, _threads],
+    "Solve many off-center 3D kicks from arrays.\n" + _SOLVER3D_DOC + _MANY_DOC
+    + "\nThe outcomes are ``simulate3d``'s numbers, ``energy`` flattened to\n"
+    "``energy_<part>``; vectors (launch_velocity, spin, ...) have shape S + (3,).\n",
+)
+
+
+def history(**params):
+    return _kick.history(**params)
+
+
+_declare(
+    history,
+    "history",
+    [],
+    [_solver, _law, _dt, _inspect.Parameter("samples", _KW, default=None), _inspect.Parameter("interval", _KW, default=None)],
+    "Time history of one 1D contact, uniform samples, as ``kick simulate --history``.\n\n"
+    "Give one of ``samples`` (how many, >= 2: first touch to separation) or\n"
+    "``interval`` (s apart from first touch). The last row is the separation\n"
+    "state (phase 0). Returns a dict of 1-D float64 arrays (below).\n" + _SOLVER_DOC,
+    "Columns\n-------\n" + _outputs_docs(HISTORY_COLUMNS)
+    + "\n(phase: +1 compressing, -1 restoring, 0 the separation row)",
+)
+
+
+def fit(time, force=None, **kwargs):
+    return _kick.fit(time, force, **kwargs)
+
+
+_channels_doc = "\n".join(f"{name} : array [{unit}]" for name, unit in CHANNELS)
+_declare(
+    fit,
+    "simulate",
+    [
+        _inspect.Parameter("time", _inspect.Parameter.POSITIONAL_OR_KEYWORD),
+        _inspect.Parameter("force", _inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None),
+        _inspect.Parameter("sigma", _KW),
+        _inspect.Parameter("free", _KW),
+        _law,
+        _inspect.Parameter("time_offset", _KW, default=None),
+    ]
+    + [_inspect.Parameter(name, _KW, default=None) for name, _ in CHANNELS if name != "force"],
+    [],
+    f"""Identify parameters from a measured history, as ``kick fit data``.
+
+Levenberg-Marquardt on the accurate 1D solver (crate kick-identify): the
+parameters named in ``free`` are fitted, the other keywords are known
+values (and starting guesses of the free ones).
+
+time : array [s]
+    Sample times (increasing), from the data's clock; the model is read at
+    t - time_offset.
+{_channels_doc}
+    The channels measured at ``time`` (at least one).
+sigma : float or dict
+    Standard uncertainty of every channel, or {{channel: sigma}}.
+free : list of str
+    Names to fit: any 1D parameter, ``restitution`` (laws other than the
+    paper's) or ``time_offset``.
+time_offset : float, optional
+    t0, s: time of first touch in the data (start value when fitted; default 0).
+
+Returns a dict: names, units, estimate, standard_error, start (arrays in
+``names`` order), covariance and correlation (n x n arrays; NaN when the
+data do not determine them), singular_values, residuals (weighted),
+predicted, chi_square, degrees_of_freedom, residual_variance, stop (a word:
+converged, lost_patience, ...), termination (in words), converged,
+evaluations, law.
+""",
+)
+
+
+def flight(**params):
+    return _kick.flight(**params)
+
+
+_declare(
+    flight,
+    "flight",
+    [],
+    [],
+    "The ball's flight after the kick (crate kick-flight): drag crisis in Re,\n"
+    "Magnus lift, spin decay; landing, apex and the crossing of x = distance.\n\n"
+    "Returns a dict: flight_time (s), landing_point (array of 2: x, y in m),\n"
+    "apex_height (m), apex_time (s), landing_velocity (array of 3, m/s),\n"
+    "landing_spin (array of 3, rad/s), crossing (None, or a dict with\n"
+    "distance, time, height, lateral_offset, velocity when ``distance`` is\n"
+    "given and reached), steps, evaluations.",
+)
+
+from . import dask  # noqa: E402  (kick.dask.simulate_many; needs `distributed` only when called)

@@ -1,0 +1,144 @@
+//! `kick._kick`: the Rust half of the Python module `kick` (the pure-Python
+//! half, `python/kick`, gives the functions their signatures and docstrings).
+//!
+//! A thin front end like the `kick` command line: it turns keywords into the
+//! library's specs (names, defaults and validation from the declared
+//! parameter lists, `kick_core::parameters` and
+//! `kick_flight::spec::FLIGHT_PARAMETERS`), calls one library function and
+//! turns the answer into Python objects. Bad input is a `ValueError` with
+//! the library error's message (the text the command line prints); a panic
+//! never crosses into Python ([`guard`]).
+
+mod bridge;
+mod convert;
+mod fit;
+mod flight;
+mod many;
+mod params;
+
+use kick_compliant::SolverChoice;
+use kick_core::{LawKind, RecordingSolver, Spacing, HISTORY_COLUMNS, MAX_HISTORY_SAMPLES};
+use numpy::PyArray1;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::fmt::Display;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// A `ValueError` carrying the library's message.
+pub(crate) fn value_error(e: impl Display) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// Run a front-end function; a panic (a bug) becomes a `RuntimeError` with
+/// its message instead of unwinding into the interpreter.
+pub(crate) fn guard<T>(f: impl FnOnce() -> PyResult<T>) -> PyResult<T> {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or_else(|payload| {
+        let message = payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown panic".to_string());
+        Err(PyRuntimeError::new_err(format!("internal error in kick (please report): {message}")))
+    })
+}
+
+/// The contact law named as `kick simulate --law` names it.
+pub(crate) fn law(name: &str) -> PyResult<LawKind> {
+    LawKind::from_name(name).map_err(value_error)
+}
+
+/// The 1D solver named as `--solver` names it; `dt` (seed-rk4's step) defaults as the CLI's.
+pub(crate) fn solver_1d(name: &str, dt: Option<f64>) -> PyResult<SolverChoice> {
+    SolverChoice::from_name(name, dt.unwrap_or(bridge::default_dt())).map_err(value_error)
+}
+
+/// One 1D contact: the object `kick simulate --format json` prints.
+#[pyfunction]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, **params))]
+fn simulate<'py>(
+    py: Python<'py>,
+    solver: &str,
+    law: &str,
+    dt: Option<f64>,
+    params: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    guard(|| {
+        let spec = params::scenario_spec(params, crate::law(law)?)?;
+        let object = bridge::simulate(&spec, solver, dt.unwrap_or(bridge::default_dt())).map_err(value_error)?;
+        convert::json_to_py(py, &object)
+    })
+}
+
+/// One off-center 3D kick: the object `kick simulate3d --format json` prints.
+#[pyfunction]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, **params))]
+fn simulate3d<'py>(
+    py: Python<'py>,
+    solver: &str,
+    law: &str,
+    dt: Option<f64>,
+    params: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    guard(|| {
+        let spec = params::kick_spec(params, crate::law(law)?)?;
+        let object = bridge::simulate3d(&spec, solver, dt.unwrap_or(bridge::default_scene_dt())).map_err(value_error)?;
+        convert::json_to_py(py, &object)
+    })
+}
+
+/// The time history of one 1D contact, uniform samples (`kick_core::Spacing`):
+/// a dict of 1-D arrays named as `kick_core::HISTORY_COLUMNS`.
+#[pyfunction]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, samples = None, interval = None, **params))]
+#[allow(clippy::too_many_arguments)]
+fn history<'py>(
+    py: Python<'py>,
+    solver: &str,
+    law: &str,
+    dt: Option<f64>,
+    samples: Option<usize>,
+    interval: Option<f64>,
+    params: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    guard(|| {
+        let spacing = match (samples, interval) {
+            (Some(n), None) => Spacing::Count(n),
+            (None, Some(dt)) => Spacing::Interval(dt),
+            _ => return Err(PyValueError::new_err("give exactly one of `samples` (how many) or `interval` (s apart)")),
+        };
+        let spec = params::scenario_spec(params, crate::law(law)?)?;
+        let scenario = spec.build().map_err(value_error)?;
+        let solver = solver_1d(solver, dt)?;
+        let (_, history) =
+            py.detach(|| solver.solve_sampled(&scenario, spacing, MAX_HISTORY_SAMPLES)).map_err(value_error)?;
+        let out = PyDict::new(py);
+        for (k, (name, _)) in HISTORY_COLUMNS.iter().enumerate() {
+            let column: Vec<f64> = history.samples.iter().map(|s| s.values()[k]).collect();
+            out.set_item(*name, PyArray1::from_vec(py, column))?;
+        }
+        Ok(out)
+    })
+}
+
+#[pymodule]
+fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate3d, m)?)?;
+    m.add_function(wrap_pyfunction!(history, m)?)?;
+    m.add_function(wrap_pyfunction!(many::simulate_many, m)?)?;
+    m.add_function(wrap_pyfunction!(many::simulate3d_many, m)?)?;
+    m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(flight::flight, m)?)?;
+    m.add_function(wrap_pyfunction!(params::declared, m)?)?;
+    m.add_function(wrap_pyfunction!(params::keywords, m)?)?;
+    m.add("STATUS", params::status_codes(m.py())?)?;
+    m.add("HISTORY_COLUMNS", HISTORY_COLUMNS.iter().map(|(n, u)| (*n, *u)).collect::<Vec<_>>())?;
+    m.add("OBSERVABLES", kick_core::OBSERVABLES.iter().map(|(n, u)| (*n, *u)).collect::<Vec<_>>())?;
+    m.add("CHANNELS", kick_identify::Channel::ALL.map(|c| (c.name(), c.unit())).to_vec())?;
+    m.add("SOLVERS", SolverChoice::NAMES.to_vec())?;
+    m.add("SOLVERS_3D", kick_3d::Solver3d::NAMES.to_vec())?;
+    m.add("LAWS", LawKind::ALL.map(LawKind::name).to_vec())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

@@ -1,0 +1,411 @@
+//! `simulate_many` and `simulate3d_many`: every parameter a scalar or an
+//! array, broadcast by numpy's rules; the rows solved in parallel (rayon)
+//! with the GIL released, straight into preallocated numpy arrays. A row
+//! that fails gets a status code (`kick_core::Status::code`), NaN outcomes
+//! and its message, not an exception.
+
+use crate::params::LawSpec;
+use crate::{guard, value_error};
+use kick_3d::{KickSpec, Outcome3d, Solver3d};
+use kick_compliant::SolverChoice;
+use kick_core::parameters::{self, ParameterDef, SetParameter, Shape, Value};
+use kick_core::{ScenarioSpec, Solver, Status, OBSERVABLES};
+use numpy::ndarray::{ArrayViewD, IxDyn};
+use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use rayon::prelude::*;
+
+/// Rows one parallel task solves in turn (as `kick run` chunks its rows).
+const CHUNK: usize = 1024;
+
+/// Most worker threads per core a call may ask for.
+const THREADS_PER_CORE: usize = 4;
+
+/// A model the rows are solved with: its output columns and one solve.
+trait Model: Sync {
+    type Spec: LawSpec + Copy + Send + Sync;
+    /// Output columns: name and width (1, or 3 for a vector).
+    fn columns(&self) -> &[(String, usize)];
+    /// Solve one row into `row` (the columns' values, vectors expanded);
+    /// the evaluations spent, or the status and message of a failure.
+    fn solve(&self, spec: &Self::Spec, row: &mut [f64]) -> Result<u64, (Status, String)>;
+}
+
+struct Model1d {
+    solver: SolverChoice,
+    columns: Vec<(String, usize)>,
+}
+
+impl Model1d {
+    fn new(solver: SolverChoice) -> Model1d {
+        let mut columns: Vec<(String, usize)> = OBSERVABLES.iter().map(|(n, _)| (n.to_string(), 1)).collect();
+        columns.push(("energy_residual".into(), 1));
+        Model1d { solver, columns }
+    }
+}
+
+impl Model for Model1d {
+    type Spec = ScenarioSpec;
+    fn columns(&self) -> &[(String, usize)] {
+        &self.columns
+    }
+    fn solve(&self, spec: &ScenarioSpec, row: &mut [f64]) -> Result<u64, (Status, String)> {
+        let failed = |e: kick_core::KickError| (e.status(), e.to_string());
+        let scenario = spec.build().map_err(failed)?;
+        let outcome = self.solver.solve(&scenario).map_err(failed)?;
+        row[..OBSERVABLES.len()].copy_from_slice(&outcome.observable_values());
+        row[OBSERVABLES.len()] = outcome.energy.residual();
+        Ok(outcome.evaluations)
+    }
+}
+
+/// The 3D outcome's numbers as `simulate3d` names them: its serde fields,
+/// vectors as width-3 columns, `energy.x` as `energy_x`, plus `energy_residual`.
+fn flatten3d(outcome: &Outcome3d, out: &mut Vec<(String, Vec<f64>)>) {
+    fn walk(prefix: &str, value: &serde_json::Value, out: &mut Vec<(String, Vec<f64>)>) {
+        use serde_json::Value as J;
+        match value {
+            J::Number(n) => out.push((prefix.to_string(), vec![n.as_f64().unwrap_or(f64::NAN)])),
+            J::Array(items) if items.iter().all(J::is_number) => {
+                out.push((prefix.to_string(), items.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect()))
+            }
+            J::Object(map) => {
+                for (k, v) in map {
+                    let name = if prefix.is_empty() { k.clone() } else { format!("{prefix}_{k}") };
+                    walk(&name, v, out);
+                }
+            }
+            _ => {} // names (solver, law) are per call, not per row
+        }
+    }
+    out.clear();
+    walk("", &serde_json::to_value(outcome).unwrap_or_default(), out);
+    out.push(("energy_residual".into(), vec![outcome.energy.residual()]));
+}
+
+struct Model3d {
+    solver: Solver3d,
+    columns: Vec<(String, usize)>,
+}
+
+impl Model3d {
+    fn new(solver: Solver3d) -> PyResult<Model3d> {
+        // The columns of a solved kick (the baseline on the cheap 1D path).
+        let baseline = kick_3d::one_d::solve(&kick_3d::Kick3d::baseline()).map_err(value_error)?;
+        let mut flat = Vec::new();
+        flatten3d(&baseline, &mut flat);
+        let columns = flat.into_iter().filter(|(n, _)| n != "evaluations").map(|(n, v)| (n, v.len())).collect();
+        Ok(Model3d { solver, columns })
+    }
+}
+
+impl Model for Model3d {
+    type Spec = KickSpec;
+    fn columns(&self) -> &[(String, usize)] {
+        &self.columns
+    }
+    fn solve(&self, spec: &KickSpec, row: &mut [f64]) -> Result<u64, (Status, String)> {
+        let failed = |e: kick_3d::Kick3dError| (e.status(), e.to_string());
+        let kick = spec.build().map_err(failed)?;
+        let outcome = self.solver.solve(&kick).map_err(failed)?;
+        let mut flat = Vec::with_capacity(self.columns.len() + 1);
+        flatten3d(&outcome, &mut flat);
+        let mut at = 0;
+        for (name, values) in flat.iter().filter(|(n, _)| n != "evaluations") {
+            debug_assert!(self.columns.iter().any(|(c, _)| c == name));
+            row[at..at + values.len()].copy_from_slice(values);
+            at += values.len();
+        }
+        Ok(outcome.evaluations)
+    }
+}
+
+/// One parameter given as an array, broadcast to the rows' shape (plus the
+/// trailing axis of 3 for a vector).
+struct Input<'a> {
+    parameter: &'static ParameterDef,
+    view: ArrayViewD<'a, f64>,
+}
+
+impl Input<'_> {
+    /// The value at row index `index` (`scratch`: room for index plus one axis).
+    fn value(&self, index: &[usize], scratch: &mut Vec<usize>) -> Value {
+        match self.parameter.shape {
+            Shape::Scalar => Value::Number(self.view[index]),
+            Shape::Switch => Value::Switch(self.view[index] != 0.0),
+            Shape::Vector3 => {
+                scratch.clear();
+                scratch.extend_from_slice(index);
+                scratch.push(0);
+                let mut v = [0.0; 3];
+                for (k, slot) in v.iter_mut().enumerate() {
+                    *scratch.last_mut().unwrap_or(&mut 0) = k;
+                    *slot = self.view[scratch.as_slice()];
+                }
+                Value::Vector(v)
+            }
+        }
+    }
+}
+
+/// numpy's broadcasting: shapes aligned at the right, each axis equal or 1.
+fn broadcast_shapes(shapes: &[(&str, Vec<usize>)]) -> PyResult<Vec<usize>> {
+    let ndim = shapes.iter().map(|(_, s)| s.len()).max().unwrap_or(0);
+    let mut out = vec![1usize; ndim];
+    for (axis, size) in out.iter_mut().enumerate() {
+        for (_, shape) in shapes {
+            let offset = ndim - shape.len();
+            if axis < offset {
+                continue;
+            }
+            let n = shape[axis - offset];
+            if n != 1 {
+                if *size != 1 && *size != n {
+                    let shown: Vec<String> = shapes.iter().map(|(name, s)| format!("`{name}` {s:?}")).collect();
+                    return Err(PyValueError::new_err(format!(
+                        "shape mismatch: the parameters cannot be broadcast to one shape ({})",
+                        shown.join(", ")
+                    )));
+                }
+                *size = n;
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Row `i` (C order) of `shape` as an index.
+fn unravel(mut i: usize, shape: &[usize], index: &mut [usize]) {
+    for (slot, &n) in index.iter_mut().zip(shape).rev() {
+        *slot = i % n;
+        i /= n;
+    }
+}
+
+/// One chunk of rows and its part of every output.
+struct Chunk<'a> {
+    start: usize,
+    rows: usize,
+    columns: Vec<&'a mut [f64]>,
+    status: &'a mut [u8],
+    evaluations: &'a mut [u64],
+}
+
+/// Solve rows `chunk.start..` into the chunk's outputs; the failures (row, message).
+fn solve_chunk<M: Model>(model: &M, base: &M::Spec, inputs: &[Input], shape: &[usize], chunk: Chunk) -> Vec<(usize, String)> {
+    let Chunk { start, rows, mut columns, status, evaluations } = chunk;
+    let widths: Vec<usize> = model.columns().iter().map(|(_, w)| *w).collect();
+    let mut row = vec![0.0; widths.iter().sum()];
+    let mut index = vec![0usize; shape.len()];
+    let mut scratch = Vec::with_capacity(shape.len() + 1);
+    let mut failures = Vec::new();
+    for j in 0..rows {
+        unravel(start + j, shape, &mut index);
+        let mut spec = *base;
+        for input in inputs {
+            // Shapes were checked when the inputs were made.
+            let _ = spec.set_parameter(input.parameter, input.value(&index, &mut scratch));
+        }
+        let result = model.solve(&spec, &mut row);
+        let mut at = 0;
+        for (column, &w) in columns.iter_mut().zip(&widths) {
+            let target = &mut column[j * w..(j + 1) * w];
+            match result {
+                Ok(_) => target.copy_from_slice(&row[at..at + w]),
+                Err(_) => target.fill(f64::NAN),
+            }
+            at += w;
+        }
+        match result {
+            Ok(n) => {
+                status[j] = Status::Separated.code();
+                evaluations[j] = n;
+            }
+            Err((s, message)) => {
+                status[j] = s.code();
+                evaluations[j] = 0;
+                failures.push((start + j, message));
+            }
+        }
+    }
+    failures
+}
+
+/// Run `f` on `threads` workers of its own pool, or on rayon's global pool.
+fn in_pool<T: Send>(threads: Option<usize>, f: impl FnOnce() -> T + Send) -> PyResult<T> {
+    match threads {
+        None => Ok(f()),
+        Some(n) => {
+            let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
+            let limit = THREADS_PER_CORE * cores;
+            if !(1..=limit).contains(&n) {
+                return Err(PyValueError::new_err(format!(
+                    "threads = {n}: must be between 1 and {limit} ({THREADS_PER_CORE} per core, {cores} cores here)"
+                )));
+            }
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .map_err(|e| PyValueError::new_err(format!("cannot start {n} threads: {e}")))?;
+            Ok(pool.install(f))
+        }
+    }
+}
+
+/// The whole call: inputs from the keywords, outputs allocated, rows solved
+/// without the GIL, the dict of arrays.
+fn run_many<'py, M: Model>(
+    py: Python<'py>,
+    model: &M,
+    base: M::Spec,
+    threads: Option<usize>,
+    arrays: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let numpy = py.import("numpy")?;
+    let float64 = numpy.getattr("float64")?;
+    let mut given: Vec<(&'static ParameterDef, Bound<'py, PyArrayDyn<f64>>)> = Vec::new();
+    if let Some(arrays) = arrays {
+        for (key, value) in arrays.iter() {
+            let name: String = key.extract()?;
+            let parameter = parameters::find_at(M::Spec::LEVELS, &name).map_err(value_error)?;
+            if value.is_none() {
+                continue;
+            }
+            let array = numpy.getattr("asarray")?.call1((value, &float64))?;
+            let array = array.cast_into::<PyArrayDyn<f64>>().map_err(|e| PyValueError::new_err(e.to_string()))?;
+            given.push((parameter, array));
+        }
+    }
+    // Row shapes: a vector's array has a trailing axis of 3.
+    let mut shapes = Vec::new();
+    for (p, array) in &given {
+        let mut shape = array.shape().to_vec();
+        if p.shape == Shape::Vector3 {
+            if shape.last() != Some(&3) {
+                return Err(PyValueError::new_err(format!(
+                    "`{}` takes three numbers (x, y, z) on its last axis, got shape {shape:?}",
+                    p.name
+                )));
+            }
+            shape.pop();
+        }
+        shapes.push((p.name, shape));
+    }
+    let shape = broadcast_shapes(&shapes)?;
+    let rows: usize = shape.iter().product();
+
+    let guards: Vec<PyReadonlyArrayDyn<'py, f64>> = given.iter().map(|(_, a)| a.readonly()).collect();
+    let bases: Vec<ArrayViewD<f64>> = guards.iter().map(|g| g.as_array()).collect();
+    let mut inputs = Vec::with_capacity(guards.len());
+    for ((p, _), g) in given.iter().zip(&bases) {
+        let mut target = shape.clone();
+        if p.shape == Shape::Vector3 {
+            target.push(3);
+        }
+        let view = g.broadcast(IxDyn(&target)).ok_or_else(|| value_error("broadcast failed"))?;
+        inputs.push(Input { parameter: p, view });
+    }
+
+    // Outputs, filled in place.
+    let with_axis = |w: usize| {
+        let mut s = shape.clone();
+        if w > 1 {
+            s.push(w);
+        }
+        s
+    };
+    let outputs: Vec<Bound<'py, PyArrayDyn<f64>>> =
+        model.columns().iter().map(|(_, w)| PyArrayDyn::<f64>::zeros(py, IxDyn(&with_axis(*w)), false)).collect();
+    let status = PyArrayDyn::<u8>::zeros(py, IxDyn(&shape), false);
+    let evaluations = PyArrayDyn::<u64>::zeros(py, IxDyn(&shape), false);
+    let mut output_guards: Vec<_> = outputs.iter().map(|a| a.readwrite()).collect();
+    let mut status_guard = status.readwrite();
+    let mut evaluations_guard = evaluations.readwrite();
+    let contiguous = |e: numpy::AsSliceError| value_error(e);
+    let mut column_chunks: Vec<std::slice::ChunksMut<f64>> = Vec::new();
+    for (guard, (_, w)) in output_guards.iter_mut().zip(model.columns()) {
+        column_chunks.push(guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK * w));
+    }
+    let mut status_chunks = status_guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK);
+    let mut evaluation_chunks = evaluations_guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK);
+    let mut chunks = Vec::with_capacity(rows.div_ceil(CHUNK));
+    for start in (0..rows).step_by(CHUNK) {
+        chunks.push(Chunk {
+            start,
+            rows: CHUNK.min(rows - start),
+            columns: column_chunks.iter_mut().map(|c| c.next().unwrap_or_default()).collect(),
+            status: status_chunks.next().unwrap_or_default(),
+            evaluations: evaluation_chunks.next().unwrap_or_default(),
+        });
+    }
+
+    let shape_ref = &shape;
+    let inputs_ref = &inputs;
+    let base_ref = &base;
+    let failures: Vec<(usize, String)> = py.detach(|| {
+        in_pool(threads, || {
+            chunks
+                .into_par_iter()
+                .flat_map_iter(|chunk| solve_chunk(model, base_ref, inputs_ref, shape_ref, chunk))
+                .collect()
+        })
+    })?;
+    drop(output_guards);
+    drop(status_guard);
+    drop(evaluations_guard);
+
+    let out = PyDict::new(py);
+    for ((name, _), array) in model.columns().iter().zip(outputs) {
+        out.set_item(name, array)?;
+    }
+    out.set_item("evaluations", evaluations)?;
+    out.set_item("status", status)?;
+    let index: Vec<i64> = failures.iter().map(|(i, _)| *i as i64).collect();
+    out.set_item("failure_index", PyArray1::from_vec(py, index))?;
+    let messages = PyList::empty(py);
+    for (_, message) in &failures {
+        messages.append(message)?;
+    }
+    out.set_item("failure_message", messages)?;
+    Ok(out)
+}
+
+/// Many 1D contacts: `simulate`'s keywords, each a scalar or an array.
+#[pyfunction]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, threads = None, **arrays))]
+pub fn simulate_many<'py>(
+    py: Python<'py>,
+    solver: &str,
+    law: &str,
+    dt: Option<f64>,
+    threads: Option<usize>,
+    arrays: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    guard(|| {
+        let model = Model1d::new(crate::solver_1d(solver, dt)?);
+        let base: ScenarioSpec = crate::params::spec(None, crate::law(law)?)?;
+        run_many(py, &model, base, threads, arrays)
+    })
+}
+
+/// Many 3D kicks: `simulate3d`'s keywords, each a scalar or an array
+/// (vectors with a trailing axis of 3).
+#[pyfunction]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, threads = None, **arrays))]
+pub fn simulate3d_many<'py>(
+    py: Python<'py>,
+    solver: &str,
+    law: &str,
+    dt: Option<f64>,
+    threads: Option<usize>,
+    arrays: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    guard(|| {
+        let solver = Solver3d::from_name(solver, dt.unwrap_or_else(crate::bridge::default_scene_dt)).map_err(value_error)?;
+        let model = Model3d::new(solver)?;
+        let base: KickSpec = crate::params::spec(None, crate::law(law)?)?;
+        run_many(py, &model, base, threads, arrays)
+    })
+}

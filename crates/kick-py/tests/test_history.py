@@ -1,0 +1,52 @@
+"""kick.history against `kick simulate --history INTERVAL --format json`."""
+
+import numpy as np
+import pytest
+
+import kick
+from conftest import cli, flags
+
+PHASE = {"compressing": 1.0, "restoring": -1.0, "separation": 0.0}
+
+
+@pytest.mark.parametrize(
+    "case",
+    [{}, {"solver": "seed-rk4"}, {"drive_force": 300.0, "solver": "accurate"}, {"law": "hunt-crossley", "restitution": 0.7}],
+)
+def test_history_equals_the_cli(kick_bin, case):
+    interval = 2e-5
+    expected = cli(kick_bin, "simulate", "--format", "json", "--history", interval, *flags(**case))["history"]
+    h = kick.history(interval=interval, **case)
+    assert list(h) == [name for name, _ in kick.HISTORY_COLUMNS]
+    for name, column in h.items():
+        assert column.dtype == np.float64 and column.shape == (len(expected),)
+        values = [PHASE[s[name]] if name == "phase" else s[name] for s in expected]
+        assert column.tolist() == values, name
+
+
+def test_samples_span_first_touch_to_separation():
+    n = 101
+    h = kick.history(samples=n)
+    t_c = kick.simulate()["contact_time"]
+    assert len(h["time"]) == n
+    # Uniform grid t_k = k t_end/(n - 1) for the first n - 1 rows, then the separation row at
+    # t_end: the contact time of the recording path (auto records on the full state, which
+    # agrees with the summary's path to its accuracy, 1e-10).
+    t_end = h["time"][-1]
+    np.testing.assert_array_equal(h["time"][:-1], np.arange(n - 1) * (t_end / (n - 1)))
+    assert t_end == pytest.approx(t_c, rel=1e-10)
+    assert h["phase"][-1] == 0.0 and h["compression"][-1] == 0.0
+    assert h["compression"][0] == 0.0 and h["force"].max() <= kick.simulate()["peak_force"]
+
+
+def test_spacing_is_checked():
+    with pytest.raises(ValueError, match="exactly one of `samples`"):
+        kick.history()
+    with pytest.raises(ValueError, match="exactly one of `samples`"):
+        kick.history(samples=10, interval=1e-5)
+    with pytest.raises(ValueError, match="invalid parameter `samples` = 1: must be at least 2"):
+        kick.history(samples=1)
+    with pytest.raises(ValueError, match="invalid parameter `interval` = -1: must be finite and > 0"):
+        kick.history(interval=-1.0)
+    with pytest.raises(ValueError, match="history too long"):
+        kick.history(interval=1e-12)

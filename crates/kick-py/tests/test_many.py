@@ -1,0 +1,131 @@
+"""simulate_many / simulate3d_many: broadcasting, rows equal to the single
+call (and so to the CLI), status codes instead of exceptions, threads, memory."""
+
+import tracemalloc
+
+import numpy as np
+import pytest
+
+import kick
+from conftest import cli, flags
+
+STATUS = {name: code for code, name in kick.STATUS.items()}
+OUTCOMES = [name for name, _ in kick.OBSERVABLES] + ["energy_residual"]
+
+
+def test_status_codes_are_the_library_ones():
+    assert kick.STATUS == {0: "separated", 1: "numerical failure", 2: "trapped", 3: "refused"}
+
+
+def test_broadcasting_shapes():
+    out = kick.simulate_many(foot_mass=np.array([[1.0], [3.0], [8.0]]), stiffness=[1e5, 4.2e5, 1e6, 3e6])
+    for name in OUTCOMES + ["status", "evaluations"]:
+        assert out[name].shape == (3, 4), name
+    assert out["status"].dtype == np.uint8 and out["evaluations"].dtype == np.uint64
+    assert out["failure_index"].dtype == np.int64 and out["failure_message"] == []
+    # Scalars only: one row of shape ().
+    assert kick.simulate_many()["v_ball_out"].shape == ()
+    assert kick.simulate_many(foot_mass=3.0)["v_ball_out"] == kick.simulate()["v_ball_out"]
+    # Empty axes stay empty.
+    assert kick.simulate_many(foot_mass=np.zeros((0, 2)))["v_ball_out"].shape == (0, 2)
+    # Any dtype numpy can turn into float64, any strides.
+    ints = kick.simulate_many(foot_mass=np.arange(1, 7).reshape(2, 3)[:, ::2])
+    floats = kick.simulate_many(foot_mass=np.array([[1.0, 3.0], [4.0, 6.0]]))
+    np.testing.assert_array_equal(ints["v_ball_out"], floats["v_ball_out"])
+
+
+def test_mismatched_shapes_are_refused():
+    with pytest.raises(ValueError, match=r"shape mismatch: .*`foot_mass` \[3\].*`stiffness` \[4\]"):
+        kick.simulate_many(foot_mass=[1.0, 2.0, 3.0], stiffness=[1e5, 2e5, 3e5, 4e5])
+    with pytest.raises(ValueError, match=r"`foot_inertia` takes three numbers \(x, y, z\) on its last axis, got shape \[2\]"):
+        kick.simulate3d_many(foot_inertia=[0.01, 0.02])
+    with pytest.raises(ValueError, match="unknown parameter `foot_mas` of the 1D scenario"):
+        kick.simulate_many(foot_mas=[1.0])
+
+
+def test_rows_equal_the_single_call_bit_for_bit():
+    m = np.array([0.6, 3.0, 8.0])
+    c = np.array([[0.0], [120.0], [450.0]])
+    out = kick.simulate_many(foot_mass=m, damping=c, drive_force=200.0)
+    for i in range(3):
+        for j in range(3):
+            one = kick.simulate(foot_mass=m[j], damping=c[i, 0], drive_force=200.0)
+            for name in OUTCOMES:
+                assert out[name][i, j] == one[name], (name, i, j)
+            assert out["evaluations"][i, j] == one["evaluations"]
+
+
+def test_failed_rows_get_a_status_and_the_cli_message(kick_bin):
+    drive = np.array([0.0, 1e5, 0.0, 0.0])
+    mass = np.array([3.0, 3.0, -1.0, 3.0])
+    out = kick.simulate_many(drive_force=drive, foot_mass=mass)
+    assert out["status"].tolist() == [STATUS["separated"], STATUS["trapped"], STATUS["refused"], STATUS["separated"]]
+    assert out["failure_index"].tolist() == [1, 2]
+    assert out["failure_message"] == [
+        cli(kick_bin, "simulate", *flags(drive_force=1e5), ok=False),
+        cli(kick_bin, "simulate", *flags(foot_mass=-1.0), ok=False),
+    ]
+    # seed-rk4 runs into its step budget under the same drive: not a proof of trapping.
+    seed = kick.simulate_many(drive_force=drive, solver="seed-rk4", dt=np.float64(5e-6))
+    assert seed["status"].tolist()[1] == STATUS["numerical failure"]
+    assert seed["failure_message"] == [cli(kick_bin, "simulate", "--solver", "seed-rk4", *flags(drive_force=1e5), ok=False)]
+    assert np.isnan(out["v_ball_out"][[1, 2]]).all() and np.isfinite(out["v_ball_out"][[0, 3]]).all()
+    assert out["evaluations"][1] == 0
+    # A fixed step too large for a stiff contact: a numerical failure, not physics.
+    stiff = kick.simulate_many(stiffness=[4.2e5, 1e12], solver="seed-rk4", dt=1e-4)
+    assert stiff["status"].tolist()[1] == STATUS["numerical failure"]
+
+
+def test_thread_counts_give_the_same_numbers_and_are_bounded():
+    k = np.geomspace(1e4, 1e7, 3000)
+    one = kick.simulate_many(stiffness=k, threads=1)
+    two = kick.simulate_many(stiffness=k, threads=2)
+    default = kick.simulate_many(stiffness=k)
+    for name in OUTCOMES:
+        np.testing.assert_array_equal(one[name], two[name])
+        np.testing.assert_array_equal(one[name], default[name])
+    for bad in (0, 10**6):
+        with pytest.raises(ValueError, match=rf"threads = {bad}: must be between 1 and \d+"):
+            kick.simulate_many(stiffness=k, threads=bad)
+
+
+def test_3d_rows_equal_the_single_call_and_vectors_trail():
+    offset = np.array([0.0, 0.03, 0.06])
+    friction = np.array([[0.3], [np.inf]])
+    inertia = np.array([0.01, 0.02, 0.02])
+    out = kick.simulate3d_many(offset=offset, friction=friction, foot_inertia=inertia)
+    assert out["launch_velocity"].shape == (2, 3, 3) and out["spin"].shape == (2, 3, 3)
+    assert out["speed"].shape == (2, 3)
+    for i in range(2):
+        for j in range(3):
+            one = kick.simulate3d(offset=offset[j], friction=friction[i, 0], foot_inertia=tuple(inertia))
+            np.testing.assert_array_equal(out["launch_velocity"][i, j], one["launch_velocity"])
+            np.testing.assert_array_equal(out["spin"][i, j], one["spin"])
+            assert out["contact_time"][i, j] == one["contact_time"]
+            assert out["energy_friction_loss"][i, j] == one["energy"]["friction_loss"]
+            assert out["energy_residual"][i, j] == one["energy_residual"]
+    # A row whose offset misses the ball is refused, with the CLI's message.
+    bad = kick.simulate3d_many(offset=[0.0, 0.2])
+    assert bad["status"].tolist() == [STATUS["separated"], STATUS["refused"]]
+    assert "offset 0.2 m misses the ball" in bad["failure_message"][0]
+    # Per-row vectors: the trailing axis carries x, y, z.
+    extents = np.array([[0.03, 0.12, 0.05], [0.03, 0.10, 0.04]])
+    rows = kick.simulate3d_many(offset=0.03, foot_half_extents=extents)
+    assert rows["speed"][1] == kick.simulate3d(offset=0.03, foot_half_extents=tuple(extents[1]))["speed"]
+
+
+def test_a_million_rows_allocate_only_the_output_arrays():
+    """No per-row Python objects: the traced peak is the output arrays (plus
+    the input), whatever the number of rows."""
+    n = 1_000_000
+    mass = np.linspace(0.5, 15.0, n)
+    tracemalloc.start()
+    tracemalloc.reset_peak()
+    out = kick.simulate_many(foot_mass=mass, damping=0.0)
+    current, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    outputs = sum(v.nbytes for v in out.values() if isinstance(v, np.ndarray))
+    assert outputs == n * (8 * len(OUTCOMES) + 1 + 8) + 0  # 16 float64 columns, status, evaluations
+    assert (out["status"] == 0).all()
+    print(f"\n{n} rows: outputs {outputs / 1e6:.1f} MB, traced peak {peak / 1e6:.1f} MB")
+    assert peak < outputs + 1_000_000, (peak, outputs)

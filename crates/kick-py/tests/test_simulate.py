@@ -1,0 +1,111 @@
+"""kick.simulate and kick.simulate3d against the command line's JSON."""
+
+import math
+
+import pytest
+
+import kick
+from conftest import cli, flags, same
+
+CASES_1D = [
+    {},
+    {"foot_mass": 8.0, "stiffness": 1.8e6},
+    {"damping": 0.0},
+    {"ball_speed": -8.0, "drive_force": 500.0},
+    {"exponent": 1.0, "damping": 450.0},
+    {"solver": "seed-rk4", "dt": 1e-6},
+    {"solver": "accurate", "foot_speed": 30.0},
+    {"law": "hunt-crossley", "restitution": 0.6},
+    {"law": "kelvin-voigt", "restitution": 0.8, "solver": "reduced"},
+]
+
+
+@pytest.mark.parametrize("case", CASES_1D)
+def test_simulate_equals_the_cli(kick_bin, case):
+    expected = cli(kick_bin, "simulate", "--format", "json", *flags(**case))
+    same(kick.simulate(**case), expected)
+
+
+CASES_3D = [
+    {},
+    {"offset": 0.05, "approach_angle": 10.0, "friction": 0.5},
+    {"offset": 0.03, "friction": math.inf, "foot_inertia": (0.01, 0.02, 0.02)},
+    {"offset": 0.04, "law": "hunt-crossley-exact", "restitution": 0.6, "foot_half_extents": (0.03, 0.1, 0.04)},
+]
+
+
+@pytest.mark.parametrize("case", CASES_3D)
+def test_simulate3d_equals_the_cli(kick_bin, case):
+    expected = cli(kick_bin, "simulate3d", "--format", "json", *flags(**case))
+    result = kick.simulate3d(**case)
+    assert result["launch_velocity"].shape == (3,) and result["spin"].shape == (3,)
+    same(result, expected)
+
+
+ERRORS = [
+    ("simulate", {"foot_mass": -1.0}),
+    ("simulate", {"foot_speed": 1.0, "ball_speed": 5.0}),
+    ("simulate", {"law": "flores"}),
+    ("simulate", {"restitution": 1.5, "law": "flores"}),
+    ("simulate", {"solver": "seed-rk4", "dt": 1e-3}),
+    ("simulate", {"drive_force": 1e5}),
+    ("simulate3d", {"offset": 0.2}),
+    ("simulate3d", {"approach_angle": 95.0}),
+    ("simulate3d", {"foot_inertia": (1.0, -1.0, 1.0)}),
+]
+
+
+@pytest.mark.parametrize("function,case", ERRORS)
+def test_errors_carry_the_cli_message(kick_bin, function, case):
+    message = cli(kick_bin, function, *flags(**case), ok=False)
+    with pytest.raises(ValueError) as error:
+        getattr(kick, function)(**case)
+    assert str(error.value) == message
+
+
+def test_unknown_names_list_the_valid_ones():
+    """The CLI refuses these in its argument parser (clap's wording); Python gives the library's."""
+    with pytest.raises(ValueError, match="unknown solver `rk5`: expected one of auto, seed-rk4, accurate"):
+        kick.simulate(solver="rk5")
+    with pytest.raises(ValueError, match="unknown 3D solver `ode`: expected one of auto, accurate, full-state, 1d, rapier"):
+        kick.simulate3d(solver="ode")
+    with pytest.raises(ValueError, match="hertz"):
+        kick.simulate(law="hertz")
+
+
+def test_unknown_keywords_name_the_nearby_ones():
+    with pytest.raises(ValueError, match=r"unknown parameter `foot_mas` of the 1D scenario: did you mean `foot_mass`\?"):
+        kick.simulate(foot_mas=3.0)
+    # A 3D parameter is not a keyword of the 1D function.
+    with pytest.raises(ValueError, match="unknown parameter `offset` of the 1D scenario"):
+        kick.simulate(offset=0.01)
+    with pytest.raises(ValueError, match="`foot_inertia` takes three numbers, got a number"):
+        kick.simulate3d(foot_inertia=1.0)
+    with pytest.raises(ValueError, match="`foot_mass` takes a number, got three numbers"):
+        kick.simulate(foot_mass=[1.0, 2.0, 3.0])
+
+
+def test_every_declared_keyword_is_accepted_with_its_default():
+    """The keywords are exactly the CLI's flags; giving each its declared default changes nothing."""
+    for function in ("simulate", "simulate3d"):
+        base = getattr(kick, function)()
+        for p in kick.keywords(function):
+            if p["default"] is not None:
+                same(getattr(kick, function)(**{p["name"]: p["default"]}), _plain(base))
+
+
+def _plain(d):
+    return {k: (_plain(v) if isinstance(v, dict) else v.tolist() if hasattr(v, "tolist") else v) for k, v in d.items()}
+
+
+def test_help_lists_keywords_with_symbol_unit_and_default():
+    doc = kick.simulate.__doc__
+    assert "foot_mass : scalar, m_f [kg], default 3" in doc
+    assert "stiffness : scalar, k [N/m^n], default 4.2e5" in doc
+    assert "v_ball_out : m/s" in doc
+    import inspect
+
+    signature = inspect.signature(kick.simulate3d)
+    assert signature.parameters["foot_half_extents"].default == (0.03, 0.12, 0.05)
+    assert signature.parameters["ball_inertia"].default is None  # derived: 2/3 m_b R^2
+    assert list(signature.parameters)[:2] == ["foot_mass", "ball_mass"]
