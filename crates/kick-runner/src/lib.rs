@@ -13,6 +13,7 @@
 //! - [`bench`]: work-precision of the 1D solvers, cost ratios, sweep throughput.
 //! - [`figures`]: Figures 1-7 and the plotting helpers (plotters, bundled DejaVu Sans).
 //! - [`report`]: `paper/README.md` from the result files and the cross-model checks.
+//! - [`validation`]: the model beside published measurements (`paper/validation.md`).
 //! - [`reproduce`]: all of it, step by step, as library calls.
 
 pub mod bench;
@@ -34,6 +35,7 @@ pub mod simulate;
 pub mod sweep;
 pub mod table2;
 pub mod three_d;
+pub mod validation;
 
 pub use experiment::{Experiment, ExperimentError, Output, Scenarios};
 pub use h5::{Column, OutcomeSet, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};

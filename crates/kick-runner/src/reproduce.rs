@@ -47,7 +47,7 @@ impl Printable for Reproduction {
 
 /// `to` relative to the directory `from` (both relative to the working
 /// directory), e.g. paper → results/figures gives ../results/figures.
-fn relative(from: &Path, to: &Path) -> String {
+pub(crate) fn relative(from: &Path, to: &Path) -> String {
     if from.is_absolute() || to.is_absolute() {
         return to.display().to_string();
     }
@@ -196,6 +196,16 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     crate::output::write(report_dir.join("laws.md"), laws_page).map_err(|e| e.to_string())?;
     let identification_page = crate::identify::report::identification(&fits, &identification_from_report)?;
     crate::output::write(report_dir.join("identification.md"), identification_page).map_err(|e| e.to_string())?;
+    // The validation chapter: the model beside published measurements.
+    let validation_dir = args.out.join("validation");
+    say(log, &format!("\n# validation -> {}, {}\n", validation_dir.display(), report_dir.join("validation.md").display()));
+    let validation = crate::validation::write(
+        &args.experiments.join("validation/measurements.toml"),
+        &validation_dir,
+        &report_dir.join("validation.md"),
+        &args.experiments.join("validation/NOTES.md"),
+    )?;
+    say(log, &validation.text());
     // Point the report at the sections written beside it.
     let mut text = std::fs::read_to_string(&args.report).map_err(|e| format!("cannot read {}: {e}", args.report.display()))?;
     let sections = [
@@ -204,6 +214,7 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
         ("leg.md", "Effective mass of the articulated leg"),
         ("laws.md", "Contact laws compared"),
         ("identification.md", "Parameter identification and identifiability"),
+        ("validation.md", "Validation: the model beside published measurements"),
     ];
     let present: Vec<String> = sections
         .iter()
