@@ -13,10 +13,11 @@
 //! - [`bench`]: work-precision of the 1D solvers, cost ratios, sweep throughput.
 //! - [`figures`]: Figures 1-7 and the plotting helpers (plotters, bundled DejaVu Sans).
 //! - [`report`]: `paper/README.md` from the result files and the cross-model checks.
-//! - [`reproduce`]: all of it, step by step, as library calls.
+//! - [`reproduce`]: all of it, step by step, as library calls; `--check` against the committed files ([`compare`]).
 
 pub mod bench;
 pub mod checks;
+pub mod compare;
 pub mod experiment;
 pub mod figures;
 pub mod h5;
