@@ -129,8 +129,6 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     say(log, &format!("checks: {} of {} pass\n", checks.len() - failed, checks.len()));
 
     let report_dir = args.report.parent().unwrap_or(Path::new("")).to_path_buf();
-    crate::report::write(&args.out, &relative(&report_dir, &figures), Some(&checks), &args.report).map_err(|e| e.to_string())?;
-    say(log, &format!("report: {}\n", args.report.display()));
 
     // The rest of the workspace's results: 3D sweeps, the leg, contact laws,
     // identifiability, and the solvers' work-precision; each under the
@@ -235,7 +233,9 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     let identification_page = crate::identify::report::identification(&fits, &identification_from_report)?;
     crate::output::write(report_dir.join("identification.md"), identification_page).map_err(|e| e.to_string())?;
     // Point the report at the sections written beside it.
-    let mut text = std::fs::read_to_string(&args.report).map_err(|e| format!("cannot read {}: {e}", args.report.display()))?;
+    // Written last, so that its list of result files is the same on every run
+    // (not whatever an earlier run left when this step came).
+    let mut text = crate::report::render(&args.out, &relative(&report_dir, &figures), Some(&checks)).map_err(|e| e.to_string())?;
     let sections = [
         ("solvers.md", "Solvers of the 1D model: precision, trust regions"),
         (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
@@ -253,8 +253,9 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
         text.push_str("\n## Further sections\n\n");
         text.push_str(&present.join("\n"));
         text.push('\n');
-        crate::output::write(&args.report, text).map_err(|e| e.to_string())?;
     }
+    crate::output::write(&args.report, text).map_err(|e| e.to_string())?;
+    say(log, &format!("report: {}\n", args.report.display()));
     Ok(Reproduction { checks: checks.len(), failed_checks: failed, report: args.report.clone() })
 }
 
@@ -299,8 +300,9 @@ impl Drop for Scratch {
 /// (every dataset and attribute but `git_commit`/`git_dirty`), by bytes
 /// otherwise. Left out: the timing outputs (`OUT/timing/`, `timing.md`).
 /// Every regenerated file is compared; a committed file under OUT that is
-/// no longer generated is a difference too (the report's folder may hold
-/// hand-written pages, so only generated pages are compared there).
+/// no longer generated is a difference too. The report's folder may hold
+/// hand-written pages (e.g. `3d.md`): they are copied into the temporary
+/// folder first, so the report links them as in the checkout.
 pub fn check(args: &ReproduceSettings, log: &mut dyn Write) -> Result<CheckReport, String> {
     static SEQUENCE: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
     let n = SEQUENCE.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
@@ -312,6 +314,12 @@ pub fn check(args: &ReproduceSettings, log: &mut dyn Write) -> Result<CheckRepor
     let pages = scratch.0.join(name(&report_dir, "paper"));
     if out == pages {
         return Err(format!("{} and {} must be different folders", args.out.display(), report_dir.display()));
+    }
+    // Hand-written pages beside the report (linked from it when present) as committed.
+    for file in crate::compare::files_below(&report_dir, &[]) {
+        let target = pages.join(&file);
+        std::fs::create_dir_all(target.parent().unwrap_or(&pages)).map_err(|e| format!("cannot create {}: {e}", pages.display()))?;
+        std::fs::copy(report_dir.join(&file), &target).map_err(|e| format!("cannot copy {}: {e}", file.display()))?;
     }
     let regenerated = ReproduceSettings { out: out.clone(), report: pages.join(name(&args.report, "README.md")), ..args.clone() };
     reproduce(&regenerated, log)?;
