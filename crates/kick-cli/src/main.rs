@@ -282,9 +282,12 @@ struct Bench {
     /// Short variant for CI: a few ladder points, little time each
     #[arg(long)]
     quick: bool,
-    /// Also write a Markdown section with the measured numbers here
+    /// Also write a Markdown page with the measured times (and the machine) here
     #[arg(long)]
     report: Option<PathBuf>,
+    /// Also write the solvers' page (errors and evaluation counts, the same on every run) here
+    #[arg(long)]
+    solvers_report: Option<PathBuf>,
 }
 
 #[derive(Args)]
@@ -326,6 +329,11 @@ struct Reproduce {
     /// The benchmark's short variant (as `kick bench --quick`): for tests, not for the committed pages
     #[arg(long)]
     quick_bench: bool,
+    /// Regenerate into a temporary folder and compare with OUT and the report's folder (HDF5 by value,
+    /// other files by bytes; timing outputs and the git_commit/git_dirty attributes left out); exits 1
+    /// naming every file and dataset that differs
+    #[arg(long)]
+    check: bool,
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
@@ -423,7 +431,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         }
         Command::Bench(a) => {
             let settings =
-                bench::BenchSettings { out: a.out, min_time: a.min_time, sweep_samples: a.sweep_samples, quick: a.quick, report: a.report };
+                bench::BenchSettings { out: a.out, min_time: a.min_time, sweep_samples: a.sweep_samples, quick: a.quick, report: a.report, solvers_report: a.solvers_report };
             let report = bench::bench(&settings, out)?;
             out.print(Format::Text, &report)
         }
@@ -435,8 +443,21 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         }
         Command::Reproduce(a) => {
             set_threads(a.threads)?;
-            let settings =
-                reproduce::ReproduceSettings { experiments: a.experiments, out: a.out, report: a.report, quick_bench: a.quick_bench };
+            let settings = reproduce::ReproduceSettings {
+                experiments: a.experiments,
+                out: a.out,
+                report: a.report,
+                quick_bench: a.quick_bench,
+                steps: reproduce::Steps::All,
+            };
+            if a.check {
+                let found = reproduce::check(&settings, &mut std::io::sink())?;
+                out.print(Format::Text, &found)?;
+                return match found.differences.len() {
+                    0 => Ok(()),
+                    _ => Err("the committed results differ from a regeneration (listed above)".into()),
+                };
+            }
             let done = reproduce::reproduce(&settings, out)?;
             out.print(Format::Text, &done)?;
             match done.failed_checks {

@@ -1,5 +1,11 @@
 //! `kick bench`: work–precision of every 1D solver, the headline ratios, and
 //! sweep throughput, measured in one run of one binary.
+//!
+//! What depends on the clock (times, ratios, throughput, the work–precision
+//! figure, whose x axis is time) goes to the timing file and page, with the
+//! machine's description; `kick reproduce` puts them in `results/timing/` and
+//! `paper/timing.md`, the only outputs a second run may change. Errors and
+//! evaluation counts do not depend on the clock: they make the solvers page.
 
 use crate::figures::{save_grid, Panel, Series};
 use crate::h5::{write_f64_attr, write_strings, Column, OutcomeSet, Setting, SweepData, SweepWriter};
@@ -19,7 +25,7 @@ use std::time::Instant;
 /// What to measure and where to write it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BenchSettings {
-    /// Directory for work_precision.h5 (figures go to DIR/figures).
+    /// Directory for work_precision.h5, timing-dependent (figures go to DIR/figures).
     pub out: PathBuf,
     /// Least wall time per measured point, s.
     pub min_time: f64,
@@ -27,13 +33,16 @@ pub struct BenchSettings {
     pub sweep_samples: u64,
     /// Short variant for CI: a few ladder points, little time each.
     pub quick: bool,
-    /// Also write a Markdown section with the measured numbers here.
+    /// Also write a Markdown page with the measured times here (with the machine's description).
     pub report: Option<PathBuf>,
+    /// Also write the solvers' page here: what `auto` runs, errors and evaluation counts, trust regions
+    /// (no time: the same on every run).
+    pub solvers_report: Option<PathBuf>,
 }
 
 impl Default for BenchSettings {
     fn default() -> Self {
-        BenchSettings { out: PathBuf::from("results"), min_time: 0.3, sweep_samples: 200_000, quick: false, report: None }
+        BenchSettings { out: PathBuf::from("results"), min_time: 0.3, sweep_samples: 200_000, quick: false, report: None, solvers_report: None }
     }
 }
 
@@ -157,6 +166,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let path = args.out.join("work_precision.h5");
     let text = format!("kick bench{} --min-time {min_time}", if args.quick { " --quick" } else { "" });
     let provenance = Provenance::now("work_precision", "kick bench", &text);
+    let machine = Machine::this();
     let set = OutcomeSet {
         solver: "bench".into(),
         // References: closed forms, else accurate at this tolerance.
@@ -183,14 +193,22 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     ] {
         write_f64_attr(writer.file(), &path, name, value).map_err(|e| e.to_string())?;
     }
+    crate::h5::write_str_attr(writer.file(), &path, "machine_cpu", &machine.cpu).map_err(|e| e.to_string())?;
+    write_f64_attr(writer.file(), &path, "machine_cores", machine.cores as f64).map_err(|e| e.to_string())?;
     let path = writer.finish().map_err(|e| e.to_string())?;
     let mut written = vec![path.clone()];
     written.extend(draw(&path, &args.out.join("figures"))?);
+    let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples, cost: &cost };
     if let Some(report) = &args.report {
-        let depth = report.parent().map_or(0, |p| p.components().count());
-        let figure = format!("{}{}/figures/work_precision.png", "../".repeat(depth), args.out.display());
-        let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples, cost: &cost };
-        crate::output::write(report, measured.markdown(&figure, &text)).map_err(|e| e.to_string())?;
+        let report_dir = report.parent().unwrap_or(std::path::Path::new(""));
+        let figure = crate::reproduce::relative(report_dir, &args.out.join("figures/work_precision.png"));
+        let data = crate::reproduce::relative(report_dir, &path);
+        crate::output::write(report, measured.timing_markdown(&figure, &data, &text, &machine)).map_err(|e| e.to_string())?;
+        written.push(report.clone());
+    }
+    if let Some(report) = &args.solvers_report {
+        let timing = args.report.as_ref().map(|t| crate::reproduce::relative(report.parent().unwrap_or(std::path::Path::new("")), t));
+        crate::output::write(report, measured.solvers_markdown(&text, timing.as_deref())).map_err(|e| e.to_string())?;
         written.push(report.clone());
     }
     Ok(BenchReport {
@@ -216,24 +234,49 @@ struct Measured<'a> {
     cost: &'a kick_3d::precision::CostRatio,
 }
 
+/// The machine a timing was taken on.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Machine {
+    /// CPU model (`model name` of /proc/cpuinfo), or "unknown".
+    pub cpu: String,
+    /// Cores this process may use.
+    pub cores: usize,
+}
+
+impl Machine {
+    pub fn this() -> Machine {
+        let cpu = std::fs::read_to_string("/proc/cpuinfo")
+            .ok()
+            .and_then(|text| {
+                text.lines()
+                    .find(|l| l.starts_with("model name"))
+                    .and_then(|l| l.split_once(':'))
+                    .map(|(_, v)| v.trim().to_string())
+            })
+            .unwrap_or_else(|| "unknown".into());
+        let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+        Machine { cpu, cores }
+    }
+
+    fn describe(&self) -> String {
+        format!("{}, {} cores available, {} {}", self.cpu, self.cores, std::env::consts::OS, std::env::consts::ARCH)
+    }
+}
+
 impl Measured<'_> {
-    fn markdown(&self, figure: &str, command: &str) -> String {
+    /// Errors and evaluation counts: the same on every run.
+    fn solvers_markdown(&self, command: &str, timing: Option<&str>) -> String {
         let mut rows = String::new();
         for p in self.points {
-            rows.push_str(&format!(
-                "| {} | {:.2e} | {:.2e} | {:.2} | {:.0} |\n",
-                p.solver,
-                p.setting,
-                p.max_error,
-                p.seconds_per_scenario * 1e6,
-                p.evaluations_per_scenario
-            ));
+            rows.push_str(&format!("| {} | {:.2e} | {:.2e} | {:.0} |\n", p.solver, p.setting, p.max_error, p.evaluations_per_scenario));
         }
+        let timing = timing
+            .map(|t| format!("Times, cost ratios, sweep throughput and the work–precision figure depend on the machine: see [timing]({t}).\n\n"))
+            .unwrap_or_default();
         format!(
             "# Solvers of the 1D model\n\n\
-             Generated by `{command}` (part of `kick reproduce`); every number below was measured in that run, \
-             on the machine that ran it. Timings on a shared machine move by tens of percent between runs; \
-             ratios are taken within one run.\n\n\
+             Generated by `{command}` (part of `kick reproduce`). Errors and evaluation counts do not depend on the clock \
+             and are the same on every run. {timing}\
              ## What `auto` runs\n\n\
              | scene | path | why it is exact |\n| --- | --- | --- |\n\
              | no drive, c = 0 | `closed-form` | energy integral (Eq. 33), contact time from the Beta function |\n\
@@ -243,21 +286,13 @@ impl Measured<'_> {
              quadrature under a drive) |\n\
              | another contact law | `reduced` | Dop853 on δ (Eq. 18) through the whole contact |\n\
              | a time history is wanted | `accurate` | full state of Eq. 47, every sample an integrator point |\n\n\
-             ## Work–precision\n\n![work–precision]({figure})\n\n\
+             ## Precision\n\n\
              Error: the largest relative error over v_b⁺, v_f⁺, ratio, peak force, contact time, δ_max, impulse and e \
              (times of the peak and of δ_max relative to the contact time), over Table 2, five elastic, six linear and \
              three driven scenarios, against the closed forms where they exist and `accurate` at 1e-14 elsewhere.\n\n\
-             | solver | tolerance or step (s) | max error | µs per scenario | evaluations |\n| --- | --- | --- | --- | --- |\n{rows}\n\
-             ## Headline numbers\n\n\
+             | solver | tolerance or step (s) | max error | evaluations per scenario |\n| --- | --- | --- | --- |\n{rows}\n\
              - `auto` at its default tolerance: largest error {:.2e}; `seed-rk4` at 5 µs: {:.2e} \
-             (step quantisation of the contact time and the missed onset jump c·V0).\n\
-             - Cost ratio seed-rk4 / auto: **{:.1}x** (median of 5 alternating measurements, range {:.1}–{:.1}x).\n\
-             - Sampled sweep of {} scenarios (auto, summary only, no file): {:.0} scenarios/s on 1 thread, \
-             {:.0} scenarios/s on 2 threads, parallel speed-up {:.2}x (medians of 3 alternating runs).\n\
-             - Off-center 3D kick against the same kick's 1D contact along its normal (both `auto`, one core, \
-             medians over {} kicks of `kick_3d::models::OffCenterBox`, seed {}, timed alternately): {:.1} µs against \
-             {:.2} µs, **{:.1}x**; {:.0} against {:.0} right-hand-side evaluations per kick. The 3D path's error \
-             against its tightened reference is held to 1e-9 by `crates/kick-3d/tests/model/box_accuracy.rs`.\n\n\
+             (step quantisation of the contact time and the missed onset jump c·V0).\n\n\
              ## Where each solver is trustworthy\n\n\
              Held by `crates/kick-compliant/tests/solvers/stress.rs` (k 1e2–1e12, n 1–3, ζ 0–50, m_f/m_b 1e-3–1e6, V0 1e-3–1e3 m/s, drives to 1e4 N, \
              grazing contact) and `crates/kick-compliant/tests/solvers/accurate_vs_closed_forms.rs`:\n\n\
@@ -272,8 +307,39 @@ impl Measured<'_> {
              - A drive that keeps the ball pressed ends in a typed `NoSeparation` error: proved at the first maximum \
              compression for the paper's law, or after the documented horizon (1000 undriven contact times, or 100 000 \
              steps in one phase).\n",
-            self.auto.max_error,
-            self.seed.max_error,
+            self.auto.max_error, self.seed.max_error,
+        )
+    }
+
+    /// Times and ratios: change from run to run and machine to machine.
+    fn timing_markdown(&self, figure: &str, data: &str, command: &str, machine: &Machine) -> String {
+        let mut rows = String::new();
+        for p in self.points {
+            rows.push_str(&format!(
+                "| {} | {:.2e} | {:.2e} | {:.2} |\n",
+                p.solver,
+                p.setting,
+                p.max_error,
+                p.seconds_per_scenario * 1e6
+            ));
+        }
+        format!(
+            "# Timing of the 1D solvers\n\n\
+             Generated by `{command}` (part of `kick reproduce`) on {}, {}. Every number below was measured in that run \
+             and changes from run to run: this page and `{data}` are the only outputs of `kick reproduce` that do. \
+             Timings on a shared machine move by tens of percent between runs; ratios are taken within one run.\n\n\
+             ## Work–precision\n\n![work–precision]({figure})\n\n\
+             | solver | tolerance or step (s) | max error | µs per scenario |\n| --- | --- | --- | --- |\n{rows}\n\
+             ## Headline numbers\n\n\
+             - Cost ratio seed-rk4 / auto: **{:.1}x** (median of 5 alternating measurements, range {:.1}–{:.1}x).\n\
+             - Sampled sweep of {} scenarios (auto, summary only, no file): {:.0} scenarios/s on 1 thread, \
+             {:.0} scenarios/s on 2 threads, parallel speed-up {:.2}x (medians of 3 alternating runs).\n\
+             - Off-center 3D kick against the same kick's 1D contact along its normal (both `auto`, one core, \
+             medians over {} kicks of `kick_3d::models::OffCenterBox`, seed {}, timed alternately): {:.1} µs against \
+             {:.2} µs, **{:.1}x**; {:.0} against {:.0} right-hand-side evaluations per kick. The 3D path's error \
+             against its tightened reference is held to 1e-9 by `crates/kick-3d/tests/model/box_accuracy.rs`.\n",
+            machine.describe(),
+            crate::provenance::utc_timestamp(std::time::SystemTime::now()),
             self.ratio,
             self.ratios[0],
             self.ratios[self.ratios.len() - 1],

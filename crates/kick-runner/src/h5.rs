@@ -8,7 +8,7 @@
 //!
 //! ```text
 //! /                      attributes: provenance (tool, tool_version, git_commit,
-//!                        git_dirty, created_utc, experiment, experiment_file, experiment_text,
+//!                        git_dirty, experiment, experiment_file, experiment_text,
 //!                        solver, solver_settings, ...), layout_version, rows
 //! /parameters/<name>     f64[rows], attribute units
 //! /outcomes/<name>       f64[rows] of the first solver (NaN where status = 1)
@@ -27,6 +27,10 @@
 //!
 //! Both writers go through [`crate::output::Staged`]: one writer per file,
 //! a temporary name of this process's own, the final name only when whole.
+//!
+//! Files are deterministic: no wall-clock time in the provenance, and HDF5's
+//! object time stamps (on by default for every group and dataset) are off,
+//! so the same run writes the same bytes.
 
 use crate::output::{OutputError, Staged};
 use crate::provenance::Provenance;
@@ -153,6 +157,11 @@ pub fn read_f64_attr(location: &hdf5::Location, name: &str) -> Option<f64> {
     location.attr(name).ok()?.read_scalar::<f64>().ok()
 }
 
+/// A new group `name` in `parent`, without HDF5's time stamps.
+pub fn new_group(parent: &Group, name: &str) -> hdf5::Result<Group> {
+    parent.create_group_builder().obj_track_times(false).create(name)
+}
+
 /// Create (or open) the group at a slash-separated path below `root`.
 fn group_at(root: &Group, relative: &str, path: &Path) -> Result<Group, H5Error> {
     let mut group = root.clone();
@@ -160,7 +169,7 @@ fn group_at(root: &Group, relative: &str, path: &Path) -> Result<Group, H5Error>
         group = if group.link_exists(part) {
             group.group(part)
         } else {
-            group.create_group(part)
+            new_group(&group, part)
         }
         .map_err(h5err(path))?;
     }
@@ -173,6 +182,7 @@ fn extendable<T: hdf5::H5Type>(group: &Group, name: &str, unit: &str, chunk: usi
     // up to that size per column.
     let dataset = group
         .new_dataset::<T>()
+        .obj_track_times(false)
         .chunk(chunk)
         .chunk_cache(11, 2 * chunk * std::mem::size_of::<T>().max(16), 1.0)
         .shape(0..)
@@ -186,6 +196,7 @@ fn extendable<T: hdf5::H5Type>(group: &Group, name: &str, unit: &str, chunk: usi
 pub fn write_column(group: &Group, path: &Path, column: &Column, values: &[f64]) -> Result<(), H5Error> {
     let dataset = group
         .new_dataset_builder()
+        .obj_track_times(false)
         .with_data(values)
         .create(column.name.as_str())
         .map_err(h5err(path))?;
@@ -197,6 +208,7 @@ pub fn write_strings(group: &Group, path: &Path, name: &str, values: &[String]) 
     let values = values.iter().map(|v| varlen(path, v)).collect::<Result<Vec<_>, _>>()?;
     let dataset = group
         .new_dataset_builder()
+        .obj_track_times(false)
         .with_data(values.as_slice())
         .create(name)
         .map_err(h5err(path))?;
@@ -278,7 +290,7 @@ impl SweepWriter {
         write_u64_attr(&file, path, "layout_version", u64::from(LAYOUT_VERSION))?;
         write_set_attrs(&file, path, &sets[0])?;
 
-        let group = file.create_group("parameters").map_err(h5err(path))?;
+        let group = new_group(&file, "parameters").map_err(h5err(path))?;
         let parameter_datasets = parameters
             .iter()
             .map(|c| extendable::<f64>(&group, &c.name, &c.unit, chunk, path))
@@ -292,7 +304,7 @@ impl SweepWriter {
                 write_set_attrs(&g, path, set)?;
                 g
             };
-            let outcomes = base.create_group("outcomes").map_err(h5err(path))?;
+            let outcomes = new_group(&base, "outcomes").map_err(h5err(path))?;
             let columns = set
                 .columns
                 .iter()
@@ -300,7 +312,7 @@ impl SweepWriter {
                 .collect::<Result<Vec<_>, _>>()?;
             let status = extendable::<u8>(&outcomes, "status", "1", chunk, path)?;
             write_str_attr(&status, path, "meaning", "0: solved; 1: failed, outcomes NaN, message in failures/")?;
-            let failures = base.create_group("failures").map_err(h5err(path))?;
+            let failures = new_group(&base, "failures").map_err(h5err(path))?;
             let failure_index = extendable::<u64>(&failures, "index", "1", failure_chunk, path)?;
             let failure_message = extendable::<VarLenUnicode>(&failures, "message", "", failure_chunk, path)?;
             set_writers.push(SetWriter {
@@ -509,7 +521,9 @@ impl SweepWriter {
 fn create_file(path: &Path, provenance: &Provenance) -> Result<(File, Staged), H5Error> {
     disable_file_locking();
     let staged = Staged::begin(path)?;
-    let file = File::create(staged.temporary()).map_err(h5err(path))?;
+    let mut builder = File::with_options();
+    builder.with_fcpl(|p| p.obj_track_times(false));
+    let file = builder.create(staged.temporary()).map_err(h5err(path))?;
     write_provenance(&file, path, provenance)?;
     Ok((file, staged))
 }
@@ -663,7 +677,6 @@ fn write_provenance(file: &File, path: &Path, p: &Provenance) -> Result<(), H5Er
         // 1: the run used tracked files that differ from git_commit.
         write_u64_attr(file, path, "git_dirty", u64::from(dirty))?;
     }
-    write_str_attr(file, path, "created_utc", &p.created_utc)?;
     write_str_attr(file, path, "experiment", &p.experiment)?;
     write_str_attr(file, path, "experiment_file", &p.experiment_file)?;
     write_str_attr(file, path, "experiment_text", &p.experiment_text)

@@ -14,10 +14,11 @@
 //! - [`figures`]: Figures 1-7 and the plotting helpers (plotters, bundled DejaVu Sans).
 //! - [`report`]: `paper/README.md` from the result files and the cross-model checks.
 //! - [`validation`]: the model beside published measurements (`paper/validation.md`).
-//! - [`reproduce`]: all of it, step by step, as library calls.
+//! - [`reproduce`]: all of it, step by step, as library calls; `--check` against the committed files ([`compare`]).
 
 pub mod bench;
 pub mod checks;
+pub mod compare;
 pub mod experiment;
 pub mod figures;
 pub mod h5;

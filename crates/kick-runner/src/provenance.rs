@@ -1,6 +1,22 @@
-//! Who wrote a result file, when, and from what.
+//! Who wrote a result file and from what: deterministic, so that a run
+//! repeated on the same sources gives the same bytes.
+//!
+//! No wall-clock time is recorded. The commit is the last one that changed
+//! the *sources* (everything but `results/` and `paper/`, which `kick
+//! reproduce` writes), and `git_dirty` says whether the sources differ from
+//! it: committing regenerated results changes neither, so a second run
+//! after that commit writes the same bytes. `kick reproduce --check` ignores
+//! these two attributes ([`PROVENANCE_ATTRIBUTES`]): they describe the
+//! checkout, not the numbers.
 
 use std::time::{SystemTime, UNIX_EPOCH};
+
+/// Root attributes that describe the checkout rather than the results.
+pub const PROVENANCE_ATTRIBUTES: [&str; 2] = ["git_commit", "git_dirty"];
+
+/// Directories (relative to the repository's top) written by `kick reproduce`,
+/// left out of the source state.
+pub const GENERATED_DIRECTORIES: [&str; 2] = ["results", "paper"];
 
 /// Root attributes of every result file.
 #[derive(Debug, Clone, PartialEq)]
@@ -8,12 +24,10 @@ pub struct Provenance {
     /// Program that wrote the file (e.g. `kick`).
     pub tool: String,
     pub tool_version: String,
-    /// `git rev-parse HEAD` at run time, when the work tree is a git checkout.
+    /// The last commit that changed the sources ([`source_commit`]), in a git checkout.
     pub git_commit: Option<String>,
-    /// Whether tracked files differed from that commit (`git status`), when known.
+    /// Whether the tracked sources differ from that commit ([`sources_dirty`]), when known.
     pub git_dirty: Option<bool>,
-    /// ISO 8601, UTC, second resolution.
-    pub created_utc: String,
     /// Experiment name (the file's stem unless the file names it).
     pub experiment: String,
     /// Path of the experiment file as given.
@@ -23,14 +37,13 @@ pub struct Provenance {
 }
 
 impl Provenance {
-    /// Provenance stamped now, with the git commit looked up in the current directory.
+    /// Provenance of a run now, with the source state looked up in the current directory.
     pub fn now(experiment: &str, experiment_file: &str, experiment_text: &str) -> Provenance {
         Provenance {
             tool: "kick".into(),
             tool_version: env!("CARGO_PKG_VERSION").into(),
-            git_commit: git_commit(),
-            git_dirty: git_dirty(),
-            created_utc: utc_timestamp(SystemTime::now()),
+            git_commit: source_commit(),
+            git_dirty: sources_dirty(),
             experiment: experiment.into(),
             experiment_file: experiment_file.into(),
             experiment_text: experiment_text.into(),
@@ -38,28 +51,33 @@ impl Provenance {
     }
 }
 
-/// `git rev-parse HEAD`, or `None` outside a checkout or without git.
-pub fn git_commit() -> Option<String> {
-    let output = std::process::Command::new("git")
-        .args(["rev-parse", "HEAD"])
-        .stderr(std::process::Stdio::null())
-        .output()
-        .ok()?;
-    if !output.status.success() {
-        return None;
-    }
-    let commit = String::from_utf8(output.stdout).ok()?.trim().to_string();
+/// Pathspecs of the sources: the whole checkout but the generated directories.
+fn source_pathspecs() -> Vec<String> {
+    let mut specs = vec![":(top)".to_string()];
+    specs.extend(GENERATED_DIRECTORIES.iter().map(|d| format!(":(top,exclude){d}")));
+    specs
+}
+
+fn git(args: &[&str]) -> Option<std::process::Output> {
+    std::process::Command::new("git").args(args).stderr(std::process::Stdio::null()).output().ok().filter(|o| o.status.success())
+}
+
+/// The last commit that changed the sources, or `None` outside a checkout or without git.
+pub fn source_commit() -> Option<String> {
+    let specs = source_pathspecs();
+    let mut args = vec!["log", "-1", "--format=%H", "--"];
+    args.extend(specs.iter().map(String::as_str));
+    let commit = String::from_utf8(git(&args)?.stdout).ok()?.trim().to_string();
     (commit.len() >= 7 && commit.bytes().all(|b| b.is_ascii_hexdigit())).then_some(commit)
 }
 
-/// True when tracked files differ from HEAD; `None` without git.
-pub fn git_dirty() -> Option<bool> {
-    let output = std::process::Command::new("git")
-        .args(["status", "--porcelain", "--untracked-files=no"])
-        .stderr(std::process::Stdio::null())
-        .output()
-        .ok()?;
-    output.status.success().then(|| !output.stdout.is_empty())
+/// True when tracked sources differ from the last commit (results and pages
+/// left out); `None` without git.
+pub fn sources_dirty() -> Option<bool> {
+    let specs = source_pathspecs();
+    let mut args = vec!["status", "--porcelain", "--untracked-files=no", "--"];
+    args.extend(specs.iter().map(String::as_str));
+    git(&args).map(|o| !o.stdout.is_empty())
 }
 
 /// `YYYY-MM-DDTHH:MM:SSZ` for a system time (UTC), without a date library.

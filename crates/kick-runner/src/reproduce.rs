@@ -18,7 +18,25 @@ pub struct ReproduceSettings {
     pub report: PathBuf,
     /// The benchmark's short variant (`kick bench --quick`), for tests.
     pub quick_bench: bool,
+    /// Which steps to run.
+    pub steps: Steps,
 }
+
+/// The steps of a reproduction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Steps {
+    /// Everything: experiments, figures, checks, pages, 3D, leg, laws, fits, bench.
+    #[default]
+    All,
+    /// The 1D experiment files only (for a quick check of a few files).
+    Experiments,
+}
+
+/// Subdirectory of the results (and page beside the report) holding the
+/// timing-dependent outputs, the only ones a second run may change.
+pub const TIMING_DIRECTORY: &str = "timing";
+/// The timing page, beside the report.
+pub const TIMING_PAGE: &str = "timing.md";
 
 impl Default for ReproduceSettings {
     fn default() -> Self {
@@ -27,6 +45,7 @@ impl Default for ReproduceSettings {
             out: PathBuf::from("results"),
             report: PathBuf::from("paper/README.md"),
             quick_bench: false,
+            steps: Steps::All,
         }
     }
 }
@@ -45,18 +64,23 @@ impl Printable for Reproduction {
     }
 }
 
-/// `to` relative to the directory `from` (both relative to the working
-/// directory), e.g. paper → results/figures gives ../results/figures.
-pub(crate) fn relative(from: &Path, to: &Path) -> String {
-    if from.is_absolute() || to.is_absolute() {
+/// `to` relative to the directory `from`, both relative to the working
+/// directory or both absolute: e.g. paper → results/figures gives
+/// ../results/figures, and so does /tmp/x/paper → /tmp/x/results/figures
+/// (a check in a temporary folder writes the same links).
+pub fn relative(from: &Path, to: &Path) -> String {
+    if from.is_absolute() != to.is_absolute() {
         return to.display().to_string();
     }
-    let depth = from.components().filter(|c| matches!(c, Component::Normal(_))).count();
+    let from: Vec<Component> = from.components().filter(|c| !matches!(c, Component::CurDir)).collect();
+    let to_parts: Vec<Component> = to.components().filter(|c| !matches!(c, Component::CurDir)).collect();
+    let common = from.iter().zip(&to_parts).take_while(|(a, b)| a == b).count();
     let mut path = String::new();
-    for _ in 0..depth {
+    for _ in common..from.len() {
         path.push_str("../");
     }
-    path.push_str(&to.display().to_string().replace('\\', "/"));
+    let rest: PathBuf = to_parts[common..].iter().collect();
+    path.push_str(&rest.display().to_string().replace('\\', "/"));
     path
 }
 
@@ -92,6 +116,9 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
         }
         written.push((path, file));
     }
+    if args.steps == Steps::Experiments {
+        return Ok(Reproduction { checks: 0, failed_checks: 0, report: args.report.clone() });
+    }
 
     let figures = args.out.join("figures");
     let drawn = crate::figures::draw_all(&args.out, &figures).map_err(|e| e.to_string())?;
@@ -102,8 +129,6 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     say(log, &format!("checks: {} of {} pass\n", checks.len() - failed, checks.len()));
 
     let report_dir = args.report.parent().unwrap_or(Path::new("")).to_path_buf();
-    crate::report::write(&args.out, &relative(&report_dir, &figures), Some(&checks), &args.report).map_err(|e| e.to_string())?;
-    say(log, &format!("report: {}\n", args.report.display()));
 
     // The rest of the workspace's results: 3D sweeps, the leg, contact laws,
     // identifiability, and the solvers' work-precision; each under the
@@ -164,11 +189,22 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     say(log, &format!("\n# kick fit table2 --out {}\n", fits.join(TABLE2_FIT).display()));
     say(log, &crate::identify::table2(None, Some(&fits.join(TABLE2_FIT)), &laws.scenarios)?.text());
     let solvers_report = report_dir.join("solvers.md");
+    let timing_report = report_dir.join(TIMING_PAGE);
+    let timing = args.out.join(TIMING_DIRECTORY);
     let quick = if args.quick_bench { " --quick" } else { "" };
-    say(log, &format!("\n# kick bench{quick} --out {out} --report {}\n", solvers_report.display()));
+    say(
+        log,
+        &format!(
+            "\n# kick bench{quick} --out {} --report {} --solvers-report {}\n",
+            timing.display(),
+            timing_report.display(),
+            solvers_report.display()
+        ),
+    );
     let bench = crate::bench::BenchSettings {
-        out: args.out.clone(),
-        report: Some(solvers_report),
+        out: timing,
+        report: Some(timing_report),
+        solvers_report: Some(solvers_report),
         quick: args.quick_bench,
         ..Default::default()
     };
@@ -207,9 +243,12 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     )?;
     say(log, &validation.text());
     // Point the report at the sections written beside it.
-    let mut text = std::fs::read_to_string(&args.report).map_err(|e| format!("cannot read {}: {e}", args.report.display()))?;
+    // Written last, so that its list of result files is the same on every run
+    // (not whatever an earlier run left when this step came).
+    let mut text = crate::report::render(&args.out, &relative(&report_dir, &figures), Some(&checks)).map_err(|e| e.to_string())?;
     let sections = [
-        ("solvers.md", "Solvers of the 1D model: work–precision, cost, trust regions"),
+        ("solvers.md", "Solvers of the 1D model: precision, trust regions"),
+        (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
         ("3d.md", "Off-center 3D kicks: spin and friction"),
         ("leg.md", "Effective mass of the articulated leg"),
         ("laws.md", "Contact laws compared"),
@@ -225,9 +264,101 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
         text.push_str("\n## Further sections\n\n");
         text.push_str(&present.join("\n"));
         text.push('\n');
-        crate::output::write(&args.report, text).map_err(|e| e.to_string())?;
     }
+    crate::output::write(&args.report, text).map_err(|e| e.to_string())?;
+    say(log, &format!("report: {}\n", args.report.display()));
     Ok(Reproduction { checks: checks.len(), failed_checks: failed, report: args.report.clone() })
+}
+
+/// What `kick reproduce --check` found.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct CheckReport {
+    /// Files compared.
+    pub compared: usize,
+    pub differences: Vec<crate::compare::Difference>,
+}
+
+impl Printable for CheckReport {
+    fn text(&self) -> String {
+        let mut text = String::new();
+        for d in &self.differences {
+            text.push_str(&format!("{}: {}\n", d.file.display(), d.what));
+        }
+        let files = {
+            let mut files: Vec<&PathBuf> = self.differences.iter().map(|d| &d.file).collect();
+            files.dedup();
+            files.len()
+        };
+        text.push_str(&format!(
+            "{} files compared (timing outputs left out), {files} differ\n",
+            self.compared
+        ));
+        text
+    }
+}
+
+/// Removes a folder when dropped.
+struct Scratch(PathBuf);
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// `kick reproduce --check`: regenerate into a temporary folder and compare
+/// with the files at `args.out` and beside `args.report`, by value for HDF5
+/// (every dataset and attribute but `git_commit`/`git_dirty`), by bytes
+/// otherwise. Left out: the timing outputs (`OUT/timing/`, `timing.md`).
+/// Every regenerated file is compared; a committed file under OUT that is
+/// no longer generated is a difference too. The report's folder may hold
+/// hand-written pages (e.g. `3d.md`): they are copied into the temporary
+/// folder first, so the report links them as in the checkout.
+pub fn check(args: &ReproduceSettings, log: &mut dyn Write) -> Result<CheckReport, String> {
+    static SEQUENCE: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let n = SEQUENCE.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let scratch = Scratch(std::env::temp_dir().join(format!("kick-check-{}-{n}", std::process::id())));
+    let _ = std::fs::remove_dir_all(&scratch.0);
+    let name = |p: &Path, fallback: &str| p.file_name().map(PathBuf::from).unwrap_or_else(|| PathBuf::from(fallback));
+    let report_dir = args.report.parent().unwrap_or(Path::new("")).to_path_buf();
+    let out = scratch.0.join(name(&args.out, "results"));
+    let pages = scratch.0.join(name(&report_dir, "paper"));
+    if out == pages {
+        return Err(format!("{} and {} must be different folders", args.out.display(), report_dir.display()));
+    }
+    // Hand-written pages beside the report (linked from it when present) as committed.
+    for file in crate::compare::files_below(&report_dir, &[]) {
+        let target = pages.join(&file);
+        std::fs::create_dir_all(target.parent().unwrap_or(&pages)).map_err(|e| format!("cannot create {}: {e}", pages.display()))?;
+        std::fs::copy(report_dir.join(&file), &target).map_err(|e| format!("cannot copy {}: {e}", file.display()))?;
+    }
+    let regenerated = ReproduceSettings { out: out.clone(), report: pages.join(name(&args.report, "README.md")), ..args.clone() };
+    reproduce(&regenerated, log)?;
+    // Paths of the temporary folders, as written into the files, back to the committed ones.
+    let (out_text, pages_text) = (out.display().to_string(), pages.display().to_string());
+    let (committed_out, committed_pages) = (args.out.display().to_string(), report_dir.display().to_string());
+    let rename = move |s: &str| s.replace(&out_text, &committed_out).replace(&pages_text, &committed_pages);
+    let timing = Path::new(TIMING_DIRECTORY);
+    let mut compared = 0;
+    let mut differences = Vec::new();
+    let regenerated_out = crate::compare::files_below(&out, &[timing]);
+    for file in &regenerated_out {
+        compared += 1;
+        differences.extend(crate::compare::compare_file(&args.out.join(file), &out.join(file), &rename));
+    }
+    for file in crate::compare::files_below(&args.out, &[timing]) {
+        if !regenerated_out.contains(&file) {
+            differences.push(crate::compare::Difference {
+                file: args.out.join(file),
+                what: "committed but no longer written by kick reproduce".into(),
+            });
+        }
+    }
+    for file in crate::compare::files_below(&pages, &[Path::new(TIMING_PAGE)]) {
+        compared += 1;
+        differences.extend(crate::compare::compare_file(&report_dir.join(&file), &pages.join(&file), &rename));
+    }
+    Ok(CheckReport { compared, differences })
 }
 
 #[cfg(test)]
@@ -240,5 +371,7 @@ mod tests {
         assert_eq!(relative(Path::new("paper"), Path::new("results/figures")), "../results/figures");
         assert_eq!(relative(Path::new(""), Path::new("results/figures")), "results/figures");
         assert_eq!(relative(Path::new("a/b"), Path::new("r/f")), "../../r/f");
+        assert_eq!(relative(Path::new("/tmp/x/paper"), Path::new("/tmp/x/results/figures")), "../results/figures");
+        assert_eq!(relative(Path::new("paper"), Path::new("results/timing/a.h5")), "../results/timing/a.h5");
     }
 }

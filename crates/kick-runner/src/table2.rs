@@ -46,10 +46,26 @@ impl Table2Comparison {
     }
 }
 
-/// Read a Table 2 scenario file (`kick fit table2 --write`).
+/// Where the commands look for Table 2's scenarios by default.
+pub const DEFAULT_PATH: &str = "experiments/table2.toml";
+
+/// `experiments/table2.toml` as compiled into the binary, so that `kick
+/// table2`, `kick laws` and `kick fit table2` work outside the repository.
+pub const BUILT_IN: &str = include_str!("../../../experiments/table2.toml");
+
+/// The text of a Table 2 scenario file: the file on disk when it exists,
+/// else, for the default path only, the built-in copy.
+pub fn read_text(path: &Path) -> Result<String, String> {
+    match std::fs::read_to_string(path) {
+        Ok(text) => Ok(text),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound && path == Path::new(DEFAULT_PATH) => Ok(BUILT_IN.to_string()),
+        Err(e) => Err(format!("cannot read {}: {e}", path.display())),
+    }
+}
+
+/// Read a Table 2 scenario file (`kick fit table2 --write`); see [`read_text`].
 pub fn load(path: &Path) -> Result<Table2File, String> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let text = read_text(path)?;
     Table2File::parse(&text).map_err(|e| format!("{}: {e}", path.display()))
 }
 

@@ -51,5 +51,29 @@ fn reproduce_writes_results_figures_and_report() {
         assert!(text.contains(&format!("figures/figure{n}.png)")), "figure {n} not embedded");
     }
     assert!(text.contains("## Cross-model checks") && text.contains("| Check | Equation |"));
+    // What depends on the clock is in results/timing and paper/timing.md only.
+    assert!(results.join("timing/work_precision.h5").exists() && !results.join("work_precision.h5").exists());
+    let timing = std::fs::read_to_string(dir.join("paper/timing.md")).unwrap();
+    assert!(timing.contains("µs per scenario") && timing.contains("cores available"), "{timing}");
+    let solvers = std::fs::read_to_string(dir.join("paper/solvers.md")).unwrap();
+    assert!(!solvers.contains("µs per scenario") && !solvers.contains("scenarios/s"), "{solvers}");
+    assert!(solvers.contains("evaluations per scenario") && solvers.contains("(timing.md)"), "{solvers}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn table2_works_outside_the_repository_from_the_built_in_file() {
+    let dir = scratch("outside");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_kick")).arg("table2").current_dir(&dir).output().expect("kick runs");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    // The baseline row as printed in the paper (Table 2) and reproduced by seed-rk4.
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("31.98") && text.contains("3804"), "{text}");
+    // A file on disk overrides the built-in one.
+    std::fs::create_dir_all(dir.join("experiments")).unwrap();
+    std::fs::write(dir.join("experiments/table2.toml"), "not = [valid").unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_kick")).arg("table2").current_dir(&dir).output().expect("kick runs");
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("experiments/table2.toml"), "{}", String::from_utf8_lossy(&out.stderr));
     let _ = std::fs::remove_dir_all(&dir);
 }

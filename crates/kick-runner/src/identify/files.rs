@@ -128,7 +128,7 @@ pub fn write_laws(
         }
     }
     let w = writer.file();
-    let group = w.create_group("restitution_formulas").map_err(|e| format!("{}: {e}", path.display()))?;
+    let group = crate::h5::new_group(w, "restitution_formulas").map_err(|e| format!("{}: {e}", path.display()))?;
     crate::h5::write_str_attr(&group, path, "description", "restitution each law gives when asked for target_restitution (baseline masses, k, n, V0; accurate solver)")
         .map_err(text)?;
     crate::h5::write_column(&group, path, &Column::new("target_restitution", "1"), formula_targets).map_err(text)?;

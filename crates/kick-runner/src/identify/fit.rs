@@ -101,7 +101,7 @@ fn write_table2(path: &Path, scenarios: &Path, fits: &[Table2Fit]) -> Result<Pat
             }
         });
     }
-    let text = std::fs::read_to_string(scenarios).map_err(|e| format!("{}: {e}", scenarios.display()))?;
+    let text = crate::table2::read_text(scenarios)?;
     let provenance = Provenance::now("table2_fit", &scenarios.display().to_string(), &format!("# kick fit table2 --out
 {text}"));
     files::write_table2_fits(path, &provenance, fits, &observations, &file_values, &seed_fits)

@@ -62,7 +62,7 @@ pub const FORMULA_TARGETS: [f64; 7] = [0.99, 0.95, 0.9, 0.8, 0.7, 0.5, 0.3];
 /// Write `dir/laws.h5` and draw `dir/laws.{png,svg}` from it.
 fn write(args: &LawsSettings, all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    let scenarios = std::fs::read_to_string(&args.scenarios).map_err(|e| format!("{}: {e}", args.scenarios.display()))?;
+    let scenarios = crate::table2::read_text(&args.scenarios)?;
     let text = format!("# kick laws --scenarios {} --samples {}
 {scenarios}", args.scenarios.display(), args.samples);
     let provenance = Provenance::now("laws", &args.scenarios.display().to_string(), &text);

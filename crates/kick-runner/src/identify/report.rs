@@ -54,9 +54,10 @@ fn provenance(files: &[&Path]) -> Result<String, String> {
     let mut parts = Vec::new();
     for path in files {
         let f = ResultFile::open(path).map_err(|e| e.to_string())?;
-        let created = f.text("", "created_utc").map_err(|e| e.to_string())?;
-        let commit = f.text("", "git_commit").map(|c| format!(", commit `{}`", &c[..c.len().min(12)])).unwrap_or_default();
-        parts.push(format!("`{}` ({created}{commit})", path.display()));
+        // Opened to fail early on a missing file; its commit stays in the file
+        // (`git_commit`), so the page does not change with the checkout.
+        drop(f);
+        parts.push(format!("`{}`", path.display()));
     }
     Ok(parts.join(", "))
 }
