@@ -40,8 +40,10 @@ enum Command {
     /// Identify parameters from printed or measured data.
     #[command(subcommand)]
     Fit(Fit),
-    /// Run one experiment file (experiments/*.toml) into DIR/NAME.h5.
+    /// Run one experiment file (experiments/*.toml) into DIR/NAME.h5, or one shard of it.
     Run(Run),
+    /// Join shard files of one experiment (`kick run --shard`) into the file an unsharded run writes.
+    Merge(Merge),
     /// Work–precision of every 1D solver, cost ratios and sweep throughput (HDF5 + figure).
     Bench(Bench),
     /// Random scenarios around the baseline, solved in parallel into one HDF5 file.
@@ -266,6 +268,19 @@ struct Run {
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
+    /// Run only shard I of N (numbered from 0, like Slurm array tasks):
+    /// rows floor(I*rows/N)..floor((I+1)*rows/N) into DIR/NAME.shard-I-of-N.h5
+    #[arg(long, value_name = "I/N")]
+    shard: Option<String>,
+}
+
+#[derive(Args)]
+struct Merge {
+    /// The merged result file to write
+    out: PathBuf,
+    /// Shard files (NAME.shard-I-of-N.h5), all N of them, any order
+    #[arg(required = true)]
+    parts: Vec<PathBuf>,
 }
 
 #[derive(Args)]
@@ -427,8 +442,9 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         }
         Command::Run(a) => {
             set_threads(a.threads)?;
-            out.print(Format::Text, &run_file(&a.file, &a.out)?)
+            out.print(Format::Text, &shard::run_file(&a.file, &a.out, a.shard.as_deref())?)
         }
+        Command::Merge(a) => out.print(Format::Text, &shard::merge(&a.out, &a.parts).map_err(|e| e.to_string())?),
         Command::Bench(a) => {
             let settings =
                 bench::BenchSettings { out: a.out, min_time: a.min_time, sweep_samples: a.sweep_samples, quick: a.quick, report: a.report, solvers_report: a.solvers_report };

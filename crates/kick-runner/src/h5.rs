@@ -137,7 +137,8 @@ pub fn write_f64_attr(location: &hdf5::Location, path: &Path, name: &str, value:
         .map_err(h5err(path))
 }
 
-fn write_u64_attr(location: &hdf5::Location, path: &Path, name: &str, value: u64) -> Result<(), H5Error> {
+/// Write a scalar u64 attribute.
+pub fn write_u64_attr(location: &hdf5::Location, path: &Path, name: &str, value: u64) -> Result<(), H5Error> {
     location
         .new_attr::<u64>()
         .shape(())
@@ -150,6 +151,11 @@ fn write_u64_attr(location: &hdf5::Location, path: &Path, name: &str, value: u64
 pub fn read_str_attr(location: &hdf5::Location, name: &str) -> Option<String> {
     let attr = location.attr(name).ok()?;
     attr.read_scalar::<VarLenUnicode>().ok().map(|s| s.as_str().to_string())
+}
+
+/// Read a scalar u64 attribute.
+pub fn read_u64_attr(location: &hdf5::Location, name: &str) -> Option<u64> {
+    location.attr(name).ok()?.read_scalar::<u64>().ok()
 }
 
 /// Read a scalar f64 attribute.

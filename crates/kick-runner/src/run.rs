@@ -10,6 +10,7 @@ use kick_core::{KickError, Outcome, Parameter, RecordingSolver, Scenario, Solver
 use rayon::prelude::*;
 use std::io::IsTerminal;
 use std::ops::ControlFlow;
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
@@ -158,10 +159,10 @@ fn empty_block() -> Vec<Vec<f64>> {
     (0..HISTORY_COLUMNS.len()).map(|_| Vec::with_capacity(HISTORY_BLOCK)).collect()
 }
 
-/// Solve row `row` with every solver, streaming each history to `to_writer`
+/// Solve scenario `row` with every solver, streaming each history to `to_writer`
 /// in blocks: a worker holds one block, the channel a few.
-fn stream_row(experiment: &Experiment, row: usize, interval: f64, to_writer: &SyncSender<Message>) {
-    let scenario = experiment.scenarios.scenario(row as u64);
+fn stream_row(experiment: &Experiment, row: u64, interval: f64, to_writer: &SyncSender<Message>) {
+    let scenario = experiment.scenarios.scenario(row);
     for (set, solver) in experiment.solvers.iter().enumerate() {
         let mut block = empty_block();
         let result = scenario.clone().and_then(|s| {
@@ -186,7 +187,8 @@ fn stream_row(experiment: &Experiment, row: usize, interval: f64, to_writer: &Sy
     }
 }
 
-/// Histories of every row, written in row order as they are solved.
+/// Histories of the experiment's rows `part` (file rows from 0), written in
+/// row order as they are solved.
 ///
 /// Rows are claimed in order by `threads` workers, each streaming its row's
 /// histories through a bounded channel of that row; the writer empties the
@@ -194,8 +196,14 @@ fn stream_row(experiment: &Experiment, row: usize, interval: f64, to_writer: &Sy
 /// solved (claimed before any later row), so nothing waits in a circle, and
 /// memory is a few blocks per worker whatever the histories' lengths. The
 /// file's content does not depend on the number of threads.
-fn write_histories(experiment: &Experiment, writer: &mut SweepWriter, interval: f64, bar: &ProgressBar) -> Result<(), RunError> {
-    let rows = experiment.scenarios.len() as usize;
+fn write_histories(
+    experiment: &Experiment,
+    part: &Range<u64>,
+    writer: &mut SweepWriter,
+    interval: f64,
+    bar: &ProgressBar,
+) -> Result<(), RunError> {
+    let rows = (part.end - part.start) as usize;
     let solvers = experiment.solvers.len();
     let threads = rayon::current_num_threads().clamp(1, rows.max(1));
     let (senders, receivers): (Vec<_>, Vec<_>) =
@@ -212,12 +220,12 @@ fn write_histories(experiment: &Experiment, writer: &mut SweepWriter, interval: 
                     }
                     let sender = senders[row].lock().unwrap_or_else(|e| e.into_inner()).take();
                     if let Some(sender) = sender {
-                        stream_row(experiment, row, interval, &sender);
+                        stream_row(experiment, part.start + row as u64, interval, &sender);
                     }
                 }
             });
         }
-        let written = receive_histories(experiment, writer, receivers, solvers, bar);
+        let written = receive_histories(experiment, part.start, writer, receivers, solvers, bar);
         // On an error the receivers are gone: workers stop at their next send.
         stop.store(true, Ordering::Relaxed);
         written
@@ -226,6 +234,7 @@ fn write_histories(experiment: &Experiment, writer: &mut SweepWriter, interval: 
 
 fn receive_histories(
     experiment: &Experiment,
+    first: u64,
     writer: &mut SweepWriter,
     receivers: Vec<Receiver<Message>>,
     solvers: usize,
@@ -257,7 +266,7 @@ fn receive_histories(
                 }
             }
         }
-        push_row(writer, experiment, &experiment.scenarios.scenario(row as u64), outcomes.iter())?;
+        push_row(writer, experiment, &experiment.scenarios.scenario(first + row as u64), outcomes.iter())?;
         bar.inc(1);
     }
     Ok(())
@@ -276,8 +285,30 @@ fn receive_histories(
 /// histories are streamed to the file in blocks (see `write_histories`), so
 /// memory does not grow with their length.
 pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Result<RunSummary, RunError> {
+    let part = Part { rows: 0..experiment.scenarios.len(), path: out_dir.join(format!("{}.h5", experiment.name)) };
+    run_part(experiment, &part, show_progress, &|_| Ok(()))
+}
+
+/// Rows of an experiment and the file they go to (a shard: [`crate::shard`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Part {
+    /// Experiment rows, written as the file's rows 0.. (histories and
+    /// failures numbered by file row).
+    pub rows: Range<u64>,
+    pub path: PathBuf,
+}
+
+/// [`run`] of the rows `part.rows` into `part.path`; `attributes` adds root
+/// attributes of the caller's to the open file.
+pub fn run_part(
+    experiment: &Experiment,
+    part: &Part,
+    show_progress: bool,
+    attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>,
+) -> Result<RunSummary, RunError> {
+    let out_dir = part.path.parent().unwrap_or(Path::new("."));
     let size = crate::limits::check(experiment, out_dir)?;
-    let path = out_dir.join(format!("{}.h5", experiment.name));
+    let path = part.path.clone();
     if show_progress && size.is_large() {
         eprintln!("{}: {} -> {}", experiment.name, size.describe(), path.display());
     }
@@ -290,28 +321,30 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
         &provenance,
         &parameter_columns(experiment.scenarios.has_restitution()),
         &sets,
-        experiment.scenarios.len(),
+        part.rows.end - part.rows.start,
     )?;
     crate::h5::write_str_attr(writer.file(), &path, "description", &experiment.description)?;
     if let Some(names) = experiment.scenarios.names() {
+        let names = &names[part.rows.start as usize..part.rows.end as usize];
         crate::h5::write_strings(writer.file(), &path, "scenario_names", names)?;
     }
+    attributes(writer.file())?;
     if let Output::History { interval } = experiment.output {
         crate::h5::write_f64_attr(writer.file(), &path, "history_interval", interval)?;
     }
 
-    let total = experiment.scenarios.len();
-    let bar = progress(total, show_progress);
+    let total = part.rows.end;
+    let bar = progress(part.rows.end - part.rows.start, show_progress);
     bar.set_message(experiment.name.clone());
     if let Output::History { interval } = experiment.output {
-        write_histories(experiment, &mut writer, interval, &bar)?;
+        write_histories(experiment, &part.rows, &mut writer, interval, &bar)?;
         return finish(experiment, writer, &bar);
     }
     // Two chunks in flight: while one is written (HDF5 is serial), the next is
     // solved on the rest of the pool. Their buffers are swapped, not reallocated.
     let mut solving = Chunk::new(experiment.solvers.len());
     let mut writing = Chunk::new(experiment.solvers.len());
-    let mut start = 0u64;
+    let mut start = part.rows.start;
     while start < total || writing.start < writing.end {
         let end = (start + CHUNK_ROWS as u64).min(total);
         let (written, ()) = rayon::join(
@@ -336,8 +369,9 @@ fn finish(experiment: &Experiment, writer: SweepWriter, bar: &ProgressBar) -> Re
         .map(|s| s.name().to_string())
         .zip(writer.failure_counts())
         .collect();
+    let scenarios = writer.rows() as u64;
     let path = writer.finish()?;
-    Ok(RunSummary { path, scenarios: experiment.scenarios.len(), failures })
+    Ok(RunSummary { path, scenarios, failures })
 }
 
 /// What [`run_file`] did: the file given, the result file and the counts.

@@ -4,6 +4,7 @@ mod check_and_leg;
 mod cli;
 mod fit_and_laws;
 mod run_reproduce;
+mod shard;
 mod simulate3d;
 
 /// Run `kick` with `args` in the workspace root.

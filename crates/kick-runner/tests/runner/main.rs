@@ -5,3 +5,4 @@ mod result_file;
 mod runner;
 mod histories;
 mod reproduce_check;
+mod shard;

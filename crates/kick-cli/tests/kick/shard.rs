@@ -1,0 +1,79 @@
+//! `kick run --shard`, `kick merge` and the Slurm example scripts, run here without Slurm.
+
+use crate::kick;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("kick-cli-shard-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+const GRID: &str = "solver = \"accurate\"\n[[sweep]]\nparameter = \"stiffness\"\nvalues = [2e5, 4.2e5, 8e5, 1.6e6]\n\
+                    [[sweep]]\nparameter = \"damping\"\nvalues = [0.0, 60.0, 120.0]\n";
+
+#[test]
+fn bad_shard_flags_are_refused_naming_the_flag() {
+    let dir = scratch("flags");
+    let file = dir.join("grid.toml");
+    std::fs::write(&file, GRID).unwrap();
+    for (given, says) in [("4/4", "numbered from 0 to 3"), ("1-4", "expected I/N"), ("0/0", "at least 1"), ("x/4", "not a whole number")] {
+        let out = kick(&["run", file.to_str().unwrap(), "--out", dir.to_str().unwrap(), "--shard", given]);
+        assert_eq!(out.status.code(), Some(1), "{given}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(&format!("`--shard` = `{given}`")) && stderr.contains(says), "{given}: {stderr}");
+    }
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1, "only the experiment file");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// PATH without any directory that has `sbatch`: the scripts take their local branch.
+fn path_without_sbatch() -> String {
+    let path = std::env::var_os("PATH").unwrap_or_default();
+    let kept: Vec<PathBuf> = std::env::split_paths(&path).filter(|d| !d.join("sbatch").exists()).collect();
+    std::env::join_paths(kept).unwrap().into_string().unwrap()
+}
+
+#[test]
+fn the_slurm_example_run_locally_equals_an_unsharded_run() {
+    let dir = scratch("slurm");
+    let file = dir.join("grid.toml");
+    std::fs::write(&file, GRID).unwrap();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let out = Command::new("bash")
+        .arg(root.join("experiments/slurm/submit.sh"))
+        .env("PATH", path_without_sbatch())
+        .env("EXPERIMENT", &file)
+        .env("OUT", dir.join("shards"))
+        .env("KICK", env!("CARGO_BIN_EXE_kick"))
+        .env("SHARDS", "3")
+        .env_remove("SLURM_CPUS_PER_TASK")
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("3 shards, 12 rows"), "{stdout}");
+    for i in 0..3 {
+        assert!(dir.join(format!("shards/grid.shard-{i}-of-3.h5")).exists());
+    }
+
+    let whole = kick(&["run", file.to_str().unwrap(), "--out", dir.join("whole").to_str().unwrap()]);
+    assert!(whole.status.success(), "{}", String::from_utf8_lossy(&whole.stderr));
+    let mut merged = kick_runner::SweepData::read(&dir.join("shards/grid.h5")).unwrap();
+    let whole = kick_runner::SweepData::read(&dir.join("whole/grid.h5")).unwrap();
+    assert_eq!(merged.rows(), 12);
+    merged.path = whole.path.clone();
+    assert_eq!(merged, whole);
+
+    // One shard gone: the merge job fails naming it, and writes nothing.
+    std::fs::remove_file(dir.join("shards/grid.shard-1-of-3.h5")).unwrap();
+    let again = kick(&["merge", dir.join("again.h5").to_str().unwrap(), dir.join("shards/grid.shard-0-of-3.h5").to_str().unwrap(),
+        dir.join("shards/grid.shard-2-of-3.h5").to_str().unwrap()]);
+    assert_eq!(again.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&again.stderr);
+    assert!(stderr.contains("missing") && stderr.contains("grid.shard-1-of-3.h5 (rows 4..8)"), "{stderr}");
+    assert!(!dir.join("again.h5").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,0 +1,24 @@
+#!/bin/bash
+# Submit EXPERIMENT as SHARDS Slurm array tasks and a merge job that runs
+# once they all succeeded:
+#   SHARDS=8 EXPERIMENT=experiments/large/sweep-1e6.toml bash experiments/slurm/submit.sh
+# Without Slurm (no `sbatch`), the same scripts run here one after another.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+export EXPERIMENT=${EXPERIMENT:-experiments/large/sweep-1e6.toml}
+export OUT=${OUT:-results/shards}
+export KICK=${KICK:-kick}
+export SHARDS=${SHARDS:-4}
+DIR=experiments/slurm
+
+if command -v sbatch >/dev/null; then
+    array=$(sbatch --parsable --array="0-$((SHARDS - 1))" --export=ALL "$DIR/shard.sbatch")
+    sbatch --dependency="afterok:${array%%;*}" --export=ALL "$DIR/merge.sbatch"
+else
+    echo "no sbatch: running the $SHARDS array tasks and the merge here, one after another" >&2
+    for ((task = 0; task < SHARDS; task++)); do
+        SLURM_ARRAY_TASK_ID=$task SLURM_ARRAY_TASK_COUNT=$SHARDS bash "$DIR/shard.sbatch"
+    done
+    bash "$DIR/merge.sbatch"
+fi
