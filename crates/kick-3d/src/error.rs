@@ -1,4 +1,4 @@
-use kick_core::{short, KickError};
+use kick_core::{short, KickError, Status};
 use thiserror::Error;
 
 /// Every way a 3D kick computation can refuse or fail; messages name the problem.
@@ -18,4 +18,16 @@ pub enum Kick3dError {
     UnknownSolver { name: String, expected: &'static str },
     #[error("3D experiment: {reason}")]
     Experiment { reason: String },
+}
+
+impl Kick3dError {
+    /// What became of the kick (the status column of result files): a
+    /// geometry failure is numerical, every other non-core error a refusal.
+    pub fn status(&self) -> Status {
+        match self {
+            Kick3dError::Core(e) => e.status(),
+            Kick3dError::Geometry { .. } => Status::NumericalFailure,
+            _ => Status::Refused,
+        }
+    }
 }

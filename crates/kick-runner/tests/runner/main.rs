@@ -4,3 +4,4 @@ mod law;
 mod result_file;
 mod runner;
 mod histories;
+mod sweep3d;
