@@ -34,8 +34,9 @@ impl OffCenterBox {
         OffCenterBox { seed, law: LawKind::PowerLaw }
     }
 
-    /// Kick `index`: the same for every run, order and thread.
-    pub fn kick(&self, index: u64) -> Result<Kick3d, Kick3dError> {
+    /// The box's draws of kick `index`: offset (m), approach angle (deg),
+    /// friction and foot mass (kg), the same for every run, order and thread.
+    pub fn values(&self, index: u64) -> [f64; 4] {
         // SplitMix64 finaliser of (seed, index), as kick-runner's sweeps.
         let mut z = self.seed ^ index.wrapping_mul(0x9E37_79B9_7F4A_7C15);
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -46,6 +47,12 @@ impl OffCenterBox {
         let approach = uniform(-20.0, 30.0);
         let friction = if uniform(0.0, 1.0) < 0.125 { f64::INFINITY } else { 10f64.powf(uniform(0.2f64.log10(), 5f64.log10())) };
         let foot_mass = uniform(1.0, 10.0);
+        [offset, approach, friction, foot_mass]
+    }
+
+    /// Kick `index`: the same for every run, order and thread.
+    pub fn kick(&self, index: u64) -> Result<Kick3d, Kick3dError> {
+        let [offset, approach, friction, foot_mass] = self.values(index);
         let restitution = (self.law != LawKind::PowerLaw).then_some(BOX_RESTITUTION);
         let base = Scenario::baseline().with(Parameter::FootMass, foot_mass)?.with_law(self.law, restitution)?;
         Kick3d::new(

@@ -48,6 +48,8 @@ enum Command {
     Bench(Bench),
     /// Random scenarios around the baseline, solved in parallel into one HDF5 file.
     Sweep(Sweep),
+    /// Random off-center 3D kicks around the baseline, solved in parallel into one HDF5 file.
+    Sweep3d(Sweep3d),
     /// Run every experiment, draw the figures, run the checks, write paper/README.md.
     Reproduce(Reproduce),
 }
@@ -331,6 +333,26 @@ struct Sweep {
 }
 
 #[derive(Args)]
+struct Sweep3d {
+    /// Number of kicks
+    #[arg(long)]
+    samples: u64,
+    /// Seed of the sampler (the same seed gives the same data, whatever the thread count)
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Result file NAME.h5 (its directory is created)
+    #[arg(long)]
+    out: PathBuf,
+    /// Worker threads (default: one per core)
+    #[arg(long)]
+    threads: Option<usize>,
+    /// A 1D or 3D parameter given is held at that value instead of drawn;
+    /// --law and --restitution set the normal contact law of every kick
+    #[command(flatten)]
+    fixed: Flags<KickSpec>,
+}
+
+#[derive(Args)]
 struct Reproduce {
     /// Directory of experiment files (every *.toml directly inside is run)
     #[arg(long, default_value = "experiments")]
@@ -456,6 +478,11 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             let settings =
                 sweep::SweepSettings { samples: a.samples, seed: a.seed, solver: a.solver, dt: a.dt, out: a.out, fixed: a.fixed.spec() };
             out.print(Format::Text, &sweep::sweep(&settings)?)
+        }
+        Command::Sweep3d(a) => {
+            set_threads(a.threads)?;
+            let settings = sweep3d::Sweep3dSettings { samples: a.samples, seed: a.seed, out: a.out, fixed: a.fixed.spec() };
+            out.print(Format::Text, &sweep3d::sweep3d(&settings)?)
         }
         Command::Reproduce(a) => {
             set_threads(a.threads)?;

@@ -562,6 +562,11 @@ impl ResultWriter {
         group_at(&self.file, group, &self.path)
     }
 
+    /// The open file, for datasets of other shapes (e.g. `[rows, 3]`).
+    pub fn file(&self) -> &File {
+        &self.file
+    }
+
     /// A 1D f64 dataset `group/column.name` with its unit.
     pub fn column(&self, group: &str, column: &Column, values: &[f64]) -> Result<(), H5Error> {
         write_column(&self.group(group)?, &self.path, column, values)

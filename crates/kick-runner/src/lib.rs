@@ -6,7 +6,8 @@
 //! - [`output`]: whole-or-nothing files: temporary name, one writer per file, cleanup on signals.
 //! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 //! - [`h5`]: the model-independent HDF5 writer/reader (parameter and outcome columns with units, provenance).
-//! - [`run`]: the 1D model's runner over [`h5`] (rayon, chunked streaming); [`sample`], [`sweep`]: random sweeps.
+//! - [`run`]: the 1D model's runner over [`h5`] (rayon, chunked streaming); [`sample`], [`sweep`]: random sweeps;
+//!   [`sweep3d`]: random off-center 3D kicks into one file.
 //! - [`shard`]: one slice of an experiment's rows per file (`--shard I/N`), and their merge.
 //! - [`simulate`]: one contact, 1D or 3D; [`table2`]: Table 2 side by side; [`checks`]: every cross-model check.
 //! - [`three_d`]: 3D sweeps into files and figures; [`leg`]: the articulated leg and its figure data.
@@ -36,6 +37,7 @@ pub mod sample;
 pub mod shard;
 pub mod simulate;
 pub mod sweep;
+pub mod sweep3d;
 pub mod table2;
 pub mod three_d;
 pub mod validation;

@@ -60,7 +60,7 @@ pub fn outcome_set(solver: &SolverChoice, law: kick_core::LawKind) -> OutcomeSet
 }
 
 /// A progress bar on a terminal, nothing otherwise.
-fn progress(total: u64, show: bool) -> ProgressBar {
+pub(crate) fn progress(total: u64, show: bool) -> ProgressBar {
     if show && std::io::stderr().is_terminal() {
         let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
         if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} scenarios, {elapsed} (eta {eta})") {

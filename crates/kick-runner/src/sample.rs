@@ -22,6 +22,17 @@ pub fn ranges() -> String {
         .join("\n")
 }
 
+/// The generator of row `index` of a sweep seeded `seed`: any row can be
+/// drawn on its own, in any order, on any thread.
+pub fn row_rng(seed: u64, index: u64) -> Xoshiro256PlusPlus {
+    // Mix the index into the seed (SplitMix64 finaliser) so neighbouring
+    // indices start far apart.
+    let mut z = seed ^ index.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    Xoshiro256PlusPlus::seed_from_u64(z ^ (z >> 31))
+}
+
 /// A sweep of `samples` random scenarios.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SampledSweep {
@@ -43,12 +54,7 @@ impl SampledSweep {
     /// order; a fixed one still takes its draws, so fixing one parameter
     /// leaves the others' values as they were.
     pub fn scenario(&self, index: u64) -> Result<Scenario, KickError> {
-        // Mix the index into the seed (SplitMix64 finaliser) so neighbouring
-        // indices start far apart.
-        let mut z = self.seed ^ index.wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        let mut rng = Xoshiro256PlusPlus::seed_from_u64(z ^ (z >> 31));
+        let mut rng = row_rng(self.seed, index);
         let mut uniform = || rng.random::<f64>();
         let mut values = [0.0; 8];
         for (slot, p) in values.iter_mut().zip(Parameter::ALL) {

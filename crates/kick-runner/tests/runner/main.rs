@@ -6,3 +6,4 @@ mod runner;
 mod histories;
 mod reproduce_check;
 mod shard;
+mod sweep3d;
