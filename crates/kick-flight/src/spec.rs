@@ -240,6 +240,28 @@ impl FlightSpec {
         Ok(())
     }
 
+    /// Whether `parameter` was given.
+    pub fn is_set(&self, parameter: FlightParameter) -> bool {
+        match parameter {
+            FlightParameter::Speed => self.speed.is_some(),
+            FlightParameter::LaunchAngle => self.launch_angle.is_some(),
+            FlightParameter::Azimuth => self.azimuth.is_some(),
+            FlightParameter::LaunchVelocity => self.launch_velocity.is_some(),
+            FlightParameter::Spin => self.spin.is_some(),
+            FlightParameter::BallMass => self.ball_mass.is_some(),
+            FlightParameter::BallRadius => self.ball_radius.is_some(),
+            FlightParameter::Gravity => self.gravity.is_some(),
+            FlightParameter::AirDensity => self.air_density.is_some(),
+            FlightParameter::Temperature => self.temperature.is_some(),
+            FlightParameter::Pressure => self.pressure.is_some(),
+            FlightParameter::Altitude => self.altitude.is_some(),
+            FlightParameter::DragCoefficient => self.drag_coefficient.is_some(),
+            FlightParameter::LiftCoefficient => self.lift_coefficient.is_some(),
+            FlightParameter::SpinDecay => self.spin_decay.is_some(),
+            FlightParameter::Distance => self.distance.is_some(),
+        }
+    }
+
     /// Fill defaults and validate.
     pub fn build(&self) -> Result<Flight, FlightError> {
         if let Some(velocity) = self.launch_velocity {
@@ -531,6 +553,7 @@ mod tests {
         }
         let value = serde_json::to_value(full).unwrap();
         for p in FlightParameter::ALL {
+            assert!(full.is_set(p) && !FlightSpec::default().is_set(p), "{}", p.name());
             assert!(value.get(p.name()).is_some_and(|v| !v.is_null()), "{}", p.name());
         }
     }

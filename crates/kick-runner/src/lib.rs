@@ -5,6 +5,7 @@
 //! - [`experiment`]: `experiments/*.toml` parsed and validated (errors name file, line and key).
 //! - [`h5`]: the model-independent HDF5 writer/reader (parameter and outcome columns with units, provenance).
 //! - [`run`]: the 1D model's runner over [`h5`] (rayon, chunked streaming); [`sample`], [`sweep`]: random sweeps.
+//! - [`flight`]: the ball's flight, alone or after a 1D or 3D kick.
 //! - [`simulate`]: one contact, 1D or 3D; [`table2`]: Table 2 side by side; [`checks`]: every cross-model check.
 //! - [`three_d`]: 3D sweeps into files and figures; [`leg`]: the articulated leg and its figure data.
 //! - [`identify`]: `kick fit` and `kick laws`, their result files, figures and pages.
@@ -17,6 +18,7 @@ pub mod bench;
 pub mod checks;
 pub mod experiment;
 pub mod figures;
+pub mod flight;
 pub mod h5;
 pub mod identify;
 pub mod leg;
