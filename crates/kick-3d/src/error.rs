@@ -1,4 +1,4 @@
-use kick_core::{short, KickError, Status};
+use kick_core::{short, KickError};
 use thiserror::Error;
 
 /// Every way a 3D kick computation can refuse or fail; messages name the problem.

@@ -1,18 +1,116 @@
 //! Command-line flags derived from the declared parameters
-//! (`kick_core::parameters`): one flag per parameter of the spec's levels,
-//! `--` plus the kebab case of its name, with its symbol as the value name
-//! and its doc, unit and default as help. Values are validated where the spec
-//! is built, so a bad value gets the library's typed error naming it.
+//! (`kick_core::parameters`, kick-flight's `FLIGHT_PARAMETERS`): one flag per
+//! parameter of the spec, `--` plus the kebab case of its name, with its
+//! symbol as the value name and its doc, unit and default as help. Values are
+//! validated where the spec is built, so a bad value gets the library's typed
+//! error naming it.
 
 use clap::{Arg, ArgAction, ArgMatches, Command};
-use kick_core::parameters::{self, ParameterDef, SetLaw, SetParameter, Shape, Value};
-use kick_core::LawKind;
+use kick_3d::KickSpec;
+use kick_core::parameters::{self, ParameterDef, SetParameter, Shape, Value};
+use kick_core::{LawKind, ScenarioSpec};
+use kick_flight::{FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
+use kick_runner::flight::{SET_BY_1D_KICK, SET_BY_3D_KICK};
 use std::marker::PhantomData;
 
-/// A spec the flags fill: its levels' parameters, and the contact law.
-pub trait FlagSpec: SetParameter + SetLaw + Default {}
+/// A spec the flags fill: its declared parameters, and (if it takes one) the contact law.
+pub trait FlagSpec: Default {
+    /// Whether the spec takes `--law`.
+    const LAW: bool;
+    /// A flag every one of these flags needs beside it (`--flight`).
+    const REQUIRES: Option<&'static str> = None;
+    /// The declared parameters that are flags, in declaration order.
+    fn parameters() -> Vec<&'static ParameterDef>;
+    /// Set a parameter given as a flag (of its declared shape).
+    fn set(&mut self, parameter: &'static ParameterDef, value: Value);
+    fn set_law(&mut self, _law: LawKind) {}
+}
 
-impl<S: SetParameter + SetLaw + Default> FlagSpec for S {}
+impl FlagSpec for ScenarioSpec {
+    const LAW: bool = true;
+    fn parameters() -> Vec<&'static ParameterDef> {
+        parameters::at_levels(Self::LEVELS).collect()
+    }
+    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
+        // Flags exist only for the spec's parameters, with their shapes.
+        let _ = self.set_parameter(parameter, value);
+    }
+    fn set_law(&mut self, law: LawKind) {
+        self.law = Some(law);
+    }
+}
+
+impl FlagSpec for KickSpec {
+    const LAW: bool = true;
+    fn parameters() -> Vec<&'static ParameterDef> {
+        parameters::at_levels(Self::LEVELS).collect()
+    }
+    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
+        let _ = self.set_parameter(parameter, value);
+    }
+    fn set_law(&mut self, law: LawKind) {
+        self.scenario.law = Some(law);
+    }
+}
+
+fn set_flight(spec: &mut FlightSpec, parameter: &'static ParameterDef, value: Value) {
+    if let Ok(p) = FlightParameter::from_name(parameter.name) {
+        let _ = match value {
+            Value::Number(x) => spec.set(p, &[x]),
+            Value::Vector(v) => spec.set(p, &v),
+            Value::Switch(_) => Ok(()),
+        };
+    }
+}
+
+fn flight_parameters_but(set: &[FlightParameter]) -> Vec<&'static ParameterDef> {
+    FlightParameter::ALL.iter().filter(|p| !set.contains(p)).map(|p| p.def()).collect()
+}
+
+/// `kick flight`: every flight parameter.
+impl FlagSpec for FlightSpec {
+    const LAW: bool = false;
+    fn parameters() -> Vec<&'static ParameterDef> {
+        FLIGHT_PARAMETERS.iter().collect()
+    }
+    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
+        set_flight(self, parameter, value);
+    }
+}
+
+/// The flight after a 1D kick (`kick simulate --flight`): the flight
+/// parameters the kick does not set.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct FlightAfter1d(pub FlightSpec);
+
+impl FlagSpec for FlightAfter1d {
+    const LAW: bool = false;
+    const REQUIRES: Option<&'static str> = Some(FLIGHT);
+    fn parameters() -> Vec<&'static ParameterDef> {
+        flight_parameters_but(&SET_BY_1D_KICK)
+    }
+    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
+        set_flight(&mut self.0, parameter, value);
+    }
+}
+
+/// The flight after a 3D kick (`kick simulate3d --flight`).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct FlightAfter3d(pub FlightSpec);
+
+impl FlagSpec for FlightAfter3d {
+    const LAW: bool = false;
+    const REQUIRES: Option<&'static str> = Some(FLIGHT);
+    fn parameters() -> Vec<&'static ParameterDef> {
+        flight_parameters_but(&SET_BY_3D_KICK)
+    }
+    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
+        set_flight(&mut self.0, parameter, value);
+    }
+}
+
+/// The switch that chains a kick into its flight; its id, for `requires`.
+pub const FLIGHT: &str = "flight";
 
 const LAW: &str = "law";
 
@@ -30,17 +128,22 @@ impl<S: FlagSpec> Flags<S> {
     /// law (the paper's unless chosen).
     pub fn spec(&self) -> S {
         let mut spec = S::default();
-        spec.set_law(self.law.unwrap_or(LawKind::PowerLaw));
+        if S::LAW {
+            spec.set_law(self.law.unwrap_or(LawKind::PowerLaw));
+        }
         for &(parameter, value) in &self.given {
-            // Flags exist only for S's parameters, with their shapes.
-            let _ = spec.set_parameter(parameter, value);
+            spec.set(parameter, value);
         }
         spec
     }
 }
 
-fn parameter_arg(p: &'static ParameterDef) -> Arg {
+fn parameter_arg(p: &'static ParameterDef, requires: Option<&'static str>) -> Arg {
     let arg = Arg::new(p.name).long(p.long()).help(p.help());
+    let arg = match requires {
+        Some(other) => arg.requires(other),
+        None => arg,
+    };
     match p.shape {
         Shape::Scalar => arg
             .value_name(p.symbol)
@@ -63,8 +166,11 @@ fn parse_law(name: &str) -> Result<LawKind, String> {
 
 impl<S: FlagSpec> clap::Args for Flags<S> {
     fn augment_args(mut command: Command) -> Command {
-        for p in parameters::at_levels(S::LEVELS) {
-            command = command.arg(parameter_arg(p));
+        for p in S::parameters() {
+            command = command.arg(parameter_arg(p, S::REQUIRES));
+        }
+        if !S::LAW {
+            return command;
         }
         command.arg(
             Arg::new(LAW)
@@ -88,7 +194,7 @@ impl<S: FlagSpec> clap::FromArgMatches for Flags<S> {
     }
 
     fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
-        for p in parameters::at_levels(S::LEVELS) {
+        for p in S::parameters() {
             let value = match p.shape {
                 Shape::Scalar => matches.get_one::<f64>(p.name).map(|&x| Value::Number(x)),
                 Shape::Vector3 => match matches.get_many::<f64>(p.name) {
@@ -110,8 +216,10 @@ impl<S: FlagSpec> clap::FromArgMatches for Flags<S> {
                 self.given.push((p, value));
             }
         }
-        if let Some(&law) = matches.get_one::<LawKind>(LAW) {
-            self.law = Some(law);
+        if S::LAW {
+            if let Some(&law) = matches.get_one::<LawKind>(LAW) {
+                self.law = Some(law);
+            }
         }
         Ok(())
     }
@@ -165,5 +273,31 @@ mod tests {
         let flags = parse::<ScenarioSpec>(&["--law", "flores", "--restitution", "0.6", "--damping", "-5"]).unwrap();
         let spec = flags.spec();
         assert_eq!((spec.law, spec.restitution, spec.damping), (Some(LawKind::Flores), Some(0.6), Some(-5.0)));
+    }
+
+    /// Every flight parameter is a flag of `kick flight`, landing in the
+    /// spec; after a kick only those the kick does not set are, and they need `--flight`.
+    #[test]
+    fn flight_flags_are_the_declared_flight_parameters() {
+        for p in FlightParameter::ALL {
+            let arg = match p.components() {
+                3 => "0.25,0.5,0.75",
+                _ => "0.25",
+            };
+            let flags = parse::<FlightSpec>(&[&p.def().flag(), arg]).unwrap_or_else(|e| panic!("{}: {e}", p.name()));
+            assert!(flags.spec().is_set(p), "{}", p.name());
+            let with_flight = |args: &[&str]| {
+                let command = Flags::<FlightAfter3d>::augment_args(Command::new("kick"))
+                    .arg(Arg::new(FLIGHT).long(FLIGHT).action(ArgAction::SetTrue));
+                command.try_get_matches_from(std::iter::once("kick").chain(args.iter().copied()))
+            };
+            let flag = p.def().flag();
+            let given = with_flight(&["--flight", &flag, arg]);
+            assert_eq!(given.is_ok(), !SET_BY_3D_KICK.contains(&p), "{}", p.name());
+            if given.is_ok() {
+                assert!(with_flight(&[&flag, arg]).is_err(), "{} without --flight", p.name());
+            }
+        }
+        assert!(parse::<FlightSpec>(&["--law", "flores"]).is_err());
     }
 }

@@ -5,10 +5,11 @@ mod flags;
 mod output;
 
 use clap::{Args, Parser, Subcommand};
-use flags::Flags;
+use flags::{FlightAfter1d, FlightAfter3d, Flags};
 use kick_3d::{KickSpec, Solver3d};
 use kick_compliant::SolverChoice;
 use kick_core::ScenarioSpec;
+use kick_flight::FlightSpec;
 use kick_leg::anthropometry::{DE_LEVA_BODY_MASS, DE_LEVA_STATURE};
 use output::{note, CliResult, Format, Out};
 use std::path::PathBuf;
@@ -27,6 +28,8 @@ enum Command {
     Simulate(Simulate),
     /// Simulate one off-center 3D kick: spin, friction, launch direction.
     Simulate3d(Simulate3d),
+    /// Fly the ball from its launch: drag crisis, Magnus lift, landing, apex, plane crossing.
+    Flight(FlightArgs),
     /// Run 3D sweeps (experiments/3d/*.toml) into HDF5 and figures.
     Run3d(Run3d),
     /// Table 2 side by side: printed, seed-rk4 and accurate values.
@@ -75,6 +78,21 @@ struct Simulate {
     /// Also output the time history, sampled at most this far apart (s)
     #[arg(long)]
     history: Option<f64>,
+    /// Then fly the ball: v_b+ at --launch-angle (and --azimuth), no spin
+    #[arg(long)]
+    flight: bool,
+    /// The flight's parameters (with --flight)
+    #[command(flatten)]
+    flight_parameters: Flags<FlightAfter1d>,
+}
+
+#[derive(Args)]
+struct FlightArgs {
+    /// The declared flight parameters: --speed and --launch-angle (or --launch-velocity) required
+    #[command(flatten)]
+    flight: Flags<FlightSpec>,
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
 }
 
 #[derive(Args)]
@@ -97,6 +115,12 @@ struct Simulate3d {
     /// 6.25e-7 s against the accurate path (error, observed order, wall time)
     #[arg(long)]
     scene_convergence: bool,
+    /// Then fly the ball from its launch velocity and spin
+    #[arg(long)]
+    flight: bool,
+    /// The flight's air, coefficients and crossing plane (with --flight)
+    #[command(flatten)]
+    flight_parameters: Flags<FlightAfter3d>,
 }
 
 #[derive(Args)]
@@ -396,17 +420,20 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
     use kick_runner::*;
     match command {
         Command::Simulate(a) => {
-            let simulation = simulate::simulate(&a.scenario.spec(), &a.solver, a.dt, a.history)?;
+            let flight = a.flight.then(|| a.flight_parameters.spec().0);
+            let simulation = simulate::simulate(&a.scenario.spec(), &a.solver, a.dt, a.history, flight.as_ref())?;
             out.print(a.format, &simulation)
         }
         Command::Simulate3d(a) if a.scene_convergence => out.print(Format::Text, &simulate::scene_convergence(&a.kick.spec())?),
         Command::Simulate3d(a) => {
-            let simulation = simulate::simulate3d(&a.kick.spec(), &a.solver, a.dt)?;
+            let flight = a.flight.then(|| a.flight_parameters.spec().0);
+            let simulation = simulate::simulate3d(&a.kick.spec(), &a.solver, a.dt, flight.as_ref())?;
             if a.time {
                 note(&format!("solver {} took {:.3} ms", simulation.outcome.solver, simulation.seconds * 1e3));
             }
             out.print(a.format, &simulation)
         }
+        Command::Flight(a) => out.print(a.format, &flight::flight(&a.flight.spec())?),
         Command::Run3d(a) => out.print(Format::Text, &three_d::run3d(&a.files, &a.out)?),
         Command::Table2(a) => {
             let table = table2::compare(&a.scenarios)?;

@@ -19,6 +19,7 @@ pub enum FlightParameter {
     Speed,
     LaunchAngle,
     Azimuth,
+    LaunchVelocity,
     Spin,
     BallMass,
     BallRadius,
@@ -67,12 +68,18 @@ use DefaultValue::{Derived, Number, Unset};
 /// kick's is a switch), in [`FlightParameter::ALL`] order. Refusals keep
 /// their own wording (with the unit) in [`FlightSpec::build`]; conditions
 /// between parameters are in the requirement text.
-pub static FLIGHT_PARAMETERS: [ParameterDef; 15] = [
+pub static FLIGHT_PARAMETERS: [ParameterDef; 16] = [
     flight("speed", "|v0|", "m/s", Unset("required"), Open(0.0), Unbounded, "finite and > 0, m/s", "Launch speed of the ball"),
     flight("launch_angle", "θ", "deg", Unset("required"), Open(0.0), Closed(90.0), "in (0, 90] degrees (the ball starts on the ground)",
         "Elevation of the launch velocity above the ground"),
     flight("azimuth", "ψ", "deg", Number(0.0), Closed(-180.0), Closed(180.0), "in [-180, 180] degrees",
         "Horizontal direction of launch from the x axis, positive toward +y"),
+    ParameterDef {
+        shape: Shape::Vector3,
+        ..flight("launch_velocity", "v0", "m/s", Unset("none: speed, launch_angle and azimuth give it"), Unbounded, Unbounded,
+            "three finite numbers with a vertical component > 0, m/s; not with speed, launch_angle or azimuth",
+            "Launch velocity as a vector, world frame, instead of speed and angles")
+    },
     ParameterDef {
         shape: Shape::Vector3,
         default: DefaultValue::Vector([0.0; 3]),
@@ -106,10 +113,11 @@ pub static FLIGHT_PARAMETERS: [ParameterDef; 15] = [
 ];
 
 impl FlightParameter {
-    pub const ALL: [FlightParameter; 15] = [
+    pub const ALL: [FlightParameter; 16] = [
         FlightParameter::Speed,
         FlightParameter::LaunchAngle,
         FlightParameter::Azimuth,
+        FlightParameter::LaunchVelocity,
         FlightParameter::Spin,
         FlightParameter::BallMass,
         FlightParameter::BallRadius,
@@ -157,6 +165,7 @@ pub struct FlightSpec {
     pub speed: Option<f64>,
     pub launch_angle: Option<f64>,
     pub azimuth: Option<f64>,
+    pub launch_velocity: Option<[f64; 3]>,
     pub spin: Option<[f64; 3]>,
     pub ball_mass: Option<f64>,
     pub ball_radius: Option<f64>,
@@ -190,6 +199,14 @@ fn check_spin(spin: [f64; 3]) -> Result<[f64; 3], FlightError> {
     Ok(spin)
 }
 
+fn check_launch_velocity(velocity: [f64; 3]) -> Result<[f64; 3], FlightError> {
+    for v in velocity {
+        check("launch_velocity", v, true, "three finite numbers, m/s")?;
+    }
+    check("launch_velocity", velocity[2], velocity[2] > 0.0, "with a vertical component > 0 (the ball starts on the ground)")?;
+    Ok(velocity)
+}
+
 impl FlightSpec {
     /// A flight from a 1D kick: its exit speed and a launch angle in degrees.
     pub fn from_exit_speed(speed: f64, launch_angle: f64) -> FlightSpec {
@@ -206,6 +223,7 @@ impl FlightSpec {
             FlightParameter::Speed => self.speed = x,
             FlightParameter::LaunchAngle => self.launch_angle = x,
             FlightParameter::Azimuth => self.azimuth = x,
+            FlightParameter::LaunchVelocity => self.launch_velocity = Some([values[0], values[1], values[2]]),
             FlightParameter::Spin => self.spin = Some([values[0], values[1], values[2]]),
             FlightParameter::BallMass => self.ball_mass = x,
             FlightParameter::BallRadius => self.ball_radius = x,
@@ -222,8 +240,37 @@ impl FlightSpec {
         Ok(())
     }
 
+    /// Whether `parameter` was given.
+    pub fn is_set(&self, parameter: FlightParameter) -> bool {
+        match parameter {
+            FlightParameter::Speed => self.speed.is_some(),
+            FlightParameter::LaunchAngle => self.launch_angle.is_some(),
+            FlightParameter::Azimuth => self.azimuth.is_some(),
+            FlightParameter::LaunchVelocity => self.launch_velocity.is_some(),
+            FlightParameter::Spin => self.spin.is_some(),
+            FlightParameter::BallMass => self.ball_mass.is_some(),
+            FlightParameter::BallRadius => self.ball_radius.is_some(),
+            FlightParameter::Gravity => self.gravity.is_some(),
+            FlightParameter::AirDensity => self.air_density.is_some(),
+            FlightParameter::Temperature => self.temperature.is_some(),
+            FlightParameter::Pressure => self.pressure.is_some(),
+            FlightParameter::Altitude => self.altitude.is_some(),
+            FlightParameter::DragCoefficient => self.drag_coefficient.is_some(),
+            FlightParameter::LiftCoefficient => self.lift_coefficient.is_some(),
+            FlightParameter::SpinDecay => self.spin_decay.is_some(),
+            FlightParameter::Distance => self.distance.is_some(),
+        }
+    }
+
     /// Fill defaults and validate.
     pub fn build(&self) -> Result<Flight, FlightError> {
+        if let Some(velocity) = self.launch_velocity {
+            let angles = [("speed", self.speed.is_some()), ("launch_angle", self.launch_angle.is_some()), ("azimuth", self.azimuth.is_some())];
+            if let Some((name, _)) = angles.iter().find(|(_, set)| *set) {
+                return Err(FlightError::Conflict { first: "launch_velocity", second: name });
+            }
+            return self.finish(check_launch_velocity(velocity)?, check_spin(self.spin.unwrap_or([0.0; 3]))?);
+        }
         let speed = self.speed.ok_or(FlightError::Missing { name: "speed" })?;
         let speed = check("speed", speed, speed > 0.0, "finite and > 0, m/s")?;
         let angle = self.launch_angle.ok_or(FlightError::Missing { name: "launch_angle" })?;
@@ -311,21 +358,13 @@ impl Flight {
             ("speed", rest.speed.is_some()),
             ("launch_angle", rest.launch_angle.is_some()),
             ("azimuth", rest.azimuth.is_some()),
+            ("launch_velocity", rest.launch_velocity.is_some()),
             ("spin", rest.spin.is_some()),
         ];
         if let Some((name, _)) = given.iter().find(|(_, set)| *set) {
             return Err(FlightError::Conflict { first: "launch_velocity", second: name });
         }
-        for v in launch_velocity {
-            check("launch_velocity", v, true, "three finite numbers, m/s")?;
-        }
-        check(
-            "launch_velocity",
-            launch_velocity[2],
-            launch_velocity[2] > 0.0,
-            "with a vertical component > 0 (the ball starts on the ground)",
-        )?;
-        rest.finish(launch_velocity, check_spin(spin)?)
+        rest.finish(check_launch_velocity(launch_velocity)?, check_spin(spin)?)
     }
 
     /// The same flight solved at another relative tolerance, in (0, 1e-3].
@@ -514,6 +553,7 @@ mod tests {
         }
         let value = serde_json::to_value(full).unwrap();
         for p in FlightParameter::ALL {
+            assert!(full.is_set(p) && !FlightSpec::default().is_set(p), "{}", p.name());
             assert!(value.get(p.name()).is_some_and(|v| !v.is_null()), "{}", p.name());
         }
     }
@@ -531,5 +571,28 @@ mod tests {
         ));
         let f = Flight::from_launch([20.0, 1.0, 5.0], [0.0, 0.0, 60.0], &FlightSpec::default()).unwrap();
         assert_eq!(f.launch_velocity(), [20.0, 1.0, 5.0]);
+    }
+
+    /// `launch_velocity` is the vector form of speed and angles: the same
+    /// flight as `from_launch`, refused beside speed or angles or when it
+    /// does not leave the ground.
+    #[test]
+    fn launch_velocity_replaces_speed_and_angles() {
+        let spec = FlightSpec { launch_velocity: Some([20.0, 1.0, 5.0]), spin: Some([0.0, 0.0, 60.0]), ..FlightSpec::default() };
+        let direct = Flight::from_launch([20.0, 1.0, 5.0], [0.0, 0.0, 60.0], &FlightSpec::default()).unwrap();
+        assert_eq!(spec.build().unwrap(), direct);
+        for (name, with) in [
+            ("speed", FlightSpec { speed: Some(20.0), ..spec }),
+            ("launch_angle", FlightSpec { launch_angle: Some(20.0), ..spec }),
+            ("azimuth", FlightSpec { azimuth: Some(0.0), ..spec }),
+        ] {
+            assert_eq!(with.build(), Err(FlightError::Conflict { first: "launch_velocity", second: name }));
+        }
+        assert_eq!(refused(FlightSpec { launch_velocity: Some([20.0, 0.0, -1.0]), ..spec }), "launch_velocity");
+        assert_eq!(refused(FlightSpec { launch_velocity: Some([f64::NAN, 0.0, 1.0]), ..spec }), "launch_velocity");
+        assert_eq!(
+            Flight::from_launch([20.0, 1.0, 5.0], [0.0; 3], &spec),
+            Err(FlightError::Conflict { first: "launch_velocity", second: "launch_velocity" })
+        );
     }
 }

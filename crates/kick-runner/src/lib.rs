@@ -9,6 +9,7 @@
 //! - [`run`]: the 1D model's runner over [`h5`] (rayon, chunked streaming); [`sample`], [`sweep`]: random sweeps;
 //!   [`sweep3d`]: random off-center 3D kicks into one file.
 //! - [`shard`]: one slice of an experiment's rows per file (`--shard I/N`), and their merge.
+//! - [`flight`]: the ball's flight, alone or after a 1D or 3D kick.
 //! - [`simulate`]: one contact, 1D or 3D; [`table2`]: Table 2 side by side; [`checks`]: every cross-model check.
 //! - [`three_d`]: 3D sweeps into files and figures; [`leg`]: the articulated leg and its figure data.
 //! - [`identify`]: `kick fit` and `kick laws`, their result files, figures and pages.
@@ -23,6 +24,7 @@ pub mod checks;
 pub mod compare;
 pub mod experiment;
 pub mod figures;
+pub mod flight;
 pub mod h5;
 pub mod identify;
 pub mod leg;

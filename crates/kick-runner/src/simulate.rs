@@ -1,7 +1,9 @@
 //! One contact, 1D (`kick simulate`) or 3D (`kick simulate3d`): the solve and
 //! its JSON and text forms.
 
+use crate::flight::{self, FlightRun};
 use crate::printable::Printable;
+use kick_flight::FlightSpec;
 use kick_3d::{Kick3d, KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
 use kick_core::{History, Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, OBSERVABLES};
@@ -17,11 +19,20 @@ pub struct Simulation {
     pub solver: &'static str,
     pub outcome: Outcome,
     pub history: Option<History>,
+    /// The ball's flight after the kick, when asked for.
+    pub flight: Option<FlightRun>,
 }
 
 /// Solve `spec` with the solver named `solver` (`dt`: step of the fixed-step
-/// solvers), with a history sampled at most `history` seconds apart if given.
-pub fn simulate(spec: &ScenarioSpec, solver: &str, dt: f64, history: Option<f64>) -> Result<Simulation, String> {
+/// solvers), with a history sampled at most `history` seconds apart if given,
+/// and with `flight` given, the ball's flight after it ([`flight::after_1d`]).
+pub fn simulate(
+    spec: &ScenarioSpec,
+    solver: &str,
+    dt: f64,
+    history: Option<f64>,
+    flight: Option<&FlightSpec>,
+) -> Result<Simulation, String> {
     let scenario = spec.build().map_err(|e| e.to_string())?;
     let choice = SolverChoice::from_name(solver, dt).map_err(|e| e.to_string())?;
     let (outcome, history) = match history {
@@ -31,7 +42,8 @@ pub fn simulate(spec: &ScenarioSpec, solver: &str, dt: f64, history: Option<f64>
         }
         None => (choice.solve(&scenario).map_err(|e| e.to_string())?, None),
     };
-    Ok(Simulation { scenario, solver: choice.name(), outcome, history })
+    let flight = flight.map(|rest| flight::after_1d(&scenario, &outcome, rest)).transpose()?;
+    Ok(Simulation { scenario, solver: choice.name(), outcome, history, flight })
 }
 
 /// The JSON object of one run: every observable, the energy residual, the
@@ -65,7 +77,10 @@ impl Serialize for Simulation {
             #[serde(skip_serializing_if = "Option::is_none")]
             history: Option<&'a [kick_core::Sample]>,
         }
-        let object = outcome_json(&self.scenario, self.solver, &self.outcome);
+        let mut object = outcome_json(&self.scenario, self.solver, &self.outcome);
+        if let Some(f) = &self.flight {
+            object.insert("flight".into(), serde_json::to_value(f).map_err(serde::ser::Error::custom)?);
+        }
         WithHistory { outcome: &object, history: self.history.as_ref().map(|h| h.samples.as_slice()) }.serialize(serializer)
     }
 }
@@ -79,6 +94,9 @@ impl Printable for Simulation {
             let _ = writeln!(w, "{name:<24} {value:>16.10e} {unit}");
         }
         let _ = writeln!(w, "{:<24} {:>16.3e} J", "energy_residual", o.energy.residual());
+        if let Some(f) = &self.flight {
+            let _ = write!(w, "\nflight:\n{}", f.text());
+        }
         if let Some(h) = &self.history {
             let _ = writeln!(
                 w,
@@ -104,16 +122,21 @@ pub struct Simulation3d {
     pub outcome: Outcome3d,
     /// Wall time of the solve, s (one run).
     pub seconds: f64,
+    /// The ball's flight after the kick, when asked for.
+    pub flight: Option<FlightRun>,
 }
 
 /// Solve the 3D kick `spec` with the path named `solver` (`dt`: the rapier
-/// scene path's step).
-pub fn simulate3d(spec: &KickSpec, solver: &str, dt: f64) -> Result<Simulation3d, String> {
+/// scene path's step) and, with `flight` given, the ball's flight after it
+/// ([`flight::after_3d`]; not in `seconds`).
+pub fn simulate3d(spec: &KickSpec, solver: &str, dt: f64, flight: Option<&FlightSpec>) -> Result<Simulation3d, String> {
     let kick = spec.build().map_err(|e| e.to_string())?;
     let solver = Solver3d::from_name(solver, dt).map_err(|e| e.to_string())?;
     let start = Instant::now();
     let outcome = solver.solve(&kick).map_err(|e| e.to_string())?;
-    Ok(Simulation3d { kick, outcome, seconds: start.elapsed().as_secs_f64() })
+    let seconds = start.elapsed().as_secs_f64();
+    let flight = flight.map(|rest| flight::after_3d(&kick, &outcome, rest)).transpose()?;
+    Ok(Simulation3d { kick, outcome, seconds, flight })
 }
 
 /// The JSON object of one 3D run: the outcome (with `law`, the normal law's
@@ -127,6 +150,9 @@ impl Serialize for Simulation3d {
         };
         m.insert("energy_residual".into(), o.energy.residual().into());
         m.insert("law_parameters".into(), serde_json::to_value(self.kick.law()).map_err(serde::ser::Error::custom)?);
+        if let Some(f) = &self.flight {
+            m.insert("flight".into(), serde_json::to_value(f).map_err(serde::ser::Error::custom)?);
+        }
         m.serialize(serializer)
     }
 }
@@ -156,6 +182,9 @@ impl Printable for Simulation3d {
             let _ = writeln!(w, "{name:<24} {value:>16.10e} {unit}");
         }
         let _ = writeln!(w, "{:<24} {}", "evaluations", o.evaluations);
+        if let Some(f) = &self.flight {
+            let _ = write!(w, "\nflight:\n{}", f.text());
+        }
         w
     }
 }

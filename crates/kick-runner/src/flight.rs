@@ -1,0 +1,173 @@
+//! The ball's flight after the kick (`kick flight`, and `--flight` of
+//! `kick simulate` and `kick simulate3d`): a kick-flight solve with its JSON
+//! and text forms, and the chaining of a kick's launch into it.
+
+use crate::printable::Printable;
+use kick_3d::{Kick3d, Outcome3d};
+use kick_core::{Outcome, Scenario};
+use kick_flight::{solve, Flight, FlightError, FlightOutcome, FlightParameter, FlightSpec};
+use serde::ser::{Serialize, Serializer};
+use serde_json::{Map, Value};
+use std::fmt::Write as _;
+
+/// Flight parameters a 1D kick sets: its exit speed (no spin) and its ball's mass.
+pub const SET_BY_1D_KICK: [FlightParameter; 4] =
+    [FlightParameter::Speed, FlightParameter::LaunchVelocity, FlightParameter::Spin, FlightParameter::BallMass];
+
+/// Flight parameters a 3D kick sets: launch velocity and spin, its ball, and
+/// g (kick-3d's, `kick_core::GRAVITY`; its `gravity` flag is a switch).
+pub const SET_BY_3D_KICK: [FlightParameter; 8] = [
+    FlightParameter::Speed,
+    FlightParameter::LaunchAngle,
+    FlightParameter::Azimuth,
+    FlightParameter::LaunchVelocity,
+    FlightParameter::Spin,
+    FlightParameter::BallMass,
+    FlightParameter::BallRadius,
+    FlightParameter::Gravity,
+];
+
+/// One solved flight: what was flown and what it gave.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FlightRun {
+    pub flight: Flight,
+    pub outcome: FlightOutcome,
+}
+
+/// A flight error as front ends show it: the parameter's name and its flag.
+pub fn flight_error(error: FlightError) -> String {
+    let name = match &error {
+        FlightError::InvalidParameter { name, .. } | FlightError::Missing { name } | FlightError::WrongLength { name, .. } => {
+            Some(*name)
+        }
+        FlightError::Conflict { second, .. } => Some(*second),
+        _ => None,
+    };
+    match name.and_then(|n| FlightParameter::from_name(n).ok()) {
+        Some(p) => format!("{error} (flag {})", p.def().flag()),
+        None => error.to_string(),
+    }
+}
+
+/// Solve one flight.
+pub fn fly(flight: Flight) -> Result<FlightRun, String> {
+    let outcome = solve(&flight).map_err(flight_error)?;
+    Ok(FlightRun { flight, outcome })
+}
+
+/// `kick flight`: validate `spec` and fly it.
+pub fn flight(spec: &FlightSpec) -> Result<FlightRun, String> {
+    fly(spec.build().map_err(flight_error)?)
+}
+
+/// Refuse a parameter of `rest` that the kick sets (`by`: who sets it).
+fn refuse_set(rest: &FlightSpec, set: &[FlightParameter], by: &str) -> Result<(), String> {
+    match set.iter().find(|&&p| rest.is_set(p)) {
+        Some(p) => Err(format!("flight parameter `{}` is set by the {by} and cannot be given", p.name())),
+        None => Ok(()),
+    }
+}
+
+/// The flight after a 1D kick: the ball leaves at its exit speed v_b⁺ with no
+/// spin, in the direction `rest`'s launch_angle (required) and azimuth give;
+/// `rest` gives the air, coefficients, ball radius, g and crossing plane.
+pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Result<FlightRun, String> {
+    refuse_set(rest, &SET_BY_1D_KICK, "1D kick")?;
+    if !(outcome.v_ball_out > 0.0) {
+        return Err(format!("the ball leaves the 1D kick at {} m/s: nothing flies forward", outcome.v_ball_out));
+    }
+    let spec = FlightSpec { speed: Some(outcome.v_ball_out), ball_mass: Some(scenario.ball_mass()), ..*rest };
+    flight(&spec)
+}
+
+/// The flight after a 3D kick: the ball leaves with the kick's launch velocity
+/// and spin; `rest` gives the air, coefficients and crossing plane.
+pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result<FlightRun, String> {
+    refuse_set(rest, &SET_BY_3D_KICK, "3D kick")?;
+    let spec = FlightSpec {
+        ball_mass: Some(kick.base.ball_mass()),
+        ball_radius: Some(kick.ball_radius),
+        gravity: Some(kick_core::GRAVITY),
+        ..*rest
+    };
+    if !(outcome.launch_velocity[2] > 0.0) {
+        return Err(format!(
+            "the 3D kick launches the ball at {:?} m/s, not upward: nothing to fly (an --approach-angle > 0 lifts it)",
+            outcome.launch_velocity
+        ));
+    }
+    fly(Flight::from_launch(outcome.launch_velocity, outcome.spin, &spec).map_err(flight_error)?)
+}
+
+impl Serialize for FlightRun {
+    /// The outcome's keys (`flight_time`, `landing_point`, `apex_height`,
+    /// `landing_velocity`, `crossing` or null, ...) and the launch state flown.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut m: Map<String, Value> = match serde_json::to_value(self.outcome).map_err(serde::ser::Error::custom)? {
+            Value::Object(m) => m,
+            _ => return Err(serde::ser::Error::custom("flight outcome is not an object")),
+        };
+        m.insert("launch_velocity".into(), self.flight.launch_velocity().to_vec().into());
+        m.insert("spin".into(), self.flight.spin().to_vec().into());
+        m.insert("air_density".into(), self.flight.air().density.into());
+        m.serialize(serializer)
+    }
+}
+
+impl Printable for FlightRun {
+    fn text(&self) -> String {
+        let o = &self.outcome;
+        let f = &self.flight;
+        let mut w = String::new();
+        let v = |a: &[f64], unit: &str| {
+            let parts: Vec<String> = a.iter().map(|x| format!("{x:+.6e}")).collect();
+            format!("[{}] {unit}", parts.join(", "))
+        };
+        let _ = writeln!(w, "{:<24} {}", "launch_velocity", v(&f.launch_velocity(), "m/s"));
+        let _ = writeln!(w, "{:<24} {}", "spin", v(&f.spin(), "rad/s"));
+        let _ = writeln!(w, "{:<24} {:>16.10e} s", "flight_time", o.flight_time);
+        let _ = writeln!(w, "{:<24} {}", "landing_point", v(&o.landing_point, "m"));
+        let _ = writeln!(w, "{:<24} {:>16.10e} m (at {:.6e} s)", "apex_height", o.apex_height, o.apex_time);
+        let _ = writeln!(w, "{:<24} {}", "landing_velocity", v(&o.landing_velocity, "m/s"));
+        match &o.crossing {
+            Some(c) => {
+                let _ = writeln!(
+                    w,
+                    "{:<24} x = {} m at {:.6e} s: height {:.6e} m, lateral offset {:+.6e} m",
+                    "crossing", c.distance, c.time, c.height, c.lateral_offset
+                );
+            }
+            None => {
+                if let Some(d) = f.distance() {
+                    let _ = writeln!(w, "{:<24} none: the ball lands before x = {d} m", "crossing");
+                }
+            }
+        }
+        let _ = writeln!(w, "{:<24} {}", "steps", o.steps);
+        w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kick_core::Solver;
+
+    /// A kick's launch is the kick's: giving it again is refused by name,
+    /// and refusals name the flag.
+    #[test]
+    fn a_kick_sets_its_launch_and_errors_name_flags() {
+        let scenario = Scenario::baseline();
+        let outcome = kick_compliant::SolverChoice::from_name("auto", 5e-6).unwrap().solve(&scenario).unwrap();
+        let rest = FlightSpec { launch_angle: Some(15.0), ..FlightSpec::default() };
+        assert!(after_1d(&scenario, &outcome, &rest).is_ok());
+        let error = after_1d(&scenario, &outcome, &FlightSpec { spin: Some([0.0, 0.0, 10.0]), ..rest }).unwrap_err();
+        assert!(error.contains("`spin` is set by the 1D kick"), "{error}");
+        let kick = Kick3d::baseline();
+        let o3 = kick_3d::Accurate3d::default().solve(&kick).unwrap();
+        let error = after_3d(&kick, &o3, &rest).unwrap_err();
+        assert!(error.contains("`launch_angle` is set by the 3D kick"), "{error}");
+        let error = flight(&FlightSpec { launch_angle: Some(95.0), ..FlightSpec::from_exit_speed(20.0, 10.0) }).unwrap_err();
+        assert!(error.contains("(flag --launch-angle)"), "{error}");
+    }
+}
