@@ -27,8 +27,6 @@ enum Command {
     Simulate(Simulate),
     /// Simulate one off-center 3D kick: spin, friction, launch direction.
     Simulate3d(Simulate3d),
-    /// Run 3D sweeps (experiments/3d/*.toml) into HDF5 and figures.
-    Run3d(Run3d),
     /// Table 2 side by side: printed, seed-rk4 and accurate values.
     Table2(Table2),
     /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
@@ -40,7 +38,8 @@ enum Command {
     /// Identify parameters from printed or measured data.
     #[command(subcommand)]
     Fit(Fit),
-    /// Run one experiment file (experiments/*.toml) into DIR/NAME.h5.
+    /// Run one experiment file, 1D or 3D (experiments/*.toml, experiments/3d/*.toml) into DIR/NAME.h5.
+    #[command(alias = "run3d")]
     Run(Run),
     /// Work–precision of every 1D solver, cost ratios and sweep throughput (HDF5 + figure).
     Bench(Bench),
@@ -93,16 +92,6 @@ struct Simulate3d {
     /// 6.25e-7 s against the accurate path (error, observed order, wall time)
     #[arg(long)]
     scene_convergence: bool,
-}
-
-#[derive(Args)]
-struct Run3d {
-    /// Experiment files (experiments/3d/*.toml)
-    #[arg(required = true)]
-    files: Vec<PathBuf>,
-    /// Directory for the result files (figures go to DIR/figures)
-    #[arg(long, default_value = "results")]
-    out: PathBuf,
 }
 
 #[derive(Args)]
@@ -362,7 +351,6 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             }
             out.print(a.format, &simulation)
         }
-        Command::Run3d(a) => out.print(Format::Text, &three_d::run3d(&a.files, &a.out)?),
         Command::Table2(a) => {
             let table = table2::compare(&a.scenarios)?;
             out.print(a.format, &table)?;

@@ -299,6 +299,13 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
     if let Output::History { interval } = experiment.output {
         crate::h5::write_f64_attr(writer.file(), &path, "history_interval", interval)?;
     }
+    if let crate::experiment::Scenarios::Grid { axes, .. } = &experiment.scenarios {
+        if !axes.is_empty() {
+            let coordinates: Vec<(Column, &[f64])> =
+                axes.iter().map(|a| (Column::new(a.parameter.name(), a.parameter.unit()), a.values.as_slice())).collect();
+            crate::h5::write_grid(writer.file(), &path, &coordinates)?;
+        }
+    }
 
     let total = experiment.scenarios.len();
     let bar = progress(total, show_progress);
@@ -348,11 +355,15 @@ pub struct RunReport {
     pub seconds: f64,
 }
 
-/// Load and run one experiment file into `out/NAME.h5`.
+/// Load and run one experiment file of either level into `out/NAME.h5`.
 pub fn run_file(file: &Path, out: &Path) -> Result<RunReport, String> {
-    let experiment = crate::experiment::load(file).map_err(|e| e.to_string())?;
+    let experiment = crate::experiment::load_any(file).map_err(|e| e.to_string())?;
     let started = std::time::Instant::now();
-    let summary = run(&experiment, out, true).map_err(|e| e.to_string())?;
+    let summary = match &experiment {
+        crate::experiment::AnyExperiment::OneD(e) => run(e, out, true),
+        crate::experiment::AnyExperiment::ThreeD(e) => crate::three_d::run(e, out),
+    }
+    .map_err(|e| e.to_string())?;
     Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
 }
 
