@@ -38,7 +38,7 @@ pub use accurate::Accurate3d;
 pub use error::Kick3dError;
 pub use full_state::FullState3d;
 pub use model::{FootShape, Kick3d, Kick3dSpec, KickSpec};
-pub use outcome::{EnergyPartition, Outcome3d};
+pub use outcome::{EnergyPartition, Outcome3d, OBSERVABLES_3D};
 
 /// The 3D solvers selectable by name (`--solver`).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -310,6 +310,40 @@ impl Kick3d {
         Ok(kick)
     }
 
+    /// The value of every declared parameter of the 1D and 3D levels this kick
+    /// was built with, defaults filled in (in [`parameters::PARAMETERS`]
+    /// order; `restitution` only when the law takes one). Angles as declared
+    /// (degrees); the instep's size is its outer size, as given.
+    pub fn parameter_values(&self) -> Vec<(&'static ParameterDef, Value)> {
+        let mut values = Vec::new();
+        for def in parameters::at_levels(KickSpec::LEVELS) {
+            let value = match def.name {
+                "restitution" => match self.base.restitution_target() {
+                    Some(e) => Value::Number(e),
+                    None => continue,
+                },
+                "offset" => Value::Number(self.offset),
+                "approach_angle" => Value::Number(self.approach_angle.to_degrees()),
+                "friction" => Value::Number(self.friction),
+                "ball_radius" => Value::Number(self.ball_radius),
+                "ball_inertia" => Value::Number(self.ball_inertia),
+                "tangential_stiffness" => Value::Number(self.tangential_stiffness),
+                "tangential_damping" => Value::Number(self.tangential_damping),
+                "foot_inertia" => Value::Vector(self.foot_inertia),
+                "foot_half_extents" => Value::Vector(self.foot_shape.outer_half_extents()),
+                "border_radius" => Value::Number(self.foot_shape.border_radius()),
+                "gravity" => Value::Switch(self.gravity),
+                "ground" => Value::Switch(self.ground),
+                name => match kick_core::Parameter::from_name(name) {
+                    Some(p) => Value::Number(self.base.get(p)),
+                    None => continue,
+                },
+            };
+            values.push((def, value));
+        }
+        values
+    }
+
     /// The default 3D kick on Table 1's baseline: central, μ = 0.5.
     pub fn baseline() -> Kick3d {
         match Kick3d::new(Scenario::baseline(), &Kick3dSpec::default()) {

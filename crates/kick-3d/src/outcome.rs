@@ -244,3 +244,74 @@ pub(crate) fn assemble(kick: &Kick3d, end: &EndState, peaks: Peaks, evaluations:
     out.derive_summary();
     Ok(out.check_finite()?)
 }
+
+/// Names and units of [`Outcome3d::observable_values`]: every summary number
+/// of a 3D kick, vectors as `_x`, `_y`, `_z` columns (world frame), the
+/// energy partition as `energy_*`. Result files name their columns by these.
+pub const OBSERVABLES_3D: [(&str, &str); 42] = [
+    ("launch_velocity_x", "m/s"),
+    ("launch_velocity_y", "m/s"),
+    ("launch_velocity_z", "m/s"),
+    ("spin_x", "rad/s"),
+    ("spin_y", "rad/s"),
+    ("spin_z", "rad/s"),
+    ("speed", "m/s"),
+    ("spin_rpm", "rpm"),
+    ("launch_angle", "deg"),
+    ("launch_azimuth", "deg"),
+    ("foot_velocity_x", "m/s"),
+    ("foot_velocity_y", "m/s"),
+    ("foot_velocity_z", "m/s"),
+    ("foot_angular_velocity_x", "rad/s"),
+    ("foot_angular_velocity_y", "rad/s"),
+    ("foot_angular_velocity_z", "rad/s"),
+    ("impulse_x", "N s"),
+    ("impulse_y", "N s"),
+    ("impulse_z", "N s"),
+    ("normal_impulse", "N s"),
+    ("angular_impulse_x", "N m s"),
+    ("angular_impulse_y", "N m s"),
+    ("angular_impulse_z", "N m s"),
+    ("contact_time", "s"),
+    ("peak_normal_force", "N"),
+    ("peak_normal_force_time", "s"),
+    ("peak_tangential_force", "N"),
+    ("peak_tangential_force_time", "s"),
+    ("max_compression", "m"),
+    ("max_compression_time", "s"),
+    ("slip_time", "s"),
+    ("energy_kinetic_initial", "J"),
+    ("energy_ball_translation", "J"),
+    ("energy_ball_spin", "J"),
+    ("energy_foot", "J"),
+    ("energy_elastic_final", "J"),
+    ("energy_normal_damping_loss", "J"),
+    ("energy_friction_loss", "J"),
+    ("energy_drive_work", "J"),
+    ("energy_gravity_work", "J"),
+    ("energy_residual", "J"),
+    ("evaluations", "1"),
+];
+
+impl Outcome3d {
+    /// The values of [`OBSERVABLES_3D`], in order.
+    pub fn observable_values(&self) -> [f64; OBSERVABLES_3D.len()] {
+        let [vx, vy, vz] = self.launch_velocity;
+        let [wx, wy, wz] = self.spin;
+        let [fx, fy, fz] = self.foot_velocity;
+        let [ox, oy, oz] = self.foot_angular_velocity;
+        let [jx, jy, jz] = self.impulse;
+        let [lx, ly, lz] = self.angular_impulse;
+        let e = &self.energy;
+        [
+            vx, vy, vz, wx, wy, wz, self.speed, self.spin_rpm, self.launch_angle, self.launch_azimuth,
+            fx, fy, fz, ox, oy, oz, jx, jy, jz, self.normal_impulse, lx, ly, lz,
+            self.contact_time, self.peak_normal_force, self.peak_normal_force_time,
+            self.peak_tangential_force, self.peak_tangential_force_time,
+            self.max_compression, self.max_compression_time, self.slip_time,
+            e.kinetic_initial, e.ball_translation, e.ball_spin, e.foot, e.elastic_final,
+            e.normal_damping_loss, e.friction_loss, e.drive_work, e.gravity_work, e.residual(),
+            self.evaluations as f64,
+        ]
+    }
+}

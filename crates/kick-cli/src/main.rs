@@ -30,8 +30,6 @@ enum Command {
     Simulate3d(Simulate3d),
     /// Fly the ball from its launch: drag crisis, Magnus lift, landing, apex, plane crossing.
     Flight(FlightArgs),
-    /// Run 3D sweeps (experiments/3d/*.toml) into HDF5 and figures.
-    Run3d(Run3d),
     /// Table 2 side by side: printed, seed-rk4 and accurate values.
     Table2(Table2),
     /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
@@ -43,7 +41,8 @@ enum Command {
     /// Identify parameters from printed or measured data.
     #[command(subcommand)]
     Fit(Fit),
-    /// Run one experiment file (experiments/*.toml) into DIR/NAME.h5, or one shard of it.
+    /// Run one experiment file, 1D or 3D (experiments/*.toml, experiments/3d/*.toml) into DIR/NAME.h5, or one shard of it.
+    #[command(alias = "run3d")]
     Run(Run),
     /// Join shard files of one experiment (`kick run --shard`) into the file an unsharded run writes.
     Merge(Merge),
@@ -121,16 +120,6 @@ struct Simulate3d {
     /// The flight's air, coefficients and crossing plane (with --flight)
     #[command(flatten)]
     flight_parameters: Flags<FlightAfter3d>,
-}
-
-#[derive(Args)]
-struct Run3d {
-    /// Experiment files (experiments/3d/*.toml)
-    #[arg(required = true)]
-    files: Vec<PathBuf>,
-    /// Directory for the result files (figures go to DIR/figures)
-    #[arg(long, default_value = "results")]
-    out: PathBuf,
 }
 
 #[derive(Args)]
@@ -434,7 +423,6 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(a.format, &simulation)
         }
         Command::Flight(a) => out.print(a.format, &flight::flight(&a.flight.spec())?),
-        Command::Run3d(a) => out.print(Format::Text, &three_d::run3d(&a.files, &a.out)?),
         Command::Table2(a) => {
             let table = table2::compare(&a.scenarios)?;
             out.print(a.format, &table)?;

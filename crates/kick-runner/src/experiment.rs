@@ -33,6 +33,9 @@ use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
+mod three_d;
+pub use three_d::{Axis3d, Experiment3d, Grid3d, MAX_CELLS_3D};
+
 type Span = std::ops::Range<usize>;
 
 impl ExperimentError {
@@ -67,6 +70,8 @@ pub struct ExperimentError {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawExperiment {
+    /// "1d" or "3d" (see [`parse_any`]).
+    level: Option<Spanned<String>>,
     name: Option<Spanned<String>>,
     description: Option<String>,
     solver: Option<Spanned<String>>,
@@ -154,8 +159,8 @@ impl<'de, const NAMED: bool> Deserialize<'de> for RawSpec<NAMED> {
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawAxis {
-    parameter: Spanned<Parameter>,
+struct RawAxis<P = Parameter> {
+    parameter: Spanned<P>,
     values: Option<Spanned<Vec<Spanned<f64>>>>,
     linear: Option<Spanned<RawRange>>,
     log: Option<Spanned<RawRange>>,
@@ -380,17 +385,12 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         return table2_experiment(path, text, stem, &at);
     }
     let raw: RawExperiment = toml::from_str(text).map_err(|e| at.toml_error(&e))?;
-
-    let name = match &raw.name {
-        Some(n) => {
-            let value = n.get_ref();
-            if value.is_empty() || !value.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
-                return Err(at.error(n.span(), "name", "must be non-empty letters, digits, `_` or `-` (it names the result file)"));
-            }
-            value.clone()
+    if let Some(level) = &raw.level {
+        if level.get_ref() != "1d" {
+            return Err(at.error(level.span(), "level", format!("`{}`: this reader takes 1D experiments (`kick run` reads both)", level.get_ref())));
         }
-        None => stem,
-    };
+    }
+    let name = experiment_name(&at, raw.name.as_ref(), stem)?;
 
     let dt = match &raw.dt {
         Some(dt) => {
@@ -573,8 +573,84 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     })
 }
 
+/// The `name` key checked, or the file's stem.
+fn experiment_name(at: &Locator, name: Option<&Spanned<String>>, stem: String) -> Result<String, ExperimentError> {
+    match name {
+        Some(n) => {
+            let value = n.get_ref();
+            if value.is_empty() || !value.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
+                return Err(at.error(n.span(), "name", "must be non-empty letters, digits, `_` or `-` (it names the result file)"));
+            }
+            Ok(value.clone())
+        }
+        None => Ok(stem),
+    }
+}
+
+/// An experiment of either level.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AnyExperiment {
+    OneD(Experiment),
+    ThreeD(Experiment3d),
+}
+
+/// Read and validate an experiment file of either level (see [`parse_any`]).
+pub fn load_any(path: &Path) -> Result<AnyExperiment, ExperimentError> {
+    let text = std::fs::read_to_string(path).map_err(|e| ExperimentError {
+        file: path.display().to_string(),
+        line: 0,
+        column: 0,
+        key: String::new(),
+        message: format!("cannot read: {e}"),
+    })?;
+    parse_any(path, &text)
+}
+
+/// The keys that decide an experiment's level.
+#[derive(Deserialize)]
+struct LevelProbe {
+    level: Option<Spanned<String>>,
+    kick3d: Option<toml::Value>,
+    sweep: Option<Vec<AxisProbe>>,
+}
+
+#[derive(Deserialize)]
+struct AxisProbe {
+    parameter: Option<toml::Value>,
+}
+
+/// Validate an experiment of either level. It is 3D ([`three_d`]) when it
+/// says `level = "3d"`, or without a `level` key when it has a `[kick3d]`
+/// table or sweeps a parameter of the 3D level; 1D ([`parse`]) otherwise.
+pub fn parse_any(path: &Path, text: &str) -> Result<AnyExperiment, ExperimentError> {
+    let file = path.display().to_string();
+    let at = Locator { file: &file, text };
+    let probe: Result<LevelProbe, _> = toml::from_str(text);
+    let three_d = match probe {
+        Ok(LevelProbe { level: Some(level), .. }) => match level.get_ref().as_str() {
+            "1d" => false,
+            "3d" => true,
+            other => return Err(at.error(level.span(), "level", format!("`{other}`: expected \"1d\" or \"3d\""))),
+        },
+        Ok(probe) => {
+            probe.kick3d.is_some()
+                || probe.sweep.iter().flatten().any(|a| {
+                    a.parameter.as_ref().and_then(|p| p.as_str()).and_then(parameters::find).is_some_and(|p| p.level == Level::Kick3d)
+                })
+        }
+        // The 1D reader names the problem.
+        Err(_) => false,
+    };
+    if three_d {
+        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("experiment").to_string();
+        three_d::parse(path, text, &at, stem).map(AnyExperiment::ThreeD)
+    } else {
+        parse(path, text).map(AnyExperiment::OneD)
+    }
+}
+
 /// The axis values, the span of the whole axis and the span of each value.
-fn axis_values(at: &Locator, axis: &RawAxis, key: &str) -> Result<(Vec<f64>, Span, Vec<Span>), ExperimentError> {
+fn axis_values<P>(at: &Locator, axis: &RawAxis<P>, key: &str) -> Result<(Vec<f64>, Span, Vec<Span>), ExperimentError> {
     let given = [axis.values.is_some(), axis.linear.is_some(), axis.log.is_some()];
     if given.iter().filter(|&&g| g).count() != 1 {
         return Err(at.error(axis.parameter.span(), key, "give exactly one of `values`, `linear` or `log`"));

@@ -209,6 +209,30 @@ pub fn write_column(group: &Group, path: &Path, column: &Column, values: &[f64])
     write_str_attr(&dataset, path, "units", &column.unit)
 }
 
+/// Write the shape of a grid sweep: `/grid/<axis>` coordinate datasets (with
+/// units) in axis order, the root attribute `grid_shape` (u64[axes]) and the
+/// string dataset `/grid/axes`. Rows are the grid's cells in C order (the last
+/// axis varies fastest), so `values.reshape(grid_shape)` restores the grid.
+pub fn write_grid(file: &File, path: &Path, axes: &[(Column, &[f64])]) -> Result<(), H5Error> {
+    let group = group_at(file, "grid", path)?;
+    for (column, values) in axes {
+        write_column(&group, path, column, values)?;
+    }
+    let names: Vec<String> = axes.iter().map(|(c, _)| c.name.clone()).collect();
+    write_strings(&group, path, "axes", &names)?;
+    let shape: Vec<u64> = axes.iter().map(|(_, v)| v.len() as u64).collect();
+    file.new_attr::<u64>()
+        .shape(shape.len())
+        .create("grid_shape")
+        .and_then(|a| a.write(&shape))
+        .map_err(h5err(path))
+}
+
+/// Read the root attribute `grid_shape` (see [`write_grid`]); `None` for a file without one.
+pub fn read_grid_shape(file: &File) -> Option<Vec<u64>> {
+    file.attr("grid_shape").ok()?.read_raw::<u64>().ok()
+}
+
 /// Write a complete 1D string dataset.
 pub fn write_strings(group: &Group, path: &Path, name: &str, values: &[String]) -> Result<(), H5Error> {
     let values = values.iter().map(|v| varlen(path, v)).collect::<Result<Vec<_>, _>>()?;

@@ -140,10 +140,12 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
         })
         .unwrap_or_default();
     three_d.sort();
-    if !three_d.is_empty() {
-        let names: Vec<String> = three_d.iter().map(|p| p.display().to_string()).collect();
-        say(log, &format!("\n# kick run3d {} --out {out}\n", names.join(" ")));
-        say(log, &crate::three_d::run3d(&three_d, &args.out)?.text());
+    for file in &three_d {
+        say(log, &format!("\n# kick run {} --out {out}\n", file.display()));
+        let run = crate::run::run_file(file, &args.out)?;
+        say(log, &run.text());
+        let drawn = crate::three_d::figures(&run.summary.path, &figures).map_err(|e| e.to_string())?;
+        say(log, &format!("figures: {} files in {}\n", drawn.len(), figures.display()));
     }
     let leg_command = format!("kick leg --knee 30 --ankle 60 --sweep-out {out}");
     say(log, &format!("\n# {leg_command}\n"));

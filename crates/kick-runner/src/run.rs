@@ -382,11 +382,15 @@ pub struct RunReport {
     pub seconds: f64,
 }
 
-/// Load and run one experiment file into `out/NAME.h5`.
+/// Load and run one experiment file of either level into `out/NAME.h5`.
 pub fn run_file(file: &Path, out: &Path) -> Result<RunReport, String> {
-    let experiment = crate::experiment::load(file).map_err(|e| e.to_string())?;
+    let experiment = crate::experiment::load_any(file).map_err(|e| e.to_string())?;
     let started = std::time::Instant::now();
-    let summary = run(&experiment, out, true).map_err(|e| e.to_string())?;
+    let summary = match &experiment {
+        crate::experiment::AnyExperiment::OneD(e) => run(e, out, true),
+        crate::experiment::AnyExperiment::ThreeD(e) => crate::three_d::run(e, out),
+    }
+    .map_err(|e| e.to_string())?;
     Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
 }
 

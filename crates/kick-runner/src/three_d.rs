@@ -1,106 +1,167 @@
-//! `kick run3d FILE.toml... [--out DIR]`: 3D sweeps (kick-3d) into
-//! `DIR/3d_NAME.h5` through kick-runner's writer, and their figures into
-//! `DIR/figures/` (spin and speed against the swept axis; for the offset
-//! sweep also the speed–spin trade-off).
+//! 3D experiments (`kick run`, see [`crate::experiment::three_d`]) into
+//! `DIR/NAME.h5`, and the 3D figures drawn back from those files.
+//!
+//! The file is a sweep table ([`crate::h5`]): one row per grid cell (C
+//! order), `/parameters/<axis>` the swept values per row, `/outcomes/<name>`
+//! every column of [`kick_3d::OBSERVABLES_3D`] (vectors as `_x`, `_y`, `_z`),
+//! plus `/grid` (axis coordinates, `grid_shape` attribute, see
+//! [`crate::h5::write_grid`]), `/fixed/<name>` every parameter not swept
+//! (defaults filled in; vectors as three numbers, switches as 0 or 1) with
+//! its unit, and the root attribute `level = "3d"`.
 
-use crate::figures::{save_grid, Panel, Series};
-use crate::h5::{law_settings, Column, OutcomeSet, SweepWriter};
-use crate::printable::Printable;
-use crate::Provenance;
-use kick_3d::sweep::{Axis, Experiment3d, SweepPoint, COLUMNS};
+use crate::experiment::Experiment3d;
+use crate::figures::{save_grid, FigureError, Panel, Series};
+use crate::h5::{law_settings, write_column, write_grid, write_str_attr, Column, H5Error, OutcomeSet, SweepData, SweepWriter, CHUNK_ROWS};
+use crate::provenance::Provenance;
+use crate::run::{RunError, RunSummary};
+use kick_3d::{Kick3dError, Outcome3d, OBSERVABLES_3D};
+use kick_core::parameters::Value;
 use plotters::prelude::RGBColor;
-use serde::Serialize;
-use std::fmt::Write as _;
+use rayon::prelude::*;
 use std::path::{Path, PathBuf};
+
+/// The outcome set of a 3D run: the solver, its law and the 3D columns.
+fn outcome_set(experiment: &Experiment3d) -> OutcomeSet {
+    OutcomeSet {
+        solver: format!("{}-3d", experiment.solver_name),
+        settings: law_settings(&experiment.grid.scenario, []),
+        columns: OBSERVABLES_3D.iter().map(|(n, u)| Column::new(n, u)).collect(),
+    }
+}
+
+/// Run a 3D experiment into `out_dir/NAME.h5`: cells solved in parallel in
+/// chunks, written in grid order (the file does not depend on the threads).
+pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunError> {
+    let grid = &experiment.grid;
+    let path = out_dir.join(format!("{}.h5", experiment.name));
+    std::fs::create_dir_all(out_dir)
+        .map_err(|e| H5Error::from(crate::output::OutputError::Io { path: out_dir.to_path_buf(), message: e.to_string() }))?;
+    let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
+    let axes: Vec<Column> = grid.axes.iter().map(|a| Column::new(a.parameter.name, a.parameter.unit)).collect();
+    let total = grid.len();
+    let mut writer = SweepWriter::create(&path, &provenance, &axes, &[outcome_set(experiment)], total)?;
+    let file = writer.file().clone();
+    write_str_attr(&file, &path, "description", &experiment.description)?;
+    write_str_attr(&file, &path, "level", "3d")?;
+    let coordinates: Vec<(Column, &[f64])> = axes.iter().cloned().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
+    write_grid(&file, &path, &coordinates)?;
+    // Every parameter not swept, as the first cell was built with it.
+    let fixed = file.create_group("fixed").map_err(|e| H5Error::Hdf5 { path: path.clone(), message: e.to_string() })?;
+    let first = grid.kick(0).map_err(|e| H5Error::Layout { path: path.clone(), message: e.to_string() })?;
+    for (def, value) in first.parameter_values() {
+        if grid.axes.iter().any(|a| a.parameter.name == def.name) {
+            continue;
+        }
+        let values = match value {
+            Value::Number(x) => vec![x],
+            Value::Vector(v) => v.to_vec(),
+            Value::Switch(on) => vec![f64::from(u8::from(on))],
+        };
+        write_column(&fixed, &path, &Column::new(def.name, def.unit), &values)?;
+    }
+
+    let solve = |i: u64| -> Result<Outcome3d, Kick3dError> { experiment.solver.solve(&grid.kick(i)?) };
+    let mut start = 0;
+    let mut outcomes = Vec::with_capacity(CHUNK_ROWS);
+    while start < total {
+        let end = (start + CHUNK_ROWS as u64).min(total);
+        (start as usize..end as usize).into_par_iter().map(|i| solve(i as u64)).collect_into_vec(&mut outcomes);
+        for (i, outcome) in (start..end).zip(&outcomes) {
+            writer.push_parameters(&grid.coordinates(i))?;
+            match outcome {
+                Ok(o) => writer.push_outcome(0, Ok(&o.observable_values()))?,
+                Err(e) => writer.push_outcome(0, Err(&e.to_string()))?,
+            }
+        }
+        start = end;
+    }
+    let failures = vec![(outcome_set(experiment).solver, writer.failure_counts()[0])];
+    let path = writer.finish()?;
+    Ok(RunSummary { path, scenarios: total, failures })
+}
 
 const BLUE: RGBColor = RGBColor(31, 119, 180);
 const RED: RGBColor = RGBColor(214, 39, 40);
 
-fn write_h5(path: &Path, file: &Path, text: &str, e: &Experiment3d, points: &[SweepPoint]) -> Result<PathBuf, String> {
-    let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("3d");
-    let provenance = Provenance::now(name, &file.display().to_string(), text);
-    let law = e.base()?;
-    let set = OutcomeSet {
-        solver: "accurate-3d".into(),
-        settings: law_settings(&law, [("relative_tolerance", 1e-12), ("absolute_tolerance", 1e-15)]),
-        columns: COLUMNS.iter().map(|(n, u)| Column::new(n, u)).collect(),
-    };
-    let mut writer = SweepWriter::create(path, &provenance, &[Column::new(e.axis.name(), e.axis.unit())], &[set], points.len() as u64)
-        .map_err(|err| err.to_string())?;
-    for p in points {
-        writer.push_parameters(&[p.value]).map_err(|err| err.to_string())?;
-        writer.push_outcome(0, Ok(&p.columns())).map_err(|err| err.to_string())?;
+/// Figures of a one-axis 3D result file `h5` into `dir/NAME.{png,svg}`:
+/// speed and spin against the axis; for an offset sweep also the speed–spin
+/// trade-off. Files of other shapes draw nothing.
+pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let data = SweepData::read(h5)?;
+    if data.parameters.len() != 1 {
+        return Ok(Vec::new());
     }
-    writer.finish().map_err(|err| err.to_string())
-}
-
-fn figures(dir: &Path, name: &str, e: &Experiment3d, points: &[SweepPoint]) -> Result<Vec<PathBuf>, String> {
-    let x: Vec<f64> = points.iter().map(|p| p.value).collect();
-    let speed: Vec<f64> = points.iter().map(|p| p.speed).collect();
-    let rpm: Vec<f64> = points.iter().map(|p| p.spin_rpm).collect();
-    let x_label = format!("{} ({})", e.axis.name().replace('_', " "), e.axis.unit());
+    let (axis, x) = &data.parameters[0];
+    let set = &data.sets[0];
+    let column = |name: &str| set.column(name).map(<[f64]>::to_vec).ok_or_else(|| FigureError::Draw { figure: h5.display().to_string(), message: format!("no column {name}") });
+    let (speed, rpm) = (column("speed")?, column("spin_rpm")?);
+    let x_label = format!("{} ({})", axis.name.replace('_', " "), axis.unit);
     let mut panels = vec![
-        Panel::new("ball speed", &x_label, "speed (m/s)", vec![Series::line("accurate-3d", BLUE, &x, &speed).with_markers()]),
-        Panel::new("ball spin", &x_label, "spin (rpm)", vec![Series::line("accurate-3d", RED, &x, &rpm).with_markers()]),
+        Panel::new("ball speed", &x_label, "speed (m/s)", vec![Series::line(&set.solver, BLUE, x, &speed).with_markers()]),
+        Panel::new("ball spin", &x_label, "spin (rpm)", vec![Series::line(&set.solver, RED, x, &rpm).with_markers()]),
     ];
     let mut layout = (1, 2);
-    if e.axis == kick_3d::sweep::Axis::Offset {
-        panels.push(Panel::new("speed-spin trade-off (offset sweep)", "spin (rpm)", "speed (m/s)", vec![Series::line("accurate-3d", BLUE, &rpm, &speed).with_markers()]));
+    if axis.name == "offset" {
+        panels.push(Panel::new("speed-spin trade-off (offset sweep)", "spin (rpm)", "speed (m/s)", vec![Series::line(&set.solver, BLUE, &rpm, &speed).with_markers()]));
         layout = (1, 3);
     }
-    save_grid(dir, name, &e.description, layout, &panels).map_err(|err| err.to_string())
+    let name = h5.file_stem().and_then(|s| s.to_str()).unwrap_or("3d");
+    let title = hdf5::File::open(h5).ok().and_then(|f| crate::h5::read_str_attr(&f, "description")).unwrap_or_default();
+    save_grid(dir, name, &title, layout, &panels)
 }
 
-/// One 3D experiment file run: its points, result file and figures.
-#[derive(Debug, Clone, Serialize)]
-pub struct Run3d {
-    pub file: PathBuf,
-    pub axis: Axis,
-    pub points: Vec<SweepPoint>,
-    pub h5: PathBuf,
-    pub figures: Vec<PathBuf>,
-    pub seconds: f64,
-}
+#[cfg(test)]
+mod tests {
+    use crate::experiment::{parse_any, AnyExperiment};
+    use crate::h5::{read_grid_shape, SweepData};
+    use kick_3d::{Accurate3d, KickSpec};
+    use kick_core::parameters::{SetParameter, Value};
+    use std::path::Path;
 
-/// Every 3D experiment file run, in order.
-#[derive(Debug, Clone, Serialize)]
-#[serde(transparent)]
-pub struct Run3dReport {
-    pub runs: Vec<Run3d>,
-}
-
-/// Run each 3D experiment file into `out/3d_NAME.h5` and draw its figures
-/// into `out/figures/`.
-pub fn run3d(files: &[PathBuf], out: &Path) -> Result<Run3dReport, String> {
-    let mut runs = Vec::new();
-    for file in files {
-        let text = std::fs::read_to_string(file).map_err(|e| format!("{}: {e}", file.display()))?;
-        let e = Experiment3d::parse(&text).map_err(|err| format!("{}: {err}", file.display()))?;
-        let stem = file.file_stem().and_then(|s| s.to_str()).ok_or_else(|| format!("{}: no file name", file.display()))?;
-        let name = format!("3d_{stem}");
-        let started = std::time::Instant::now();
-        let points = e.run().map_err(|err| format!("{}: {err}", file.display()))?;
-        std::fs::create_dir_all(out).map_err(|err| format!("{}: {err}", out.display()))?;
-        let h5 = write_h5(&out.join(format!("{name}.h5")), file, &text, &e, &points)?;
-        let figures = figures(&out.join("figures"), &name, &e, &points)?;
-        runs.push(Run3d { file: file.clone(), axis: e.axis, points, h5, figures, seconds: started.elapsed().as_secs_f64() });
-    }
-    Ok(Run3dReport { runs })
-}
-
-impl Printable for Run3dReport {
-    fn text(&self) -> String {
-        let mut w = String::new();
-        for r in &self.runs {
-            let _ = writeln!(w, "{}: {} points -> {} and {} figures ({:.2} s)", r.file.display(), r.points.len(), r.h5.display(), r.figures.len(), r.seconds);
-            for p in &r.points {
-                let _ = writeln!(
-                    w,
-                    "  {} = {:<8.4} speed {:>8.4} m/s  spin {:>8.2} rpm  launch angle {:>6.2} deg  azimuth {:>7.2} deg  slip {:.3e} s",
-                    r.axis.name(), p.value, p.speed, p.spin_rpm, p.launch_angle, p.launch_azimuth, p.slip_time
-                );
+    /// A 2-axis grid over a 1D and a 3D parameter: shape kept, fixed
+    /// parameters stored, each cell equal to a kick built by name and solved alone.
+    #[test]
+    fn a_two_axis_3d_grid_keeps_its_shape_and_equals_single_kicks() {
+        let text = "description = \"t\"\n[base]\nfoot_mass = 2.0\n[kick3d]\nfriction = 0.7\n\
+                    [[sweep]]\nparameter = \"foot_speed\"\nvalues = [18.0, 24.0]\n\
+                    [[sweep]]\nparameter = \"offset\"\nlinear = { from = 0.0, to = 0.06, count = 3 }\n";
+        let AnyExperiment::ThreeD(e) = parse_any(Path::new("grid.toml"), text).unwrap() else { panic!("read as 1D") };
+        let dir = std::env::temp_dir().join(format!("kick-grid3d-{}", std::process::id()));
+        let summary = super::run(&e, &dir).unwrap();
+        let data = SweepData::read(&summary.path).unwrap();
+        let file = hdf5::File::open(&summary.path).unwrap();
+        assert_eq!(read_grid_shape(&file), Some(vec![2, 3]));
+        assert_eq!(file.dataset("fixed/friction").unwrap().read_raw::<f64>().unwrap(), vec![0.7]);
+        assert_eq!(file.dataset("fixed/foot_mass").unwrap().read_raw::<f64>().unwrap(), vec![2.0]);
+        assert_eq!(file.dataset("fixed/foot_half_extents").unwrap().read_raw::<f64>().unwrap().len(), 3);
+        assert!(!file.link_exists("fixed/offset"));
+        let set = &data.sets[0];
+        let mut row = 0;
+        for speed in [18.0, 24.0] {
+            for offset in [0.0, 0.03, 0.06] {
+                let mut spec = KickSpec::default();
+                for (name, v) in [("foot_mass", 2.0), ("friction", 0.7), ("foot_speed", speed), ("offset", offset)] {
+                    spec.set_named(name, Value::Number(v)).unwrap();
+                }
+                let o = Accurate3d::default().solve(&spec.build().unwrap()).unwrap();
+                assert_eq!(data.parameters[0].1[row], speed);
+                assert_eq!(data.parameters[1].1[row], offset);
+                for (k, (name, _)) in kick_3d::OBSERVABLES_3D.iter().enumerate() {
+                    assert_eq!(set.column(name).unwrap()[row], o.observable_values()[k], "{name} at row {row}");
+                }
+                row += 1;
             }
         }
-        w
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn bad_3d_keys_are_refused_with_their_line() {
+        let e = parse_any(Path::new("x.toml"), "level = \"3d\"\n[kick3d]\nfriction = 0.5\nofset = 0.02\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (4, "ofset"), "{e}");
+        let e = parse_any(Path::new("x.toml"), "[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.2]\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (3, "sweep.offset"), "{e}");
+        let e = parse_any(Path::new("x.toml"), "[kick3d]\noffset = 0.5\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (2, "kick3d.offset"), "{e}");
     }
 }

@@ -93,15 +93,14 @@ fn simulate3d_refuses_bad_input_by_name() {
 }
 
 #[test]
-fn run3d_writes_hdf5_and_figures() {
+fn run3d_is_run_on_the_unified_format() {
     let dir = std::env::temp_dir().join(format!("kick3d-run3d-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("tiny.toml");
-    std::fs::write(&file, "description = \"tiny\"\naxis = \"offset\"\nvalues = { from = 0.0, to = 0.04, count = 3 }\n").unwrap();
+    std::fs::write(&file, "name = \"3d_tiny\"\ndescription = \"tiny\"\n[[sweep]]\nparameter = \"offset\"\nlinear = { from = 0.0, to = 0.04, count = 3 }\n").unwrap();
     let out = kick(&["run3d", file.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(dir.join("3d_tiny.h5").exists());
-    assert!(dir.join("figures/3d_tiny.png").exists() && dir.join("figures/3d_tiny.svg").exists());
     let data = kick_runner::h5::SweepData::read(&dir.join("3d_tiny.h5")).unwrap();
     assert_eq!(data.parameter("offset").unwrap(), &[0.0, 0.02, 0.04]);
     std::fs::remove_dir_all(&dir).ok();
