@@ -84,8 +84,16 @@ pub fn write(measurements: &Path, out: &Path, page: &Path, notes: &Path) -> Resu
     let mut v = validate(measurements)?;
     let json_path = out.join("validation.json");
     crate::output::write(&json_path, crate::printable::json(&v)?).map_err(|e| e.to_string())?;
-    let from_page = |p: &Path| crate::reproduce::relative(page.parent().unwrap_or(Path::new(".")), p);
-    let text = v.markdown(&from_page(&json_path), &from_page(measurements), &from_page(notes));
+    let page_dir = page.parent().unwrap_or(Path::new("."));
+    // Inputs are read where they are, the page may be written into a scratch
+    // folder (`reproduce --check`): link them from the page's folder name, so
+    // both give the same bytes.
+    let input_from = if page_dir.is_absolute() { page_dir.file_name().map_or(Path::new("."), Path::new) } else { page_dir };
+    let text = v.markdown(
+        &crate::reproduce::relative(page_dir, &json_path),
+        &crate::reproduce::relative(input_from, measurements),
+        &crate::reproduce::relative(input_from, notes),
+    );
     crate::output::write(page, text).map_err(|e| e.to_string())?;
     v.written = vec![json_path, page.to_path_buf()];
     Ok(v)
