@@ -19,10 +19,10 @@ pub fn default_scene_dt() -> f64 {
 
 /// `kick simulate --format json` (without `--history`).
 pub fn simulate(spec: &ScenarioSpec, solver: &str, dt: f64) -> Result<Value, String> {
-    serde_json::to_value(kick_runner::simulate::simulate(spec, solver, dt, None)?).map_err(|e| e.to_string())
+    serde_json::to_value(kick_runner::simulate::simulate(spec, solver, dt, None, None)?).map_err(|e| e.to_string())
 }
 
 /// `kick simulate3d --format json`.
 pub fn simulate3d(spec: &KickSpec, solver: &str, dt: f64) -> Result<Value, String> {
-    serde_json::to_value(kick_runner::simulate::simulate3d(spec, solver, dt)?).map_err(|e| e.to_string())
+    serde_json::to_value(kick_runner::simulate::simulate3d(spec, solver, dt, None)?).map_err(|e| e.to_string())
 }
