@@ -37,7 +37,7 @@ def test_spin_curves_and_keywords_are_the_declared_ones():
     curl = kick.flight(speed=25.0, launch_angle=20.0, spin=(0.0, 0.0, 50.0))
     assert curl["landing_point"][1] > 0.5  # ω_z > 0 curves toward +y (declared doc)
     names = [p["name"] for p in kick.keywords("flight")]
-    assert names[:4] == ["speed", "launch_angle", "azimuth", "spin"]
+    assert names[:5] == ["speed", "launch_angle", "azimuth", "launch_velocity", "spin"]
     with pytest.raises(ValueError, match=r"unknown flight parameter `sped`: did you mean `speed`\?"):
         kick.flight(sped=20.0, launch_angle=20.0)
     with pytest.raises(ValueError, match="parameter `speed` is required"):

@@ -159,6 +159,7 @@ def flight(
     speed: float | None = ...,
     launch_angle: float | None = ...,
     azimuth: float | None = ...,
+    launch_velocity: tuple[float, float, float] | Sequence[float] | None = ...,
     spin: tuple[float, float, float] | Sequence[float] | None = ...,
     ball_mass: float | None = ...,
     ball_radius: float | None = ...,
