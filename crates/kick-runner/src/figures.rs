@@ -13,6 +13,9 @@ use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 use std::sync::Once;
 
+mod legend;
+pub mod text;
+
 static FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 const FAMILY: &str = "sans-serif";
 /// Pixel size of a PNG (and SVG) figure.
@@ -120,9 +123,13 @@ fn draw_err(figure: &str) -> impl Fn(String) -> FigureError + '_ {
     move |message| FigureError::Draw { figure: figure.to_string(), message }
 }
 
-/// Tick label of a log10 axis position: the value itself, 3 significant digits.
+/// Tick label of a log10 axis position: the value itself, 3 significant
+/// digits, at powers of ten only (the ticks between stay unlabelled).
 fn log_tick(v: f64) -> String {
-    let x = 10f64.powf(v);
+    if (v - v.round()).abs() > 1e-9 {
+        return String::new();
+    }
+    let x = 10f64.powf(v.round());
     if (0.01..10_000.0).contains(&x) {
         format!("{}", (x * 1000.0).round() / 1000.0)
     } else {
@@ -138,6 +145,62 @@ fn padded(min: f64, max: f64) -> (f64, f64) {
     (min - 0.05 * span, max + 0.05 * span)
 }
 
+/// A log axis' range (in decades) with room for the end markers.
+fn padded_log(min: f64, max: f64) -> (f64, f64) {
+    if !(min.is_finite() && max.is_finite()) {
+        return (0.0, 1.0);
+    }
+    let pad = 0.03 * (max - min).abs().max(0.1);
+    (min - pad, max + pad)
+}
+
+/// The layout every panel's axes share.
+fn chart_builder<'a, 'b, DB: DrawingBackend>(area: &'a DrawingArea<DB, Shift>, panel: &Panel) -> ChartBuilder<'a, 'b, DB> {
+    let mut builder = ChartBuilder::on(area);
+    builder.caption(&panel.title, (FAMILY, 22)).margin(12).x_label_area_size(48).y_label_area_size(78);
+    builder
+}
+
+/// The legend's top-left corner (pixels in the plot) and the top of the y
+/// range that leaves it free of data ([`legend`]), tried on a scratch bitmap
+/// of the panel's size with the panel's own layout.
+fn place_legend(
+    dims: (u32, u32),
+    panel: &Panel,
+    labels: &[&str],
+    x: (f64, f64),
+    y: (f64, f64),
+    tx: impl Fn(f64) -> f64,
+) -> Result<Option<((i32, i32), f64)>, String> {
+    let font: TextStyle = (FAMILY, 15).into_font().into();
+    let size = legend::box_size(labels, &font)?;
+    let mut scratch = vec![0u8; dims.0 as usize * dims.1 as usize * 3];
+    for headroom in legend::HEADROOM {
+        let top = y.1 + headroom * (y.1 - y.0);
+        let area = BitMapBackend::with_buffer(&mut scratch, dims).into_drawing_area();
+        let chart = chart_builder(&area, panel).build_cartesian_2d(x.0..x.1, y.0..top).map_err(|e| e.to_string())?;
+        let (xs, ys) = chart.plotting_area().get_pixel_range();
+        let curves: Vec<Vec<(i32, i32)>> = panel
+            .series
+            .iter()
+            .map(|s| {
+                s.points
+                    .iter()
+                    .map(|&(px, py)| {
+                        let (u, v) = chart.backend_coord(&(tx(px), py));
+                        (u - xs.start, v - ys.start)
+                    })
+                    .collect()
+            })
+            .collect();
+        let plot = (xs.end - xs.start, ys.end - ys.start);
+        if let Some(corner) = legend::free_position(&curves, size, plot, &panel.legend) {
+            return Ok(Some((corner, top)));
+        }
+    }
+    Ok(None)
+}
+
 fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Result<(), String> {
     let tx = |x: f64| if panel.log_x { x.log10() } else { x };
     let xs = panel.series.iter().flat_map(|s| s.points.iter().map(|p| tx(p.0)));
@@ -148,15 +211,17 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         y0 = y0.min(0.0);
         y1 = y1.max(0.0);
     }
-    let (x0, x1) = if panel.log_x { (x0, x1) } else { padded(x0, x1) };
-    let (y0, y1) = padded(y0, y1);
-    let mut chart = ChartBuilder::on(area)
-        .caption(&panel.title, (FAMILY, 22))
-        .margin(12)
-        .x_label_area_size(48)
-        .y_label_area_size(78)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|e| e.to_string())?;
+    let (x0, x1) = if panel.log_x { padded_log(x0, x1) } else { padded(x0, x1) };
+    let (y0, mut y1) = padded(y0, y1);
+    let labels: Vec<&str> = panel.series.iter().map(|s| s.label.as_str()).filter(|l| !l.is_empty()).collect();
+    let mut legend_at = panel.legend.clone();
+    if labels.len() > 1 {
+        if let Some(((x, y), top)) = place_legend(area.dim_in_pixel(), panel, &labels, (x0, x1), (y0, y1), tx)? {
+            legend_at = SeriesLabelPosition::Coordinate(x, y);
+            y1 = top;
+        }
+    }
+    let mut chart = chart_builder(area, panel).build_cartesian_2d(x0..x1, y0..y1).map_err(|e| e.to_string())?;
     let log_x = panel.log_x;
     let x_fmt = move |v: &f64| if log_x { log_tick(*v) } else { format!("{}", (v * 1e6).round() / 1e6) };
     // On a log axis, at most one label per decade, so labels land on powers of ten.
@@ -205,7 +270,7 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
             .label_font((FAMILY, 15))
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
-            .position(panel.legend.clone())
+            .position(legend_at)
             .draw()
             .map_err(|e| e.to_string())?;
     }
@@ -226,12 +291,18 @@ fn draw_grid<DB: DrawingBackend>(
     root.present().map_err(|e| e.to_string())
 }
 
+/// The PNG backend of every figure: [`SIZE`], text by [`text::TextBackend`].
+fn png_backend(path: &Path) -> Result<text::TextBackend<'_>, FigureError> {
+    text::TextBackend::new(BitMapBackend::new(path, SIZE), FONT)
+        .map_err(|_| FigureError::Draw { figure: path.display().to_string(), message: "bundled font DejaVuSans.ttf is invalid".into() })
+}
+
 /// Write `name.png` and `name.svg` of a grid of panels.
 pub fn save_grid(dir: &Path, name: &str, title: &str, layout: (usize, usize), panels: &[Panel]) -> Result<Vec<PathBuf>, FigureError> {
     register_font()?;
     let png = Staged::begin(&dir.join(format!("{name}.png")))?;
     let svg = Staged::begin(&dir.join(format!("{name}.svg")))?;
-    draw_grid(BitMapBackend::new(png.temporary(), SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
+    draw_grid(png_backend(png.temporary())?.into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
     draw_grid(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
     Ok(vec![png.commit()?, svg.commit()?])
 }
@@ -526,6 +597,15 @@ pub fn figure6(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> 
     save_grid(out, "figure6", "Figure 6: initial ball velocity (foot speed 22 m/s)", (1, 2), &panels)
 }
 
+/// Bar fills of Figure 7: dark, middle and light, so the groups stay apart
+/// in greyscale print (luminance 0.15, 0.47, 0.85), each with a black outline.
+pub const BAR_COLORS: [RGBColor; 3] = [RGBColor(0, 45, 110), RGBColor(213, 94, 0), RGBColor(200, 220, 240)];
+
+/// Relative luminance of a colour as greyscale printing sees it (Rec. 601 weights).
+pub fn luminance(c: RGBColor) -> f64 {
+    (0.299 * c.0 as f64 + 0.587 * c.1 as f64 + 0.114 * c.2 as f64) / 255.0
+}
+
 fn draw_bars<DB: DrawingBackend>(
     root: DrawingArea<DB, Shift>,
     names: &[String],
@@ -565,17 +645,25 @@ fn draw_bars<DB: DrawingBackend>(
     let g = groups.len() as f64;
     let height = 0.8 / g;
     for (k, (label, values)) in groups.iter().enumerate() {
-        let c = color(k);
-        let bars = values.iter().enumerate().filter(|(_, v)| v.is_finite()).map(move |(i, &v)| {
+        let c = BAR_COLORS[k % BAR_COLORS.len()];
+        let corners = move |(i, &v): (usize, &f64)| {
             // Row 0 at the top.
             let top = n as f64 - i as f64 - 0.1 - k as f64 * height;
-            Rectangle::new([(0.0, top - height), (v, top)], c.filled())
-        });
+            [(0.0, top - height), (v, top)]
+        };
+        let finite = || values.iter().enumerate().filter(|(_, v)| v.is_finite());
         chart
-            .draw_series(bars)
+            .draw_series(finite().map(corners).map(|r| Rectangle::new(r, c.filled())))
             .map_err(|e| e.to_string())?
             .label(label.as_str())
-            .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 16, y + 6)], c.filled()));
+            .legend(move |(x, y)| {
+                EmptyElement::at((x, y))
+                    + Rectangle::new([(0, -6), (16, 6)], c.filled())
+                    + Rectangle::new([(0, -6), (16, 6)], BLACK.stroke_width(1))
+            });
+        chart
+            .draw_series(finite().map(corners).map(|r| Rectangle::new(r, BLACK.stroke_width(1))))
+            .map_err(|e| e.to_string())?;
     }
     chart
         .configure_series_labels()
@@ -606,7 +694,7 @@ pub fn figure7(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> 
     }
     let png = Staged::begin(&out.join("figure7.png"))?;
     let svg = Staged::begin(&out.join("figure7.svg"))?;
-    draw_bars(BitMapBackend::new(png.temporary(), SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
+    draw_bars(png_backend(png.temporary())?.into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
     draw_bars(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
     Ok(vec![png.commit()?, svg.commit()?])
 }
@@ -632,4 +720,57 @@ pub fn draw_all(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError>
         written.extend(draw(results, out)?);
     }
     Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn figure7_bars_differ_in_greyscale() {
+        for (i, a) in BAR_COLORS.iter().enumerate() {
+            for b in &BAR_COLORS[i + 1..] {
+                let gap = (luminance(*a) - luminance(*b)).abs();
+                assert!(gap >= 0.2, "{a:?} and {b:?} print {gap:.2} apart in grey");
+            }
+        }
+    }
+
+    /// Figure 4(c)'s shape: two curves rising into the upper right corner,
+    /// where the legend used to sit. The placement moves it to the next
+    /// position in order, the upper left, which the curves (at most 9 kN
+    /// below c = 400 N s/m) leave free, on the panel's own pixel layout.
+    #[test]
+    fn the_legend_leaves_the_curves_free() {
+        register_font().unwrap();
+        let c: Vec<f64> = (0..=50).map(|k| 20.0 * k as f64).collect();
+        let rise: Vec<f64> = c.iter().map(|c| 22.0 * c / 1000.0).collect();
+        let peak: Vec<f64> = c.iter().map(|&c| (22.0 * c / 1000.0).max(5.3 - c / 100.0)).collect();
+        let mut panel = Panel::new(
+            "(c) Peak force",
+            "damping c (N s/m)",
+            "force (kN)",
+            vec![Series::line("peak force", color(1), &c, &peak), Series::line("onset jump F(0+) = c V0", color(3), &c, &rise).dashed()],
+        );
+        panel.legend = SeriesLabelPosition::UpperRight;
+        let labels = ["peak force", "onset jump F(0+) = c V0"];
+        let dims = (SIZE.0 / 2, SIZE.1 / 2);
+        let ((x, y), top) = place_legend(dims, &panel, &labels, padded(0.0, 1000.0), padded(0.0, 22.0), |x| x).unwrap().unwrap();
+        assert_eq!(top, padded(0.0, 22.0).1, "no headroom needed: the upper left is free");
+        assert_eq!((x, y), (5, 5), "legend not at the upper left");
+    }
+
+    #[test]
+    fn log_ticks_are_labelled_at_powers_of_ten_only() {
+        assert_eq!(log_tick(1.0), "10");
+        assert_eq!(log_tick(2.0), "100");
+        assert_eq!(log_tick(1.5), "");
+        assert_eq!(log_tick(-3.0), "1.0e-3");
+    }
+
+    #[test]
+    fn log_axes_keep_their_end_markers_inside() {
+        let (lo, hi) = padded_log(0.5, 3.1);
+        assert!(lo < 0.5 - 0.05 && hi > 3.1 + 0.05, "{lo} {hi}");
+    }
 }

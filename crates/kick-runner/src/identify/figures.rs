@@ -19,9 +19,8 @@ pub fn laws(file: &Path, dir: &Path) -> Result<Vec<PathBuf>, String> {
             let (t, f) = data.pulse(law, row)?;
             let t: Vec<f64> = t.iter().map(|x| x * 1e3).collect();
             let f: Vec<f64> = f.iter().map(|x| x * 1e-3).collect();
-            // Legend once, on the first panel.
-            let label = if row == 0 { law.name() } else { "" };
-            let s = Series::line(label, COLORS[k % COLORS.len()], &t, &f);
+            // The legend goes once, on the peak-force panel, which has room for it.
+            let s = Series::line("", COLORS[k % COLORS.len()], &t, &f);
             series.push(if law == LawKind::PowerLaw { s } else { s.dashed() });
         }
         panels.push(Panel::new(name, "time (ms)", "force (kN)", series));
@@ -30,7 +29,8 @@ pub fn laws(file: &Path, dir: &Path) -> Result<Vec<PathBuf>, String> {
     let mut series = Vec::new();
     for (k, law) in LawKind::ALL.into_iter().enumerate() {
         let y: Vec<f64> = data.column(law, "peak_force")?.iter().map(|f| f * 1e-3).collect();
-        series.push(Series::line("", COLORS[k % COLORS.len()], &x, &y).with_markers());
+        let s = Series::line(law.name(), COLORS[k % COLORS.len()], &x, &y).with_markers();
+        series.push(if law == LawKind::PowerLaw { s } else { s.dashed() });
     }
     panels.push(Panel::new("Peak force per Table 2 row (1 = baseline … 8)", "Table 2 row", "peak force (kN)", series));
     save_grid(dir, "laws", "Contact laws on Table 2's scenarios (same restitution target as the paper's law)", (3, 3), &panels)
