@@ -18,7 +18,14 @@
 //! /histories/<row>/<name>  time histories of that row (when recorded)
 //! /solvers/<solver>/...  outcomes, failures and histories of every further solver
 //! /scenario_names        string[rows] (named scenarios only)
+//! /grid/<axis>           f64[n] the values of each axis of a grid experiment, attribute
+//!                        units; /grid/axes string[axes] their names in axis order; root
+//!                        attribute grid_shape u64[axes] (grids only, see [`write_grid`])
 //! ```
+//!
+//! Every dataset outside `/grid` (and a 3D file's `/fixed`) has one entry
+//! per row; a shard file ([`crate::shard`]) holds the whole experiment's
+//! `/grid` and its own rows.
 //!
 //! Results that are not one table (a fit report, misfit profiles) use
 //! [`ResultWriter`] and [`ResultFile`]: the same provenance, temporary name
@@ -207,6 +214,17 @@ pub fn write_column(group: &Group, path: &Path, column: &Column, values: &[f64])
         .create(column.name.as_str())
         .map_err(h5err(path))?;
     write_str_attr(&dataset, path, "units", &column.unit)
+}
+
+/// Write a complete 1D u64 dataset (row indices) with its unit.
+pub fn write_indices(group: &Group, path: &Path, name: &str, unit: &str, values: &[u64]) -> Result<(), H5Error> {
+    let dataset = group
+        .new_dataset_builder()
+        .obj_track_times(false)
+        .with_data(values)
+        .create(name)
+        .map_err(h5err(path))?;
+    write_str_attr(&dataset, path, "units", unit)
 }
 
 /// Write the shape of a grid sweep: `/grid/<axis>` coordinate datasets (with
@@ -547,19 +565,27 @@ impl SweepWriter {
     }
 }
 
-/// The staged file of `path` with the provenance at its root.
-fn create_file(path: &Path, provenance: &Provenance) -> Result<(File, Staged), H5Error> {
+/// A new empty HDF5 file for `path`, whole or not at all: open under its
+/// [`Staged`] temporary name (one writer per file), HDF5's object time stamps
+/// off so the same content is the same bytes. Finish with [`close_file`].
+pub fn create_staged(path: &Path) -> Result<(File, Staged), H5Error> {
     disable_file_locking();
     let staged = Staged::begin(path)?;
     let mut builder = File::with_options();
     builder.with_fcpl(|p| p.obj_track_times(false));
     let file = builder.create(staged.temporary()).map_err(h5err(path))?;
+    Ok((file, staged))
+}
+
+/// The staged file of `path` with the provenance at its root.
+fn create_file(path: &Path, provenance: &Provenance) -> Result<(File, Staged), H5Error> {
+    let (file, staged) = create_staged(path)?;
     write_provenance(&file, path, provenance)?;
     Ok((file, staged))
 }
 
-/// Close the temporary file and give it its final name.
-fn close_file(file: File, staged: Staged, path: &Path) -> Result<PathBuf, H5Error> {
+/// Close the temporary file of [`create_staged`] and give it its final name.
+pub fn close_file(file: File, staged: Staged, path: &Path) -> Result<PathBuf, H5Error> {
     file.close().map_err(h5err(path))?;
     Ok(staged.commit()?)
 }

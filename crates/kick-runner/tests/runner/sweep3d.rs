@@ -19,7 +19,7 @@ fn scratch(name: &str) -> PathBuf {
 fn settings(samples: u64, seed: u64, out: &Path) -> Sweep3dSettings {
     let mut fixed = KickSpec::default();
     fixed.scenario.law = Some(LawKind::PowerLaw);
-    Sweep3dSettings { samples, seed, out: out.to_path_buf(), fixed }
+    Sweep3dSettings { samples, seed, out: out.to_path_buf(), fixed, shard: None, threads: None }
 }
 
 /// Rows of a [rows] or [rows, 3] dataset as [x, y, z] (NaN-padded).
