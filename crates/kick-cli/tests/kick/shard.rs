@@ -77,3 +77,36 @@ fn the_slurm_example_run_locally_equals_an_unsharded_run() {
     assert!(!dir.join("again.h5").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The Slurm example with `SWEEP`: `kick sweep3d --shard I/N` per array task
+/// and the merge, run here, equal to one unsharded `kick sweep3d`.
+#[test]
+fn the_slurm_example_shards_a_sweep3d_locally() {
+    let dir = scratch("slurm-sweep");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let out = Command::new("bash")
+        .arg(root.join("experiments/slurm/submit.sh"))
+        .env("PATH", path_without_sbatch())
+        .env("SWEEP", "sweep3d --samples 30 --seed 2")
+        .env("NAME", "spin")
+        .env("OUT", dir.join("shards"))
+        .env("KICK", env!("CARGO_BIN_EXE_kick"))
+        .env("SHARDS", "3")
+        .env_remove("SLURM_CPUS_PER_TASK")
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("shard 1/3: samples 10..20") && stdout.contains("3 shards, 30 rows"), "{stdout}");
+
+    let whole = dir.join("whole/spin.h5");
+    let done = kick(&["sweep3d", "--samples", "30", "--seed", "2", "--out", whole.to_str().unwrap()]);
+    assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
+    let (merged, whole) = (kick_runner::ResultFile::open(&dir.join("shards/spin.h5")).unwrap(), kick_runner::ResultFile::open(&whole).unwrap());
+    for dataset in ["parameters/offset", "parameters/foot_inertia", "outcomes/spin", "outcomes/speed", "outcomes/energy/friction_loss"] {
+        let bits = |f: &kick_runner::ResultFile| f.values(dataset).unwrap().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&merged), bits(&whole), "{dataset}");
+    }
+    assert_eq!(merged.values("outcomes/spin").unwrap().len(), 90);
+    let _ = std::fs::remove_dir_all(&dir);
+}
