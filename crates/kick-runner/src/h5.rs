@@ -764,6 +764,9 @@ pub struct SweepData {
     pub names: Option<Vec<String>>,
     /// Outcome sets: first the root set, then `solvers/*`.
     pub sets: Vec<SetData>,
+    /// A grid experiment's axes (`/grid`, in axis order) with their values:
+    /// rows are the cells in C order; empty for other files.
+    pub grid: Vec<(Column, Vec<f64>)>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -774,10 +777,11 @@ pub struct SetData {
     pub status: Vec<u8>,
 }
 
-fn read_columns(group: &Group, path: &Path) -> Result<Vec<(Column, Vec<f64>)>, H5Error> {
+/// Every numeric dataset of `group` but those named in `skip`.
+fn read_columns(group: &Group, path: &Path, skip: &[&str]) -> Result<Vec<(Column, Vec<f64>)>, H5Error> {
     let mut out = Vec::new();
     for name in group.member_names().map_err(h5err(path))? {
-        if name == "status" {
+        if skip.contains(&name.as_str()) {
             continue;
         }
         let dataset = group.dataset(&name).map_err(h5err(path))?;
@@ -793,7 +797,7 @@ impl SweepData {
     pub fn read(path: &Path) -> Result<SweepData, H5Error> {
         disable_file_locking();
         let file = File::open(path).map_err(h5err(path))?;
-        let parameters = read_columns(&file.group("parameters").map_err(h5err(path))?, path)?;
+        let parameters = read_columns(&file.group("parameters").map_err(h5err(path))?, path, &[])?;
         let names = if file.link_exists("scenario_names") {
             let raw = file
                 .dataset("scenario_names")
@@ -822,11 +826,21 @@ impl SweepData {
             sets.push(SetData {
                 solver: read_str_attr(&group, "solver").unwrap_or_default(),
                 group: name,
-                columns: read_columns(&outcomes, path)?,
+                columns: read_columns(&outcomes, path, &["status"])?,
                 status,
             });
         }
-        Ok(SweepData { path: path.to_path_buf(), parameters, names, sets })
+        let mut grid = Vec::new();
+        if file.link_exists("grid") {
+            let group = file.group("grid").map_err(h5err(path))?;
+            let axes = group.dataset("axes").and_then(|d| d.read_raw::<VarLenUnicode>()).map_err(h5err(path))?;
+            let columns = read_columns(&group, path, &["axes"])?;
+            for axis in &axes {
+                let found = columns.iter().find(|(c, _)| c.name == axis.as_str());
+                grid.push(found.cloned().ok_or_else(|| layout(path, format!("grid axis `{axis}` has no /grid/{axis}")))?);
+            }
+        }
+        Ok(SweepData { path: path.to_path_buf(), parameters, names, sets, grid })
     }
 
     /// A parameter column by name.
@@ -849,6 +863,11 @@ impl SweepData {
     pub fn rows(&self) -> usize {
         self.parameters.first().map_or(0, |(_, v)| v.len())
     }
+
+    /// The grid's shape (one length per axis), for a grid experiment.
+    pub fn grid_shape(&self) -> Option<Vec<usize>> {
+        (!self.grid.is_empty()).then(|| self.grid.iter().map(|(_, v)| v.len()).collect())
+    }
 }
 
 impl SetData {
@@ -868,5 +887,5 @@ pub fn read_history(path: &Path, group: &str, row: usize) -> Result<Vec<(Column,
         format!("{group}/histories/{row:06}")
     };
     let g = file.group(&name).map_err(h5err(path))?;
-    read_columns(&g, path)
+    read_columns(&g, path, &[])
 }

@@ -363,6 +363,8 @@ fn a_1d_grid_keeps_its_shape() {
     let names: Vec<&str> = data.parameters.iter().map(|(c, _)| c.name.as_str()).collect();
     assert_eq!(names.len(), 8, "{names:?}");
     assert_eq!(data.rows(), 6);
+    assert_eq!(data.grid_shape(), Some(vec![3, 2]));
+    assert_eq!((data.grid[0].0.name.as_str(), data.grid[1].1.as_slice()), ("stiffness", [0.0, 120.0].as_slice()));
     // Named scenarios and single runs have no grid.
     let single = run(&dir, "single", "solver = \"accurate\"\n[base]\nfoot_mass = 2.0\n");
     assert_eq!(kick_runner::h5::read_grid_shape(&hdf5::File::open(&single).unwrap()), None);
