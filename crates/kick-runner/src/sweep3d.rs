@@ -8,6 +8,9 @@
 //! every other 3D parameter at its default. A parameter given on the command
 //! line is held there instead. Rows are pure functions of (seed, index) and
 //! are written in index order, so the data do not depend on the thread count.
+//! With `--shard I/N` only samples `floor(I*N_s/N) .. floor((I+1)*N_s/N)` are
+//! solved, into `NAME.shard-I-of-N.h5` (file rows from 0; see [`crate::shard`]
+//! for the merge).
 //!
 //! Layout (`layout = "sweep3d"`; every dataset has a `units` attribute):
 //!

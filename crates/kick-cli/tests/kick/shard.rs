@@ -110,3 +110,32 @@ fn the_slurm_example_shards_a_sweep3d_locally() {
     assert_eq!(merged.values("outcomes/spin").unwrap().len(), 90);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `kick run --shard I/N` of a 3D experiment and `kick merge`: the same
+/// table, grid and every cell as `kick run` of the whole grid.
+#[test]
+fn a_3d_experiment_runs_in_shards_and_merges() {
+    let dir = scratch("grid3d");
+    let file = dir.join("spin.toml");
+    std::fs::write(&file, "[kick3d]\nfriction = 0.5\n[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.02, 0.04, 0.06, 0.08]\n\
+                          [[sweep]]\nparameter = \"approach_angle\"\nvalues = [-10.0, 10.0]\n").unwrap();
+    let parts = dir.join("parts");
+    let mut names = Vec::new();
+    for given in ["0/2", "1/2"] {
+        let done = kick(&["run", file.to_str().unwrap(), "--out", parts.to_str().unwrap(), "--shard", given]);
+        assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
+        names.push(parts.join(format!("spin.shard-{}-of-2.h5", &given[..1])).to_str().unwrap().to_string());
+    }
+    let merged = dir.join("merged.h5");
+    let done = kick(&["merge", merged.to_str().unwrap(), &names[1], &names[0]]);
+    assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
+    assert!(String::from_utf8_lossy(&done.stdout).contains("2 shards, 10 rows"));
+    let whole = kick(&["run", file.to_str().unwrap(), "--out", dir.join("whole").to_str().unwrap()]);
+    assert!(whole.status.success(), "{}", String::from_utf8_lossy(&whole.stderr));
+    let mut merged = kick_runner::SweepData::read(&merged).unwrap();
+    let whole = kick_runner::SweepData::read(&dir.join("whole/spin.h5")).unwrap();
+    assert_eq!(merged.grid_shape(), Some(vec![5, 2]));
+    merged.path = whole.path.clone();
+    assert_eq!(merged, whole);
+    let _ = std::fs::remove_dir_all(&dir);
+}
