@@ -2,6 +2,8 @@
 # Submit EXPERIMENT as SHARDS Slurm array tasks and a merge job that runs
 # once they all succeeded:
 #   SHARDS=8 EXPERIMENT=experiments/large/sweep-1e6.toml bash experiments/slurm/submit.sh
+# or a random sweep (its command without --out/--shard; NAME names the file):
+#   SHARDS=8 SWEEP="sweep3d --samples 1000000 --seed 1" NAME=spin bash experiments/slurm/submit.sh
 # Without Slurm (no `sbatch`), the same scripts run here one after another.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -10,6 +12,8 @@ export EXPERIMENT=${EXPERIMENT:-experiments/large/sweep-1e6.toml}
 export OUT=${OUT:-results/shards}
 export KICK=${KICK:-kick}
 export SHARDS=${SHARDS:-4}
+export SWEEP=${SWEEP:-}
+export NAME=${NAME:-sweep}
 DIR=experiments/slurm
 
 if command -v sbatch >/dev/null; then

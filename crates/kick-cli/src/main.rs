@@ -44,7 +44,7 @@ enum Command {
     /// Run one experiment file, 1D or 3D (experiments/*.toml, experiments/3d/*.toml) into DIR/NAME.h5, or one shard of it.
     #[command(alias = "run3d")]
     Run(Run),
-    /// Join shard files of one experiment (`kick run --shard`) into the file an unsharded run writes.
+    /// Join shard files of one experiment or sweep (`--shard` of run, sweep, sweep3d) into the file an unsharded run writes.
     Merge(Merge),
     /// Work–precision of every 1D solver, cost ratios and sweep throughput (HDF5 + figure).
     Bench(Bench),
@@ -339,6 +339,10 @@ struct Sweep {
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
+    /// Solve only shard I of N of the samples (numbered from 0, like Slurm array
+    /// tasks) into NAME.shard-I-of-N.h5 beside --out; join them with `kick merge`
+    #[arg(long, value_name = "I/N")]
+    shard: Option<String>,
     /// A 1D parameter given is held at that value instead of drawn; --law
     /// and --restitution set the contact law of every scenario
     #[command(flatten)]
@@ -359,6 +363,10 @@ struct Sweep3d {
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
+    /// Solve only shard I of N of the kicks (numbered from 0, like Slurm array
+    /// tasks) into NAME.shard-I-of-N.h5 beside --out; join them with `kick merge`
+    #[arg(long, value_name = "I/N")]
+    shard: Option<String>,
     /// A 1D or 3D parameter given is held at that value instead of drawn;
     /// --law and --restitution set the normal contact law of every kick
     #[command(flatten)]
@@ -489,14 +497,21 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(Format::Text, &report)
         }
         Command::Sweep(a) => {
-            set_threads(a.threads)?;
-            let settings =
-                sweep::SweepSettings { samples: a.samples, seed: a.seed, solver: a.solver, dt: a.dt, out: a.out, fixed: a.fixed.spec() };
+            let settings = sweep::SweepSettings {
+                samples: a.samples,
+                seed: a.seed,
+                solver: a.solver,
+                dt: a.dt,
+                out: a.out,
+                fixed: a.fixed.spec(),
+                shard: a.shard,
+                threads: a.threads,
+            };
             out.print(Format::Text, &sweep::sweep(&settings)?)
         }
         Command::Sweep3d(a) => {
-            set_threads(a.threads)?;
-            let settings = sweep3d::Sweep3dSettings { samples: a.samples, seed: a.seed, out: a.out, fixed: a.fixed.spec() };
+            let settings =
+                sweep3d::Sweep3dSettings { samples: a.samples, seed: a.seed, out: a.out, fixed: a.fixed.spec(), shard: a.shard, threads: a.threads };
             out.print(Format::Text, &sweep3d::sweep3d(&settings)?)
         }
         Command::Reproduce(a) => {

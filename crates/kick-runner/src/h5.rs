@@ -18,7 +18,14 @@
 //! /histories/<row>/<name>  time histories of that row (when recorded)
 //! /solvers/<solver>/...  outcomes, failures and histories of every further solver
 //! /scenario_names        string[rows] (named scenarios only)
+//! /grid/<axis>           f64[n] the values of each axis of a grid experiment, attribute
+//!                        units; /grid/axes string[axes] their names in axis order; root
+//!                        attribute grid_shape u64[axes] (grids only, see [`write_grid`])
 //! ```
+//!
+//! Every dataset outside `/grid` (and a 3D file's `/fixed`) has one entry
+//! per row; a shard file ([`crate::shard`]) holds the whole experiment's
+//! `/grid` and its own rows.
 //!
 //! Results that are not one table (a fit report, misfit profiles) use
 //! [`ResultWriter`] and [`ResultFile`]: the same provenance, temporary name
@@ -207,6 +214,17 @@ pub fn write_column(group: &Group, path: &Path, column: &Column, values: &[f64])
         .create(column.name.as_str())
         .map_err(h5err(path))?;
     write_str_attr(&dataset, path, "units", &column.unit)
+}
+
+/// Write a complete 1D u64 dataset (row indices) with its unit.
+pub fn write_indices(group: &Group, path: &Path, name: &str, unit: &str, values: &[u64]) -> Result<(), H5Error> {
+    let dataset = group
+        .new_dataset_builder()
+        .obj_track_times(false)
+        .with_data(values)
+        .create(name)
+        .map_err(h5err(path))?;
+    write_str_attr(&dataset, path, "units", unit)
 }
 
 /// Write the shape of a grid sweep: `/grid/<axis>` coordinate datasets (with
@@ -547,19 +565,27 @@ impl SweepWriter {
     }
 }
 
-/// The staged file of `path` with the provenance at its root.
-fn create_file(path: &Path, provenance: &Provenance) -> Result<(File, Staged), H5Error> {
+/// A new empty HDF5 file for `path`, whole or not at all: open under its
+/// [`Staged`] temporary name (one writer per file), HDF5's object time stamps
+/// off so the same content is the same bytes. Finish with [`close_file`].
+pub fn create_staged(path: &Path) -> Result<(File, Staged), H5Error> {
     disable_file_locking();
     let staged = Staged::begin(path)?;
     let mut builder = File::with_options();
     builder.with_fcpl(|p| p.obj_track_times(false));
     let file = builder.create(staged.temporary()).map_err(h5err(path))?;
+    Ok((file, staged))
+}
+
+/// The staged file of `path` with the provenance at its root.
+fn create_file(path: &Path, provenance: &Provenance) -> Result<(File, Staged), H5Error> {
+    let (file, staged) = create_staged(path)?;
     write_provenance(&file, path, provenance)?;
     Ok((file, staged))
 }
 
-/// Close the temporary file and give it its final name.
-fn close_file(file: File, staged: Staged, path: &Path) -> Result<PathBuf, H5Error> {
+/// Close the temporary file of [`create_staged`] and give it its final name.
+pub fn close_file(file: File, staged: Staged, path: &Path) -> Result<PathBuf, H5Error> {
     file.close().map_err(h5err(path))?;
     Ok(staged.commit()?)
 }
@@ -738,6 +764,9 @@ pub struct SweepData {
     pub names: Option<Vec<String>>,
     /// Outcome sets: first the root set, then `solvers/*`.
     pub sets: Vec<SetData>,
+    /// A grid experiment's axes (`/grid`, in axis order) with their values:
+    /// rows are the cells in C order; empty for other files.
+    pub grid: Vec<(Column, Vec<f64>)>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -748,10 +777,11 @@ pub struct SetData {
     pub status: Vec<u8>,
 }
 
-fn read_columns(group: &Group, path: &Path) -> Result<Vec<(Column, Vec<f64>)>, H5Error> {
+/// Every numeric dataset of `group` but those named in `skip`.
+fn read_columns(group: &Group, path: &Path, skip: &[&str]) -> Result<Vec<(Column, Vec<f64>)>, H5Error> {
     let mut out = Vec::new();
     for name in group.member_names().map_err(h5err(path))? {
-        if name == "status" {
+        if skip.contains(&name.as_str()) {
             continue;
         }
         let dataset = group.dataset(&name).map_err(h5err(path))?;
@@ -767,7 +797,7 @@ impl SweepData {
     pub fn read(path: &Path) -> Result<SweepData, H5Error> {
         disable_file_locking();
         let file = File::open(path).map_err(h5err(path))?;
-        let parameters = read_columns(&file.group("parameters").map_err(h5err(path))?, path)?;
+        let parameters = read_columns(&file.group("parameters").map_err(h5err(path))?, path, &[])?;
         let names = if file.link_exists("scenario_names") {
             let raw = file
                 .dataset("scenario_names")
@@ -796,11 +826,21 @@ impl SweepData {
             sets.push(SetData {
                 solver: read_str_attr(&group, "solver").unwrap_or_default(),
                 group: name,
-                columns: read_columns(&outcomes, path)?,
+                columns: read_columns(&outcomes, path, &["status"])?,
                 status,
             });
         }
-        Ok(SweepData { path: path.to_path_buf(), parameters, names, sets })
+        let mut grid = Vec::new();
+        if file.link_exists("grid") {
+            let group = file.group("grid").map_err(h5err(path))?;
+            let axes = group.dataset("axes").and_then(|d| d.read_raw::<VarLenUnicode>()).map_err(h5err(path))?;
+            let columns = read_columns(&group, path, &["axes"])?;
+            for axis in &axes {
+                let found = columns.iter().find(|(c, _)| c.name == axis.as_str());
+                grid.push(found.cloned().ok_or_else(|| layout(path, format!("grid axis `{axis}` has no /grid/{axis}")))?);
+            }
+        }
+        Ok(SweepData { path: path.to_path_buf(), parameters, names, sets, grid })
     }
 
     /// A parameter column by name.
@@ -823,6 +863,11 @@ impl SweepData {
     pub fn rows(&self) -> usize {
         self.parameters.first().map_or(0, |(_, v)| v.len())
     }
+
+    /// The grid's shape (one length per axis), for a grid experiment.
+    pub fn grid_shape(&self) -> Option<Vec<usize>> {
+        (!self.grid.is_empty()).then(|| self.grid.iter().map(|(_, v)| v.len()).collect())
+    }
 }
 
 impl SetData {
@@ -842,5 +887,5 @@ pub fn read_history(path: &Path, group: &str, row: usize) -> Result<Vec<(Column,
         format!("{group}/histories/{row:06}")
     };
     let g = file.group(&name).map_err(h5err(path))?;
-    read_columns(&g, path)
+    read_columns(&g, path, &[])
 }

@@ -6,6 +6,7 @@
 
 use crate::experiment::{Experiment, Output, Scenarios, MAX_SCENARIOS};
 use kick_core::{short, Spacing, HISTORY_COLUMNS, OBSERVABLES};
+use std::ops::Range;
 use std::path::Path;
 
 /// Most worker threads on any machine.
@@ -87,14 +88,16 @@ pub struct OutputSize {
 }
 
 impl OutputSize {
-    pub fn of(experiment: &Experiment) -> OutputSize {
-        let rows = experiment.scenarios.len();
+    /// The file of the experiment's rows `part` (all its rows, or a shard's):
+    /// a shard is sized by its own rows and histories.
+    pub fn of(experiment: &Experiment, part: &Range<u64>) -> OutputSize {
+        let rows = part.end.saturating_sub(part.start);
         let solvers = experiment.solvers.len() as u64;
         let per_row = 8 * kick_core::Parameter::ALL.len() as u64 + solvers * (8 * OBSERVABLES.len() as u64 + 1);
         let mut bytes = rows.saturating_mul(per_row);
         if let Output::History { interval } = experiment.output {
             let per_sample = 8 * HISTORY_COLUMNS.len() as u64;
-            for row in 0..rows {
+            for row in part.clone() {
                 if let Ok(s) = experiment.scenarios.scenario(row) {
                     let end = s.elastic_contact_time();
                     let samples = Spacing::Interval(interval).grid(end).samples_until(end);
@@ -115,9 +118,10 @@ impl OutputSize {
     }
 }
 
-/// Refuse a run beyond the row bound or the free space of `directory`;
-/// otherwise its estimated size.
-pub fn check(experiment: &Experiment, directory: &Path) -> Result<OutputSize, LimitError> {
+/// Refuse a run beyond the row bound, or whose file of rows `part` (the
+/// whole experiment's, or a shard's) would not fit the free space of
+/// `directory`; otherwise that file's estimated size.
+pub fn check(experiment: &Experiment, part: &Range<u64>, directory: &Path) -> Result<OutputSize, LimitError> {
     let rows = experiment.scenarios.len();
     if rows > MAX_SCENARIOS {
         let what = match experiment.scenarios {
@@ -126,7 +130,16 @@ pub fn check(experiment: &Experiment, directory: &Path) -> Result<OutputSize, Li
         };
         return Err(LimitError::TooManyRows { what, rows });
     }
-    check_space(OutputSize::of(experiment), directory, free_space(directory))
+    check_space(OutputSize::of(experiment, part), directory, free_space(directory))
+}
+
+/// [`check`] for a table of `rows` rows of `bytes_per_row` data bytes each
+/// (`what` names the row count in a refusal).
+pub fn check_rows(what: &'static str, total: u64, rows: u64, bytes_per_row: u64, directory: &Path) -> Result<OutputSize, LimitError> {
+    if total > MAX_SCENARIOS {
+        return Err(LimitError::TooManyRows { what, rows: total });
+    }
+    check_space(OutputSize { rows, bytes: rows.saturating_mul(bytes_per_row) }, directory, free_space(directory))
 }
 
 /// The size, or refused when more than `free` bytes (None: not known).
@@ -192,15 +205,37 @@ mod tests {
 
     #[test]
     fn rows_and_bytes_are_bounded_before_a_run() {
-        let e = check(&sweep(1_000_000_000_000), Path::new(".")).unwrap_err();
+        let e = check(&sweep(1_000_000_000_000), &(0..1), Path::new(".")).unwrap_err();
         assert_eq!(e.to_string(), "samples = 1000000000000: more than the 100000000 scenarios one run may hold; split the run");
         // 8 parameters, 15 outcomes and a status byte of one solver: 185 bytes a row.
-        let size = OutputSize::of(&sweep(100_000));
+        let size = OutputSize::of(&sweep(100_000), &(0..100_000));
         assert_eq!(size, OutputSize { rows: 100_000, bytes: 18_500_000 });
-        assert!(!size.is_large() && OutputSize::of(&sweep(1_000_000)).is_large());
+        assert!(!size.is_large() && OutputSize::of(&sweep(1_000_000), &(0..1_000_000)).is_large());
         let e = check_space(size, Path::new("out"), Some(10_000_000)).unwrap_err();
         assert_eq!(e.to_string(), "the output would need about 18.5 MB (100000 rows), more than the 10 MB free on the file system of out");
         assert!(check_space(size, Path::new("out"), Some(20_000_000)).is_ok());
+    }
+
+    /// A shard is sized by its own rows: 1/8 of a 4e6-sample sweep is
+    /// 500 000 rows of 185 bytes, not 4e6; a history experiment's shards
+    /// add up to the whole, each with its own rows' histories.
+    #[test]
+    fn a_shard_is_sized_by_its_own_rows() {
+        let e = sweep(4_000_000);
+        let rows = crate::shard::Shard { index: 3, count: 8 }.rows(4_000_000);
+        assert_eq!(rows, 1_500_000..2_000_000);
+        let size = OutputSize::of(&e, &rows);
+        assert_eq!(size, OutputSize { rows: 500_000, bytes: 92_500_000 });
+        assert!(OutputSize::of(&e, &(0..4_000_000)).is_large() && !size.is_large());
+        let text = "solver = \"accurate\"\n[[sweep]]\nparameter = \"stiffness\"\nvalues = [1e5, 4e5, 1.6e6, 6.4e6]\n\
+                    [output]\nmode = \"history\"\ninterval = 1e-6\n";
+        let h = crate::experiment::parse(Path::new("h.toml"), text).unwrap();
+        let (whole, first, second) = (OutputSize::of(&h, &(0..4)), OutputSize::of(&h, &(0..1)), OutputSize::of(&h, &(1..4)));
+        assert_eq!((first.rows, second.rows), (1, 3));
+        assert_eq!(first.bytes + second.bytes, whole.bytes);
+        // The softest ball's contact is the longest: its history alone is
+        // more than a quarter of the file (contact time ~ k^(-1/(n+1))).
+        assert!(first.bytes * 4 > whole.bytes, "{first:?} of {whole:?}");
     }
 
     #[test]

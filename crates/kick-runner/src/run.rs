@@ -1,7 +1,7 @@
 //! Run an experiment of the 1D model into a result file: the thin 1D layer
 //! over [`crate::h5::SweepWriter`].
 
-use crate::experiment::{Experiment, Output};
+use crate::experiment::{Experiment, Output, Scenarios};
 use crate::h5::{Column, H5Error, OutcomeSet, Setting, SweepWriter, CHUNK_ROWS};
 use crate::provenance::Provenance;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -307,7 +307,7 @@ pub fn run_part(
     attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>,
 ) -> Result<RunSummary, RunError> {
     let out_dir = part.path.parent().unwrap_or(Path::new("."));
-    let size = crate::limits::check(experiment, out_dir)?;
+    let size = crate::limits::check(experiment, &part.rows, out_dir)?;
     let path = part.path.clone();
     if show_progress && size.is_large() {
         eprintln!("{}: {} -> {}", experiment.name, size.describe(), path.display());
@@ -327,6 +327,14 @@ pub fn run_part(
     if let Some(names) = experiment.scenarios.names() {
         let names = &names[part.rows.start as usize..part.rows.end as usize];
         crate::h5::write_strings(writer.file(), &path, "scenario_names", names)?;
+    }
+    if let Scenarios::Grid { axes, .. } = &experiment.scenarios {
+        // The grid's shape (the whole experiment's, in a shard too).
+        let coordinates: Vec<(Column, &[f64])> =
+            axes.iter().map(|a| (Column::new(a.parameter.name(), a.parameter.unit()), a.values.as_slice())).collect();
+        if !coordinates.is_empty() {
+            crate::h5::write_grid(writer.file(), &path, &coordinates)?;
+        }
     }
     attributes(writer.file())?;
     if let Output::History { interval } = experiment.output {

@@ -16,20 +16,28 @@
 //! ([`fingerprint`] of the experiment text). [`merge`] refuses parts of
 //! different experiments, tool versions or commits, of different N, and any
 //! set that misses or repeats a row, naming the files; the merged file equals
-//! the unsharded run's in every dataset and attribute but `created_utc`
-//! (the latest of the parts').
+//! the unsharded run's in every group, dataset and attribute.
+//!
+//! The same holds for 3D experiments and for the random sweeps (`kick sweep
+//! --shard`, `kick sweep3d --shard`: shard I of the samples into
+//! `NAME.shard-I-of-N.h5` beside `--out NAME.h5`; sample i is a pure
+//! function of the seed and i, whatever the shard). What is per row is
+//! joined in row order (datasets below `parameters`, `outcomes` and
+//! `failures`, vectors `[rows, 3]` too, failure indices renumbered, and
+//! histories); what describes the whole experiment (`/grid`, a 3D file's
+//! `/fixed`) must be the same in every part and is copied once.
 
-use crate::experiment::Experiment;
-use crate::h5::{disable_file_locking, read_str_attr, read_u64_attr, write_str_attr, write_u64_attr, H5Error, CHUNK_ROWS};
-use crate::output::{OutputError, Staged};
+use crate::experiment::{AnyExperiment, Experiment, Experiment3d};
+use crate::h5::{close_file, create_staged, disable_file_locking, new_group, read_str_attr, read_u64_attr, write_str_attr, write_u64_attr, H5Error, CHUNK_ROWS};
+use crate::output::OutputError;
 use crate::run::{run_part, Part, RunError, RunReport};
 use hdf5::types::{FloatSize, IntSize, TypeDescriptor, VarLenUnicode};
 use hdf5::{File, Group, Location};
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
-/// Root attributes a shard adds; all but these (and `rows`, `created_utc`)
-/// must agree between the parts of a merge.
+/// Root attributes a shard adds; all but these (and `rows`) must agree
+/// between the parts of a merge.
 pub const SHARD_ATTRIBUTES: [&str; 6] =
     ["shard_index", "shard_count", "shard_row_start", "shard_row_end", "experiment_rows", "experiment_fingerprint"];
 
@@ -97,32 +105,46 @@ pub fn fingerprint(text: &str) -> String {
     format!("fnv1a64:{hash:016x}")
 }
 
+/// Write the root attributes of shard `shard` of an experiment (or sweep)
+/// of `total` rows whose text is `text` to the open shard file `file`.
+pub fn write_shard_attributes(file: &hdf5::Location, path: &Path, shard: Shard, total: u64, text: &str) -> Result<(), H5Error> {
+    let rows = shard.rows(total);
+    write_u64_attr(file, path, "shard_index", shard.index)?;
+    write_u64_attr(file, path, "shard_count", shard.count)?;
+    write_u64_attr(file, path, "shard_row_start", rows.start)?;
+    write_u64_attr(file, path, "shard_row_end", rows.end)?;
+    write_u64_attr(file, path, "experiment_rows", total)?;
+    write_str_attr(file, path, "experiment_fingerprint", &fingerprint(text))
+}
+
 /// Run shard `shard` of `experiment` into `out_dir/NAME.shard-I-of-N.h5`.
 pub fn run_shard(experiment: &Experiment, shard: Shard, out_dir: &Path, show_progress: bool) -> Result<crate::RunSummary, ShardError> {
     let total = experiment.scenarios.len();
-    let rows = shard.rows(total);
-    let part = Part { rows: rows.clone(), path: out_dir.join(shard.file_name(&experiment.name)) };
-    let print = fingerprint(&experiment.text);
-    let attributes = |file: &File| -> Result<(), H5Error> {
-        let path = &part.path;
-        write_u64_attr(file, path, "shard_index", shard.index)?;
-        write_u64_attr(file, path, "shard_count", shard.count)?;
-        write_u64_attr(file, path, "shard_row_start", rows.start)?;
-        write_u64_attr(file, path, "shard_row_end", rows.end)?;
-        write_u64_attr(file, path, "experiment_rows", total)?;
-        write_str_attr(file, path, "experiment_fingerprint", &print)
-    };
+    let part = Part { rows: shard.rows(total), path: out_dir.join(shard.file_name(&experiment.name)) };
+    let attributes = |file: &File| write_shard_attributes(file, &part.path, shard, total, &experiment.text);
     Ok(run_part(experiment, &part, show_progress, &attributes)?)
 }
 
-/// `kick run FILE [--shard I/N]`: the whole experiment into `out/NAME.h5`,
-/// or shard I/N (`shard` as given) into `out/NAME.shard-I-of-N.h5`.
+/// [`run_shard`] of a 3D experiment: its cells `shard.rows(cells)`.
+pub fn run_shard3d(experiment: &Experiment3d, shard: Shard, out_dir: &Path) -> Result<crate::RunSummary, ShardError> {
+    let total = experiment.grid.len();
+    let part = Part { rows: shard.rows(total), path: out_dir.join(shard.file_name(&experiment.name)) };
+    let attributes = |file: &File| write_shard_attributes(file, &part.path, shard, total, &experiment.text);
+    Ok(crate::three_d::run_part(experiment, &part, &attributes)?)
+}
+
+/// `kick run FILE [--shard I/N]`: the whole experiment (1D or 3D) into
+/// `out/NAME.h5`, or shard I/N (`shard` as given) into `out/NAME.shard-I-of-N.h5`.
 pub fn run_file(file: &Path, out: &Path, shard: Option<&str>) -> Result<RunReport, String> {
     let Some(given) = shard else { return crate::run::run_file(file, out) };
     let shard = Shard::parse(given, "--shard").map_err(|e| e.to_string())?;
-    let experiment = crate::experiment::load(file).map_err(|e| e.to_string())?;
+    let experiment = crate::experiment::load_any(file).map_err(|e| e.to_string())?;
     let started = std::time::Instant::now();
-    let summary = run_shard(&experiment, shard, out, true).map_err(|e| e.to_string())?;
+    let summary = match &experiment {
+        AnyExperiment::OneD(e) => run_shard(e, shard, out, true),
+        AnyExperiment::ThreeD(e) => run_shard3d(e, shard, out),
+    }
+    .map_err(|e| e.to_string())?;
     Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
 }
 
@@ -212,7 +234,7 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
     }
     // Everything else at the root (experiment text, tool version, commit,
     // solver settings...) must agree too.
-    let skip = |name: &str| SHARD_ATTRIBUTES.contains(&name) || name == "rows" || name == "created_utc";
+    let skip = |name: &str| SHARD_ATTRIBUTES.contains(&name) || name == "rows";
     for name in first.file.attr_names().map_err(h5(&first.path))?.into_iter().filter(|n| !skip(n)) {
         let value = |p: &Piece| read_attr(&p.file, &name).map(|v| format!("{v:?}")).unwrap_or_else(|_| "(absent)".into());
         let by_value = groups(&|p| value(p));
@@ -248,25 +270,19 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
     Ok(pieces)
 }
 
-/// Join shard files `parts` (any order) into `out`, whole or not at all:
-/// the file an unsharded run of the experiment writes, up to `created_utc`.
+/// Join shard files `parts` (any order) into `out`, whole or not at all
+/// (through [`create_staged`], like every result file): the file an
+/// unsharded run of the experiment writes.
 pub fn merge(out: &Path, parts: &[PathBuf]) -> Result<MergeReport, ShardError> {
     disable_file_locking();
     let pieces = check(parts.iter().map(|p| Piece::open(p)).collect::<Result<Vec<_>, _>>()?)?;
     let total = pieces[0].total;
-    let staged = Staged::begin(out)?;
-    let file = File::create(staged.temporary()).map_err(|e| H5Error::Hdf5 { path: out.to_path_buf(), message: e.to_string() })?;
+    let (file, staged) = create_staged(out)?;
     let writer = Merger { out, pieces: &pieces };
     writer.group(&pieces[0].file, &file, "")?;
-    // The latest creation time of the parts: when the last numbers were made.
-    let created = pieces.iter().filter_map(|p| read_str_attr(&p.file, "created_utc")).max();
-    if let Some(created) = created {
-        write_str_attr(&file, out, "created_utc", &created)?;
-    }
     write_u64_attr(&file, out, "rows", total)?;
     drop(pieces);
-    file.close().map_err(|e| H5Error::Hdf5 { path: out.to_path_buf(), message: e.to_string() })?;
-    let path = staged.commit()?;
+    let path = close_file(file, staged, out)?;
     Ok(MergeReport { path, parts: parts.len(), rows: total })
 }
 
@@ -274,18 +290,27 @@ fn varlen(text: &str) -> hdf5::Result<VarLenUnicode> {
     text.parse::<VarLenUnicode>().map_err(|e| hdf5::Error::from(e.to_string().as_str()))
 }
 
-/// A scalar attribute of a type the result layout uses.
+/// An attribute of a type the result layout uses: a scalar, or a list of
+/// u64 (`grid_shape`).
 #[derive(Debug, Clone, PartialEq)]
 enum Value {
     F64(f64),
     U64(u64),
+    U64s(Vec<u64>),
     U8(u8),
     Text(String),
 }
 
 fn read_attr(location: &Location, name: &str) -> hdf5::Result<Value> {
     let attr = location.attr(name)?;
-    Ok(match attr.dtype()?.to_descriptor()? {
+    let descriptor = attr.dtype()?.to_descriptor()?;
+    if !attr.is_scalar() {
+        return match descriptor {
+            TypeDescriptor::Unsigned(IntSize::U8) => Ok(Value::U64s(attr.read_raw()?)),
+            other => Err(format!("attribute `{name}`: a list of {other:?}, not one of the result layout").as_str().into()),
+        };
+    }
+    Ok(match descriptor {
         TypeDescriptor::Float(FloatSize::U8) => Value::F64(attr.read_scalar()?),
         TypeDescriptor::Unsigned(IntSize::U8) => Value::U64(attr.read_scalar()?),
         TypeDescriptor::Unsigned(IntSize::U1) => Value::U8(attr.read_scalar()?),
@@ -298,6 +323,7 @@ fn write_attr(location: &Location, name: &str, value: &Value) -> hdf5::Result<()
     match value {
         Value::F64(v) => location.new_attr::<f64>().shape(()).create(name)?.write_scalar(v),
         Value::U64(v) => location.new_attr::<u64>().shape(()).create(name)?.write_scalar(v),
+        Value::U64s(v) => location.new_attr::<u64>().shape(v.len()).create(name)?.write(v),
         Value::U8(v) => location.new_attr::<u8>().shape(()).create(name)?.write_scalar(v),
         Value::Text(v) => location.new_attr::<VarLenUnicode>().shape(()).create(name)?.write_scalar(&varlen(v)?),
     }
@@ -324,29 +350,49 @@ impl Merger<'_> {
     /// Group `path` ("" the root) of the first part, into `to`.
     fn group(&self, from: &Group, to: &Group, path: &str) -> Result<(), ShardError> {
         let root = path.is_empty();
-        // At the root, `rows` and `created_utc` are written by `merge`.
-        let skip = |n: &str| root && (SHARD_ATTRIBUTES.contains(&n) || n == "rows" || n == "created_utc");
+        // At the root, `rows` is written by `merge`.
+        let skip = |n: &str| root && (SHARD_ATTRIBUTES.contains(&n) || n == "rows");
         copy_attrs(from, to, &skip).map_err(self.err())?;
         for name in from.member_names().map_err(self.err())? {
             let member = format!("{path}/{name}");
             if let Ok(group) = from.group(&name) {
-                let target = to.create_group(&name).map_err(self.err())?;
+                let target = new_group(to, &name).map_err(self.err())?;
                 if name == "histories" {
                     self.histories(&member, &target)?;
                 } else {
                     self.group(&group, &target, &member)?;
                 }
             } else {
-                // Per-row datasets: columns of the table, failures, row names.
-                let parent = path.rsplit('/').next().unwrap_or("");
-                let per_row = matches!(parent, "parameters" | "outcomes" | "failures") || member == "/scenario_names";
-                if !per_row {
-                    return Err(part_error(&self.pieces[0].path, format!("{member}: a dataset the result layout does not have")));
+                match kind(&member) {
+                    Some(Kind::PerRow) => self.join(&member, to, &name, member.ends_with("failures/index"))?,
+                    Some(Kind::Whole) => self.same_in_every_part(&member, to, &name)?,
+                    None => return Err(part_error(&self.pieces[0].path, format!("{member}: a dataset the result layout does not have"))),
                 }
-                self.join(&member, to, &name, member.ends_with("failures/index"))?;
             }
         }
         Ok(())
+    }
+
+    /// Dataset `path`, the same in every part (it describes the whole
+    /// experiment), copied once.
+    fn same_in_every_part(&self, path: &str, to: &Group, name: &str) -> Result<(), ShardError> {
+        let first = &self.pieces[0];
+        let content = |piece: &Piece| -> Result<(Vec<usize>, Vec<String>), ShardError> {
+            let d = piece.file.dataset(path).map_err(|e| part_error(&piece.path, format!("{path}: {e}")))?;
+            let values = match d.dtype().and_then(|t| t.to_descriptor()).map_err(h5(&piece.path))? {
+                TypeDescriptor::VarLenUnicode => d.read_raw::<VarLenUnicode>().map(|v| v.iter().map(|s| s.to_string()).collect()),
+                _ => d.read_raw::<f64>().map(|v| v.iter().map(|x| format!("{:016x}", x.to_bits())).collect()),
+            }
+            .map_err(h5(&piece.path))?;
+            Ok((d.shape(), values))
+        };
+        let expected = content(first)?;
+        for piece in &self.pieces[1..] {
+            if content(piece)? != expected {
+                return Err(ShardError::Merge(format!("{path} differs between {} and {}", first.path.display(), piece.path.display())));
+            }
+        }
+        self.copy(first, path, to, name, 0)
     }
 
     /// Every part's histories of `path`, renamed to experiment rows.
@@ -357,7 +403,7 @@ impl Merger<'_> {
                 let local: u64 = name.parse().map_err(|_| part_error(&piece.path, format!("{path}/{name}: not a row number")))?;
                 let row = piece.rows.start + local;
                 let history = from.group(&name).map_err(h5(&piece.path))?;
-                let target = to.create_group(&format!("{row:06}")).map_err(self.err())?;
+                let target = new_group(to, &format!("{row:06}")).map_err(self.err())?;
                 copy_attrs(&history, &target, &|n| n == "row").map_err(self.err())?;
                 write_u64_attr(&target, self.out, "row", row)?;
                 for column in history.member_names().map_err(h5(&piece.path))? {
@@ -388,15 +434,27 @@ impl Merger<'_> {
         self.append(piece, &from, &created, offset)
     }
 
-    /// An empty extendable dataset of `like`'s type and attributes.
+    /// An empty dataset of `like`'s type, attributes and trailing shape
+    /// (`[rows]` or `[rows, k]`), extendable along the rows.
     fn create(&self, like: &hdf5::Dataset, to: &Group, name: &str) -> Result<hdf5::Dataset, ShardError> {
-        let chunk = CHUNK_ROWS;
+        let layout_error = |what: String| part_error(&self.pieces[0].path, format!("{name}: {what}, not one of the result layout"));
+        let shape = like.shape();
+        let (extents, chunk): (hdf5::Extents, Vec<usize>) = match shape.as_slice() {
+            [_] => ((0..).into(), vec![CHUNK_ROWS]),
+            [_, k] => ((0.., *k).into(), vec![CHUNK_ROWS, (*k).max(1)]),
+            other => return Err(layout_error(format!("dataset of shape {other:?}"))),
+        };
+        macro_rules! of {
+            ($t:ty) => {
+                to.new_dataset::<$t>().obj_track_times(false).chunk(chunk.as_slice()).shape(extents).create(name)
+            };
+        }
         let created = match like.dtype().and_then(|t| t.to_descriptor()).map_err(self.err())? {
-            TypeDescriptor::Float(FloatSize::U8) => to.new_dataset::<f64>().chunk(chunk).shape(0..).create(name),
-            TypeDescriptor::Unsigned(IntSize::U8) => to.new_dataset::<u64>().chunk(chunk).shape(0..).create(name),
-            TypeDescriptor::Unsigned(IntSize::U1) => to.new_dataset::<u8>().chunk(chunk).shape(0..).create(name),
-            TypeDescriptor::VarLenUnicode => to.new_dataset::<VarLenUnicode>().chunk(chunk).shape(0..).create(name),
-            other => return Err(part_error(&self.pieces[0].path, format!("{name}: dataset of type {other:?}, not one of the result layout"))),
+            TypeDescriptor::Float(FloatSize::U8) => of!(f64),
+            TypeDescriptor::Unsigned(IntSize::U8) => of!(u64),
+            TypeDescriptor::Unsigned(IntSize::U1) => of!(u8),
+            TypeDescriptor::VarLenUnicode => of!(VarLenUnicode),
+            other => return Err(layout_error(format!("dataset of type {other:?}"))),
         }
         .map_err(self.err())?;
         copy_attrs(like, &created, &|_| false).map_err(self.err())?;
@@ -405,36 +463,68 @@ impl Merger<'_> {
 
     /// Append `from` to `to` in blocks of rows.
     fn append(&self, piece: &Piece, from: &hdf5::Dataset, to: &hdf5::Dataset, offset: u64) -> Result<(), ShardError> {
-        let n = from.size();
+        let shape = from.shape();
+        let n = shape.first().copied().unwrap_or(0);
         let block = 16 * CHUNK_ROWS;
         let mut start = 0;
         while start < n {
             let end = (start + block).min(n);
-            let at = to.size();
-            to.resize(at + end - start).map_err(self.err())?;
+            let at = to.shape().first().copied().unwrap_or(0);
+            let rows = at..at + end - start;
             let read = h5(&piece.path);
+            if let [_, k] = shape.as_slice() {
+                // Vectors: f64 [rows, k].
+                to.resize((rows.end, *k)).map_err(self.err())?;
+                let values = from.read_slice_2d::<f64, _>((start..end, ..)).map_err(read)?;
+                to.write_slice(&values, (rows, ..)).map_err(self.err())?;
+                start = end;
+                continue;
+            }
+            to.resize(rows.end).map_err(self.err())?;
             match to.dtype().and_then(|t| t.to_descriptor()).map_err(self.err())? {
                 TypeDescriptor::Float(_) => {
                     let values = from.read_slice_1d::<f64, _>(start..end).map_err(read)?;
-                    to.write_slice(&values, at..at + end - start)
+                    to.write_slice(&values, rows)
                 }
                 TypeDescriptor::Unsigned(IntSize::U8) => {
                     let values = from.read_slice_1d::<u64, _>(start..end).map_err(read)?.mapv(|v| v + offset);
-                    to.write_slice(&values, at..at + end - start)
+                    to.write_slice(&values, rows)
                 }
                 TypeDescriptor::Unsigned(_) => {
                     let values = from.read_slice_1d::<u8, _>(start..end).map_err(read)?;
-                    to.write_slice(&values, at..at + end - start)
+                    to.write_slice(&values, rows)
                 }
                 _ => {
                     let values = from.read_slice_1d::<VarLenUnicode, _>(start..end).map_err(read)?;
-                    to.write_slice(&values, at..at + end - start)
+                    to.write_slice(&values, rows)
                 }
             }
             .map_err(self.err())?;
             start = end;
         }
         Ok(())
+    }
+}
+
+/// How a dataset of a result file is merged.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    /// One entry per row: joined in row order.
+    PerRow,
+    /// Describes the whole experiment: the same in every part.
+    Whole,
+}
+
+/// The kind of the dataset at `path` ("/a/b/name"), or None for one the
+/// result layouts do not have.
+fn kind(path: &str) -> Option<Kind> {
+    let groups: Vec<&str> = path.split('/').filter(|p| !p.is_empty()).collect();
+    let groups = &groups[..groups.len().saturating_sub(1)];
+    match groups.first() {
+        Some(&"grid") | Some(&"fixed") => Some(Kind::Whole),
+        _ if path == "/scenario_names" => Some(Kind::PerRow),
+        _ if groups.iter().any(|g| matches!(*g, "parameters" | "outcomes" | "failures")) => Some(Kind::PerRow),
+        _ => None,
     }
 }
 

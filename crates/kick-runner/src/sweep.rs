@@ -1,15 +1,25 @@
-//! `kick sweep --samples N --seed S [--solver NAME] --out FILE.h5`: random
-//! scenarios around the baseline, solved in parallel, streamed to HDF5.
+//! `kick sweep --samples N --seed S [--solver NAME] --out FILE.h5 [--shard I/N]`:
+//! random scenarios around the baseline, solved in parallel, streamed to HDF5.
+//!
+//! With `--shard I/N` (from 0, as `kick run --shard`), only samples
+//! `floor(I*N_s/N) .. floor((I+1)*N_s/N)` are solved, into
+//! `NAME.shard-I-of-N.h5` beside `--out NAME.h5`; sample i is the same
+//! scenario in every shard (drawn from (seed, i)), and `kick merge
+//! NAME.h5 PART...` joins the parts into the unsharded sweep's file.
 
+use crate::experiment::MAX_SCENARIOS;
+use crate::limits::LimitError;
 use crate::printable::Printable;
 use crate::sample::{ranges, SampledSweep};
+use crate::shard::Shard;
 use crate::{Experiment, Output, Scenarios};
 use kick_compliant::{Auto, SolverChoice};
 use kick_core::{LawKind, Parameter, ScenarioSpec, SolverPath};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::path::PathBuf;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
 
 /// What to sweep.
 #[derive(Debug, Clone, PartialEq)]
@@ -24,6 +34,58 @@ pub struct SweepSettings {
     pub out: PathBuf,
     /// Parameters held fixed, and the law of every scenario.
     pub fixed: ScenarioSpec,
+    /// `--shard I/N` as given: only that slice of the samples.
+    pub shard: Option<String>,
+    /// `--threads`: worker threads (default: one per core).
+    pub threads: Option<usize>,
+}
+
+/// Where a random sweep (`kick sweep`, `kick sweep3d`) goes, its settings checked.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepTarget {
+    /// NAME of `--out NAME.h5`.
+    pub name: String,
+    /// The directory of `--out` (created when written).
+    pub directory: PathBuf,
+    pub samples: u64,
+    /// The shard to solve, if any.
+    pub shard: Option<Shard>,
+    /// The samples this run solves: all, or the shard's.
+    pub rows: Range<u64>,
+    /// The file written: `--out`, or `NAME.shard-I-of-N.h5` beside it.
+    pub path: PathBuf,
+}
+
+impl SweepTarget {
+    /// Check `--samples` (1 ..= [`MAX_SCENARIOS`]), `--out` (a file NAME.h5)
+    /// and `--shard`, then start `--threads` workers; errors name the flag.
+    pub fn check(samples: u64, out: &Path, shard: Option<&str>, threads: Option<usize>) -> Result<SweepTarget, String> {
+        if samples == 0 {
+            return Err("--samples must be at least 1".into());
+        }
+        if samples > MAX_SCENARIOS {
+            return Err(LimitError::TooManyRows { what: "--samples", rows: samples }.to_string());
+        }
+        let name = out
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .filter(|_| out.extension().is_some_and(|e| e == "h5"))
+            .ok_or_else(|| format!("--out {} must name a file NAME.h5", out.display()))?
+            .to_string();
+        let directory = out.parent().map(PathBuf::from).unwrap_or_default();
+        let shard = shard.map(|given| Shard::parse(given, "--shard")).transpose().map_err(|e| e.to_string())?;
+        crate::limits::use_threads(threads, "--threads").map_err(|e| e.to_string())?;
+        let (rows, path) = match shard {
+            Some(shard) => (shard.rows(samples), directory.join(shard.file_name(&name))),
+            None => (0..samples, out.to_path_buf()),
+        };
+        Ok(SweepTarget { name, directory, samples, shard, rows, path })
+    }
+
+    /// "shard I/N: samples a..b", for reports.
+    pub fn describe_shard(&self) -> Option<String> {
+        self.shard.map(|s| format!("shard {}/{}: samples {}..{}", s.index, s.count, self.rows.start, self.rows.end))
+    }
 }
 
 /// What a sweep did.
@@ -37,22 +99,15 @@ pub struct SweepReport {
     pub failed: u64,
     /// Which path `auto` took over the first (at most 100 000) scenarios.
     pub auto_paths: Option<(u64, BTreeMap<SolverPath, u64>)>,
+    /// With `--shard`: which shard and samples.
+    pub shard: Option<String>,
 }
 
 /// Sample `settings.samples` scenarios, solve them in parallel and stream
 /// them into the result file.
 pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
-    if settings.samples == 0 {
-        return Err("--samples must be at least 1".into());
-    }
-    let out = &settings.out;
-    let name = out
-        .file_stem()
-        .and_then(|s| s.to_str())
-        .filter(|_| out.extension().is_some_and(|e| e == "h5"))
-        .ok_or_else(|| format!("--out {} must name a file NAME.h5", out.display()))?
-        .to_string();
-    let directory = out.parent().map(PathBuf::from).unwrap_or_default();
+    let target = SweepTarget::check(settings.samples, &settings.out, settings.shard.as_deref(), settings.threads)?;
+    let SweepTarget { name, directory, .. } = target.clone();
     let solver = SolverChoice::from_name(&settings.solver, settings.dt).map_err(|e| e.to_string())?;
     let sweep = SampledSweep { samples: settings.samples, seed: settings.seed, fixed: settings.fixed };
     sweep.scenario(0).map_err(|e| e.to_string())?;
@@ -84,13 +139,16 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
         output: Output::Summary,
     };
     let started = std::time::Instant::now();
-    let summary = crate::run(&experiment, &directory, true).map_err(|e| e.to_string())?;
+    let summary = match target.shard {
+        None => crate::run(&experiment, &directory, true).map_err(|e| e.to_string())?,
+        Some(shard) => crate::shard::run_shard(&experiment, shard, &directory, true).map_err(|e| e.to_string())?,
+    };
     let seconds = started.elapsed().as_secs_f64();
     let auto_paths = matches!(solver, SolverChoice::Auto(_)).then(|| {
         // Which path auto took, counted from the scenarios (a pure function of them).
-        let counted = settings.samples.min(100_000);
+        let counted = (target.rows.end - target.rows.start).min(100_000);
         let mut counts = BTreeMap::new();
-        for i in 0..counted {
+        for i in target.rows.start..target.rows.start + counted {
             if let Ok(s) = sweep.scenario(i) {
                 *counts.entry(Auto::path(&s)).or_insert(0u64) += 1;
             }
@@ -105,6 +163,7 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
         path: summary.path,
         failed: summary.failures.iter().map(|(_, n)| n).sum(),
         auto_paths,
+        shard: target.describe_shard(),
     })
 }
 
@@ -122,6 +181,9 @@ impl Printable for SweepReport {
             self.path.display(),
             self.failed
         );
+        if let Some(shard) = &self.shard {
+            let _ = writeln!(w, "{shard} (join the parts with `kick merge`)");
+        }
         if let Some((counted, counts)) = &self.auto_paths {
             let shown: Vec<String> = counts.iter().map(|(k, v)| format!("{k}: {v}")).collect();
             let _ = writeln!(w, "auto paths over the first {counted} scenarios: {}", shown.join(", "));

@@ -8,22 +8,28 @@
 //! every other 3D parameter at its default. A parameter given on the command
 //! line is held there instead. Rows are pure functions of (seed, index) and
 //! are written in index order, so the data do not depend on the thread count.
+//! With `--shard I/N` only samples `floor(I*N_s/N) .. floor((I+1)*N_s/N)` are
+//! solved, into `NAME.shard-I-of-N.h5` (file rows from 0; see [`crate::shard`]
+//! for the merge).
 //!
 //! Layout (`layout = "sweep3d"`; every dataset has a `units` attribute):
 //!
 //! ```text
 //! /                                  provenance, layout, solver, law, seed, samples, rows
+//!                                    (u64; `rows` the file's, `samples` the sweep's); a shard
+//!                                    (`--shard I/N`) adds the attributes of [`crate::shard`]
 //! /parameters/<name>                 f64[rows] or f64[rows, 3] (vectors), every declared
 //!                                    1D and 3D parameter under its `simulate3d` flag's name
 //!                                    (switches 0/1; restitution NaN under the paper's law)
 //! /outcomes/<name>                   f64[rows] or f64[rows, 3], NaN where status != 0
 //! /outcomes/energy/<name>            the energy partition, J
 //! /outcomes/status                   u8[rows]: kick_core::Status codes
-//! /failures/index, /failures/message rows that did not separate and why
+//! /failures/index, /failures/message rows that did not separate (u64, the file's rows) and why
 //! ```
 
-use crate::h5::{write_str_attr, H5Error, ResultWriter};
-use crate::limits::{self, LimitError};
+use crate::h5::{new_group, write_str_attr, write_u64_attr, H5Error, ResultWriter};
+use crate::limits;
+use crate::sweep::SweepTarget;
 use crate::printable::Printable;
 use crate::provenance::Provenance;
 use kick_3d::models::{OffCenterBox, BOX_RANGES};
@@ -34,7 +40,7 @@ use rand::RngExt;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// What to sweep.
 #[derive(Debug, Clone, PartialEq)]
@@ -45,6 +51,10 @@ pub struct Sweep3dSettings {
     pub out: PathBuf,
     /// Parameters held fixed instead of drawn, and the normal contact law.
     pub fixed: KickSpec,
+    /// `--shard I/N` as given: only that slice of the samples (see [`crate::sweep`]).
+    pub shard: Option<String>,
+    /// `--threads`: worker threads (default: one per core).
+    pub threads: Option<usize>,
 }
 
 /// What a sweep did.
@@ -59,6 +69,8 @@ pub struct Sweep3dReport {
     pub path: PathBuf,
     /// Rows per status other than separated: (status name, count).
     pub not_separated: Vec<(&'static str, u64)>,
+    /// With `--shard`: which shard and samples.
+    pub shard: Option<String>,
 }
 
 /// Seed stream of the 1D draws, apart from the box's (which uses the seed itself).
@@ -214,34 +226,18 @@ fn solve_row(kicks: &SampledKicks, index: u64) -> Row {
 /// Rows solved together and written together (bounded memory: a block at a time).
 const BLOCK: u64 = 8192;
 
-/// Estimated data bytes of `samples` rows (parameters, outcomes, status).
-fn estimated_bytes(samples: u64) -> u64 {
+/// Data bytes of a row (parameters, outcomes, status).
+fn bytes_per_row() -> u64 {
     let parameters: usize = parameters::at_levels(KickSpec::LEVELS).map(parameter_width).sum();
     let outcomes: usize = OUTCOMES.iter().map(|c| c.2).sum::<usize>() + ENERGY.len();
-    samples.saturating_mul(8 * (parameters + outcomes) as u64 + 1)
+    8 * (parameters + outcomes) as u64 + 1
 }
 
 /// Sample `settings.samples` kicks, solve them in parallel and write the file.
 pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, String> {
-    if settings.samples == 0 {
-        return Err("--samples must be at least 1".into());
-    }
-    let out = &settings.out;
-    let name = out
-        .file_stem()
-        .and_then(|s| s.to_str())
-        .filter(|_| out.extension().is_some_and(|e| e == "h5"))
-        .ok_or_else(|| format!("--out {} must name a file NAME.h5", out.display()))?
-        .to_string();
-    if settings.samples > crate::experiment::MAX_SCENARIOS {
-        return Err(LimitError::TooManyRows { what: "--samples", rows: settings.samples }.to_string());
-    }
-    let directory = out.parent().map(PathBuf::from).unwrap_or_default();
-    let needed = estimated_bytes(settings.samples);
-    if let Some(free) = limits::free_space(&directory).filter(|&free| needed > free) {
-        let directory = directory.display().to_string();
-        return Err(LimitError::NoSpace { rows: settings.samples, needed, free, directory }.to_string());
-    }
+    let target = SweepTarget::check(settings.samples, &settings.out, settings.shard.as_deref(), settings.threads)?;
+    let rows = target.rows.end - target.rows.start;
+    limits::check_rows("--samples", settings.samples, rows, bytes_per_row(), &target.directory).map_err(|e| e.to_string())?;
     let kicks = SampledKicks { seed: settings.seed, fixed: settings.fixed };
     // A held value the model refuses is refused before the run.
     kicks.spec(0).build().map_err(|e| e.to_string())?;
@@ -266,12 +262,13 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, String> {
         law.name(),
         SampledKicks::ranges().lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n")
     );
-    let provenance = Provenance::now(&name, &format!("kick sweep3d (seed {})", settings.seed), &text);
+    let provenance = Provenance::now(&target.name, &format!("kick sweep3d (seed {})", settings.seed), &text);
     let started = std::time::Instant::now();
     let cpu_started = cpu_seconds();
-    let (path, not_separated) = write(out, &provenance, &kicks, settings, law).map_err(|e| e.to_string())?;
+    let (path, not_separated) = write(&target, &provenance, &kicks, law).map_err(|e| e.to_string())?;
     Ok(Sweep3dReport {
-        kicks: settings.samples,
+        kicks: rows,
+        shard: target.describe_shard(),
         seconds: started.elapsed().as_secs_f64(),
         cpu_seconds: cpu_started.zip(cpu_seconds()).map(|(a, b)| b - a),
         threads: rayon::current_num_threads(),
@@ -298,27 +295,31 @@ pub fn cpu_seconds() -> Option<f64> {
 }
 
 fn write(
-    out: &Path,
+    target: &SweepTarget,
     provenance: &Provenance,
     kicks: &SampledKicks,
-    settings: &Sweep3dSettings,
     law: kick_core::LawKind,
 ) -> Result<(PathBuf, Vec<(&'static str, u64)>), H5Error> {
-    let rows = settings.samples as usize;
+    let out = target.path.as_path();
+    let rows = (target.rows.end - target.rows.start) as usize;
     let writer = ResultWriter::create(out, provenance, "sweep3d")?;
     let file = writer.file().clone();
     let err = |e: hdf5::Error| H5Error::Hdf5 { path: out.to_path_buf(), message: e.to_string() };
     write_str_attr(&file, out, "solver", "auto (accurate-3d off the centre line)")?;
     write_str_attr(&file, out, "law", law.name())?;
-    crate::h5::write_f64_attr(&file, out, "seed", settings.seed as f64)?;
-    crate::h5::write_f64_attr(&file, out, "rows", rows as f64)?;
+    write_u64_attr(&file, out, "seed", kicks.seed)?;
+    write_u64_attr(&file, out, "samples", target.samples)?;
+    write_u64_attr(&file, out, "rows", rows as u64)?;
+    if let Some(shard) = target.shard {
+        crate::shard::write_shard_attributes(&file, out, shard, target.samples, &provenance.experiment_text)?;
+    }
     let dataset = |group: &hdf5::Group, name: &str, unit: &str, width: usize| -> Result<hdf5::Dataset, H5Error> {
-        let builder = group.new_dataset::<f64>();
+        let builder = group.new_dataset::<f64>().obj_track_times(false);
         let d = if width == 3 { builder.shape((rows, 3)).create(name) } else { builder.shape(rows).create(name) }.map_err(err)?;
         write_str_attr(&d, out, "units", unit)?;
         Ok(d)
     };
-    let parameter_group = file.create_group("parameters").map_err(err)?;
+    let parameter_group = new_group(&file, "parameters").map_err(err)?;
     let mut parameter_sets = Vec::new();
     for p in parameters::at_levels(KickSpec::LEVELS) {
         let d = dataset(&parameter_group, p.name, p.unit, parameter_width(p))?;
@@ -326,30 +327,32 @@ fn write(
         write_str_attr(&d, out, "description", p.doc)?;
         parameter_sets.push((d, parameter_width(p)));
     }
-    let outcome_group = file.create_group("outcomes").map_err(err)?;
+    let outcome_group = new_group(&file, "outcomes").map_err(err)?;
     let mut outcome_sets = Vec::new();
     for &(name, unit, width, _) in &OUTCOMES {
         outcome_sets.push((dataset(&outcome_group, name, unit, width)?, width));
     }
-    let energy_group = outcome_group.create_group("energy").map_err(err)?;
+    let energy_group = new_group(&outcome_group, "energy").map_err(err)?;
     let energy_sets = ENERGY.iter().map(|(name, _)| dataset(&energy_group, name, "J", 1)).collect::<Result<Vec<_>, _>>()?;
-    let status_set = outcome_group.new_dataset::<u8>().shape(rows).create("status").map_err(err)?;
+    let status_set = outcome_group.new_dataset::<u8>().obj_track_times(false).shape(rows).create("status").map_err(err)?;
     write_str_attr(&status_set, out, "units", "1")?;
     let meaning = [Status::Separated, Status::NumericalFailure, Status::Trapped, Status::Refused]
         .map(|s| format!("{}: {}", s.code(), s.name()))
         .join("; ");
     write_str_attr(&status_set, out, "meaning", &meaning)?;
 
-    let bar = crate::run::progress(settings.samples, true);
+    let bar = crate::run::progress(rows as u64, true);
     bar.set_message("sweep3d");
     let mut failures: Vec<(u64, String)> = Vec::new();
     let mut counts = [0u64; 4];
-    let mut start = 0u64;
-    while start < settings.samples {
-        let end = (start + BLOCK).min(settings.samples);
+    // Sample indices `start..end`, file rows from 0 (a shard's own rows).
+    let first = target.rows.start;
+    let mut start = first;
+    while start < target.rows.end {
+        let end = (start + BLOCK).min(target.rows.end);
         let block: Vec<Row> = (start..end).into_par_iter().map(|i| solve_row(kicks, i)).collect();
         let n = block.len();
-        let range = start as usize..end as usize;
+        let range = (start - first) as usize..(end - first) as usize;
         let put = |d: &hdf5::Dataset, width: usize, value: &dyn Fn(&Row) -> [f64; 3]| -> Result<(), H5Error> {
             if width == 3 {
                 let flat: Vec<f64> = block.iter().flat_map(value).collect();
@@ -378,16 +381,17 @@ fn write(
             let code = status[i];
             counts[usize::from(code).min(3)] += 1;
             if let Err((_, message)) = &row.outcome {
-                failures.push((start + i as u64, message.clone()));
+                failures.push((start - first + i as u64, message.clone()));
             }
         }
         bar.inc(n as u64);
         start = end;
     }
     bar.finish_and_clear();
-    let index: Vec<f64> = failures.iter().map(|(i, _)| *i as f64).collect();
+    let index: Vec<u64> = failures.iter().map(|(i, _)| *i).collect();
     let messages: Vec<String> = failures.into_iter().map(|(_, m)| m).collect();
-    writer.column("failures", &crate::h5::Column::new("index", "1"), &index)?;
+    let failure_group = new_group(&file, "failures").map_err(err)?;
+    crate::h5::write_indices(&failure_group, out, "index", "1", &index)?;
     writer.strings("failures", "message", &messages)?;
     drop(file);
     let path = writer.finish()?;
@@ -422,6 +426,9 @@ impl Printable for Sweep3dReport {
         }
         for (status, n) in &self.not_separated {
             let _ = writeln!(w, "  {status}: {n}");
+        }
+        if let Some(shard) = &self.shard {
+            let _ = writeln!(w, "{shard} (join the parts with `kick merge`)");
         }
         w
     }

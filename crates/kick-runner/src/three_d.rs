@@ -11,9 +11,9 @@
 
 use crate::experiment::Experiment3d;
 use crate::figures::{save_grid, FigureError, Panel, Series};
-use crate::h5::{law_settings, write_column, write_grid, write_str_attr, Column, H5Error, OutcomeSet, SweepData, SweepWriter, CHUNK_ROWS};
+use crate::h5::{law_settings, new_group, write_column, write_grid, write_str_attr, Column, H5Error, OutcomeSet, SweepData, SweepWriter, CHUNK_ROWS};
 use crate::provenance::Provenance;
-use crate::run::{RunError, RunSummary};
+use crate::run::{Part, RunError, RunSummary};
 use kick_3d::{Kick3dError, Outcome3d, OBSERVABLES_3D};
 use kick_core::parameters::Value;
 use plotters::prelude::RGBColor;
@@ -32,21 +32,34 @@ fn outcome_set(experiment: &Experiment3d) -> OutcomeSet {
 /// Run a 3D experiment into `out_dir/NAME.h5`: cells solved in parallel in
 /// chunks, written in grid order (the file does not depend on the threads).
 pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunError> {
+    let part = Part { rows: 0..experiment.grid.len(), path: out_dir.join(format!("{}.h5", experiment.name)) };
+    run_part(experiment, &part, &|_| Ok(()))
+}
+
+/// Data bytes of a row: the axes' values, the outcome columns and a status byte.
+fn bytes_per_row(experiment: &Experiment3d) -> u64 {
+    8 * (experiment.grid.axes.len() + OBSERVABLES_3D.len()) as u64 + 1
+}
+
+/// [`run`] of the cells `part.rows` into `part.path` (a shard: [`crate::shard`]);
+/// `attributes` adds root attributes of the caller's. `/grid` and `/fixed`
+/// describe the whole experiment in every part.
+pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>) -> Result<RunSummary, RunError> {
     let grid = &experiment.grid;
-    let path = out_dir.join(format!("{}.h5", experiment.name));
-    std::fs::create_dir_all(out_dir)
-        .map_err(|e| H5Error::from(crate::output::OutputError::Io { path: out_dir.to_path_buf(), message: e.to_string() }))?;
+    let path = part.path.clone();
+    let out_dir = path.parent().unwrap_or(Path::new("."));
+    let rows = part.rows.end - part.rows.start;
+    crate::limits::check_rows("cells", grid.len(), rows, bytes_per_row(experiment), out_dir)?;
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     let axes: Vec<Column> = grid.axes.iter().map(|a| Column::new(a.parameter.name, a.parameter.unit)).collect();
-    let total = grid.len();
-    let mut writer = SweepWriter::create(&path, &provenance, &axes, &[outcome_set(experiment)], total)?;
+    let mut writer = SweepWriter::create(&path, &provenance, &axes, &[outcome_set(experiment)], rows)?;
     let file = writer.file().clone();
     write_str_attr(&file, &path, "description", &experiment.description)?;
     write_str_attr(&file, &path, "level", "3d")?;
     let coordinates: Vec<(Column, &[f64])> = axes.iter().cloned().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
     write_grid(&file, &path, &coordinates)?;
     // Every parameter not swept, as the first cell was built with it.
-    let fixed = file.create_group("fixed").map_err(|e| H5Error::Hdf5 { path: path.clone(), message: e.to_string() })?;
+    let fixed = new_group(&file, "fixed").map_err(|e| H5Error::Hdf5 { path: path.clone(), message: e.to_string() })?;
     let first = grid.kick(0).map_err(|e| H5Error::Layout { path: path.clone(), message: e.to_string() })?;
     for (def, value) in first.parameter_values() {
         if grid.axes.iter().any(|a| a.parameter.name == def.name) {
@@ -59,12 +72,13 @@ pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunE
         };
         write_column(&fixed, &path, &Column::new(def.name, def.unit), &values)?;
     }
+    attributes(&file)?;
 
     let solve = |i: u64| -> Result<Outcome3d, Kick3dError> { experiment.solver.solve(&grid.kick(i)?) };
-    let mut start = 0;
+    let mut start = part.rows.start;
     let mut outcomes = Vec::with_capacity(CHUNK_ROWS);
-    while start < total {
-        let end = (start + CHUNK_ROWS as u64).min(total);
+    while start < part.rows.end {
+        let end = (start + CHUNK_ROWS as u64).min(part.rows.end);
         (start as usize..end as usize).into_par_iter().map(|i| solve(i as u64)).collect_into_vec(&mut outcomes);
         for (i, outcome) in (start..end).zip(&outcomes) {
             writer.push_parameters(&grid.coordinates(i))?;
@@ -77,7 +91,7 @@ pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunE
     }
     let failures = vec![(outcome_set(experiment).solver, writer.failure_counts()[0])];
     let path = writer.finish()?;
-    Ok(RunSummary { path, scenarios: total, failures })
+    Ok(RunSummary { path, scenarios: rows, failures })
 }
 
 const BLUE: RGBColor = RGBColor(31, 119, 180);

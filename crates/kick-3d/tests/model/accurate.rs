@@ -285,3 +285,27 @@ fn contact_stays_on_the_face_in_the_swept_range() {
         assert!((local.x - hx).abs() < 1e-9 && local.y.abs() < hy && local.z.abs() < hz, "{local:?}");
     }
 }
+
+/// A ball receding slower than the foot's path closes on it (v_n = cos φ
+/// (v_f cos α − v_b) > 0) and is kicked at any offset. Its 1D scenario along
+/// the normal was once built one speed at a time: the foot's normal speed
+/// (8.78 m/s here) met the ball's whole speed (9.49 m/s) and the kick was
+/// refused as "no contact" (42 of `kick sweep3d --samples 20000 --seed 1`,
+/// among them this one, row 1398).
+#[test]
+fn a_receding_ball_is_kicked_off_center() {
+    let (v_f, v_b, alpha_deg, offset) = (13.110409335310111, 9.494053779742554, -4.195003546071373, 0.08153194285731201);
+    let base = Scenario::baseline().with(Parameter::FootSpeed, v_f).unwrap().with(Parameter::BallSpeed, v_b).unwrap();
+    let spec = Kick3dSpec { offset: Some(offset), approach_angle_deg: Some(alpha_deg), friction: Some(4.22403017833182), ..Kick3dSpec::default() };
+    let k = Kick3d::new(base, &spec).expect("in contact: the foot closes along the normal");
+    let cos_phi = (1.0 - (offset / k.ball_radius).powi(2)).sqrt();
+    let alpha = alpha_deg.to_radians();
+    let normal = k.normal_scenario().unwrap();
+    assert!(rel(normal.foot_speed(), v_f * alpha.cos() * cos_phi) < 1e-14, "{}", normal.foot_speed());
+    assert!(rel(normal.ball_speed(), v_b * cos_phi) < 1e-14, "{}", normal.ball_speed());
+    assert!(rel(k.normal_approach_speed(), cos_phi * (v_f * alpha.cos() - v_b)) < 1e-13);
+    let o = solve(&k);
+    // The ball leaves faster than it came, along +x, energy closing.
+    assert!(o.launch_velocity[0] > v_b && o.contact_time > 0.0, "{:?}", o.launch_velocity);
+    assert!(o.energy.residual().abs() < 1e-9 * o.energy.kinetic_initial, "{}", o.energy.residual());
+}

@@ -77,3 +77,65 @@ fn the_slurm_example_run_locally_equals_an_unsharded_run() {
     assert!(!dir.join("again.h5").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The Slurm example with `SWEEP`: `kick sweep3d --shard I/N` per array task
+/// and the merge, run here, equal to one unsharded `kick sweep3d`.
+#[test]
+fn the_slurm_example_shards_a_sweep3d_locally() {
+    let dir = scratch("slurm-sweep");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let out = Command::new("bash")
+        .arg(root.join("experiments/slurm/submit.sh"))
+        .env("PATH", path_without_sbatch())
+        .env("SWEEP", "sweep3d --samples 30 --seed 2")
+        .env("NAME", "spin")
+        .env("OUT", dir.join("shards"))
+        .env("KICK", env!("CARGO_BIN_EXE_kick"))
+        .env("SHARDS", "3")
+        .env_remove("SLURM_CPUS_PER_TASK")
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("shard 1/3: samples 10..20") && stdout.contains("3 shards, 30 rows"), "{stdout}");
+
+    let whole = dir.join("whole/spin.h5");
+    let done = kick(&["sweep3d", "--samples", "30", "--seed", "2", "--out", whole.to_str().unwrap()]);
+    assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
+    let (merged, whole) = (kick_runner::ResultFile::open(&dir.join("shards/spin.h5")).unwrap(), kick_runner::ResultFile::open(&whole).unwrap());
+    for dataset in ["parameters/offset", "parameters/foot_inertia", "outcomes/spin", "outcomes/speed", "outcomes/energy/friction_loss"] {
+        let bits = |f: &kick_runner::ResultFile| f.values(dataset).unwrap().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&merged), bits(&whole), "{dataset}");
+    }
+    assert_eq!(merged.values("outcomes/spin").unwrap().len(), 90);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `kick run --shard I/N` of a 3D experiment and `kick merge`: the same
+/// table, grid and every cell as `kick run` of the whole grid.
+#[test]
+fn a_3d_experiment_runs_in_shards_and_merges() {
+    let dir = scratch("grid3d");
+    let file = dir.join("spin.toml");
+    std::fs::write(&file, "[kick3d]\nfriction = 0.5\n[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.02, 0.04, 0.06, 0.08]\n\
+                          [[sweep]]\nparameter = \"approach_angle\"\nvalues = [-10.0, 10.0]\n").unwrap();
+    let parts = dir.join("parts");
+    let mut names = Vec::new();
+    for given in ["0/2", "1/2"] {
+        let done = kick(&["run", file.to_str().unwrap(), "--out", parts.to_str().unwrap(), "--shard", given]);
+        assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
+        names.push(parts.join(format!("spin.shard-{}-of-2.h5", &given[..1])).to_str().unwrap().to_string());
+    }
+    let merged = dir.join("merged.h5");
+    let done = kick(&["merge", merged.to_str().unwrap(), &names[1], &names[0]]);
+    assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
+    assert!(String::from_utf8_lossy(&done.stdout).contains("2 shards, 10 rows"));
+    let whole = kick(&["run", file.to_str().unwrap(), "--out", dir.join("whole").to_str().unwrap()]);
+    assert!(whole.status.success(), "{}", String::from_utf8_lossy(&whole.stderr));
+    let mut merged = kick_runner::SweepData::read(&merged).unwrap();
+    let whole = kick_runner::SweepData::read(&dir.join("whole/spin.h5")).unwrap();
+    assert_eq!(merged.grid_shape(), Some(vec![5, 2]));
+    merged.path = whole.path.clone();
+    assert_eq!(merged, whole);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -175,6 +175,16 @@ log = {{ from = 0.5, to = 20.0, count = {rows} }}
         if name.ends_with("/message") {
             continue;
         }
+        if name.starts_with("/grid/") {
+            // The axes' names and values (not one per row).
+            let text = |d: &hdf5::Dataset| d.read_raw::<hdf5::types::VarLenUnicode>().map(|v| v.iter().map(|s| s.to_string()).collect::<Vec<_>>());
+            let bits = |d: &hdf5::Dataset| d.read_raw::<f64>().map(|v| v.iter().map(|f| f.to_bits()).collect::<Vec<_>>());
+            match name.as_str() {
+                "/grid/axes" => assert_eq!(text(x).unwrap(), text(y).unwrap()),
+                _ => assert_eq!(bits(x).unwrap(), bits(y).unwrap(), "{name}"),
+            }
+            continue;
+        }
         if name.ends_with("/status") || name.ends_with("/index") {
             let (x, y): (Vec<u64>, Vec<u64>) = (x.read_raw().unwrap(), y.read_raw().unwrap());
             assert_eq!(x, y, "{name}");
@@ -320,5 +330,43 @@ fn table2_file_runs_both_solvers_and_the_report_explains_the_onset_peak() {
     // 120 x 22 and 450 x 22 N.
     assert!(report.contains(&format!("c·V0 = 120 × 22 = {:.1} N", 120.0 * 22.0)), "{report}");
     assert!(report.contains(&format!("c·V0 = 450 × 22 = {:.1} N", 450.0 * 22.0)), "{report}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A 1D grid keeps its shape as a 3D one does: the root attribute
+/// `grid_shape`, `/grid/<axis>` coordinates with units and `/grid/axes`;
+/// every row is the cell `values.reshape(grid_shape)` puts there, and the
+/// table readers see the same eight parameter columns as before.
+#[test]
+fn a_1d_grid_keeps_its_shape() {
+    let dir = scratch("shape");
+    let path = run(&dir, "grid", GRID);
+    let file = hdf5::File::open(&path).expect("open");
+    assert_eq!(kick_runner::h5::read_grid_shape(&file), Some(vec![3, 2]));
+    let axes: Vec<String> = file.dataset("grid/axes").unwrap().read_raw::<hdf5::types::VarLenUnicode>().unwrap().iter().map(|s| s.to_string()).collect();
+    assert_eq!(axes, ["stiffness", "damping"]);
+    let stiffness = log_range(2e5, 8e5, 3);
+    assert_eq!(read(&file, "grid/stiffness"), stiffness);
+    assert_eq!(read(&file, "grid/damping"), [0.0, 120.0]);
+    for p in [Parameter::Stiffness, Parameter::Damping] {
+        let d = file.dataset(&format!("grid/{}", p.name())).unwrap();
+        assert_eq!(read_str_attr(&d, "units").as_deref(), Some(p.unit()));
+    }
+    // C order: row (i, j) = i * 2 + j.
+    let (k, c) = (read(&file, "parameters/stiffness"), read(&file, "parameters/damping"));
+    for (i, &ki) in stiffness.iter().enumerate() {
+        for (j, cj) in [0.0, 120.0].into_iter().enumerate() {
+            assert_eq!((k[i * 2 + j], c[i * 2 + j]), (ki, cj), "cell ({i}, {j})");
+        }
+    }
+    let data = kick_runner::SweepData::read(&path).unwrap();
+    let names: Vec<&str> = data.parameters.iter().map(|(c, _)| c.name.as_str()).collect();
+    assert_eq!(names.len(), 8, "{names:?}");
+    assert_eq!(data.rows(), 6);
+    assert_eq!(data.grid_shape(), Some(vec![3, 2]));
+    assert_eq!((data.grid[0].0.name.as_str(), data.grid[1].1.as_slice()), ("stiffness", [0.0, 120.0].as_slice()));
+    // Named scenarios and single runs have no grid.
+    let single = run(&dir, "single", "solver = \"accurate\"\n[base]\nfoot_mass = 2.0\n");
+    assert_eq!(kick_runner::h5::read_grid_shape(&hdf5::File::open(&single).unwrap()), None);
     let _ = std::fs::remove_dir_all(&dir);
 }

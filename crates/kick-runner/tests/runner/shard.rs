@@ -35,9 +35,10 @@ fn attributes(location: &hdf5::Location) -> BTreeMap<String, Content> {
     for name in location.attr_names().unwrap() {
         let a = location.attr(&name).unwrap();
         let value = content(a.dtype().unwrap(), |t| match t {
-            TypeDescriptor::Float(FloatSize::U8) => Content::F64(vec![a.read_scalar::<f64>().unwrap().to_bits()]),
-            TypeDescriptor::Unsigned(IntSize::U8) => Content::U64(vec![a.read_scalar::<u64>().unwrap()]),
-            TypeDescriptor::Unsigned(IntSize::U1) => Content::U8(vec![a.read_scalar::<u8>().unwrap()]),
+            // Scalars, and lists (`grid_shape`).
+            TypeDescriptor::Float(FloatSize::U8) => Content::F64(a.read_raw::<f64>().unwrap().iter().map(|v| v.to_bits()).collect()),
+            TypeDescriptor::Unsigned(IntSize::U8) => Content::U64(a.read_raw::<u64>().unwrap()),
+            TypeDescriptor::Unsigned(IntSize::U1) => Content::U8(a.read_raw::<u8>().unwrap()),
             TypeDescriptor::VarLenUnicode => Content::Text(vec![a.read_scalar::<VarLenUnicode>().unwrap().to_string()]),
             other => panic!("attribute {name}: {other:?}"),
         });
@@ -138,8 +139,13 @@ fn three_shards_merged_equal_the_unsharded_run() {
     let datasets = assert_same_file(&merged.path, &whole);
     // 8 parameters; per solver 1 status, 2 failure datasets and the observables.
     assert!(datasets > 8 + 2 * 3, "{datasets} datasets compared");
-    let failed: Vec<u64> = hdf5::File::open(&merged.path).unwrap().dataset("failures/index").unwrap().read_raw().unwrap();
+    let file = hdf5::File::open(&merged.path).unwrap();
+    let failed: Vec<u64> = file.dataset("failures/index").unwrap().read_raw().unwrap();
     assert_eq!(failed, failing);
+    // The grid's shape and coordinates, once, as in the unsharded file.
+    assert_eq!(kick_runner::h5::read_grid_shape(&file), Some(vec![3, 3, 2]));
+    assert_eq!(file.dataset("grid/drive_force").unwrap().read_raw::<f64>().unwrap(), [0.0, 1e6, 500.0]);
+    drop(file);
     // Nothing but the merged file in its directory: no temporary or lock file.
     assert_eq!(std::fs::read_dir(dir.join("merged")).unwrap().count(), 1);
     let _ = std::fs::remove_dir_all(&dir);
@@ -202,5 +208,126 @@ fn incomplete_or_mixed_shards_are_refused_by_file_name() {
     assert!(message.contains(&whole.display().to_string()) && message.contains("not a shard file"), "{message}");
     // Nothing written on refusal.
     assert!(!out.exists() && std::fs::read_dir(dir.join("merged")).map_or(0, |d| d.count()) == 0);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Every part ran into `dir/parts`, merged (twice, a second apart) into
+/// `dir/merged`: the merged file equals `whole` object by object, and the
+/// two merges are the same bytes (no time stamps).
+fn merge_and_compare(dir: &Path, name: &str, parts: &[PathBuf], whole: &Path) -> usize {
+    let merged = merge(&dir.join(format!("merged/{name}.h5")), parts).unwrap();
+    let datasets = assert_same_file(&merged.path, whole);
+    std::thread::sleep(std::time::Duration::from_millis(1100));
+    let again = merge(&dir.join(format!("again/{name}.h5")), parts).unwrap();
+    assert!(std::fs::read(&merged.path).unwrap() == std::fs::read(&again.path).unwrap(), "two merges of {name} differ in bytes");
+    datasets
+}
+
+const GRID3D: &str = r#"
+description = "3D shard test grid"
+[kick3d]
+friction = 0.6
+[[sweep]]
+parameter = "foot_speed"
+values = [16.0, 22.0, 28.0]
+[[sweep]]
+parameter = "offset"
+linear = { from = 0.0, to = 0.08, count = 3 }
+"#;
+
+/// `kick run --shard` of a 3D experiment: three shards merged equal the
+/// unsharded run, `/grid`, `/fixed` and every cell; a shard holds its own cells.
+#[test]
+fn a_3d_experiment_in_three_shards_merges_to_the_unsharded_run() {
+    let dir = scratch("grid3d");
+    let file = dir.join("g3.toml");
+    std::fs::write(&file, GRID3D).unwrap();
+    let whole = kick_runner::run::run_file(&file, &dir.join("whole")).unwrap().summary.path;
+    let parts: Vec<PathBuf> = ["2/3", "0/3", "1/3"]
+        .iter()
+        .map(|given| kick_runner::shard::run_file(&file, &dir.join("parts"), Some(given)).unwrap().summary.path)
+        .collect();
+    // Shard 1 of 3 of 9 cells: cells 3..6 (foot speed 22 m/s), the whole grid's shape.
+    let middle = hdf5::File::open(dir.join("parts/g3.shard-1-of-3.h5")).unwrap();
+    assert_eq!(read_u64_attr(&middle, "rows"), Some(3));
+    assert_eq!(kick_runner::h5::read_grid_shape(&middle), Some(vec![3, 3]));
+    assert_eq!(middle.dataset("parameters/foot_speed").unwrap().read_raw::<f64>().unwrap(), [22.0; 3]);
+    assert_eq!(middle.dataset("parameters/offset").unwrap().read_raw::<f64>().unwrap(), [0.0, 0.04, 0.08]);
+    drop(middle);
+    let datasets = merge_and_compare(&dir, "g3", &parts, &whole);
+    // 2 axes, the 3D outcomes, status, failures (2), grid (2 axes + names), fixed.
+    assert!(datasets > 2 + kick_3d::OBSERVABLES_3D.len() + 3 + 3, "{datasets}");
+    let merged = hdf5::File::open(dir.join("merged/g3.h5")).unwrap();
+    assert_eq!(merged.dataset("fixed/friction").unwrap().read_raw::<f64>().unwrap(), [0.6]);
+    assert_eq!(kick_runner::h5::read_grid_shape(&merged), Some(vec![3, 3]));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `kick sweep --shard I/N`: three parts merged equal the unsharded sweep;
+/// sample i is the same scenario in its shard as in the whole sweep.
+#[test]
+fn a_sweep_in_three_shards_merges_to_the_unsharded_sweep() {
+    use kick_runner::sweep::{sweep, SweepSettings};
+    let dir = scratch("sweep");
+    let settings = |out: PathBuf, shard: Option<&str>| SweepSettings {
+        samples: 200,
+        seed: 5,
+        solver: "auto".into(),
+        dt: 5e-6,
+        out,
+        fixed: Default::default(),
+        shard: shard.map(String::from),
+        threads: None,
+    };
+    let whole = sweep(&settings(dir.join("whole/s.h5"), None)).unwrap();
+    assert_eq!(whole.path, dir.join("whole/s.h5"));
+    let parts: Vec<PathBuf> = ["1/3", "2/3", "0/3"]
+        .iter()
+        .map(|given| sweep(&settings(dir.join("parts/s.h5"), Some(given))).unwrap().path)
+        .collect();
+    assert_eq!(parts[0], dir.join("parts/s.shard-1-of-3.h5"));
+    // Shard 1 of 3 of 200 samples: samples 66..133, drawn from (seed, i).
+    let middle = hdf5::File::open(&parts[0]).unwrap();
+    let mass: Vec<f64> = middle.dataset("parameters/foot_mass").unwrap().read_raw().unwrap();
+    let sampled = kick_runner::sample::SampledSweep::new(200, 5);
+    let expected: Vec<f64> = (66..133).map(|i| sampled.scenario(i).map_or(f64::NAN, |s| s.get(kick_core::Parameter::FootMass))).collect();
+    assert_eq!(mass.len(), 67);
+    assert!(mass.iter().zip(&expected).all(|(a, b)| a.to_bits() == b.to_bits()));
+    drop(middle);
+    merge_and_compare(&dir, "s", &parts, &whole.path);
+    // A part of another seed is another sweep.
+    let mut other = settings(dir.join("other/s.h5"), Some("0/3"));
+    other.seed = 6;
+    let foreign = sweep(&other).unwrap().path;
+    let message = merge(&dir.join("bad/s.h5"), &[parts[0].clone(), parts[1].clone(), foreign.clone()]).unwrap_err().to_string();
+    assert!(message.contains("different experiments") && message.contains(&foreign.display().to_string()), "{message}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `kick sweep3d --shard I/N`: three parts merged equal the unsharded sweep
+/// ([rows, 3] vectors, energy, failures renumbered), and each part's rows
+/// are the whole sweep's rows of its slice.
+#[test]
+fn a_sweep3d_in_three_shards_merges_to_the_unsharded_sweep() {
+    use kick_runner::sweep3d::{sweep3d, Sweep3dSettings};
+    let dir = scratch("sweep3d");
+    let settings = |out: PathBuf, shard: Option<&str>| {
+        let mut fixed = kick_3d::KickSpec::default();
+        fixed.scenario.law = Some(kick_core::LawKind::PowerLaw);
+        Sweep3dSettings { samples: 40, seed: 3, out, fixed, shard: shard.map(String::from), threads: None }
+    };
+    let whole = sweep3d(&settings(dir.join("whole/k.h5"), None)).unwrap();
+    assert_eq!(whole.kicks, 40);
+    let parts: Vec<PathBuf> =
+        ["0/3", "2/3", "1/3"].iter().map(|given| sweep3d(&settings(dir.join("parts/k.h5"), Some(given))).unwrap().path).collect();
+    let part = hdf5::File::open(&parts[1]).unwrap();
+    let whole_file = hdf5::File::open(&whole.path).unwrap();
+    // Shard 2 of 3 of 40: samples 26..40.
+    assert_eq!((read_u64_attr(&part, "shard_row_start"), read_u64_attr(&part, "rows"), read_u64_attr(&part, "samples")), (Some(26), Some(14), Some(40)));
+    let spin: Vec<f64> = part.dataset("outcomes/spin").unwrap().read_raw().unwrap();
+    let all: Vec<f64> = whole_file.dataset("outcomes/spin").unwrap().read_raw().unwrap();
+    assert!(spin.iter().zip(&all[26 * 3..]).all(|(a, b)| a.to_bits() == b.to_bits()) && spin.len() == 14 * 3);
+    drop((part, whole_file));
+    merge_and_compare(&dir, "k", &parts, &whole.path);
     let _ = std::fs::remove_dir_all(&dir);
 }

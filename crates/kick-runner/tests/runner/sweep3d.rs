@@ -19,7 +19,7 @@ fn scratch(name: &str) -> PathBuf {
 fn settings(samples: u64, seed: u64, out: &Path) -> Sweep3dSettings {
     let mut fixed = KickSpec::default();
     fixed.scenario.law = Some(LawKind::PowerLaw);
-    Sweep3dSettings { samples, seed, out: out.to_path_buf(), fixed }
+    Sweep3dSettings { samples, seed, out: out.to_path_buf(), fixed, shard: None, threads: None }
 }
 
 /// Rows of a [rows] or [rows, 3] dataset as [x, y, z] (NaN-padded).
@@ -178,6 +178,24 @@ fn bad_settings_are_refused_by_name() {
     s.fixed.scenario.law = Some(LawKind::Flores);
     let error = sweep3d(&s).unwrap_err();
     assert!(error.contains("restitution"), "{error}");
+    for (given, says) in [("5/5", "numbered from 0 to 4"), ("2", "expected I/N")] {
+        let mut s = settings(5, 1, &dir.join("a.h5"));
+        s.shard = Some(given.into());
+        let error = sweep3d(&s).unwrap_err();
+        assert!(error.starts_with(&format!("`--shard` = `{given}`")) && error.contains(says), "{error}");
+        let error = kick_runner::sweep::sweep(&kick_runner::sweep::SweepSettings {
+            samples: 5,
+            seed: 1,
+            solver: "auto".into(),
+            dt: 5e-6,
+            out: dir.join("b.h5"),
+            fixed: Default::default(),
+            shard: Some(given.into()),
+            threads: None,
+        })
+        .unwrap_err();
+        assert!(error.starts_with(&format!("`--shard` = `{given}`")), "{error}");
+    }
     // Nothing was written.
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
     std::fs::remove_dir_all(&dir).unwrap();
