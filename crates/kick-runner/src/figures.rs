@@ -7,7 +7,6 @@
 
 use crate::h5::{read_history, Column, H5Error, SweepData};
 use crate::output::{OutputError, Staged};
-use kick_core::paper::TABLE2;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
@@ -682,11 +681,8 @@ pub fn figure7(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> 
     let path = results.join("figure7.h5");
     let data = SweepData::read(&path)?;
     let names = data.names.clone().ok_or_else(|| draw_err("figure7")("no scenario_names".into()))?;
-    // The paper's printed values, matched by row name.
-    let printed: Vec<f64> = names
-        .iter()
-        .map(|n| TABLE2.iter().find(|r| r.name == n).map_or(f64::NAN, |r| r.v_ball_out))
-        .collect();
+    // The paper's printed values, stored beside the computed ones.
+    let printed = crate::h5::ResultFile::open(&path)?.values("paper/v_ball_out")?;
     let mut groups = vec![("paper (printed)".to_string(), printed)];
     for set in &data.sets {
         let v = set.column("v_ball_out").ok_or_else(|| draw_err("figure7")("no v_ball_out".into()))?;

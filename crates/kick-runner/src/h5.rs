@@ -18,6 +18,7 @@
 //! /histories/<row>/<name>  time histories of that row (when recorded)
 //! /solvers/<solver>/...  outcomes, failures and histories of every further solver
 //! /scenario_names        string[rows] (named scenarios only)
+//! /paper/<column>        f64[rows], Table 2 as printed, when every row is one of its rows
 //! /grid/<axis>           f64[n] the values of each axis of a grid experiment, attribute
 //!                        units; /grid/axes string[axes] their names in axis order; root
 //!                        attribute grid_shape u64[axes] (grids only, see [`write_grid`])
@@ -286,6 +287,35 @@ struct SetWriter {
 pub fn disable_file_locking() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| std::env::set_var("HDF5_USE_FILE_LOCKING", "FALSE"));
+}
+
+/// Columns of `/paper` (Table 2 as printed): name, unit, value of a row.
+type PrintedColumn = (&'static str, &'static str, fn(&kick_core::paper::PrintedRow) -> f64);
+const PRINTED_COLUMNS: [PrintedColumn; 5] = [
+    ("v_ball_out", "m/s", |r| r.v_ball_out),
+    ("speed_ratio", "1", |r| r.speed_ratio),
+    ("peak_force", "N", |r| r.peak_force),
+    ("contact_time_ms", "ms", |r| r.contact_time_ms),
+    ("max_compression_mm", "mm", |r| r.max_compression_mm),
+];
+
+/// When every one of `names` is a row of the paper's Table 2, the printed
+/// values of those rows beside the computed ones: `/paper/<column>`, one
+/// entry per row as the paper prints it (digits and units of Table 2).
+/// Other named experiments get nothing.
+pub fn write_printed_table2(file: &File, path: &Path, names: &[String]) -> Result<(), H5Error> {
+    let rows: Option<Vec<&kick_core::paper::PrintedRow>> =
+        names.iter().map(|n| kick_core::paper::TABLE2.iter().find(|r| r.name == n.as_str())).collect();
+    let Some(rows) = rows.filter(|r| !r.is_empty()) else {
+        return Ok(());
+    };
+    let group = new_group(file, "paper").map_err(h5err(path))?;
+    write_str_attr(&group, path, "source", "Table 2 of the paper, as printed")?;
+    for (name, unit, value) in PRINTED_COLUMNS {
+        let values: Vec<f64> = rows.iter().map(|r| value(r)).collect();
+        write_column(&group, path, &Column::new(name, unit), &values)?;
+    }
+    Ok(())
 }
 
 /// Streams a sweep into a new result file.

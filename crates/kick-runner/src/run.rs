@@ -327,6 +327,7 @@ pub fn run_part(
     if let Some(names) = experiment.scenarios.names() {
         let names = &names[part.rows.start as usize..part.rows.end as usize];
         crate::h5::write_strings(writer.file(), &path, "scenario_names", names)?;
+        crate::h5::write_printed_table2(writer.file(), &path, names)?;
     }
     if let Scenarios::Grid { axes, .. } = &experiment.scenarios {
         // The grid's shape (the whole experiment's, in a shard too).

@@ -522,6 +522,7 @@ fn kind(path: &str) -> Option<Kind> {
     let groups = &groups[..groups.len().saturating_sub(1)];
     match groups.first() {
         Some(&"grid") | Some(&"fixed") => Some(Kind::Whole),
+        Some(&"paper") => Some(Kind::PerRow),
         _ if path == "/scenario_names" => Some(Kind::PerRow),
         _ if groups.iter().any(|g| matches!(*g, "parameters" | "outcomes" | "failures")) => Some(Kind::PerRow),
         _ => None,

@@ -308,6 +308,20 @@ fn table2_file_runs_both_solvers_and_the_report_explains_the_onset_peak() {
     let data = kick_runner::SweepData::read(&out.join("table2.h5")).unwrap();
     assert_eq!(data.sets.iter().map(|s| s.solver.as_str()).collect::<Vec<_>>(), ["seed-rk4", "accurate"]);
     assert_eq!(data.names.as_ref().map(Vec::len), Some(8));
+    // The paper's printed values beside the computed ones (Table 2: baseline
+    // 31.98 m/s and 3804 N, highly damped 9853 N and 5.10 ms), matched by row.
+    let file = kick_runner::ResultFile::open(&out.join("table2.h5")).unwrap();
+    let names = data.names.as_ref().unwrap();
+    let printed = |column: &str, row: &str| file.values(&format!("paper/{column}")).unwrap()[names.iter().position(|n| n == row).unwrap()];
+    assert_eq!(printed("v_ball_out", "Baseline"), 31.98);
+    assert_eq!(printed("peak_force", "Baseline"), 3804.0);
+    assert_eq!(printed("peak_force", "Highly damped"), 9853.0);
+    assert_eq!(printed("contact_time_ms", "Highly damped"), 5.10);
+    // seed-rk4 reproduces every printed exit speed to its two decimals.
+    let computed = data.sets[0].column("v_ball_out").unwrap();
+    for (row, v) in computed.iter().enumerate() {
+        assert_eq!(format!("{v:.2}"), format!("{:.2}", printed("v_ball_out", &names[row])), "{}", names[row]);
+    }
 
     let figures = kick_runner::figures::draw_all(&out, &out.join("figures")).expect("figures");
     assert_eq!(figures.len(), 14);
