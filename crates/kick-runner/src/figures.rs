@@ -138,6 +138,76 @@ fn padded(min: f64, max: f64) -> (f64, f64) {
     (min - 0.05 * span, max + 0.05 * span)
 }
 
+/// Font size of legends, px.
+const LEGEND_FONT: u32 = 15;
+/// Height of a panel's caption (22 px font and its gap), px.
+const CAPTION_HEIGHT: f64 = 32.0;
+
+/// Where a legend of `size` (px) covers no point or line of `series` in a plot
+/// of `plot` px showing `range` = (x0, x1, y0, y1): the preferred corner if
+/// free, else the first free one of the corners and edge middles; when every
+/// place covers data, the upper corner on the preferred side with the y range
+/// raised until the data stays below the legend. Returns the place and the
+/// (maybe raised) top of the y range.
+pub fn legend_place(
+    series: &[Vec<(f64, f64)>],
+    range: (f64, f64, f64, f64),
+    plot: (f64, f64),
+    size: (f64, f64),
+    preferred: &SeriesLabelPosition,
+) -> (SeriesLabelPosition, f64) {
+    use SeriesLabelPosition::*;
+    let (x0, x1, y0, y1) = range;
+    if let Coordinate(..) = preferred {
+        return (preferred.clone(), y1);
+    }
+    let (w, h) = plot;
+    let px = |(x, y): (f64, f64), top: f64| ((x - x0) / (x1 - x0) * w, (top - y) / (top - y0) * h);
+    // The box plotters draws (5 px from the edges), with a few px of air.
+    let rect = |place: &SeriesLabelPosition| -> (f64, f64, f64, f64) {
+        let left = match place {
+            UpperLeft | MiddleLeft | LowerLeft => 5.0,
+            UpperMiddle | MiddleMiddle | LowerMiddle => (w - size.0) / 2.0,
+            _ => w - size.0 - 5.0,
+        };
+        let top = match place {
+            UpperLeft | UpperMiddle | UpperRight => 5.0,
+            MiddleLeft | MiddleMiddle | MiddleRight => (h - size.1) / 2.0,
+            _ => h - size.1 - 5.0,
+        };
+        (left - 6.0, left + size.0 + 6.0, top - 6.0, top + size.1 + 6.0)
+    };
+    let covers = |place: &SeriesLabelPosition, top: f64| {
+        let (l, r, t, b) = rect(place);
+        let inside = |(x, y): (f64, f64)| x >= l && x <= r && y >= t && y <= b;
+        series.iter().any(|points| {
+            points.iter().any(|&p| inside(px(p, top)))
+                || points.windows(2).any(|pair| {
+                    // Along each segment, a sample every 2 px.
+                    let (a, b) = (px(pair[0], top), px(pair[1], top));
+                    let n = ((b.0 - a.0).hypot(b.1 - a.1) / 2.0).ceil().min(10_000.0) as usize;
+                    (1..n).any(|k| {
+                        let f = k as f64 / n as f64;
+                        inside((a.0 + f * (b.0 - a.0), a.1 + f * (b.1 - a.1)))
+                    })
+                })
+        })
+    };
+    let candidates = [preferred.clone(), UpperRight, UpperLeft, LowerRight, LowerLeft, MiddleRight, MiddleLeft, UpperMiddle, LowerMiddle];
+    if let Some(free) = candidates.iter().find(|c| !covers(c, y1)) {
+        return (free.clone(), y1);
+    }
+    // Raise the top until the highest data point is below the legend.
+    let upper = match preferred {
+        UpperLeft | MiddleLeft | LowerLeft => UpperLeft,
+        _ => UpperRight,
+    };
+    let y_max = series.iter().flatten().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+    let f = ((size.1 + 20.0) / h).min(0.75);
+    let top = if y_max.is_finite() { ((y_max - f * y0) / (1.0 - f)).max(y1) } else { y1 };
+    (upper, top)
+}
+
 fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Result<(), String> {
     let tx = |x: f64| if panel.log_x { x.log10() } else { x };
     let xs = panel.series.iter().flat_map(|s| s.points.iter().map(|p| tx(p.0)));
@@ -150,6 +220,21 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
     }
     let (x0, x1) = if panel.log_x { (x0, x1) } else { padded(x0, x1) };
     let (y0, y1) = padded(y0, y1);
+    // The legend goes where it covers no data, or above the data.
+    let labels: Vec<&str> = panel.series.iter().filter(|s| !s.label.is_empty()).map(|s| s.label.as_str()).collect();
+    let (legend, y1) = if labels.len() > 1 {
+        let font: TextStyle = (FAMILY, LEGEND_FONT).into_font().into();
+        let widest = labels.iter().map(|l| area.estimate_text_size(l, &font).map_or(0, |(w, _)| w)).max().unwrap_or(0);
+        let (w, h) = area.dim_in_pixel();
+        // The plotting area inside the chart's margins, label areas and caption.
+        let plot = ((w as f64 - 2.0 * 12.0 - 78.0).max(1.0), (h as f64 - 2.0 * 12.0 - 48.0 - CAPTION_HEIGHT).max(1.0));
+        let legend_box = (widest as f64 + 30.0 + 20.0, labels.len() as f64 * LEGEND_FONT as f64 * 1.25 + 20.0);
+        let points: Vec<Vec<(f64, f64)>> =
+            panel.series.iter().map(|s| s.points.iter().map(|&(x, y)| (tx(x), y)).collect()).collect();
+        legend_place(&points, (x0, x1, y0, y1), plot, legend_box, &panel.legend)
+    } else {
+        (panel.legend.clone(), y1)
+    };
     let mut chart = ChartBuilder::on(area)
         .caption(&panel.title, (FAMILY, 22))
         .margin(12)
@@ -202,10 +287,10 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
     if panel.series.iter().filter(|s| !s.label.is_empty()).count() > 1 {
         chart
             .configure_series_labels()
-            .label_font((FAMILY, 15))
+            .label_font((FAMILY, LEGEND_FONT))
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
-            .position(panel.legend.clone())
+            .position(legend)
             .draw()
             .map_err(|e| e.to_string())?;
     }

@@ -39,7 +39,17 @@ pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunE
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     let axes: Vec<Column> = grid.axes.iter().map(|a| Column::new(a.parameter.name, a.parameter.unit)).collect();
     let total = grid.len();
-    let mut writer = SweepWriter::create(&path, &provenance, &axes, &[outcome_set(experiment)], total)?;
+    let kick_set = outcome_set(experiment);
+    let mut sets = vec![kick_set.clone()];
+    if let Some(rest) = &experiment.flight {
+        let flown = kick_flight::Flight::from_launch([1.0, 0.0, 1.0], [0.0; 3], &kick_flight::FlightSpec {
+            gravity: Some(kick_core::GRAVITY),
+            ..*rest
+        })
+        .ok();
+        sets.push(crate::flight::flight_set(&kick_set.solver, rest, flown.as_ref()));
+    }
+    let mut writer = SweepWriter::create(&path, &provenance, &axes, &sets, total)?;
     let file = writer.file().clone();
     write_str_attr(&file, &path, "description", &experiment.description)?;
     write_str_attr(&file, &path, "level", "3d")?;
@@ -60,7 +70,17 @@ pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunE
         write_column(&fixed, &path, &Column::new(def.name, def.unit), &values)?;
     }
 
-    let solve = |i: u64| -> Result<Outcome3d, Kick3dError> { experiment.solver.solve(&grid.kick(i)?) };
+    // The kick, and with `[flight]` its flight (in `flight_columns` order).
+    let solve = |i: u64| -> (Result<Outcome3d, Kick3dError>, Option<Result<Vec<f64>, String>>) {
+        let kick = grid.kick(i);
+        let outcome = kick.as_ref().map_err(Clone::clone).and_then(|k| experiment.solver.solve(k));
+        let flight = experiment.flight.as_ref().map(|rest| match (&kick, &outcome) {
+            (Ok(k), Ok(o)) => crate::flight::after_3d(k, o, rest)
+                .map(|run| crate::flight::flight_values(&run.outcome, rest.distance.is_some())),
+            (Err(e), _) | (_, Err(e)) => Err(format!("no flight: the kick failed: {e}")),
+        });
+        (outcome, flight)
+    };
     let mut start = 0;
     let mut outcomes = Vec::with_capacity(CHUNK_ROWS);
     while start < total {
@@ -68,14 +88,20 @@ pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunE
         (start as usize..end as usize).into_par_iter().map(|i| solve(i as u64)).collect_into_vec(&mut outcomes);
         for (i, outcome) in (start..end).zip(&outcomes) {
             writer.push_parameters(&grid.coordinates(i))?;
-            match outcome {
+            match &outcome.0 {
                 Ok(o) => writer.push_outcome(0, Ok(&o.observable_values()))?,
                 Err(e) => writer.push_outcome(0, Err(&e.to_string()))?,
+            }
+            match &outcome.1 {
+                Some(Ok(values)) => writer.push_outcome(1, Ok(values))?,
+                Some(Err(e)) => writer.push_outcome(1, Err(e))?,
+                None => {}
             }
         }
         start = end;
     }
-    let failures = vec![(outcome_set(experiment).solver, writer.failure_counts()[0])];
+    let names = sets.iter().map(|s| s.solver.clone());
+    let failures = names.zip(writer.failure_counts()).collect();
     let path = writer.finish()?;
     Ok(RunSummary { path, scenarios: total, failures })
 }
