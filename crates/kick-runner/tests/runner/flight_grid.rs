@@ -109,3 +109,59 @@ fn bad_flight_keys_name_file_line_and_key() {
     let e = at("level = \"3d\"\n[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, inf]\n");
     assert_eq!((e.line, e.key.as_str()), (4, "sweep.offset"), "{e}");
 }
+
+/// The free kicks: the file holds each row's rotated launch and its flight
+/// (bit for bit a flight solved from that launch), a kick straight through
+/// the centre's vertical plane stays in it, and the pages and figures are
+/// written from the files (KICK_FIGURES_DIR keeps them to look at).
+#[test]
+fn free_kicks_and_the_generated_3d_and_flight_pages() {
+    let dir = std::env::var("KICK_FIGURES_DIR").map(std::path::PathBuf::from).unwrap_or_else(|_| scratch("pages"));
+    let experiments = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../experiments/3d");
+    for name in ["offset_friction", "offset", "friction", "approach_angle"] {
+        let run = kick_runner::run::run_file(&experiments.join(format!("{name}.toml")), &dir).unwrap();
+        kick_runner::three_d::figures(&run.summary.path, &dir.join("figures")).unwrap();
+    }
+    let written = kick_runner::pages_3d::write_all(&dir, &dir.join("paper"), &mut std::io::sink()).unwrap();
+    let path = &written[0];
+    let data = SweepData::read(path).unwrap();
+    let (launch, goal) = (data.set("launch").unwrap(), data.set("goal").unwrap());
+    let mut straight = 0;
+    for r in 0..data.rows() {
+        let (e, mu) = (data.parameter("lateral_offset").unwrap()[r], data.parameter("friction").unwrap()[r]);
+        let k = kick_runner::free_kick::FreeKick::new(e, mu).unwrap();
+        // The rotation keeps speed and spin magnitude of the lateral kick.
+        let norm = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        assert!((norm(k.launch_velocity) - k.outcome.speed).abs() < 1e-12 * k.outcome.speed);
+        assert!((norm(k.spin) - norm(k.outcome.spin)).abs() < 1e-12 * norm(k.outcome.spin));
+        assert!(k.launch_velocity[2] > 0.0 && k.spin[1] < 0.0, "row {r}: the ball must rise with backspin");
+        let o = kick_flight::solve(&k.flight(25.0).unwrap()).unwrap();
+        for ((name, _), v) in flight_columns(true).iter().zip(flight_values(&o, true)) {
+            assert!(same(goal.column(name).unwrap()[r], v), "{name} at row {r}");
+        }
+        for (i, name) in ["launch_velocity_x", "launch_velocity_y", "launch_velocity_z"].iter().enumerate() {
+            assert!(same(launch.column(name).unwrap()[r], k.launch_velocity[i]));
+        }
+        if e == 0.0 {
+            // Contact straight below the centre: no sideways launch, spin or drift.
+            assert_eq!((k.launch_velocity[1], k.spin[0], k.spin[2]), (0.0, 0.0, 0.0));
+            assert_eq!(goal.column("crossing_lateral_offset").unwrap()[r], 0.0);
+            straight += 1;
+        }
+    }
+    assert_eq!(straight, 4);
+    let figures: Vec<_> = ["flight_free_kick.png", "flight_deflection.png", "3d_offset_friction.png", "3d_offset_friction_tradeoff.png"]
+        .iter()
+        .map(|f| dir.join("figures").join(f))
+        .collect();
+    assert!(figures.iter().all(|f| f.exists()), "{figures:?}");
+    for page in ["3d.md", "flight.md"] {
+        let text = std::fs::read_to_string(dir.join("paper").join(page)).unwrap();
+        assert!(!text.contains("NaN") && !text.contains("inf "), "{page}");
+        // Timings live on timing.md only.
+        assert!(!text.contains(" µs") && !text.contains(" ms per"), "{page}");
+    }
+    if std::env::var("KICK_FIGURES_DIR").is_err() {
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
