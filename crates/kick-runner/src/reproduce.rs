@@ -319,7 +319,7 @@ impl Drop for Scratch {
 /// otherwise. Left out: the timing outputs (`OUT/timing/`, `timing.md`).
 /// Every regenerated file is compared; a committed file under OUT that is
 /// no longer generated is a difference too. The report's folder may hold
-/// hand-written pages (e.g. `3d.md`): they are copied into the temporary
+/// hand-written pages: they are copied into the temporary
 /// folder first, so the report links them as in the checkout.
 pub fn check(args: &ReproduceSettings, log: &mut dyn Write) -> Result<CheckReport, String> {
     static SEQUENCE: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
