@@ -718,3 +718,53 @@ pub fn draw_all(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError>
     }
     Ok(written)
 }
+
+#[cfg(test)]
+mod legend_tests {
+    use super::legend_place;
+    use plotters::prelude::SeriesLabelPosition::{self, *};
+
+    /// Pixel box of a legend placed by plotters (5 px from the edges).
+    fn covered(points: &[(f64, f64)], range: (f64, f64, f64, f64), plot: (f64, f64), size: (f64, f64), place: &SeriesLabelPosition) -> bool {
+        let (x0, x1, y0, y1) = range;
+        let (left, top) = match place {
+            UpperLeft => (5.0, 5.0),
+            UpperRight => (plot.0 - size.0 - 5.0, 5.0),
+            LowerLeft => (5.0, plot.1 - size.1 - 5.0),
+            LowerRight => (plot.0 - size.0 - 5.0, plot.1 - size.1 - 5.0),
+            other => panic!("unexpected place {other:?}"),
+        };
+        points.iter().any(|&(x, y)| {
+            let (px, py) = ((x - x0) / (x1 - x0) * plot.0, (y1 - y) / (y1 - y0) * plot.1);
+            px >= left && px <= left + size.0 && py >= top && py <= top + size.1
+        })
+    }
+
+    /// A rising line leaves the upper left and lower right free: the
+    /// preferred upper right is refused for the first free corner.
+    #[test]
+    fn the_legend_moves_off_the_data() {
+        let line: Vec<(f64, f64)> = (0..=100).map(|i| (i as f64, i as f64)).collect();
+        let range = (0.0, 100.0, 0.0, 100.0);
+        let (plot, size) = ((500.0, 400.0), (150.0, 80.0));
+        assert!(covered(&line, range, plot, size, &UpperRight));
+        let (place, top) = legend_place(&[line.clone()], range, plot, size, &UpperRight);
+        assert_eq!(top, 100.0);
+        assert!(matches!(place, UpperLeft | LowerRight), "{place:?}");
+        assert!(!covered(&line, range, plot, size, &place));
+    }
+
+    /// Data across the whole plot: the top of the y range is raised until
+    /// the highest point is below the legend's box.
+    #[test]
+    fn without_a_free_place_the_range_grows_above_the_data() {
+        let band: Vec<(f64, f64)> = (0..=400).map(|i| (i as f64 / 4.0, if i % 2 == 0 { 0.0 } else { 100.0 })).collect();
+        let range = (0.0, 100.0, 0.0, 100.0);
+        let (plot, size) = ((500.0, 400.0), (150.0, 80.0));
+        let (place, top) = legend_place(&[band.clone()], range, plot, size, &UpperRight);
+        assert_eq!(place, UpperRight);
+        // The highest data point maps below the box's lower edge: (top − 100)/top · 400 ≥ 80 + 5.
+        assert!((top - 100.0) / top * 400.0 >= 85.0, "{top}");
+        assert!(!covered(&band, (0.0, 100.0, 0.0, top), plot, size, &place));
+    }
+}
