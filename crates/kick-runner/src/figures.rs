@@ -748,7 +748,7 @@ mod legend_tests {
         let range = (0.0, 100.0, 0.0, 100.0);
         let (plot, size) = ((500.0, 400.0), (150.0, 80.0));
         assert!(covered(&line, range, plot, size, &UpperRight));
-        let (place, top) = legend_place(&[line.clone()], range, plot, size, &UpperRight);
+        let (place, top) = legend_place(std::slice::from_ref(&line), range, plot, size, &UpperRight);
         assert_eq!(top, 100.0);
         assert!(matches!(place, UpperLeft | LowerRight), "{place:?}");
         assert!(!covered(&line, range, plot, size, &place));
@@ -761,7 +761,7 @@ mod legend_tests {
         let band: Vec<(f64, f64)> = (0..=400).map(|i| (i as f64 / 4.0, if i % 2 == 0 { 0.0 } else { 100.0 })).collect();
         let range = (0.0, 100.0, 0.0, 100.0);
         let (plot, size) = ((500.0, 400.0), (150.0, 80.0));
-        let (place, top) = legend_place(&[band.clone()], range, plot, size, &UpperRight);
+        let (place, top) = legend_place(std::slice::from_ref(&band), range, plot, size, &UpperRight);
         assert_eq!(place, UpperRight);
         // The highest data point maps below the box's lower edge: (top − 100)/top · 400 ≥ 80 + 5.
         assert!((top - 100.0) / top * 400.0 >= 85.0, "{top}");

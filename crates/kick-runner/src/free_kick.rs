@@ -250,7 +250,7 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     let mut top = Vec::new();
     let mut side = Vec::new();
     let mut drawn = 0;
-    for row in 0..data.rows() {
+    for (row, &friction) in frictions.iter().enumerate() {
         let Ok(h) = crate::h5::read_history(h5, &goal.group, row) else { continue };
         let get = |name: &str| h.iter().find(|(c, _)| c.name == name).map(|(_, v)| v.clone()).ok_or_else(|| missing(name));
         let (x, y, z) = (get("x")?, get("y")?, get("z")?);
@@ -259,7 +259,7 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
         let (x, y, z) = (&x[..shown], &y[..shown], &z[..shown]);
         let mut line = Series::line(&label(row), color(drawn), x, y);
         let mut height = Series::line(&label(row), color(drawn), x, z);
-        if frictions[row].is_infinite() {
+        if friction.is_infinite() {
             line = line.dashed();
             height = height.dashed();
         }

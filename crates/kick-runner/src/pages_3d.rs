@@ -486,7 +486,7 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
          the ball; as the offset grows more of the launch goes sideways and the speed drops, so the ball passes \
          lower: at μ = 0.5 its centre is {} m high at the wall ({} m) for e = 0 and {} m at e = {} cm, and balls \
          launched from offsets above {} cm land before the goal line. The launch direction itself swings out with \
-         the offset (the tilted normal of the rigid geometry, [3d.md](3d.md)), more than a kicker's ball does: a \
+         the offset (the tilted normal of the rigid geometry, [3d.md](3d.md)): a \
          rigid sphere cannot wrap around the foot, so the model's free kick has to be aimed by turning the whole \
          kick about the vertical, which the flight does not change.\n",
         sig(curve(widest), 3),

@@ -19,6 +19,9 @@ use kick_core::parameters::Value;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
+/// A row's flight values ([`crate::flight::flight_columns`] order) or why there is none.
+type FlightRow = Result<Vec<f64>, String>;
+
 /// The outcome set of a 3D run: the solver, its law and the 3D columns.
 fn outcome_set(experiment: &Experiment3d) -> OutcomeSet {
     OutcomeSet {
@@ -70,7 +73,7 @@ pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunE
     }
 
     // The kick, and with `[flight]` its flight (in `flight_columns` order).
-    let solve = |i: u64| -> (Result<Outcome3d, Kick3dError>, Option<Result<Vec<f64>, String>>) {
+    let solve = |i: u64| -> (Result<Outcome3d, Kick3dError>, Option<FlightRow>) {
         let kick = grid.kick(i);
         let outcome = kick.as_ref().map_err(Clone::clone).and_then(|k| experiment.solver.solve(k));
         let flight = experiment.flight.as_ref().map(|rest| match (&kick, &outcome) {
