@@ -90,7 +90,11 @@ impl OutputSize {
     pub fn of(experiment: &Experiment) -> OutputSize {
         let rows = experiment.scenarios.len();
         let solvers = experiment.solvers.len() as u64;
-        let per_row = 8 * kick_core::Parameter::ALL.len() as u64 + solvers * (8 * OBSERVABLES.len() as u64 + 1);
+        let mut per_row = 8 * kick_core::Parameter::ALL.len() as u64 + solvers * (8 * OBSERVABLES.len() as u64 + 1);
+        if let Some(flight) = &experiment.flight {
+            // A flight set per solver (`[flight]`).
+            per_row += solvers * (8 * crate::flight::flight_columns(flight.distance.is_some()).len() as u64 + 1);
+        }
         let mut bytes = rows.saturating_mul(per_row);
         if let Output::History { interval } = experiment.output {
             let per_sample = 8 * HISTORY_COLUMNS.len() as u64;

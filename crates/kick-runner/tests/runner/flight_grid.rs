@@ -65,6 +65,9 @@ fn a_1d_grid_with_flight_stores_each_rows_chained_flight_per_solver() {
                 [[sweep]]\nparameter = \"foot_mass\"\nvalues = [1.0, 3.0, 8.0]\n\
                 [flight]\nlaunch_angle = 18.0\nazimuth = 5.0\ndistance = 20.0\n";
     let AnyExperiment::OneD(e) = parse_any(Path::new("f1.toml"), text).unwrap() else { panic!("read as 3D") };
+    // The size estimate counts a flight set per solver: 18 columns and a status byte per row.
+    let without = kick_runner::limits::OutputSize::of(&kick_runner::Experiment { flight: None, ..e.clone() });
+    assert_eq!(kick_runner::limits::OutputSize::of(&e).bytes - without.bytes, 3 * 2 * (18 * 8 + 1));
     let dir = scratch("1d");
     let summary = kick_runner::run::run(&e, &dir, false).unwrap();
     let data = SweepData::read(&summary.path).unwrap();
