@@ -33,6 +33,7 @@ use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
+mod flight;
 mod three_d;
 pub use three_d::{Axis3d, Experiment3d, Grid3d, MAX_CELLS_3D};
 
@@ -86,6 +87,8 @@ struct RawExperiment {
     law: Option<Spanned<String>>,
     /// Target restitution of a law other than the paper's.
     restitution: Option<Spanned<f64>>,
+    /// Flight outcomes on every row ([`flight`]).
+    flight: Option<Spanned<kick_flight::FlightSpec>>,
 }
 
 /// A `[base]` or `[[scenario]]` table: values of the declared 1D parameters
@@ -220,6 +223,9 @@ pub struct Experiment {
     pub solvers: Vec<SolverChoice>,
     pub scenarios: Scenarios,
     pub output: Output,
+    /// The `[flight]` table: every row's kick is flown (after each solver's
+    /// kick) and the flight outcomes stored beside it.
+    pub flight: Option<kick_flight::FlightSpec>,
 }
 
 impl Scenarios {
@@ -562,6 +568,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         }
     };
 
+    let flight = flight::parse(&at, text, raw.flight.as_ref(), flight::After::OneD)?;
     Ok(Experiment {
         name,
         description: raw.description.unwrap_or_default(),
@@ -570,6 +577,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         solvers,
         scenarios,
         output,
+        flight,
     })
 }
 
@@ -659,9 +667,11 @@ fn axis_values<P>(at: &Locator, axis: &RawAxis<P>, key: &str) -> Result<(Vec<f64
         if values.get_ref().is_empty() {
             return Err(at.error(values.span(), key, "`values` is empty"));
         }
+        // `inf` (TOML's infinity) passes here and is checked with the
+        // parameter, which admits it only where declared (friction: never slips).
         for v in values.get_ref() {
-            if !v.get_ref().is_finite() {
-                return Err(at.error(v.span(), key, format!("{} is not finite", v.get_ref())));
+            if v.get_ref().is_nan() {
+                return Err(at.error(v.span(), key, "nan is not a value"));
             }
         }
         return Ok((
@@ -742,6 +752,7 @@ fn table2_experiment(path: &Path, text: &str, name: String, at: &Locator) -> Res
         solvers,
         scenarios: Scenarios::Named { names, scenarios },
         output: Output::Summary,
+        flight: None,
     })
 }
 

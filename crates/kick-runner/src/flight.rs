@@ -99,6 +99,96 @@ pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result
     fly(Flight::from_launch(outcome.launch_velocity, outcome.spin, &spec).map_err(flight_error)?)
 }
 
+/// Outcome columns of a flight in a result file (name, unit): always the
+/// landing and apex; with a crossing plane (`crossing`) also `crossed` (1 when
+/// the ball reaches x = d before landing, 0 when it lands first; the crossing
+/// columns are then NaN) and the crossing's time, height, lateral position
+/// and velocity. Vectors as `_x`, `_y`, `_z`, as the 3D columns.
+pub fn flight_columns(crossing: bool) -> Vec<(&'static str, &'static str)> {
+    let mut columns = vec![
+        ("flight_time", "s"),
+        ("landing_point_x", "m"),
+        ("landing_point_y", "m"),
+        ("apex_height", "m"),
+        ("apex_time", "s"),
+        ("landing_velocity_x", "m/s"),
+        ("landing_velocity_y", "m/s"),
+        ("landing_velocity_z", "m/s"),
+        ("landing_spin_x", "rad/s"),
+        ("landing_spin_y", "rad/s"),
+        ("landing_spin_z", "rad/s"),
+    ];
+    if crossing {
+        columns.extend([
+            ("crossed", "1"),
+            ("crossing_time", "s"),
+            ("crossing_height", "m"),
+            ("crossing_lateral_offset", "m"),
+            ("crossing_velocity_x", "m/s"),
+            ("crossing_velocity_y", "m/s"),
+            ("crossing_velocity_z", "m/s"),
+        ]);
+    }
+    columns
+}
+
+/// A flight's values in [`flight_columns`] order (`crossing`: as there).
+pub fn flight_values(outcome: &FlightOutcome, crossing: bool) -> Vec<f64> {
+    let o = outcome;
+    let mut values = vec![
+        o.flight_time,
+        o.landing_point[0],
+        o.landing_point[1],
+        o.apex_height,
+        o.apex_time,
+        o.landing_velocity[0],
+        o.landing_velocity[1],
+        o.landing_velocity[2],
+        o.landing_spin[0],
+        o.landing_spin[1],
+        o.landing_spin[2],
+    ];
+    if crossing {
+        match &o.crossing {
+            Some(c) => values.extend([1.0, c.time, c.height, c.lateral_offset, c.velocity[0], c.velocity[1], c.velocity[2]]),
+            None => values.extend([0.0, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN]),
+        }
+    }
+    values
+}
+
+/// The name of the flight outcome set that follows the kick set `solver`
+/// in a result file (`solvers/<solver>+flight`).
+pub fn flight_set_name(solver: &str) -> String {
+    format!("{solver}+flight")
+}
+
+/// The flight outcome set after the kick set `solver`: [`flight_columns`]
+/// and, as settings, every flight parameter the experiment gave (`rest`)
+/// and the coefficient models and air the flight used.
+pub fn flight_set(solver: &str, rest: &FlightSpec, flown: Option<&Flight>) -> crate::h5::OutcomeSet {
+    use crate::h5::{Column, Setting};
+    let mut settings = Vec::new();
+    let given = serde_json::to_value(rest).unwrap_or_default();
+    for p in FlightParameter::ALL {
+        if let Some(v) = given.get(p.name()).and_then(serde_json::Value::as_f64) {
+            settings.push((p.name().to_string(), Setting::Number(v)));
+        }
+    }
+    if let Some(f) = flown {
+        settings.push(("drag_model".into(), Setting::Text(f.drag().name().into())));
+        settings.push(("lift_model".into(), Setting::Text(f.lift().name().into())));
+        settings.push(("air_density_flown".into(), Setting::Number(f.air().density)));
+        settings.push(("air_viscosity_flown".into(), Setting::Number(f.air().viscosity)));
+        settings.push(("gravity_flown".into(), Setting::Number(f.gravity())));
+    }
+    crate::h5::OutcomeSet {
+        solver: flight_set_name(solver),
+        settings,
+        columns: flight_columns(rest.distance.is_some()).iter().map(|(n, u)| Column::new(n, u)).collect(),
+    }
+}
+
 impl Serialize for FlightRun {
     /// The outcome's keys (`flight_time`, `landing_point`, `apex_height`,
     /// `landing_velocity`, `crossing` or null, ...) and the launch state flown.

@@ -93,7 +93,11 @@ impl OutputSize {
     pub fn of(experiment: &Experiment, part: &Range<u64>) -> OutputSize {
         let rows = part.end.saturating_sub(part.start);
         let solvers = experiment.solvers.len() as u64;
-        let per_row = 8 * kick_core::Parameter::ALL.len() as u64 + solvers * (8 * OBSERVABLES.len() as u64 + 1);
+        let mut per_row = 8 * kick_core::Parameter::ALL.len() as u64 + solvers * (8 * OBSERVABLES.len() as u64 + 1);
+        if let Some(flight) = &experiment.flight {
+            // A flight set per solver (`[flight]`).
+            per_row += solvers * (8 * crate::flight::flight_columns(flight.distance.is_some()).len() as u64 + 1);
+        }
         let mut bytes = rows.saturating_mul(per_row);
         if let Output::History { interval } = experiment.output {
             let per_sample = 8 * HISTORY_COLUMNS.len() as u64;

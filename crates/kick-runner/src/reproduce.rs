@@ -244,6 +244,10 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
         &args.experiments.join("validation/NOTES.md"),
     )?;
     say(log, &validation.text());
+    // Free kicks through the flight, and the generated 3D and flight pages
+    // (after every figure they link is drawn).
+    say(log, &format!("\n# 3D and flight pages -> {}, {}\n", report_dir.join("3d.md").display(), report_dir.join("flight.md").display()));
+    crate::pages_3d::write_all(&args.out, &report_dir, log)?;
     // Point the report at the sections written beside it.
     // Written last, so that its list of result files is the same on every run
     // (not whatever an earlier run left when this step came).
@@ -251,7 +255,8 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     let sections = [
         ("solvers.md", "Solvers of the 1D model: precision, trust regions"),
         (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
-        ("3d.md", "Off-center 3D kicks: spin and friction"),
+        ("3d.md", "Off-center 3D kicks: spin, friction, launch direction, the speed–spin trade-off"),
+        ("flight.md", "Ball flight: free kicks from the 3D kick, deflection at 25 m"),
         ("leg.md", "Effective mass of the articulated leg"),
         ("laws.md", "Contact laws compared"),
         ("identification.md", "Parameter identification and identifiability"),
@@ -314,7 +319,7 @@ impl Drop for Scratch {
 /// otherwise. Left out: the timing outputs (`OUT/timing/`, `timing.md`).
 /// Every regenerated file is compared; a committed file under OUT that is
 /// no longer generated is a difference too. The report's folder may hold
-/// hand-written pages (e.g. `3d.md`): they are copied into the temporary
+/// hand-written pages: they are copied into the temporary
 /// folder first, so the report links them as in the checkout.
 pub fn check(args: &ReproduceSettings, log: &mut dyn Write) -> Result<CheckReport, String> {
     static SEQUENCE: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);

@@ -83,6 +83,8 @@ struct Chunk {
     end: u64,
     scenarios: Vec<Result<Scenario, KickError>>,
     outcomes: Vec<Vec<Result<Outcome, KickError>>>,
+    /// Per solver, the flights after its kicks (experiments with `[flight]`).
+    flights: Vec<Vec<Result<Vec<f64>, String>>>,
 }
 
 impl Chunk {
@@ -92,6 +94,7 @@ impl Chunk {
             end: 0,
             scenarios: Vec::with_capacity(CHUNK_ROWS),
             outcomes: vec![Vec::with_capacity(CHUNK_ROWS); solvers],
+            flights: vec![Vec::new(); solvers],
         }
     }
 
@@ -105,6 +108,13 @@ impl Chunk {
             .collect_into_vec(&mut self.scenarios);
         for (k, solver) in experiment.solvers.iter().enumerate() {
             self.scenarios.par_iter().map(|s| solve(solver, s)).collect_into_vec(&mut self.outcomes[k]);
+            if let Some(rest) = &experiment.flight {
+                self.scenarios
+                    .par_iter()
+                    .zip(&self.outcomes[k])
+                    .map(|(s, o)| fly_1d(rest, s, o))
+                    .collect_into_vec(&mut self.flights[k]);
+            }
         }
     }
 
@@ -115,6 +125,9 @@ impl Chunk {
         }
         for (j, scenario) in self.scenarios.iter().enumerate() {
             push_row(writer, experiment, scenario, self.outcomes.iter().map(|o| &o[j]))?;
+            if experiment.flight.is_some() {
+                push_flights(writer, experiment, self.flights.iter().map(|f| &f[j]))?;
+            }
         }
         Ok(())
     }
@@ -137,6 +150,31 @@ fn push_row<'a>(
         match result {
             Ok(o) => writer.push_outcome(k, Ok(&o.observable_values()))?,
             Err(e) => writer.push_outcome(k, Err(&e.to_string()))?,
+        }
+    }
+    Ok(())
+}
+
+/// The flight after one 1D kick, in [`crate::flight::flight_columns`] order.
+fn fly_1d(rest: &kick_flight::FlightSpec, scenario: &Result<Scenario, KickError>, outcome: &Result<Outcome, KickError>) -> Result<Vec<f64>, String> {
+    match (scenario, outcome) {
+        (Ok(s), Ok(o)) => crate::flight::after_1d(s, o, rest)
+            .map(|run| crate::flight::flight_values(&run.outcome, rest.distance.is_some())),
+        (Err(e), _) | (_, Err(e)) => Err(format!("no flight: the kick failed: {e}")),
+    }
+}
+
+/// The row's flight outcomes, one set per solver after the kick sets.
+fn push_flights<'a>(
+    writer: &mut SweepWriter,
+    experiment: &Experiment,
+    flights: impl Iterator<Item = &'a Result<Vec<f64>, String>>,
+) -> Result<(), RunError> {
+    let first = experiment.solvers.len();
+    for (k, flight) in flights.enumerate() {
+        match flight {
+            Ok(values) => writer.push_outcome(first + k, Ok(values))?,
+            Err(e) => writer.push_outcome(first + k, Err(e))?,
         }
     }
     Ok(())
@@ -266,7 +304,12 @@ fn receive_histories(
                 }
             }
         }
-        push_row(writer, experiment, &experiment.scenarios.scenario(first + row as u64), outcomes.iter())?;
+        let scenario = experiment.scenarios.scenario(first + row as u64);
+        push_row(writer, experiment, &scenario, outcomes.iter())?;
+        if let Some(rest) = &experiment.flight {
+            let flights: Vec<_> = outcomes.iter().map(|o| fly_1d(rest, &scenario, o)).collect();
+            push_flights(writer, experiment, flights.iter())?;
+        }
         bar.inc(1);
     }
     Ok(())
@@ -315,7 +358,13 @@ pub fn run_part(
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     // One law for every scenario of an experiment (the file's `law`).
     let law = experiment.scenarios.scenario(0).map_or(kick_core::LawKind::PowerLaw, |s| s.law_kind());
-    let sets: Vec<OutcomeSet> = experiment.solvers.iter().map(|s| outcome_set(s, law)).collect();
+    let mut sets: Vec<OutcomeSet> = experiment.solvers.iter().map(|s| outcome_set(s, law)).collect();
+    if let Some(rest) = &experiment.flight {
+        let flown = kick_flight::FlightSpec { speed: Some(1.0), ..*rest }.build().ok();
+        let flight_sets: Vec<OutcomeSet> =
+            experiment.solvers.iter().map(|s| crate::flight::flight_set(s.name(), rest, flown.as_ref())).collect();
+        sets.extend(flight_sets);
+    }
     let mut writer = SweepWriter::create(
         &path,
         &provenance,
@@ -372,12 +421,11 @@ pub fn run_part(
 
 fn finish(experiment: &Experiment, writer: SweepWriter, bar: &ProgressBar) -> Result<RunSummary, RunError> {
     bar.finish_and_clear();
-    let failures = experiment
-        .solvers
-        .iter()
-        .map(|s| s.name().to_string())
-        .zip(writer.failure_counts())
-        .collect();
+    let mut names: Vec<String> = experiment.solvers.iter().map(|s| s.name().to_string()).collect();
+    if experiment.flight.is_some() {
+        names.extend(experiment.solvers.iter().map(|s| crate::flight::flight_set_name(s.name())));
+    }
+    let failures = names.into_iter().zip(writer.failure_counts()).collect();
     let scenarios = writer.rows() as u64;
     let path = writer.finish()?;
     Ok(RunSummary { path, scenarios, failures })

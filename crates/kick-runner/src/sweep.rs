@@ -137,6 +137,7 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
         solvers: vec![solver],
         scenarios: Scenarios::Sampled(sweep),
         output: Output::Summary,
+        flight: None,
     };
     let started = std::time::Instant::now();
     let summary = match target.shard {

@@ -10,15 +10,17 @@
 //! its unit, and the root attribute `level = "3d"`.
 
 use crate::experiment::Experiment3d;
-use crate::figures::{save_grid, FigureError, Panel, Series};
+use crate::figures::{color, save_grid, FigureError, Panel, Series};
 use crate::h5::{law_settings, new_group, write_column, write_grid, write_str_attr, Column, H5Error, OutcomeSet, SweepData, SweepWriter, CHUNK_ROWS};
 use crate::provenance::Provenance;
 use crate::run::{Part, RunError, RunSummary};
 use kick_3d::{Kick3dError, Outcome3d, OBSERVABLES_3D};
 use kick_core::parameters::Value;
-use plotters::prelude::RGBColor;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
+
+/// A row's flight values ([`crate::flight::flight_columns`] order) or why there is none.
+type FlightRow = Result<Vec<f64>, String>;
 
 /// The outcome set of a 3D run: the solver, its law and the 3D columns.
 fn outcome_set(experiment: &Experiment3d) -> OutcomeSet {
@@ -36,9 +38,11 @@ pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunE
     run_part(experiment, &part, &|_| Ok(()))
 }
 
-/// Data bytes of a row: the axes' values, the outcome columns and a status byte.
+/// Data bytes of a row: the axes' values, the outcome columns and a status
+/// byte, and with `[flight]` the flight set's columns and status.
 fn bytes_per_row(experiment: &Experiment3d) -> u64 {
-    8 * (experiment.grid.axes.len() + OBSERVABLES_3D.len()) as u64 + 1
+    let flight = experiment.flight.as_ref().map_or(0, |rest| 8 * crate::flight::flight_columns(rest.distance.is_some()).len() as u64 + 1);
+    8 * (experiment.grid.axes.len() + OBSERVABLES_3D.len()) as u64 + 1 + flight
 }
 
 /// [`run`] of the cells `part.rows` into `part.path` (a shard: [`crate::shard`]);
@@ -52,7 +56,17 @@ pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf
     crate::limits::check_rows("cells", grid.len(), rows, bytes_per_row(experiment), out_dir)?;
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     let axes: Vec<Column> = grid.axes.iter().map(|a| Column::new(a.parameter.name, a.parameter.unit)).collect();
-    let mut writer = SweepWriter::create(&path, &provenance, &axes, &[outcome_set(experiment)], rows)?;
+    let kick_set = outcome_set(experiment);
+    let mut sets = vec![kick_set.clone()];
+    if let Some(rest) = &experiment.flight {
+        let flown = kick_flight::Flight::from_launch([1.0, 0.0, 1.0], [0.0; 3], &kick_flight::FlightSpec {
+            gravity: Some(kick_core::GRAVITY),
+            ..*rest
+        })
+        .ok();
+        sets.push(crate::flight::flight_set(&kick_set.solver, rest, flown.as_ref()));
+    }
+    let mut writer = SweepWriter::create(&path, &provenance, &axes, &sets, rows)?;
     let file = writer.file().clone();
     write_str_attr(&file, &path, "description", &experiment.description)?;
     write_str_attr(&file, &path, "level", "3d")?;
@@ -74,7 +88,17 @@ pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf
     }
     attributes(&file)?;
 
-    let solve = |i: u64| -> Result<Outcome3d, Kick3dError> { experiment.solver.solve(&grid.kick(i)?) };
+    // The kick, and with `[flight]` its flight (in `flight_columns` order).
+    let solve = |i: u64| -> (Result<Outcome3d, Kick3dError>, Option<FlightRow>) {
+        let kick = grid.kick(i);
+        let outcome = kick.as_ref().map_err(Clone::clone).and_then(|k| experiment.solver.solve(k));
+        let flight = experiment.flight.as_ref().map(|rest| match (&kick, &outcome) {
+            (Ok(k), Ok(o)) => crate::flight::after_3d(k, o, rest)
+                .map(|run| crate::flight::flight_values(&run.outcome, rest.distance.is_some())),
+            (Err(e), _) | (_, Err(e)) => Err(format!("no flight: the kick failed: {e}")),
+        });
+        (outcome, flight)
+    };
     let mut start = part.rows.start;
     let mut outcomes = Vec::with_capacity(CHUNK_ROWS);
     while start < part.rows.end {
@@ -82,46 +106,121 @@ pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf
         (start as usize..end as usize).into_par_iter().map(|i| solve(i as u64)).collect_into_vec(&mut outcomes);
         for (i, outcome) in (start..end).zip(&outcomes) {
             writer.push_parameters(&grid.coordinates(i))?;
-            match outcome {
+            match &outcome.0 {
                 Ok(o) => writer.push_outcome(0, Ok(&o.observable_values()))?,
                 Err(e) => writer.push_outcome(0, Err(&e.to_string()))?,
+            }
+            match &outcome.1 {
+                Some(Ok(values)) => writer.push_outcome(1, Ok(values))?,
+                Some(Err(e)) => writer.push_outcome(1, Err(e))?,
+                None => {}
             }
         }
         start = end;
     }
-    let failures = vec![(outcome_set(experiment).solver, writer.failure_counts()[0])];
+    let names = sets.iter().map(|s| s.solver.clone());
+    let failures = names.zip(writer.failure_counts()).collect();
     let path = writer.finish()?;
     Ok(RunSummary { path, scenarios: rows, failures })
 }
 
-const BLUE: RGBColor = RGBColor(31, 119, 180);
-const RED: RGBColor = RGBColor(214, 39, 40);
+/// A value as a curve label shows it (`∞` for infinity).
+pub fn value_label(v: f64) -> String {
+    if v == f64::INFINITY {
+        "∞".into()
+    } else {
+        kick_core::short(v).to_string()
+    }
+}
 
-/// Figures of a one-axis 3D result file `h5` into `dir/NAME.{png,svg}`:
-/// speed and spin against the axis; for an offset sweep also the speed–spin
-/// trade-off. Files of other shapes draw nothing.
+/// A 3D result file read whole, its parameter columns in the grid's axis
+/// order (`/grid/axes`; HDF5 lists a group's members alphabetically).
+pub fn read_grid_file(h5: &Path) -> Result<SweepData, FigureError> {
+    let mut data = SweepData::read(h5)?;
+    let file = crate::h5::ResultFile::open(h5)?;
+    if file.exists("grid/axes") {
+        let axes = file.strings("grid/axes")?;
+        data.parameters.sort_by_key(|(c, _)| axes.iter().position(|a| *a == c.name).unwrap_or(usize::MAX));
+    }
+    Ok(data)
+}
+
+/// Rows of a result file's grid, split by the value of its second axis (one
+/// curve each, in the grid's order), or one curve of every row for one axis.
+/// Each curve: its label (`μ = 0.5`, the declared symbol) and its rows.
+pub fn curves(data: &SweepData) -> Vec<(String, Vec<usize>)> {
+    let rows = data.rows();
+    match data.parameters.get(1) {
+        None => vec![(String::new(), (0..rows).collect())],
+        Some((column, values)) => {
+            let symbol = kick_core::parameters::find(&column.name).map_or(column.name.as_str(), |p| p.symbol);
+            let mut out: Vec<(f64, Vec<usize>)> = Vec::new();
+            for (row, &v) in values.iter().enumerate() {
+                match out.iter_mut().find(|(w, _)| w.to_bits() == v.to_bits()) {
+                    Some((_, list)) => list.push(row),
+                    None => out.push((v, vec![row])),
+                }
+            }
+            out.into_iter().map(|(v, list)| (format!("{symbol} = {}", value_label(v)), list)).collect()
+        }
+    }
+}
+
+/// Figures of a 3D result file of one or two axes into `dir/NAME.{png,svg}`:
+/// ball speed, spin and the launch direction (elevation and azimuth of the
+/// launch velocity; a panel that is zero throughout is left out) against the
+/// first axis, one curve per value of the second. When the first axis is the
+/// offset, also `NAME_tradeoff`: ball speed against spin, one curve per value
+/// of the second axis (the speed–spin trade-off). Files of other shapes draw nothing.
 pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
-    let data = SweepData::read(h5)?;
-    if data.parameters.len() != 1 {
+    let data = read_grid_file(h5)?;
+    if data.parameters.is_empty() || data.parameters.len() > 2 {
         return Ok(Vec::new());
     }
     let (axis, x) = &data.parameters[0];
     let set = &data.sets[0];
-    let column = |name: &str| set.column(name).map(<[f64]>::to_vec).ok_or_else(|| FigureError::Draw { figure: h5.display().to_string(), message: format!("no column {name}") });
+    let column = |name: &str| {
+        set.column(name).map(<[f64]>::to_vec).ok_or_else(|| FigureError::Draw { figure: h5.display().to_string(), message: format!("no column {name}") })
+    };
+    let curves = curves(&data);
+    let pick = |v: &[f64], rows: &[usize]| -> Vec<f64> { rows.iter().map(|&r| v[r]).collect() };
+    let series = |y: &[f64], x: &[f64]| -> Vec<Series> {
+        curves
+            .iter()
+            .enumerate()
+            .map(|(i, (label, rows))| Series::line(label, color(i), &pick(x, rows), &pick(y, rows)).with_markers())
+            .collect()
+    };
+    let symbol = kick_core::parameters::find(&axis.name).map_or(String::new(), |p| format!(" {}", p.symbol));
+    let x_label = format!("{}{symbol} ({})", axis.name.replace('_', " "), axis.unit);
     let (speed, rpm) = (column("speed")?, column("spin_rpm")?);
-    let x_label = format!("{} ({})", axis.name.replace('_', " "), axis.unit);
     let mut panels = vec![
-        Panel::new("ball speed", &x_label, "speed (m/s)", vec![Series::line(&set.solver, BLUE, x, &speed).with_markers()]),
-        Panel::new("ball spin", &x_label, "spin (rpm)", vec![Series::line(&set.solver, RED, x, &rpm).with_markers()]),
+        Panel::new("ball speed", &x_label, "speed |v| (m/s)", series(&speed, x)),
+        Panel::new("ball spin", &x_label, "spin |ω| (rpm)", series(&rpm, x)),
     ];
-    let mut layout = (1, 2);
-    if axis.name == "offset" {
-        panels.push(Panel::new("speed-spin trade-off (offset sweep)", "spin (rpm)", "speed (m/s)", vec![Series::line(&set.solver, BLUE, &rpm, &speed).with_markers()]));
-        layout = (1, 3);
+    for (name, title, label) in [
+        ("launch_angle", "launch elevation", "elevation above the ground (deg)"),
+        ("launch_azimuth", "launch azimuth", "azimuth from the foot's path (deg)"),
+    ] {
+        let y = column(name)?;
+        if y.iter().any(|v| *v != 0.0 && v.is_finite()) {
+            panels.push(Panel::new(title, &x_label, label, series(&y, x)));
+        }
     }
+    let layout = if panels.len() > 2 { (2, 2) } else { (1, 2) };
     let name = h5.file_stem().and_then(|s| s.to_str()).unwrap_or("3d");
     let title = hdf5::File::open(h5).ok().and_then(|f| crate::h5::read_str_attr(&f, "description")).unwrap_or_default();
-    save_grid(dir, name, &title, layout, &panels)
+    let mut written = save_grid(dir, name, &title, layout, &panels)?;
+    if axis.name == "offset" {
+        let trade = vec![Panel::new(
+            "ball speed against spin across offsets (markers: the offsets of the grid)",
+            "spin |ω| (rpm)",
+            "speed |v| (m/s)",
+            series(&speed, &rpm),
+        )];
+        written.extend(save_grid(dir, &format!("{name}_tradeoff"), &format!("{title}: the speed–spin trade-off"), (1, 1), &trade)?);
+    }
+    Ok(written)
 }
 
 #[cfg(test)]

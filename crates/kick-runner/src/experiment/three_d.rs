@@ -9,6 +9,7 @@
 //! --solver` name (default `accurate`). Histories, `[[scenario]]` lists and
 //! `table2` are 1D only.
 
+use super::flight::key_span;
 use super::{axis_values, build, ExperimentError, Locator, RawAxis, RawBase};
 use kick_3d::{Kick3d, Kick3dError, Kick3dSpec, Solver3d};
 use kick_core::parameters::{self, Level, ParameterDef, SetParameter, Shape, Value};
@@ -36,6 +37,7 @@ struct RawExperiment3d {
     base: Option<RawBase>,
     kick3d: Option<Kick3dSpec>,
     sweep: Option<Vec<RawAxis<String>>>,
+    flight: Option<Spanned<kick_flight::FlightSpec>>,
 }
 
 /// One swept parameter of a 3D grid and its values.
@@ -112,24 +114,9 @@ pub struct Experiment3d {
     pub solver_name: String,
     pub solver: Solver3d,
     pub grid: Grid3d,
-}
-
-/// The byte span of `key = ...` inside `[table]`, for errors about a value
-/// read without its own span (the `[kick3d]` table's).
-fn key_span(text: &str, table: &str, key: &str) -> Option<std::ops::Range<usize>> {
-    let mut offset = 0;
-    let mut inside = false;
-    for line in text.split_inclusive('\n') {
-        let trimmed = line.trim();
-        if trimmed.starts_with('[') {
-            inside = trimmed == format!("[{table}]");
-        } else if inside && trimmed.split_once('=').is_some_and(|(k, _)| k.trim() == key) {
-            let indent = line.len() - line.trim_start().len();
-            return Some(offset + indent..offset + indent + key.len());
-        }
-        offset += line.len();
-    }
-    None
+    /// The `[flight]` table: every cell's kick is flown and the flight
+    /// outcomes stored beside it.
+    pub flight: Option<kick_flight::FlightSpec>,
 }
 
 /// Validate a 3D experiment (the parent's `parse_any` decided it is one).
@@ -220,7 +207,9 @@ pub(super) fn parse(path: &Path, text: &str, at: &Locator, stem: String) -> Resu
             return Err(at.error(last_span, "sweep", format!("grid point {i} ({}): {e}", at_cell.join(", "))));
         }
     }
+    let flight = super::flight::parse(at, text, raw.flight.as_ref(), super::flight::After::ThreeD)?;
     Ok(Experiment3d {
+        flight,
         name,
         description: raw.description.unwrap_or_default(),
         path: path.to_path_buf(),

@@ -1,0 +1,360 @@
+//! Free kicks, from the foot to the goal (issue 14): the 3D kick chained
+//! into kick-flight, over lateral offset × friction, written to
+//! `OUT/flight/free_kick.h5`, and the figures drawn back from that file.
+//!
+//! Setup (a choice, stated on the generated page): Table 1's foot (3 kg at
+//! 22 m/s), its ball and contact law, the foot's path horizontal (α = 0),
+//! the defaults of kick-3d otherwise. The contact lies below the ball's
+//! centre by [`VERTICAL_OFFSET`] and beside it by the lateral offset e, so
+//! the ball rises with backspin and curves with sidespin, as a free kick
+//! over a wall does. kick-3d's offset is lateral only; with a horizontal
+//! path and no gravity during the contact (kick-3d's default) its kick is
+//! symmetric about the foot's path, so the kick at offset √(e² + h²),
+//! turned about the path by β = atan2(h, e), is the kick at (e, h): its
+//! launch velocity and spin are the lateral kick's, rotated by β about x.
+//!
+//! File layout (a sweep table, [`crate::h5`]): parameters `lateral_offset`
+//! (m) and `friction` (1) per row (grid order: offset, then friction
+//! fastest; `/grid`, `grid_shape`); outcome sets `launch` (the rotated
+//! launch: [`LAUNCH_COLUMNS`]), `goal` (the flight with its crossing of
+//! x = [`GOAL_DISTANCE`]) and `wall` (crossing x = [`WALL_DISTANCE`]), both
+//! [`crate::flight::flight_columns`]; root attribute `vertical_offset` (m);
+//! the trajectories of [`TRAJECTORY_OFFSETS`] × [`TRAJECTORY_FRICTIONS`] as
+//! `solvers/goal/histories/<row>` ([`TRAJECTORY_COLUMNS`], uniform in time).
+
+use crate::figures::{color, save_grid, FigureError, Panel, Series};
+use crate::flight::{flight_columns, flight_values};
+use crate::h5::{write_grid, write_str_attr, Column, H5Error, OutcomeSet, Setting, SweepData, SweepWriter};
+use crate::provenance::Provenance;
+use kick_3d::{Accurate3d, Kick3d, KickSpec, Outcome3d};
+use kick_core::parameters::{SetParameter, Value};
+use kick_flight::{history, solve, Flight, FlightOutcome, FlightSpec, Sampling};
+use plotters::prelude::{RGBColor, SeriesLabelPosition};
+use std::path::{Path, PathBuf};
+
+/// Depth of the contact below the ball's centre, h, m.
+pub const VERTICAL_OFFSET: f64 = 0.03;
+/// Lateral offsets of the grid, m.
+pub const LATERAL_OFFSETS: [f64; 10] = [0.0, 0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09];
+/// Coulomb coefficients of the grid (∞: never slips).
+pub const FRICTIONS: [f64; 4] = [0.2, 0.5, 1.0, f64::INFINITY];
+/// Rows whose trajectories are kept: these offsets...
+pub const TRAJECTORY_OFFSETS: [f64; 4] = [0.0, 0.02, 0.04, 0.06];
+/// ...at these frictions.
+pub const TRAJECTORY_FRICTIONS: [f64; 2] = [0.5, f64::INFINITY];
+/// Samples per trajectory.
+pub const TRAJECTORY_SAMPLES: usize = 301;
+/// The goal line from the ball, m (the issue's 25 m free kick).
+pub const GOAL_DISTANCE: f64 = 25.0;
+/// The wall, m (Law 13: 9.15 m).
+pub const WALL_DISTANCE: f64 = 9.15;
+/// Height of the wall drawn (players jumping), m.
+pub const WALL_HEIGHT: f64 = 1.8;
+/// Half the width of the wall drawn in the top view, m.
+pub const WALL_HALF_WIDTH: f64 = 1.0;
+/// Goal: 7.32 m wide, 2.44 m high (Law 1).
+pub const GOAL_WIDTH: f64 = 7.32;
+pub const GOAL_HEIGHT: f64 = 2.44;
+
+/// Columns of the `launch` set: the free kick's launch (rotated) and the contact.
+pub const LAUNCH_COLUMNS: [(&str, &str); 12] = [
+    ("launch_velocity_x", "m/s"),
+    ("launch_velocity_y", "m/s"),
+    ("launch_velocity_z", "m/s"),
+    ("spin_x", "rad/s"),
+    ("spin_y", "rad/s"),
+    ("spin_z", "rad/s"),
+    ("speed", "m/s"),
+    ("spin_rev_per_s", "rev/s"),
+    ("launch_angle", "deg"),
+    ("launch_azimuth", "deg"),
+    ("contact_time", "s"),
+    ("slip_time", "s"),
+];
+
+/// Columns of a stored trajectory.
+pub const TRAJECTORY_COLUMNS: [(&str, &str); 7] =
+    [("time", "s"), ("x", "m"), ("y", "m"), ("z", "m"), ("velocity_x", "m/s"), ("velocity_y", "m/s"), ("velocity_z", "m/s")];
+
+/// The file's name under `OUT/flight/`.
+pub const FILE: &str = "free_kick.h5";
+
+/// The lateral kick (offset √(e² + h²)) at friction `friction`, solved.
+pub fn lateral_kick(lateral_offset: f64, friction: f64) -> Result<(Kick3d, Outcome3d), String> {
+    let mut spec = KickSpec::default();
+    let offset = lateral_offset.hypot(VERTICAL_OFFSET);
+    for (name, v) in [("offset", offset), ("friction", friction)] {
+        spec.set_named(name, Value::Number(v)).map_err(|e| e.to_string())?;
+    }
+    let kick = spec.build().map_err(|e| e.to_string())?;
+    let outcome = Accurate3d::default().solve(&kick).map_err(|e| e.to_string())?;
+    Ok((kick, outcome))
+}
+
+/// `v` turned about x by −β, β = atan2(h, e): the lateral kick's +y side
+/// goes to (0, cos β, −sin β), below the centre, so a ball sent toward −y
+/// rises (see the module docs).
+pub fn roll(v: [f64; 3], lateral_offset: f64) -> [f64; 3] {
+    let r = lateral_offset.hypot(VERTICAL_OFFSET);
+    let (c, s) = (lateral_offset / r, VERTICAL_OFFSET / r);
+    // Rotation about x by −β: y' = y cos β + z sin β, z' = −y sin β + z cos β.
+    [v[0], v[1] * c + v[2] * s, -v[1] * s + v[2] * c]
+}
+
+/// One free kick: the kick, its rotated launch and the flight spec after it.
+pub struct FreeKick {
+    pub kick: Kick3d,
+    pub outcome: Outcome3d,
+    pub launch_velocity: [f64; 3],
+    pub spin: [f64; 3],
+}
+
+impl FreeKick {
+    pub fn new(lateral_offset: f64, friction: f64) -> Result<FreeKick, String> {
+        let (kick, outcome) = lateral_kick(lateral_offset, friction)?;
+        Ok(FreeKick {
+            launch_velocity: roll(outcome.launch_velocity, lateral_offset),
+            spin: roll(outcome.spin, lateral_offset),
+            kick,
+            outcome,
+        })
+    }
+
+    /// The flight after it, crossing x = `distance` (kick-flight's defaults:
+    /// drag crisis, saturating lift, no spin decay, sea-level air; the kick's
+    /// ball and g).
+    pub fn flight(&self, distance: f64) -> Result<Flight, String> {
+        let rest = FlightSpec {
+            ball_mass: Some(self.kick.base.ball_mass()),
+            ball_radius: Some(self.kick.ball_radius),
+            gravity: Some(kick_core::GRAVITY),
+            distance: Some(distance),
+            ..FlightSpec::default()
+        };
+        Flight::from_launch(self.launch_velocity, self.spin, &rest).map_err(crate::flight::flight_error)
+    }
+
+    /// [`LAUNCH_COLUMNS`] values.
+    pub fn launch_values(&self) -> Vec<f64> {
+        let [vx, vy, vz] = self.launch_velocity;
+        let [wx, wy, wz] = self.spin;
+        vec![
+            vx,
+            vy,
+            vz,
+            wx,
+            wy,
+            wz,
+            (vx * vx + vy * vy + vz * vz).sqrt(),
+            (wx * wx + wy * wy + wz * wz).sqrt() / std::f64::consts::TAU,
+            vz.atan2(vx.hypot(vy)).to_degrees(),
+            vy.atan2(vx).to_degrees(),
+            self.outcome.contact_time,
+            self.outcome.slip_time,
+        ]
+    }
+}
+
+fn columns(list: &[(&str, &str)]) -> Vec<Column> {
+    list.iter().map(|(n, u)| Column::new(n, u)).collect()
+}
+
+/// The rows of the grid: (lateral offset, friction), friction fastest.
+pub fn grid() -> Vec<(f64, f64)> {
+    LATERAL_OFFSETS.iter().flat_map(|&e| FRICTIONS.iter().map(move |&mu| (e, mu))).collect()
+}
+
+/// Solve the grid and write `out/flight/free_kick.h5`.
+pub fn write(out: &Path) -> Result<PathBuf, String> {
+    let dir = out.join("flight");
+    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let path = dir.join(FILE);
+    let text = format!(
+        "kick_runner::free_kick: lateral offsets {LATERAL_OFFSETS:?} m x friction {FRICTIONS:?}, contact {VERTICAL_OFFSET} m below \
+         the centre, Table 1 foot, horizontal path; flights to x = {GOAL_DISTANCE} m and {WALL_DISTANCE} m"
+    );
+    let provenance = Provenance::now("free_kick", "kick_runner::free_kick", &text);
+    let flight_set = |name: &str, distance: f64| OutcomeSet {
+        solver: name.into(),
+        settings: vec![("distance".into(), Setting::Number(distance))],
+        columns: columns(&flight_columns(true)),
+    };
+    let sets = [
+        OutcomeSet { solver: "launch".into(), settings: vec![("vertical_offset".into(), Setting::Number(VERTICAL_OFFSET))], columns: columns(&LAUNCH_COLUMNS) },
+        flight_set("goal", GOAL_DISTANCE),
+        flight_set("wall", WALL_DISTANCE),
+    ];
+    let parameters = [Column::new("lateral_offset", "m"), Column::new("friction", "1")];
+    let rows = grid();
+    let mut writer = SweepWriter::create(&path, &provenance, &parameters, &sets, rows.len() as u64).map_err(|e| e.to_string())?;
+    let file = writer.file().clone();
+    let h5 = |e: H5Error| e.to_string();
+    write_str_attr(&file, &path, "description", "Free kicks: the 3D kick (contact below and beside the centre) chained into the flight").map_err(h5)?;
+    write_grid(&file, &path, &[(parameters[0].clone(), &LATERAL_OFFSETS[..]), (parameters[1].clone(), &FRICTIONS[..])]).map_err(h5)?;
+    for (row, &(e, mu)) in rows.iter().enumerate() {
+        writer.push_parameters(&[e, mu]).map_err(h5)?;
+        let kick = FreeKick::new(e, mu);
+        match &kick {
+            Ok(k) => writer.push_outcome(0, Ok(&k.launch_values())).map_err(h5)?,
+            Err(m) => writer.push_outcome(0, Err(m)).map_err(h5)?,
+        }
+        for (set, distance) in [(1, GOAL_DISTANCE), (2, WALL_DISTANCE)] {
+            let flown: Result<FlightOutcome, String> =
+                kick.as_ref().map_err(Clone::clone).and_then(|k| k.flight(distance)).and_then(|f| solve(&f).map_err(crate::flight::flight_error));
+            match flown {
+                Ok(o) => writer.push_outcome(set, Ok(&flight_values(&o, true))).map_err(h5)?,
+                Err(m) => writer.push_outcome(set, Err(&m)).map_err(h5)?,
+            }
+        }
+        let keep = TRAJECTORY_OFFSETS.contains(&e) && TRAJECTORY_FRICTIONS.iter().any(|m| m.to_bits() == mu.to_bits());
+        if let (true, Ok(k)) = (keep, &kick) {
+            let f = k.flight(GOAL_DISTANCE)?;
+            let h = history(&f, Sampling::Samples(TRAJECTORY_SAMPLES)).map_err(crate::flight::flight_error)?;
+            let values: Vec<Vec<f64>> = vec![
+                h.samples.iter().map(|s| s.time).collect(),
+                h.samples.iter().map(|s| s.position[0]).collect(),
+                h.samples.iter().map(|s| s.position[1]).collect(),
+                h.samples.iter().map(|s| s.position[2]).collect(),
+                h.samples.iter().map(|s| s.velocity[0]).collect(),
+                h.samples.iter().map(|s| s.velocity[1]).collect(),
+                h.samples.iter().map(|s| s.velocity[2]).collect(),
+            ];
+            let named: Vec<(Column, &[f64])> = columns(&TRAJECTORY_COLUMNS).into_iter().zip(values.iter().map(Vec::as_slice)).collect();
+            writer.write_history(1, row, &named).map_err(h5)?;
+        }
+    }
+    writer.finish().map_err(h5)
+}
+
+/// Trajectories are drawn up to this x, m (a little past the goal line).
+pub const SHOWN_TO: f64 = GOAL_DISTANCE + 3.0;
+
+const GREY: RGBColor = RGBColor(90, 90, 90);
+
+/// Figures from `h5` (written by [`write`]) into `dir`: `flight_free_kick`
+/// (trajectories from above and from the side, wall and goal drawn) and
+/// `flight_deflection` (at the goal line and the wall against the lateral
+/// offset, one curve per friction).
+pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let data = SweepData::read(h5)?;
+    let missing = |what: &str| FigureError::Draw { figure: h5.display().to_string(), message: format!("no {what}") };
+    let goal = data.set("goal")?;
+    let wall = data.set("wall")?;
+    let launch = data.set("launch")?;
+    let offsets = data.parameter("lateral_offset")?.to_vec();
+    let frictions = data.parameter("friction")?.to_vec();
+    let label = |row: usize| {
+        format!("e = {} cm, μ = {}", kick_core::short(offsets[row] * 100.0), crate::three_d::value_label(frictions[row]))
+    };
+    // Trajectories: every row with a stored history.
+    let mut top = Vec::new();
+    let mut side = Vec::new();
+    let mut drawn = 0;
+    for (row, &friction) in frictions.iter().enumerate() {
+        let Ok(h) = crate::h5::read_history(h5, &goal.group, row) else { continue };
+        let get = |name: &str| h.iter().find(|(c, _)| c.name == name).map(|(_, v)| v.clone()).ok_or_else(|| missing(name));
+        let (x, y, z) = (get("x")?, get("y")?, get("z")?);
+        // Up to a little past the goal line: the free kick, not the rest of the flight.
+        let shown = x.iter().position(|&v| v > SHOWN_TO).map_or(x.len(), |i| i + 1);
+        let (x, y, z) = (&x[..shown], &y[..shown], &z[..shown]);
+        let mut line = Series::line(&label(row), color(drawn), x, y);
+        let mut height = Series::line(&label(row), color(drawn), x, z);
+        if friction.is_infinite() {
+            line = line.dashed();
+            height = height.dashed();
+        }
+        top.push(line);
+        side.push(height);
+        drawn += 1;
+    }
+    if drawn == 0 {
+        return Err(missing("trajectories"));
+    }
+    let half = GOAL_WIDTH / 2.0;
+    // The wall: a marker across the path from above, a 1.8 m segment from the side;
+    // the goal: the line between the posts from above, posts and bar from the side.
+    top.push(Series::line("", GREY, &[WALL_DISTANCE, WALL_DISTANCE], &[-WALL_HALF_WIDTH, WALL_HALF_WIDTH]).with_markers());
+    top.push(Series::line("", RGBColor(0, 0, 0), &[GOAL_DISTANCE, GOAL_DISTANCE], &[-half, half]).with_markers());
+    side.push(Series::line("", GREY, &[WALL_DISTANCE, WALL_DISTANCE], &[0.0, WALL_HEIGHT]));
+    side.push(Series::line("", RGBColor(0, 0, 0), &[GOAL_DISTANCE, GOAL_DISTANCE, GOAL_DISTANCE + 1.0], &[0.0, GOAL_HEIGHT, GOAL_HEIGHT]));
+    let mut top_panel = Panel::new(
+        &format!("from above (wall at {WALL_DISTANCE} m, goal {GOAL_WIDTH} m wide at {GOAL_DISTANCE} m; dashed: μ = ∞)"),
+        "x along the foot's path (m)",
+        "lateral y (m)",
+        top,
+    );
+    top_panel.y_from_zero = false;
+    top_panel.legend = SeriesLabelPosition::LowerLeft;
+    let mut side_panel = Panel::new(
+        &format!("from the side (wall {WALL_HEIGHT} m, crossbar {GOAL_HEIGHT} m; height of the ball's centre)"),
+        "x along the foot's path (m)",
+        "height z (m)",
+        side,
+    );
+    side_panel.legend = SeriesLabelPosition::UpperLeft;
+    let mut written = save_grid(dir, "flight_free_kick", &format!("Free kicks from the 3D kick through the flight (shown to x = {SHOWN_TO} m)"), (2, 1), &[top_panel, side_panel])?;
+
+    // Against the lateral offset, one curve per friction.
+    let column = |set: &crate::h5::SetData, name: &str| set.column(name).map(<[f64]>::to_vec).ok_or_else(|| missing(name));
+    let y_goal = column(goal, "crossing_lateral_offset")?;
+    let (vx, vy) = (column(launch, "launch_velocity_x")?, column(launch, "launch_velocity_y")?);
+    // The curve: lateral position at the goal line minus the straight launch line's.
+    let curve: Vec<f64> = (0..data.rows()).map(|r| y_goal[r] - GOAL_DISTANCE * vy[r] / vx[r]).collect();
+    let (h_goal, h_wall) = (column(goal, "crossing_height")?, column(wall, "crossing_height")?);
+    let per_friction = |y: &[f64]| -> Vec<Series> {
+        let mut list: Vec<f64> = Vec::new();
+        for &m in &frictions {
+            if !list.iter().any(|w| w.to_bits() == m.to_bits()) {
+                list.push(m);
+            }
+        }
+        list.iter()
+            .enumerate()
+            .map(|(i, &m)| {
+                let rows: Vec<usize> = (0..data.rows()).filter(|&r| frictions[r].to_bits() == m.to_bits()).collect();
+                let xs: Vec<f64> = rows.iter().map(|&r| offsets[r] * 100.0).collect();
+                let ys: Vec<f64> = rows.iter().map(|&r| y[r]).collect();
+                Series::line(&format!("μ = {}", crate::three_d::value_label(m)), color(i), &xs, &ys).with_markers()
+            })
+            .collect()
+    };
+    let x_label = "lateral offset e (cm)";
+    let panels = vec![
+        Panel::new(&format!("curve at {GOAL_DISTANCE} m: lateral position minus the launch line's"), x_label, "deflection (m)", per_friction(&curve)),
+        Panel::new(&format!("lateral position at {GOAL_DISTANCE} m"), x_label, "y (m)", per_friction(&y_goal)),
+        Panel::new(&format!("height at the wall ({WALL_DISTANCE} m)"), x_label, "height of the centre (m)", per_friction(&h_wall)),
+        Panel::new(&format!("height at the goal line ({GOAL_DISTANCE} m)"), x_label, "height of the centre (m)", per_friction(&h_goal)),
+    ];
+    written.extend(save_grid(dir, "flight_deflection", "Free kicks against the lateral offset", (2, 2), &panels)?);
+    Ok(written)
+}
+
+/// The free-kick setup in words, with the numbers it uses (for the page).
+pub fn setup_note() -> String {
+    let k = Kick3d::baseline();
+    let b = k.base;
+    format!(
+        "The kick: Table 1's foot (m_f = {} kg at V = {} m/s, ball {} kg at rest, the paper's contact law) with \
+         kick-3d's defaults (μ per row, tangential spring and damper, the instep box), the foot's path horizontal \
+         (α = 0). The contact lies h = {} cm below the ball's centre and e = 0–{} cm beside it, so the ball rises with \
+         backspin and curves with sidespin, as a free kick over a wall does. kick-3d's offset is lateral only; with a \
+         horizontal path and no gravity during the few milliseconds of contact (kick-3d's default) the kick is \
+         symmetric about the foot's path, so the kick at (e, h) is the lateral kick at offset √(e² + h²) turned about \
+         the path by β = atan2(h, e): its launch velocity and spin are that kick's, rotated (`kick_runner::free_kick::roll`). \
+         h is a choice: deep enough that the ball clears a wall, shallow enough that the spin stays mostly sidespin \
+         at the larger offsets. The flight: kick-flight's defaults (drag crisis, saturating \
+         lift in the spin parameter, no spin decay, sea-level air), the kick's ball and g; the goal line at {} m (the \
+         issue's free kick), the wall at {} m (Law 13), the goal {} m wide and {} m high (Law 1), drawn centred on the \
+         foot's path. Heights are those of the ball's centre, which starts at R = {} m.",
+        kick_core::short(b.effective_foot_mass()),
+        kick_core::short(b.foot_speed()),
+        kick_core::short(b.ball_mass()),
+        kick_core::short(VERTICAL_OFFSET * 100.0),
+        kick_core::short(LATERAL_OFFSETS[LATERAL_OFFSETS.len() - 1] * 100.0),
+        GOAL_DISTANCE,
+        WALL_DISTANCE,
+        GOAL_WIDTH,
+        GOAL_HEIGHT,
+        kick_core::short(k.ball_radius),
+    )
+}
