@@ -26,6 +26,7 @@ pub mod experiment;
 pub mod figures;
 pub mod flight;
 pub mod h5;
+pub mod history;
 pub mod identify;
 pub mod leg;
 pub mod limits;

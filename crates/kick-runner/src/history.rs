@@ -1,0 +1,314 @@
+//! Time-history files: `--history FILE` of `kick simulate`, `kick simulate3d`
+//! and `kick flight`, one writer for every level ([`HistoryWriter`]).
+//!
+//! The format is the file's extension: `.csv`, or `.h5`/`.hdf5` (anything
+//! else is refused naming `--history`). Rows are streamed as the solver makes
+//! them (bounded memory), and the file is written whole or not at all
+//! ([`crate::output::Staged`]): a failed solve leaves no file.
+//!
+//! - CSV: one header line of `name [unit]` per column, comma-separated, then
+//!   one line per sample, numbers only (shortest round-trip form, e.g.
+//!   `2.2e1`); nothing else (no comments, no prose).
+//! - HDF5 (layout `history`):
+//!
+//! ```text
+//! /                 attributes: provenance (tool, tool_version, git_commit, git_dirty),
+//!                   layout = "history", level ("1d", "3d", "flight"), solver,
+//!                   law (1D and 3D), samples (u64), and the spacing: `interval`
+//!                   (s) or `samples_requested`
+//! /history/<name>   f64[samples], attribute units: one dataset per column
+//! /fixed/<name>     every parameter the run was solved with (defaults filled
+//!                   in; vectors as three numbers, switches as 0 or 1), units
+//! ```
+//!
+//! Columns: [`kick_core::HISTORY_COLUMNS`] (1D), [`kick_3d::HISTORY_COLUMNS_3D`]
+//! (3D) and [`FLIGHT_HISTORY_COLUMNS`] (flight); vectors as `_x`, `_y`, `_z`.
+//! No wall-clock time is written: the same run writes the same bytes.
+
+use crate::h5::{self, Column, H5Error, ResultWriter, CHUNK_ROWS};
+use crate::output::{OutputError, Staged};
+use crate::provenance::Provenance;
+use hdf5::Dataset;
+use kick_core::parameters::Value;
+use kick_core::Spacing;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::ops::ControlFlow;
+use std::path::{Path, PathBuf};
+
+/// `--samples`' default: 201 rows (200 intervals over the contact or flight).
+pub const DEFAULT_SAMPLES: usize = 201;
+/// Most rows a history file takes (10⁷, about 2 GB of 3D CSV).
+pub const MAX_FILE_SAMPLES: u64 = 10_000_000;
+
+/// A history to write: where, and on which grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HistoryRequest {
+    pub path: PathBuf,
+    pub spacing: Spacing,
+}
+
+impl HistoryRequest {
+    /// From the front ends' `--history FILE [--samples N | --interval DT]`
+    /// (neither: [`DEFAULT_SAMPLES`]; both: refused).
+    pub fn new(path: &Path, samples: Option<usize>, interval: Option<f64>) -> Result<HistoryRequest, String> {
+        let spacing = match (samples, interval) {
+            (Some(_), Some(_)) => return Err("give --samples or --interval, not both".into()),
+            (Some(n), None) => Spacing::Count(n),
+            (None, Some(dt)) => Spacing::Interval(dt),
+            (None, None) => Spacing::Count(DEFAULT_SAMPLES),
+        };
+        let spacing = spacing.validate().map_err(|e| format!("{e} (flag --{})", if samples.is_some() { "samples" } else { "interval" }))?;
+        if let Spacing::Count(n) = spacing {
+            if n as u64 > MAX_FILE_SAMPLES {
+                return Err(format!("--samples {n}: at most {MAX_FILE_SAMPLES} rows in a history file"));
+            }
+        }
+        HistoryFormat::of(path)?;
+        Ok(HistoryRequest { path: path.to_path_buf(), spacing })
+    }
+}
+
+/// The file format, from the extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HistoryFormat {
+    Csv,
+    Hdf5,
+}
+
+impl HistoryFormat {
+    /// `.csv` → CSV, `.h5`/`.hdf5` → HDF5 (any case); anything else is an error naming `--history`.
+    pub fn of(path: &Path) -> Result<HistoryFormat, String> {
+        let ext = path.extension().map(|e| e.to_string_lossy().to_ascii_lowercase());
+        match ext.as_deref() {
+            Some("csv") => Ok(HistoryFormat::Csv),
+            Some("h5" | "hdf5") => Ok(HistoryFormat::Hdf5),
+            _ => Err(format!(
+                "--history {}: the format comes from the extension: .csv, .h5 or .hdf5",
+                path.display()
+            )),
+        }
+    }
+}
+
+/// Names and units of a flight history's columns, in [`flight_values`] order.
+pub const FLIGHT_HISTORY_COLUMNS: [(&str, &str); 10] = [
+    ("time", "s"),
+    ("position_x", "m"),
+    ("position_y", "m"),
+    ("position_z", "m"),
+    ("velocity_x", "m/s"),
+    ("velocity_y", "m/s"),
+    ("velocity_z", "m/s"),
+    ("spin_x", "rad/s"),
+    ("spin_y", "rad/s"),
+    ("spin_z", "rad/s"),
+];
+
+/// A flight sample in [`FLIGHT_HISTORY_COLUMNS`] order.
+pub fn flight_values(s: &kick_flight::FlightSample) -> [f64; 10] {
+    let mut v = [s.time; 10];
+    v[1..4].copy_from_slice(&s.position);
+    v[4..7].copy_from_slice(&s.velocity);
+    v[7..10].copy_from_slice(&s.spin);
+    v
+}
+
+/// What the file says about the run besides its rows.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct HistoryMeta {
+    /// `1d`, `3d` or `flight`.
+    pub level: String,
+    /// Text attributes (solver, law...).
+    pub texts: Vec<(String, String)>,
+    /// `/fixed/<name>`: (name, unit, values).
+    pub fixed: Vec<(String, String, Vec<f64>)>,
+}
+
+impl HistoryMeta {
+    /// A fixed parameter from a declared value.
+    pub fn push_value(&mut self, name: &str, unit: &str, value: Value) {
+        let values = match value {
+            Value::Number(x) => vec![x],
+            Value::Vector(v) => v.to_vec(),
+            Value::Switch(on) => vec![f64::from(u8::from(on))],
+        };
+        self.fixed.push((name.into(), unit.into(), values));
+    }
+}
+
+enum Sink {
+    Csv { staged: Staged, out: BufWriter<File> },
+    Hdf5 { writer: ResultWriter, datasets: Vec<Dataset>, buffer: Vec<Vec<f64>> },
+}
+
+/// Streams rows of named columns into a CSV or HDF5 file (see the module docs).
+pub struct HistoryWriter {
+    path: PathBuf,
+    sink: Sink,
+    width: usize,
+    rows: u64,
+}
+
+fn io(path: &Path) -> impl Fn(std::io::Error) -> String + '_ {
+    move |e| OutputError::Io { path: path.to_path_buf(), message: e.to_string() }.to_string()
+}
+
+fn h5(e: H5Error) -> String {
+    e.to_string()
+}
+
+impl HistoryWriter {
+    /// Begin `request.path` (a temporary file until [`Self::finish`]).
+    pub fn create(request: &HistoryRequest, columns: &[(&str, &str)], meta: &HistoryMeta) -> Result<HistoryWriter, String> {
+        let path = request.path.clone();
+        let sink = match HistoryFormat::of(&path)? {
+            HistoryFormat::Csv => {
+                let staged = Staged::begin(&path).map_err(|e| e.to_string())?;
+                let file = File::create(staged.temporary()).map_err(io(&path))?;
+                let mut out = BufWriter::new(file);
+                let header: Vec<String> = columns.iter().map(|(n, u)| format!("{n} [{u}]")).collect();
+                writeln!(out, "{}", header.join(",")).map_err(io(&path))?;
+                Sink::Csv { staged, out }
+            }
+            HistoryFormat::Hdf5 => {
+                let provenance = Provenance::now("history", "", "");
+                let writer = ResultWriter::create(&path, &provenance, "history").map_err(h5)?;
+                let file = writer.file().clone();
+                h5::write_str_attr(&file, &path, "level", &meta.level).map_err(h5)?;
+                for (name, text) in &meta.texts {
+                    h5::write_str_attr(&file, &path, name, text).map_err(h5)?;
+                }
+                match request.spacing {
+                    Spacing::Interval(dt) => h5::write_f64_attr(&file, &path, "interval", dt).map_err(h5)?,
+                    Spacing::Count(n) => h5::write_u64_attr(&file, &path, "samples_requested", n as u64).map_err(h5)?,
+                }
+                for (name, unit, values) in &meta.fixed {
+                    writer.column("fixed", &Column::new(name, unit), values).map_err(h5)?;
+                }
+                let group = h5::new_group(&file, "history").map_err(|e| h5(H5Error::Hdf5 { path: path.clone(), message: e.to_string() }))?;
+                let datasets = columns
+                    .iter()
+                    .map(|(n, u)| h5::extendable::<f64>(&group, n, u, CHUNK_ROWS, &path))
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(h5)?;
+                Sink::Hdf5 { writer, datasets, buffer: vec![Vec::with_capacity(CHUNK_ROWS); columns.len()] }
+            }
+        };
+        Ok(HistoryWriter { path, sink, width: columns.len(), rows: 0 })
+    }
+
+    /// Rows written so far.
+    pub fn rows(&self) -> u64 {
+        self.rows
+    }
+
+    /// Append one row (one value per column).
+    pub fn push(&mut self, values: &[f64]) -> Result<(), String> {
+        if values.len() != self.width {
+            return Err(format!("{}: a row of {} values for {} columns", self.path.display(), values.len(), self.width));
+        }
+        if self.rows >= MAX_FILE_SAMPLES {
+            return Err(format!(
+                "--history {}: more than {MAX_FILE_SAMPLES} rows; give a larger --interval or fewer --samples",
+                self.path.display()
+            ));
+        }
+        self.rows += 1;
+        match &mut self.sink {
+            Sink::Csv { out, .. } => {
+                let mut line = String::with_capacity(24 * values.len());
+                for (i, v) in values.iter().enumerate() {
+                    if i > 0 {
+                        line.push(',');
+                    }
+                    use std::fmt::Write as _;
+                    let _ = write!(line, "{v:e}");
+                }
+                line.push('\n');
+                out.write_all(line.as_bytes()).map_err(io(&self.path))
+            }
+            Sink::Hdf5 { buffer, .. } => {
+                for (column, v) in buffer.iter_mut().zip(values) {
+                    column.push(*v);
+                }
+                if buffer[0].len() == CHUNK_ROWS {
+                    self.flush()?;
+                }
+                Ok(())
+            }
+        }
+    }
+
+    fn flush(&mut self) -> Result<(), String> {
+        if let Sink::Hdf5 { datasets, buffer, .. } = &mut self.sink {
+            for (dataset, column) in datasets.iter().zip(buffer.iter_mut()) {
+                let start = dataset.size();
+                let end = start + column.len();
+                dataset.resize(end).and_then(|()| dataset.write_slice(column.as_slice(), start..end)).map_err(|e| {
+                    h5(H5Error::Hdf5 { path: self.path.clone(), message: e.to_string() })
+                })?;
+                column.clear();
+            }
+        }
+        Ok(())
+    }
+
+    /// Write the last rows and give the file its name.
+    pub fn finish(mut self) -> Result<PathBuf, String> {
+        self.flush()?;
+        let path = self.path.clone();
+        match self.sink {
+            Sink::Csv { staged, out } => {
+                out.into_inner().map_err(|e| io(&path)(e.into_error()))?.sync_all().map_err(io(&path))?;
+                staged.commit().map_err(|e| e.to_string())
+            }
+            Sink::Hdf5 { writer, datasets, .. } => {
+                h5::write_u64_attr(writer.file(), &path, "samples", self.rows).map_err(h5)?;
+                drop(datasets);
+                writer.finish().map_err(h5)
+            }
+        }
+    }
+
+    /// A sink for a solver's stream: each row pushed, the first error kept
+    /// in `error` (the stream then stops).
+    pub fn sink<'a, S>(
+        &'a mut self,
+        values: impl Fn(&S) -> Vec<f64> + 'a,
+        error: &'a mut Option<String>,
+    ) -> impl FnMut(&S) -> ControlFlow<()> + 'a {
+        move |s| match self.push(&values(s)) {
+            Ok(()) => ControlFlow::Continue(()),
+            Err(e) => {
+                *error = Some(e);
+                ControlFlow::Break(())
+            }
+        }
+    }
+}
+
+/// Write a history streamed by `solve` (which hands rows to its sink and
+/// returns its outcome and the full history's row count): the outcome and
+/// the file, or nothing written.
+pub fn write<S, O>(
+    request: &HistoryRequest,
+    columns: &[(&str, &str)],
+    meta: &HistoryMeta,
+    values: impl Fn(&S) -> Vec<f64>,
+    solve: impl FnOnce(&mut dyn FnMut(&S) -> ControlFlow<()>) -> Result<(O, u64), String>,
+) -> Result<(O, PathBuf), String> {
+    let mut writer = HistoryWriter::create(request, columns, meta)?;
+    let mut error = None;
+    let (outcome, total) = {
+        let mut sink = writer.sink(values, &mut error);
+        solve(&mut sink)?
+    };
+    if let Some(e) = error {
+        return Err(e);
+    }
+    if total != writer.rows() {
+        return Err(format!("{}: {} of {total} rows written", request.path.display(), writer.rows()));
+    }
+    Ok((outcome, writer.finish()?))
+}
