@@ -312,3 +312,122 @@ pub fn write<S, O>(
     }
     Ok((outcome, writer.finish()?))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::h5::ResultFile;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("kick-history-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    const COLUMNS: [(&str, &str); 3] = [("time", "s"), ("force_x", "N"), ("state", "1")];
+
+    /// Rows that need every digit: (k/7, 1/3 + k, (-1)^k 1e-300 k).
+    fn row(k: u64) -> Vec<f64> {
+        let k = k as f64;
+        vec![k / 7.0, 1.0 / 3.0 + k, if k as u64 % 2 == 0 { 1e-300 * k } else { -1e-300 * k }]
+    }
+
+    fn stream(rows: u64) -> impl FnOnce(&mut dyn FnMut(&u64) -> ControlFlow<()>) -> Result<(&'static str, u64), String> {
+        move |sink| {
+            for k in 0..rows {
+                if sink(&k).is_break() {
+                    break;
+                }
+            }
+            Ok(("done", rows))
+        }
+    }
+
+    #[test]
+    fn formats_come_from_the_extension_only() {
+        assert_eq!(HistoryFormat::of(Path::new("a/b.CSV")), Ok(HistoryFormat::Csv));
+        assert_eq!(HistoryFormat::of(Path::new("b.h5")), Ok(HistoryFormat::Hdf5));
+        assert_eq!(HistoryFormat::of(Path::new("b.hdf5")), Ok(HistoryFormat::Hdf5));
+        for bad in ["b.txt", "b", "b.h5.tmp", "csv"] {
+            let e = HistoryFormat::of(Path::new(bad)).unwrap_err();
+            assert!(e.starts_with(&format!("--history {bad}:")) && e.contains(".csv, .h5 or .hdf5"), "{e}");
+        }
+        let e = HistoryRequest::new(Path::new("a.csv"), Some(2), Some(1e-3)).unwrap_err();
+        assert!(e.contains("--samples or --interval"), "{e}");
+        assert_eq!(HistoryRequest::new(Path::new("a.csv"), None, None).unwrap().spacing, Spacing::Count(DEFAULT_SAMPLES));
+        let e = HistoryRequest::new(Path::new("a.csv"), Some(MAX_FILE_SAMPLES as usize + 1), None).unwrap_err();
+        assert!(e.contains("--samples"), "{e}");
+    }
+
+    /// CSV: the header line, then the rows' numbers, every bit kept.
+    #[test]
+    fn csv_is_a_header_then_numbers_to_the_bit() {
+        let dir = scratch("csv");
+        let request = HistoryRequest { path: dir.join("h.csv"), spacing: Spacing::Count(5) };
+        let (outcome, path) = write(&request, &COLUMNS, &HistoryMeta::default(), |&k| row(k), stream(5)).unwrap();
+        assert_eq!(outcome, "done");
+        let text = std::fs::read_to_string(path).unwrap();
+        let mut lines = text.lines();
+        assert_eq!(lines.next(), Some("time [s],force_x [N],state [1]"));
+        let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|c| c.parse().unwrap()).collect()).collect();
+        assert_eq!(rows, (0..5).map(row).collect::<Vec<_>>());
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1, "only the file: no temporary, no lock");
+    }
+
+    /// HDF5: one dataset per column with its units across several chunks,
+    /// the fixed parameters, the level and the row count.
+    #[test]
+    fn hdf5_has_a_dataset_per_column_with_units_and_the_parameters() {
+        let dir = scratch("h5");
+        let rows = 2 * CHUNK_ROWS as u64 + 17;
+        let request = HistoryRequest { path: dir.join("h.h5"), spacing: Spacing::Interval(1e-6) };
+        let mut meta = HistoryMeta { level: "3d".into(), texts: vec![("solver".into(), "accurate-3d".into())], fixed: vec![] };
+        meta.push_value("offset", "m", Value::Number(0.05));
+        meta.push_value("foot_inertia", "kg m^2", Value::Vector([1.0, 2.0, 3.0]));
+        meta.push_value("gravity", "", Value::Switch(true));
+        let (_, path) = write(&request, &COLUMNS, &meta, |&k| row(k), stream(rows)).unwrap();
+        let file = ResultFile::open(&path).unwrap();
+        assert_eq!(file.text("", "layout").unwrap(), "history");
+        assert_eq!(file.text("", "level").unwrap(), "3d");
+        assert_eq!(file.text("", "solver").unwrap(), "accurate-3d");
+        for (i, (name, unit)) in COLUMNS.iter().enumerate() {
+            let (column, values) = file.column(&format!("history/{name}")).unwrap();
+            assert_eq!(column.unit, *unit);
+            assert_eq!(values, (0..rows).map(|k| row(k)[i]).collect::<Vec<_>>(), "{name}");
+        }
+        assert_eq!(file.values("fixed/offset").unwrap(), [0.05]);
+        assert_eq!(file.values("fixed/foot_inertia").unwrap(), [1.0, 2.0, 3.0]);
+        assert_eq!(file.values("fixed/gravity").unwrap(), [1.0]);
+        let h = hdf5::File::open(&path).unwrap();
+        assert_eq!(h5::read_u64_attr(&h, "samples"), Some(rows));
+        assert_eq!(h5::read_f64_attr(&h, "interval"), Some(1e-6));
+    }
+
+    /// A solve that fails, or a history that comes short, leaves the old
+    /// file as it was and no temporary file.
+    #[test]
+    fn a_failed_run_writes_nothing() {
+        let dir = scratch("fail");
+        for name in ["h.csv", "h.h5"] {
+            let path = dir.join(name);
+            std::fs::write(&path, b"old").unwrap();
+            let request = HistoryRequest { path: path.clone(), spacing: Spacing::Count(5) };
+            let failing = |sink: &mut dyn FnMut(&u64) -> ControlFlow<()>| -> Result<((), u64), String> {
+                let _ = sink(&0);
+                Err("no separation".into())
+            };
+            assert_eq!(write(&request, &COLUMNS, &HistoryMeta::default(), |&k| row(k), failing).unwrap_err(), "no separation");
+            let short = |sink: &mut dyn FnMut(&u64) -> ControlFlow<()>| -> Result<((), u64), String> {
+                let _ = sink(&0);
+                Ok(((), 2))
+            };
+            let e = write(&request, &COLUMNS, &HistoryMeta::default(), |&k| row(k), short).unwrap_err();
+            assert!(e.contains("1 of 2 rows"), "{e}");
+            assert_eq!(std::fs::read(&path).unwrap(), b"old");
+        }
+        let mut names: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        names.sort();
+        assert_eq!(names, ["h.csv", "h.h5"]);
+    }
+}
