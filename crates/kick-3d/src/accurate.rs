@@ -212,25 +212,26 @@ impl Accurate3d {
 
     /// Solve one kick; keeps no time history.
     pub fn solve(&self, kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
-        Ok(self.run(kick, None, None)?.0)
+        Ok(self.run::<false>(kick, None, None)?.0)
     }
 
     /// Solve and also return both bodies at separation (world frame).
     pub fn solve_to_state(&self, kick: &Kick3d) -> Result<(Outcome3d, EndState), Kick3dError> {
-        self.run(kick, None, None)
+        self.run::<false>(kick, None, None)
     }
 
     /// Solve and record (t, kinetic + elastic energy, losses) at every accepted step and switch.
     pub fn solve_recorded(&self, kick: &Kick3d) -> Result<(Outcome3d, Vec<EnergySample>), Kick3dError> {
         let mut samples = Vec::new();
-        let (outcome, _) = self.run(kick, Some(&mut samples), None)?;
+        let (outcome, _) = self.run::<false>(kick, Some(&mut samples), None)?;
         Ok((outcome, samples))
     }
 
     /// One run; `recorder` takes energy samples at every accepted point and
-    /// switch, `sampler` a uniform history ([`crate::history`]). Neither
+    /// switch, `sampler` a uniform history ([`crate::history`]; only read
+    /// when `SAMPLE`, so the summary path compiles without it). Neither
     /// changes a step: both only read the run.
-    pub(crate) fn run(
+    pub(crate) fn run<const SAMPLE: bool>(
         &self,
         kick: &Kick3d,
         mut recorder: Option<&mut Vec<EnergySample>>,
@@ -301,7 +302,7 @@ impl Accurate3d {
         if let Some(r) = recorder.as_deref_mut() {
             r.push(energy_of(&system, 0.0, &y0));
         }
-        if let Some(s) = sampler.as_deref_mut() {
+        if let Some(s) = sampler.as_deref_mut().filter(|_| SAMPLE) {
             s.fill(0.0, true, |t, _| Ok::<_, Kick3dError>(history::sample(kick, &system, 0.0, &y0, t, None)))?;
         }
         // Dense outputs made for the history alone (not in the outcome's count).
@@ -439,7 +440,7 @@ impl Accurate3d {
                 r.push(energy_of(&system, x_end, &y_end));
             }
             // The history's grid times in this stretch, [t(point), t_end), on its phase.
-            if let Some(s) = sampler.as_deref_mut() {
+            if let Some(s) = sampler.as_deref_mut().filter(|_| SAMPLE) {
                 if s.due(t_end, false) {
                     let d = match dense.as_ref() {
                         Some(d) => *d,
@@ -509,7 +510,7 @@ impl Accurate3d {
                     let peaks = Peaks { normal: peaks[0], tangential: peaks[1], compression: max_compression, slip_time };
                     let evaluations = stepper.evaluations + extra_evaluations - history_evaluations;
                     let out = outcome::assemble(kick, &end_state, peaks, evaluations, "accurate-3d")?;
-                    if let Some(s) = sampler.as_deref_mut() {
+                    if let Some(s) = sampler.as_deref_mut().filter(|_| SAMPLE) {
                         s.finish(history::sample(kick, &system, x_end, &y_end, t_end, Some(ContactState::Separation)));
                     }
                     return Ok((out, end_state));

@@ -190,7 +190,7 @@ impl Accurate3d {
         sink: &mut dyn FnMut(&Sample3d) -> ControlFlow<()>,
     ) -> Result<(crate::Outcome3d, u64), Kick3dError> {
         kick_compliant::history::stream_any(spacing, sink, |o: &crate::Outcome3d| o.contact_time, |sampler| {
-            Ok(self.run(kick, None, sampler)?.0)
+            Ok(self.run::<true>(kick, None, sampler)?.0)
         })
     }
 
