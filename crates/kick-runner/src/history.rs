@@ -412,10 +412,12 @@ mod tests {
     /// Rows that need every digit: (k/7, 1/3 + k, (-1)^k 1e-300 k).
     fn row(k: u64) -> Vec<f64> {
         let k = k as f64;
-        vec![k / 7.0, 1.0 / 3.0 + k, if k as u64 % 2 == 0 { 1e-300 * k } else { -1e-300 * k }]
+        vec![k / 7.0, 1.0 / 3.0 + k, if (k as u64).is_multiple_of(2) { 1e-300 * k } else { -1e-300 * k }]
     }
 
-    fn stream(rows: u64) -> impl FnOnce(&mut dyn FnMut(&u64) -> ControlFlow<()>) -> Result<(&'static str, u64), String> {
+    type Sink<'a> = &'a mut dyn FnMut(&u64) -> ControlFlow<()>;
+
+    fn stream(rows: u64) -> impl FnOnce(Sink) -> Result<(&'static str, u64), String> {
         move |sink| {
             for k in 0..rows {
                 if sink(&k).is_break() {
