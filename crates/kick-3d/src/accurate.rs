@@ -40,6 +40,11 @@
 //! Cost (one core; `cargo bench -p kick-3d --bench solve3d`): see the bench.
 //!
 //! Allocation: none.
+//!
+//! Time histories: [`crate::history`] samples a uniform grid from each
+//! accepted step's dense output ([`Accurate3d::solve_streamed`]); the hook is
+//! compiled out of [`Accurate3d::solve`] (`run::<false>`), and the outcome is
+//! bit-identical with and without it.
 
 use crate::contact::{self, Clock, Friction, Geometry, Local, Phase, Relative, State, DIM};
 use crate::error::Kick3dError;
