@@ -36,6 +36,7 @@ RETURNS = {
     "simulate_many": "dict[str, Any]",
     "simulate3d_many": "dict[str, Any]",
     "history": "dict[str, NDArray[np.float64]]",
+    "history3d": "dict[str, NDArray[np.float64]]",
     "fit": "dict[str, Any]",
     "flight": "dict[str, Any]",
 }
@@ -66,6 +67,7 @@ def render() -> str:
         "STATUS: dict[int, str]",
         "OBSERVABLES: list[tuple[str, str]]",
         "HISTORY_COLUMNS: list[tuple[str, str]]",
+        "HISTORY_COLUMNS_3D: list[tuple[str, str]]",
         "CHANNELS: list[tuple[str, str]]",
         "SOLVERS: list[str]",
         "SOLVERS_3D: list[str]",

@@ -40,9 +40,15 @@
 //! Cost (one core; `cargo bench -p kick-3d --bench solve3d`): see the bench.
 //!
 //! Allocation: none.
+//!
+//! Time histories: [`crate::history`] samples a uniform grid from each
+//! accepted step's dense output ([`Accurate3d::solve_streamed`]); the hook is
+//! compiled out of [`Accurate3d::solve`] (`run::<false>`), and the outcome is
+//! bit-identical with and without it.
 
 use crate::contact::{self, Clock, Friction, Geometry, Local, Phase, Relative, State, DIM};
 use crate::error::Kick3dError;
+use crate::history::{self, ContactState, Sampler3d};
 use crate::model::Kick3d;
 use crate::outcome::{self, EndState, EnergySample, Outcome3d, Peak, Peaks};
 use kick_core::dop853::{Dense, StepFailure, Stepper};
@@ -211,22 +217,31 @@ impl Accurate3d {
 
     /// Solve one kick; keeps no time history.
     pub fn solve(&self, kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
-        Ok(self.run(kick, None)?.0)
+        Ok(self.run::<false>(kick, None, None)?.0)
     }
 
     /// Solve and also return both bodies at separation (world frame).
     pub fn solve_to_state(&self, kick: &Kick3d) -> Result<(Outcome3d, EndState), Kick3dError> {
-        self.run(kick, None)
+        self.run::<false>(kick, None, None)
     }
 
     /// Solve and record (t, kinetic + elastic energy, losses) at every accepted step and switch.
     pub fn solve_recorded(&self, kick: &Kick3d) -> Result<(Outcome3d, Vec<EnergySample>), Kick3dError> {
         let mut samples = Vec::new();
-        let (outcome, _) = self.run(kick, Some(&mut samples))?;
+        let (outcome, _) = self.run::<false>(kick, Some(&mut samples), None)?;
         Ok((outcome, samples))
     }
 
-    fn run(&self, kick: &Kick3d, mut recorder: Option<&mut Vec<EnergySample>>) -> Result<(Outcome3d, EndState), Kick3dError> {
+    /// One run; `recorder` takes energy samples at every accepted point and
+    /// switch, `sampler` a uniform history ([`crate::history`]; only read
+    /// when `SAMPLE`, so the summary path compiles without it). Neither
+    /// changes a step: both only read the run.
+    pub(crate) fn run<const SAMPLE: bool>(
+        &self,
+        kick: &Kick3d,
+        mut recorder: Option<&mut Vec<EnergySample>>,
+        mut sampler: Option<&mut Sampler3d>,
+    ) -> Result<(Outcome3d, EndState), Kick3dError> {
         if kick.ground {
             return Err(Kick3dError::UnsupportedScene {
                 path: "accurate",
@@ -292,6 +307,11 @@ impl Accurate3d {
         if let Some(r) = recorder.as_deref_mut() {
             r.push(energy_of(&system, 0.0, &y0));
         }
+        if let Some(s) = sampler.as_deref_mut().filter(|_| SAMPLE) {
+            s.fill(0.0, true, |t, _| Ok::<_, Kick3dError>(history::sample(kick, &system, 0.0, &y0, t, None)))?;
+        }
+        // Dense outputs made for the history alone (not in the outcome's count).
+        let mut history_evaluations = 0u64;
         let mut phases = 0;
         loop {
             if stepper.accepted + stepper.rejected >= MAX_STEPS {
@@ -424,6 +444,19 @@ impl Accurate3d {
             if let Some(r) = recorder.as_deref_mut() {
                 r.push(energy_of(&system, x_end, &y_end));
             }
+            // The history's grid times in this stretch, [t(point), t_end), on its phase.
+            if let Some(s) = sampler.as_deref_mut().filter(|_| SAMPLE) {
+                if s.due(t_end, false) {
+                    let d = match dense.as_ref() {
+                        Some(d) => *d,
+                        None => {
+                            history_evaluations += 3;
+                            stepper.dense(&system)
+                        }
+                    };
+                    s.fill(t_end, false, |t, _| Ok::<_, Kick3dError>(history::sample_in(kick, &system, &d, point.x, x_end, t)))?;
+                }
+            }
             if t_end > horizon {
                 return Err(KickError::NoSeparation {
                     time: horizon,
@@ -480,8 +513,11 @@ impl Accurate3d {
                 Switch::Separation => {
                     let end_state = contact::end_state(kick, &system, x_end, &y_end, t_end);
                     let peaks = Peaks { normal: peaks[0], tangential: peaks[1], compression: max_compression, slip_time };
-                    let evaluations = stepper.evaluations + extra_evaluations;
+                    let evaluations = stepper.evaluations + extra_evaluations - history_evaluations;
                     let out = outcome::assemble(kick, &end_state, peaks, evaluations, "accurate-3d")?;
+                    if let Some(s) = sampler.as_deref_mut().filter(|_| SAMPLE) {
+                        s.finish(history::sample(kick, &system, x_end, &y_end, t_end, Some(ContactState::Separation)));
+                    }
                     return Ok((out, end_state));
                 }
                 Switch::CompressionRate => {

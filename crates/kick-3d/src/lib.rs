@@ -24,6 +24,7 @@ pub mod contact;
 pub mod dynamics;
 pub mod error;
 pub mod full_state;
+pub mod history;
 pub mod model;
 pub mod models;
 pub mod one_d;
@@ -37,6 +38,7 @@ pub mod validation;
 pub use accurate::Accurate3d;
 pub use error::Kick3dError;
 pub use full_state::FullState3d;
+pub use history::{ContactState, Sample3d, HISTORY_COLUMNS_3D};
 pub use model::{FootShape, Kick3d, Kick3dSpec, KickSpec};
 pub use outcome::{EnergyPartition, Outcome3d, OBSERVABLES_3D};
 

@@ -74,9 +74,8 @@ struct Simulate {
     solver: String,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
-    /// Also output the time history, sampled at most this far apart (s)
-    #[arg(long)]
-    history: Option<f64>,
+    #[command(flatten)]
+    history: HistoryArgs,
     /// Then fly the ball: v_b+ at --launch-angle (and --azimuth), no spin
     #[arg(long)]
     flight: bool,
@@ -92,6 +91,35 @@ struct FlightArgs {
     flight: Flags<FlightSpec>,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
+    #[command(flatten)]
+    history: HistoryArgs,
+}
+
+/// `--history FILE [--samples N | --interval DT]` (kick_runner::history).
+#[derive(Args)]
+struct HistoryArgs {
+    /// Write the time history to FILE: .csv (header `name [unit]`, then numbers only)
+    /// or .h5/.hdf5 (one dataset per column with its units, and the parameters);
+    /// uniform samples from first touch (t = 0) plus the last row at the end
+    /// (separation, or the landing of a flight). Columns and units: README,
+    /// "Time-history files". Only the summary goes to standard output.
+    #[arg(long, value_name = "FILE")]
+    history: Option<PathBuf>,
+    /// Rows in all, both ends included [default: 201]
+    #[arg(long, value_name = "N", requires = "history", conflicts_with = "interval")]
+    samples: Option<usize>,
+    /// Instead of --samples: rows DT seconds apart from t = 0, then the end row
+    #[arg(long, value_name = "DT", requires = "history", allow_negative_numbers = true)]
+    interval: Option<f64>,
+}
+
+impl HistoryArgs {
+    fn request(&self) -> Result<Option<kick_runner::history::HistoryRequest>, String> {
+        self.history
+            .as_deref()
+            .map(|path| kick_runner::history::HistoryRequest::new(path, self.samples, self.interval))
+            .transpose()
+    }
 }
 
 #[derive(Args)]
@@ -120,6 +148,9 @@ struct Simulate3d {
     /// The flight's air, coefficients and crossing plane (with --flight)
     #[command(flatten)]
     flight_parameters: Flags<FlightAfter3d>,
+    /// The accurate path's history (--solver auto or accurate)
+    #[command(flatten)]
+    history: HistoryArgs,
 }
 
 #[derive(Args)]
@@ -418,19 +449,21 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
     match command {
         Command::Simulate(a) => {
             let flight = a.flight.then(|| a.flight_parameters.spec().0);
-            let simulation = simulate::simulate(&a.scenario.spec(), &a.solver, a.dt, a.history, flight.as_ref())?;
+            let history = a.history.request()?;
+            let simulation = simulate::simulate(&a.scenario.spec(), &a.solver, a.dt, history.as_ref(), flight.as_ref())?;
             out.print(a.format, &simulation)
         }
         Command::Simulate3d(a) if a.scene_convergence => out.print(Format::Text, &simulate::scene_convergence(&a.kick.spec())?),
         Command::Simulate3d(a) => {
             let flight = a.flight.then(|| a.flight_parameters.spec().0);
-            let simulation = simulate::simulate3d(&a.kick.spec(), &a.solver, a.dt, flight.as_ref())?;
+            let history = a.history.request()?;
+            let simulation = simulate::simulate3d(&a.kick.spec(), &a.solver, a.dt, history.as_ref(), flight.as_ref())?;
             if a.time {
                 note(&format!("solver {} took {:.3} ms", simulation.outcome.solver, simulation.seconds * 1e3));
             }
             out.print(a.format, &simulation)
         }
-        Command::Flight(a) => out.print(a.format, &flight::flight(&a.flight.spec())?),
+        Command::Flight(a) => out.print(a.format, &flight::flight_report(&a.flight.spec(), a.history.request()?.as_ref())?),
         Command::Table2(a) => {
             let table = table2::compare(&a.scenarios)?;
             out.print(a.format, &table)?;

@@ -24,5 +24,5 @@ pub fn simulate(spec: &ScenarioSpec, solver: &str, dt: f64) -> Result<Value, Str
 
 /// `kick simulate3d --format json`.
 pub fn simulate3d(spec: &KickSpec, solver: &str, dt: f64) -> Result<Value, String> {
-    serde_json::to_value(kick_runner::simulate::simulate3d(spec, solver, dt, None)?).map_err(|e| e.to_string())
+    serde_json::to_value(kick_runner::simulate::simulate3d(spec, solver, dt, None, None)?).map_err(|e| e.to_string())
 }

@@ -102,11 +102,7 @@ fn history<'py>(
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let spacing = match (samples, interval) {
-            (Some(n), None) => Spacing::Count(n),
-            (None, Some(dt)) => Spacing::Interval(dt),
-            _ => return Err(PyValueError::new_err("give exactly one of `samples` (how many) or `interval` (s apart)")),
-        };
+        let spacing = spacing(samples, interval)?;
         let spec = params::scenario_spec(params, crate::law(law)?)?;
         let scenario = spec.build().map_err(value_error)?;
         let solver = solver_1d(solver, dt)?;
@@ -121,11 +117,47 @@ fn history<'py>(
     })
 }
 
+/// The spacing of a history: exactly one of `samples` or `interval`.
+fn spacing(samples: Option<usize>, interval: Option<f64>) -> PyResult<Spacing> {
+    match (samples, interval) {
+        (Some(n), None) => Ok(Spacing::Count(n)),
+        (None, Some(dt)) => Ok(Spacing::Interval(dt)),
+        _ => Err(PyValueError::new_err("give exactly one of `samples` (how many) or `interval` (s apart)")),
+    }
+}
+
+/// The time history of one off-center 3D kick on the accurate path, uniform
+/// samples (`kick simulate3d --history`): a dict of 1-D arrays named as
+/// `kick_3d::HISTORY_COLUMNS_3D` (vectors as `_x`, `_y`, `_z`).
+#[pyfunction]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", samples = None, interval = None, **params))]
+fn history3d<'py>(
+    py: Python<'py>,
+    solver: &str,
+    law: &str,
+    samples: Option<usize>,
+    interval: Option<f64>,
+    params: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    guard(|| {
+        let spacing = spacing(samples, interval)?;
+        let spec = params::kick_spec(params, crate::law(law)?)?;
+        let (_, history) = py.detach(|| kick_runner::simulate::sampled3d(&spec, solver, spacing)).map_err(value_error)?;
+        let out = PyDict::new(py);
+        for (k, (name, _)) in kick_3d::HISTORY_COLUMNS_3D.iter().enumerate() {
+            let column: Vec<f64> = history.iter().map(|s| s.values()[k]).collect();
+            out.set_item(*name, PyArray1::from_vec(py, column))?;
+        }
+        Ok(out)
+    })
+}
+
 #[pymodule]
 fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate3d, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;
+    m.add_function(wrap_pyfunction!(history3d, m)?)?;
     m.add_function(wrap_pyfunction!(many::simulate_many, m)?)?;
     m.add_function(wrap_pyfunction!(many::simulate3d_many, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
@@ -134,6 +166,7 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(params::keywords, m)?)?;
     m.add("STATUS", params::status_codes(m.py())?)?;
     m.add("HISTORY_COLUMNS", HISTORY_COLUMNS.iter().map(|(n, u)| (*n, *u)).collect::<Vec<_>>())?;
+    m.add("HISTORY_COLUMNS_3D", kick_3d::HISTORY_COLUMNS_3D.iter().map(|(n, u)| (*n, *u)).collect::<Vec<_>>())?;
     m.add("OBSERVABLES", kick_core::OBSERVABLES.iter().map(|(n, u)| (*n, *u)).collect::<Vec<_>>())?;
     m.add("CHANNELS", kick_identify::Channel::ALL.map(|c| (c.name(), c.unit())).to_vec())?;
     m.add("SOLVERS", SolverChoice::NAMES.to_vec())?;

@@ -117,12 +117,13 @@ pub fn declared(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     Ok(list)
 }
 
-/// The parameter keywords of a function: `simulate`, `simulate3d` or `flight`.
+/// The parameter keywords of a function: `simulate`, `simulate3d`, `flight`,
+/// their `_many` forms, `history` or `history3d`.
 #[pyfunction]
 pub fn keywords(function: &str) -> PyResult<Vec<&'static str>> {
     Ok(match function {
         "simulate" | "simulate_many" | "history" => parameters::at_levels(ScenarioSpec::LEVELS).map(|p| p.name).collect(),
-        "simulate3d" | "simulate3d_many" => parameters::at_levels(KickSpec::LEVELS).map(|p| p.name).collect(),
+        "simulate3d" | "simulate3d_many" | "history3d" => parameters::at_levels(KickSpec::LEVELS).map(|p| p.name).collect(),
         "flight" => kick_flight::spec::FLIGHT_PARAMETERS.iter().map(|p| p.name).collect(),
         other => return Err(value_error(format!("no function `{other}` takes declared parameters"))),
     })

@@ -50,11 +50,19 @@ pub struct Series {
     pub color: RGBColor,
     pub dashed: bool,
     pub markers: bool,
+    /// x intervals shaded over the panel's height, drawn under every curve
+    /// (a shade series has no points: [`Series::shade`]).
+    pub shade: Vec<(f64, f64)>,
 }
 
 impl Series {
     pub fn line(label: &str, color: RGBColor, x: &[f64], y: &[f64]) -> Series {
-        Series { label: label.into(), points: finite_points(x, y), color, dashed: false, markers: false }
+        Series { label: label.into(), points: finite_points(x, y), color, dashed: false, markers: false, shade: Vec::new() }
+    }
+    /// Vertical bands over the x intervals `from..to` in a light `color`
+    /// (e.g. the phases of a contact), labelled once in the legend.
+    pub fn shade(label: &str, color: RGBColor, intervals: &[(f64, f64)]) -> Series {
+        Series { shade: intervals.to_vec(), ..Series::line(label, color, &[], &[]) }
     }
     pub fn dashed(mut self) -> Series {
         self.dashed = true;
@@ -236,7 +244,20 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         .light_line_style(RGBColor(235, 235, 235))
         .draw()
         .map_err(|e| e.to_string())?;
-    for s in &panel.series {
+    // Shades first, under the curves.
+    const SHADE: f64 = 0.2;
+    for s in panel.series.iter().filter(|s| !s.shade.is_empty()) {
+        let fill = s.color.mix(SHADE).filled();
+        let anno = chart
+            .draw_series(s.shade.iter().map(|&(a, b)| Rectangle::new([(tx(a), y0), (tx(b), y1)], fill)))
+            .map_err(|e| e.to_string())?;
+        if !s.label.is_empty() {
+            let color = s.color;
+            anno.label(s.label.as_str())
+                .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], color.mix(SHADE).filled()));
+        }
+    }
+    for s in panel.series.iter().filter(|s| s.shade.is_empty()) {
         let points: Vec<(f64, f64)> = s.points.iter().map(|&(x, y)| (tx(x), y)).collect();
         let style = s.color.stroke_width(2);
         let color = s.color;

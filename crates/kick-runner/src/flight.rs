@@ -2,13 +2,15 @@
 //! `kick simulate` and `kick simulate3d`): a kick-flight solve with its JSON
 //! and text forms, and the chaining of a kick's launch into it.
 
+use crate::history::{flight_values, HistoryMeta, HistoryRequest, FLIGHT_HISTORY_COLUMNS};
 use crate::printable::Printable;
 use kick_3d::{Kick3d, Outcome3d};
-use kick_core::{Outcome, Scenario};
-use kick_flight::{solve, Flight, FlightError, FlightOutcome, FlightParameter, FlightSpec};
+use kick_core::{Outcome, Scenario, Spacing};
+use kick_flight::{solve, Flight, FlightError, FlightOutcome, FlightParameter, FlightSpec, Sampling};
 use serde::ser::{Serialize, Serializer};
 use serde_json::{Map, Value};
 use std::fmt::Write as _;
+use std::path::PathBuf;
 
 /// Flight parameters a 1D kick sets: its exit speed (no spin) and its ball's mass.
 pub const SET_BY_1D_KICK: [FlightParameter; 4] =
@@ -58,6 +60,77 @@ pub fn fly(flight: Flight) -> Result<FlightRun, String> {
 /// `kick flight`: validate `spec` and fly it.
 pub fn flight(spec: &FlightSpec) -> Result<FlightRun, String> {
     fly(spec.build().map_err(flight_error)?)
+}
+
+/// `kick flight` with `--history`: the flight and the files it wrote.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FlightReport {
+    pub run: FlightRun,
+    pub written: Vec<PathBuf>,
+}
+
+/// The parameters a flight history file records (`/fixed`), and its models.
+fn meta_flight(flight: &Flight) -> HistoryMeta {
+    let mut meta = HistoryMeta { level: "flight".into(), ..HistoryMeta::default() };
+    meta.texts.push(("drag".into(), format!("{:?}", flight.drag())));
+    meta.texts.push(("lift".into(), format!("{:?}", flight.lift())));
+    let mut push = |p: FlightParameter, values: Vec<f64>| meta.fixed.push((p.name().into(), p.def().unit.into(), values));
+    push(FlightParameter::LaunchVelocity, flight.launch_velocity().to_vec());
+    push(FlightParameter::Spin, flight.spin().to_vec());
+    push(FlightParameter::BallMass, vec![flight.ball_mass()]);
+    push(FlightParameter::BallRadius, vec![flight.ball_radius()]);
+    push(FlightParameter::Gravity, vec![flight.gravity()]);
+    push(FlightParameter::AirDensity, vec![flight.air().density]);
+    push(FlightParameter::SpinDecay, vec![flight.spin_decay()]);
+    if let Some(d) = flight.distance() {
+        push(FlightParameter::Distance, vec![d]);
+    }
+    meta
+}
+
+/// `kick flight`: validate `spec`, fly it and, with `history`, write its
+/// uniform samples ([`kick_flight::history`], columns
+/// [`crate::history::FLIGHT_HISTORY_COLUMNS`]) into that file.
+pub fn flight_report(spec: &FlightSpec, history: Option<&HistoryRequest>) -> Result<FlightReport, String> {
+    let Some(request) = history else {
+        return Ok(FlightReport { run: flight(spec)?, written: Vec::new() });
+    };
+    let f = spec.build().map_err(flight_error)?;
+    let sampling = match request.spacing {
+        Spacing::Count(n) => Sampling::Samples(n),
+        Spacing::Interval(dt) => Sampling::Interval(dt),
+    };
+    let (outcome, path) = crate::history::write(request, &FLIGHT_HISTORY_COLUMNS, &meta_flight(&f), |s| flight_values(s).to_vec(), |sink| {
+        let h = kick_flight::history(&f, sampling).map_err(|e| match e {
+            // The spacing's own flags, not flight parameters.
+            FlightError::TooManySamples { name, .. } | FlightError::InvalidParameter { name: name @ ("samples" | "interval"), .. } => {
+                format!("{e} (flag --{name})")
+            }
+            e => flight_error(e),
+        })?;
+        for s in &h.samples {
+            if sink(s).is_break() {
+                break;
+            }
+        }
+        Ok((h.outcome, h.samples.len() as u64))
+    })?;
+    Ok(FlightReport { run: FlightRun { flight: f, outcome }, written: vec![path] })
+}
+
+impl Serialize for FlightReport {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        self.run.serialize(serializer)
+    }
+}
+
+impl Printable for FlightReport {
+    fn text(&self) -> String {
+        self.run.text()
+    }
+    fn written(&self) -> &[PathBuf] {
+        &self.written
+    }
 }
 
 /// Refuse a parameter of `rest` that the kick sets (`by`: who sets it).

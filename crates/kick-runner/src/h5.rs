@@ -190,7 +190,7 @@ fn group_at(root: &Group, relative: &str, path: &Path) -> Result<Group, H5Error>
     Ok(group)
 }
 
-fn extendable<T: hdf5::H5Type>(group: &Group, name: &str, unit: &str, chunk: usize, path: &Path) -> Result<Dataset, H5Error> {
+pub(crate) fn extendable<T: hdf5::H5Type>(group: &Group, name: &str, unit: &str, chunk: usize, path: &Path) -> Result<Dataset, H5Error> {
     // Rows are only appended, so a cache of a few chunks suffices; HDF5's
     // default (1 MiB per dataset) would grow the memory with the row count
     // up to that size per column.

@@ -27,6 +27,7 @@ pub mod figures;
 pub mod flight;
 pub mod free_kick;
 pub mod h5;
+pub mod history;
 pub mod identify;
 pub mod leg;
 pub mod limits;

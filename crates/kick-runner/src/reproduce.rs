@@ -147,6 +147,10 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
         let drawn = crate::three_d::figures(&run.summary.path, &figures).map_err(|e| e.to_string())?;
         say(log, &format!("figures: {} files in {}\n", drawn.len(), figures.display()));
     }
+    // One off-center kick's force history, grip and slip shaded (from its HDF5 history).
+    let (command, summary, drawn) = crate::history::reproduce_force_history(&args.out, &figures)?;
+    say(log, &format!("\n# {command}\n{summary}"));
+    say(log, &format!("figures: {} files in {}\n", drawn.len() - 1, figures.display()));
     let leg_command = format!("kick leg --knee 30 --ankle 60 --sweep-out {out}");
     say(log, &format!("\n# {leg_command}\n"));
     let leg = crate::leg::leg(&crate::leg::LegSettings {

@@ -2,14 +2,16 @@
 //! its JSON and text forms.
 
 use crate::flight::{self, FlightRun};
+use crate::history::{self, HistoryMeta, HistoryRequest};
 use crate::printable::Printable;
 use kick_flight::FlightSpec;
 use kick_3d::{Kick3d, KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
-use kick_core::{History, Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, OBSERVABLES};
+use kick_core::{Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, HISTORY_COLUMNS, OBSERVABLES};
 use serde::ser::{Serialize, Serializer};
 use serde_json::{Map, Value};
 use std::fmt::Write as _;
+use std::path::PathBuf;
 use std::time::Instant;
 
 /// A 1D run: the scenario, the solver and what it gave.
@@ -18,32 +20,54 @@ pub struct Simulation {
     pub scenario: Scenario,
     pub solver: &'static str,
     pub outcome: Outcome,
-    pub history: Option<History>,
     /// The ball's flight after the kick, when asked for.
     pub flight: Option<FlightRun>,
+    /// The history file, when asked for.
+    pub written: Vec<PathBuf>,
+}
+
+/// The parameters a 1D history file records (`/fixed`): the eight
+/// [`Parameter`]s and the law's target restitution, with the solver and law.
+fn meta_1d(scenario: &Scenario, solver: &str) -> HistoryMeta {
+    let mut meta = HistoryMeta { level: "1d".into(), ..HistoryMeta::default() };
+    meta.texts.push(("solver".into(), solver.into()));
+    meta.texts.push(("law".into(), scenario.law_kind().name().into()));
+    for p in Parameter::ALL {
+        meta.fixed.push((p.name().into(), p.unit().into(), vec![scenario.get(p)]));
+    }
+    if let Some(e) = scenario.restitution_target() {
+        let def = &kick_core::parameters::RESTITUTION;
+        meta.fixed.push((def.name.into(), def.unit.into(), vec![e]));
+    }
+    meta
 }
 
 /// Solve `spec` with the solver named `solver` (`dt`: step of the fixed-step
-/// solvers), with a history sampled at most `history` seconds apart if given,
-/// and with `flight` given, the ball's flight after it ([`flight::after_1d`]).
+/// solvers); with `history`, its time history streamed into that file
+/// ([`crate::history`], columns [`HISTORY_COLUMNS`]); with `flight`, the
+/// ball's flight after it ([`flight::after_1d`]).
 pub fn simulate(
     spec: &ScenarioSpec,
     solver: &str,
     dt: f64,
-    history: Option<f64>,
+    history: Option<&HistoryRequest>,
     flight: Option<&FlightSpec>,
 ) -> Result<Simulation, String> {
     let scenario = spec.build().map_err(|e| e.to_string())?;
     let choice = SolverChoice::from_name(solver, dt).map_err(|e| e.to_string())?;
-    let (outcome, history) = match history {
-        Some(interval) => {
-            let (o, h) = choice.solve_recorded(&scenario, interval).map_err(|e| e.to_string())?;
-            (o, Some(h))
+    let (outcome, written) = match history {
+        Some(request) => {
+            let meta = meta_1d(&scenario, choice.name());
+            let (outcome, path) = history::write(request, &HISTORY_COLUMNS, &meta, |s: &kick_core::Sample| s.values().to_vec(), |sink| {
+                let streamed = choice.solve_streamed(&scenario, request.spacing, sink).map_err(|e| e.to_string())?;
+                Ok((streamed.outcome, streamed.samples))
+            })?;
+            (outcome, vec![path])
         }
-        None => (choice.solve(&scenario).map_err(|e| e.to_string())?, None),
+        None => (choice.solve(&scenario).map_err(|e| e.to_string())?, Vec::new()),
     };
     let flight = flight.map(|rest| flight::after_1d(&scenario, &outcome, rest)).transpose()?;
-    Ok(Simulation { scenario, solver: choice.name(), outcome, history, flight })
+    Ok(Simulation { scenario, solver: choice.name(), outcome, flight, written })
 }
 
 /// The JSON object of one run: every observable, the energy residual, the
@@ -69,19 +93,11 @@ pub fn outcome_json(scenario: &Scenario, solver: &str, outcome: &Outcome) -> Map
 
 impl Serialize for Simulation {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        // Samples serialised as they are, not through a JSON tree (~2.5 kB a sample).
-        #[derive(serde::Serialize)]
-        struct WithHistory<'a> {
-            #[serde(flatten)]
-            outcome: &'a Map<String, Value>,
-            #[serde(skip_serializing_if = "Option::is_none")]
-            history: Option<&'a [kick_core::Sample]>,
-        }
         let mut object = outcome_json(&self.scenario, self.solver, &self.outcome);
         if let Some(f) = &self.flight {
             object.insert("flight".into(), serde_json::to_value(f).map_err(serde::ser::Error::custom)?);
         }
-        WithHistory { outcome: &object, history: self.history.as_ref().map(|h| h.samples.as_slice()) }.serialize(serializer)
+        object.serialize(serializer)
     }
 }
 
@@ -97,21 +113,10 @@ impl Printable for Simulation {
         if let Some(f) = &self.flight {
             let _ = write!(w, "\nflight:\n{}", f.text());
         }
-        if let Some(h) = &self.history {
-            let _ = writeln!(
-                w,
-                "\ntime_s,foot_position_m,foot_velocity_m_s,ball_position_m,ball_velocity_m_s,compression_m,force_N,kinetic_J,elastic_J,dissipated_J,drive_work_J"
-            );
-            for s in &h.samples {
-                let _ = writeln!(
-                    w,
-                    "{},{},{},{},{},{},{},{},{},{},{}",
-                    s.time, s.foot_position, s.foot_velocity, s.ball_position, s.ball_velocity, s.compression, s.force,
-                    s.kinetic, s.elastic, s.dissipated, s.drive_work
-                );
-            }
-        }
         w
+    }
+    fn written(&self) -> &[PathBuf] {
+        &self.written
     }
 }
 
@@ -124,19 +129,74 @@ pub struct Simulation3d {
     pub seconds: f64,
     /// The ball's flight after the kick, when asked for.
     pub flight: Option<FlightRun>,
+    /// The history file, when asked for.
+    pub written: Vec<PathBuf>,
+}
+
+/// The parameters a 3D history file records (`/fixed`): every declared 1D
+/// and 3D parameter as the kick was built ([`Kick3d::parameter_values`]).
+pub fn meta_3d(kick: &Kick3d) -> HistoryMeta {
+    let mut meta = HistoryMeta { level: "3d".into(), ..HistoryMeta::default() };
+    meta.texts.push(("solver".into(), "accurate-3d".into()));
+    meta.texts.push(("law".into(), kick.base.law_kind().name().into()));
+    for (def, value) in kick.parameter_values() {
+        meta.push_value(def.name, def.unit, value);
+    }
+    meta
+}
+
+/// The accurate path a 3D history needs: `auto` or `accurate` (the other
+/// paths sample no history).
+fn history_solver(solver: &Solver3d) -> Result<kick_3d::Accurate3d, String> {
+    match solver {
+        Solver3d::Auto => Ok(kick_3d::Accurate3d::default()),
+        Solver3d::Accurate(a) => Ok(*a),
+        _ => Err("--history samples the accurate 3D path: use --solver accurate (or auto)".into()),
+    }
 }
 
 /// Solve the 3D kick `spec` with the path named `solver` (`dt`: the rapier
-/// scene path's step) and, with `flight` given, the ball's flight after it
-/// ([`flight::after_3d`]; not in `seconds`).
-pub fn simulate3d(spec: &KickSpec, solver: &str, dt: f64, flight: Option<&FlightSpec>) -> Result<Simulation3d, String> {
+/// scene path's step); with `history`, on the accurate path, its time history
+/// streamed into that file ([`crate::history`], columns
+/// [`kick_3d::HISTORY_COLUMNS_3D`]); with `flight` given, the ball's flight
+/// after it ([`flight::after_3d`]; not in `seconds`).
+pub fn simulate3d(
+    spec: &KickSpec,
+    solver: &str,
+    dt: f64,
+    history: Option<&HistoryRequest>,
+    flight: Option<&FlightSpec>,
+) -> Result<Simulation3d, String> {
     let kick = spec.build().map_err(|e| e.to_string())?;
     let solver = Solver3d::from_name(solver, dt).map_err(|e| e.to_string())?;
     let start = Instant::now();
-    let outcome = solver.solve(&kick).map_err(|e| e.to_string())?;
+    let (outcome, written) = match history {
+        Some(request) => {
+            let (outcome, path) = history3d(&kick, &solver, request)?;
+            (outcome, vec![path])
+        }
+        None => (solver.solve(&kick).map_err(|e| e.to_string())?, Vec::new()),
+    };
     let seconds = start.elapsed().as_secs_f64();
     let flight = flight.map(|rest| flight::after_3d(&kick, &outcome, rest)).transpose()?;
-    Ok(Simulation3d { kick, outcome, seconds, flight })
+    Ok(Simulation3d { kick, outcome, seconds, flight, written })
+}
+
+/// The accurate path's history of `spec` collected, at most
+/// [`kick_core::MAX_HISTORY_SAMPLES`] rows (Python's `kick.history3d`);
+/// `solver` as for [`simulate3d`] with a history.
+pub fn sampled3d(spec: &KickSpec, solver: &str, spacing: kick_core::Spacing) -> Result<(Outcome3d, Vec<kick_3d::Sample3d>), String> {
+    let kick = spec.build().map_err(|e| e.to_string())?;
+    let accurate = history_solver(&Solver3d::from_name(solver, 0.0).map_err(|e| e.to_string())?)?;
+    accurate.solve_sampled(&kick, spacing, kick_core::MAX_HISTORY_SAMPLES).map_err(|e| e.to_string())
+}
+
+/// Write the accurate path's history of `kick` into `request`'s file.
+pub fn history3d(kick: &Kick3d, solver: &Solver3d, request: &HistoryRequest) -> Result<(Outcome3d, PathBuf), String> {
+    let accurate = history_solver(solver)?;
+    history::write(request, &kick_3d::HISTORY_COLUMNS_3D, &meta_3d(kick), |s: &kick_3d::Sample3d| s.values().to_vec(), |sink| {
+        accurate.solve_streamed(kick, request.spacing, sink).map_err(|e| e.to_string())
+    })
 }
 
 /// The JSON object of one 3D run: the outcome (with `law`, the normal law's
@@ -186,6 +246,9 @@ impl Printable for Simulation3d {
             let _ = write!(w, "\nflight:\n{}", f.text());
         }
         w
+    }
+    fn written(&self) -> &[PathBuf] {
+        &self.written
     }
 }
 

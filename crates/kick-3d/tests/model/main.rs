@@ -6,4 +6,5 @@ mod scene;
 mod validation;
 mod box_accuracy;
 mod peaks;
+mod history;
 mod support;

@@ -67,19 +67,6 @@ fn table2_text_and_json() {
 }
 
 #[test]
-fn history_is_given_only_on_request() {
-    let out = kick(&["simulate", "--format", "json"]);
-    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert!(value.get("history").is_none());
-    let out = kick(&["simulate", "--format", "json", "--history", "1e-4"]);
-    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let samples = value["history"].as_array().unwrap();
-    assert!(samples.len() > 50);
-    let last = samples.last().unwrap();
-    assert!((last["time"].as_f64().unwrap() - value["contact_time"].as_f64().unwrap()).abs() < 1e-15);
-}
-
-#[test]
 fn simulate_takes_any_contact_law() {
     let out = kick(&["simulate", "--law", "hunt-crossley-exact", "--restitution", "0.6", "--format", "json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
@@ -106,7 +93,7 @@ fn a_closed_stdout_ends_the_output_quietly() {
     for (args, lines) in [
         (&["check"][..], 0),
         (&["check"][..], 1),
-        (&["simulate", "--history", "1e-8"][..], 1),
+        (&["simulate3d", "--format", "json"][..], 1),
         (&["check", "--format", "json"][..], 0),
     ] {
         let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kick"))

@@ -4,6 +4,7 @@ mod check_and_leg;
 mod cli;
 mod fit_and_laws;
 mod flight;
+mod history;
 mod run_reproduce;
 mod shard;
 mod simulate3d;

@@ -13,6 +13,7 @@ simulate_many, simulate3d_many
                           many contacts from arrays (numpy broadcasting), solved in
                           parallel in Rust; a status per row instead of exceptions
 history                   uniform time history of one 1D contact (dict of 1-D arrays)
+history3d                 uniform time history of one 3D kick, accurate path (dict of 1-D arrays)
 fit                       identify parameters from a measured history (``kick fit data``)
 flight                    the ball's flight after the kick (kick-flight)
 kick.dask.simulate_many   ``simulate_many`` spread over a dask ``distributed`` cluster
@@ -28,6 +29,7 @@ from . import _kick
 from ._kick import (
     CHANNELS,
     HISTORY_COLUMNS,
+    HISTORY_COLUMNS_3D,
     LAWS,
     OBSERVABLES,
     SOLVERS,
@@ -42,12 +44,14 @@ __all__ = [
     "simulate3d",
     "simulate3d_many",
     "history",
+    "history3d",
     "fit",
     "flight",
     "PARAMETERS",
     "STATUS",
     "OBSERVABLES",
     "HISTORY_COLUMNS",
+    "HISTORY_COLUMNS_3D",
     "CHANNELS",
     "SOLVERS",
     "SOLVERS_3D",
@@ -219,6 +223,27 @@ _declare(
     "state (phase 0). Returns a dict of 1-D float64 arrays (below).\n" + _SOLVER_DOC,
     "Columns\n-------\n" + _outputs_docs(HISTORY_COLUMNS)
     + "\n(phase: +1 compressing, -1 restoring, 0 the separation row)",
+)
+
+
+def history3d(**params):
+    return _kick.history3d(**params)
+
+
+_declare(
+    history3d,
+    "history3d",
+    [],
+    [_solver, _law, _inspect.Parameter("samples", _KW, default=None), _inspect.Parameter("interval", _KW, default=None)],
+    "Time history of one off-center 3D kick, uniform samples, as ``kick simulate3d --history``.\n\n"
+    "The accurate path's samples (solver ``auto`` or ``accurate``), world frame\n"
+    "(x along the foot's path, z up). Give one of ``samples`` (how many, >= 2:\n"
+    "first touch to separation) or ``interval`` (s apart from first touch). The\n"
+    "last row is the separation state (contact_state 0), the outcome's exit\n"
+    "velocities. Returns a dict of 1-D float64 arrays (below); vectors as\n"
+    "``_x``, ``_y``, ``_z`` columns, as in the CLI's history file.\n" + _SOLVER3D_DOC,
+    "Columns\n-------\n" + _outputs_docs(HISTORY_COLUMNS_3D)
+    + "\n(contact_state: 1 grip, 2 slip (also friction 0), 0 the separation row)",
 )
 
 

@@ -11,6 +11,7 @@ PARAMETERS: tuple[dict[str, Any], ...]
 STATUS: dict[int, str]
 OBSERVABLES: list[tuple[str, str]]
 HISTORY_COLUMNS: list[tuple[str, str]]
+HISTORY_COLUMNS_3D: list[tuple[str, str]]
 CHANNELS: list[tuple[str, str]]
 SOLVERS: list[str]
 SOLVERS_3D: list[str]
@@ -130,6 +131,36 @@ def history(
     interval: float | None = ...,
 ) -> dict[str, NDArray[np.float64]]:
     """Time history of one 1D contact, uniform samples, as ``kick simulate --history``."""
+
+def history3d(
+    *,
+    foot_mass: float | None = ...,
+    ball_mass: float | None = ...,
+    foot_speed: float | None = ...,
+    ball_speed: float | None = ...,
+    stiffness: float | None = ...,
+    damping: float | None = ...,
+    exponent: float | None = ...,
+    drive_force: float | None = ...,
+    restitution: float | None = ...,
+    offset: float | None = ...,
+    approach_angle: float | None = ...,
+    friction: float | None = ...,
+    ball_radius: float | None = ...,
+    ball_inertia: float | None = ...,
+    tangential_stiffness: float | None = ...,
+    tangential_damping: float | None = ...,
+    foot_inertia: tuple[float, float, float] | Sequence[float] | None = ...,
+    foot_half_extents: tuple[float, float, float] | Sequence[float] | None = ...,
+    border_radius: float | None = ...,
+    gravity: float | None = ...,
+    ground: bool | None = ...,
+    solver: str = ...,
+    law: str = ...,
+    samples: int | None = ...,
+    interval: float | None = ...,
+) -> dict[str, NDArray[np.float64]]:
+    """Time history of one off-center 3D kick, uniform samples, as ``kick simulate3d --history``."""
 
 def fit(
     time: ArrayLike,

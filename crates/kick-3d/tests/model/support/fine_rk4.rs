@@ -79,3 +79,45 @@ pub fn peaks(kick: &Kick3d, contact_time: f64, steps: f64) -> FinePeaks {
         (value, p.t + s * h)
     })
 }
+
+/// The world-frame state at each of `times` (ascending, all before
+/// separation), RK4 as [`peaks`] marches (graded start, switches located, no
+/// step across one); a time inside a step is reached by one RK4 sub-step from
+/// the step's start, and the march goes on from the step's end.
+pub fn states_at(kick: &Kick3d, times: &[f64], contact_time: f64, steps: f64) -> Vec<State> {
+    let d = Dynamics::new(kick);
+    let h = contact_time / steps;
+    let mut y = dynamics::initial_state(kick);
+    let mut t = 0.0;
+    let mut out = Vec::with_capacity(times.len());
+    let mut next_time = times.iter().peekable();
+    while let Some(&&target) = next_time.peek() {
+        let step = if t < 100.0 * h { (0.01 * t).max(1e-9 * h) } else { h };
+        let mut end = t + step;
+        let mut next = d.rk4_step(&y, step);
+        let (g0, g1) = (d.contact(&y).grip_margin, d.contact(&next).grip_margin);
+        if (g0 > 0.0 && g1 < 0.0) || (g0 < 0.0 && g1 > 0.0) {
+            // Stop this step at the switch: the next starts there.
+            let (mut lo, mut hi) = (0.0, step);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                let g = d.contact(&d.rk4_step(&y, mid)).grip_margin;
+                if (g > 0.0) == (g0 > 0.0) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            next = d.rk4_step(&y, hi);
+            end = t + hi;
+        }
+        if target <= end {
+            out.push(d.rk4_step(&y, target - t));
+            next_time.next();
+            continue;
+        }
+        y = next;
+        t = end;
+    }
+    out
+}
