@@ -164,9 +164,11 @@ pub struct KickSpec {
 }
 
 impl KickSpec {
-    /// Fill the gaps with the defaults and validate.
+    /// Fill the gaps with the defaults and validate. A `damping` the law
+    /// ignores is not refused here (`kick sweep3d` draws every 1D parameter):
+    /// front ends call [`ScenarioSpec::check_given`] on what the user gave.
     pub fn build(&self) -> Result<Kick3d, Kick3dError> {
-        Kick3d::new(self.scenario.build()?, &self.kick3d)
+        Kick3d::new(self.scenario.build_drawn()?, &self.kick3d)
     }
 }
 

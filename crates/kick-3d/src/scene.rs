@@ -41,7 +41,7 @@ pub struct Scene {
 
 impl Default for Scene {
     fn default() -> Self {
-        Scene { step: 1e-6 }
+        Scene { step: crate::DEFAULT_SCENE_STEP }
     }
 }
 

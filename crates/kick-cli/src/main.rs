@@ -67,9 +67,9 @@ struct Simulate {
     /// The declared 1D parameters and --law; left out, Table 1's baseline and the paper's law.
     #[command(flatten)]
     scenario: Flags<ScenarioSpec>,
-    /// Step of the fixed-step solvers, s
-    #[arg(long, default_value_t = 5e-6, allow_negative_numbers = true)]
-    dt: f64,
+    /// Step of the fixed-step solvers (seed-rk4, rk4-events), s [default: 5e-6]
+    #[arg(long, allow_negative_numbers = true)]
+    dt: Option<f64>,
     #[arg(long, default_value = "auto", value_parser = SolverChoice::NAMES)]
     solver: String,
     #[arg(long, value_enum, default_value_t = Format::Text)]
@@ -102,9 +102,9 @@ struct Simulate3d {
     /// auto | accurate | 1d | rapier
     #[arg(long, default_value = "auto", value_parser = Solver3d::NAMES)]
     solver: String,
-    /// Step of the rapier scene path, s
-    #[arg(long, default_value_t = 1e-6, allow_negative_numbers = true)]
-    dt: f64,
+    /// Step of the rapier scene path (--solver rapier), s [default: 1e-6]
+    #[arg(long, allow_negative_numbers = true)]
+    dt: Option<f64>,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
     /// Print the wall time of the solve (one run) on stderr
@@ -330,9 +330,9 @@ struct Sweep {
     seed: u64,
     #[arg(long, default_value = "auto", value_parser = SolverChoice::NAMES)]
     solver: String,
-    /// Step of the fixed-step solvers, s
-    #[arg(long, default_value_t = 5e-6)]
-    dt: f64,
+    /// Step of the fixed-step solvers (seed-rk4, rk4-events), s [default: 5e-6]
+    #[arg(long)]
+    dt: Option<f64>,
     /// Result file (its directory is created)
     #[arg(long)]
     out: PathBuf,
@@ -490,8 +490,10 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         }
         Command::Sweep(a) => {
             set_threads(a.threads)?;
-            let settings =
-                sweep::SweepSettings { samples: a.samples, seed: a.seed, solver: a.solver, dt: a.dt, out: a.out, fixed: a.fixed.spec() };
+            // A --dt the solver would ignore is refused (the library's rule).
+            SolverChoice::with_step(&a.solver, a.dt).map_err(|e| e.to_string())?;
+            let dt = a.dt.unwrap_or(kick_compliant::SeedRk4::default().step);
+            let settings = sweep::SweepSettings { samples: a.samples, seed: a.seed, solver: a.solver, dt, out: a.out, fixed: a.fixed.spec() };
             out.print(Format::Text, &sweep::sweep(&settings)?)
         }
         Command::Sweep3d(a) => {

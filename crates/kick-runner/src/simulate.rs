@@ -24,17 +24,17 @@ pub struct Simulation {
 }
 
 /// Solve `spec` with the solver named `solver` (`dt`: step of the fixed-step
-/// solvers), with a history sampled at most `history` seconds apart if given,
+/// solvers, refused with the others), with a history sampled at most `history` seconds apart if given,
 /// and with `flight` given, the ball's flight after it ([`flight::after_1d`]).
 pub fn simulate(
     spec: &ScenarioSpec,
     solver: &str,
-    dt: f64,
+    dt: Option<f64>,
     history: Option<f64>,
     flight: Option<&FlightSpec>,
 ) -> Result<Simulation, String> {
     let scenario = spec.build().map_err(|e| e.to_string())?;
-    let choice = SolverChoice::from_name(solver, dt).map_err(|e| e.to_string())?;
+    let choice = SolverChoice::with_step(solver, dt).map_err(|e| e.to_string())?;
     let (outcome, history) = match history {
         Some(interval) => {
             let (o, h) = choice.solve_recorded(&scenario, interval).map_err(|e| e.to_string())?;
@@ -127,11 +127,12 @@ pub struct Simulation3d {
 }
 
 /// Solve the 3D kick `spec` with the path named `solver` (`dt`: the rapier
-/// scene path's step) and, with `flight` given, the ball's flight after it
+/// scene path's step, refused with the others) and, with `flight` given, the ball's flight after it
 /// ([`flight::after_3d`]; not in `seconds`).
-pub fn simulate3d(spec: &KickSpec, solver: &str, dt: f64, flight: Option<&FlightSpec>) -> Result<Simulation3d, String> {
+pub fn simulate3d(spec: &KickSpec, solver: &str, dt: Option<f64>, flight: Option<&FlightSpec>) -> Result<Simulation3d, String> {
+    spec.scenario.check_given().map_err(|e| e.to_string())?;
     let kick = spec.build().map_err(|e| e.to_string())?;
-    let solver = Solver3d::from_name(solver, dt).map_err(|e| e.to_string())?;
+    let solver = Solver3d::with_step(solver, dt).map_err(|e| e.to_string())?;
     let start = Instant::now();
     let outcome = solver.solve(&kick).map_err(|e| e.to_string())?;
     let seconds = start.elapsed().as_secs_f64();

@@ -7,3 +7,4 @@ mod histories;
 mod reproduce_check;
 mod shard;
 mod sweep3d;
+mod settings;
