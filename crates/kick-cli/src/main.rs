@@ -4,7 +4,7 @@
 mod flags;
 mod output;
 
-use clap::{Args, Parser, Subcommand};
+use clap::{Args, CommandFactory, Parser, Subcommand};
 use flags::{FlightAfter1d, FlightAfter3d, Flags};
 use kick_3d::{KickSpec, Solver3d};
 use kick_compliant::SolverChoice;
@@ -27,6 +27,17 @@ enum Command {
     /// Simulate one 1D contact (defaults: Table 1's baseline).
     Simulate(Simulate),
     /// Simulate one off-center 3D kick: spin, friction, launch direction.
+    ///
+    /// Axes (right-handed, the ball's centre at the origin): x is the foot's
+    /// horizontal line of motion, the kick's direction at zero approach angle;
+    /// y is lateral, the direction of --offset; z is up. The foot moves at
+    /// --foot-speed along (cos α, 0, sin α), α = --approach-angle: the path
+    /// tilts in the x–z plane. The ball moves at --ball-speed along x. --offset
+    /// e puts the foot's line of motion e to the side (y) of the ball's centre;
+    /// the instep face is tangent to the ball where that line meets it.
+    /// --foot-half-extents hx,hy,hz is the instep box's outer half-size (hx
+    /// along the face normal), --border-radius rounds its edges inside that
+    /// size. Vectors in the output (launch_velocity, spin, ...) are in these axes.
     Simulate3d(Simulate3d),
     /// Fly the ball from its launch: drag crisis, Magnus lift, landing, apex, plane crossing.
     Flight(FlightArgs),
@@ -54,6 +65,14 @@ enum Command {
     Sweep3d(Sweep3d),
     /// Run every experiment, draw the figures, run the checks, write paper/README.md.
     Reproduce(Reproduce),
+    /// Shell completions on stdout, e.g. `kick completions bash > /etc/bash_completion.d/kick`.
+    Completions {
+        /// bash, zsh, fish, elvish or powershell
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
+    /// The manual page (roff) on stdout: `kick man > kick.1; man ./kick.1`.
+    Man,
 }
 
 #[derive(Args)]
@@ -407,7 +426,18 @@ fn main() -> ExitCode {
 
 fn execute(command: Command, out: &mut Out) -> CliResult {
     use kick_runner::*;
+    use std::io::Write as _;
     match command {
+        Command::Completions { shell } => {
+            let mut text = Vec::new();
+            clap_complete::generate(shell, &mut Cli::command(), "kick", &mut text);
+            out.write_all(&text).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
+        }
+        Command::Man => {
+            let mut text = Vec::new();
+            clap_mangen::Man::new(Cli::command()).render(&mut text).map_err(|e| e.to_string())?;
+            out.write_all(&text).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
+        }
         Command::Simulate(a) => {
             let flight = a.flight.then(|| a.flight_parameters.spec().0);
             let simulation = simulate::simulate(&a.scenario.spec(), &a.solver, a.dt, a.history, flight.as_ref())?;
