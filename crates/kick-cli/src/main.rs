@@ -10,7 +10,6 @@ use kick_3d::{KickSpec, Solver3d};
 use kick_compliant::SolverChoice;
 use kick_core::ScenarioSpec;
 use kick_flight::FlightSpec;
-use kick_leg::anthropometry::{DE_LEVA_BODY_MASS, DE_LEVA_STATURE};
 use output::{note, CliResult, Format, Out};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -46,6 +45,11 @@ enum Command {
     /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
     Check(FormatOnly),
     /// Effective mass of the articulated leg (Eq. 11) and the exit speed it gives.
+    ///
+    /// With no arguments, the default pose (`kick_runner::leg::LegSettings::default`):
+    /// knee flexed 30°, ankle plantarflexed 60°, thigh 10° forward of vertical;
+    /// free knee and ankle, pinned hip, planar leg; contact at 0.65 of the
+    /// foot's length, horizontal impact; de Leva's (1996) reference male.
     Leg(Leg),
     /// Contact laws (paper, Hunt–Crossley, Lankarani–Nikravesh, Flores, Kelvin–Voigt) on Table 2's scenarios.
     Laws(Laws),
@@ -150,16 +154,19 @@ struct Table2 {
     scenarios: PathBuf,
 }
 
+/// `kick leg`'s defaults: the library's documented default pose.
+static POSE: std::sync::LazyLock<kick_runner::leg::LegSettings> = std::sync::LazyLock::new(Default::default);
+
 #[derive(Args)]
 struct Leg {
     /// Knee flexion, degrees (0 = straight)
-    #[arg(long, default_value_t = 30.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.knee, allow_negative_numbers = true)]
     knee: f64,
     /// Ankle plantarflexion from neutral, degrees (0 = foot at right angles to the shank)
-    #[arg(long, default_value_t = 60.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.ankle, allow_negative_numbers = true)]
     ankle: f64,
     /// Thigh angle from the downward vertical, degrees, positive forward
-    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.hip, allow_negative_numbers = true)]
     hip: f64,
     /// Ankle rigid during contact (default: a free hinge)
     #[arg(long, conflicts_with = "ankle_stiffness")]
@@ -177,25 +184,25 @@ struct Leg {
     #[arg(long)]
     spatial: bool,
     /// Spatial: hip abduction, degrees
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.abduction, allow_negative_numbers = true)]
     abduction: f64,
     /// Spatial: thigh rotation about its long axis, degrees
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.rotation, allow_negative_numbers = true)]
     rotation: f64,
     /// Spatial: contact offset along the foot's mediolateral axis, m
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.lateral_offset, allow_negative_numbers = true)]
     lateral_offset: f64,
     /// Contact point from the ankle along the foot, fraction of foot length
-    #[arg(long, default_value_t = 0.65, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.contact, allow_negative_numbers = true)]
     contact: f64,
     /// Impact direction in the sagittal plane, degrees above horizontal-forward
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.direction, allow_negative_numbers = true)]
     direction: f64,
     /// Body mass, kg [de Leva's reference subject]
-    #[arg(long, default_value_t = DE_LEVA_BODY_MASS, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.body_mass, allow_negative_numbers = true)]
     body_mass: f64,
     /// Stature, m [de Leva's reference subject]
-    #[arg(long, default_value_t = DE_LEVA_STATURE, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.height, allow_negative_numbers = true)]
     height: f64,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,

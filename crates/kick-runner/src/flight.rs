@@ -4,6 +4,7 @@
 
 use crate::printable::Printable;
 use kick_3d::{Kick3d, Outcome3d};
+use kick_core::number::{sig, vector};
 use kick_core::{Outcome, Scenario};
 use kick_flight::{solve, Flight, FlightError, FlightOutcome, FlightParameter, FlightSpec};
 use serde::ser::{Serialize, Serializer};
@@ -92,8 +93,8 @@ pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result
     };
     if !(outcome.launch_velocity[2] > 0.0) {
         return Err(format!(
-            "the 3D kick launches the ball at {:?} m/s, not upward: nothing to fly (an --approach-angle > 0 lifts it)",
-            outcome.launch_velocity
+            "the 3D kick launches the ball at {} m/s, not upward: nothing to fly (an --approach-angle > 0 lifts it)",
+            vector(&outcome.launch_velocity)
         ));
     }
     fly(Flight::from_launch(outcome.launch_velocity, outcome.spin, &spec).map_err(flight_error)?)
@@ -119,27 +120,24 @@ impl Printable for FlightRun {
         let o = &self.outcome;
         let f = &self.flight;
         let mut w = String::new();
-        let v = |a: &[f64], unit: &str| {
-            let parts: Vec<String> = a.iter().map(|x| format!("{x:+.6e}")).collect();
-            format!("[{}] {unit}", parts.join(", "))
-        };
+        let v = |a: &[f64], unit: &str| format!("{} {unit}", vector(a));
         let _ = writeln!(w, "{:<24} {}", "launch_velocity", v(&f.launch_velocity(), "m/s"));
         let _ = writeln!(w, "{:<24} {}", "spin", v(&f.spin(), "rad/s"));
-        let _ = writeln!(w, "{:<24} {:>16.10e} s", "flight_time", o.flight_time);
+        let _ = writeln!(w, "{:<24} {} s", "flight_time", sig(o.flight_time));
         let _ = writeln!(w, "{:<24} {}", "landing_point", v(&o.landing_point, "m"));
-        let _ = writeln!(w, "{:<24} {:>16.10e} m (at {:.6e} s)", "apex_height", o.apex_height, o.apex_time);
+        let _ = writeln!(w, "{:<24} {} m (at {} s)", "apex_height", sig(o.apex_height), sig(o.apex_time));
         let _ = writeln!(w, "{:<24} {}", "landing_velocity", v(&o.landing_velocity, "m/s"));
         match &o.crossing {
             Some(c) => {
                 let _ = writeln!(
                     w,
-                    "{:<24} x = {} m at {:.6e} s: height {:.6e} m, lateral offset {:+.6e} m",
-                    "crossing", c.distance, c.time, c.height, c.lateral_offset
+                    "{:<24} x = {} m at {} s: height {} m, lateral offset {} m",
+                    "crossing", sig(c.distance), sig(c.time), sig(c.height), sig(c.lateral_offset)
                 );
             }
             None => {
                 if let Some(d) = f.distance() {
-                    let _ = writeln!(w, "{:<24} none: the ball lands before x = {d} m", "crossing");
+                    let _ = writeln!(w, "{:<24} none: the ball lands before x = {} m", "crossing", sig(d));
                 }
             }
         }

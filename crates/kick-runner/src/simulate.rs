@@ -6,6 +6,7 @@ use crate::printable::Printable;
 use kick_flight::FlightSpec;
 use kick_3d::{Kick3d, KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
+use kick_core::number::{sig, vector};
 use kick_core::{History, Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, OBSERVABLES};
 use serde::ser::{Serialize, Serializer};
 use serde_json::{Map, Value};
@@ -91,9 +92,9 @@ impl Printable for Simulation {
         let o = &self.outcome;
         let _ = writeln!(w, "solver: {} (path: {})", self.solver, o.method);
         for ((name, unit), value) in OBSERVABLES.iter().zip(o.observable_values()) {
-            let _ = writeln!(w, "{name:<24} {value:>16.10e} {unit}");
+            let _ = writeln!(w, "{name:<24} {:>12} {unit}", sig(value));
         }
-        let _ = writeln!(w, "{:<24} {:>16.3e} J", "energy_residual", o.energy.residual());
+        let _ = writeln!(w, "{:<24} {:>12} J", "energy_residual", sig(o.energy.residual()));
         if let Some(f) = &self.flight {
             let _ = write!(w, "\nflight:\n{}", f.text());
         }
@@ -162,7 +163,7 @@ impl Printable for Simulation3d {
     fn text(&self) -> String {
         let o = &self.outcome;
         let mut w = String::new();
-        let v = |a: [f64; 3], unit: &str| format!("[{:+.6e}, {:+.6e}, {:+.6e}] {unit}", a[0], a[1], a[2]);
+        let v = |a: [f64; 3], unit: &str| format!("{} {unit}", vector(&a));
         let _ = writeln!(w, "solver: {}, normal law: {}", o.solver, o.law.name());
         let _ = writeln!(w, "{:<24} {}", "launch_velocity", v(o.launch_velocity, "m/s"));
         let _ = writeln!(w, "{:<24} {}", "spin", v(o.spin, "rad/s"));
@@ -180,9 +181,9 @@ impl Printable for Simulation3d {
             ("energy_friction_loss", o.energy.friction_loss, "J"),
             ("energy_residual", o.energy.residual(), "J"),
         ] {
-            let _ = writeln!(w, "{name:<24} {value:>16.10e} {unit}");
+            let _ = writeln!(w, "{name:<24} {:>12} {unit}", sig(value));
         }
-        let _ = writeln!(w, "{:<24} {}", "evaluations", o.evaluations);
+        let _ = writeln!(w, "{:<24} {:>12}", "evaluations", o.evaluations);
         if let Some(f) = &self.flight {
             let _ = write!(w, "\nflight:\n{}", f.text());
         }

@@ -8,3 +8,4 @@ mod reproduce_check;
 mod shard;
 mod sweep3d;
 mod settings;
+mod text;
