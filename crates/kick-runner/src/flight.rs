@@ -11,22 +11,41 @@ use serde::ser::{Serialize, Serializer};
 use serde_json::{Map, Value};
 use std::fmt::Write as _;
 
-/// Flight parameters a 1D kick sets: its exit speed (no spin) and its ball's mass.
-pub const SET_BY_1D_KICK: [FlightParameter; 4] =
-    [FlightParameter::Speed, FlightParameter::LaunchVelocity, FlightParameter::Spin, FlightParameter::BallMass];
+/// The kick a flight follows (`kick simulate --flight`, `kick simulate3d --flight`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum After {
+    Kick1d,
+    Kick3d,
+}
 
-/// Flight parameters a 3D kick sets: launch velocity and spin, its ball, and
-/// g (kick-3d's, `kick_core::GRAVITY`; its `gravity` flag is a switch).
-pub const SET_BY_3D_KICK: [FlightParameter; 8] = [
-    FlightParameter::Speed,
-    FlightParameter::LaunchAngle,
-    FlightParameter::Azimuth,
-    FlightParameter::LaunchVelocity,
-    FlightParameter::Spin,
-    FlightParameter::BallMass,
-    FlightParameter::BallRadius,
-    FlightParameter::Gravity,
-];
+impl After {
+    /// Whether the kick sets flight parameter `p`, which then cannot be
+    /// given: a 1D kick its exit speed (no spin) and its ball's mass; a 3D
+    /// kick the whole launch ([`FlightParameter::LAUNCH`]), its ball, and g
+    /// (kick-3d's, `kick_core::GRAVITY`; its `gravity` flag is a switch).
+    pub fn sets(self, p: FlightParameter) -> bool {
+        use FlightParameter::*;
+        match self {
+            After::Kick1d => matches!(p, Speed | LaunchVelocity | Spin | BallMass),
+            After::Kick3d => FlightParameter::LAUNCH.contains(&p) || matches!(p, BallMass | BallRadius | Gravity),
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            After::Kick1d => "1D kick",
+            After::Kick3d => "3D kick",
+        }
+    }
+
+    /// Refuse a parameter of `rest` that the kick sets.
+    fn refuse_set(self, rest: &FlightSpec) -> Result<(), String> {
+        match FlightParameter::ALL.into_iter().find(|&p| self.sets(p) && rest.is_set(p)) {
+            Some(p) => Err(format!("flight parameter `{}` is set by the {} and cannot be given", p.name(), self.name())),
+            None => Ok(()),
+        }
+    }
+}
 
 /// One solved flight: what was flown and what it gave.
 #[derive(Debug, Clone, PartialEq)]
@@ -61,19 +80,11 @@ pub fn flight(spec: &FlightSpec) -> Result<FlightRun, String> {
     fly(spec.build().map_err(flight_error)?)
 }
 
-/// Refuse a parameter of `rest` that the kick sets (`by`: who sets it).
-fn refuse_set(rest: &FlightSpec, set: &[FlightParameter], by: &str) -> Result<(), String> {
-    match set.iter().find(|&&p| rest.is_set(p)) {
-        Some(p) => Err(format!("flight parameter `{}` is set by the {by} and cannot be given", p.name())),
-        None => Ok(()),
-    }
-}
-
 /// The flight after a 1D kick: the ball leaves at its exit speed v_b⁺ with no
 /// spin, in the direction `rest`'s launch_angle (required) and azimuth give;
 /// `rest` gives the air, coefficients, ball radius, g and crossing plane.
 pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Result<FlightRun, String> {
-    refuse_set(rest, &SET_BY_1D_KICK, "1D kick")?;
+    After::Kick1d.refuse_set(rest)?;
     if !(outcome.v_ball_out > 0.0) {
         return Err(format!("the ball leaves the 1D kick at {} m/s: nothing flies forward", outcome.v_ball_out));
     }
@@ -84,7 +95,7 @@ pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Re
 /// The flight after a 3D kick: the ball leaves with the kick's launch velocity
 /// and spin; `rest` gives the air, coefficients and crossing plane.
 pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result<FlightRun, String> {
-    refuse_set(rest, &SET_BY_3D_KICK, "3D kick")?;
+    After::Kick3d.refuse_set(rest)?;
     let spec = FlightSpec {
         ball_mass: Some(kick.base.ball_mass()),
         ball_radius: Some(kick.ball_radius),

@@ -76,8 +76,7 @@ fn leg_laws_and_table2_print_values_in_the_one_form() {
 /// and unit; the stop reason in words.
 #[test]
 fn a_fit_prints_a_table_with_units() {
-    let dir = std::env::temp_dir().join(format!("kick-runner-text-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = crate::scratch("text");
     let written = kick_runner::identify::synthesize(&dir, "s", 3, 40, &Default::default(), 0.0).unwrap();
     let fit = kick_runner::identify::data(&written.spec, None).unwrap();
     let text = fit.text();
