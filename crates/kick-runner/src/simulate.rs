@@ -201,6 +201,7 @@ pub struct SceneConvergence {
 }
 
 pub fn scene_convergence(spec: &KickSpec) -> Result<SceneConvergence, String> {
+    spec.scenario.check_given().map_err(|e| e.to_string())?;
     let kick = spec.build().map_err(|e| e.to_string())?;
     let steps: Vec<f64> = (0..7).map(|i| 4e-5 / f64::from(1u32 << i)).collect();
     let (rows, accurate_seconds) = kick_3d::scene::convergence(&kick, &steps).map_err(|e| e.to_string())?;

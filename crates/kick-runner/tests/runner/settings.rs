@@ -43,6 +43,8 @@ fn simulate3d_refuses_settings_that_do_not_apply() {
     let e = simulate3d(&kick(spec(LawKind::HuntCrossley, Some(50.0), Some(0.5))), "auto", None, None).unwrap_err();
     assert!(e.starts_with("`damping` does not apply to law `hunt-crossley`"), "{e}");
     assert!(simulate3d(&kick(spec(LawKind::HuntCrossley, None, Some(0.5))), "auto", None, None).is_ok());
+    let e = kick_runner::simulate::scene_convergence(&kick(spec(LawKind::PowerLaw, None, Some(0.5)))).unwrap_err();
+    assert!(e.starts_with("`restitution` does not apply"), "{e}");
 }
 
 /// `kick sweep --law flores --restitution 0.6 --damping 5`: the held damping is refused.
