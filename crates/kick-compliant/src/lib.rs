@@ -84,10 +84,11 @@ impl SolverChoice {
     /// step (unknown names are left to `from_name` to refuse).
     pub fn check_step_given(names: &[&str]) -> Result<(), KickError> {
         let known = names.iter().all(|n| SolverChoice::NAMES.contains(n));
-        match names.iter().find(|n| !SolverChoice::FIXED_STEP.contains(n)) {
-            Some(adaptive) if known && names.iter().all(|n| !SolverChoice::FIXED_STEP.contains(n)) => Err(KickError::DoesNotApply {
+        let takes_step = names.iter().any(|n| SolverChoice::FIXED_STEP.contains(n));
+        match names.first() {
+            Some(first) if known && !takes_step => Err(KickError::DoesNotApply {
                 given: "dt",
-                to: format!("solver `{adaptive}`"),
+                to: format!("solver `{first}`"),
                 reason: "it chooses its own steps; `dt` is the step of the fixed-step solvers seed-rk4 and rk4-events",
             }),
             _ => Ok(()),
