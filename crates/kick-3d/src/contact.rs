@@ -191,7 +191,7 @@ pub struct Relative {
 
 impl Relative {
     pub fn new(kick: &Kick3d, phase: Phase) -> Relative {
-        let [hx, hy, hz] = kick.foot_shape.half_extents();
+        let [hx, hy, hz] = kick.foot_shape.core_half_extents();
         let [ix, iy, iz] = kick.foot_inertia;
         let (m_f, m_b) = (kick.base.effective_foot_mass(), kick.base.ball_mass());
         Relative {

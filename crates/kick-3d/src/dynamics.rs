@@ -129,7 +129,7 @@ pub struct Dynamics {
 
 impl Dynamics {
     pub fn new(kick: &Kick3d) -> Dynamics {
-        let [hx, hy, hz] = kick.foot_shape.half_extents();
+        let [hx, hy, hz] = kick.foot_shape.core_half_extents();
         let [ix, iy, iz] = kick.foot_inertia;
         Dynamics {
             law: kick.law(),

@@ -42,6 +42,9 @@ pub use history::{ContactState, Sample3d, HISTORY_COLUMNS_3D};
 pub use model::{FootShape, Kick3d, Kick3dSpec, KickSpec};
 pub use outcome::{EnergyPartition, Outcome3d, OBSERVABLES_3D};
 
+/// The rapier scene path's step when none is given, s (see [`scene`]).
+pub const DEFAULT_SCENE_STEP: f64 = 1e-6;
+
 /// The 3D solvers selectable by name (`--solver`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Solver3d {
@@ -77,6 +80,22 @@ impl Solver3d {
                 Err(Kick3dError::UnknownSolver { name: name.to_string(), expected: "auto, accurate, full-state, 1d, rapier" })
             }
         }
+    }
+
+    /// As `from_name`, with `dt` as the user gave it: `None` is the scene's
+    /// default step; a step given to a path other than `rapier` (which
+    /// choose their own steps, `auto` included) is refused rather than ignored.
+    pub fn with_step(name: &str, dt: Option<f64>) -> Result<Solver3d, Kick3dError> {
+        let solver = Solver3d::from_name(name, dt.unwrap_or(DEFAULT_SCENE_STEP))?;
+        if dt.is_some() && name != "rapier" {
+            return Err(kick_core::KickError::DoesNotApply {
+                given: "dt",
+                to: format!("3D solver `{name}`"),
+                reason: "it chooses its own steps; `dt` is the step of the rapier scene path (`--solver rapier`)",
+            }
+            .into());
+        }
+        Ok(solver)
     }
 
     /// The path `Auto` takes for this kick.

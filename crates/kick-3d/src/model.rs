@@ -33,11 +33,13 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum FootShape {
-    /// A box; the face at local +x touches the ball.
+    /// A box of half-extents `half_extents` (its outer size, the
+    /// `foot_half_extents` given); the face at local +x touches the ball.
     Box { half_extents: [f64; 3] },
-    /// A box of inner half-extents with every edge rounded by `border_radius`
-    /// (the Minkowski sum of the box and a sphere).
-    RoundedBox { half_extents: [f64; 3], border_radius: f64 },
+    /// The Minkowski sum of a core box and a sphere of `border_radius`: every
+    /// edge rounded. The outer size (`foot_half_extents`) is the core's
+    /// half-extents plus the border; the core is derived, never given.
+    RoundedBox { core_half_extents: [f64; 3], border_radius: f64 },
 }
 
 impl FootShape {
@@ -45,9 +47,11 @@ impl FootShape {
     /// (across the line of motion), 10 cm high. An assumption, not a measurement.
     pub const DEFAULT_HALF_EXTENTS: [f64; 3] = parameters::FOOT_HALF_EXTENTS.default_vector();
 
-    pub fn half_extents(&self) -> [f64; 3] {
+    /// Half-extents of the box inside the border (the outer size for a
+    /// plain box): what the geometry queries round by the border radius.
+    pub fn core_half_extents(&self) -> [f64; 3] {
         match *self {
-            FootShape::Box { half_extents } | FootShape::RoundedBox { half_extents, .. } => half_extents,
+            FootShape::Box { half_extents } | FootShape::RoundedBox { core_half_extents: half_extents, .. } => half_extents,
         }
     }
     pub fn border_radius(&self) -> f64 {
@@ -56,10 +60,10 @@ impl FootShape {
             FootShape::RoundedBox { border_radius, .. } => border_radius,
         }
     }
-    /// Outer half-extents (inner box plus border).
+    /// Outer half-extents (core box plus border): `foot_half_extents`.
     pub fn outer_half_extents(&self) -> [f64; 3] {
         let b = self.border_radius();
-        self.half_extents().map(|h| h + b)
+        self.core_half_extents().map(|h| h + b)
     }
     /// Principal moments of a uniform solid box of the outer size and `mass`.
     pub fn solid_inertia(&self, mass: f64) -> [f64; 3] {
@@ -114,7 +118,7 @@ impl Kick3dSpec {
     pub fn foot_shape(&self) -> FootShape {
         let outer = self.foot_half_extents.unwrap_or(FootShape::DEFAULT_HALF_EXTENTS);
         match self.border_radius {
-            Some(b) if b > 0.0 => FootShape::RoundedBox { half_extents: outer.map(|h| h - b), border_radius: b },
+            Some(b) if b > 0.0 => FootShape::RoundedBox { core_half_extents: outer.map(|h| h - b), border_radius: b },
             _ => FootShape::Box { half_extents: outer },
         }
     }
@@ -164,9 +168,11 @@ pub struct KickSpec {
 }
 
 impl KickSpec {
-    /// Fill the gaps with the defaults and validate.
+    /// Fill the gaps with the defaults and validate. A `damping` the law
+    /// ignores is not refused here (`kick sweep3d` draws every 1D parameter):
+    /// front ends call [`ScenarioSpec::check_given`] on what the user gave.
     pub fn build(&self) -> Result<Kick3d, Kick3dError> {
-        Kick3d::new(self.scenario.build()?, &self.kick3d)
+        Kick3d::new(self.scenario.build_drawn()?, &self.kick3d)
     }
 }
 

@@ -41,7 +41,7 @@ pub struct Scene {
 
 impl Default for Scene {
     fn default() -> Self {
-        Scene { step: 1e-6 }
+        Scene { step: crate::DEFAULT_SCENE_STEP }
     }
 }
 
@@ -74,7 +74,7 @@ impl Scene {
             .additional_mass_properties(MassProperties::new(Vec3::ZERO, kick.base.effective_foot_mass(), Vec3::new(ix, iy, iz)))
             .can_sleep(false);
         let foot = world.bodies.insert(foot_body);
-        let [hx, hy, hz] = kick.foot_shape.half_extents();
+        let [hx, hy, hz] = kick.foot_shape.core_half_extents();
         let foot_collider = match kick.foot_shape {
             FootShape::Box { .. } => ColliderBuilder::cuboid(hx, hy, hz),
             FootShape::RoundedBox { border_radius, .. } => ColliderBuilder::round_cuboid(hx, hy, hz, border_radius),

@@ -7,10 +7,10 @@
 
 use clap::{Arg, ArgAction, ArgMatches, Command};
 use kick_3d::KickSpec;
-use kick_core::parameters::{self, ParameterDef, SetParameter, Shape, Value};
+use kick_core::parameters::{self, ParameterDef, SetLaw, SetParameter, Shape, Value};
 use kick_core::{LawKind, ScenarioSpec};
 use kick_flight::{FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
-use kick_runner::flight::{SET_BY_1D_KICK, SET_BY_3D_KICK};
+use kick_runner::flight::After;
 use std::marker::PhantomData;
 
 /// A spec the flags fill: its declared parameters, and (if it takes one) the contact law.
@@ -26,32 +26,28 @@ pub trait FlagSpec: Default {
     fn set_law(&mut self, _law: LawKind) {}
 }
 
-impl FlagSpec for ScenarioSpec {
-    const LAW: bool = true;
-    fn parameters() -> Vec<&'static ParameterDef> {
-        parameters::at_levels(Self::LEVELS).collect()
-    }
-    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
-        // Flags exist only for the spec's parameters, with their shapes.
-        let _ = self.set_parameter(parameter, value);
-    }
-    fn set_law(&mut self, law: LawKind) {
-        self.law = Some(law);
-    }
+/// The specs of declared parameters that take a contact law (1D and 3D
+/// kicks): their levels' parameters and `--law`, set through kick-core's
+/// traits.
+macro_rules! law_spec_flags {
+    ($($spec:ty),*) => {$(
+        impl FlagSpec for $spec {
+            const LAW: bool = true;
+            fn parameters() -> Vec<&'static ParameterDef> {
+                parameters::at_levels(Self::LEVELS).collect()
+            }
+            fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
+                // Flags exist only for the spec's parameters, with their shapes.
+                let _ = self.set_parameter(parameter, value);
+            }
+            fn set_law(&mut self, law: LawKind) {
+                SetLaw::set_law(self, law);
+            }
+        }
+    )*};
 }
 
-impl FlagSpec for KickSpec {
-    const LAW: bool = true;
-    fn parameters() -> Vec<&'static ParameterDef> {
-        parameters::at_levels(Self::LEVELS).collect()
-    }
-    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
-        let _ = self.set_parameter(parameter, value);
-    }
-    fn set_law(&mut self, law: LawKind) {
-        self.scenario.law = Some(law);
-    }
-}
+law_spec_flags!(ScenarioSpec, KickSpec);
 
 fn set_flight(spec: &mut FlightSpec, parameter: &'static ParameterDef, value: Value) {
     if let Ok(p) = FlightParameter::from_name(parameter.name) {
@@ -61,10 +57,6 @@ fn set_flight(spec: &mut FlightSpec, parameter: &'static ParameterDef, value: Va
             Value::Switch(_) => Ok(()),
         };
     }
-}
-
-fn flight_parameters_but(set: &[FlightParameter]) -> Vec<&'static ParameterDef> {
-    FlightParameter::ALL.iter().filter(|p| !set.contains(p)).map(|p| p.def()).collect()
 }
 
 /// `kick flight`: every flight parameter.
@@ -78,31 +70,24 @@ impl FlagSpec for FlightSpec {
     }
 }
 
-/// The flight after a 1D kick (`kick simulate --flight`): the flight
-/// parameters the kick does not set.
+/// The flight after a kick (`--flight` of `kick simulate`, `THREE_D` false,
+/// and of `kick simulate3d`): the flight parameters the kick does not set
+/// ([`After::sets`]), each needing `--flight`.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct FlightAfter1d(pub FlightSpec);
+pub struct FlightAfter<const THREE_D: bool>(pub FlightSpec);
 
-impl FlagSpec for FlightAfter1d {
-    const LAW: bool = false;
-    const REQUIRES: Option<&'static str> = Some(FLIGHT);
-    fn parameters() -> Vec<&'static ParameterDef> {
-        flight_parameters_but(&SET_BY_1D_KICK)
-    }
-    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
-        set_flight(&mut self.0, parameter, value);
-    }
+pub type FlightAfter1d = FlightAfter<false>;
+pub type FlightAfter3d = FlightAfter<true>;
+
+impl<const THREE_D: bool> FlightAfter<THREE_D> {
+    pub const KICK: After = if THREE_D { After::Kick3d } else { After::Kick1d };
 }
 
-/// The flight after a 3D kick (`kick simulate3d --flight`).
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct FlightAfter3d(pub FlightSpec);
-
-impl FlagSpec for FlightAfter3d {
+impl<const THREE_D: bool> FlagSpec for FlightAfter<THREE_D> {
     const LAW: bool = false;
     const REQUIRES: Option<&'static str> = Some(FLIGHT);
     fn parameters() -> Vec<&'static ParameterDef> {
-        flight_parameters_but(&SET_BY_3D_KICK)
+        FlightParameter::ALL.iter().filter(|&&p| !Self::KICK.sets(p)).map(|p| p.def()).collect()
     }
     fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
         set_flight(&mut self.0, parameter, value);
@@ -251,7 +236,7 @@ mod tests {
             let args: Vec<&str> = args.iter().map(String::as_str).collect();
             let flags = parse::<KickSpec>(&args).unwrap_or_else(|e| panic!("{}: {e}", p.name));
             let mut expected = KickSpec::default();
-            expected.set_law(LawKind::PowerLaw);
+            FlagSpec::set_law(&mut expected, LawKind::PowerLaw);
             let value = flags.given.iter().find(|(q, _)| q.name == p.name).map(|(_, v)| *v).expect("given");
             expected.set_parameter(p, value).unwrap();
             assert_eq!(flags.spec(), expected, "{}", p.name);
@@ -293,7 +278,7 @@ mod tests {
             };
             let flag = p.def().flag();
             let given = with_flight(&["--flight", &flag, arg]);
-            assert_eq!(given.is_ok(), !SET_BY_3D_KICK.contains(&p), "{}", p.name());
+            assert_eq!(given.is_ok(), !After::Kick3d.sets(p), "{}", p.name());
             if given.is_ok() {
                 assert!(with_flight(&[&flag, arg]).is_err(), "{} without --flight", p.name());
             }

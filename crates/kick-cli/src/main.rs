@@ -4,13 +4,12 @@
 mod flags;
 mod output;
 
-use clap::{Args, Parser, Subcommand};
+use clap::{Args, CommandFactory, Parser, Subcommand};
 use flags::{FlightAfter1d, FlightAfter3d, Flags};
 use kick_3d::{KickSpec, Solver3d};
 use kick_compliant::SolverChoice;
 use kick_core::ScenarioSpec;
 use kick_flight::FlightSpec;
-use kick_leg::anthropometry::{DE_LEVA_BODY_MASS, DE_LEVA_STATURE};
 use output::{note, CliResult, Format, Out};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -27,6 +26,17 @@ enum Command {
     /// Simulate one 1D contact (defaults: Table 1's baseline).
     Simulate(Simulate),
     /// Simulate one off-center 3D kick: spin, friction, launch direction.
+    ///
+    /// Axes (right-handed, the ball's centre at the origin): x is the foot's
+    /// horizontal line of motion, the kick's direction at zero approach angle;
+    /// y is lateral, the direction of --offset; z is up. The foot moves at
+    /// --foot-speed along (cos α, 0, sin α), α = --approach-angle: the path
+    /// tilts in the x–z plane. The ball moves at --ball-speed along x. --offset
+    /// e puts the foot's line of motion e to the side (y) of the ball's centre;
+    /// the instep face is tangent to the ball where that line meets it.
+    /// --foot-half-extents hx,hy,hz is the instep box's outer half-size (hx
+    /// along the face normal), --border-radius rounds its edges inside that
+    /// size. Vectors in the output (launch_velocity, spin, ...) are in these axes.
     Simulate3d(Simulate3d),
     /// Fly the ball from its launch: drag crisis, Magnus lift, landing, apex, plane crossing.
     Flight(FlightArgs),
@@ -35,6 +45,11 @@ enum Command {
     /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
     Check(FormatOnly),
     /// Effective mass of the articulated leg (Eq. 11) and the exit speed it gives.
+    ///
+    /// With no arguments, the default pose (`kick_runner::leg::LegSettings::default`):
+    /// knee flexed 30°, ankle plantarflexed 60°, thigh 10° forward of vertical;
+    /// free knee and ankle, pinned hip, planar leg; contact at 0.65 of the
+    /// foot's length, horizontal impact; de Leva's (1996) reference male.
     Leg(Leg),
     /// Contact laws (paper, Hunt–Crossley, Lankarani–Nikravesh, Flores, Kelvin–Voigt) on Table 2's scenarios.
     Laws(Laws),
@@ -54,6 +69,14 @@ enum Command {
     Sweep3d(Sweep3d),
     /// Run every experiment, draw the figures, run the checks, write paper/README.md.
     Reproduce(Reproduce),
+    /// Shell completions on stdout, e.g. `kick completions bash > /etc/bash_completion.d/kick`.
+    Completions {
+        /// bash, zsh, fish, elvish or powershell
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
+    /// The manual page (roff) on stdout: `kick man > kick.1; man ./kick.1`.
+    Man,
 }
 
 #[derive(Args)]
@@ -67,9 +90,9 @@ struct Simulate {
     /// The declared 1D parameters and --law; left out, Table 1's baseline and the paper's law.
     #[command(flatten)]
     scenario: Flags<ScenarioSpec>,
-    /// Step of the fixed-step solvers, s
-    #[arg(long, default_value_t = 5e-6, allow_negative_numbers = true)]
-    dt: f64,
+    /// Step of the fixed-step solvers (seed-rk4, rk4-events), s [default: 5e-6]
+    #[arg(long, allow_negative_numbers = true)]
+    dt: Option<f64>,
     #[arg(long, default_value = "auto", value_parser = SolverChoice::NAMES)]
     solver: String,
     #[arg(long, value_enum, default_value_t = Format::Text)]
@@ -130,9 +153,9 @@ struct Simulate3d {
     /// auto | accurate | 1d | rapier
     #[arg(long, default_value = "auto", value_parser = Solver3d::NAMES)]
     solver: String,
-    /// Step of the rapier scene path, s
-    #[arg(long, default_value_t = 1e-6, allow_negative_numbers = true)]
-    dt: f64,
+    /// Step of the rapier scene path (--solver rapier), s [default: 1e-6]
+    #[arg(long, allow_negative_numbers = true)]
+    dt: Option<f64>,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
     /// Print the wall time of the solve (one run) on stderr
@@ -162,16 +185,19 @@ struct Table2 {
     scenarios: PathBuf,
 }
 
+/// `kick leg`'s defaults: the library's documented default pose.
+static POSE: std::sync::LazyLock<kick_runner::leg::LegSettings> = std::sync::LazyLock::new(Default::default);
+
 #[derive(Args)]
 struct Leg {
     /// Knee flexion, degrees (0 = straight)
-    #[arg(long, default_value_t = 30.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.knee, allow_negative_numbers = true)]
     knee: f64,
     /// Ankle plantarflexion from neutral, degrees (0 = foot at right angles to the shank)
-    #[arg(long, default_value_t = 60.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.ankle, allow_negative_numbers = true)]
     ankle: f64,
     /// Thigh angle from the downward vertical, degrees, positive forward
-    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.hip, allow_negative_numbers = true)]
     hip: f64,
     /// Ankle rigid during contact (default: a free hinge)
     #[arg(long, conflicts_with = "ankle_stiffness")]
@@ -189,25 +215,25 @@ struct Leg {
     #[arg(long)]
     spatial: bool,
     /// Spatial: hip abduction, degrees
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.abduction, allow_negative_numbers = true)]
     abduction: f64,
     /// Spatial: thigh rotation about its long axis, degrees
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.rotation, allow_negative_numbers = true)]
     rotation: f64,
     /// Spatial: contact offset along the foot's mediolateral axis, m
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.lateral_offset, allow_negative_numbers = true)]
     lateral_offset: f64,
     /// Contact point from the ankle along the foot, fraction of foot length
-    #[arg(long, default_value_t = 0.65, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.contact, allow_negative_numbers = true)]
     contact: f64,
     /// Impact direction in the sagittal plane, degrees above horizontal-forward
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.direction, allow_negative_numbers = true)]
     direction: f64,
     /// Body mass, kg [de Leva's reference subject]
-    #[arg(long, default_value_t = DE_LEVA_BODY_MASS, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.body_mass, allow_negative_numbers = true)]
     body_mass: f64,
     /// Stature, m [de Leva's reference subject]
-    #[arg(long, default_value_t = DE_LEVA_STATURE, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.height, allow_negative_numbers = true)]
     height: f64,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
@@ -361,9 +387,9 @@ struct Sweep {
     seed: u64,
     #[arg(long, default_value = "auto", value_parser = SolverChoice::NAMES)]
     solver: String,
-    /// Step of the fixed-step solvers, s
-    #[arg(long, default_value_t = 5e-6)]
-    dt: f64,
+    /// Step of the fixed-step solvers (seed-rk4, rk4-events), s [default: 5e-6]
+    #[arg(long)]
+    dt: Option<f64>,
     /// Result file (its directory is created)
     #[arg(long)]
     out: PathBuf,
@@ -446,14 +472,28 @@ fn main() -> ExitCode {
 
 fn execute(command: Command, out: &mut Out) -> CliResult {
     use kick_runner::*;
+    use std::io::Write as _;
     match command {
+        Command::Completions { shell } => {
+            let mut text = Vec::new();
+            clap_complete::generate(shell, &mut Cli::command(), "kick", &mut text);
+            out.write_all(&text).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
+        }
+        Command::Man => {
+            let mut text = Vec::new();
+            clap_mangen::Man::new(Cli::command()).render(&mut text).map_err(|e| e.to_string())?;
+            out.write_all(&text).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
+        }
         Command::Simulate(a) => {
             let flight = a.flight.then(|| a.flight_parameters.spec().0);
             let history = a.history.request()?;
             let simulation = simulate::simulate(&a.scenario.spec(), &a.solver, a.dt, history.as_ref(), flight.as_ref())?;
             out.print(a.format, &simulation)
         }
-        Command::Simulate3d(a) if a.scene_convergence => out.print(Format::Text, &simulate::scene_convergence(&a.kick.spec())?),
+        Command::Simulate3d(a) if a.scene_convergence => match a.dt {
+            Some(_) => Err("`dt` does not apply to --scene-convergence: it runs the rapier path at its own steps (4e-5 s halving to 6.25e-7 s); leave it out".into()),
+            None => out.print(Format::Text, &simulate::scene_convergence(&a.kick.spec())?),
+        },
         Command::Simulate3d(a) => {
             let flight = a.flight.then(|| a.flight_parameters.spec().0);
             let history = a.history.request()?;

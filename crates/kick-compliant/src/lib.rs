@@ -67,6 +67,34 @@ impl SolverChoice {
         }
     }
 
+    /// The solvers that take a fixed step `dt`; the others choose their own steps.
+    pub const FIXED_STEP: [&'static str; 2] = ["seed-rk4", "rk4-events"];
+
+    /// As `from_name`, with `dt` as the user gave it: `None` is seed-rk4's
+    /// default step, and a step given to a solver that chooses its own is
+    /// refused (it would be ignored). One rule for flags, file keys and keywords.
+    pub fn with_step(name: &str, dt: Option<f64>) -> Result<SolverChoice, KickError> {
+        if dt.is_some() {
+            SolverChoice::check_step_given(&[name])?;
+        }
+        SolverChoice::from_name(name, dt.unwrap_or(SeedRk4::default().step))
+    }
+
+    /// Refuse a `dt` given beside `names` when none of them takes a fixed
+    /// step (unknown names are left to `from_name` to refuse).
+    pub fn check_step_given(names: &[&str]) -> Result<(), KickError> {
+        let known = names.iter().all(|n| SolverChoice::NAMES.contains(n));
+        let takes_step = names.iter().any(|n| SolverChoice::FIXED_STEP.contains(n));
+        match names.first() {
+            Some(first) if known && !takes_step => Err(KickError::DoesNotApply {
+                given: "dt",
+                to: format!("solver `{first}`"),
+                reason: "it chooses its own steps; `dt` is the step of the fixed-step solvers seed-rk4 and rk4-events",
+            }),
+            _ => Ok(()),
+        }
+    }
+
     /// As `from_name` with the adaptive methods' tolerance (relative and
     /// absolute, in scaled units) set to `tolerance`.
     pub fn with_settings(name: &str, step: f64, tolerance: f64) -> Result<SolverChoice, KickError> {

@@ -74,6 +74,10 @@ pub enum KickError {
     UnknownSolver { name: String, expected: &'static str },
     #[error("solver `{solver}` does not apply to this scenario: {reason}")]
     NotApplicable { solver: &'static str, reason: &'static str },
+    /// A setting given that the chosen law or solver would ignore
+    /// (`restitution` under the paper's law, `dt` with an adaptive solver).
+    #[error("`{given}` does not apply to {to}: {reason}; leave it out")]
+    DoesNotApply { given: &'static str, to: String, reason: &'static str },
     #[error("integration failed at t = {} s: {reason}", short(*.time))]
     Integration { time: f64, reason: String },
     #[error("non-finite {quantity} at t = {} s", short(*.time))]
@@ -148,7 +152,8 @@ impl KickError {
             | KickError::OutOfRange { .. }
             | KickError::HistoryTooLong { .. }
             | KickError::UnknownSolver { .. }
-            | KickError::NotApplicable { .. } => Status::Refused,
+            | KickError::NotApplicable { .. }
+            | KickError::DoesNotApply { .. } => Status::Refused,
         }
     }
 }

@@ -301,6 +301,28 @@ impl LawKind {
         }
     }
 
+    /// Refuse a damping setting this law would ignore: the paper's law
+    /// takes `damping` (Eq. 20), every other law takes its damping from the
+    /// target `restitution`. `damping` and `restitution` say which of the two
+    /// the user gave; one rule for flags, file keys and keywords.
+    pub fn check_given(self, damping: bool, restitution: bool) -> Result<(), KickError> {
+        let to = format!("law `{}`", self.name());
+        match self {
+            LawKind::PowerLaw if restitution => Err(KickError::DoesNotApply {
+                given: "restitution",
+                to,
+                reason: "the paper's law takes its damping from `damping` (Eq. 20); a target restitution sets the other laws' damping",
+            }),
+            LawKind::PowerLaw => Ok(()),
+            _ if damping => Err(KickError::DoesNotApply {
+                given: "damping",
+                to,
+                reason: "this law takes its damping from the target `restitution`; `damping` is the paper's law's (power-law)",
+            }),
+            _ => Ok(()),
+        }
+    }
+
     pub fn from_name(name: &str) -> Result<LawKind, LawError> {
         LawKind::ALL
             .into_iter()

@@ -20,7 +20,7 @@ pub mod scenario;
 pub mod special;
 
 pub use error::{KickError, Status};
-pub use number::short;
+pub use number::{short, sig};
 use std::ops::ControlFlow;
 pub use law::{ContactLaw, PowerLawContact};
 pub use laws::{AnyLaw, LawKind};

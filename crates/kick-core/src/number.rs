@@ -10,11 +10,28 @@ use std::fmt;
 /// Significant digits of [`short`].
 pub const SHORT_DIGITS: usize = 5;
 
+/// Significant digits of [`sig`], the form of values in text outputs.
+pub const VALUE_DIGITS: usize = 6;
+
 /// `x` in short form, for messages: [`SHORT_DIGITS`] significant digits,
 /// trailing zeros dropped, plain notation for 1e-3 ≤ |x| < 1e5 and
 /// scientific otherwise (`717.43`, `0.97`, `1.0475e-7`, `1e308`, `inf`).
 pub fn short(x: f64) -> Short {
     Short(x)
+}
+
+/// `x` as every text output prints a value (`kick simulate`, `kick fit`,
+/// tables): the form of [`short`] with [`VALUE_DIGITS`] significant digits
+/// (`31.9793`, `0.00529317`, `4.2e5`). Width and alignment (`{:>12}`) apply.
+/// JSON and result files keep every digit.
+pub fn sig(x: f64) -> Digits {
+    Digits { x, digits: VALUE_DIGITS }
+}
+
+/// A vector as text outputs print it: `[a, b, c]`, each as [`sig`].
+pub fn vector(v: &[f64]) -> String {
+    let parts: Vec<String> = v.iter().map(|&x| sig(x).to_string()).collect();
+    format!("[{}]", parts.join(", "))
 }
 
 /// See [`short`].
@@ -23,25 +40,38 @@ pub struct Short(pub f64);
 
 impl fmt::Display for Short {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let x = self.0;
+        Digits { x: self.0, digits: SHORT_DIGITS }.fmt(f)
+    }
+}
+
+/// `x` to `digits` significant digits in the form of [`short`]; see [`sig`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Digits {
+    pub x: f64,
+    pub digits: usize,
+}
+
+impl fmt::Display for Digits {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (x, digits) = (self.x, self.digits.max(1));
         if x.is_nan() {
-            return f.write_str("NaN");
+            return f.pad("NaN");
         }
         if x.is_infinite() {
-            return f.write_str(if x > 0.0 { "inf" } else { "-inf" });
+            return f.pad(if x > 0.0 { "inf" } else { "-inf" });
         }
         if x == 0.0 {
-            return f.write_str("0");
+            return f.pad("0");
         }
-        // The decimal exponent after rounding to SHORT_DIGITS (99999.7 is 1e5).
-        let scientific = format!("{x:.*e}", SHORT_DIGITS - 1);
+        // The decimal exponent after rounding to `digits` (99999.7 is 1e5).
+        let scientific = format!("{x:.*e}", digits - 1);
         let (mantissa, exponent) = scientific.split_once('e').unwrap_or((&scientific, "0"));
         let exponent: i32 = exponent.parse().unwrap_or(0);
         if (-3..5).contains(&exponent) {
-            let decimals = (SHORT_DIGITS as i32 - 1 - exponent).max(0) as usize;
-            f.write_str(trim_zeros(&format!("{x:.decimals$}")))
+            let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
+            f.pad(trim_zeros(&format!("{x:.decimals$}")))
         } else {
-            write!(f, "{}e{exponent}", trim_zeros(mantissa))
+            f.pad(&format!("{}e{exponent}", trim_zeros(mantissa)))
         }
     }
 }
@@ -86,5 +116,28 @@ mod tests {
         for (x, expected) in cases {
             assert_eq!(short(x).to_string(), expected, "{x:e}");
         }
+    }
+
+    /// Text outputs' form: six significant digits, the same notation, and
+    /// width and alignment honoured.
+    #[test]
+    fn values_in_text_outputs() {
+        use super::{sig, vector};
+        let cases = [
+            (31.979279398204, "31.9793"),
+            (0.0052931654, "0.00529317"),
+            (420000.0, "4.2e5"),
+            (3802.86221097, "3802.86"),
+            (123456.7, "1.23457e5"),
+            (-8.0060897, "-8.00609"),
+            (1.5e-12, "1.5e-12"),
+            (0.0, "0"),
+        ];
+        for (x, expected) in cases {
+            assert_eq!(sig(x).to_string(), expected, "{x:e}");
+        }
+        assert_eq!(format!("[{:>8}]", sig(2.5)), "[     2.5]");
+        assert_eq!(format!("[{:<6}]", super::short(f64::INFINITY)), "[inf   ]");
+        assert_eq!(vector(&[1.0, -0.25, 3e-9]), "[1, -0.25, 3e-9]");
     }
 }

@@ -462,7 +462,7 @@ pub const FOOT_SPEED: ParameterDef = scalar(
 );
 pub const BALL_SPEED: ParameterDef = scalar(
     "ball_speed", "v_b⁻", "m/s", Scenario, Number(0.0), Valid::FINITE, SampleRange::linear(-10.0, 10.0),
-    "Ball speed before contact (along the foot's path in 3D)",
+    "Ball speed before contact (3D: the ball moves along x, the foot's horizontal line of motion, whatever the approach angle)",
 );
 pub const STIFFNESS: ParameterDef = scalar(
     "stiffness", "k", "N/m^n", Scenario, Number(4.2e5), Valid::POSITIVE, SampleRange::log(1e4, 1e7),

@@ -127,14 +127,30 @@ impl ScenarioSpec {
         Ok(self)
     }
 
-    /// Fill the gaps from Table 1 and validate.
+    /// Fill the gaps from Table 1 and validate; a damping setting the law
+    /// would ignore is refused ([`ScenarioSpec::check_given`]).
     pub fn build(&self) -> Result<Scenario, KickError> {
+        self.check_given()?;
+        self.build_drawn()
+    }
+
+    /// Refuse `damping` under a law that takes a restitution, and
+    /// `restitution` under the paper's law ([`LawKind::check_given`]).
+    pub fn check_given(&self) -> Result<(), KickError> {
+        self.law.unwrap_or(LawKind::PowerLaw).check_given(self.damping.is_some(), self.restitution.is_some())
+    }
+
+    /// As [`ScenarioSpec::build`] without [`ScenarioSpec::check_given`]: for
+    /// samplers that draw every parameter whatever the law (`kick sweep3d`),
+    /// whose `damping` is not the user's. Front ends call `build`.
+    pub fn build_drawn(&self) -> Result<Scenario, KickError> {
+        let law = self.law.unwrap_or(LawKind::PowerLaw);
         let base = Scenario::BASELINE;
         let mut values = [0.0; 8];
         for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
             *slot = self.get(p).unwrap_or_else(|| base.get(p));
         }
-        Scenario::from_values(values)?.with_law(self.law.unwrap_or(LawKind::PowerLaw), self.restitution)
+        Scenario::from_values(values)?.with_law(law, self.restitution)
     }
 }
 
@@ -356,10 +372,14 @@ impl Scenario {
         self.restitution_target
     }
 
+    /// The spec that builds this scenario: every parameter its law takes
+    /// (`damping` only under the paper's law, see [`LawKind::check_given`]).
     pub fn spec(&self) -> ScenarioSpec {
         let mut spec = ScenarioSpec::default();
         for p in Parameter::ALL {
-            spec.set(p, self.get(p));
+            if p != Parameter::Damping || self.law_kind() == LawKind::PowerLaw {
+                spec.set(p, self.get(p));
+            }
         }
         spec.law = Some(self.law_kind());
         spec.restitution = self.restitution_target;
@@ -468,5 +488,26 @@ mod tests {
         by_name.set_named("restitution", Value::Number(0.6)).unwrap();
         assert_eq!(by_name.restitution, Some(0.6));
         assert!(by_name.set_named("offset", Value::Number(0.1)).is_err());
+    }
+
+    /// A damping setting the chosen law would ignore is refused, naming the
+    /// setting and the law; the setting the law takes is accepted.
+    #[test]
+    fn settings_a_law_ignores_are_refused() {
+        let spec = |law, damping, restitution| ScenarioSpec { law, damping, restitution, ..Default::default() };
+        let message = |s: ScenarioSpec| s.build().unwrap_err().to_string();
+        let e = message(spec(None, None, Some(0.5)));
+        assert!(e.starts_with("`restitution` does not apply to law `power-law`"), "{e}");
+        let e = message(spec(Some(LawKind::PowerLaw), Some(100.0), Some(0.5)));
+        assert!(e.starts_with("`restitution` does not apply to law `power-law`"), "{e}");
+        let e = message(spec(Some(LawKind::Flores), Some(100.0), Some(0.5)));
+        assert!(e.starts_with("`damping` does not apply to law `flores`"), "{e}");
+        assert!(e.contains("`restitution`"), "{e}");
+        assert_eq!(spec(Some(LawKind::Flores), Some(100.0), Some(0.5)).build().unwrap_err().status(), crate::Status::Refused);
+        // What each law takes still builds, and a scenario's spec builds it again.
+        assert_eq!(spec(None, Some(100.0), None).build().unwrap().paper_law().damping, 100.0);
+        let flores = spec(Some(LawKind::Flores), None, Some(0.5)).build().unwrap();
+        assert_eq!(flores.restitution_target(), Some(0.5));
+        assert_eq!(flores.spec().build().unwrap(), flores);
     }
 }

@@ -132,6 +132,16 @@ impl FlightParameter {
         FlightParameter::Distance,
     ];
 
+    /// The launch state a kick gives the ball: its velocity (as speed and
+    /// angles, or as a vector) and its spin.
+    pub const LAUNCH: [FlightParameter; 5] = [
+        FlightParameter::Speed,
+        FlightParameter::LaunchAngle,
+        FlightParameter::Azimuth,
+        FlightParameter::LaunchVelocity,
+        FlightParameter::Spin,
+    ];
+
     /// The declaration: name, symbol, unit, default, valid range, doc.
     pub fn def(self) -> &'static ParameterDef {
         &FLIGHT_PARAMETERS[self as usize]

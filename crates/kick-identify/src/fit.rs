@@ -591,7 +591,7 @@ pub fn flatten(observations: &Observations) -> (Vec<f64>, Vec<f64>, Vec<String>)
             for (t, v) in h.data.times.iter().zip(values) {
                 observed.push(*v);
                 sigma.push(sig);
-                labels.push(format!("{}@{t:e}", channel.name()));
+                labels.push(format!("{} at t = {} s", channel.name(), kick_core::number::sig(*t)));
             }
         }
     }

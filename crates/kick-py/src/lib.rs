@@ -50,7 +50,7 @@ pub(crate) fn law(name: &str) -> PyResult<LawKind> {
 
 /// The 1D solver named as `--solver` names it; `dt` (seed-rk4's step) defaults as the CLI's.
 pub(crate) fn solver_1d(name: &str, dt: Option<f64>) -> PyResult<SolverChoice> {
-    SolverChoice::from_name(name, dt.unwrap_or(bridge::default_dt())).map_err(value_error)
+    SolverChoice::with_step(name, dt).map_err(value_error)
 }
 
 /// One 1D contact: the object `kick simulate --format json` prints.
@@ -65,7 +65,7 @@ fn simulate<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     guard(|| {
         let spec = params::scenario_spec(params, crate::law(law)?)?;
-        let object = bridge::simulate(&spec, solver, dt.unwrap_or(bridge::default_dt())).map_err(value_error)?;
+        let object = bridge::simulate(&spec, solver, dt).map_err(value_error)?;
         convert::json_to_py(py, &object)
     })
 }
@@ -82,7 +82,7 @@ fn simulate3d<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     guard(|| {
         let spec = params::kick_spec(params, crate::law(law)?)?;
-        let object = bridge::simulate3d(&spec, solver, dt.unwrap_or(bridge::default_scene_dt())).map_err(value_error)?;
+        let object = bridge::simulate3d(&spec, solver, dt).map_err(value_error)?;
         convert::json_to_py(py, &object)
     })
 }

@@ -372,6 +372,18 @@ fn run_many<'py, M: Model>(
     Ok(out)
 }
 
+/// A `damping` or `restitution` keyword the law would ignore is refused for
+/// the whole call (`LawKind::check_given`), not row by row.
+fn check_law_keywords(law: kick_core::LawKind, arrays: Option<&Bound<'_, PyDict>>) -> PyResult<()> {
+    let given = |name: &str| -> PyResult<bool> {
+        Ok(match arrays {
+            Some(a) => a.get_item(name)?.is_some_and(|v| !v.is_none()),
+            None => false,
+        })
+    };
+    law.check_given(given("damping")?, given("restitution")?).map_err(value_error)
+}
+
 /// Many 1D contacts: `simulate`'s keywords, each a scalar or an array.
 #[pyfunction]
 #[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, threads = None, **arrays))]
@@ -385,7 +397,9 @@ pub fn simulate_many<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let model = Model1d::new(crate::solver_1d(solver, dt)?);
-        let base: ScenarioSpec = crate::params::spec(None, crate::law(law)?)?;
+        let law = crate::law(law)?;
+        check_law_keywords(law, arrays)?;
+        let base: ScenarioSpec = crate::params::spec(None, law)?;
         run_many(py, &model, base, threads, arrays)
     })
 }
@@ -403,9 +417,11 @@ pub fn simulate3d_many<'py>(
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let solver = Solver3d::from_name(solver, dt.unwrap_or_else(crate::bridge::default_scene_dt)).map_err(value_error)?;
+        let solver = Solver3d::with_step(solver, dt).map_err(value_error)?;
         let model = Model3d::new(solver)?;
-        let base: KickSpec = crate::params::spec(None, crate::law(law)?)?;
+        let law = crate::law(law)?;
+        check_law_keywords(law, arrays)?;
+        let base: KickSpec = crate::params::spec(None, law)?;
         run_many(py, &model, base, threads, arrays)
     })
 }

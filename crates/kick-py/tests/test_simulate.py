@@ -52,6 +52,12 @@ ERRORS = [
     ("simulate3d", {"offset": 0.2}),
     ("simulate3d", {"approach_angle": 95.0}),
     ("simulate3d", {"foot_inertia": (1.0, -1.0, 1.0)}),
+    # Settings that do not apply are refused, never ignored.
+    ("simulate", {"restitution": 0.5}),
+    ("simulate", {"law": "flores", "restitution": 0.5, "damping": 100.0}),
+    ("simulate", {"solver": "accurate", "dt": 1e-6}),
+    ("simulate3d", {"solver": "accurate", "dt": 1e-6}),
+    ("simulate3d", {"law": "hunt-crossley", "restitution": 0.5, "damping": 100.0}),
 ]
 
 
@@ -61,6 +67,16 @@ def test_errors_carry_the_cli_message(kick_bin, function, case):
     with pytest.raises(ValueError) as error:
         getattr(kick, function)(**case)
     assert str(error.value) == message
+
+
+def test_many_refuses_settings_that_do_not_apply():
+    """A setting the law or solver would ignore fails the call, not each row."""
+    with pytest.raises(ValueError, match="`damping` does not apply to law `flores`"):
+        kick.simulate_many(law="flores", restitution=0.5, damping=[10.0, 20.0])
+    with pytest.raises(ValueError, match="`restitution` does not apply to law `power-law`"):
+        kick.simulate3d_many(restitution=[0.5, 0.6])
+    with pytest.raises(ValueError, match="`dt` does not apply to solver `auto`"):
+        kick.simulate_many(dt=1e-6, foot_mass=[1.0, 2.0])
 
 
 def test_unknown_names_list_the_valid_ones():

@@ -2,6 +2,7 @@
 
 use crate::printable::Printable;
 use kick_core::check::CheckRow;
+use kick_core::sig;
 use serde::Serialize;
 use std::fmt::Write as _;
 
@@ -29,17 +30,17 @@ pub fn run_all() -> CheckTable {
 impl Printable for CheckTable {
     fn text(&self) -> String {
         let mut w = String::new();
-        let _ = writeln!(w, "{:<6} {:<10} {:>20} {:>20} {:>10} {:>10}  check", "result", "equation", "expected", "actual", "error", "tolerance");
+        let _ = writeln!(w, "{:<6} {:<10} {:>12} {:>12} {:>12} {:>12}  check", "result", "equation", "expected", "actual", "error", "tolerance");
         for r in &self.rows {
             let _ = writeln!(
                 w,
-                "{:<6} {:<10} {:>20.12e} {:>20.12e} {:>10.3e} {:>10.3e}  {}",
+                "{:<6} {:<10} {:>12} {:>12} {:>12} {:>12}  {}",
                 if r.passed { "PASS" } else { "FAIL" },
                 r.equation,
-                r.expected,
-                r.actual,
-                r.error,
-                r.tolerance,
+                sig(r.expected),
+                sig(r.actual),
+                sig(r.error),
+                sig(r.tolerance),
                 r.name
             );
         }

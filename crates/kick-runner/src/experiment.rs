@@ -419,6 +419,10 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         (None, None) => vec![Spanned::new(0..0, "accurate".to_string())],
         (Some(s), Some(_)) => return Err(at.error(s.span(), "solver", "give `solver` or `solvers`, not both")),
     };
+    if let Some(given) = &raw.dt {
+        let names: Vec<&str> = solver_names.iter().map(|n| n.get_ref().as_str()).collect();
+        SolverChoice::check_step_given(&names).map_err(|e| at.error(given.span(), "dt", e.to_string()))?;
+    }
     let mut solvers = Vec::new();
     for (i, name) in solver_names.iter().enumerate() {
         if solver_names[..i].iter().any(|n| n.get_ref() == name.get_ref()) {
@@ -439,11 +443,14 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     // `law`, or in a table ([[scenario]] over [base]), but not both.
     let top_restitution = raw.restitution.as_ref();
     let law_span = top_restitution.map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
-    let with_law = |s: Scenario, table: &str, given: Option<&Spanned<f64>>| -> Result<Scenario, ExperimentError> {
+    let check_law = |damping, restitution| law_settings_apply(&at, law, damping, restitution);
+    let with_law = |s: Scenario, table: &str, given: Option<&Spanned<f64>>, damping: Located| -> Result<Scenario, ExperimentError> {
         let key = format!("{table}.restitution");
         if let (Some(_), Some(r)) = (top_restitution, given) {
             return Err(at.error(r.span(), &key, "`restitution` is also set at the top level; set it in one place"));
         }
+        let restitution_key = if given.is_some() { key.clone() } else { "restitution".to_string() };
+        check_law(damping, given.or(top_restitution).map(|r| (r.span(), restitution_key)))?;
         let (restitution, span, key) = match given.or(top_restitution) {
             Some(r) if given.is_some() => (Some(*r.get_ref()), r.span(), key),
             other => (other.map(|r| *r.get_ref()), law_span.clone(), "law".to_string()),
@@ -451,7 +458,8 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         s.with_law(law, restitution).map_err(|e| at.error(span, &key, e.to_string()))
     };
     // The base scenario of a grid; named scenarios build their own over [base].
-    let base = || with_law(build(&at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution());
+    let base_damping = || base_raw.get(Parameter::Damping).map(|d| (d.span(), "base.damping".to_string()));
+    let base = || with_law(build(&at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution(), base_damping());
 
     let sources = [raw.sweep.is_some(), raw.scenario.is_some(), raw.table2.is_some()];
     if sources.iter().filter(|&&s| s).count() > 1 {
@@ -472,6 +480,9 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
             }
             if let Some(v) = base_raw.get(parameter) {
                 return Err(at.error(v.span(), &format!("base.{}", parameter.name()), "this parameter is also swept; set it in one place"));
+            }
+            if parameter == Parameter::Damping {
+                check_law(Some((axis.parameter.span(), key.clone())), None)?;
             }
             let (values, span, value_spans) = axis_values(&at, axis, &key)?;
             total = total.saturating_mul(values.len() as u64);
@@ -502,7 +513,8 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
                 return Err(at.error(entry.name().span(), &key, "scenario name used twice"));
             }
             let restitution = entry.restitution().or(base_raw.restitution());
-            let scenario = with_law(build(&at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution)?;
+            let damping = entry.get(Parameter::Damping).map(|d| (d.span(), format!("{key}.damping"))).or_else(base_damping);
+            let scenario = with_law(build(&at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution, damping)?;
             names.push(entry.name().get_ref().clone());
             scenarios.push(scenario);
         }
@@ -703,6 +715,22 @@ fn axis_values<P>(at: &Locator, axis: &RawAxis<P>, key: &str) -> Result<(Vec<f64
     };
     let spans = vec![range.span(); values.len()];
     Ok((values, range.span(), spans))
+}
+
+/// A key and where it is: the span of its value and its dotted name.
+type Located = Option<(std::ops::Range<usize>, String)>;
+
+/// Refuse a `damping` or `restitution` the law would ignore
+/// ([`kick_core::LawKind::check_given`]), at the key that gave it.
+fn law_settings_apply(at: &Locator, law: kick_core::LawKind, damping: Located, restitution: Located) -> Result<(), ExperimentError> {
+    law.check_given(damping.is_some(), restitution.is_some()).map_err(|e| {
+        let (span, key) = match &e {
+            KickError::DoesNotApply { given: "damping", .. } => damping,
+            _ => restitution,
+        }
+        .unwrap_or_default();
+        at.error(span, &key, e.to_string())
+    })
 }
 
 /// Build a scenario from optional spanned values, naming the key of the first

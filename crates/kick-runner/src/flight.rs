@@ -2,9 +2,10 @@
 //! `kick simulate` and `kick simulate3d`): a kick-flight solve with its JSON
 //! and text forms, and the chaining of a kick's launch into it.
 
-use crate::history::{flight_values, HistoryMeta, HistoryRequest, FLIGHT_HISTORY_COLUMNS};
+use crate::history::{flight_values as sample_values, HistoryMeta, HistoryRequest, FLIGHT_HISTORY_COLUMNS};
 use crate::printable::Printable;
 use kick_3d::{Kick3d, Outcome3d};
+use kick_core::number::{sig, vector};
 use kick_core::{Outcome, Scenario, Spacing};
 use kick_flight::{solve, Flight, FlightError, FlightOutcome, FlightParameter, FlightSpec, Sampling};
 use serde::ser::{Serialize, Serializer};
@@ -12,22 +13,41 @@ use serde_json::{Map, Value};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-/// Flight parameters a 1D kick sets: its exit speed (no spin) and its ball's mass.
-pub const SET_BY_1D_KICK: [FlightParameter; 4] =
-    [FlightParameter::Speed, FlightParameter::LaunchVelocity, FlightParameter::Spin, FlightParameter::BallMass];
+/// The kick a flight follows (`kick simulate --flight`, `kick simulate3d --flight`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum After {
+    Kick1d,
+    Kick3d,
+}
 
-/// Flight parameters a 3D kick sets: launch velocity and spin, its ball, and
-/// g (kick-3d's, `kick_core::GRAVITY`; its `gravity` flag is a switch).
-pub const SET_BY_3D_KICK: [FlightParameter; 8] = [
-    FlightParameter::Speed,
-    FlightParameter::LaunchAngle,
-    FlightParameter::Azimuth,
-    FlightParameter::LaunchVelocity,
-    FlightParameter::Spin,
-    FlightParameter::BallMass,
-    FlightParameter::BallRadius,
-    FlightParameter::Gravity,
-];
+impl After {
+    /// Whether the kick sets flight parameter `p`, which then cannot be
+    /// given: a 1D kick its exit speed (no spin) and its ball's mass; a 3D
+    /// kick the whole launch ([`FlightParameter::LAUNCH`]), its ball, and g
+    /// (kick-3d's, `kick_core::GRAVITY`; its `gravity` flag is a switch).
+    pub fn sets(self, p: FlightParameter) -> bool {
+        use FlightParameter::*;
+        match self {
+            After::Kick1d => matches!(p, Speed | LaunchVelocity | Spin | BallMass),
+            After::Kick3d => FlightParameter::LAUNCH.contains(&p) || matches!(p, BallMass | BallRadius | Gravity),
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            After::Kick1d => "1D kick",
+            After::Kick3d => "3D kick",
+        }
+    }
+
+    /// Refuse a parameter of `rest` that the kick sets.
+    fn refuse_set(self, rest: &FlightSpec) -> Result<(), String> {
+        match FlightParameter::ALL.into_iter().find(|&p| self.sets(p) && rest.is_set(p)) {
+            Some(p) => Err(format!("flight parameter `{}` is set by the {} and cannot be given", p.name(), self.name())),
+            None => Ok(()),
+        }
+    }
+}
 
 /// One solved flight: what was flown and what it gave.
 #[derive(Debug, Clone, PartialEq)]
@@ -100,7 +120,7 @@ pub fn flight_report(spec: &FlightSpec, history: Option<&HistoryRequest>) -> Res
         Spacing::Count(n) => Sampling::Samples(n),
         Spacing::Interval(dt) => Sampling::Interval(dt),
     };
-    let (outcome, path) = crate::history::write(request, &FLIGHT_HISTORY_COLUMNS, &meta_flight(&f), |s| flight_values(s).to_vec(), |sink| {
+    let (outcome, path) = crate::history::write(request, &FLIGHT_HISTORY_COLUMNS, &meta_flight(&f), |s| sample_values(s).to_vec(), |sink| {
         let h = kick_flight::history(&f, sampling).map_err(|e| match e {
             // The spacing's own flags, not flight parameters.
             FlightError::TooManySamples { name, .. } | FlightError::InvalidParameter { name: name @ ("samples" | "interval"), .. } => {
@@ -133,19 +153,11 @@ impl Printable for FlightReport {
     }
 }
 
-/// Refuse a parameter of `rest` that the kick sets (`by`: who sets it).
-fn refuse_set(rest: &FlightSpec, set: &[FlightParameter], by: &str) -> Result<(), String> {
-    match set.iter().find(|&&p| rest.is_set(p)) {
-        Some(p) => Err(format!("flight parameter `{}` is set by the {by} and cannot be given", p.name())),
-        None => Ok(()),
-    }
-}
-
 /// The flight after a 1D kick: the ball leaves at its exit speed v_b⁺ with no
 /// spin, in the direction `rest`'s launch_angle (required) and azimuth give;
 /// `rest` gives the air, coefficients, ball radius, g and crossing plane.
 pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Result<FlightRun, String> {
-    refuse_set(rest, &SET_BY_1D_KICK, "1D kick")?;
+    After::Kick1d.refuse_set(rest)?;
     if !(outcome.v_ball_out > 0.0) {
         return Err(format!("the ball leaves the 1D kick at {} m/s: nothing flies forward", outcome.v_ball_out));
     }
@@ -156,7 +168,7 @@ pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Re
 /// The flight after a 3D kick: the ball leaves with the kick's launch velocity
 /// and spin; `rest` gives the air, coefficients and crossing plane.
 pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result<FlightRun, String> {
-    refuse_set(rest, &SET_BY_3D_KICK, "3D kick")?;
+    After::Kick3d.refuse_set(rest)?;
     let spec = FlightSpec {
         ball_mass: Some(kick.base.ball_mass()),
         ball_radius: Some(kick.ball_radius),
@@ -165,8 +177,8 @@ pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result
     };
     if !(outcome.launch_velocity[2] > 0.0) {
         return Err(format!(
-            "the 3D kick launches the ball at {:?} m/s, not upward: nothing to fly (an --approach-angle > 0 lifts it)",
-            outcome.launch_velocity
+            "the 3D kick launches the ball at {} m/s, not upward: nothing to fly (an --approach-angle > 0 lifts it)",
+            vector(&outcome.launch_velocity)
         ));
     }
     fly(Flight::from_launch(outcome.launch_velocity, outcome.spin, &spec).map_err(flight_error)?)
@@ -282,27 +294,24 @@ impl Printable for FlightRun {
         let o = &self.outcome;
         let f = &self.flight;
         let mut w = String::new();
-        let v = |a: &[f64], unit: &str| {
-            let parts: Vec<String> = a.iter().map(|x| format!("{x:+.6e}")).collect();
-            format!("[{}] {unit}", parts.join(", "))
-        };
+        let v = |a: &[f64], unit: &str| format!("{} {unit}", vector(a));
         let _ = writeln!(w, "{:<24} {}", "launch_velocity", v(&f.launch_velocity(), "m/s"));
         let _ = writeln!(w, "{:<24} {}", "spin", v(&f.spin(), "rad/s"));
-        let _ = writeln!(w, "{:<24} {:>16.10e} s", "flight_time", o.flight_time);
+        let _ = writeln!(w, "{:<24} {} s", "flight_time", sig(o.flight_time));
         let _ = writeln!(w, "{:<24} {}", "landing_point", v(&o.landing_point, "m"));
-        let _ = writeln!(w, "{:<24} {:>16.10e} m (at {:.6e} s)", "apex_height", o.apex_height, o.apex_time);
+        let _ = writeln!(w, "{:<24} {} m (at {} s)", "apex_height", sig(o.apex_height), sig(o.apex_time));
         let _ = writeln!(w, "{:<24} {}", "landing_velocity", v(&o.landing_velocity, "m/s"));
         match &o.crossing {
             Some(c) => {
                 let _ = writeln!(
                     w,
-                    "{:<24} x = {} m at {:.6e} s: height {:.6e} m, lateral offset {:+.6e} m",
-                    "crossing", c.distance, c.time, c.height, c.lateral_offset
+                    "{:<24} x = {} m at {} s: height {} m, lateral offset {} m",
+                    "crossing", sig(c.distance), sig(c.time), sig(c.height), sig(c.lateral_offset)
                 );
             }
             None => {
                 if let Some(d) = f.distance() {
-                    let _ = writeln!(w, "{:<24} none: the ball lands before x = {d} m", "crossing");
+                    let _ = writeln!(w, "{:<24} none: the ball lands before x = {} m", "crossing", sig(d));
                 }
             }
         }

@@ -335,7 +335,7 @@ pub fn reproduce_force_history(out: &Path, figures: &Path) -> Result<(String, St
     spec.kick3d.offset = Some(FIGURE_OFFSET);
     spec.kick3d.friction = Some(FIGURE_FRICTION);
     let request = HistoryRequest { path: path.clone(), spacing: Spacing::Count(FIGURE_SAMPLES) };
-    let run = crate::simulate::simulate3d(&spec, "accurate", 1e-6, Some(&request), None)?;
+    let run = crate::simulate::simulate3d(&spec, "accurate", None, Some(&request), None)?;
     let mut written = run.written.clone();
     written.extend(force_history_figure(&path, figures).map_err(|e| e.to_string())?);
     Ok((command, crate::Printable::text(&run), written))

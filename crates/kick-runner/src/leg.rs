@@ -2,7 +2,7 @@
 //! the 1D exit speed that follows with m_f = m_eff (Section 14.1).
 
 use crate::printable::Printable;
-use kick_core::{Outcome, Scenario};
+use kick_core::{sig, Outcome, Scenario};
 use kick_leg::{
     anthropometry::{DE_LEVA_BODY_MASS, DE_LEVA_STATURE},
     exit_outcome, AnkleJoint, HipSupport, Impact, Leg, LegEffectiveMass, Pose, Variant,
@@ -183,22 +183,22 @@ impl Printable for LegReport {
         let (hip, knee, variant) = self.labels();
         let (s, mass, outcome) = (&self.settings, &self.mass, &self.outcome);
         let mut w = String::new();
-        let _ = writeln!(w, "leg: de Leva (1996) male, {} kg, {} m, {hip} hip, {knee} knee, {} ankle ({variant})", s.body_mass, s.height, self.ankle);
-        let _ = writeln!(w, "{:<20} {:>12.6} kg", "effective_mass", mass.effective_mass);
-        let _ = writeln!(w, "{:<20} {:>12.6} kg", "locked_ankle", mass.locked_ankle);
-        let _ = writeln!(w, "{:<20} {:>12.6} kg", "free_ankle", mass.free_ankle);
-        let _ = writeln!(w, "{:<20} {:>12.6}", "locked_share", mass.locked_share);
-        let _ = writeln!(w, "{:<20} {:>12.6} kg", "leg_mass", self.leg_mass);
+        let _ = writeln!(w, "leg: de Leva (1996) male, {} kg, {} m, {hip} hip, {knee} knee, {} ankle ({variant})", sig(s.body_mass), sig(s.height), self.ankle);
+        let _ = writeln!(w, "{:<20} {:>12} kg", "effective_mass", sig(mass.effective_mass));
+        let _ = writeln!(w, "{:<20} {:>12} kg", "locked_ankle", sig(mass.locked_ankle));
+        let _ = writeln!(w, "{:<20} {:>12} kg", "free_ankle", sig(mass.free_ankle));
+        let _ = writeln!(w, "{:<20} {:>12}", "locked_share", sig(mass.locked_share));
+        let _ = writeln!(w, "{:<20} {:>12} kg", "leg_mass", sig(self.leg_mass));
         if let Some(e) = &self.elastic {
-            let _ = writeln!(w, "{:<20} {:>12.6} kg (series-spring interpolation, for comparison)", "interpolated_mass", e.interpolated.effective_mass);
-            let _ = writeln!(w, "{:<20} {:>12.6} rad (coupled leg-ball run, frozen geometry)", "max_ankle_deflection", e.coupled.max_ankle_deflection);
-            let _ = writeln!(w, "{:<20} {:>12.6e} s (coupled leg-ball run)", "coupled_contact_time", e.coupled.contact_time);
+            let _ = writeln!(w, "{:<20} {:>12} kg (series-spring interpolation, for comparison)", "interpolated_mass", sig(e.interpolated.effective_mass));
+            let _ = writeln!(w, "{:<20} {:>12} rad (coupled leg-ball run, frozen geometry)", "max_ankle_deflection", sig(e.coupled.max_ankle_deflection));
+            let _ = writeln!(w, "{:<20} {:>12} s (coupled leg-ball run)", "coupled_contact_time", sig(e.coupled.contact_time));
         }
         let _ = writeln!(w, "1D contact with m_f = effective_mass (Table 1 otherwise, accurate solver):");
-        let _ = writeln!(w, "{:<20} {:>12.6} m/s", "v_ball_out", outcome.v_ball_out);
-        let _ = writeln!(w, "{:<20} {:>12.6} m/s", "v_foot_out", outcome.v_foot_out);
-        let _ = writeln!(w, "{:<20} {:>12.6}", "speed_ratio", outcome.speed_ratio);
-        let _ = writeln!(w, "{:<20} {:>12.6e} s", "contact_time", outcome.contact_time);
+        let _ = writeln!(w, "{:<20} {:>12} m/s", "v_ball_out", sig(outcome.v_ball_out));
+        let _ = writeln!(w, "{:<20} {:>12} m/s", "v_foot_out", sig(outcome.v_foot_out));
+        let _ = writeln!(w, "{:<20} {:>12}", "speed_ratio", sig(outcome.speed_ratio));
+        let _ = writeln!(w, "{:<20} {:>12} s", "contact_time", sig(outcome.contact_time));
         w
     }
     fn written(&self) -> &[PathBuf] {

@@ -151,10 +151,8 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     let foot_mass = b.effective_foot_mass();
     let m_t = 1.0 / (1.0 / b.ball_mass() + k.ball_radius * k.ball_radius / k.ball_inertia + 1.0 / foot_mass);
     let zeta = ct / (2.0 * (kt * m_t).sqrt());
-    let [hx, hy, hz] = match k.foot_shape {
-        kick_3d::FootShape::Box { half_extents } => half_extents,
-        kick_3d::FootShape::RoundedBox { half_extents, .. } => half_extents,
-    };
+    // The instep's size as given (border included).
+    let [hx, hy, hz] = k.foot_shape.outer_half_extents();
     let mut w = String::new();
     let _ = writeln!(w, "# Off-center kicks: spin, friction, launch direction and the speed–spin trade-off\n");
     let _ = writeln!(

@@ -455,12 +455,12 @@ impl crate::Printable for RunReport {
     fn text(&self) -> String {
         let failures: Vec<String> = self.summary.failures.iter().map(|(solver, n)| format!("{solver}: {n} failed")).collect();
         format!(
-            "{}: {} scenarios -> {} ({}; {:.1} s)\n",
+            "{}: {} scenarios -> {} ({}; {} s)\n",
             self.file.display(),
             self.summary.scenarios,
             self.summary.path.display(),
             failures.join(", "),
-            self.seconds
+            kick_core::sig(self.seconds)
         )
     }
 }

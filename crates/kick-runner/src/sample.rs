@@ -54,6 +54,9 @@ impl SampledSweep {
     /// order; a fixed one still takes its draws, so fixing one parameter
     /// leaves the others' values as they were.
     pub fn scenario(&self, index: u64) -> Result<Scenario, KickError> {
+        let law = self.fixed.law.unwrap_or(LawKind::PowerLaw);
+        // A held `damping` or `restitution` the law would ignore is refused.
+        law.check_given(self.fixed.damping.is_some(), self.fixed.restitution.is_some())?;
         let mut rng = row_rng(self.seed, index);
         let mut uniform = || rng.random::<f64>();
         let mut values = [0.0; 8];
@@ -61,7 +64,7 @@ impl SampledSweep {
             let drawn = p.def().sample.map_or(f64::NAN, |range| range.draw(&mut uniform));
             *slot = self.fixed.get(p).unwrap_or(drawn);
         }
-        Scenario::from_values(values)?.with_law(self.fixed.law.unwrap_or(LawKind::PowerLaw), self.fixed.restitution)
+        Scenario::from_values(values)?.with_law(law, self.fixed.restitution)
     }
 }
 

@@ -7,6 +7,7 @@ use crate::printable::Printable;
 use kick_flight::FlightSpec;
 use kick_3d::{Kick3d, KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
+use kick_core::number::{sig, vector};
 use kick_core::{Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, HISTORY_COLUMNS, OBSERVABLES};
 use serde::ser::{Serialize, Serializer};
 use serde_json::{Map, Value};
@@ -43,18 +44,18 @@ fn meta_1d(scenario: &Scenario, solver: &str) -> HistoryMeta {
 }
 
 /// Solve `spec` with the solver named `solver` (`dt`: step of the fixed-step
-/// solvers); with `history`, its time history streamed into that file
+/// solvers, refused with the others); with `history`, its time history streamed into that file
 /// ([`crate::history`], columns [`HISTORY_COLUMNS`]); with `flight`, the
 /// ball's flight after it ([`flight::after_1d`]).
 pub fn simulate(
     spec: &ScenarioSpec,
     solver: &str,
-    dt: f64,
+    dt: Option<f64>,
     history: Option<&HistoryRequest>,
     flight: Option<&FlightSpec>,
 ) -> Result<Simulation, String> {
     let scenario = spec.build().map_err(|e| e.to_string())?;
-    let choice = SolverChoice::from_name(solver, dt).map_err(|e| e.to_string())?;
+    let choice = SolverChoice::with_step(solver, dt).map_err(|e| e.to_string())?;
     let (outcome, written) = match history {
         Some(request) => {
             let meta = meta_1d(&scenario, choice.name());
@@ -107,9 +108,9 @@ impl Printable for Simulation {
         let o = &self.outcome;
         let _ = writeln!(w, "solver: {} (path: {})", self.solver, o.method);
         for ((name, unit), value) in OBSERVABLES.iter().zip(o.observable_values()) {
-            let _ = writeln!(w, "{name:<24} {value:>16.10e} {unit}");
+            let _ = writeln!(w, "{name:<24} {:>12} {unit}", sig(value));
         }
-        let _ = writeln!(w, "{:<24} {:>16.3e} J", "energy_residual", o.energy.residual());
+        let _ = writeln!(w, "{:<24} {:>12} J", "energy_residual", sig(o.energy.residual()));
         if let Some(f) = &self.flight {
             let _ = write!(w, "\nflight:\n{}", f.text());
         }
@@ -156,19 +157,20 @@ fn history_solver(solver: &Solver3d) -> Result<kick_3d::Accurate3d, String> {
 }
 
 /// Solve the 3D kick `spec` with the path named `solver` (`dt`: the rapier
-/// scene path's step); with `history`, on the accurate path, its time history
+/// scene path's step, refused with the others); with `history`, on the accurate path, its time history
 /// streamed into that file ([`crate::history`], columns
 /// [`kick_3d::HISTORY_COLUMNS_3D`]); with `flight` given, the ball's flight
 /// after it ([`flight::after_3d`]; not in `seconds`).
 pub fn simulate3d(
     spec: &KickSpec,
     solver: &str,
-    dt: f64,
+    dt: Option<f64>,
     history: Option<&HistoryRequest>,
     flight: Option<&FlightSpec>,
 ) -> Result<Simulation3d, String> {
+    spec.scenario.check_given().map_err(|e| e.to_string())?;
     let kick = spec.build().map_err(|e| e.to_string())?;
-    let solver = Solver3d::from_name(solver, dt).map_err(|e| e.to_string())?;
+    let solver = Solver3d::with_step(solver, dt).map_err(|e| e.to_string())?;
     let start = Instant::now();
     let (outcome, written) = match history {
         Some(request) => {
@@ -221,7 +223,7 @@ impl Printable for Simulation3d {
     fn text(&self) -> String {
         let o = &self.outcome;
         let mut w = String::new();
-        let v = |a: [f64; 3], unit: &str| format!("[{:+.6e}, {:+.6e}, {:+.6e}] {unit}", a[0], a[1], a[2]);
+        let v = |a: [f64; 3], unit: &str| format!("{} {unit}", vector(&a));
         let _ = writeln!(w, "solver: {}, normal law: {}", o.solver, o.law.name());
         let _ = writeln!(w, "{:<24} {}", "launch_velocity", v(o.launch_velocity, "m/s"));
         let _ = writeln!(w, "{:<24} {}", "spin", v(o.spin, "rad/s"));
@@ -239,9 +241,9 @@ impl Printable for Simulation3d {
             ("energy_friction_loss", o.energy.friction_loss, "J"),
             ("energy_residual", o.energy.residual(), "J"),
         ] {
-            let _ = writeln!(w, "{name:<24} {value:>16.10e} {unit}");
+            let _ = writeln!(w, "{name:<24} {:>12} {unit}", sig(value));
         }
-        let _ = writeln!(w, "{:<24} {}", "evaluations", o.evaluations);
+        let _ = writeln!(w, "{:<24} {:>12}", "evaluations", o.evaluations);
         if let Some(f) = &self.flight {
             let _ = write!(w, "\nflight:\n{}", f.text());
         }
@@ -262,6 +264,7 @@ pub struct SceneConvergence {
 }
 
 pub fn scene_convergence(spec: &KickSpec) -> Result<SceneConvergence, String> {
+    spec.scenario.check_given().map_err(|e| e.to_string())?;
     let kick = spec.build().map_err(|e| e.to_string())?;
     let steps: Vec<f64> = (0..7).map(|i| 4e-5 / f64::from(1u32 << i)).collect();
     let (rows, accurate_seconds) = kick_3d::scene::convergence(&kick, &steps).map_err(|e| e.to_string())?;

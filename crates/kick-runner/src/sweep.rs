@@ -28,8 +28,8 @@ pub struct SweepSettings {
     pub seed: u64,
     /// `--solver` name.
     pub solver: String,
-    /// Step of the fixed-step solvers, s.
-    pub dt: f64,
+    /// Step of the fixed-step solvers, s (given with another solver: refused).
+    pub dt: Option<f64>,
     /// Result file NAME.h5 (its directory is created).
     pub out: PathBuf,
     /// Parameters held fixed, and the law of every scenario.
@@ -108,7 +108,7 @@ pub struct SweepReport {
 pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
     let target = SweepTarget::check(settings.samples, &settings.out, settings.shard.as_deref(), settings.threads)?;
     let SweepTarget { name, directory, .. } = target.clone();
-    let solver = SolverChoice::from_name(&settings.solver, settings.dt).map_err(|e| e.to_string())?;
+    let solver = SolverChoice::with_step(&settings.solver, settings.dt).map_err(|e| e.to_string())?;
     let sweep = SampledSweep { samples: settings.samples, seed: settings.seed, fixed: settings.fixed };
     sweep.scenario(0).map_err(|e| e.to_string())?;
     // The provenance keeps what made the file: the command and the ranges.
@@ -120,12 +120,12 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
         fixed.push_str(&format!(" --restitution {e}"));
     }
     let text = format!(
-        "# kick sweep --samples {} --seed {} --solver {} --dt {} --law {}{fixed}\n# ranges (a parameter given is fixed):\n{}\n\
+        "# kick sweep --samples {} --seed {} --solver {}{} --law {}{fixed}\n# ranges (a parameter given is fixed):\n{}\n\
          # auto paths: no drive and c = 0 or n = 1 -> closed-form; otherwise the paper's law -> series; another law -> reduced\n",
         settings.samples,
         settings.seed,
         settings.solver,
-        settings.dt,
+        settings.dt.map(|dt| format!(" --dt {dt}")).unwrap_or_default(),
         settings.fixed.law.unwrap_or(LawKind::PowerLaw).name(),
         ranges().lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n")
     );

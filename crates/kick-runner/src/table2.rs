@@ -5,7 +5,7 @@ use crate::printable::Printable;
 use kick_compliant::table2::{columns, printed_columns, Table2File};
 use kick_compliant::{Accurate, SeedRk4};
 use kick_core::paper::{TABLE2, TABLE2_DECIMALS};
-use kick_core::Solver;
+use kick_core::{sig, Solver};
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -103,17 +103,18 @@ impl Printable for Table2Comparison {
         let mut w = String::new();
         for row in &self.rows {
             let changed = match (&row.parameter, row.value) {
-                (Some(p), Some(v)) => format!("{p} = {v}"),
+                (Some(p), Some(v)) => format!("{p} = {}", sig(v)),
                 _ => "baseline".into(),
             };
             let _ = writeln!(w, "{} ({changed}); seed-rk4 prints as the paper: {}", row.name, if row.seed_matches_printed { "yes" } else { "NO" });
-            let _ = writeln!(w, "  {:<20} {:>10} {:>12} {:>16} {:>11} {:>11}", "column", "paper", "seed-rk4", "accurate", "seed/paper-1", "acc/seed-1");
+            let _ = writeln!(w, "  {:<20} {:>10} {:>12} {:>12} {:>12} {:>12}", "column", "paper", "seed-rk4", "accurate", "seed/paper-1", "acc/seed-1");
             for (column, decimals) in COLUMNS.iter().zip(TABLE2_DECIMALS) {
                 let c = &row.columns[column];
                 let _ = writeln!(
                     w,
-                    "  {:<20} {:>10.*} {:>12.*} {:>16.10} {:>+11.2e} {:>+11.2e}",
-                    column, decimals as usize, c.paper, decimals as usize + 2, c.seed_rk4, c.accurate, c.seed_vs_paper, c.accurate_vs_seed
+                    // The paper's column as printed (its digits are the data); ours in the one text form.
+                    "  {:<20} {:>10.*} {:>12} {:>12} {:>12} {:>12}",
+                    column, decimals as usize, c.paper, sig(c.seed_rk4), sig(c.accurate), sig(c.seed_vs_paper), sig(c.accurate_vs_seed)
                 );
             }
         }

@@ -280,7 +280,7 @@ fn contact_stays_on_the_face_in_the_swept_range() {
         // The ball's point nearest the foot, in the foot's frame.
         let centre = end.foot_orientation.inverse() * (end.ball_position - end.foot_position);
         let local = centre - parry3d_f64::math::Vec3::X * k.ball_radius;
-        let [hx, hy, hz] = k.foot_shape.half_extents();
+        let [hx, hy, hz] = k.foot_shape.core_half_extents();
         println!("e {e} a {a}: contact at {local:?}");
         assert!((local.x - hx).abs() < 1e-9 && local.y.abs() < hy && local.z.abs() < hz, "{local:?}");
     }
@@ -308,4 +308,26 @@ fn a_receding_ball_is_kicked_off_center() {
     // The ball leaves faster than it came, along +x, energy closing.
     assert!(o.launch_velocity[0] > v_b && o.contact_time > 0.0, "{:?}", o.launch_velocity);
     assert!(o.energy.residual().abs() < 1e-9 * o.energy.kinetic_initial, "{}", o.energy.residual());
+}
+
+/// `foot_half_extents` is the outer size of the instep, border included: a
+/// rounded foot reports the size given, its core is that size less the
+/// border, and the ball leaves from the outer face (x = hx in the foot's
+/// frame), as with a plain box of the same size.
+#[test]
+fn a_rounded_foot_is_as_large_as_the_half_extents_given() {
+    let given = [0.04, 0.1, 0.06];
+    for border in [0.0, 0.01, 0.03] {
+        let k = kick(Kick3dSpec { foot_half_extents: Some(given), border_radius: Some(border), ..Kick3dSpec::default() });
+        assert_eq!(k.foot_shape.outer_half_extents(), given, "border {border}");
+        let reported = k.parameter_values().into_iter().find(|(p, _)| p.name == "foot_half_extents").map(|(_, v)| v);
+        assert_eq!(reported, Some(kick_core::Value::Vector(given)), "border {border}");
+        for (core, outer) in k.foot_shape.core_half_extents().into_iter().zip(given) {
+            assert!((core + border - outer).abs() < 1e-15, "border {border}");
+        }
+        let (_, end) = Accurate3d::default().solve_to_state(&k).unwrap();
+        let centre = end.foot_orientation.inverse() * (end.ball_position - end.foot_position);
+        let nearest = centre - parry3d_f64::math::Vec3::X * k.ball_radius;
+        assert!((nearest.x - given[0]).abs() < 1e-9, "border {border}: ball leaves at x = {}", nearest.x);
+    }
 }

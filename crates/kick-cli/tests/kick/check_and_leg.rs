@@ -75,3 +75,19 @@ fn leg_sweep_files_read_back_with_units_and_library_values() {
     assert!(speed.iter().zip(bound.iter()).all(|(v, b)| v < b));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `kick leg` with no arguments is the library's documented default pose,
+/// and its help names that pose.
+#[test]
+fn leg_without_arguments_is_the_documented_default_pose() {
+    let out = kick(&["leg", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let cli: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let library = kick_runner::json(&kick_runner::leg::leg(&kick_runner::leg::LegSettings::default()).unwrap()).unwrap();
+    let library: serde_json::Value = serde_json::from_str(&library).unwrap();
+    for key in ["effective_mass", "locked_ankle", "free_ankle", "leg_mass", "v_ball_out", "contact_time", "knee", "hip", "ankle"] {
+        assert_eq!(cli[key], library[key], "{key}");
+    }
+    let help = String::from_utf8(kick(&["leg", "--help"]).stdout).unwrap();
+    assert!(help.contains("With no arguments, the default pose") && help.contains("[default: 30]"), "{help}");
+}

@@ -114,3 +114,26 @@ fn a_closed_stdout_ends_the_output_quietly() {
         assert!(out.stderr.is_empty(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     }
 }
+
+/// `kick completions SHELL` writes a completion script naming the
+/// subcommands and the flags derived from the declared parameters.
+#[test]
+fn completions_name_the_subcommands_and_the_declared_flags() {
+    for shell in ["bash", "zsh", "fish", "elvish", "powershell"] {
+        let out = kick(&["completions", shell]);
+        assert!(out.status.success(), "{shell}: {}", String::from_utf8_lossy(&out.stderr));
+        let text = String::from_utf8(out.stdout).unwrap();
+        // fish names a long flag `-l foot-mass`; the others `--foot-mass`.
+        let dashes = if shell == "fish" { "-l " } else { "--" };
+        for word in ["simulate3d".to_string(), format!("{dashes}foot-mass"), format!("{dashes}offset"), format!("{dashes}restitution")] {
+            assert!(text.contains(&word), "{shell} completions lack {word}");
+        }
+    }
+    let out = kick(&["completions", "tcsh"]);
+    assert!(!out.status.success());
+    let out = kick(&["man"]);
+    assert!(out.status.success());
+    let page = String::from_utf8(out.stdout).unwrap();
+    assert!(page.starts_with(".ie") || page.contains(".TH kick"), "{}", &page[..page.len().min(200)]);
+    assert!(page.contains("simulate3d"), "the page lists the subcommands");
+}

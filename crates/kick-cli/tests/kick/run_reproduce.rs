@@ -69,11 +69,17 @@ fn table2_works_outside_the_repository_from_the_built_in_file() {
     // The baseline row as printed in the paper (Table 2) and reproduced by seed-rk4.
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("31.98") && text.contains("3804"), "{text}");
+    // `kick laws` reads the same scenarios, from anywhere.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_kick")).args(["laws", "--samples", "20"]).current_dir(&dir).output().expect("kick runs");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("Very soft ball"), "{}", String::from_utf8_lossy(&out.stdout));
     // A file on disk overrides the built-in one.
     std::fs::create_dir_all(dir.join("experiments")).unwrap();
     std::fs::write(dir.join("experiments/table2.toml"), "not = [valid").unwrap();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_kick")).arg("table2").current_dir(&dir).output().expect("kick runs");
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("experiments/table2.toml"), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_kick")).arg("laws").current_dir(&dir).output().expect("kick runs");
+    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("experiments/table2.toml"));
     let _ = std::fs::remove_dir_all(&dir);
 }

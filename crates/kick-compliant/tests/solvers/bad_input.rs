@@ -250,3 +250,24 @@ proptest! {
         }
     }
 }
+
+/// A step given to a solver that chooses its own is refused by name; the
+/// fixed-step solvers take it, and an unknown name is left to `from_name`.
+#[test]
+fn a_step_is_refused_where_it_would_be_ignored() {
+    for name in SolverChoice::NAMES {
+        let given = SolverChoice::with_step(name, Some(1e-6));
+        match SolverChoice::FIXED_STEP.contains(&name) {
+            true => assert_eq!(given.unwrap().settings(), vec![("dt", 1e-6)], "{name}"),
+            false => {
+                let error = given.unwrap_err();
+                assert_eq!(error.status(), Status::Refused, "{name}");
+                assert!(error.to_string().starts_with(&format!("`dt` does not apply to solver `{name}`")), "{error}");
+            }
+        }
+        assert!(SolverChoice::with_step(name, None).is_ok(), "{name}");
+    }
+    assert!(SolverChoice::check_step_given(&["seed-rk4", "accurate"]).is_ok());
+    assert!(SolverChoice::check_step_given(&["auto", "accurate"]).is_err());
+    assert!(matches!(SolverChoice::with_step("euler", Some(1e-6)), Err(KickError::UnknownSolver { .. })));
+}

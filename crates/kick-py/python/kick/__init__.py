@@ -115,9 +115,11 @@ _SOLVER_DOC = f"""
 solver : str, default "auto"
     One of {", ".join(SOLVERS)} (as ``kick simulate --solver``).
 law : str, default "power-law"
-    Contact law: {", ".join(LAWS)}; the laws other than the paper's need ``restitution``.
+    Contact law: {", ".join(LAWS)}; the laws other than the paper's need ``restitution``
+    (and refuse ``damping``; the paper's refuses ``restitution``).
 dt : float, optional
-    Step of the fixed-step solvers (seed-rk4, rk4-events), s; default as the CLI's (5e-6 s).
+    Step of the fixed-step solvers (seed-rk4, rk4-events), s; default as the CLI's (5e-6 s);
+    a ValueError with any other solver, which chooses its own steps.
 """
 _SOLVER3D_DOC = f"""
 solver : str, default "auto"
@@ -125,7 +127,8 @@ solver : str, default "auto"
 law : str, default "power-law"
     Normal contact law: {", ".join(LAWS)}.
 dt : float, optional
-    Step of the rapier scene path, s; default as the CLI's (1e-6 s).
+    Step of the rapier scene path (solver "rapier"), s; default as the CLI's (1e-6 s);
+    a ValueError with any other solver.
 """
 _MANY_DOC = f"""
 threads : int, optional

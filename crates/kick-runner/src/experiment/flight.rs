@@ -9,14 +9,12 @@
 //! air_density = 1.2
 //! ```
 //!
-//! The kick sets the launch: a 1D kick its exit speed and ball mass
-//! ([`crate::flight::SET_BY_1D_KICK`]), a 3D kick its launch velocity,
-//! spin, ball and g ([`crate::flight::SET_BY_3D_KICK`]); those keys are
-//! refused at their line, as are unknown keys and invalid values.
+//! The kick sets the launch ([`crate::flight::After::sets`]): a 1D kick its
+//! exit speed and ball mass, a 3D kick its launch velocity, spin, ball and g;
+//! those keys are refused at their line, as are unknown keys and invalid values.
 
 use super::{ExperimentError, Locator};
-use crate::flight::{SET_BY_1D_KICK, SET_BY_3D_KICK};
-use kick_flight::{Flight, FlightError, FlightSpec};
+use kick_flight::{Flight, FlightError, FlightParameter, FlightSpec};
 use toml::Spanned;
 
 /// Which kick the flight follows.
@@ -51,11 +49,11 @@ pub(super) fn parse(at: &Locator, text: &str, raw: Option<&Spanned<FlightSpec>>,
         let span = key_span(text, "flight", name).unwrap_or(raw.span());
         at.error(span, &format!("flight.{name}"), message)
     };
-    let (set, by) = match after {
-        After::OneD => (&SET_BY_1D_KICK[..], "the 1D kick (its exit speed along launch_angle, no spin, its ball mass)"),
-        After::ThreeD => (&SET_BY_3D_KICK[..], "the 3D kick (its launch velocity and spin, its ball, g)"),
+    let (kick, by) = match after {
+        After::OneD => (crate::flight::After::Kick1d, "the 1D kick (its exit speed along launch_angle, no spin, its ball mass)"),
+        After::ThreeD => (crate::flight::After::Kick3d, "the 3D kick (its launch velocity and spin, its ball, g)"),
     };
-    if let Some(p) = set.iter().find(|&&p| spec.is_set(p)) {
+    if let Some(p) = FlightParameter::ALL.into_iter().find(|&p| kick.sets(p) && spec.is_set(p)) {
         return Err(located(p.name(), format!("set by {by}; remove it from [flight]")));
     }
     // Validate once against a stand-in launch, so a bad value names its key

@@ -140,6 +140,12 @@ pub(super) fn parse(path: &Path, text: &str, at: &Locator, stem: String) -> Resu
         return Err(at.error(r.span(), "base.restitution", "`restitution` is also set at the top level; set it in one place"));
     }
     let restitution = raw.restitution.as_ref().or(base_raw.restitution());
+    // `damping` or `restitution` the law would ignore, given or swept: refused at its key.
+    let swept = |name: &str| raw.sweep.iter().flatten().find(|a| a.parameter.get_ref() == name).map(|a| (a.parameter.span(), format!("sweep.{name}")));
+    let damping = base_raw.get(Parameter::Damping).map(|d| (d.span(), "base.damping".to_string())).or_else(|| swept("damping"));
+    let restitution_key = if raw.restitution.is_some() { "restitution" } else { "base.restitution" };
+    let given_restitution = restitution.map(|r| (r.span(), restitution_key.to_string())).or_else(|| swept("restitution"));
+    super::law_settings_apply(at, law, damping, given_restitution)?;
     let scenario = build(at, |p| base_raw.get(p), "base")?;
     let law_span = restitution.map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
     let scenario = scenario

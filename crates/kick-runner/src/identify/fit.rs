@@ -4,7 +4,7 @@
 use crate::identify::files;
 use crate::printable::Printable;
 use crate::{Provenance, ResultWriter};
-use kick_core::{Parameter, Scenario, ScenarioSpec};
+use kick_core::{sig, Parameter, Scenario, ScenarioSpec};
 use kick_identify::data::{Channel, FitSpec};
 use kick_identify::fit::{fit, FitOptions, FitProblem, FitReport};
 use kick_identify::profile::{identifiability_study, IdentifiabilityStudy};
@@ -69,7 +69,7 @@ impl Printable for ProfileReport {
         for (title, profiles) in [("exit speed alone", &study.exit_speed_profiles), ("histories", &study.history_profiles)] {
             let _ = writeln!(w, "Profiles of chi2 ({title}); each point re-fits the other three parameters:");
             for p in profiles {
-                let values: Vec<String> = p.points.iter().map(|q| format!("{:.3}:{:.3e}", q.factor, q.chi_square)).collect();
+                let values: Vec<String> = p.points.iter().map(|q| format!("{}:{}", sig(q.factor), sig(q.chi_square))).collect();
                 let _ = writeln!(w, "  {:<10} {}", p.parameter.name(), values.join("  "));
             }
         }
@@ -145,28 +145,25 @@ impl Printable for Table2Fits {
     fn text(&self) -> String {
         let mut w = String::new();
         let _ = writeln!(w, "Table 2 by least squares (accurate; v_b+, peak force, contact time, compression; σ = half the last printed digit)");
+        let _ = writeln!(w, "{:<24} {:<12} {:>12} {:>14} {:<6} {:>8}  residuals/σ", "row", "parameter", "estimate", "standard error", "unit", "chi2");
         for f in &self.fits {
-            match (&f.report, &f.baseline_residuals) {
-                (Some(r), _) => {
-                    let e = &r.estimates[0];
-                    let weighted: Vec<String> = r.residuals.iter().map(|x| format!("{} {:+.2}", x.label, x.weighted)).collect();
-                    let _ = writeln!(
-                        w,
-                        "{:<24} {:<10} {:>14.6} ± {:<10} chi2 {:>7.2}  residuals/σ: {}",
-                        f.name,
-                        e.parameter.name(),
-                        e.value,
-                        e.standard_uncertainty.map(|s| format!("{s:.3e}")).unwrap_or_else(|| "-".into()),
-                        r.chi_square,
-                        weighted.join(", ")
-                    );
-                }
-                (None, Some(res)) => {
-                    let weighted: Vec<String> = res.iter().map(|(o, w)| format!("{} {w:+.2}", o.name())).collect();
-                    let _ = writeln!(w, "{:<24} {:<10} {:>14} {:<13} {:>12}  residuals/σ: {}", f.name, "-", "(Table 1)", "", "", weighted.join(", "));
-                }
-                _ => {}
-            }
+            let (estimate, residuals): (Option<(&kick_identify::fit::Estimate, f64)>, Vec<String>) = match (&f.report, &f.baseline_residuals) {
+                (Some(r), _) => (r.estimates.first().map(|e| (e, r.chi_square)), r.residuals.iter().map(|x| format!("{} {}", x.label, sig(x.weighted))).collect()),
+                (None, Some(res)) => (None, res.iter().map(|(o, w)| format!("{} {}", o.name(), sig(*w))).collect()),
+                _ => continue,
+            };
+            let columns = match estimate {
+                Some((e, chi_square)) => format!(
+                    "{:<12} {:>12} {:>14} {:<6} {:>8}",
+                    e.parameter.name(),
+                    sig(e.value),
+                    e.standard_uncertainty.map_or_else(|| "-".into(), |s| sig(s).to_string()),
+                    e.parameter.unit(),
+                    sig(chi_square)
+                ),
+                None => format!("{:<12} {:>12} {:>14} {:<6} {:>8}", "-", "(Table 1)", "", "", ""),
+            };
+            let _ = writeln!(w, "{:<24} {columns}  {}", f.name, residuals.join(", "));
         }
         w
     }
@@ -232,40 +229,44 @@ impl Printable for DataFit {
 pub fn report_text(report: &FitReport, truth: &[(FitParameter, f64)]) -> String {
     let mut w = String::new();
     let _ = writeln!(w, "contact law: {}", report.law.name());
-    let _ = writeln!(w, "{:<12} {:>16} {:>14} {:>16} {:>16}", "parameter", "estimate", "std. unc.", "start", "(est-truth)/σ");
+    let _ = writeln!(w, "{:<14} {:>12} {:>14} {:<8} {:>12} {:>14}", "parameter", "estimate", "standard error", "unit", "start", "(est-truth)/σ");
     for e in &report.estimates {
         let pull = truth
             .iter()
             .find(|(p, _)| *p == e.parameter)
             .zip(e.standard_uncertainty)
-            .map_or(String::new(), |((_, t), s)| format!("{:+.2}", (e.value - t) / s));
-        let _ = writeln!(w, 
-            "{:<12} {:>16.8e} {:>14} {:>16.8e} {:>16}",
+            .map_or(String::new(), |((_, t), s)| sig((e.value - t) / s).to_string());
+        let _ = writeln!(
+            w,
+            "{:<14} {:>12} {:>14} {:<8} {:>12} {:>14}",
             e.parameter.name(),
-            e.value,
-            e.standard_uncertainty.map(|s| format!("{s:.3e}")).unwrap_or_else(|| "not identified".into()),
-            e.start,
+            sig(e.value),
+            e.standard_uncertainty.map_or_else(|| "not identified".into(), |s| sig(s).to_string()),
+            e.parameter.unit(),
+            sig(e.start),
             pull
         );
     }
-    let _ = writeln!(w, 
-        "chi2 {:.4} over {} residuals, {} degrees of freedom, s2 {}; {} ({} evaluations)",
-        report.chi_square,
+    let _ = writeln!(
+        w,
+        "chi2 {} over {} residuals, {} degrees of freedom, s2 {}; {} ({} evaluations)",
+        sig(report.chi_square),
         report.residuals.len(),
         report.degrees_of_freedom,
-        report.residual_variance.map(|s| format!("{s:.4}")).unwrap_or_else(|| "-".into()),
+        report.residual_variance.map_or_else(|| "-".into(), |s| sig(s).to_string()),
         report.termination,
         report.evaluations
     );
     if let Some(c) = &report.correlation {
-        let _ = writeln!(w, "correlation:");
-        for row in c {
-            let _ = writeln!(w, "  {}", row.iter().map(|v| format!("{v:+.4}")).collect::<Vec<_>>().join(" "));
+        let names: Vec<&str> = report.estimates.iter().map(|e| e.parameter.name()).collect();
+        let _ = writeln!(w, "correlation:\n  {:<14} {}", "", names.iter().map(|n| format!("{n:>12}")).collect::<String>());
+        for (name, row) in names.iter().zip(c) {
+            let _ = writeln!(w, "  {name:<14} {}", row.iter().map(|&v| format!("{:>12}", sig(v))).collect::<String>());
         }
     }
     let worst = report.residuals.iter().max_by(|a, b| a.weighted.abs().total_cmp(&b.weighted.abs()));
     if let Some(r) = worst {
-        let _ = writeln!(w, "largest residual: {} = {:+.3} σ", r.label, r.weighted);
+        let _ = writeln!(w, "largest residual: {} = {} σ", r.label, sig(r.weighted));
     }
     w
 }

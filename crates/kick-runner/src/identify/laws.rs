@@ -5,7 +5,7 @@
 use crate::printable::Printable;
 use crate::Provenance;
 use kick_compliant::Accurate;
-use kick_core::Scenario;
+use kick_core::{sig, Scenario};
 use kick_identify::laws::{compare, restitution_table, LawComparison};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -77,20 +77,20 @@ impl Printable for LawsReport {
     fn text(&self) -> String {
         let mut w = String::new();
         for c in &self.comparisons {
-            let _ = writeln!(w, "{} (target e = paper's law's e = {:.4})", c.name, c.restitution);
-            let _ = writeln!(w, "  {:<20} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}", "law", "e", "v_b+ m/s", "F(0+) N", "peak N", "t_c ms", "δmax mm");
+            let _ = writeln!(w, "{} (target e = paper's law's e = {})", c.name, sig(c.restitution));
+            let _ = writeln!(w, "  {:<20} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}", "law", "e", "v_b+ m/s", "F(0+) N", "peak N", "t_c ms", "δmax mm");
             for r in &c.runs {
                 let o = &r.outcome;
                 let _ = writeln!(
                     w,
-                    "  {:<20} {:>8.4} {:>10.3} {:>10.1} {:>10.1} {:>10.3} {:>10.3}",
+                    "  {:<20} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}",
                     r.law.name(),
-                    o.restitution,
-                    o.v_ball_out,
-                    r.pulse.first().map_or(0.0, |p| p.1),
-                    o.peak_force,
-                    o.contact_time * 1e3,
-                    o.max_compression * 1e3
+                    sig(o.restitution),
+                    sig(o.v_ball_out),
+                    sig(r.pulse.first().map_or(0.0, |p| p.1)),
+                    sig(o.peak_force),
+                    sig(o.contact_time * 1e3),
+                    sig(o.max_compression * 1e3)
                 );
             }
         }

@@ -39,10 +39,7 @@ const INTERVAL: f64 = 2e-8;
 
 #[test]
 fn fine_histories_are_streamed_with_bounded_memory_and_unchanged_outcomes() {
-    kick_runner::h5::disable_file_locking();
-    let dir = std::env::temp_dir().join(format!("kick-runner-histories-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::scratch("histories");
     let file = dir.join("fine.toml");
     std::fs::write(
         &file,

@@ -28,9 +28,7 @@ fn a_bad_law_names_the_file_line_and_key() {
 /// one has it as a column beside the eight (the paper's law has none).
 #[test]
 fn the_target_restitution_is_a_parameter_column() {
-    kick_runner::h5::disable_file_locking();
-    let dir = std::env::temp_dir().join(format!("kick-runner-law-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = crate::scratch("law");
     for (law, expected) in [("law = \"flores\"\nrestitution = 0.7\n", Some(0.7)), ("", None)] {
         let text = format!("name = \"e\"\n{law}[[sweep]]\nparameter = \"foot_mass\"\nvalues = [1.0, 3.0]\n");
         let experiment = kick_runner::experiment::parse(Path::new("e.toml"), &text).unwrap();

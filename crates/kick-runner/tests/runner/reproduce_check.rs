@@ -18,9 +18,7 @@ values = [3e5, 6e5]
 "#;
 
 fn setup(name: &str) -> (PathBuf, ReproduceSettings) {
-    kick_runner::h5::disable_file_locking();
-    let dir = std::env::temp_dir().join(format!("kick-check-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = crate::scratch(&format!("check-{name}"));
     std::fs::create_dir_all(dir.join("experiments")).unwrap();
     std::fs::write(dir.join("experiments/small.toml"), SMALL).unwrap();
     let settings = ReproduceSettings {

@@ -6,9 +6,7 @@ use kick_runner::{Column, Provenance, ResultFile, ResultWriter};
 
 #[test]
 fn result_files_round_trip_with_units_and_provenance() {
-    kick_runner::h5::disable_file_locking();
-    let dir = std::env::temp_dir().join(format!("kick-result-file-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::scratch("result-file");
     let path = dir.join("r.h5");
     let provenance = Provenance::now("r", "test (command line)", "text of the run");
     let w = ResultWriter::create(&path, &provenance, "test-layout-1").unwrap();

@@ -5,16 +5,8 @@ use kick_compliant::{closed, Accurate, SeedRk4};
 use kick_core::{Parameter, Scenario, Solver, OBSERVABLES};
 use kick_runner::experiment::{self, linear_range, log_range};
 use kick_runner::h5::{read_f64_attr, read_str_attr, CHUNK_ROWS};
+use crate::scratch;
 use std::path::{Path, PathBuf};
-
-/// A fresh directory for one test.
-fn scratch(name: &str) -> PathBuf {
-    kick_runner::h5::disable_file_locking();
-    let dir = std::env::temp_dir().join(format!("kick-runner-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
-}
 
 fn write_experiment(dir: &Path, name: &str, text: &str) -> PathBuf {
     let path = dir.join(format!("{name}.toml"));

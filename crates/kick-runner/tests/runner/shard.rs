@@ -7,15 +7,8 @@ use kick_runner::experiment;
 use kick_runner::h5::{read_str_attr, read_u64_attr};
 use kick_runner::shard::{merge, run_shard, Shard};
 use std::collections::BTreeMap;
+use crate::scratch;
 use std::path::{Path, PathBuf};
-
-fn scratch(name: &str) -> PathBuf {
-    kick_runner::h5::disable_file_locking();
-    let dir = std::env::temp_dir().join(format!("kick-shard-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
-}
 
 /// A dataset's or attribute's content, compared bit for bit.
 #[derive(Debug, PartialEq)]
@@ -114,7 +107,7 @@ values = [0.0, 120.0]
 
 #[test]
 fn three_shards_merged_equal_the_unsharded_run() {
-    let dir = scratch("grid");
+    let dir = scratch("shard-grid");
     let (whole, parts) = whole_and_shards(&dir, "grid", GRID, 3);
     // Shard 1 of 3 of 18 rows: rows 6..12, with its own attributes and rows.
     let middle = hdf5::File::open(dir.join("parts/grid.shard-1-of-3.h5")).unwrap();
@@ -153,7 +146,7 @@ fn three_shards_merged_equal_the_unsharded_run() {
 
 #[test]
 fn histories_and_named_rows_merge_to_the_unsharded_run() {
-    let dir = scratch("history");
+    let dir = scratch("shard-history");
     let histories = r#"
 solver = "accurate"
 [[sweep]]
@@ -180,7 +173,7 @@ interval = 2e-5
 
 #[test]
 fn incomplete_or_mixed_shards_are_refused_by_file_name() {
-    let dir = scratch("refuse");
+    let dir = scratch("shard-refuse");
     let (_, parts) = whole_and_shards(&dir, "grid", GRID, 3);
     // parts are 2, 1, 0 of 3.
     let out = dir.join("merged/grid.h5");
@@ -273,7 +266,7 @@ fn a_sweep_in_three_shards_merges_to_the_unsharded_sweep() {
         samples: 200,
         seed: 5,
         solver: "auto".into(),
-        dt: 5e-6,
+        dt: None,
         out,
         fixed: Default::default(),
         shard: shard.map(String::from),

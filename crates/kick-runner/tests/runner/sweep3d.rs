@@ -6,15 +6,8 @@ use kick_core::parameters::{self, Shape, Value};
 use kick_core::{LawKind, SetParameter, Status};
 use kick_runner::h5::read_str_attr;
 use kick_runner::sweep3d::{sweep3d, SampledKicks, Sweep3dSettings, ENERGY, OUTCOMES};
-use std::path::{Path, PathBuf};
-
-fn scratch(name: &str) -> PathBuf {
-    kick_runner::h5::disable_file_locking();
-    let dir = std::env::temp_dir().join(format!("kick-sweep3d-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
-}
+use crate::scratch;
+use std::path::Path;
 
 fn settings(samples: u64, seed: u64, out: &Path) -> Sweep3dSettings {
     let mut fixed = KickSpec::default();
@@ -42,7 +35,7 @@ fn same(a: f64, b: f64) -> bool {
 /// declared 1D and 3D parameter is stored under its name with its unit.
 #[test]
 fn each_row_is_the_solve_of_its_stored_parameters() {
-    let dir = scratch("rows");
+    let dir = scratch("sweep3d-rows");
     let out = dir.join("s.h5");
     let report = sweep3d(&settings(48, 11, &out)).expect("sweep");
     assert_eq!(report.kicks, 48);
@@ -128,7 +121,7 @@ fn all_bits(path: &Path) -> Vec<(String, Vec<u64>)> {
 /// seed gives other data.
 #[test]
 fn the_data_do_not_depend_on_the_thread_count() {
-    let dir = scratch("threads");
+    let dir = scratch("sweep3d-threads");
     let run = |threads: usize, seed: u64, name: &str| {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
         let out = dir.join(name);
@@ -163,7 +156,7 @@ fn a_held_parameter_leaves_the_other_draws() {
 
 #[test]
 fn bad_settings_are_refused_by_name() {
-    let dir = scratch("bad");
+    let dir = scratch("sweep3d-bad");
     let error = sweep3d(&settings(0, 1, &dir.join("a.h5"))).unwrap_err();
     assert!(error.contains("--samples"), "{error}");
     let error = sweep3d(&settings(5, 1, &dir.join("a.csv"))).unwrap_err();
@@ -187,7 +180,7 @@ fn bad_settings_are_refused_by_name() {
             samples: 5,
             seed: 1,
             solver: "auto".into(),
-            dt: 5e-6,
+            dt: None,
             out: dir.join("b.h5"),
             fixed: Default::default(),
             shard: Some(given.into()),
