@@ -274,14 +274,19 @@ pub fn scene_convergence(spec: &KickSpec) -> Result<SceneConvergence, String> {
 impl Printable for SceneConvergence {
     fn text(&self) -> String {
         let mut w = String::new();
-        let _ = writeln!(w, "accurate-3d: {:.3} ms", self.accurate_seconds * 1e3);
+        let _ = writeln!(w, "accurate-3d: {} ms", sig(self.accurate_seconds * 1e3));
         let _ = writeln!(w, "{:>10} {:>12} {:>12} {:>12} {:>7} {:>10}", "dt_s", "velocity", "spin", "contact_t", "order", "ms");
         for r in &self.rows {
-            let order = r.velocity_order.map_or("-".to_string(), |p| format!("{p:.3}"));
+            let order = r.velocity_order.map_or("-".to_string(), |p| sig(p).to_string());
             let _ = writeln!(
                 w,
-                "{:>10.3e} {:>12.3e} {:>12.3e} {:>12.3e} {:>7} {:>10.3}",
-                r.step, r.velocity_error, r.spin_error, r.contact_time_error, order, r.seconds * 1e3
+                "{:>10} {:>12} {:>12} {:>12} {:>7} {:>10}",
+                sig(r.step),
+                sig(r.velocity_error),
+                sig(r.spin_error),
+                sig(r.contact_time_error),
+                order,
+                sig(r.seconds * 1e3)
             );
         }
         w

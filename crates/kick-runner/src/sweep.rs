@@ -173,12 +173,12 @@ impl Printable for SweepReport {
         let mut w = String::new();
         let _ = writeln!(
             w,
-            "{} scenarios with {} in {:.3} s on {} threads: {:.0} scenarios/s -> {} ({} failed)",
+            "{} scenarios with {} in {} s on {} threads: {} scenarios/s -> {} ({} failed)",
             self.scenarios,
             self.solver,
-            self.seconds,
+            kick_core::sig(self.seconds),
             self.threads,
-            self.scenarios as f64 / self.seconds,
+            kick_core::sig(self.scenarios as f64 / self.seconds),
             self.path.display(),
             self.failed
         );

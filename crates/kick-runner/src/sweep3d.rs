@@ -239,7 +239,10 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, String> {
     let rows = target.rows.end - target.rows.start;
     limits::check_rows("--samples", settings.samples, rows, bytes_per_row(), &target.directory).map_err(|e| e.to_string())?;
     let kicks = SampledKicks { seed: settings.seed, fixed: settings.fixed };
-    // A held value the model refuses is refused before the run.
+    // A held value the model refuses is refused before the run, and so is a
+    // held damping or restitution the law would ignore (the drawn damping is
+    // the sampler's, not the user's).
+    settings.fixed.scenario.check_given().map_err(|e| e.to_string())?;
     kicks.spec(0).build().map_err(|e| e.to_string())?;
     let law = settings.fixed.scenario.law.unwrap_or(kick_core::LawKind::PowerLaw);
     let mut given = String::new();
@@ -409,19 +412,20 @@ impl Printable for Sweep3dReport {
         let failed: u64 = self.not_separated.iter().map(|(_, n)| n).sum();
         let _ = writeln!(
             w,
-            "{} kicks with auto in {:.3} s on {} threads: {:.0} kicks/s -> {} ({failed} not separated)",
+            "{} kicks with auto in {} s on {} threads: {} kicks/s -> {} ({failed} not separated)",
             self.kicks,
-            self.seconds,
+            kick_core::sig(self.seconds),
             self.threads,
-            self.kicks as f64 / self.seconds,
+            kick_core::sig(self.kicks as f64 / self.seconds),
             self.path.display(),
         );
         if let Some(cpu) = self.cpu_seconds {
             let _ = writeln!(
                 w,
-                "CPU time {cpu:.3} s: {:.1} us per kick, {:.0} kicks/s per busy core",
-                cpu / self.kicks as f64 * 1e6,
-                self.kicks as f64 / cpu
+                "CPU time {} s: {} us per kick, {} kicks/s per busy core",
+                kick_core::sig(cpu),
+                kick_core::sig(cpu / self.kicks as f64 * 1e6),
+                kick_core::sig(self.kicks as f64 / cpu)
             );
         }
         for (status, n) in &self.not_separated {

@@ -171,6 +171,13 @@ fn bad_settings_are_refused_by_name() {
     s.fixed.scenario.law = Some(LawKind::Flores);
     let error = sweep3d(&s).unwrap_err();
     assert!(error.contains("restitution"), "{error}");
+    // A held damping under a law that takes its damping from a restitution.
+    let mut s = settings(5, 1, &dir.join("a.h5"));
+    s.fixed.scenario.law = Some(LawKind::Flores);
+    s.fixed.scenario.restitution = Some(0.6);
+    s.fixed.scenario.damping = Some(100.0);
+    let error = sweep3d(&s).unwrap_err();
+    assert!(error.contains("damping"), "{error}");
     for (given, says) in [("5/5", "numbered from 0 to 4"), ("2", "expected I/N")] {
         let mut s = settings(5, 1, &dir.join("a.h5"));
         s.shard = Some(given.into());
