@@ -13,6 +13,9 @@
 //! parameter = "stiffness"          # the last axis varying fastest
 //! log = { from = 1e5, to = 1e7, count = 41 }   # or linear = {...}, or values = [...]
 //!
+//! compress = 4                    # optional: shuffle + deflate the result file's
+//!                                  # per-row datasets at level 1..9 (or true: 4)
+//!
 //! [output]
 //! mode = "history"                 # "summary" (default) or "history"
 //! interval = 1e-5                  # history sampling interval, s
@@ -89,6 +92,8 @@ struct RawExperiment {
     restitution: Option<Spanned<f64>>,
     /// Flight outcomes on every row ([`flight`]).
     flight: Option<Spanned<kick_flight::FlightSpec>>,
+    /// Store the per-row datasets compressed ([`compression`]).
+    compress: Option<Spanned<toml::Value>>,
 }
 
 /// A `[base]` or `[[scenario]]` table: values of the declared 1D parameters
@@ -226,6 +231,8 @@ pub struct Experiment {
     /// The `[flight]` table: every row's kick is flown (after each solver's
     /// kick) and the flight outcomes stored beside it.
     pub flight: Option<kick_flight::FlightSpec>,
+    /// The `compress` key: how the result file stores its per-row datasets.
+    pub compress: crate::h5::Compression,
 }
 
 impl Scenarios {
@@ -581,6 +588,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     };
 
     let flight = flight::parse(&at, text, raw.flight.as_ref(), flight::After::OneD)?;
+    let compress = compression(&at, raw.compress.as_ref())?;
     Ok(Experiment {
         name,
         description: raw.description.unwrap_or_default(),
@@ -590,7 +598,22 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         scenarios,
         output,
         flight,
+        compress,
     })
+}
+
+/// The `compress` key: a deflate level 1..=9, `true` (the default level) or
+/// `false` (plain, as without the key).
+fn compression(at: &Locator, given: Option<&Spanned<toml::Value>>) -> Result<crate::h5::Compression, ExperimentError> {
+    use crate::h5::Compression;
+    let Some(given) = given else { return Ok(Compression::None) };
+    match given.get_ref() {
+        toml::Value::Boolean(false) => Ok(Compression::None),
+        toml::Value::Boolean(true) => Compression::deflate(None, "compress"),
+        toml::Value::Integer(level) => Compression::deflate(Some(*level), "compress"),
+        other => Err(format!("compress = {other}: expected a deflate level 1 (fastest) to 9 (smallest), or true")),
+    }
+    .map_err(|message| at.error(given.span(), "compress", message))
 }
 
 /// The `name` key checked, or the file's stem.
@@ -781,6 +804,7 @@ fn table2_experiment(path: &Path, text: &str, name: String, at: &Locator) -> Res
         scenarios: Scenarios::Named { names, scenarios },
         output: Output::Summary,
         flight: None,
+        compress: crate::h5::Compression::None,
     })
 }
 

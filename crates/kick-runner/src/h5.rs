@@ -190,7 +190,93 @@ fn group_at(root: &Group, relative: &str, path: &Path) -> Result<Group, H5Error>
     Ok(group)
 }
 
+/// How the per-row numeric datasets of a result file (parameters, outcomes,
+/// status, failure indices) are stored: plain, or through HDF5's byte
+/// shuffle and deflate (gzip) filters, chunk by chunk. Readers decompress
+/// transparently, so the values read back are the same bits; the file is
+/// smaller and slower to write (README, "Compressed result files").
+/// Text datasets (failure messages, names) stay plain: deflate would see
+/// only their references into HDF5's heap.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Compression {
+    #[default]
+    None,
+    /// Shuffle, then deflate at this level (1 fastest ..= 9 smallest).
+    Deflate(u8),
+}
+
+impl Compression {
+    /// The level of `--compress` without a value and of `compress = true`.
+    pub const DEFAULT_LEVEL: u8 = 4;
+
+    /// Shuffle + deflate at `level` (`None`: [`Self::DEFAULT_LEVEL`]), given
+    /// as `what` (a flag or key, named in the error).
+    pub fn deflate(level: Option<i64>, what: &str) -> Result<Compression, String> {
+        match level {
+            None => Ok(Compression::Deflate(Self::DEFAULT_LEVEL)),
+            Some(l @ 1..=9) => Ok(Compression::Deflate(l as u8)),
+            Some(l) => Err(format!("{what} {l}: the deflate level must be 1 (fastest) to 9 (smallest)")),
+        }
+    }
+
+    /// The HDF5 filter pipeline: shuffle before deflate (the bytes of a
+    /// column's numbers grouped by significance compress better).
+    pub fn filters(self) -> Vec<hdf5::filters::Filter> {
+        use hdf5::filters::Filter;
+        match self {
+            Compression::None => Vec::new(),
+            Compression::Deflate(level) => vec![Filter::shuffle(), Filter::deflate(level)],
+        }
+    }
+
+    /// The filters for a dataset of element type `T`: none for text.
+    fn filters_for<T: hdf5::H5Type>(self) -> Vec<hdf5::filters::Filter> {
+        if matches!(T::type_descriptor(), hdf5::types::TypeDescriptor::VarLenUnicode) {
+            Vec::new()
+        } else {
+            self.filters()
+        }
+    }
+}
+
+/// A per-row dataset of a known `rows` (`[rows]`, or `[rows, width]` for
+/// `width` > 1) with its unit: contiguous when plain; chunked by
+/// [`CHUNK_ROWS`] rows and filtered when compressed.
+pub fn per_row<T: hdf5::H5Type>(
+    group: &Group,
+    name: &str,
+    unit: &str,
+    (rows, width): (usize, usize),
+    compression: Compression,
+    path: &Path,
+) -> Result<Dataset, H5Error> {
+    let mut builder = group.new_dataset::<T>().obj_track_times(false);
+    if compression != Compression::None {
+        let chunk = rows.clamp(1, CHUNK_ROWS);
+        builder = if width > 1 { builder.chunk((chunk, width)) } else { builder.chunk(chunk) };
+        // Rows are written in whole chunks: a cache of two chunks, not HDF5's
+        // 1 MiB per dataset (~45 MB over a 3D sweep's columns).
+        let bytes = 2 * chunk * width * std::mem::size_of::<T>().max(16);
+        builder = builder.set_filters(&compression.filters_for::<T>()).chunk_cache(11, bytes, 1.0);
+    }
+    let dataset = if width > 1 { builder.shape((rows, width)).create(name) } else { builder.shape(rows).create(name) }.map_err(h5err(path))?;
+    write_str_attr(&dataset, path, "units", unit)?;
+    Ok(dataset)
+}
+
 pub(crate) fn extendable<T: hdf5::H5Type>(group: &Group, name: &str, unit: &str, chunk: usize, path: &Path) -> Result<Dataset, H5Error> {
+    extendable_with::<T>(group, name, unit, chunk, Compression::None, path)
+}
+
+/// [`extendable`] with the filters of `compression`.
+fn extendable_with<T: hdf5::H5Type>(
+    group: &Group,
+    name: &str,
+    unit: &str,
+    chunk: usize,
+    compression: Compression,
+    path: &Path,
+) -> Result<Dataset, H5Error> {
     // Rows are only appended, so a cache of a few chunks suffices; HDF5's
     // default (1 MiB per dataset) would grow the memory with the row count
     // up to that size per column.
@@ -198,6 +284,7 @@ pub(crate) fn extendable<T: hdf5::H5Type>(group: &Group, name: &str, unit: &str,
         .new_dataset::<T>()
         .obj_track_times(false)
         .chunk(chunk)
+        .set_filters(&compression.filters_for::<T>())
         .chunk_cache(11, 2 * chunk * std::mem::size_of::<T>().max(16), 1.0)
         .shape(0..)
         .create(name)
@@ -349,10 +436,23 @@ impl SweepWriter {
         sets: &[OutcomeSet],
         expected_rows: u64,
     ) -> Result<SweepWriter, H5Error> {
+        Self::create_with(path, provenance, parameters, sets, expected_rows, Compression::None)
+    }
+
+    /// [`Self::create`], the per-row datasets stored as `compression` says.
+    pub fn create_with(
+        path: &Path,
+        provenance: &Provenance,
+        parameters: &[Column],
+        sets: &[OutcomeSet],
+        expected_rows: u64,
+        compression: Compression,
+    ) -> Result<SweepWriter, H5Error> {
         disable_file_locking();
         let chunk = expected_rows.clamp(1, CHUNK_ROWS as u64) as usize;
         // Failures are usually few.
         let failure_chunk = chunk.min(64);
+        let column = |group: &Group, c: &Column| extendable_with::<f64>(group, &c.name, &c.unit, chunk, compression, path);
         if sets.is_empty() {
             return Err(layout(path, "a sweep needs at least one outcome set"));
         }
@@ -371,7 +471,7 @@ impl SweepWriter {
         let group = new_group(&file, "parameters").map_err(h5err(path))?;
         let parameter_datasets = parameters
             .iter()
-            .map(|c| extendable::<f64>(&group, &c.name, &c.unit, chunk, path))
+            .map(|c| column(&group, c))
             .collect::<Result<Vec<_>, _>>()?;
         let mut set_writers = Vec::new();
         for (i, set) in sets.iter().enumerate() {
@@ -386,13 +486,13 @@ impl SweepWriter {
             let columns = set
                 .columns
                 .iter()
-                .map(|c| extendable::<f64>(&outcomes, &c.name, &c.unit, chunk, path))
+                .map(|c| column(&outcomes, c))
                 .collect::<Result<Vec<_>, _>>()?;
-            let status = extendable::<u8>(&outcomes, "status", "1", chunk, path)?;
+            let status = extendable_with::<u8>(&outcomes, "status", "1", chunk, compression, path)?;
             write_str_attr(&status, path, "meaning", "0: solved; 1: failed, outcomes NaN, message in failures/")?;
             let failures = new_group(&base, "failures").map_err(h5err(path))?;
-            let failure_index = extendable::<u64>(&failures, "index", "1", failure_chunk, path)?;
-            let failure_message = extendable::<VarLenUnicode>(&failures, "message", "", failure_chunk, path)?;
+            let failure_index = extendable_with::<u64>(&failures, "index", "1", failure_chunk, compression, path)?;
+            let failure_message = extendable_with::<VarLenUnicode>(&failures, "message", "", failure_chunk, compression, path)?;
             set_writers.push(SetWriter {
                 group: base,
                 buffer: vec![Vec::with_capacity(CHUNK_ROWS); columns.len()],

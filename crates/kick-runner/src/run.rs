@@ -365,12 +365,13 @@ pub fn run_part(
             experiment.solvers.iter().map(|s| crate::flight::flight_set(s.name(), rest, flown.as_ref())).collect();
         sets.extend(flight_sets);
     }
-    let mut writer = SweepWriter::create(
+    let mut writer = SweepWriter::create_with(
         &path,
         &provenance,
         &parameter_columns(experiment.scenarios.has_restitution()),
         &sets,
         part.rows.end - part.rows.start,
+        experiment.compress,
     )?;
     crate::h5::write_str_attr(writer.file(), &path, "description", &experiment.description)?;
     if let Some(names) = experiment.scenarios.names() {

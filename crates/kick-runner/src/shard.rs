@@ -434,8 +434,8 @@ impl Merger<'_> {
         self.append(piece, &from, &created, offset)
     }
 
-    /// An empty dataset of `like`'s type, attributes and trailing shape
-    /// (`[rows]` or `[rows, k]`), extendable along the rows.
+    /// An empty dataset of `like`'s type, attributes, filters and trailing
+    /// shape (`[rows]` or `[rows, k]`), extendable along the rows.
     fn create(&self, like: &hdf5::Dataset, to: &Group, name: &str) -> Result<hdf5::Dataset, ShardError> {
         let layout_error = |what: String| part_error(&self.pieces[0].path, format!("{name}: {what}, not one of the result layout"));
         let shape = like.shape();
@@ -444,9 +444,11 @@ impl Merger<'_> {
             [_, k] => ((0.., *k).into(), vec![CHUNK_ROWS, (*k).max(1)]),
             other => return Err(layout_error(format!("dataset of shape {other:?}"))),
         };
+        // The part's filters (`--compress`): a merge of compressed parts is compressed.
+        let filters = like.filters();
         macro_rules! of {
             ($t:ty) => {
-                to.new_dataset::<$t>().obj_track_times(false).chunk(chunk.as_slice()).shape(extents).create(name)
+                to.new_dataset::<$t>().obj_track_times(false).chunk(chunk.as_slice()).set_filters(&filters).shape(extents).create(name)
             };
         }
         let created = match like.dtype().and_then(|t| t.to_descriptor()).map_err(self.err())? {

@@ -1,5 +1,6 @@
-//! `kick sweep --samples N --seed S [--solver NAME] --out FILE.h5 [--shard I/N]`:
-//! random scenarios around the baseline, solved in parallel, streamed to HDF5.
+//! `kick sweep --samples N --seed S [--solver NAME] --out FILE.h5 [--shard I/N]
+//! [--compress [LEVEL]]`: random scenarios around the baseline, solved in
+//! parallel, streamed to HDF5 (compressed: [`crate::h5::Compression`]).
 //!
 //! With `--shard I/N` (from 0, as `kick run --shard`), only samples
 //! `floor(I*N_s/N) .. floor((I+1)*N_s/N)` are solved, into
@@ -38,6 +39,8 @@ pub struct SweepSettings {
     pub shard: Option<String>,
     /// `--threads`: worker threads (default: one per core).
     pub threads: Option<usize>,
+    /// `--compress [LEVEL]`: how the per-row datasets are stored.
+    pub compress: crate::h5::Compression,
 }
 
 /// Where a random sweep (`kick sweep`, `kick sweep3d`) goes, its settings checked.
@@ -138,6 +141,7 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
         scenarios: Scenarios::Sampled(sweep),
         output: Output::Summary,
         flight: None,
+        compress: settings.compress,
     };
     let started = std::time::Instant::now();
     let summary = match target.shard {

@@ -1,5 +1,6 @@
-//! `kick sweep3d --samples N --seed S --out FILE.h5`: random off-center
-//! kicks around the baseline, solved in parallel, written to one HDF5 file.
+//! `kick sweep3d --samples N --seed S --out FILE.h5 [--compress [LEVEL]]`:
+//! random off-center kicks around the baseline, solved in parallel, written
+//! to one HDF5 file (compressed: [`crate::h5::Compression`]).
 //!
 //! Kick `i` of seed `s` ([`SampledKicks`]): offset, approach angle, friction
 //! and foot mass from the off-center box (`kick_3d::models::OffCenterBox`, the
@@ -27,7 +28,7 @@
 //! /failures/index, /failures/message rows that did not separate (u64, the file's rows) and why
 //! ```
 
-use crate::h5::{new_group, write_str_attr, write_u64_attr, H5Error, ResultWriter};
+use crate::h5::{new_group, per_row, write_str_attr, write_u64_attr, Compression, H5Error, ResultWriter};
 use crate::limits;
 use crate::sweep::SweepTarget;
 use crate::printable::Printable;
@@ -55,6 +56,8 @@ pub struct Sweep3dSettings {
     pub shard: Option<String>,
     /// `--threads`: worker threads (default: one per core).
     pub threads: Option<usize>,
+    /// `--compress [LEVEL]`: how the per-row datasets are stored.
+    pub compress: crate::h5::Compression,
 }
 
 /// What a sweep did.
@@ -268,7 +271,7 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, String> {
     let provenance = Provenance::now(&target.name, &format!("kick sweep3d (seed {})", settings.seed), &text);
     let started = std::time::Instant::now();
     let cpu_started = cpu_seconds();
-    let (path, not_separated) = write(&target, &provenance, &kicks, law).map_err(|e| e.to_string())?;
+    let (path, not_separated) = write(&target, &provenance, &kicks, law, settings.compress).map_err(|e| e.to_string())?;
     Ok(Sweep3dReport {
         kicks: rows,
         shard: target.describe_shard(),
@@ -302,6 +305,7 @@ fn write(
     provenance: &Provenance,
     kicks: &SampledKicks,
     law: kick_core::LawKind,
+    compress: Compression,
 ) -> Result<(PathBuf, Vec<(&'static str, u64)>), H5Error> {
     let out = target.path.as_path();
     let rows = (target.rows.end - target.rows.start) as usize;
@@ -316,12 +320,7 @@ fn write(
     if let Some(shard) = target.shard {
         crate::shard::write_shard_attributes(&file, out, shard, target.samples, &provenance.experiment_text)?;
     }
-    let dataset = |group: &hdf5::Group, name: &str, unit: &str, width: usize| -> Result<hdf5::Dataset, H5Error> {
-        let builder = group.new_dataset::<f64>().obj_track_times(false);
-        let d = if width == 3 { builder.shape((rows, 3)).create(name) } else { builder.shape(rows).create(name) }.map_err(err)?;
-        write_str_attr(&d, out, "units", unit)?;
-        Ok(d)
-    };
+    let dataset = |group: &hdf5::Group, name: &str, unit: &str, width: usize| per_row::<f64>(group, name, unit, (rows, width), compress, out);
     let parameter_group = new_group(&file, "parameters").map_err(err)?;
     let mut parameter_sets = Vec::new();
     for p in parameters::at_levels(KickSpec::LEVELS) {
@@ -337,8 +336,7 @@ fn write(
     }
     let energy_group = new_group(&outcome_group, "energy").map_err(err)?;
     let energy_sets = ENERGY.iter().map(|(name, _)| dataset(&energy_group, name, "J", 1)).collect::<Result<Vec<_>, _>>()?;
-    let status_set = outcome_group.new_dataset::<u8>().obj_track_times(false).shape(rows).create("status").map_err(err)?;
-    write_str_attr(&status_set, out, "units", "1")?;
+    let status_set = per_row::<u8>(&outcome_group, "status", "1", (rows, 1), compress, out)?;
     let meaning = [Status::Separated, Status::NumericalFailure, Status::Trapped, Status::Refused]
         .map(|s| format!("{}: {}", s.code(), s.name()))
         .join("; ");
@@ -394,7 +392,15 @@ fn write(
     let index: Vec<u64> = failures.iter().map(|(i, _)| *i).collect();
     let messages: Vec<String> = failures.into_iter().map(|(_, m)| m).collect();
     let failure_group = new_group(&file, "failures").map_err(err)?;
-    crate::h5::write_indices(&failure_group, out, "index", "1", &index)?;
+    match compress {
+        Compression::None => crate::h5::write_indices(&failure_group, out, "index", "1", &index)?,
+        _ => {
+            let d = per_row::<u64>(&failure_group, "index", "1", (index.len(), 1), compress, out)?;
+            if !index.is_empty() {
+                d.write(&index).map_err(err)?;
+            }
+        }
+    }
     writer.strings("failures", "message", &messages)?;
     drop(file);
     let path = writer.finish()?;

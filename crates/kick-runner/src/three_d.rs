@@ -66,7 +66,7 @@ pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf
         .ok();
         sets.push(crate::flight::flight_set(&kick_set.solver, rest, flown.as_ref()));
     }
-    let mut writer = SweepWriter::create(&path, &provenance, &axes, &sets, rows)?;
+    let mut writer = SweepWriter::create_with(&path, &provenance, &axes, &sets, rows, experiment.compress)?;
     let file = writer.file().clone();
     write_str_attr(&file, &path, "description", &experiment.description)?;
     write_str_attr(&file, &path, "level", "3d")?;

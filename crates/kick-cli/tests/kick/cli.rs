@@ -137,3 +137,34 @@ fn completions_name_the_subcommands_and_the_declared_flags() {
     assert!(page.starts_with(".ie") || page.contains(".TH kick"), "{}", &page[..page.len().min(200)]);
     assert!(page.contains("simulate3d"), "the page lists the subcommands");
 }
+
+/// `--compress` of `kick sweep` and `kick sweep3d`: without a value the
+/// default level (a file smaller than the plain one), a level outside 1..9
+/// refused naming the flag, nothing written.
+#[test]
+fn sweeps_take_compress_with_or_without_a_level() {
+    let dir = std::env::temp_dir().join(format!("kick-compress-test-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    for command in ["sweep", "sweep3d"] {
+        let out = |name: &str| dir.join(format!("{command}-{name}.h5")).display().to_string();
+        let run = |name: &str, extra: &[&str]| {
+            let path = out(name);
+            let mut args = vec![command, "--samples", "3000", "--out", path.as_str()];
+            args.extend_from_slice(extra);
+            kick(&args)
+        };
+        for (name, extra) in [("plain", &[][..]), ("packed", &["--compress"][..])] {
+            let result = run(name, extra);
+            assert!(result.status.success(), "{command} {extra:?}: {}", String::from_utf8_lossy(&result.stderr));
+        }
+        let size = |name: &str| std::fs::metadata(out(name)).unwrap().len();
+        assert!(size("packed") < size("plain"), "{command}: {} vs {}", size("packed"), size("plain"));
+        for level in ["0", "10"] {
+            let result = run("bad", &["--compress", level]);
+            let stderr = String::from_utf8_lossy(&result.stderr);
+            assert!(!result.status.success() && stderr.contains(&format!("--compress {level}: the deflate level must be 1")), "{stderr}");
+            assert!(!std::path::Path::new(&out("bad")).exists());
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

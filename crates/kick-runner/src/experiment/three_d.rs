@@ -3,7 +3,7 @@
 //! A file is a 3D experiment when it says `level = "3d"`, has a `[kick3d]`
 //! table, or sweeps a parameter of the 3D level; `level = "1d"` keeps it 1D.
 //! The keys are the 1D ones (`name`, `description`, `solver`, `law`,
-//! `restitution`, `[base]`, `[[sweep]]`) plus `[kick3d]` (the declared 3D
+//! `restitution`, `compress`, `[base]`, `[[sweep]]`) plus `[kick3d]` (the declared 3D
 //! parameters, defaults as in `kick simulate3d`). A `[[sweep]]` axis may be
 //! any scalar parameter of either level; `solver` is a `kick simulate3d
 //! --solver` name (default `accurate`). Histories, `[[scenario]]` lists and
@@ -38,6 +38,7 @@ struct RawExperiment3d {
     kick3d: Option<Kick3dSpec>,
     sweep: Option<Vec<RawAxis<String>>>,
     flight: Option<Spanned<kick_flight::FlightSpec>>,
+    compress: Option<Spanned<toml::Value>>,
 }
 
 /// One swept parameter of a 3D grid and its values.
@@ -117,6 +118,8 @@ pub struct Experiment3d {
     /// The `[flight]` table: every cell's kick is flown and the flight
     /// outcomes stored beside it.
     pub flight: Option<kick_flight::FlightSpec>,
+    /// The `compress` key, as in 1D.
+    pub compress: crate::h5::Compression,
 }
 
 /// Validate a 3D experiment (the parent's `parse_any` decided it is one).
@@ -214,8 +217,10 @@ pub(super) fn parse(path: &Path, text: &str, at: &Locator, stem: String) -> Resu
         }
     }
     let flight = super::flight::parse(at, text, raw.flight.as_ref(), super::flight::After::ThreeD)?;
+    let compress = super::compression(at, raw.compress.as_ref())?;
     Ok(Experiment3d {
         flight,
+        compress,
         name,
         description: raw.description.unwrap_or_default(),
         path: path.to_path_buf(),

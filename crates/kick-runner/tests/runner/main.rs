@@ -22,3 +22,4 @@ mod sweep3d;
 mod flight_grid;
 mod settings;
 mod text;
+mod compress;

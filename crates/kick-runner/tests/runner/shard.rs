@@ -65,7 +65,7 @@ fn tree(group: &hdf5::Group, prefix: &str, out: &mut BTreeMap<String, (BTreeMap<
 
 /// The two files hold the same objects with the same attributes and values,
 /// every one of them (no wall-clock time in either); returns how many datasets were compared.
-fn assert_same_file(merged: &Path, whole: &Path) -> usize {
+pub(crate) fn assert_same_file(merged: &Path, whole: &Path) -> usize {
     let (mut a, mut b) = (BTreeMap::new(), BTreeMap::new());
     tree(&hdf5::File::open(merged).unwrap(), "", &mut a);
     tree(&hdf5::File::open(whole).unwrap(), "", &mut b);
@@ -271,6 +271,7 @@ fn a_sweep_in_three_shards_merges_to_the_unsharded_sweep() {
         fixed: Default::default(),
         shard: shard.map(String::from),
         threads: None,
+        compress: Default::default(),
     };
     let whole = sweep(&settings(dir.join("whole/s.h5"), None)).unwrap();
     assert_eq!(whole.path, dir.join("whole/s.h5"));
@@ -307,7 +308,7 @@ fn a_sweep3d_in_three_shards_merges_to_the_unsharded_sweep() {
     let settings = |out: PathBuf, shard: Option<&str>| {
         let mut fixed = kick_3d::KickSpec::default();
         fixed.scenario.law = Some(kick_core::LawKind::PowerLaw);
-        Sweep3dSettings { samples: 40, seed: 3, out, fixed, shard: shard.map(String::from), threads: None }
+        Sweep3dSettings { samples: 40, seed: 3, out, fixed, shard: shard.map(String::from), threads: None, compress: Default::default() }
     };
     let whole = sweep3d(&settings(dir.join("whole/k.h5"), None)).unwrap();
     assert_eq!(whole.kicks, 40);

@@ -12,7 +12,7 @@ use std::path::Path;
 fn settings(samples: u64, seed: u64, out: &Path) -> Sweep3dSettings {
     let mut fixed = KickSpec::default();
     fixed.scenario.law = Some(LawKind::PowerLaw);
-    Sweep3dSettings { samples, seed, out: out.to_path_buf(), fixed, shard: None, threads: None }
+    Sweep3dSettings { samples, seed, out: out.to_path_buf(), fixed, shard: None, threads: None, compress: Default::default() }
 }
 
 /// Rows of a [rows] or [rows, 3] dataset as [x, y, z] (NaN-padded).
@@ -192,6 +192,7 @@ fn bad_settings_are_refused_by_name() {
             fixed: Default::default(),
             shard: Some(given.into()),
             threads: None,
+            compress: Default::default(),
         })
         .unwrap_err();
         assert!(error.starts_with(&format!("`--shard` = `{given}`")), "{error}");
