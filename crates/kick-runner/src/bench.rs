@@ -87,6 +87,71 @@ fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) -> Res
     Ok(sweep.samples as f64 / started.elapsed().as_secs_f64())
 }
 
+/// One sweep written to its HDF5 file as `kick sweep`/`kick sweep3d --out`
+/// write it, plain or compressed: wall time and the file's size.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FileRun {
+    /// The command that does the same run alone.
+    pub command: String,
+    pub rows: u64,
+    pub seconds: f64,
+    pub bytes: u64,
+}
+
+/// `kick sweep` and `kick sweep3d` into files on 2 threads, plain and with
+/// shuffle + deflate at the default level: the throughput with the file
+/// written, and what compression costs and saves. Files go to a scratch
+/// directory removed afterwards.
+fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
+    use crate::h5::Compression;
+    let (samples_1d, samples_3d) = if quick { (2_000, 200) } else { (200_000, 20_000) };
+    let dir = std::env::temp_dir().join(format!("kick-bench-files-{}", std::process::id()));
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build().map_err(|e| e.to_string())?;
+    let mut runs = Vec::new();
+    let mut measure = || -> Result<(), String> {
+        for compress in [Compression::None, Compression::Deflate(Compression::DEFAULT_LEVEL)] {
+            let flag = match compress {
+                Compression::None => String::new(),
+                Compression::Deflate(level) => format!(" --compress {level}"),
+            };
+            let settings = crate::sweep::SweepSettings {
+                samples: samples_1d,
+                seed: 1,
+                solver: "auto".into(),
+                dt: None,
+                out: dir.join("sweep.h5"),
+                fixed: Default::default(),
+                shard: None,
+                threads: None,
+                compress,
+            };
+            let report = pool.install(|| crate::sweep::sweep(&settings))?;
+            let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+            let command = format!("kick sweep --samples {samples_1d} --seed 1 --threads 2 --out sweep.h5{flag}");
+            runs.push(FileRun { command, rows: samples_1d, seconds: report.seconds, bytes });
+            let _ = std::fs::remove_file(&report.path);
+            let settings = crate::sweep3d::Sweep3dSettings {
+                samples: samples_3d,
+                seed: 1,
+                out: dir.join("sweep3d.h5"),
+                fixed: Default::default(),
+                shard: None,
+                threads: None,
+                compress,
+            };
+            let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
+            let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+            let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --out sweep3d.h5{flag}");
+            runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
+            let _ = std::fs::remove_file(&report.path);
+        }
+        Ok(())
+    };
+    let result = measure();
+    let _ = std::fs::remove_dir_all(&dir);
+    result.map(|()| runs)
+}
+
 /// Measure every solver's work and precision, the headline ratios and the
 /// sweep throughput (one run, one binary); write work_precision.h5, its
 /// figure and, if asked, the Markdown section. Progress lines go to `log`.
@@ -161,6 +226,18 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         cost.ratio
     );
 
+    let files = file_runs(args.quick)?;
+    for run in &files {
+        let _ = writeln!(
+            log,
+            "{}: {} s, {} rows/s, {} MB",
+            run.command,
+            kick_core::sig(run.seconds),
+            kick_core::sig(run.rows as f64 / run.seconds),
+            kick_core::sig(run.bytes as f64 / 1e6)
+        );
+    }
+
     // Results file, then the figure drawn from it.
     std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create {}: {e}", args.out.display()))?;
     let path = args.out.join("work_precision.h5");
@@ -198,7 +275,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let path = writer.finish().map_err(|e| e.to_string())?;
     let mut written = vec![path.clone()];
     written.extend(draw(&path, &args.out.join("figures"))?);
-    let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples, cost: &cost };
+    let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples, cost: &cost, files: &files };
     if let Some(report) = &args.report {
         let report_dir = report.parent().unwrap_or(std::path::Path::new(""));
         let figure = crate::reproduce::relative(report_dir, &args.out.join("figures/work_precision.png"));
@@ -232,6 +309,7 @@ struct Measured<'a> {
     two: f64,
     samples: u64,
     cost: &'a kick_3d::precision::CostRatio,
+    files: &'a [FileRun],
 }
 
 /// The machine a timing was taken on.
@@ -323,7 +401,26 @@ impl Measured<'_> {
                 p.seconds_per_scenario * 1e6
             ));
         }
-        format!(
+        let mut files = String::new();
+        for run in self.files {
+            // Its plain twin: the same command without --compress.
+            let plain = self.files.iter().find(|p| !p.command.contains("--compress") && run.command.starts_with(&p.command));
+            let size = match plain {
+                Some(p) if p.command != run.command => format!(
+                    "{} ({:+.0}%)",
+                    kick_core::sig(run.bytes as f64 / 1e6),
+                    100.0 * (run.bytes as f64 / p.bytes as f64 - 1.0)
+                ),
+                _ => kick_core::sig(run.bytes as f64 / 1e6).to_string(),
+            };
+            files.push_str(&format!(
+                "| `{}` | {} | {} | {size} |\n",
+                run.command,
+                kick_core::sig(run.seconds),
+                kick_core::sig(run.rows as f64 / run.seconds)
+            ));
+        }
+        let body = format!(
             "# Timing of the 1D solvers\n\n\
              Generated by `{command}` (part of `kick reproduce`) on {}, {}. Every number below was measured in that run \
              and changes from run to run: this page and `{data}` are the only outputs of `kick reproduce` that do. \
@@ -354,6 +451,15 @@ impl Measured<'_> {
             self.cost.ratio,
             self.cost.evaluations_3d,
             self.cost.evaluations_1d,
+        );
+        format!(
+            "{body}\n## Sweeps into result files\n\n\
+             `kick sweep` and `kick sweep3d` with `--out`, on 2 threads, each run once: wall time with the HDF5 file \
+             written, and the file's size, plain and with shuffle + deflate (`--compress`, level {}). Random parameters \
+             and their outcomes are mostly noise in their last digits, which deflate cannot shrink; a small file can \
+             even grow, each compressed dataset carrying a chunk index.\n\n\
+             | command | s | rows per s | file (MB) |\n| --- | --- | --- | --- |\n{files}",
+            crate::h5::Compression::DEFAULT_LEVEL
         )
     }
 }

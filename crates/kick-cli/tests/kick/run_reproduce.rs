@@ -55,6 +55,10 @@ fn reproduce_writes_results_figures_and_report() {
     assert!(results.join("timing/work_precision.h5").exists() && !results.join("work_precision.h5").exists());
     let timing = std::fs::read_to_string(dir.join("paper/timing.md")).unwrap();
     assert!(timing.contains("µs per scenario") && timing.contains("cores available"), "{timing}");
+    // The sweeps into files, plain and compressed, measured on the same page.
+    for command in ["`kick sweep --samples 2000 --seed 1 --threads 2 --out sweep.h5`", "`kick sweep3d --samples 200 --seed 1 --threads 2 --out sweep3d.h5 --compress 4`"] {
+        assert!(timing.contains("## Sweeps into result files") && timing.contains(command), "{command}: {timing}");
+    }
     let solvers = std::fs::read_to_string(dir.join("paper/solvers.md")).unwrap();
     assert!(!solvers.contains("µs per scenario") && !solvers.contains("scenarios/s"), "{solvers}");
     assert!(solvers.contains("evaluations per scenario") && solvers.contains("(timing.md)"), "{solvers}");
