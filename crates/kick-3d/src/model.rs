@@ -168,10 +168,16 @@ pub struct KickSpec {
 }
 
 impl KickSpec {
-    /// Fill the gaps with the defaults and validate. A `damping` the law
-    /// ignores is not refused here (`kick sweep3d` draws every 1D parameter):
-    /// front ends call [`ScenarioSpec::check_given`] on what the user gave.
+    /// Fill the gaps with the defaults and validate, refusing a `damping` or
+    /// `restitution` the law would ignore ([`ScenarioSpec::check_given`]).
     pub fn build(&self) -> Result<Kick3d, Kick3dError> {
+        Kick3d::new(self.scenario.build()?, &self.kick3d)
+    }
+
+    /// [`KickSpec::build`] for a spec whose 1D parameters were drawn, not
+    /// given (`kick sweep3d` draws every one, damping included, whatever the
+    /// law): nothing in it is the user's to refuse.
+    pub fn build_drawn(&self) -> Result<Kick3d, Kick3dError> {
         Kick3d::new(self.scenario.build_drawn()?, &self.kick3d)
     }
 }

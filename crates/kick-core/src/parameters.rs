@@ -284,6 +284,16 @@ pub enum Value {
 }
 
 impl Value {
+    /// The value as stored in result files and flight specs: one number, a
+    /// vector's three, a switch as 0 or 1.
+    pub fn numbers(&self) -> Vec<f64> {
+        match *self {
+            Value::Number(x) => vec![x],
+            Value::Vector(v) => v.to_vec(),
+            Value::Switch(on) => vec![f64::from(u8::from(on))],
+        }
+    }
+
     pub fn shape(&self) -> Shape {
         match self {
             Value::Number(_) => Shape::Scalar,

@@ -25,11 +25,7 @@ pub fn flight<'py>(py: Python<'py>, params: Option<&Bound<'py, PyDict>>) -> PyRe
                 if value.is_none() {
                     continue;
                 }
-                let values: Vec<f64> = match crate::params::value(parameter.def(), &value)? {
-                    parameters::Value::Number(x) => vec![x],
-                    parameters::Value::Vector(v) => v.to_vec(),
-                    parameters::Value::Switch(on) => vec![f64::from(u8::from(on))],
-                };
+                let values = crate::params::value(parameter.def(), &value)?.numbers();
                 spec.set(parameter, &values).map_err(value_error)?;
             }
         }

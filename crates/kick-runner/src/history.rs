@@ -129,12 +129,7 @@ pub struct HistoryMeta {
 impl HistoryMeta {
     /// A fixed parameter from a declared value.
     pub fn push_value(&mut self, name: &str, unit: &str, value: Value) {
-        let values = match value {
-            Value::Number(x) => vec![x],
-            Value::Vector(v) => v.to_vec(),
-            Value::Switch(on) => vec![f64::from(u8::from(on))],
-        };
-        self.fixed.push((name.into(), unit.into(), values));
+        self.fixed.push((name.into(), unit.into(), value.numbers()));
     }
 }
 

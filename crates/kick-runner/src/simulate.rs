@@ -168,7 +168,6 @@ pub fn simulate3d(
     history: Option<&HistoryRequest>,
     flight: Option<&FlightSpec>,
 ) -> Result<Simulation3d, String> {
-    spec.scenario.check_given().map_err(|e| e.to_string())?;
     let kick = spec.build().map_err(|e| e.to_string())?;
     let solver = Solver3d::with_step(solver, dt).map_err(|e| e.to_string())?;
     let start = Instant::now();
@@ -264,7 +263,6 @@ pub struct SceneConvergence {
 }
 
 pub fn scene_convergence(spec: &KickSpec) -> Result<SceneConvergence, String> {
-    spec.scenario.check_given().map_err(|e| e.to_string())?;
     let kick = spec.build().map_err(|e| e.to_string())?;
     let steps: Vec<f64> = (0..7).map(|i| 4e-5 / f64::from(1u32 << i)).collect();
     let (rows, accurate_seconds) = kick_3d::scene::convergence(&kick, &steps).map_err(|e| e.to_string())?;

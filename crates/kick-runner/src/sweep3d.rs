@@ -220,7 +220,7 @@ struct Row {
 
 fn solve_row(kicks: &SampledKicks, index: u64) -> Row {
     let spec = kicks.spec(index);
-    let kick = spec.build();
+    let kick = spec.build_drawn();
     let parameters = parameters::at_levels(KickSpec::LEVELS).map(|p| solved_value(p, &spec, kick.as_ref().ok())).collect();
     let outcome = kick.and_then(|k| Solver3d::Auto.solve(&k)).map_err(|e: Kick3dError| (e.status(), e.to_string()));
     Row { parameters, outcome }
@@ -246,7 +246,7 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, String> {
     // held damping or restitution the law would ignore (the drawn damping is
     // the sampler's, not the user's).
     settings.fixed.scenario.check_given().map_err(|e| e.to_string())?;
-    kicks.spec(0).build().map_err(|e| e.to_string())?;
+    kicks.spec(0).build_drawn().map_err(|e| e.to_string())?;
     let law = settings.fixed.scenario.law.unwrap_or(kick_core::LawKind::PowerLaw);
     let mut given = String::new();
     for p in parameters::at_levels(KickSpec::LEVELS) {

@@ -15,7 +15,6 @@ use crate::h5::{law_settings, new_group, write_column, write_grid, write_str_att
 use crate::provenance::Provenance;
 use crate::run::{Part, RunError, RunSummary};
 use kick_3d::{Kick3dError, Outcome3d, OBSERVABLES_3D};
-use kick_core::parameters::Value;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -79,12 +78,7 @@ pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf
         if grid.axes.iter().any(|a| a.parameter.name == def.name) {
             continue;
         }
-        let values = match value {
-            Value::Number(x) => vec![x],
-            Value::Vector(v) => v.to_vec(),
-            Value::Switch(on) => vec![f64::from(u8::from(on))],
-        };
-        write_column(&fixed, &path, &Column::new(def.name, def.unit), &values)?;
+        write_column(&fixed, &path, &Column::new(def.name, def.unit), &value.numbers())?;
     }
     attributes(&file)?;
 

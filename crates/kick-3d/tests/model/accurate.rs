@@ -331,3 +331,19 @@ fn a_rounded_foot_is_as_large_as_the_half_extents_given() {
         assert!((nearest.x - given[0]).abs() < 1e-9, "border {border}: ball leaves at x = {}", nearest.x);
     }
 }
+
+/// A damping given beside a law that takes its damping from a restitution is
+/// refused by the build every front end calls (simulate3d, Python's
+/// history3d, experiments); the sampler's drawn specs build unchecked.
+#[test]
+fn a_damping_the_law_ignores_is_refused_by_the_build() {
+    let mut spec = kick_3d::KickSpec::default();
+    spec.scenario.law = Some(LawKind::Flores);
+    spec.scenario.restitution = Some(0.6);
+    spec.scenario.damping = Some(100.0);
+    match spec.build() {
+        Err(e) => assert!(e.to_string().contains("damping"), "{e}"),
+        Ok(_) => panic!("damping under flores accepted"),
+    }
+    assert!(spec.build_drawn().is_ok());
+}
