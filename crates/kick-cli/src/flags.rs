@@ -10,7 +10,7 @@ use kick_3d::KickSpec;
 use kick_core::parameters::{self, ParameterDef, SetLaw, SetParameter, Shape, Value};
 use kick_core::{LawKind, ScenarioSpec};
 use kick_flight::{FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
-use kick_runner::flight::After;
+use kick_study::flight::After;
 use std::marker::PhantomData;
 
 /// A spec the flags fill: its declared parameters, and (if it takes one) the contact law.

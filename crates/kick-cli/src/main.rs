@@ -1,5 +1,5 @@
 //! `kick`: the command line of the kick workspace. Each subcommand parses its
-//! arguments, calls one function of `kick_runner` and prints what it returns.
+//! arguments, calls one function of the library crates (kick-study, kick-store, kick-paper) and prints what it returns.
 
 mod flags;
 mod output;
@@ -46,7 +46,7 @@ enum Command {
     Check(FormatOnly),
     /// Effective mass of the articulated leg (Eq. 11) and the exit speed it gives.
     ///
-    /// With no arguments, the default pose (`kick_runner::leg::LegSettings::default`):
+    /// With no arguments, the default pose (`kick_paper::leg::LegSettings::default`):
     /// knee flexed 30°, ankle plantarflexed 60°, thigh 10° forward of vertical;
     /// free knee and ankle, pinned hip, planar leg; contact at 0.65 of the
     /// foot's length, horizontal impact; de Leva's (1996) reference male.
@@ -118,7 +118,7 @@ struct FlightArgs {
     history: HistoryArgs,
 }
 
-/// `--history FILE [--samples N | --interval DT]` (kick_runner::history).
+/// `--history FILE [--samples N | --interval DT]` (kick_store::history).
 #[derive(Args)]
 struct HistoryArgs {
     /// Write the time history to FILE: .csv (header `name [unit]`, then numbers only)
@@ -137,10 +137,10 @@ struct HistoryArgs {
 }
 
 impl HistoryArgs {
-    fn request(&self) -> Result<Option<kick_runner::history::HistoryRequest>, String> {
+    fn request(&self) -> Result<Option<kick_study::history::HistoryRequest>, String> {
         self.history
             .as_deref()
-            .map(|path| kick_runner::history::HistoryRequest::new(path, self.samples, self.interval))
+            .map(|path| kick_store::history::request(path, self.samples, self.interval))
             .transpose()
     }
 }
@@ -186,7 +186,7 @@ struct Table2 {
 }
 
 /// `kick leg`'s defaults: the library's documented default pose.
-static POSE: std::sync::LazyLock<kick_runner::leg::LegSettings> = std::sync::LazyLock::new(Default::default);
+static POSE: std::sync::LazyLock<kick_paper::leg::LegSettings> = std::sync::LazyLock::new(Default::default);
 
 #[derive(Args)]
 struct Leg {
@@ -465,8 +465,8 @@ struct Reproduce {
 }
 
 fn main() -> ExitCode {
-    kick_runner::h5::disable_file_locking();
-    if let Err(e) = kick_runner::output::install_signal_cleanup() {
+    kick_store::h5::disable_file_locking();
+    if let Err(e) = kick_store::output::install_signal_cleanup() {
         eprintln!("warning: {e}; an interrupted run may leave a temporary file");
     }
     let cli = Cli::parse();
@@ -481,12 +481,14 @@ fn main() -> ExitCode {
 }
 
 /// `--compress [LEVEL]` as given: absent, without a level, or with one.
-fn compression(given: Option<Option<i64>>) -> Result<kick_runner::h5::Compression, String> {
-    given.map_or(Ok(kick_runner::h5::Compression::None), |level| kick_runner::h5::Compression::deflate(level, "--compress"))
+fn compression(given: Option<Option<i64>>) -> Result<kick_store::h5::Compression, String> {
+    given.map_or(Ok(kick_store::h5::Compression::None), |level| kick_store::h5::Compression::deflate(level, "--compress"))
 }
 
 fn execute(command: Command, out: &mut Out) -> CliResult {
-    use kick_runner::*;
+    use kick_paper::{bench, identify, leg, reproduce};
+    use kick_store::{shard, sweep, sweep3d};
+    use kick_study::{checks, flight, set_threads, simulate, table2};
     use std::io::Write as _;
     match command {
         Command::Completions { shell } => {

@@ -3,7 +3,7 @@
 //! dropped quietly instead of failing the command.
 
 use clap::ValueEnum;
-use kick_runner::Printable;
+use kick_study::Printable;
 use std::io::{self, Write};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -40,7 +40,7 @@ impl Out {
     pub fn print<T: Printable>(&mut self, format: Format, value: &T) -> CliResult {
         let text = match format {
             Format::Text => value.text(),
-            Format::Json => kick_runner::json(value)?,
+            Format::Json => kick_study::json(value)?,
         };
         self.write_all(text.as_bytes()).map_err(|e| format!("cannot write to standard output: {e}"))?;
         self.flush().map_err(|e| format!("cannot write to standard output: {e}"))?;

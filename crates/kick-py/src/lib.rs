@@ -142,7 +142,7 @@ fn history3d<'py>(
     guard(|| {
         let spacing = spacing(samples, interval)?;
         let spec = params::kick_spec(params, crate::law(law)?)?;
-        let (_, history) = py.detach(|| kick_runner::simulate::sampled3d(&spec, solver, spacing)).map_err(value_error)?;
+        let (_, history) = py.detach(|| kick_study::simulate::sampled3d(&spec, solver, spacing)).map_err(value_error)?;
         let out = PyDict::new(py);
         for (k, (name, _)) in kick_3d::HISTORY_COLUMNS_3D.iter().enumerate() {
             let column: Vec<f64> = history.iter().map(|s| s.values()[k]).collect();

@@ -52,7 +52,7 @@ fn leg_sweep_files_read_back_with_units_and_library_values() {
     let dir = std::env::temp_dir().join(format!("kick-leg-sweep-{}", std::process::id()));
     let out = kick(&["leg", "--knee", "30", "--ankle", "60", "--sweep-out", dir.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let grid = kick_runner::SweepData::read(&dir.join("leg_effective_mass.h5")).unwrap();
+    let grid = kick_store::SweepData::read(&dir.join("leg_effective_mass.h5")).unwrap();
     let (knees, ankles) = (grid.parameter("knee").unwrap(), grid.parameter("ankle").unwrap());
     assert_eq!(knees.len(), 25 * 19);
     let leg = Leg::de_leva(73.0, 1.741).unwrap();
@@ -66,7 +66,7 @@ fn leg_sweep_files_read_back_with_units_and_library_values() {
         let expected = leg.effective_mass(&pose, &Impact::default(), joint).unwrap().effective_mass;
         assert_eq!(masses[100], expected);
     }
-    let curve = kick_runner::SweepData::read(&dir.join("leg_exit_speed.h5")).unwrap();
+    let curve = kick_store::SweepData::read(&dir.join("leg_exit_speed.h5")).unwrap();
     let set = curve.set("accurate").unwrap();
     let speed = &set.columns.iter().find(|(c, _)| c.name == "v_ball_out").unwrap().1;
     let bound = &set.columns.iter().find(|(c, _)| c.name == "elastic_bound_v_ball_out").unwrap().1;
@@ -83,7 +83,7 @@ fn leg_without_arguments_is_the_documented_default_pose() {
     let out = kick(&["leg", "--format", "json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let cli: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let library = kick_runner::json(&kick_runner::leg::leg(&kick_runner::leg::LegSettings::default()).unwrap()).unwrap();
+    let library = kick_study::json(&kick_paper::leg::leg(&kick_paper::leg::LegSettings::default()).unwrap()).unwrap();
     let library: serde_json::Value = serde_json::from_str(&library).unwrap();
     for key in ["effective_mass", "locked_ankle", "free_ankle", "leg_mass", "v_ball_out", "contact_time", "knee", "hip", "ankle"] {
         assert_eq!(cli[key], library[key], "{key}");

@@ -140,7 +140,7 @@ fn laws_h5_equals_independent_solves() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(dir.join("laws.png").exists() && dir.join("laws.svg").exists() && !dir.join("laws.json").exists());
     let path = dir.join("laws.h5");
-    let data = kick_runner::SweepData::read(&path).unwrap();
+    let data = kick_store::SweepData::read(&path).unwrap();
     let solver = kick_compliant::Accurate::default();
     let names = data.names.clone().unwrap();
     assert_eq!(names.len(), 8);
@@ -165,14 +165,14 @@ fn laws_h5_equals_independent_solves() {
                 AnyLaw::KelvinVoigt(k) => assert_eq!(set.column("linear_damping").unwrap()[row], k.damping),
                 AnyLaw::PowerLaw(_) => assert!(set.column("hysteresis").is_none()),
             }
-            let pulse = kick_runner::h5::read_history(&path, &set.group, row).unwrap();
+            let pulse = kick_store::h5::read_history(&path, &set.group, row).unwrap();
             let force = &pulse.iter().find(|(c, _)| c.name == "force").unwrap().1;
             let time = &pulse.iter().find(|(c, _)| c.name == "time").unwrap().1;
             assert_eq!(force, &history.samples.iter().map(|x| x.force).collect::<Vec<_>>());
             assert_eq!(time, &history.samples.iter().map(|x| x.time).collect::<Vec<_>>());
         }
     }
-    let file = kick_runner::ResultFile::open(&path).unwrap();
+    let file = kick_store::ResultFile::open(&path).unwrap();
     let targets = file.values("restitution_formulas/target_restitution").unwrap();
     let baseline = Scenario::baseline();
     for kind in kick_identify::laws::RESTITUTION_LAWS {
@@ -212,7 +212,7 @@ fn fit_and_profile_h5_equal_independent_computations() {
         assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     }
     // The fit report: predictions at the stored estimates.
-    let file = kick_runner::ResultFile::open(&dir.join("s_fit.h5")).unwrap();
+    let file = kick_store::ResultFile::open(&dir.join("s_fit.h5")).unwrap();
     assert_eq!(file.text("", "layout").unwrap(), "kick-fit-1");
     assert_eq!(file.text("fit", "law").unwrap(), "flores");
     let (spec, observations) = FitSpec::load(&dir.join("s.toml")).unwrap();
@@ -242,7 +242,7 @@ fn fit_and_profile_h5_equal_independent_computations() {
     }
 
     // The profiles: regenerate the data from the stored settings, recompute χ².
-    let file = kick_runner::ResultFile::open(&dir.join("identifiability.h5")).unwrap();
+    let file = kick_store::ResultFile::open(&dir.join("identifiability.h5")).unwrap();
     let values = Parameter::ALL.map(|p| file.scalar(&format!("truth/{}", p.name())).unwrap());
     let truth = ModelPoint::from(Scenario::from_values(values).unwrap());
     let seed = file.scalar("settings/seed").unwrap() as u64;

@@ -4,7 +4,7 @@
 //! stdout, and nothing written when the run fails.
 
 use crate::kick;
-use kick_runner::ResultFile;
+use kick_store::ResultFile;
 use std::path::{Path, PathBuf};
 
 fn scratch(name: &str) -> PathBuf {

@@ -2,7 +2,7 @@
 //! stopped by SIGINT, SIGTERM or SIGKILL. The result file is always one whole
 //! run and no temporary or lock file is left behind.
 
-use kick_runner::SweepData;
+use kick_store::SweepData;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};

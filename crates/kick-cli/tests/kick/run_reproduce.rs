@@ -30,7 +30,7 @@ fn run_writes_the_named_file() {
     std::fs::write(&file, "[[sweep]]\nparameter = \"damping\"\nvalues = [0.0, 120.0]\n").unwrap();
     let out = kick(&["run", file.to_str().unwrap(), "--out", dir.to_str().unwrap(), "--threads", "1"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let data = kick_runner::SweepData::read(&dir.join("small.h5")).unwrap();
+    let data = kick_store::SweepData::read(&dir.join("small.h5")).unwrap();
     assert_eq!(data.parameter("damping").unwrap(), [0.0, 120.0]);
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -61,8 +61,8 @@ fn the_slurm_example_run_locally_equals_an_unsharded_run() {
 
     let whole = kick(&["run", file.to_str().unwrap(), "--out", dir.join("whole").to_str().unwrap()]);
     assert!(whole.status.success(), "{}", String::from_utf8_lossy(&whole.stderr));
-    let mut merged = kick_runner::SweepData::read(&dir.join("shards/grid.h5")).unwrap();
-    let whole = kick_runner::SweepData::read(&dir.join("whole/grid.h5")).unwrap();
+    let mut merged = kick_store::SweepData::read(&dir.join("shards/grid.h5")).unwrap();
+    let whole = kick_store::SweepData::read(&dir.join("whole/grid.h5")).unwrap();
     assert_eq!(merged.rows(), 12);
     merged.path = whole.path.clone();
     assert_eq!(merged, whole);
@@ -102,9 +102,9 @@ fn the_slurm_example_shards_a_sweep3d_locally() {
     let whole = dir.join("whole/spin.h5");
     let done = kick(&["sweep3d", "--samples", "30", "--seed", "2", "--out", whole.to_str().unwrap()]);
     assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
-    let (merged, whole) = (kick_runner::ResultFile::open(&dir.join("shards/spin.h5")).unwrap(), kick_runner::ResultFile::open(&whole).unwrap());
+    let (merged, whole) = (kick_store::ResultFile::open(&dir.join("shards/spin.h5")).unwrap(), kick_store::ResultFile::open(&whole).unwrap());
     for dataset in ["parameters/offset", "parameters/foot_inertia", "outcomes/spin", "outcomes/speed", "outcomes/energy/friction_loss"] {
-        let bits = |f: &kick_runner::ResultFile| f.values(dataset).unwrap().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+        let bits = |f: &kick_store::ResultFile| f.values(dataset).unwrap().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
         assert_eq!(bits(&merged), bits(&whole), "{dataset}");
     }
     assert_eq!(merged.values("outcomes/spin").unwrap().len(), 90);
@@ -132,8 +132,8 @@ fn a_3d_experiment_runs_in_shards_and_merges() {
     assert!(String::from_utf8_lossy(&done.stdout).contains("2 shards, 10 rows"));
     let whole = kick(&["run", file.to_str().unwrap(), "--out", dir.join("whole").to_str().unwrap()]);
     assert!(whole.status.success(), "{}", String::from_utf8_lossy(&whole.stderr));
-    let mut merged = kick_runner::SweepData::read(&merged).unwrap();
-    let whole = kick_runner::SweepData::read(&dir.join("whole/spin.h5")).unwrap();
+    let mut merged = kick_store::SweepData::read(&merged).unwrap();
+    let whole = kick_store::SweepData::read(&dir.join("whole/spin.h5")).unwrap();
     assert_eq!(merged.grid_shape(), Some(vec![5, 2]));
     merged.path = whole.path.clone();
     assert_eq!(merged, whole);

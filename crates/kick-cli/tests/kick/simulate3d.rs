@@ -101,7 +101,7 @@ fn run3d_is_run_on_the_unified_format() {
     let out = kick(&["run3d", file.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(dir.join("3d_tiny.h5").exists());
-    let data = kick_runner::h5::SweepData::read(&dir.join("3d_tiny.h5")).unwrap();
+    let data = kick_store::h5::SweepData::read(&dir.join("3d_tiny.h5")).unwrap();
     assert_eq!(data.parameter("offset").unwrap(), &[0.0, 0.02, 0.04]);
     std::fs::remove_dir_all(&dir).ok();
 }

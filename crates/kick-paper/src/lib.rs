@@ -1,0 +1,27 @@
+//! kick-paper writes kick's paper: the plotting kit and Figures 1-7
+//! ([`figures`], bundled DejaVu Sans), the pages (`paper/README.md`:
+//! [`report`]; [`pages_3d`]; [`validation`]; the identification pages and
+//! figures: [`identify`]), the articulated leg's figure data ([`leg`]), the
+//! work-precision benchmark ([`bench`]) and the reproduction pipeline
+//! ([`reproduce`], `--check` through kick-store's `compare`).
+//!
+//! Depends on kick-study (what to compute) and kick-store (the files it
+//! reads and writes), and on plotters; neither depends on it.
+
+pub mod bench;
+pub mod figures;
+pub mod force_history;
+pub mod free_kick;
+pub mod identify;
+pub mod leg;
+pub mod links;
+pub mod pages_3d;
+pub mod report;
+pub mod reproduce;
+pub mod three_d;
+pub mod validation;
+
+// The modules of kick-study and kick-store under the names this crate's files use.
+pub(crate) use kick_store::{compare, h5, output, provenance, run, sweep, sweep3d};
+pub(crate) use kick_store::{Column, OutcomeSet, Provenance, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};
+pub(crate) use kick_study::{checks, flight, printable, sample, table2};

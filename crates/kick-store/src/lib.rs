@@ -1,0 +1,34 @@
+//! kick-store stores kick's studies: whole-or-nothing files, one writer per
+//! file and cleanup on signals ([`output`]), provenance ([`provenance`]), the
+//! HDF5 result tables, grids and layouts ([`h5`]), history files
+//! ([`history`], the file sinks of kick-study's history rows), experiments
+//! run into files ([`run`], [`three_d`], [`sweep`], [`sweep3d`]), shards and
+//! their merge ([`shard`]), the comparison of result trees ([`compare`]) and
+//! the identification files ([`identify::files`]).
+//!
+//! Depends on kick-study and the model crates (and hdf5); never the reverse.
+//! No plotting: figures and pages are kick-paper's.
+
+pub mod compare;
+pub mod h5;
+pub mod history;
+pub mod output;
+pub mod provenance;
+pub mod run;
+pub mod shard;
+pub mod sweep;
+pub mod sweep3d;
+pub mod three_d;
+
+/// Files of `kick fit` and `kick laws`.
+pub mod identify {
+    pub mod files;
+}
+
+// kick-study's modules under the names this crate's files use.
+pub(crate) use kick_study::{experiment, flight, limits, printable, sample};
+pub(crate) use kick_study::{Experiment, Output, Printable, Scenarios};
+
+pub use h5::{Column, OutcomeSet, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};
+pub use provenance::Provenance;
+pub use run::{run, run_file, RunReport, RunSummary};

@@ -1,0 +1,174 @@
+//! 3D experiments (`kick run`, see `kick_study::experiment::three_d`) into
+//! `DIR/NAME.h5` (kick-paper draws the 3D figures back from those files).
+//!
+//! The file is a sweep table ([`crate::h5`]): one row per grid cell (C
+//! order), `/parameters/<axis>` the swept values per row, `/outcomes/<name>`
+//! every column of [`kick_3d::OBSERVABLES_3D`] (vectors as `_x`, `_y`, `_z`),
+//! plus `/grid` (axis coordinates, `grid_shape` attribute, see
+//! [`crate::h5::write_grid`]), `/fixed/<name>` every parameter not swept
+//! (defaults filled in; vectors as three numbers, switches as 0 or 1) with
+//! its unit, and the root attribute `level = "3d"`.
+
+use crate::experiment::Experiment3d;
+use crate::h5::{law_settings, new_group, write_column, write_grid, write_str_attr, Column, H5Error, OutcomeSet, SweepWriter, CHUNK_ROWS};
+use crate::provenance::Provenance;
+use crate::run::{Part, RunError, RunSummary};
+use kick_3d::{Kick3dError, Outcome3d, OBSERVABLES_3D};
+use rayon::prelude::*;
+use std::path::Path;
+
+/// A row's flight values ([`crate::flight::flight_columns`] order) or why there is none.
+type FlightRow = Result<Vec<f64>, String>;
+
+/// The outcome set of a 3D run: the solver, its law and the 3D columns.
+fn outcome_set(experiment: &Experiment3d) -> OutcomeSet {
+    OutcomeSet {
+        solver: format!("{}-3d", experiment.solver_name),
+        settings: law_settings(&experiment.grid.scenario, []),
+        columns: OBSERVABLES_3D.iter().map(|(n, u)| Column::new(n, u)).collect(),
+    }
+}
+
+/// Run a 3D experiment into `out_dir/NAME.h5`: cells solved in parallel in
+/// chunks, written in grid order (the file does not depend on the threads).
+pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunError> {
+    let part = Part { rows: 0..experiment.grid.len(), path: out_dir.join(format!("{}.h5", experiment.name)) };
+    run_part(experiment, &part, &|_| Ok(()))
+}
+
+/// Data bytes of a row: the axes' values, the outcome columns and a status
+/// byte, and with `[flight]` the flight set's columns and status.
+fn bytes_per_row(experiment: &Experiment3d) -> u64 {
+    let flight = experiment.flight.as_ref().map_or(0, |rest| 8 * crate::flight::flight_columns(rest.distance.is_some()).len() as u64 + 1);
+    8 * (experiment.grid.axes.len() + OBSERVABLES_3D.len()) as u64 + 1 + flight
+}
+
+/// [`run`] of the cells `part.rows` into `part.path` (a shard: [`crate::shard`]);
+/// `attributes` adds root attributes of the caller's. `/grid` and `/fixed`
+/// describe the whole experiment in every part.
+pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>) -> Result<RunSummary, RunError> {
+    let grid = &experiment.grid;
+    let path = part.path.clone();
+    let out_dir = path.parent().unwrap_or(Path::new("."));
+    let rows = part.rows.end - part.rows.start;
+    crate::limits::check_rows("cells", grid.len(), rows, bytes_per_row(experiment), out_dir)?;
+    let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
+    let axes: Vec<Column> = grid.axes.iter().map(|a| Column::new(a.parameter.name, a.parameter.unit)).collect();
+    let kick_set = outcome_set(experiment);
+    let mut sets = vec![kick_set.clone()];
+    if let Some(rest) = &experiment.flight {
+        let flown = kick_flight::Flight::from_launch([1.0, 0.0, 1.0], [0.0; 3], &kick_flight::FlightSpec {
+            gravity: Some(kick_core::GRAVITY),
+            ..*rest
+        })
+        .ok();
+        sets.push(crate::flight::flight_set(&kick_set.solver, rest, flown.as_ref()));
+    }
+    let mut writer = SweepWriter::create_with(&path, &provenance, &axes, &sets, rows, experiment.compress)?;
+    let file = writer.file().clone();
+    write_str_attr(&file, &path, "description", &experiment.description)?;
+    write_str_attr(&file, &path, "level", "3d")?;
+    let coordinates: Vec<(Column, &[f64])> = axes.iter().cloned().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
+    write_grid(&file, &path, &coordinates)?;
+    // Every parameter not swept, as the first cell was built with it.
+    let fixed = new_group(&file, "fixed").map_err(|e| H5Error::Hdf5 { path: path.clone(), message: e.to_string() })?;
+    let first = grid.kick(0).map_err(|e| H5Error::Layout { path: path.clone(), message: e.to_string() })?;
+    for (def, value) in first.parameter_values() {
+        if grid.axes.iter().any(|a| a.parameter.name == def.name) {
+            continue;
+        }
+        write_column(&fixed, &path, &Column::new(def.name, def.unit), &value.numbers())?;
+    }
+    attributes(&file)?;
+
+    // The kick, and with `[flight]` its flight (in `flight_columns` order).
+    let solve = |i: u64| -> (Result<Outcome3d, Kick3dError>, Option<FlightRow>) {
+        let kick = grid.kick(i);
+        let outcome = kick.as_ref().map_err(Clone::clone).and_then(|k| experiment.solver.solve(k));
+        let flight = experiment.flight.as_ref().map(|rest| match (&kick, &outcome) {
+            (Ok(k), Ok(o)) => crate::flight::after_3d(k, o, rest)
+                .map(|run| crate::flight::flight_values(&run.outcome, rest.distance.is_some())),
+            (Err(e), _) | (_, Err(e)) => Err(format!("no flight: the kick failed: {e}")),
+        });
+        (outcome, flight)
+    };
+    let mut start = part.rows.start;
+    let mut outcomes = Vec::with_capacity(CHUNK_ROWS);
+    while start < part.rows.end {
+        let end = (start + CHUNK_ROWS as u64).min(part.rows.end);
+        (start as usize..end as usize).into_par_iter().map(|i| solve(i as u64)).collect_into_vec(&mut outcomes);
+        for (i, outcome) in (start..end).zip(&outcomes) {
+            writer.push_parameters(&grid.coordinates(i))?;
+            match &outcome.0 {
+                Ok(o) => writer.push_outcome(0, Ok(&o.observable_values()))?,
+                Err(e) => writer.push_outcome(0, Err(&e.to_string()))?,
+            }
+            match &outcome.1 {
+                Some(Ok(values)) => writer.push_outcome(1, Ok(values))?,
+                Some(Err(e)) => writer.push_outcome(1, Err(e))?,
+                None => {}
+            }
+        }
+        start = end;
+    }
+    let names = sets.iter().map(|s| s.solver.clone());
+    let failures = names.zip(writer.failure_counts()).collect();
+    let path = writer.finish()?;
+    Ok(RunSummary { path, scenarios: rows, failures })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::experiment::{parse_any, AnyExperiment};
+    use crate::h5::{read_grid_shape, SweepData};
+    use kick_3d::{Accurate3d, KickSpec};
+    use kick_core::parameters::{SetParameter, Value};
+    use std::path::Path;
+
+    /// A 2-axis grid over a 1D and a 3D parameter: shape kept, fixed
+    /// parameters stored, each cell equal to a kick built by name and solved alone.
+    #[test]
+    fn a_two_axis_3d_grid_keeps_its_shape_and_equals_single_kicks() {
+        let text = "description = \"t\"\n[base]\nfoot_mass = 2.0\n[kick3d]\nfriction = 0.7\n\
+                    [[sweep]]\nparameter = \"foot_speed\"\nvalues = [18.0, 24.0]\n\
+                    [[sweep]]\nparameter = \"offset\"\nlinear = { from = 0.0, to = 0.06, count = 3 }\n";
+        let AnyExperiment::ThreeD(e) = parse_any(Path::new("grid.toml"), text).unwrap() else { panic!("read as 1D") };
+        let dir = std::env::temp_dir().join(format!("kick-grid3d-{}", std::process::id()));
+        let summary = super::run(&e, &dir).unwrap();
+        let data = SweepData::read(&summary.path).unwrap();
+        let file = hdf5::File::open(&summary.path).unwrap();
+        assert_eq!(read_grid_shape(&file), Some(vec![2, 3]));
+        assert_eq!(file.dataset("fixed/friction").unwrap().read_raw::<f64>().unwrap(), vec![0.7]);
+        assert_eq!(file.dataset("fixed/foot_mass").unwrap().read_raw::<f64>().unwrap(), vec![2.0]);
+        assert_eq!(file.dataset("fixed/foot_half_extents").unwrap().read_raw::<f64>().unwrap().len(), 3);
+        assert!(!file.link_exists("fixed/offset"));
+        let set = &data.sets[0];
+        let mut row = 0;
+        for speed in [18.0, 24.0] {
+            for offset in [0.0, 0.03, 0.06] {
+                let mut spec = KickSpec::default();
+                for (name, v) in [("foot_mass", 2.0), ("friction", 0.7), ("foot_speed", speed), ("offset", offset)] {
+                    spec.set_named(name, Value::Number(v)).unwrap();
+                }
+                let o = Accurate3d::default().solve(&spec.build().unwrap()).unwrap();
+                assert_eq!(data.parameters[0].1[row], speed);
+                assert_eq!(data.parameters[1].1[row], offset);
+                for (k, (name, _)) in kick_3d::OBSERVABLES_3D.iter().enumerate() {
+                    assert_eq!(set.column(name).unwrap()[row], o.observable_values()[k], "{name} at row {row}");
+                }
+                row += 1;
+            }
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn bad_3d_keys_are_refused_with_their_line() {
+        let e = parse_any(Path::new("x.toml"), "level = \"3d\"\n[kick3d]\nfriction = 0.5\nofset = 0.02\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (4, "ofset"), "{e}");
+        let e = parse_any(Path::new("x.toml"), "[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.2]\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (3, "sweep.offset"), "{e}");
+        let e = parse_any(Path::new("x.toml"), "[kick3d]\noffset = 0.5\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (2, "kick3d.offset"), "{e}");
+    }
+}

@@ -1,0 +1,32 @@
+//! kick-study runs kick's studies: one contact ([`simulate`]), the flight
+//! after a kick ([`flight`]), experiment files and their grids
+//! ([`experiment`]), random sweeps ([`sample`]), shards as row ranges
+//! ([`shard`]), the bounds on a run ([`limits`]), Table 2 side by side
+//! ([`table2`]) and the cross-model checks ([`checks`]). Each command returns
+//! a value with a text and a JSON form ([`Printable`]).
+//!
+//! Depends on the model crates (kick-core, kick-compliant, kick-restitution,
+//! kick-3d, kick-flight, kick-checks) and on no file format and no plotting
+//! library: no hdf5, no plotters. Rows leave through sinks ([`history::HistorySink`])
+//! that kick-store implements for files and kick-py keeps in memory.
+//!
+//! - [`experiment`]: `experiments/*.toml` parsed and validated (errors name file, line and key).
+//! - [`columns`]: named columns with units, outcome sets, the compression a file asks for.
+//! - [`history`]: what a time history samples and the sink its rows stream into.
+//! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
+
+pub mod checks;
+pub mod columns;
+pub mod experiment;
+pub mod flight;
+pub mod history;
+pub mod limits;
+pub mod printable;
+pub mod sample;
+pub mod shard;
+pub mod simulate;
+pub mod table2;
+
+pub use experiment::{Experiment, ExperimentError, Output, Scenarios};
+pub use limits::set_threads;
+pub use printable::{json, Printable};
