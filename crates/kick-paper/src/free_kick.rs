@@ -46,8 +46,8 @@ pub const TRAJECTORY_FRICTIONS: [f64; 2] = [0.5, f64::INFINITY];
 pub const TRAJECTORY_SAMPLES: usize = 301;
 /// The goal line from the ball, m (the 25 m free kick).
 pub const GOAL_DISTANCE: f64 = 25.0;
-/// The wall, m (Law 13: 9.15 m).
-pub const WALL_DISTANCE: f64 = 9.15;
+/// The wall, m (Law 13: 9.15 m), defined once in kick-flight.
+pub use kick_flight::models::WALL_DISTANCE;
 /// Height of the wall drawn (players jumping), m.
 pub const WALL_HEIGHT: f64 = 1.8;
 /// Half the width of the wall drawn in the top view, m.
