@@ -88,7 +88,7 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     }
     let mut written: Vec<(PathBuf, &PathBuf)> = Vec::new();
     for file in &files {
-        let run = crate::run::run_file(file, &args.out)?;
+        let run = crate::shard::run_file(file, &args.out, None)?;
         say(log, &run.text());
         let path = run.summary.path;
         // Two files naming the same experiment would overwrite each other.
@@ -123,7 +123,7 @@ pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reprod
     three_d.sort();
     for file in &three_d {
         say(log, &format!("\n# kick run {} --out {out}\n", file.display()));
-        let run = crate::run::run_file(file, &args.out)?;
+        let run = crate::shard::run_file(file, &args.out, None)?;
         say(log, &run.text());
         let drawn = crate::three_d::figures(&run.summary.path, &figures).map_err(|e| e.to_string())?;
         say(log, &format!("figures: {} files in {}\n", drawn.len(), figures.display()));

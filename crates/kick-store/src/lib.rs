@@ -31,4 +31,5 @@ pub(crate) use kick_study::{Experiment, Output, Printable, Scenarios};
 
 pub use h5::{Column, OutcomeSet, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};
 pub use provenance::Provenance;
-pub use run::{run, run_file, RunReport, RunSummary};
+pub use run::{run, RunReport, RunSummary};
+pub use shard::run_file;

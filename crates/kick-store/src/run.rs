@@ -432,24 +432,12 @@ fn finish(experiment: &Experiment, writer: SweepWriter, bar: &ProgressBar) -> Re
     Ok(RunSummary { path, scenarios, failures })
 }
 
-/// What [`run_file`] did: the file given, the result file and the counts.
+/// What `kick_store::shard::run_file` did: the file given, the result file and the counts.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct RunReport {
     pub file: PathBuf,
     pub summary: RunSummary,
     pub seconds: f64,
-}
-
-/// Load and run one experiment file of either level into `out/NAME.h5`.
-pub fn run_file(file: &Path, out: &Path) -> Result<RunReport, String> {
-    let experiment = crate::experiment::load_any(file).map_err(|e| e.to_string())?;
-    let started = std::time::Instant::now();
-    let summary = match &experiment {
-        crate::experiment::AnyExperiment::OneD(e) => run(e, out, true),
-        crate::experiment::AnyExperiment::ThreeD(e) => crate::three_d::run(e, out),
-    }
-    .map_err(|e| e.to_string())?;
-    Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
 }
 
 impl crate::Printable for RunReport {

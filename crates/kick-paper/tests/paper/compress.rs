@@ -154,7 +154,7 @@ fn the_compress_key_of_experiment_files_filters_their_result_files() {
     ] {
         let file = dir.join(format!("{name}.toml"));
         std::fs::write(&file, format!("{key}\n{text}")).unwrap();
-        let out = kick_store::run::run_file(&file, &dir.join("out")).unwrap().summary.path;
+        let out = kick_store::shard::run_file(&file, &dir.join("out"), None).unwrap().summary.path;
         match level {
             Some(level) => assert!(assert_filtered(&out, &["parameters", "outcomes"], level) > 1, "{key}"),
             None => assert!(filters(&out, "/").iter().all(|(_, f)| f.is_empty()), "{key}"),

@@ -122,7 +122,7 @@ fn free_kicks_and_the_generated_3d_and_flight_pages() {
     let dir = std::env::var("KICK_FIGURES_DIR").map(std::path::PathBuf::from).unwrap_or_else(|_| scratch("pages"));
     let experiments = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../experiments/3d");
     for name in ["offset_friction", "offset", "friction", "approach_angle"] {
-        let run = kick_store::run::run_file(&experiments.join(format!("{name}.toml")), &dir).unwrap();
+        let run = kick_store::shard::run_file(&experiments.join(format!("{name}.toml")), &dir, None).unwrap();
         kick_paper::three_d::figures(&run.summary.path, &dir.join("figures")).unwrap();
     }
     let written = kick_paper::pages_3d::write_all(&dir, &dir.join("paper"), &mut std::io::sink()).unwrap();

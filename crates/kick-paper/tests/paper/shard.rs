@@ -235,7 +235,7 @@ fn a_3d_experiment_in_three_shards_merges_to_the_unsharded_run() {
     let dir = scratch("grid3d");
     let file = dir.join("g3.toml");
     std::fs::write(&file, GRID3D).unwrap();
-    let whole = kick_store::run::run_file(&file, &dir.join("whole")).unwrap().summary.path;
+    let whole = kick_store::shard::run_file(&file, &dir.join("whole"), None).unwrap().summary.path;
     let parts: Vec<PathBuf> = ["2/3", "0/3", "1/3"]
         .iter()
         .map(|given| kick_store::shard::run_file(&file, &dir.join("parts"), Some(given)).unwrap().summary.path)
