@@ -23,3 +23,4 @@ mod flight_grid;
 mod settings;
 mod text;
 mod compress;
+mod identify;
