@@ -26,28 +26,20 @@ use crate::figures::{color, save_grid, FigureError, Panel, Series};
 use crate::flight::{flight_columns, flight_values};
 use crate::h5::{write_grid, write_str_attr, Column, H5Error, OutcomeSet, Setting, SweepData, SweepWriter};
 use crate::provenance::Provenance;
-use kick_3d::{Accurate3d, Kick3d, KickSpec, Outcome3d};
-use kick_core::parameters::{SetParameter, Value};
-use kick_flight::{history, solve, Flight, FlightOutcome, FlightSpec, Sampling};
+use kick_3d::Kick3d;
+use kick_flight::{history, solve, FlightOutcome, Sampling};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::path::{Path, PathBuf};
 
-/// Depth of the contact below the ball's centre, h, m.
-pub const VERTICAL_OFFSET: f64 = 0.03;
-/// Lateral offsets of the grid, m.
-pub const LATERAL_OFFSETS: [f64; 10] = [0.0, 0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09];
-/// Coulomb coefficients of the grid (∞: never slips).
-pub const FRICTIONS: [f64; 4] = [0.2, 0.5, 1.0, f64::INFINITY];
+/// The physics (the grid, the lateral kick turned into an (e, h) kick) is kick-study's.
+pub use kick_study::free_kick::*;
+
 /// Rows whose trajectories are kept: these offsets...
 pub const TRAJECTORY_OFFSETS: [f64; 4] = [0.0, 0.02, 0.04, 0.06];
 /// ...at these frictions.
 pub const TRAJECTORY_FRICTIONS: [f64; 2] = [0.5, f64::INFINITY];
 /// Samples per trajectory.
 pub const TRAJECTORY_SAMPLES: usize = 301;
-/// The goal line from the ball, m (the 25 m free kick).
-pub const GOAL_DISTANCE: f64 = 25.0;
-/// The wall, m (Law 13: 9.15 m), defined once in kick-flight.
-pub use kick_flight::models::WALL_DISTANCE;
 /// Height of the wall drawn (players jumping), m.
 pub const WALL_HEIGHT: f64 = 1.8;
 /// Half the width of the wall drawn in the top view, m.
@@ -56,22 +48,6 @@ pub const WALL_HALF_WIDTH: f64 = 1.0;
 pub const GOAL_WIDTH: f64 = 7.32;
 pub const GOAL_HEIGHT: f64 = 2.44;
 
-/// Columns of the `launch` set: the free kick's launch (rotated) and the contact.
-pub const LAUNCH_COLUMNS: [(&str, &str); 12] = [
-    ("launch_velocity_x", "m/s"),
-    ("launch_velocity_y", "m/s"),
-    ("launch_velocity_z", "m/s"),
-    ("spin_x", "rad/s"),
-    ("spin_y", "rad/s"),
-    ("spin_z", "rad/s"),
-    ("speed", "m/s"),
-    ("spin_rev_per_s", "rev/s"),
-    ("launch_angle", "deg"),
-    ("launch_azimuth", "deg"),
-    ("contact_time", "s"),
-    ("slip_time", "s"),
-];
-
 /// Columns of a stored trajectory.
 pub const TRAJECTORY_COLUMNS: [(&str, &str); 7] =
     [("time", "s"), ("x", "m"), ("y", "m"), ("z", "m"), ("velocity_x", "m/s"), ("velocity_y", "m/s"), ("velocity_z", "m/s")];
@@ -79,90 +55,10 @@ pub const TRAJECTORY_COLUMNS: [(&str, &str); 7] =
 /// The file's name under `OUT/flight/`.
 pub const FILE: &str = "free_kick.h5";
 
-/// The lateral kick (offset √(e² + h²)) at friction `friction`, solved.
-pub fn lateral_kick(lateral_offset: f64, friction: f64) -> Result<(Kick3d, Outcome3d), String> {
-    let mut spec = KickSpec::default();
-    let offset = lateral_offset.hypot(VERTICAL_OFFSET);
-    for (name, v) in [("offset", offset), ("friction", friction)] {
-        spec.set_named(name, Value::Number(v)).map_err(|e| e.to_string())?;
-    }
-    let kick = spec.build().map_err(|e| e.to_string())?;
-    let outcome = Accurate3d::default().solve(&kick).map_err(|e| e.to_string())?;
-    Ok((kick, outcome))
-}
-
-/// `v` turned about x by −β, β = atan2(h, e): the lateral kick's +y side
-/// goes to (0, cos β, −sin β), below the centre, so a ball sent toward −y
-/// rises (see the module docs).
-pub fn roll(v: [f64; 3], lateral_offset: f64) -> [f64; 3] {
-    let r = lateral_offset.hypot(VERTICAL_OFFSET);
-    let (c, s) = (lateral_offset / r, VERTICAL_OFFSET / r);
-    // Rotation about x by −β: y' = y cos β + z sin β, z' = −y sin β + z cos β.
-    [v[0], v[1] * c + v[2] * s, -v[1] * s + v[2] * c]
-}
-
-/// One free kick: the kick, its rotated launch and the flight spec after it.
-pub struct FreeKick {
-    pub kick: Kick3d,
-    pub outcome: Outcome3d,
-    pub launch_velocity: [f64; 3],
-    pub spin: [f64; 3],
-}
-
-impl FreeKick {
-    pub fn new(lateral_offset: f64, friction: f64) -> Result<FreeKick, String> {
-        let (kick, outcome) = lateral_kick(lateral_offset, friction)?;
-        Ok(FreeKick {
-            launch_velocity: roll(outcome.launch_velocity, lateral_offset),
-            spin: roll(outcome.spin, lateral_offset),
-            kick,
-            outcome,
-        })
-    }
-
-    /// The flight after it, crossing x = `distance` (kick-flight's defaults:
-    /// drag crisis, saturating lift, no spin decay, sea-level air; the kick's
-    /// ball and g).
-    pub fn flight(&self, distance: f64) -> Result<Flight, String> {
-        let rest = FlightSpec {
-            ball_mass: Some(self.kick.base.ball_mass()),
-            ball_radius: Some(self.kick.ball_radius),
-            gravity: Some(kick_core::GRAVITY),
-            distance: Some(distance),
-            ..FlightSpec::default()
-        };
-        Flight::from_launch(self.launch_velocity, self.spin, &rest).map_err(crate::flight::flight_error)
-    }
-
-    /// [`LAUNCH_COLUMNS`] values.
-    pub fn launch_values(&self) -> Vec<f64> {
-        let [vx, vy, vz] = self.launch_velocity;
-        let [wx, wy, wz] = self.spin;
-        vec![
-            vx,
-            vy,
-            vz,
-            wx,
-            wy,
-            wz,
-            (vx * vx + vy * vy + vz * vz).sqrt(),
-            (wx * wx + wy * wy + wz * wz).sqrt() / std::f64::consts::TAU,
-            vz.atan2(vx.hypot(vy)).to_degrees(),
-            vy.atan2(vx).to_degrees(),
-            self.outcome.contact_time,
-            self.outcome.slip_time,
-        ]
-    }
-}
-
 fn columns(list: &[(&str, &str)]) -> Vec<Column> {
     list.iter().map(|(n, u)| Column::new(n, u)).collect()
 }
 
-/// The rows of the grid: (lateral offset, friction), friction fastest.
-pub fn grid() -> Vec<(f64, f64)> {
-    LATERAL_OFFSETS.iter().flat_map(|&e| FRICTIONS.iter().map(move |&mu| (e, mu))).collect()
-}
 
 /// Solve the grid and write `out/flight/free_kick.h5`.
 pub fn write(out: &Path) -> Result<PathBuf, String> {

@@ -1,15 +1,15 @@
 //! The generated pages of the 3D kick (`paper/3d.md`) and of the flight
 //! (`paper/flight.md`), written by `kick reproduce` from the result files
 //! (`OUT/3d_*.h5`, `OUT/flight/free_kick.h5`); every number on them is read
-//! from those files or computed here at generation time.
+//! from those files or computed by kick_study::numbers_3d at generation
+//! time (this module only writes).
 
 use crate::free_kick;
 use crate::h5::SweepData;
 use crate::links::relative;
 use crate::three_d::{curves, value_label};
-use kick_3d::{Accurate3d, Kick3d, KickSpec, Solver3d};
-use kick_core::parameters::{SetParameter, Value};
-use kick_core::Solver;
+use kick_3d::Kick3d;
+use kick_study::numbers_3d;
 use std::fmt::Write as _;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -38,57 +38,12 @@ fn sig(x: f64, digits: usize) -> String {
     format!("{x:.decimals$}")
 }
 
-/// The kick the force-history figure shows: offset 5 cm, μ 0.5, baseline otherwise.
-fn history_kick() -> Result<Kick3d, String> {
-    let mut spec = KickSpec::default();
-    spec.set_named("offset", Value::Number(0.05)).map_err(err)?;
-    spec.set_named("friction", Value::Number(0.5)).map_err(err)?;
-    spec.build().map_err(err)
-}
-
-/// Largest relative error of the accurate path against the tightened
-/// full-state reference over the first `kicks` kicks of the box, per
-/// observable (kick_3d::precision::Errors3d order).
-fn box_errors(kicks: u64) -> Result<[f64; 8], String> {
-    let sample = kick_3d::models::OffCenterBox::new(kick_3d::models::BENCH_SEED);
-    let mut worst = [0.0f64; 8];
-    for i in 0..kicks {
-        let kick = sample.kick(i).map_err(err)?;
-        let solved = Accurate3d::default().solve(&kick).map_err(err)?;
-        let reference = kick_3d::precision::reference().solve(&kick).map_err(err)?;
-        let e = kick_3d::precision::Errors3d::of(&kick, &solved, &reference);
-        for (w, v) in worst.iter_mut().zip(e.values()) {
-            *w = w.max(v);
-        }
-    }
-    Ok(worst)
-}
-
-/// Relative gap between the accurate 3D path on a central frictionless
-/// kick and the 1D accurate solver on its scenario (exit speed).
-fn central_gap() -> Result<f64, String> {
-    let mut spec = KickSpec::default();
-    spec.set_named("friction", Value::Number(0.0)).map_err(err)?;
-    let kick = spec.build().map_err(err)?;
-    let three = Accurate3d::default().solve(&kick).map_err(err)?;
-    let one = kick_compliant::SolverChoice::from_name("accurate", 5e-6).map_err(err)?.solve(&kick.base).map_err(err)?;
-    Ok(((three.speed - one.v_ball_out) / one.v_ball_out).abs())
-}
-
-/// The scene path's launch-velocity error against `accurate` on the kick of
-/// [`history_kick`] at two steps, and the observed order, in words.
+/// The scene path's launch-velocity error against `accurate` on the
+/// force-history kick at two steps, and the observed order, in words.
 fn scene_errors() -> Result<String, String> {
-    let kick = history_kick()?;
-    let exact = Accurate3d::default().solve(&kick).map_err(err)?;
-    let mut errors = Vec::new();
-    for dt in [1e-5, 5e-6] {
-        let Ok(solver) = Solver3d::from_name("rapier", dt) else {
-            return Ok("first order in the step (not built here: cargo feature `rapier` off)".into());
-        };
-        let o = solver.solve(&kick).map_err(err)?;
-        let d: f64 = (0..3).map(|i| (o.launch_velocity[i] - exact.launch_velocity[i]).powi(2)).sum::<f64>().sqrt();
-        errors.push(d / exact.speed);
-    }
+    let Some(errors) = numbers_3d::scene_errors()? else {
+        return Ok("first order in the step (not built here: cargo feature `rapier` off)".into());
+    };
     Ok(format!(
         "on the kick at e = 5 cm, μ = 0.5: launch velocity off by {:.1e} relative at a step of 1e-5 s and {:.1e} at 5e-6 s, \
          observed order {:.2}",
@@ -145,7 +100,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     let (kt, ct) = (k.tangential_stiffness, k.tangential_damping);
     // Tangent stiffness of the normal law at the 1D baseline's δ_max, and
     // the tangential damping ratio on the gripping contact's mass m_t.
-    let one = kick_compliant::SolverChoice::from_name("accurate", 5e-6).map_err(err)?.solve(&b).map_err(err)?;
+    let one = numbers_3d::baseline_1d(&k)?;
     let (stiffness, exponent) = (b.get(kick_core::Parameter::Stiffness), b.get(kick_core::Parameter::Exponent));
     let tangent = stiffness * exponent * one.max_compression.powf(exponent - 1.0);
     let foot_mass = b.effective_foot_mass();
@@ -203,8 +158,8 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     );
 
     // Paths and their accuracy, computed now.
-    let worst = box_errors(ACCURACY_KICKS)?;
-    let gap = central_gap()?;
+    let worst = numbers_3d::box_errors(ACCURACY_KICKS)?;
+    let gap = numbers_3d::central_gap()?;
     let scene = scene_errors()?;
     let names = ["launch velocity", "spin", "contact time", "peak normal force", "its time", "peak tangential force", "its time", "max compression"];
     let listed: Vec<String> = names.iter().zip(worst).map(|(n, e)| format!("{n} {:.1e}", e)).collect();
@@ -375,8 +330,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     }
 
     // Force history of one kick, when the figure is there.
-    let kick = history_kick()?;
-    let o = Solver3d::Auto.solve(&kick).map_err(err)?;
+    let o = numbers_3d::history_outcome()?;
     let _ = writeln!(w, "## Forces of one off-center kick: grip and slip\n");
     if figures.join(FORCE_HISTORY_FIGURE).exists() {
         let _ = writeln!(w, "![force history]({fig}/{FORCE_HISTORY_FIGURE})\n");
