@@ -151,8 +151,22 @@ pub const MAX_LOCATE_ITERATIONS: usize = 200;
 pub const MAX_STEPS_PER_PHASE: u32 = 100_000;
 /// Most phases (compression/restitution alternations under a drive) per run.
 pub const MAX_PHASES: usize = 10_000;
-/// Most fixed RK4 steps in one run.
+/// Most fixed steps in one run (RK4 here and in `seed-rk4`, the 3D rapier
+/// scene's steps): a fixed step's run time is ∝ 1/dt, so a step that needs
+/// more is refused before integrating ([`fixed_steps`]).
 pub const MAX_FIXED_STEPS: f64 = 2.0e8;
+
+/// The number of fixed steps of `step` s that cover `horizon` s, or
+/// [`KickError::TooManySteps`] (naming dt and the count) beyond
+/// [`MAX_FIXED_STEPS`], checked before any step is taken.
+pub fn fixed_steps(horizon: f64, step: f64) -> Result<u64, KickError> {
+    let steps = (horizon / step).ceil();
+    if steps <= MAX_FIXED_STEPS {
+        Ok(steps.max(0.0) as u64)
+    } else {
+        Err(KickError::TooManySteps { step, steps, horizon, limit: MAX_FIXED_STEPS })
+    }
+}
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Event {
@@ -385,13 +399,8 @@ fn integrate<F: System<f64, SVector<f64, N>>, const N: usize>(
         Method::Rk4 { step } => {
             // The caller passes the scaled step as `first_step`.
             let h = first_step;
-            if !((tau1 - tau0) / h <= MAX_FIXED_STEPS) {
-                return Err(KickError::InvalidParameter {
-                    name: "dt",
-                    value: step,
-                    requirement: "large enough that the contact horizon fits in 2e8 steps",
-                });
-            }
+            // The same ratio as the unscaled horizon over dt.
+            fixed_steps((tau1 - tau0) * (step / h), step)?;
             let mut stepper = Rk4::new(system, tau0, y0, tau1, h);
             let stats = stepper.integrate().map_err(|e| integration_error(tau0, time_unit, e))?;
             *evaluations += u64::from(stats.num_eval);
