@@ -56,12 +56,14 @@ pub enum KickError {
         short(*.time)
     )]
     StepTooInaccurate { step: f64, relative_residual: f64, bound: f64, time: f64 },
-    /// The collecting form of a history would hold more samples than allowed.
+    /// A history would hold more samples than allowed
+    /// ([`crate::MAX_HISTORY_SAMPLES`]), counted before any is made.
     #[error(
-        "history too long: it needs {needed} samples, more than the limit of {limit}; use a \
-         longer interval or fewer samples, or stream the history"
+        "history too long: it needs {} samples, more than the limit of {limit}; use a \
+         longer interval or fewer samples",
+        short(*.needed)
     )]
-    HistoryTooLong { needed: u64, limit: u64 },
+    HistoryTooLong { needed: f64, limit: u64 },
     /// Valid parameters whose contact leaves double precision's working
     /// range ([`crate::scenario::SCALE_RANGE`]).
     #[error(

@@ -58,7 +58,7 @@ pub const MAX_SCENARIOS: u64 = 100_000_000;
 /// Most scenarios whose time histories one file may hold.
 pub const MAX_HISTORY_SCENARIOS: u64 = 1000;
 /// Most samples per recorded history (interval versus contact horizon).
-pub const MAX_HISTORY_SAMPLES: f64 = 1e6;
+pub const MAX_HISTORY_SAMPLES: f64 = kick_core::MAX_HISTORY_SAMPLES as f64;
 
 /// A problem in an experiment file, located.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

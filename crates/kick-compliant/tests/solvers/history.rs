@@ -236,12 +236,12 @@ fn the_collecting_form_refuses_past_its_limit_with_the_size_needed() {
     let (_, full) = solver.solve_recorded(&s, 1e-6).unwrap();
     let needed = full.samples.len();
     match solver.solve_sampled(&s, Spacing::Interval(1e-6), needed - 1) {
-        Err(KickError::HistoryTooLong { needed: n, limit }) => assert_eq!((n, limit), (needed as u64, needed as u64 - 1)),
+        Err(KickError::HistoryTooLong { needed: n, limit }) => assert_eq!((n, limit), (needed as f64, needed as u64 - 1)),
         other => panic!("{other:?}"),
     }
     assert_eq!(solver.solve_sampled(&s, Spacing::Interval(1e-6), needed).unwrap().1, full);
     let error = solver.solve_sampled(&s, Spacing::Count(1001), 1000).unwrap_err();
-    assert_eq!(error, KickError::HistoryTooLong { needed: 1001, limit: 1000 });
+    assert_eq!(error, KickError::HistoryTooLong { needed: 1001.0, limit: 1000 });
     assert!(error.to_string().contains("1001"), "{error}");
 }
 
