@@ -415,6 +415,7 @@ impl Accurate3d {
                 _ => (x1, y1, *stepper.end_derivative(), c1),
             };
             let t_end = system.time(x_end, &y_end);
+            outcome::within_geometry(kick, c_end.compression, t_end)?;
             let rates_end = if x_end == x1 { rates_1 } else { rates(&system, x_end, &y_end, &dy_end, dx) };
             for k in 0..2 {
                 if point.rates[k] > 0.0 && rates_end[k] <= 0.0 {

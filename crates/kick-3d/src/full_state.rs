@@ -436,6 +436,7 @@ impl FullState3d {
             t = t_event;
             y = y_event;
             let c = dynamics.contact(&y);
+            outcome::within_geometry(kick, c.compression, t)?;
             // The event point ends one phase and starts the next: a sample of both.
             for (peak, w) in peaks.iter_mut().zip(WATCHED) {
                 peak.observe(w.value(&dynamics, &y), t);

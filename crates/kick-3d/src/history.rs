@@ -199,7 +199,7 @@ impl Accurate3d {
     pub fn solve_sampled(&self, kick: &Kick3d, spacing: Spacing, limit: usize) -> Result<(crate::Outcome3d, Vec<Sample3d>), Kick3dError> {
         if let Spacing::Count(n) = spacing.validate()? {
             if n > limit {
-                return Err(kick_core::KickError::HistoryTooLong { needed: n as u64, limit: limit as u64 }.into());
+                return Err(kick_core::KickError::HistoryTooLong { needed: n as f64, limit: limit as u64 }.into());
             }
         }
         let mut samples = Vec::new();
@@ -212,8 +212,40 @@ impl Accurate3d {
             }
         })?;
         if total > limit as u64 {
-            return Err(kick_core::KickError::HistoryTooLong { needed: total, limit: limit as u64 }.into());
+            return Err(kick_core::KickError::HistoryTooLong { needed: total as f64, limit: limit as u64 }.into());
         }
         Ok((outcome, samples))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{Accurate3d, Kick3d, Kick3dError};
+    use kick_core::{KickError, Spacing, MAX_HISTORY_SAMPLES};
+    use std::ops::ControlFlow;
+
+    /// A 3D history's rows are counted before the first is made (t_c / Δ + 1
+    /// from the kick solved alone) and refused beyond MAX_HISTORY_SAMPLES,
+    /// the sink never called: `simulate3d --interval 1e-300` used to spin.
+    #[test]
+    fn a_3d_history_longer_than_the_limit_is_refused_before_its_first_row() {
+        let kick = Kick3d::baseline();
+        let solver = Accurate3d::default();
+        let contact_time = solver.solve(&kick).unwrap().contact_time;
+        for interval in [contact_time / (2.0 * MAX_HISTORY_SAMPLES as f64), 1e-300] {
+            let mut rows = 0u64;
+            let result = solver.solve_streamed(&kick, Spacing::Interval(interval), &mut |_| {
+                rows += 1;
+                ControlFlow::Continue(())
+            });
+            match result {
+                Err(Kick3dError::Core(KickError::HistoryTooLong { needed, .. })) => {
+                    let expected = (contact_time / interval).ceil() + 1.0;
+                    assert!((needed - expected).abs() <= 1.0 + 1e-12 * expected, "{interval}: {needed} {expected}");
+                }
+                other => panic!("{interval}: {other:?}"),
+            }
+            assert_eq!(rows, 0, "{interval}");
+        }
     }
 }

@@ -36,6 +36,7 @@ pub fn solve_along_normal(kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
     }
     let scenario = kick.normal_scenario()?;
     let o = Accurate::default().solve(&scenario)?;
+    crate::outcome::within_geometry(kick, o.max_compression, o.max_compression_time)?;
     let n = kick.initial_normal();
     let start = kick.initial_state();
     let tangential = |v: parry3d_f64::math::Vec3| v - n * v.dot(n);

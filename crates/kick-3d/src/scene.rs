@@ -104,7 +104,8 @@ impl Scene {
         }
 
         let horizon = kick.contact_horizon()?;
-        let max_steps = (horizon / self.step).ceil().min(1e9) as u64;
+        // A step budget refused up front: run time is ∝ 1/dt.
+        let max_steps = kick_compliant::events::fixed_steps(horizon, self.step)?;
         let mut y = start;
         let first = dynamics.contact(&y);
         let mut peak_normal = Peak { value: first.normal_force, time: 0.0 };
@@ -132,6 +133,7 @@ impl Scene {
                 return Ok(out);
             }
             if c.compression > max_compression.0 {
+                outcome::within_geometry(kick, c.compression, t)?;
                 max_compression = (c.compression, t);
             }
             peak_normal.observe(c.normal_force, t);
@@ -237,4 +239,31 @@ pub fn convergence(kick: &Kick3d, steps: &[f64]) -> Result<(Vec<ConvergenceRow>,
         });
     }
     Ok((rows, accurate_seconds))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kick_compliant::events::MAX_FIXED_STEPS;
+    use kick_core::KickError;
+
+    /// A step whose run would exceed the fixed-step budget (time ∝ 1/dt) is
+    /// refused before the first step, naming dt and the count: 1e-10 s over
+    /// the baseline's horizon, and 1e-300 s, which used to end in "non-finite
+    /// contact time at t = inf s". The count is the horizon over the step.
+    #[test]
+    fn a_step_beyond_the_budget_is_refused_up_front() {
+        let kick = Kick3d::baseline();
+        let horizon = kick.contact_horizon().unwrap();
+        for dt in [1e-300, 1e-10, horizon / (2.0 * MAX_FIXED_STEPS)] {
+            match Scene::new(dt).unwrap().solve(&kick) {
+                Err(Kick3dError::Core(e @ KickError::TooManySteps { .. })) => {
+                    let KickError::TooManySteps { step, steps, limit, .. } = e else { unreachable!() };
+                    assert_eq!((step, steps, limit), (dt, (horizon / dt).ceil(), MAX_FIXED_STEPS));
+                    assert!(e.to_string().contains("dt = "), "{e}");
+                }
+                other => panic!("dt = {dt}: {other:?}"),
+            }
+        }
+    }
 }

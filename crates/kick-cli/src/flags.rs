@@ -129,17 +129,27 @@ fn parameter_arg(p: &'static ParameterDef, requires: Option<&'static str>) -> Ar
         Some(other) => arg.requires(other),
         None => arg,
     };
+    // Hyphen values: `-4,3,2` and `-inf` are values, not flags. A
+    // non-finite number the parameter does not admit (friction admits inf)
+    // is refused here, naming the flag; the rest is the spec's to validate.
+    let number = move |text: &str| -> Result<f64, String> {
+        let x: f64 = text.trim().parse().map_err(|_| format!("`{text}` is not a number"))?;
+        match x.is_finite() {
+            true => Ok(x),
+            false => p.check(x).map_err(|_| format!("{x} is not a finite number")),
+        }
+    };
     match p.shape {
         Shape::Scalar => arg
             .value_name(p.symbol)
-            .value_parser(clap::value_parser!(f64))
-            .allow_negative_numbers(true)
+            .value_parser(number)
+            .allow_hyphen_values(true)
             .action(ArgAction::Set),
         Shape::Vector3 => arg
             .value_name(format!("{0}x,{0}y,{0}z", p.symbol))
-            .value_parser(clap::value_parser!(f64))
+            .value_parser(number)
             .value_delimiter(',')
-            .allow_negative_numbers(true)
+            .allow_hyphen_values(true)
             .action(ArgAction::Append),
         Shape::Switch => arg.action(ArgAction::SetTrue),
     }
@@ -284,5 +294,21 @@ mod tests {
             }
         }
         assert!(parse::<FlightSpec>(&["--law", "flores"]).is_err());
+    }
+
+    /// A leading minus is a value (`--spin -4,3,2`, `--ball-speed -6`), and a
+    /// value outside the declared range (`-inf`) is refused naming the flag.
+    #[test]
+    fn negative_values_and_non_finite_values_name_the_flag() {
+        let flags = parse::<FlightSpec>(&["--spin", "-4,3,2", "--launch-velocity", "-25,0,8"]).unwrap();
+        let given: Vec<Value> = flags.given.iter().map(|(_, v)| *v).collect();
+        assert_eq!(given, [Value::Vector([-25.0, 0.0, 8.0]), Value::Vector([-4.0, 3.0, 2.0])]);
+        let flags = parse::<ScenarioSpec>(&["--ball-speed", "-6", "--foot-speed", "0"]).unwrap();
+        assert_eq!((flags.spec().ball_speed, flags.spec().foot_speed), (Some(-6.0), Some(0.0)));
+        for args in [["--ball-speed", "-inf"], ["--ball-speed", "nan"], ["--spin", "-inf,0,0"]] {
+            let error = if args[0] == "--spin" { parse::<FlightSpec>(&args).unwrap_err() } else { parse::<ScenarioSpec>(&args).unwrap_err() };
+            let text = error.to_string();
+            assert!(text.contains(args[0]) && text.contains("finite"), "{args:?}: {text}");
+        }
     }
 }

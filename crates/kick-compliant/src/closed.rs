@@ -42,7 +42,20 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
         let w = (2.0 * stored / mu).sqrt();
         (w, special::return_time(end.max_compression, w, exponent))
     } else {
-        let (released, _) = released_energy(scenario, &end);
+        let (released, condition) = released_energy(scenario, &end);
+        let terms = released.abs() * condition;
+        if !(released >= 0.0) && !crate::events::proves_trapped(-released, terms) {
+            // Within the rounding of its terms: neither outcome is proven.
+            return Err(KickError::NoSeparation {
+                time: end.max_compression_time,
+                reason: format!(
+                    "grazing: the energy released at maximum compression, {} J, is within the rounding of \
+                     the energies compared ({} J), so neither separation nor trapping is proven",
+                    kick_core::short(released),
+                    kick_core::short(terms)
+                ),
+            });
+        }
         if !(released >= 0.0) {
             return Err(KickError::Trapped {
                 time: end.max_compression_time,

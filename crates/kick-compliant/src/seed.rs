@@ -41,8 +41,6 @@ pub struct SeedRk4 {
     pub step: f64,
 }
 
-/// Most steps one seed run may take before it reports the step as too small.
-pub const MAX_SEED_STEPS: u64 = 200_000_000;
 
 impl Default for SeedRk4 {
     fn default() -> Self {
@@ -72,15 +70,7 @@ impl SeedRk4 {
         let ode = ContactOde::new(scenario, law, Branch::Literal);
         stability::check_rk4_step(scenario, &law, self.step)?;
         let horizon = scenario.contact_horizon();
-        let max_steps = (horizon / self.step).ceil();
-        if max_steps > MAX_SEED_STEPS as f64 {
-            return Err(KickError::InvalidParameter {
-                name: "dt",
-                value: self.step,
-                requirement: "large enough that the contact horizon fits in 2e8 steps",
-            });
-        }
-        let max_steps = max_steps as u64;
+        let max_steps = crate::events::fixed_steps(horizon, self.step)?;
         let h = self.step;
         let mut y = ode::initial_state(scenario);
         let mut extremes = Extremes::new(ode.force(&y));

@@ -552,7 +552,10 @@ fn compress(s: &Scaled, tolerance: f64) -> Result<Result<ScaledCompression, f64>
         let step = TaylorStep::new(s, x, v, &mut work);
         powers += 1;
         // xⁿ at the step's start comes with the step.
-        if s.phi > 0.0 && s.energy(x, step.p[0], v) < 0.0 {
+        // Short of release by more than the rounding of its terms (the
+        // proof's margin, `events::TRAP_MARGIN`).
+        let potential = s.a * x * step.p[0] / (s.exponent + 1.0);
+        if s.phi > 0.0 && crate::events::proves_trapped(-s.energy(x, step.p[0], v), potential.max(s.phi * x)) {
             return Ok(Err(tau));
         }
         let h = step.step(tolerance);

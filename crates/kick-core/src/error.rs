@@ -56,12 +56,14 @@ pub enum KickError {
         short(*.time)
     )]
     StepTooInaccurate { step: f64, relative_residual: f64, bound: f64, time: f64 },
-    /// The collecting form of a history would hold more samples than allowed.
+    /// A history would hold more samples than allowed
+    /// ([`crate::MAX_HISTORY_SAMPLES`]), counted before any is made.
     #[error(
-        "history too long: it needs {needed} samples, more than the limit of {limit}; use a \
-         longer interval or fewer samples, or stream the history"
+        "history too long: it needs {} samples, more than the limit of {limit}; use a \
+         longer interval or fewer samples",
+        short(*.needed)
     )]
-    HistoryTooLong { needed: u64, limit: u64 },
+    HistoryTooLong { needed: f64, limit: u64 },
     /// Valid parameters whose contact leaves double precision's working
     /// range ([`crate::scenario::SCALE_RANGE`]).
     #[error(
@@ -82,6 +84,28 @@ pub enum KickError {
     Integration { time: f64, reason: String },
     #[error("non-finite {quantity} at t = {} s", short(*.time))]
     NonFinite { quantity: &'static str, time: f64 },
+    /// A fixed step that would need more steps than the budget to cover the
+    /// contact horizon: refused before integrating, as its run time is ∝ 1/dt.
+    #[error(
+        "step too small: dt = {} s needs {} steps to cover the contact horizon of {} s, more than \
+         the budget of {} steps; use a larger dt or an adaptive solver",
+        short(*.step),
+        short(*.steps),
+        short(*.horizon),
+        short(*.limit)
+    )]
+    TooManySteps { step: f64, steps: f64, horizon: f64, limit: f64 },
+    /// A compression beyond what the contact geometry allows: the bodies
+    /// would pass through each other, so the law (and the scene) no longer
+    /// describe a contact. An error, never an outcome.
+    #[error(
+        "compression beyond the geometry: δ = {} m at t = {} s exceeds {limit_name} = {} m, where {why}; \
+         the scene is outside the contact model (lower the speeds or the drive, or stiffen the ball)",
+        short(*.compression),
+        short(*.time),
+        short(*.limit)
+    )]
+    BeyondGeometry { compression: f64, time: f64, limit: f64, limit_name: &'static str, why: &'static str },
 }
 
 /// What became of a scenario: the status column of result files.
@@ -153,7 +177,9 @@ impl KickError {
             | KickError::HistoryTooLong { .. }
             | KickError::UnknownSolver { .. }
             | KickError::NotApplicable { .. }
-            | KickError::DoesNotApply { .. } => Status::Refused,
+            | KickError::DoesNotApply { .. }
+            | KickError::TooManySteps { .. }
+            | KickError::BeyondGeometry { .. } => Status::Refused,
         }
     }
 }

@@ -78,7 +78,7 @@ pub trait RecordingSolver: Solver {
     fn solve_sampled(&self, scenario: &Scenario, spacing: Spacing, limit: usize) -> Result<(Outcome, History), KickError> {
         if let Spacing::Count(n) = spacing.validate()? {
             if n > limit {
-                return Err(KickError::HistoryTooLong { needed: n as u64, limit: limit as u64 });
+                return Err(KickError::HistoryTooLong { needed: n as f64, limit: limit as u64 });
             }
         }
         let mut samples = Vec::new();
@@ -91,7 +91,7 @@ pub trait RecordingSolver: Solver {
             }
         })?;
         if streamed.samples > limit as u64 {
-            return Err(KickError::HistoryTooLong { needed: streamed.samples, limit: limit as u64 });
+            return Err(KickError::HistoryTooLong { needed: streamed.samples as f64, limit: limit as u64 });
         }
         Ok((streamed.outcome, History { samples }))
     }

@@ -302,6 +302,25 @@ impl Grid {
         let t = self.time(k);
         self.last.is_none_or(|last| k <= last) && if inclusive { t <= end } else { t < end }
     }
+    /// [`Grid::samples_until`], or [`KickError::HistoryTooLong`] when that
+    /// is more than `limit`, decided from the ratio end/Δ before counting
+    /// (an interval of 1e-300 s asks for 1e297 rows: never walked).
+    pub fn samples_within(&self, end: f64, limit: usize) -> Result<u64, KickError> {
+        let mut ratio = (end / self.interval).ceil();
+        if let Some(last) = self.last {
+            ratio = ratio.min(last as f64 + 1.0);
+        }
+        let too_long = |needed: f64| KickError::HistoryTooLong { needed, limit: limit as u64 };
+        if !(ratio <= limit as f64 + 1.0) {
+            return Err(too_long(ratio + 1.0));
+        }
+        let samples = self.samples_until(end);
+        if samples > limit as u64 {
+            return Err(too_long(samples as f64));
+        }
+        Ok(samples)
+    }
+
     /// How many samples a history ending at `end` holds: the grid points
     /// before `end` plus the separation row.
     pub fn samples_until(&self, end: f64) -> u64 {

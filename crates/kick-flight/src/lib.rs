@@ -64,8 +64,9 @@ pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-12;
 pub const HORIZON_FACTOR: f64 = 100.0;
 /// Bound on accepted steps of one flight.
 pub const MAX_STEPS: u64 = 1_000_000;
-/// Bound on the samples of one history.
-pub const MAX_SAMPLES: usize = 1_000_000;
+/// Bound on the samples of one history: the one bound of every history
+/// (1D, 3D, flight, Python), [`kick_core::MAX_HISTORY_SAMPLES`].
+pub const MAX_SAMPLES: usize = kick_core::MAX_HISTORY_SAMPLES;
 
 /// Every way a flight computation can refuse or fail; messages name the parameter.
 #[derive(Debug, Error, Clone, PartialEq)]

@@ -58,7 +58,7 @@ pub const MAX_SCENARIOS: u64 = 100_000_000;
 /// Most scenarios whose time histories one file may hold.
 pub const MAX_HISTORY_SCENARIOS: u64 = 1000;
 /// Most samples per recorded history (interval versus contact horizon).
-pub const MAX_HISTORY_SAMPLES: f64 = 1e6;
+pub const MAX_HISTORY_SAMPLES: f64 = kick_core::MAX_HISTORY_SAMPLES as f64;
 
 /// A problem in an experiment file, located.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -297,7 +297,15 @@ pub fn linear_range(from: f64, to: f64, count: usize) -> Vec<f64> {
                 if i + 1 == count {
                     to
                 } else {
-                    from + (to - from) * (i as f64 / (count - 1) as f64)
+                    let t = i as f64 / (count - 1) as f64;
+                    // A span beyond f64 (-1e308 .. 1e308) weighs the ends
+                    // instead of overflowing to NaN; the usual form otherwise
+                    // (its values are the results' to the bit).
+                    if (to - from).is_finite() {
+                        from + (to - from) * t
+                    } else {
+                        from * (1.0 - t) + to * t
+                    }
                 }
             })
             .collect(),
@@ -374,6 +382,22 @@ fn key_before(text: &str, at: usize) -> String {
     }
 }
 
+/// The experiment's name, its file's stem: refused unless UTF-8, as it
+/// names the result file (a lossy or default name would write another).
+fn file_stem(path: &Path) -> Result<String, ExperimentError> {
+    match path.file_stem().map(|stem| stem.to_str()) {
+        Some(Some(stem)) => Ok(stem.to_string()),
+        Some(None) => Err(ExperimentError {
+            file: path.to_string_lossy().into_owned(),
+            line: 0,
+            column: 0,
+            key: String::new(),
+            message: format!("the file name {:?} is not valid UTF-8 (it names the result file); rename it", path.to_string_lossy()),
+        }),
+        None => Ok("experiment".to_string()),
+    }
+}
+
 /// Read and validate an experiment file.
 pub fn load(path: &Path) -> Result<Experiment, ExperimentError> {
     let file = path.display().to_string();
@@ -392,7 +416,7 @@ pub fn load(path: &Path) -> Result<Experiment, ExperimentError> {
 pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     let file = path.display().to_string();
     let at = Locator { file: &file, text };
-    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("experiment").to_string();
+    let stem = file_stem(path)?;
     let table: toml::Table = toml::from_str(text).map_err(|e| at.toml_error(&e))?;
     if table.contains_key("row") {
         return table2_experiment(path, text, stem, &at);
@@ -685,7 +709,7 @@ pub fn parse_any(path: &Path, text: &str) -> Result<AnyExperiment, ExperimentErr
         Err(_) => false,
     };
     if three_d {
-        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("experiment").to_string();
+        let stem = file_stem(path)?;
         three_d::parse(path, text, &at, stem).map(AnyExperiment::ThreeD)
     } else {
         parse(path, text).map(AnyExperiment::OneD)
@@ -814,6 +838,31 @@ mod tests {
 
     fn parse_text(text: &str) -> Result<Experiment, ExperimentError> {
         parse(Path::new("x.toml"), text)
+    }
+
+    /// A file name that is not UTF-8 is refused naming it (lossy), 1D and
+    /// 3D: it used to write `experiment.h5`.
+    #[cfg(unix)]
+    #[test]
+    fn a_non_utf8_file_name_is_refused_naming_it() {
+        use std::os::unix::ffi::OsStrExt;
+        let path = Path::new(std::ffi::OsStr::from_bytes(b"dir/bad\xff.toml"));
+        for text in ["[base]\nfoot_speed = 20.0\n", "[kick3d]\noffset = 0.01\n"] {
+            let error = parse_any(path, text).err().expect("refused");
+            assert!(error.to_string().contains("bad\u{FFFD}.toml") && error.to_string().contains("UTF-8"), "{error}");
+        }
+    }
+
+    /// A linear range spanning more than f64 holds (-1e308 .. 1e308) gives
+    /// its ends and evenly spaced finite values, not NaN.
+    #[test]
+    fn a_linear_range_beyond_the_largest_span_stays_finite() {
+        assert_eq!(linear_range(-1e308, 1e308, 3), [-1e308, 0.0, 1e308]);
+        let values = linear_range(-1e308, 1e308, 5);
+        for (x, expected) in values.iter().zip([-1e308, -5e307, 0.0, 5e307, 1e308]) {
+            assert!((x - expected).abs() <= 1e-15 * 1e308, "{values:?}");
+        }
+        assert_eq!(linear_range(1.0, 2.0, 5), [1.0, 1.25, 1.5, 1.75, 2.0]);
     }
 
     /// Every declared 1D parameter is a key of `[base]` and of

@@ -133,6 +133,9 @@ fn bad_history_requests_are_refused_and_leave_no_file() {
         (vec!["simulate", "--samples", "3"], "--history"),
         (vec!["simulate3d", "--history", &file("h.h5"), "--solver", "full-state"], "--solver accurate"),
         (vec!["simulate3d", "--history", &file("h.h5"), "--foot-speed", "-3"], "foot"),
+        // Rows counted before the first is written (1e297 of them).
+        (vec!["simulate", "--history", &file("h.csv"), "--interval", "1e-300"], "history too long"),
+        (vec!["simulate3d", "--history", &file("h.csv"), "--interval", "1e-300"], "history too long"),
     ] {
         let out = kick(&args);
         let message = String::from_utf8_lossy(&out.stderr);

@@ -236,12 +236,12 @@ fn the_collecting_form_refuses_past_its_limit_with_the_size_needed() {
     let (_, full) = solver.solve_recorded(&s, 1e-6).unwrap();
     let needed = full.samples.len();
     match solver.solve_sampled(&s, Spacing::Interval(1e-6), needed - 1) {
-        Err(KickError::HistoryTooLong { needed: n, limit }) => assert_eq!((n, limit), (needed as u64, needed as u64 - 1)),
+        Err(KickError::HistoryTooLong { needed: n, limit }) => assert_eq!((n, limit), (needed as f64, needed as u64 - 1)),
         other => panic!("{other:?}"),
     }
     assert_eq!(solver.solve_sampled(&s, Spacing::Interval(1e-6), needed).unwrap().1, full);
     let error = solver.solve_sampled(&s, Spacing::Count(1001), 1000).unwrap_err();
-    assert_eq!(error, KickError::HistoryTooLong { needed: 1001, limit: 1000 });
+    assert_eq!(error, KickError::HistoryTooLong { needed: 1001.0, limit: 1000 });
     assert!(error.to_string().contains("1001"), "{error}");
 }
 
@@ -265,14 +265,20 @@ fn a_spacing_that_makes_no_grid_is_named() {
     }
 }
 
-/// A history far longer than anything kept in memory streams through.
+/// A history up to the one limit of every history
+/// ([`kick_core::MAX_HISTORY_SAMPLES`]) streams through in time order, one
+/// sink call per sample; a longer one (2e-9 s: 2.6e6 rows) is refused with
+/// its count before the first row.
 #[test]
-fn a_long_history_streams_in_bounded_memory() {
+fn a_long_history_streams_up_to_the_limit() {
     let s = Scenario::baseline();
+    let solver = Accurate::default();
+    let contact_time = solver.solve(&s).unwrap().contact_time;
     let mut count = 0u64;
     let mut previous = f64::NEG_INFINITY;
-    let streamed = Accurate::default()
-        .solve_streamed(&s, Spacing::Interval(2e-9), &mut |sample| {
+    let interval = contact_time / (kick_core::MAX_HISTORY_SAMPLES - 2) as f64;
+    let streamed = solver
+        .solve_streamed(&s, Spacing::Interval(interval), &mut |sample| {
             assert!(sample.time > previous);
             previous = sample.time;
             count += 1;
@@ -280,6 +286,10 @@ fn a_long_history_streams_in_bounded_memory() {
         })
         .unwrap();
     assert_eq!(count, streamed.samples);
-    assert!(count > 2_000_000, "{count}");
-    assert!(count as usize > kick_core::MAX_HISTORY_SAMPLES);
+    assert!(count as usize <= kick_core::MAX_HISTORY_SAMPLES && count as usize >= kick_core::MAX_HISTORY_SAMPLES - 2, "{count}");
+    let refused = solver.solve_streamed(&s, Spacing::Interval(2e-9), &mut |_| ControlFlow::Continue(()));
+    match refused {
+        Err(KickError::HistoryTooLong { needed, .. }) => assert_eq!(needed, (contact_time / 2e-9).ceil() + 1.0),
+        other => panic!("{:?}", other.map(|r| r.samples)),
+    }
 }
