@@ -4,7 +4,8 @@
 //! or more sets of named outcome columns (one set per solver), every column a
 //! 1D dataset with a `units` attribute. Rows are streamed in chunks of
 //! [`CHUNK_ROWS`] into extendable, chunked datasets, so a writer's memory does
-//! not grow with the number of rows. See the README ("HDF5 result layout").
+//! not grow with the number of rows. Layout: paper/reference/files.md; guide:
+//! this crate's README.md ("HDF5 result layout").
 //!
 //! ```text
 //! /                      attributes: provenance (tool, tool_version, git_commit,
@@ -194,7 +195,7 @@ fn group_at(root: &Group, relative: &str, path: &Path) -> Result<Group, H5Error>
 /// status, failure indices) are stored: plain, or through HDF5's byte
 /// shuffle and deflate (gzip) filters, chunk by chunk. Readers decompress
 /// transparently, so the values read back are the same bits; the file is
-/// smaller and slower to write (README, "Compressed result files").
+/// smaller and slower to write (this crate's README.md, "Compressed result files").
 /// Text datasets (failure messages, names) stay plain: deflate would see
 /// only their references into HDF5's heap.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
