@@ -124,8 +124,8 @@ struct HistoryArgs {
     /// Write the time history to FILE: .csv (header `name [unit]`, then numbers only)
     /// or .h5/.hdf5 (one dataset per column with its units, and the parameters);
     /// uniform samples from first touch (t = 0) plus the last row at the end
-    /// (separation, or the landing of a flight). Columns and units: README,
-    /// "Time-history files". Only the summary goes to standard output.
+    /// (separation, or the landing of a flight). Columns and units:
+    /// crates/kick-store/README.md, "Time-history files". Only the summary goes to standard output.
     #[arg(long, value_name = "FILE")]
     history: Option<PathBuf>,
     /// Rows in all, both ends included [default: 201]
@@ -278,7 +278,7 @@ enum Fit {
         #[arg(long, default_value = "experiments/table2.toml")]
         scenarios: PathBuf,
     },
-    /// Fit the parameters a specification file names to its data (TOML/JSON; see README).
+    /// Fit the parameters a specification file names to its data (TOML/JSON; format: crates/kick-identify/README.md).
     Data {
         /// Fit specification (TOML, or JSON)
         spec: PathBuf,
@@ -462,6 +462,12 @@ struct Reproduce {
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
+    /// Print each step's name and the command lines it runs, and exit
+    #[arg(long, conflicts_with = "check")]
+    list: bool,
+    /// Run only these steps (repeat the flag or give a comma list; `--list` names them)
+    #[arg(long, value_name = "STEP", value_delimiter = ',', conflicts_with = "check")]
+    only: Vec<String>,
 }
 
 fn main() -> ExitCode {
@@ -610,8 +616,11 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
                 out: a.out,
                 report: a.report,
                 quick_bench: a.quick_bench,
-                steps: reproduce::Steps::All,
+                steps: if a.only.is_empty() { reproduce::Steps::All } else { reproduce::Steps::Only(a.only) },
             };
+            if a.list {
+                return out.print(Format::Text, &reproduce::list(&settings)?);
+            }
             if a.check {
                 let found = reproduce::check(&settings, &mut std::io::sink())?;
                 out.print(Format::Text, &found)?;
