@@ -3,6 +3,7 @@
 
 mod flags;
 mod output;
+mod reference;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use flags::{FlightAfter1d, FlightAfter3d, Flags};
@@ -77,6 +78,11 @@ enum Command {
     },
     /// The manual page (roff) on stdout: `kick man > kick.1; man ./kick.1`.
     Man,
+    /// A generated reference page (Markdown) on stdout: `kick reference cli > paper/reference/cli.md`.
+    Reference {
+        #[arg(value_enum)]
+        page: reference::Page,
+    },
 }
 
 #[derive(Args)]
@@ -504,6 +510,13 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             let mut text = Vec::new();
             clap_mangen::Man::new(Cli::command()).render(&mut text).map_err(|e| e.to_string())?;
             out.write_all(&text).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
+        }
+        Command::Reference { page } => {
+            let text = match page {
+                reference::Page::Cli => reference::cli(Cli::command()),
+                reference::Page::Parameters => reference::parameters(),
+            };
+            out.write_all(text.as_bytes()).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
         }
         Command::Simulate(a) => {
             let flight = a.flight.then(|| a.flight_parameters.spec().0);
