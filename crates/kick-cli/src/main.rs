@@ -3,6 +3,7 @@
 
 mod flags;
 mod output;
+mod reference;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use flags::{FlightAfter1d, FlightAfter3d, Flags};
@@ -77,6 +78,11 @@ enum Command {
     },
     /// The manual page (roff) on stdout: `kick man > kick.1; man ./kick.1`.
     Man,
+    /// A generated reference page (Markdown) on stdout: `kick reference cli > paper/reference/cli.md`.
+    Reference {
+        #[arg(value_enum)]
+        page: reference::Page,
+    },
 }
 
 #[derive(Args)]
@@ -124,8 +130,8 @@ struct HistoryArgs {
     /// Write the time history to FILE: .csv (header `name [unit]`, then numbers only)
     /// or .h5/.hdf5 (one dataset per column with its units, and the parameters);
     /// uniform samples from first touch (t = 0) plus the last row at the end
-    /// (separation, or the landing of a flight). Columns and units: README,
-    /// "Time-history files". Only the summary goes to standard output.
+    /// (separation, or the landing of a flight). Columns and units:
+    /// crates/kick-store/README.md, "Time-history files". Only the summary goes to standard output.
     #[arg(long, value_name = "FILE")]
     history: Option<PathBuf>,
     /// Rows in all, both ends included [default: 201]
@@ -278,7 +284,7 @@ enum Fit {
         #[arg(long, default_value = "experiments/table2.toml")]
         scenarios: PathBuf,
     },
-    /// Fit the parameters a specification file names to its data (TOML/JSON; see README).
+    /// Fit the parameters a specification file names to its data (TOML/JSON; format: crates/kick-identify/README.md).
     Data {
         /// Fit specification (TOML, or JSON)
         spec: PathBuf,
@@ -462,6 +468,12 @@ struct Reproduce {
     /// Worker threads (default: one per core)
     #[arg(long)]
     threads: Option<usize>,
+    /// Print each step's name and the command lines it runs, and exit
+    #[arg(long, conflicts_with = "check")]
+    list: bool,
+    /// Run only these steps (repeat the flag or give a comma list; `--list` names them)
+    #[arg(long, value_name = "STEP", value_delimiter = ',', conflicts_with = "check")]
+    only: Vec<String>,
 }
 
 fn main() -> ExitCode {
@@ -500,6 +512,13 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             let mut text = Vec::new();
             clap_mangen::Man::new(Cli::command()).render(&mut text).map_err(|e| e.to_string())?;
             out.write_all(&text).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
+        }
+        Command::Reference { page } => {
+            let text = match page {
+                reference::Page::Cli => reference::cli(Cli::command()),
+                reference::Page::Parameters => reference::parameters(),
+            };
+            out.write_all(text.as_bytes()).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
         }
         Command::Simulate(a) => {
             let flight = a.flight.then(|| a.flight_parameters.spec().0);
@@ -612,8 +631,11 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
                 out: a.out,
                 report: a.report,
                 quick_bench: a.quick_bench,
-                steps: reproduce::Steps::All,
+                steps: if a.only.is_empty() { reproduce::Steps::All } else { reproduce::Steps::Only(a.only) },
             };
+            if a.list {
+                return out.print(Format::Text, &reproduce::list(&settings)?);
+            }
             if a.check {
                 let found = reproduce::check(&settings, &mut std::io::sink())?;
                 out.print(Format::Text, &found)?;

@@ -15,16 +15,21 @@ pub const FIGURE_FRICTION: f64 = 0.5;
 /// Rows of its history: phase boundaries shaded to 1/2000 of the contact.
 pub const FIGURE_SAMPLES: usize = 2001;
 
+/// The command that writes [`reproduce_force_history`]'s file alone.
+pub fn force_history_command(out: &Path) -> String {
+    format!(
+        "kick simulate3d --offset {FIGURE_OFFSET} --friction {FIGURE_FRICTION} --history {} --samples {FIGURE_SAMPLES}",
+        out.join("3d_force_history.h5").display()
+    )
+}
+
 /// `kick reproduce`'s step: the force history of one off-center kick written
 /// to `out/3d_force_history.h5` by this module's writer, then drawn from that
 /// file into `figures/3d_force_history.{png,svg}`. Returns the command that
 /// writes the same file alone, the summary and the files.
 pub fn reproduce_force_history(out: &Path, figures: &Path) -> Result<(String, String, Vec<PathBuf>), String> {
     let path = out.join("3d_force_history.h5");
-    let command = format!(
-        "kick simulate3d --offset {FIGURE_OFFSET} --friction {FIGURE_FRICTION} --history {} --samples {FIGURE_SAMPLES}",
-        path.display()
-    );
+    let command = force_history_command(out);
     let mut spec = kick_3d::KickSpec::default();
     spec.kick3d.offset = Some(FIGURE_OFFSET);
     spec.kick3d.friction = Some(FIGURE_FRICTION);

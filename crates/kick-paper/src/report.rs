@@ -193,7 +193,7 @@ pub fn render(results: &Path, figures: &str, checks: Option<&[CheckLine]>) -> Re
             let _ = writeln!(w);
         }
     }
-    let _ = writeln!(w, "## Files\n\nResult files (HDF5, layout in the top-level README): {}.\n",
+    let _ = writeln!(w, "## Files\n\nResult files (HDF5, layouts in [reference/files.md](reference/files.md)): {}.\n",
         list_h5(results).iter().map(|n| format!("`results/{n}`")).collect::<Vec<_>>().join(", "));
     Ok(md)
 }

@@ -23,14 +23,21 @@ pub struct ReproduceSettings {
     pub steps: Steps,
 }
 
-/// The steps of a reproduction.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+/// The steps of a reproduction to run ([`STEP_NAMES`]).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub enum Steps {
     /// Everything: experiments, figures, checks, pages, 3D, leg, laws, fits, bench.
     #[default]
     All,
-    /// The 1D experiment files only (for a quick check of a few files).
-    Experiments,
+    /// These steps only, in the order of [`STEP_NAMES`] (`kick reproduce --only`).
+    Only(Vec<String>),
+}
+
+impl Steps {
+    /// [`Steps::Only`] these names.
+    pub fn only(names: &[&str]) -> Steps {
+        Steps::Only(names.iter().map(|n| n.to_string()).collect())
+    }
 }
 
 /// Subdirectory of the results (and page beside the report) holding the
@@ -71,194 +78,410 @@ fn say(log: &mut dyn Write, text: &str) {
     let _ = log.write_all(text.as_bytes());
 }
 
-/// Every experiment into result files, the figures, the cross-model checks
-/// and the report pages: the 1D experiments and Figures 1-7, `paper/README.md`,
-/// the 3D sweeps, the leg, the contact laws, the identification files and the
-/// solver benchmark with their pages. Each step is a library call; `log`
-/// gets what each step reports, under the command that does the same step alone.
-pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reproduction, String> {
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&args.experiments)
-        .map_err(|e| format!("cannot read {}: {e}", args.experiments.display()))?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    files.sort();
+/// One library call of a reproduction, holding the arguments it is made
+/// with; [`Call::command`] prints them as the `kick` command line that makes
+/// the same files alone, so the line and the call cannot disagree.
+#[derive(Debug, Clone)]
+pub enum Call {
+    /// `kick run FILE --out OUT` for a 1D experiment file.
+    Run { file: PathBuf, out: PathBuf },
+    /// Figures 1-7 from the 1D result files (part of `kick reproduce` only).
+    Figures { out: PathBuf, figures: PathBuf },
+    /// `kick check`: the cross-model checks, kept for the report.
+    Checks,
+    /// `kick run FILE --out OUT` for a 3D experiment file, then its figures.
+    Run3d { file: PathBuf, out: PathBuf, figures: PathBuf },
+    /// One off-center kick's force history and its figure.
+    ForceHistory { out: PathBuf, figures: PathBuf },
+    /// `kick leg --knee K --ankle A --sweep-out OUT`.
+    Leg(crate::leg::LegSettings),
+    /// `kick laws`.
+    Laws(crate::identify::LawsSettings),
+    /// `kick fit profile`.
+    Profile(crate::identify::ProfileSettings),
+    /// `kick fit synthesize`.
+    Synthesize { out: PathBuf, name: String, seed: u64, times: usize, truth: kick_core::ScenarioSpec, time_offset: f64 },
+    /// `kick fit data SPEC --out OUT`; a fit that does not converge stops the reproduction.
+    FitData { spec: PathBuf, out: PathBuf },
+    /// `kick fit table2 --scenarios FILE --out OUT`.
+    FitTable2 { scenarios: PathBuf, out: PathBuf },
+    /// `kick bench`.
+    Bench(crate::bench::BenchSettings),
+    /// `paper/leg.md`, `laws.md` and `identification.md` from their result files (part of `kick reproduce` only).
+    Pages,
+    /// The validation chapter: the model beside published measurements (part of `kick reproduce` only).
+    Validation,
+    /// Free kicks through the flight, `paper/3d.md` and `paper/flight.md` (part of `kick reproduce` only).
+    Pages3d,
+    /// The report, `paper/README.md`, written last (part of `kick reproduce` only).
+    Report,
+}
+
+/// A named step of a reproduction: the calls it makes, in order.
+#[derive(Debug, Clone)]
+pub struct Step {
+    /// What `--only` takes.
+    pub name: &'static str,
+    pub calls: Vec<Call>,
+}
+
+/// The names of the steps, in the order they run.
+pub const STEP_NAMES: [&str; 16] = [
+    "experiments",
+    "figures",
+    "checks",
+    "3d",
+    "force-history",
+    "leg",
+    "laws",
+    "profile",
+    "synthesize",
+    "fit",
+    "table2-fit",
+    "bench",
+    "pages",
+    "validation",
+    "3d-pages",
+    "report",
+];
+
+/// A number in a command line: the shorter of plain and scientific form,
+/// both of which read back to the same `f64`.
+fn number(x: f64) -> String {
+    let (plain, scientific) = (format!("{x}"), format!("{x:e}"));
+    if scientific.len() < plain.len() { scientific } else { plain }
+}
+
+/// The 1D scenario's flags as `kick fit synthesize` (and `simulate`) take them.
+fn scenario_flags(spec: &kick_core::ScenarioSpec) -> String {
+    let mut flags = String::new();
+    for p in kick_core::Parameter::ALL {
+        if let Some(x) = spec.get(p) {
+            flags.push_str(&format!(" --{} {}", p.name().replace('_', "-"), number(x)));
+        }
+    }
+    if let Some(law) = spec.law {
+        flags.push_str(&format!(" --law {}", law.name()));
+    }
+    if let Some(e) = spec.restitution {
+        flags.push_str(&format!(" --restitution {}", number(e)));
+    }
+    flags
+}
+
+impl Call {
+    /// The command line that makes the same files alone; for the parts that
+    /// only `kick reproduce` makes, `kick reproduce ... --only STEP`.
+    pub fn command(&self, args: &ReproduceSettings, step: &str) -> String {
+        let d = |p: &Path| p.display().to_string();
+        match self {
+            Call::Run { file, out } | Call::Run3d { file, out, .. } => format!("kick run {} --out {}", d(file), d(out)),
+            Call::Checks => "kick check".into(),
+            Call::ForceHistory { out, .. } => crate::force_history::force_history_command(out),
+            Call::Leg(leg) => {
+                format!("kick leg --knee {} --ankle {} --sweep-out {}", number(leg.knee), number(leg.ankle), leg.sweep_out.as_deref().map(d).unwrap_or_default())
+            }
+            Call::Laws(laws) => format!(
+                "kick laws --scenarios {} --samples {}{}",
+                d(&laws.scenarios),
+                laws.samples,
+                laws.out.as_deref().map(|o| format!(" --out {}", d(o))).unwrap_or_default()
+            ),
+            Call::Profile(p) => format!(
+                "kick fit profile{} --spread {} --points {} --map-points {} --seed {}",
+                p.out.as_deref().map(|o| format!(" --out {}", d(o))).unwrap_or_default(),
+                number(p.spread),
+                p.points,
+                p.map_points,
+                p.seed
+            ),
+            Call::Synthesize { out, name, seed, times, truth, time_offset } => format!(
+                "kick fit synthesize --out {} --name {name} --seed {seed} --times {times}{}{}",
+                d(out),
+                scenario_flags(truth),
+                if *time_offset != 0.0 { format!(" --time-offset {}", number(*time_offset)) } else { String::new() }
+            ),
+            Call::FitData { spec, out } => format!("kick fit data {} --out {}", d(spec), d(out)),
+            Call::FitTable2 { scenarios, out } => format!("kick fit table2 --scenarios {} --out {}", d(scenarios), d(out)),
+            Call::Bench(b) => format!(
+                "kick bench{} --out {} --min-time {} --sweep-samples {}{}{}",
+                if b.quick { " --quick" } else { "" },
+                d(&b.out),
+                number(b.min_time),
+                b.sweep_samples,
+                b.report.as_deref().map(|r| format!(" --report {}", d(r))).unwrap_or_default(),
+                b.solvers_report.as_deref().map(|r| format!(" --solvers-report {}", d(r))).unwrap_or_default()
+            ),
+            Call::Figures { .. } | Call::Pages | Call::Validation | Call::Pages3d | Call::Report => format!(
+                "kick reproduce --experiments {} --out {} --report {}{} --only {step}",
+                d(&args.experiments),
+                d(&args.out),
+                d(&args.report),
+                if args.quick_bench { " --quick-bench" } else { "" }
+            ),
+        }
+    }
+}
+
+/// The leg's call: the default pose, its figure data into OUT.
+fn leg_call(args: &ReproduceSettings) -> Call {
+    Call::Leg(crate::leg::LegSettings { sweep_out: Some(args.out.clone()), ..crate::leg::LegSettings::default() })
+}
+
+/// The steps of a reproduction with `args`, every call's arguments filled
+/// in: what `kick reproduce --list` prints and [`reproduce`] runs.
+pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
+    let toml_files = |dir: &Path| -> Result<Vec<PathBuf>, std::io::Error> {
+        let mut files: Vec<PathBuf> = std::fs::read_dir(dir)?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "toml"))
+            .collect();
+        files.sort();
+        Ok(files)
+    };
+    let files = toml_files(&args.experiments).map_err(|e| format!("cannot read {}: {e}", args.experiments.display()))?;
     if files.is_empty() {
         return Err(format!("no experiment files in {}", args.experiments.display()));
     }
-    let mut written: Vec<(PathBuf, &PathBuf)> = Vec::new();
-    for file in &files {
-        let run = crate::shard::run_file(file, &args.out, None)?;
-        say(log, &run.text());
-        let path = run.summary.path;
-        // Two files naming the same experiment would overwrite each other.
-        if let Some((_, first)) = written.iter().find(|(p, _)| *p == path) {
-            return Err(format!("{} and {} both write {}", first.display(), file.display(), path.display()));
-        }
-        written.push((path, file));
-    }
-    if args.steps == Steps::Experiments {
-        return Ok(Reproduction { checks: 0, failed_checks: 0, report: args.report.clone() });
-    }
-
+    let out = args.out.clone();
     let figures = args.out.join("figures");
-    let drawn = crate::figures::draw_all(&args.out, &figures).map_err(|e| e.to_string())?;
-    say(log, &format!("figures: {} files in {}\n", drawn.len(), figures.display()));
-
-    let checks: Vec<CheckLine> = crate::checks::run_all().rows;
-    let failed = checks.iter().filter(|c| !c.passed).count();
-    say(log, &format!("checks: {} of {} pass\n", checks.len() - failed, checks.len()));
-
-    let report_dir = args.report.parent().unwrap_or(Path::new("")).to_path_buf();
-
-    // The rest of the workspace's results: 3D sweeps, the leg, contact laws,
-    // identifiability, and the solvers' work-precision; each under the
-    // command that makes the same files alone.
-    let out = args.out.display().to_string();
-    let mut three_d: Vec<PathBuf> = std::fs::read_dir(args.experiments.join("3d"))
-        .map(|entries| {
-            entries.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|x| x == "toml")).collect()
-        })
-        .unwrap_or_default();
-    three_d.sort();
-    for file in &three_d {
-        say(log, &format!("\n# kick run {} --out {out}\n", file.display()));
-        let run = crate::shard::run_file(file, &args.out, None)?;
-        say(log, &run.text());
-        let drawn = crate::three_d::figures(&run.summary.path, &figures).map_err(|e| e.to_string())?;
-        say(log, &format!("figures: {} files in {}\n", drawn.len(), figures.display()));
-    }
-    // One off-center kick's force history, grip and slip shaded (from its HDF5 history).
-    let (command, summary, drawn) = crate::force_history::reproduce_force_history(&args.out, &figures)?;
-    say(log, &format!("\n# {command}\n{summary}"));
-    say(log, &format!("figures: {} files in {}\n", drawn.len() - 1, figures.display()));
-    let leg_command = format!("kick leg --knee 30 --ankle 60 --sweep-out {out}");
-    say(log, &format!("\n# {leg_command}\n"));
-    let leg = crate::leg::leg(&crate::leg::LegSettings {
-        sweep_out: Some(args.out.clone()),
-        command: leg_command,
-        ..crate::leg::LegSettings::default()
-    })?;
-    say(log, &leg.text());
-
     let fits = args.out.join("identification");
-    let identification = fits.display().to_string();
-    say(log, &format!("\n# kick laws --out {identification}\n"));
-    let laws = crate::identify::LawsSettings { scenarios: args.experiments.join("table2.toml"), out: Some(fits.clone()), samples: 200 };
-    say(log, &crate::identify::laws(&laws)?.text());
-    say(log, &format!("\n# kick fit profile --out {identification}\n"));
-    let profile = crate::identify::ProfileSettings { out: Some(fits.clone()), spread: 1.5, points: 9, map_points: 21, seed: 5 };
-    say(log, &crate::identify::profile(&profile)?.text());
-    // Synthetic data (the paper's law; Hunt-Crossley with a late first touch), fitted back.
-    say(log, &format!("\n# kick fit synthesize --out {identification} --seed 1\n"));
-    say(log, &crate::identify::synthesize(&fits, "synthetic", 1, 80, &kick_core::ScenarioSpec::default(), 0.0)?.text());
+    let report_dir = args.report.parent().unwrap_or(Path::new("")).to_path_buf();
+    let three_d = toml_files(&args.experiments.join("3d")).unwrap_or_default();
     let law_name = "synthetic_hunt_crossley";
-    say(
-        log,
-        &format!(
-            "\n# kick fit synthesize --out {identification} --name {law_name} --seed 2 --law hunt-crossley-exact \
-             --restitution 0.66 --time-offset 2.5e-4\n"
-        ),
-    );
     let hunt_crossley = kick_core::ScenarioSpec {
         law: Some(kick_core::LawKind::HuntCrossleyExact),
         restitution: Some(0.66),
         ..kick_core::ScenarioSpec::default()
     };
-    say(log, &crate::identify::synthesize(&fits, law_name, 2, 80, &hunt_crossley, 2.5e-4)?.text());
-    for (spec, fit) in [("synthetic", SYNTHETIC_FIT), (law_name, SYNTHETIC_LAW_FIT)] {
-        let spec = fits.join(format!("{spec}.toml"));
-        say(log, &format!("\n# kick fit data {} --out {}\n", spec.display(), fits.join(fit).display()));
-        let fitted = crate::identify::data(&spec, Some(&fits.join(fit)))?;
-        say(log, &fitted.text());
-        fitted.converged()?;
-    }
-    say(log, &format!("\n# kick fit table2 --out {}\n", fits.join(TABLE2_FIT).display()));
-    say(log, &crate::identify::table2(None, Some(&fits.join(TABLE2_FIT)), &laws.scenarios)?.text());
-    let solvers_report = report_dir.join("solvers.md");
-    let timing_report = report_dir.join(TIMING_PAGE);
-    let timing = args.out.join(TIMING_DIRECTORY);
-    let quick = if args.quick_bench { " --quick" } else { "" };
-    say(
-        log,
-        &format!(
-            "\n# kick bench{quick} --out {} --report {} --solvers-report {}\n",
-            timing.display(),
-            timing_report.display(),
-            solvers_report.display()
-        ),
-    );
-    let bench = crate::bench::BenchSettings {
-        out: timing,
-        report: Some(timing_report),
-        solvers_report: Some(solvers_report),
-        quick: args.quick_bench,
-        ..Default::default()
-    };
-    let bench = crate::bench::bench(&bench, log)?;
-    say(log, &bench.text());
-
-    // The leg's section: its figures, drawn from results/leg_*.h5.
-    let figures_from_report = relative(&report_dir, &args.out.join("figures"));
-    let leg_page = format!(
-        "# Effective mass of the articulated leg (Eq. 11)\n\n\
-         Generated by `kick reproduce` (`kick leg --knee 30 --ankle 60 --sweep-out {out}`). A three-segment leg \
-         (thigh, shank, foot; de Leva 1996 segment parameters for a 73 kg, 1.741 m male), pinned at the hip, \
-         struck at the instep along the foot's line of motion: m_eff = (nᵀ J M⁻¹ Jᵀ n)⁻¹ (Eq. 11) with the ankle \
-         locked or free. Data: `{out}/leg_effective_mass.h5`, `{out}/leg_exit_speed.h5`; see the README section \
-         \"Articulated leg\" for the model choices and the tests.\n\n\
-         ![effective mass]({figures_from_report}/leg_effective_mass.png)\n\n\
-         The exit speed that follows through the 1D model (baseline contact, `accurate`), with the perfectly \
-         elastic bound of Eq. 38: gains flatten once m_f is several ball masses (Section 14.1).\n\n\
-         ![exit speed]({figures_from_report}/leg_exit_speed.png)\n"
-    );
-    crate::output::write(report_dir.join("leg.md"), leg_page).map_err(|e| e.to_string())?;
-    // Contact laws and identification: from results/identification/*.h5.
-    let identification_from_report = relative(&report_dir, &fits);
-    let laws_page = crate::identify::report::laws(&fits.join(LAWS), &identification_from_report)?;
-    crate::output::write(report_dir.join("laws.md"), laws_page).map_err(|e| e.to_string())?;
-    let identification_page = crate::identify::report::identification(&fits, &identification_from_report)?;
-    crate::output::write(report_dir.join("identification.md"), identification_page).map_err(|e| e.to_string())?;
-    // The validation chapter: the model beside published measurements.
-    let validation_dir = args.out.join("validation");
-    say(log, &format!("\n# validation -> {}, {}\n", validation_dir.display(), report_dir.join("validation.md").display()));
-    let validation = crate::validation::write(
-        &args.experiments.join("validation/measurements.toml"),
-        &validation_dir,
-        &report_dir.join("validation.md"),
-        &args.experiments.join("validation/NOTES.md"),
-    )?;
-    say(log, &validation.text());
-    // Free kicks through the flight, and the generated 3D and flight pages
-    // (after every figure they link is drawn).
-    say(log, &format!("\n# 3D and flight pages -> {}, {}\n", report_dir.join("3d.md").display(), report_dir.join("flight.md").display()));
-    crate::pages_3d::write_all(&args.out, &report_dir, log)?;
-    // Point the report at the sections written beside it.
-    // Written last, so that its list of result files is the same on every run
-    // (not whatever an earlier run left when this step came).
-    let mut text = crate::report::render(&args.out, &relative(&report_dir, &figures), Some(&checks)).map_err(|e| e.to_string())?;
-    let sections = [
-        ("solvers.md", "Solvers of the 1D model: precision, trust regions"),
-        (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
-        ("3d.md", "Off-center 3D kicks: spin, friction, launch direction, the speed–spin trade-off"),
-        ("flight.md", "Ball flight: free kicks from the 3D kick, deflection at 25 m"),
-        ("leg.md", "Effective mass of the articulated leg"),
-        ("laws.md", "Contact laws compared"),
-        ("identification.md", "Parameter identification and identifiability"),
-        ("validation.md", "Validation: the model beside published measurements"),
+    let synthesize = |name: &str, seed, truth, time_offset| Call::Synthesize { out: fits.clone(), name: name.into(), seed, times: 80, truth, time_offset };
+    let calls: [Vec<Call>; 16] = [
+        files.into_iter().map(|file| Call::Run { file, out: out.clone() }).collect(),
+        vec![Call::Figures { out: out.clone(), figures: figures.clone() }],
+        vec![Call::Checks],
+        three_d.into_iter().map(|file| Call::Run3d { file, out: out.clone(), figures: figures.clone() }).collect(),
+        vec![Call::ForceHistory { out: out.clone(), figures: figures.clone() }],
+        vec![leg_call(args)],
+        vec![Call::Laws(crate::identify::LawsSettings { scenarios: args.experiments.join("table2.toml"), out: Some(fits.clone()), samples: 200 })],
+        vec![Call::Profile(crate::identify::ProfileSettings { out: Some(fits.clone()), spread: 1.5, points: 9, map_points: 21, seed: 5 })],
+        // Synthetic data (the paper's law; Hunt-Crossley with a late first touch), fitted back.
+        vec![synthesize("synthetic", 1, kick_core::ScenarioSpec::default(), 0.0), synthesize(law_name, 2, hunt_crossley, 2.5e-4)],
+        [("synthetic", SYNTHETIC_FIT), (law_name, SYNTHETIC_LAW_FIT)]
+            .into_iter()
+            .map(|(spec, fit)| Call::FitData { spec: fits.join(format!("{spec}.toml")), out: fits.join(fit) })
+            .collect(),
+        vec![Call::FitTable2 { scenarios: args.experiments.join("table2.toml"), out: fits.join(TABLE2_FIT) }],
+        vec![Call::Bench(crate::bench::BenchSettings {
+            out: args.out.join(TIMING_DIRECTORY),
+            report: Some(report_dir.join(TIMING_PAGE)),
+            solvers_report: Some(report_dir.join("solvers.md")),
+            quick: args.quick_bench,
+            ..Default::default()
+        })],
+        vec![Call::Pages],
+        vec![Call::Validation],
+        vec![Call::Pages3d],
+        vec![Call::Report],
     ];
-    let present: Vec<String> = sections
-        .iter()
-        .filter(|(file, _)| report_dir.join(file).exists())
-        .map(|(file, title)| format!("- [{title}]({file})"))
-        .collect();
-    if !present.is_empty() {
-        text.push_str("\n## Further sections\n\n");
-        text.push_str(&present.join("\n"));
-        text.push('\n');
+    Ok(STEP_NAMES.into_iter().zip(calls).map(|(name, calls)| Step { name, calls }).collect())
+}
+
+/// The steps `args.steps` selects, in the order they run; an unknown name
+/// is an error naming `--only` and listing the steps.
+pub fn selected(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
+    let all = steps(args)?;
+    let Steps::Only(names) = &args.steps else { return Ok(all) };
+    if let Some(unknown) = names.iter().find(|n| !STEP_NAMES.contains(&n.as_str())) {
+        return Err(format!("--only: no step `{unknown}`; the steps are {}", STEP_NAMES.join(", ")));
     }
-    crate::output::write(&args.report, text).map_err(|e| e.to_string())?;
-    say(log, &format!("report: {}\n", args.report.display()));
+    Ok(all.into_iter().filter(|s| names.iter().any(|n| n == s.name)).collect())
+}
+
+/// `kick reproduce --list`: each selected step's name and command lines.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct StepList {
+    pub steps: Vec<(String, Vec<String>)>,
+}
+
+impl Printable for StepList {
+    fn text(&self) -> String {
+        let mut text = String::new();
+        for (name, commands) in &self.steps {
+            text.push_str(name);
+            text.push('\n');
+            for command in commands {
+                text.push_str(&format!("    {command}\n"));
+            }
+        }
+        text
+    }
+}
+
+/// The steps [`reproduce`] would run with `args`, with their command lines.
+pub fn list(args: &ReproduceSettings) -> Result<StepList, String> {
+    let steps = selected(args)?;
+    Ok(StepList { steps: steps.iter().map(|s| (s.name.to_string(), s.calls.iter().map(|c| c.command(args, s.name)).collect())).collect() })
+}
+
+/// What the steps leave for the later ones.
+#[derive(Default)]
+struct State {
+    /// Result files of the 1D experiments and the file that wrote each.
+    written: Vec<(PathBuf, PathBuf)>,
+    checks: Option<Vec<CheckLine>>,
+}
+
+impl Call {
+    fn run(&self, args: &ReproduceSettings, state: &mut State, log: &mut dyn Write) -> Result<(), String> {
+        let report_dir = args.report.parent().unwrap_or(Path::new("")).to_path_buf();
+        let fits = args.out.join("identification");
+        match self {
+            Call::Run { file, out } => {
+                let run = crate::shard::run_file(file, out, None)?;
+                say(log, &run.text());
+                let path = run.summary.path;
+                // Two files naming the same experiment would overwrite each other.
+                if let Some((_, first)) = state.written.iter().find(|(p, _)| *p == path) {
+                    return Err(format!("{} and {} both write {}", first.display(), file.display(), path.display()));
+                }
+                state.written.push((path, file.clone()));
+            }
+            Call::Figures { out, figures } => {
+                let drawn = crate::figures::draw_all(out, figures).map_err(|e| e.to_string())?;
+                say(log, &format!("figures: {} files in {}\n", drawn.len(), figures.display()));
+            }
+            Call::Checks => {
+                let checks: Vec<CheckLine> = crate::checks::run_all().rows;
+                let failed = checks.iter().filter(|c| !c.passed).count();
+                say(log, &format!("checks: {} of {} pass\n", checks.len() - failed, checks.len()));
+                state.checks = Some(checks);
+            }
+            Call::Run3d { file, out, figures } => {
+                let run = crate::shard::run_file(file, out, None)?;
+                say(log, &run.text());
+                let drawn = crate::three_d::figures(&run.summary.path, figures).map_err(|e| e.to_string())?;
+                say(log, &format!("figures: {} files in {}\n", drawn.len(), figures.display()));
+            }
+            Call::ForceHistory { out, figures } => {
+                // One off-center kick's force history, grip and slip shaded (from its HDF5 history).
+                let (_, summary, drawn) = crate::force_history::reproduce_force_history(out, figures)?;
+                say(log, &summary);
+                say(log, &format!("figures: {} files in {}\n", drawn.len() - 1, figures.display()));
+            }
+            Call::Leg(settings) => {
+                // The command goes into the files' provenance.
+                let settings = crate::leg::LegSettings { command: self.command(args, "leg"), ..settings.clone() };
+                say(log, &crate::leg::leg(&settings)?.text());
+            }
+            Call::Laws(settings) => say(log, &crate::identify::laws(settings)?.text()),
+            Call::Profile(settings) => say(log, &crate::identify::profile(settings)?.text()),
+            Call::Synthesize { out, name, seed, times, truth, time_offset } => {
+                say(log, &crate::identify::synthesize(out, name, *seed, *times, truth, *time_offset)?.text())
+            }
+            Call::FitData { spec, out } => {
+                let fitted = crate::identify::data(spec, Some(out))?;
+                say(log, &fitted.text());
+                fitted.converged()?;
+            }
+            Call::FitTable2 { scenarios, out } => say(log, &crate::identify::table2(None, Some(out), scenarios)?.text()),
+            Call::Bench(settings) => {
+                let bench = crate::bench::bench(settings, log)?;
+                say(log, &bench.text());
+            }
+            Call::Pages => {
+                let out = args.out.display().to_string();
+                // The leg's section: its figures, drawn from results/leg_*.h5.
+                let figures_from_report = relative(&report_dir, &args.out.join("figures"));
+                let leg = leg_call(args).command(args, "leg");
+                let leg_page = format!(
+                    "# Effective mass of the articulated leg (Eq. 11)\n\n\
+                     Generated by `kick reproduce` (`{leg}`). A three-segment leg \
+                     (thigh, shank, foot; de Leva 1996 segment parameters for a 73 kg, 1.741 m male), pinned at the hip, \
+                     struck at the instep along the foot's line of motion: m_eff = (nᵀ J M⁻¹ Jᵀ n)⁻¹ (Eq. 11) with the ankle \
+                     locked or free. Data: `{out}/leg_effective_mass.h5`, `{out}/leg_exit_speed.h5`; see \
+                     `crates/kick-leg/README.md` for the model choices and the tests.\n\n\
+                     ![effective mass]({figures_from_report}/leg_effective_mass.png)\n\n\
+                     The exit speed that follows through the 1D model (baseline contact, `accurate`), with the perfectly \
+                     elastic bound of Eq. 38: gains flatten once m_f is several ball masses (Section 14.1).\n\n\
+                     ![exit speed]({figures_from_report}/leg_exit_speed.png)\n"
+                );
+                crate::output::write(report_dir.join("leg.md"), leg_page).map_err(|e| e.to_string())?;
+                // Contact laws and identification: from results/identification/*.h5.
+                let identification_from_report = relative(&report_dir, &fits);
+                let laws_page = crate::identify::report::laws(&fits.join(LAWS), &identification_from_report)?;
+                crate::output::write(report_dir.join("laws.md"), laws_page).map_err(|e| e.to_string())?;
+                let identification_page = crate::identify::report::identification(&fits, &identification_from_report)?;
+                crate::output::write(report_dir.join("identification.md"), identification_page).map_err(|e| e.to_string())?;
+            }
+            Call::Validation => {
+                // The validation chapter: the model beside published measurements.
+                let validation = crate::validation::write(
+                    &args.experiments.join("validation/measurements.toml"),
+                    &args.out.join("validation"),
+                    &report_dir.join("validation.md"),
+                    &args.experiments.join("validation/NOTES.md"),
+                )?;
+                say(log, &validation.text());
+            }
+            // Free kicks through the flight, and the generated 3D and flight pages
+            // (after every figure they link is drawn).
+            Call::Pages3d => {
+                crate::pages_3d::write_all(&args.out, &report_dir, log)?;
+            }
+            Call::Report => {
+                // Written last, so that its list of result files is the same on every run
+                // (not whatever an earlier run left when this step came).
+                if state.checks.is_none() {
+                    state.checks = Some(crate::checks::run_all().rows);
+                }
+                let checks = state.checks.as_deref();
+                let mut text =
+                    crate::report::render(&args.out, &relative(&report_dir, &args.out.join("figures")), checks).map_err(|e| e.to_string())?;
+                // Point the report at the sections written beside it.
+                let sections = [
+                    ("solvers.md", "Solvers of the 1D model: precision, trust regions"),
+                    (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
+                    ("3d.md", "Off-center 3D kicks: spin, friction, launch direction, the speed–spin trade-off"),
+                    ("flight.md", "Ball flight: free kicks from the 3D kick, deflection at 25 m"),
+                    ("leg.md", "Effective mass of the articulated leg"),
+                    ("laws.md", "Contact laws compared"),
+                    ("identification.md", "Parameter identification and identifiability"),
+                    ("validation.md", "Validation: the model beside published measurements"),
+                ];
+                let present: Vec<String> = sections
+                    .iter()
+                    .filter(|(file, _)| report_dir.join(file).exists())
+                    .map(|(file, title)| format!("- [{title}]({file})"))
+                    .collect();
+                if !present.is_empty() {
+                    text.push_str("\n## Further sections\n\n");
+                    text.push_str(&present.join("\n"));
+                    text.push('\n');
+                }
+                crate::output::write(&args.report, text).map_err(|e| e.to_string())?;
+                say(log, &format!("report: {}\n", args.report.display()));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Every experiment into result files, the figures, the cross-model checks
+/// and the report pages: the 1D experiments and Figures 1-7, `paper/README.md`,
+/// the 3D sweeps, the leg, the contact laws, the identification files and the
+/// solver benchmark with their pages; the [`steps`] `args.steps` selects.
+/// `log` gets what each call reports, under the command line that makes
+/// the same files alone ([`Call::command`]).
+pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reproduction, String> {
+    let mut state = State::default();
+    for step in selected(args)? {
+        for call in &step.calls {
+            say(log, &format!("\n# {}\n", call.command(args, step.name)));
+            call.run(args, &mut state, log)?;
+        }
+    }
+    let checks = state.checks.unwrap_or_default();
+    let failed = checks.iter().filter(|c| !c.passed).count();
     Ok(Reproduction { checks: checks.len(), failed_checks: failed, report: args.report.clone() })
 }
 

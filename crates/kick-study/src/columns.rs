@@ -54,7 +54,7 @@ impl Setting {
 /// status, failure indices) are stored: plain, or through HDF5's byte
 /// shuffle and deflate (gzip) filters, chunk by chunk. Readers decompress
 /// transparently, so the values read back are the same bits; the file is
-/// smaller and slower to write (README, "Compressed result files").
+/// smaller and slower to write (kick-store's README.md, "Compressed result files").
 /// Text datasets (failure messages, names) stay plain: deflate would see
 /// only their references into HDF5's heap.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

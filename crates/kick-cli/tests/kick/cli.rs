@@ -168,3 +168,49 @@ fn sweeps_take_compress_with_or_without_a_level() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The generated reference pages: `kick reference cli|parameters` prints
+/// them, the same bytes on every run, and the committed pages are what it
+/// prints now; each names every subcommand, flag and declared parameter.
+#[test]
+fn reference_pages_are_current() {
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
+    for page in ["cli", "parameters"] {
+        let out = kick(&["reference", page]);
+        assert!(out.status.success(), "{page}: {}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(kick(&["reference", page]).stdout, out.stdout, "{page}: not the same bytes on a second run");
+        let text = String::from_utf8(out.stdout).unwrap();
+        let path = format!("paper/reference/{page}.md");
+        let committed = std::fs::read_to_string(root.join(&path)).unwrap_or_default();
+        assert!(
+            committed == text,
+            "{path} is stale (or missing): rewrite it with `cargo run --bin kick -- reference {page} > {path}` and commit it"
+        );
+    }
+    let cli = std::fs::read_to_string(root.join("paper/reference/cli.md")).unwrap();
+    let help = String::from_utf8(kick(&["--help"]).stdout).unwrap();
+    // Every subcommand `kick --help` lists has its section.
+    let commands: Vec<&str> = help
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| l.starts_with("  "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|c| *c != "help")
+        .collect();
+    assert!(commands.len() >= 15, "{help}");
+    for command in commands {
+        assert!(cli.contains(&format!("## `kick {command}`")), "cli.md lacks `kick {command}`");
+    }
+    // Flags with their help and defaults, parameter flags from the declared list.
+    for parameter in kick_core::parameters::PARAMETERS.iter() {
+        assert!(cli.contains(&format!("`{} <", parameter.flag())) || cli.contains(&format!("`{}`", parameter.flag())), "{}", parameter.flag());
+    }
+    assert!(cli.contains("| `--samples <SAMPLES>` | Number of scenarios (required) |  |"), "kick sweep's --samples");
+    assert!(cli.contains("| `--out <OUT>` | Directory for the result files; figures go to OUT/figures | results |"), "kick reproduce's --out");
+    assert!(cli.contains("`--only <STEP>`"), "kick reproduce's --only");
+    let parameters = std::fs::read_to_string(root.join("paper/reference/parameters.md")).unwrap();
+    for p in kick_core::parameters::PARAMETERS.iter().chain(kick_flight::FLIGHT_PARAMETERS.iter()) {
+        assert!(parameters.contains(&format!("| `{}`", p.name)) && parameters.contains(&format!("`{}`", p.flag())), "{}", p.name);
+    }
+}

@@ -87,3 +87,90 @@ fn table2_works_outside_the_repository_from_the_built_in_file() {
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("experiments/table2.toml"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The lines under each step of `kick reproduce --list`.
+fn listed(args: &[&str]) -> Vec<(String, Vec<String>)> {
+    let out = kick(&[&["reproduce", "--list"], args].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let mut steps: Vec<(String, Vec<String>)> = Vec::new();
+    for line in String::from_utf8_lossy(&out.stdout).lines() {
+        match line.strip_prefix("    ") {
+            Some(command) => steps.last_mut().expect("a step before its commands").1.push(command.to_string()),
+            None => steps.push((line.to_string(), Vec::new())),
+        }
+    }
+    steps
+}
+
+/// Every file below `dir` with its bytes.
+fn contents(dir: &std::path::Path) -> Vec<(PathBuf, Vec<u8>)> {
+    kick_store::compare::files_below(dir, &[]).into_iter().map(|f| (f.clone(), std::fs::read(dir.join(&f)).unwrap())).collect()
+}
+
+/// `kick reproduce --list` prints each step's command lines, and running
+/// those lines alone writes the same bytes as `--only` those steps: a printed
+/// line is the call it stands for, not a comment beside it.
+#[test]
+fn reproduce_steps_write_what_their_command_lines_write() {
+    let dir = scratch("steps");
+    let (results, report) = (dir.join("results"), dir.join("paper/README.md"));
+    let places = ["--out", results.to_str().unwrap(), "--report", report.to_str().unwrap()];
+    let only = ["--only", "synthesize,fit", "--only", "force-history"];
+    let steps = listed(&[&places[..], &only[..]].concat());
+    let names: Vec<&str> = steps.iter().map(|(name, _)| name.as_str()).collect();
+    assert_eq!(names, ["force-history", "synthesize", "fit"], "in the order they run");
+    let commands: Vec<&String> = steps.iter().flat_map(|(_, c)| c).collect();
+    assert_eq!(commands.len(), 5, "{commands:?}");
+    let out = kick(&[&["reproduce"], &places[..], &only[..]].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let by_reproduce = contents(&results);
+    std::fs::remove_dir_all(&results).unwrap();
+    for command in commands {
+        let words: Vec<&str> = command.strip_prefix("kick ").expect("a kick command").split(' ').collect();
+        let out = kick(&words);
+        assert!(out.status.success(), "{command}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    let by_commands = contents(&results);
+    assert!(by_commands.len() >= 7, "{:?}", by_commands.iter().map(|(f, _)| f).collect::<Vec<_>>());
+    for (file, bytes) in &by_commands {
+        let same = by_reproduce.iter().find(|(f, _)| f == file);
+        assert!(same.is_some_and(|(_, b)| b == bytes), "{} differs from what `kick reproduce --only` wrote", file.display());
+    }
+    // What reproduce adds beyond the command lines: figures drawn from those files.
+    for (file, _) in &by_reproduce {
+        assert!(by_commands.iter().any(|(f, _)| f == file) || file.starts_with("figures"), "{}", file.display());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `--only` runs the steps named and nothing else; a name that is not a
+/// step is refused naming `--only` and every step.
+#[test]
+fn reproduce_only_runs_the_named_steps() {
+    let dir = scratch("only");
+    let (results, report) = (dir.join("results"), dir.join("paper/README.md"));
+    let places = ["--out", results.to_str().unwrap(), "--report", report.to_str().unwrap()];
+    let all = listed(&places);
+    let names: Vec<&str> = all.iter().map(|(name, _)| name.as_str()).collect();
+    assert_eq!((names.first(), names.last()), (Some(&"experiments"), Some(&"report")), "{names:?}");
+    assert!(all.iter().all(|(_, commands)| !commands.is_empty()), "{all:?}");
+    let experiments = &all[0].1;
+    assert!(experiments.contains(&format!("kick run experiments/table2.toml --out {}", results.display())), "{experiments:?}");
+
+    let out = kick(&[&["reproduce", "--only", "experiments,figure"], &places[..]].concat());
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("--only") && stderr.contains("`figure`"), "{stderr}");
+    for name in &names {
+        assert!(stderr.contains(name), "{name}: {stderr}");
+    }
+    assert!(!results.exists(), "a refused --only ran something");
+
+    let out = kick(&[&["reproduce", "--only", "checks"], &places[..]].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("# kick check\nchecks: "), "{}", String::from_utf8_lossy(&out.stdout));
+    assert!(!results.exists() && !report.exists(), "--only checks wrote files");
+    let out = kick(&["reproduce", "--check", "--only", "checks"]);
+    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("--only"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

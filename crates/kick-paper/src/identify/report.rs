@@ -512,8 +512,8 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, String> {
     let _ = writeln!(
         w,
         "## Data formats\n\n\
-         See the README section \"Identification and contact laws\" and the layouts in \
-         `crates/kick-runner/src/identify/files.rs`. Files here: {}.\n\n\
+         See `crates/kick-identify/README.md` and the layouts in \
+         [reference/files.md](reference/files.md). Files here: {}.\n\n\
          ## Not covered\n\n\
          - One time offset for all channels (no per-channel delays or clock drift).\n\
          - The (k, c) misfit maps are stored in `{IDENTIFIABILITY}` but not drawn.\n\

@@ -1,7 +1,8 @@
 //! `kick reproduce --check` on a small experiment: a second run writes the
 //! same bytes, and a changed value, page or stale file is named.
 
-use kick_paper::reproduce::{check, reproduce, ReproduceSettings, Steps};
+
+use kick_paper::reproduce::{check, list, reproduce, ReproduceSettings, Steps, STEP_NAMES};
 use std::path::{Path, PathBuf};
 
 const SMALL: &str = r#"
@@ -26,7 +27,7 @@ fn setup(name: &str) -> (PathBuf, ReproduceSettings) {
         out: dir.join("results"),
         report: dir.join("paper/README.md"),
         quick_bench: true,
-        steps: Steps::Experiments,
+        steps: Steps::only(&["experiments"]),
     };
     reproduce(&settings, &mut std::io::sink()).expect("first run");
     (dir, settings)
@@ -72,5 +73,36 @@ fn check_names_every_file_and_dataset_that_differs() {
     assert_eq!(found.len(), 3, "{found:?}");
     // The committed files are left as they were.
     assert_eq!(std::fs::read(dir.join("results/stale.h5")).unwrap(), b"old");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The steps run in their one order whatever order `--only` names them in,
+/// each under the command line made from its call's arguments; a name that
+/// is not a step is refused naming `--only` and every step; `--only checks`
+/// writes no file and still counts the checks.
+#[test]
+fn only_runs_the_named_steps_in_order() {
+    let (dir, mut settings) = setup("only");
+    settings.steps = Steps::only(&["checks", "experiments"]);
+    let listed = list(&settings).expect("list").steps;
+    let small = dir.join("experiments/small.toml");
+    let expected = [
+        ("experiments".to_string(), vec![format!("kick run {} --out {}", small.display(), dir.join("results").display())]),
+        ("checks".to_string(), vec!["kick check".to_string()]),
+    ];
+    assert_eq!(listed, expected);
+
+    settings.steps = Steps::only(&["checks", "chekcs"]);
+    let error = reproduce(&settings, &mut std::io::sink()).expect_err("an unknown step");
+    assert!(error.starts_with("--only: no step `chekcs`"), "{error}");
+    assert!(STEP_NAMES.iter().all(|name| error.contains(name)), "{error}");
+
+    let _ = std::fs::remove_dir_all(dir.join("results"));
+    settings.steps = Steps::only(&["checks"]);
+    let mut log = Vec::new();
+    let done = reproduce(&settings, &mut log).expect("checks");
+    assert_eq!(done.checks, kick_study::checks::run_all().rows.len());
+    assert!(String::from_utf8_lossy(&log).starts_with("\n# kick check\nchecks: "), "{}", String::from_utf8_lossy(&log));
+    assert!(!dir.join("results").exists() && !settings.report.exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
