@@ -26,11 +26,17 @@
 //!   (J_t = −μ J_n û). The lever is R, the undeformed radius (Cross's
 //!   model; a ball flattened by δ has its patch nearer R − δ, issue 22
 //!   item 4); spin about the normal is unchanged (no torsional friction).
+//!
+//! The ball's law is the shell ([`BallLaw::Shell`], the default) or any law
+//! of the kick's family by its `--law` name (the paper's Eq. 20 with its k,
+//! c, n; the others with a target restitution at this impact speed), so the
+//! kick's ball can be put through the same tests.
 
 use kick_compliant::{Accurate, Reduced};
 use kick_core::parameters::{Bound, DefaultValue, Level, ParameterDef, Shape, Valid, Value};
 use kick_core::shell::{ShellBall, GAS_EXPONENT, INFLATION_PRESSURE, SHELL_LOSS, SHELL_STIFFNESS};
-use kick_core::{KickError, Outcome, Scenario, DEFAULT_BALL_MASS, DEFAULT_BALL_RADIUS, GRAVITY};
+use kick_core::parameters::{DAMPING, EXPONENT, RESTITUTION, STIFFNESS};
+use kick_core::{AnyLaw, ContactLaw, KickError, LawKind, Outcome, Scenario, DEFAULT_BALL_MASS, DEFAULT_BALL_RADIUS, GRAVITY};
 use serde::Serialize;
 
 /// The plate's mass, kg: μ = m_b m_f/(m_b + m_f) equals m_b to 1e-15
@@ -57,10 +63,15 @@ use Bound::{Closed, Open, Unbounded};
 use DefaultValue::{Derived, Number, Unset};
 use Shape::{Scalar, Vector3};
 
-/// Every parameter of a bounce, declared once: the shot, the ball, and the
-/// shell law's own (kick-core's `shell::BALL_PARAMETERS`). Flags, keys and
-/// refusals use these names.
-pub static BOUNCE_PARAMETERS: [ParameterDef; 14] = [
+/// Every parameter of a bounce, declared once: the kick family's law
+/// parameters (kick-core's, for `law` other than `shell`), the shot, the
+/// ball, and the shell law's own (kick-core's `shell::BALL_PARAMETERS`).
+/// Flags, keys and refusals use these names.
+pub static BOUNCE_PARAMETERS: [ParameterDef; 18] = [
+    STIFFNESS,
+    DAMPING,
+    EXPONENT,
+    RESTITUTION,
     bounce("speed", "V", "m/s", Scalar, Unset("required, unless drop_height gives it"), Open(0.0), Unbounded,
         "finite and > 0, m/s; not with drop_height", "Impact speed of the ball's centre"),
     bounce("angle", "θ", "deg", Scalar, Number(0.0), Closed(0.0), Open(90.0),
@@ -101,10 +112,42 @@ pub fn parameter(name: &str) -> Result<&'static ParameterDef, kick_core::paramet
     })
 }
 
-/// The values given for a bounce, by declared name; validated by [`BounceSpec::build`].
+/// The ball's contact law by name: `shell`, or a law of the kick's family.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum LawChoice {
+    Shell,
+    Kick(LawKind),
+}
+
+impl LawChoice {
+    pub const NAMES: &'static str =
+        "shell, power-law, hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt";
+
+    pub fn from_name(name: &str) -> Result<LawChoice, kick_core::laws::LawError> {
+        match name {
+            "shell" => Ok(LawChoice::Shell),
+            _ => LawKind::from_name(name)
+                .map(LawChoice::Kick)
+                .map_err(|_| kick_core::laws::LawError::UnknownLaw { name: name.to_string(), expected: LawChoice::NAMES }),
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            LawChoice::Shell => "shell",
+            LawChoice::Kick(kind) => kind.name(),
+        }
+    }
+}
+
+/// The values given for a bounce, by declared name, and the law;
+/// validated by [`BounceSpec::build`].
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct BounceSpec {
     values: Vec<(&'static str, Value)>,
+    /// `None`: the shell.
+    pub law: Option<LawChoice>,
 }
 
 impl BounceSpec {
@@ -173,13 +216,38 @@ impl BounceSpec {
             Some(i) => i,
             None => shell,
         };
-        let law = ShellBall::new(
-            number("inflation_pressure")?,
-            radius,
-            number("gas_exponent")?,
-            number("shell_stiffness")?,
-            number("shell_loss")?,
-        )?;
+        let choice = self.law.unwrap_or(LawChoice::Shell);
+        // A parameter of the other kind of law would be ignored: refuse it.
+        let (theirs, own): (&[&ParameterDef], _) = match choice {
+            LawChoice::Shell => (&[&STIFFNESS, &DAMPING, &EXPONENT, &RESTITUTION], "the kick family's laws (law power-law, ...)"),
+            LawChoice::Kick(_) => (&[&INFLATION_PRESSURE, &GAS_EXPONENT, &SHELL_STIFFNESS, &SHELL_LOSS], "law shell"),
+        };
+        if let Some(p) = theirs.iter().find(|p| self.given(p.name).is_some()) {
+            return Err(KickError::DoesNotApply {
+                given: p.name,
+                to: format!("law `{}`", choice.name()),
+                reason: if own == "law shell" { "it is a parameter of law shell" } else { "it is a parameter of the kick family's laws, not of law shell" },
+            });
+        }
+        let law = match choice {
+            LawChoice::Shell => BallLaw::Shell(ShellBall::new(
+                number("inflation_pressure")?,
+                radius,
+                number("gas_exponent")?,
+                number("shell_stiffness")?,
+                number("shell_loss")?,
+            )?),
+            LawChoice::Kick(kind) => {
+                kind.check_given(self.given("damping").is_some(), self.given("restitution").is_some())?;
+                BallLaw::Kick {
+                    kind,
+                    stiffness: number("stiffness")?,
+                    damping: number("damping")?,
+                    exponent: number("exponent")?,
+                    restitution: get("restitution")?,
+                }
+            }
+        };
         Ok(Bounce {
             speed,
             angle,
@@ -215,7 +283,17 @@ pub struct Bounce {
     pub friction: f64,
     pub tangential_restitution: f64,
     pub gravity: f64,
-    pub law: ShellBall,
+    pub law: BallLaw,
+}
+
+/// The ball's normal contact law.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "law", rename_all = "kebab-case")]
+pub enum BallLaw {
+    Shell(ShellBall),
+    /// A law of the kick's family, built at the bounce's impact speed
+    /// (`Scenario::with_law`: a target restitution is met at this speed).
+    Kick { kind: LawKind, stiffness: f64, damping: f64, exponent: f64, restitution: Option<f64> },
 }
 
 /// Whether the contact point stopped slipping (or reversed, e_t > 0).
@@ -256,11 +334,17 @@ pub struct BounceOutcome {
     pub evaluations: u64,
 }
 
-/// The 1D normal contact: ball at V_n onto the plate, gravity as the drive (module docs).
+/// The 1D normal contact: ball at V_n onto the plate, gravity as the drive
+/// (module docs); with the shell, Eq. 20's k, c, n only set the solvers'
+/// scales (the small-δ stiffness, linear).
 pub fn normal_scenario(b: &Bounce, normal_speed: f64) -> Result<Scenario, KickError> {
-    // Eq. 20's k, c, n only set the solvers' scales: the small-δ stiffness, linear.
-    let k0 = b.law.small_compression_stiffness();
-    Scenario::from_values([b.mass, PLATE_MASS, normal_speed, 0.0, k0, 0.0, 1.0, b.mass * b.gravity])
+    let scenario = |k, c, n| Scenario::from_values([b.mass, PLATE_MASS, normal_speed, 0.0, k, c, n, b.mass * b.gravity]);
+    match b.law {
+        BallLaw::Shell(shell) => scenario(shell.small_compression_stiffness(), 0.0, 1.0),
+        BallLaw::Kick { kind, stiffness, damping, exponent, restitution } => {
+            scenario(stiffness, damping, exponent)?.with_law(kind, restitution)
+        }
+    }
 }
 
 /// Which solver runs the normal phase: `Reduced` (Dop853 on the relative
@@ -279,7 +363,7 @@ impl Default for NormalSolver {
 }
 
 impl NormalSolver {
-    pub fn solve(&self, scenario: &Scenario, law: ShellBall) -> Result<Outcome, KickError> {
+    pub fn solve<L: ContactLaw + Copy>(&self, scenario: &Scenario, law: L) -> Result<Outcome, KickError> {
         match self {
             NormalSolver::Reduced(r) => r.solve_law(scenario, law, None),
             NormalSolver::Accurate(a) => a.solve_law(scenario, law),
@@ -297,7 +381,11 @@ pub fn solve(b: &Bounce, solver: NormalSolver) -> Result<BounceOutcome, KickErro
     let (sin, cos) = b.angle.to_radians().sin_cos();
     let v_in = [b.speed * sin, 0.0, -b.speed * cos];
     let normal_speed = b.speed * cos;
-    let o = solver.solve(&normal_scenario(b, normal_speed)?, b.law)?;
+    let scenario = normal_scenario(b, normal_speed)?;
+    let o = match b.law {
+        BallLaw::Shell(shell) => solver.solve(&scenario, shell)?,
+        BallLaw::Kick { .. } => solver.solve::<AnyLaw>(&scenario, scenario.contact_law())?,
+    };
     let j_n = o.impulse;
     let r = b.radius;
     let [wx, wy, wz] = b.spin;

@@ -17,6 +17,11 @@ impl FlagSpec for BounceSpec {
     }
 }
 
+/// `--law NAME`: shell or a law of the kick's family.
+pub fn parse_law(name: &str) -> Result<kick_bounce::LawChoice, String> {
+    kick_bounce::LawChoice::from_name(name).map_err(|e| e.to_string())
+}
+
 /// The outcome, printable.
 #[derive(serde::Serialize)]
 #[serde(transparent)]

@@ -121,6 +121,10 @@ struct BounceArgs {
     /// The declared bounce parameters: --speed or --drop-height required
     #[command(flatten)]
     bounce: Flags<kick_bounce::BounceSpec>,
+    /// The ball's contact law: shell (the pressurised ball, kick-core's
+    /// ShellBall) or a law of the kick's family by its --law name
+    #[arg(long, value_name = "NAME", default_value = "shell", value_parser = bounce::parse_law)]
+    law: kick_bounce::LawChoice,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
 }
@@ -537,7 +541,11 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(a.format, &simulation)
         }
         Command::Flight(a) => out.print(a.format, &flight::flight_report(&a.flight.spec(), a.history.request()?.as_ref())?),
-        Command::Bounce(a) => out.print(a.format, &bounce::bounce(&a.bounce.spec())?),
+        Command::Bounce(a) => {
+            let mut spec = a.bounce.spec();
+            spec.law = Some(a.law);
+            out.print(a.format, &bounce::bounce(&spec)?)
+        }
         Command::Table2(a) => {
             let table = table2::compare(&a.scenarios)?;
             out.print(a.format, &table)?;
