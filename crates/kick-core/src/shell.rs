@@ -138,14 +138,24 @@ impl ShellBall {
 
     /// V(δ) = V0 − πδ²(3R − δ)/3.
     pub fn gas_volume(&self, compression: f64) -> f64 {
-        let d = compression.clamp(0.0, 2.0 * self.radius);
-        self.volume() - PI * d * d * (3.0 * self.radius - d) / 3.0
+        self.volume() - self.cap_volume(compression)
     }
 
-    /// Gauge pressure P(δ) − p_atm.
+    /// Cap volume V0 − V(δ) = πδ²(3R − δ)/3, computed directly (not as a difference).
+    fn cap_volume(&self, compression: f64) -> f64 {
+        let d = compression.clamp(0.0, 2.0 * self.radius);
+        PI * d * d * (3.0 * self.radius - d) / 3.0
+    }
+
+    /// ln(V0/V) = −ln(1 − cap/V0), accurate for a small cap.
+    fn log_compression_ratio(&self, compression: f64) -> f64 {
+        -(-self.cap_volume(compression) / self.volume()).ln_1p()
+    }
+
+    /// Gauge pressure P(δ) − p_atm = p0 + (p0 + p_atm)((V0/V)^γ − 1).
     pub fn gauge_pressure(&self, compression: f64) -> f64 {
         let absolute = self.pressure + self.atmospheric_pressure;
-        absolute * (self.volume() / self.gas_volume(compression)).powf(self.gas_exponent) - self.atmospheric_pressure
+        self.pressure + absolute * (self.gas_exponent * self.log_compression_ratio(compression)).exp_m1()
     }
 
     /// dF/dδ at δ = 0: 2πR p0 + k_s (the gas is not yet compressed).
@@ -163,8 +173,8 @@ impl ShellBall {
         let d = compression.min(2.0 * r);
         let area = PI * d * (2.0 * r - d);
         let volume = self.gas_volume(d);
-        let absolute = (self.pressure + self.atmospheric_pressure) * (self.volume() / volume).powf(self.gas_exponent);
-        let gauge = absolute - self.atmospheric_pressure;
+        let gauge = self.gauge_pressure(d);
+        let absolute = gauge + self.atmospheric_pressure;
         // dP/dδ = γ P A / V (dV/dδ = −A).
         let d_pressure = self.gas_exponent * absolute * area / volume;
         let force = gauge * area + self.shell_stiffness * d;
@@ -191,14 +201,13 @@ impl ContactLaw for ShellBall {
     /// (P0 V0 ln(V0/V) − p_atm (V0 − V) at γ = 1): −∫ (P − p_atm) dV.
     fn potential(&self, compression: f64) -> f64 {
         let d = compression.max(0.0);
-        let (v0, v) = (self.volume(), self.gas_volume(d));
+        let v0 = self.volume();
         let p0 = self.pressure + self.atmospheric_pressure;
         let g = self.gas_exponent;
-        let ratio = v0 / v;
-        let gas = if g == 1.0 { p0 * v0 * ratio.ln() } else { p0 * v0 * (ratio.powf(g - 1.0) - 1.0) / (g - 1.0) };
-        // v0 − v as the cap volume itself, not a difference of two near-equal numbers.
-        let cap = PI * d * d * (3.0 * self.radius - d.min(2.0 * self.radius)) / 3.0;
-        gas - self.atmospheric_pressure * cap + 0.5 * self.shell_stiffness * d * d
+        // ln(V0/V) and expm1 keep the digits of a small cap (no 1 + tiny − 1).
+        let log_ratio = self.log_compression_ratio(d);
+        let gas = if g == 1.0 { p0 * v0 * log_ratio } else { p0 * v0 * ((g - 1.0) * log_ratio).exp_m1() / (g - 1.0) };
+        gas - self.atmospheric_pressure * self.cap_volume(d) + 0.5 * self.shell_stiffness * d * d
     }
     #[inline]
     fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
@@ -291,6 +300,19 @@ mod tests {
                 let u = b.potential(d);
                 assert!((integral - u).abs() <= 1e-11 * u, "{b:?} δ={d}: {integral} vs {u}");
             }
+        }
+    }
+
+    /// Tiny δ: U = ∫ (P − p_atm) dV → p0 (V0 − V) + O(cap²), kept to
+    /// rounding (a plain (V0/V)^(γ−1) − 1 loses ten digits at δ = 1e-6 m).
+    #[test]
+    fn potential_keeps_its_digits_at_small_compression() {
+        let b = ShellBall::new(8.0e4, 0.11, 1.4, 0.0, 0.0).unwrap();
+        for d in [1e-6, 1e-8] {
+            let cap = PI * d * d * (3.0 * 0.11 - d) / 3.0;
+            let u = b.potential(d);
+            // Next order: γ P0 cap²/(2 V0), relative γ P0 cap/(2 p0 V0) < 1e-9 here.
+            assert!((u / (8.0e4 * cap) - 1.0).abs() < 1e-9, "δ={d}: {u} vs {}", 8.0e4 * cap);
         }
     }
 
