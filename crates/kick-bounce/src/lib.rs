@@ -195,7 +195,8 @@ impl BounceSpec {
             }
             (Some(_), Some(_)) => return Err(does_not_apply("speed", "drop_height", "the drop height sets the impact speed")),
             (None, None) => {
-                return Err(KickError::InvalidParameter { name: "speed", value: f64::NAN, requirement: "given (or drop_height)" })
+                // NaN: no value was given (the message says what is needed).
+                return Err(KickError::InvalidParameter { name: "speed", value: f64::NAN, requirement: "given, or drop_height instead" })
             }
         };
         let spin = match self.given("spin") {
@@ -218,16 +219,17 @@ impl BounceSpec {
         };
         let choice = self.law.unwrap_or(LawChoice::Shell);
         // A parameter of the other kind of law would be ignored: refuse it.
-        let (theirs, own): (&[&ParameterDef], _) = match choice {
-            LawChoice::Shell => (&[&STIFFNESS, &DAMPING, &EXPONENT, &RESTITUTION], "the kick family's laws (law power-law, ...)"),
-            LawChoice::Kick(_) => (&[&INFLATION_PRESSURE, &GAS_EXPONENT, &SHELL_STIFFNESS, &SHELL_LOSS], "law shell"),
+        let (others, reason): (&[&ParameterDef], _) = match choice {
+            LawChoice::Shell => (
+                &[&STIFFNESS, &DAMPING, &EXPONENT, &RESTITUTION],
+                "it is a parameter of the kick family's laws (--law power-law, ...), not of the shell",
+            ),
+            LawChoice::Kick(_) => {
+                (&[&INFLATION_PRESSURE, &GAS_EXPONENT, &SHELL_STIFFNESS, &SHELL_LOSS], "it is a parameter of law shell")
+            }
         };
-        if let Some(p) = theirs.iter().find(|p| self.given(p.name).is_some()) {
-            return Err(KickError::DoesNotApply {
-                given: p.name,
-                to: format!("law `{}`", choice.name()),
-                reason: if own == "law shell" { "it is a parameter of law shell" } else { "it is a parameter of the kick family's laws, not of law shell" },
-            });
+        if let Some(p) = others.iter().find(|p| self.given(p.name).is_some()) {
+            return Err(KickError::DoesNotApply { given: p.name, to: format!("law `{}`", choice.name()), reason });
         }
         let law = match choice {
             LawChoice::Shell => BallLaw::Shell(ShellBall::new(
