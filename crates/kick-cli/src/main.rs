@@ -1,6 +1,7 @@
 //! `kick`: the command line of the kick workspace. Each subcommand parses its
 //! arguments, calls one function of the library crates (kick-study, kick-store, kick-paper) and prints what it returns.
 
+mod bounce;
 mod flags;
 mod output;
 mod reference;
@@ -41,6 +42,14 @@ enum Command {
     Simulate3d(Simulate3d),
     /// Fly the ball from its launch: drag crisis, Magnus lift, landing, apex, plane crossing.
     Flight(FlightArgs),
+    /// Fire the ball at a rigid, massive, horizontal plate: the shell ball
+    /// (pressure over the flat patch, adiabatic gas, shell loss; kick-bounce).
+    ///
+    /// Axes: the plate is z = 0 with normal +z; the ball comes down in the
+    /// x–z plane at --angle from the normal; --spin in the same axes. Give
+    /// --speed, or --drop-height for a square drop from rest (FIFA's rebound
+    /// test: --drop-height 2 at the default 0.8 bar).
+    Bounce(BounceArgs),
     /// Table 2 side by side: printed, seed-rk4 and accurate values.
     Table2(Table2),
     /// Cross-model checks: each model level against the others' limits (exits 1 on a failure).
@@ -111,6 +120,19 @@ struct Simulate {
     /// The flight's parameters (with --flight)
     #[command(flatten)]
     flight_parameters: Flags<FlightAfter1d>,
+}
+
+#[derive(Args)]
+struct BounceArgs {
+    /// The declared bounce parameters: --speed or --drop-height required
+    #[command(flatten)]
+    bounce: Flags<kick_bounce::BounceSpec>,
+    /// The ball's contact law: shell (the pressurised ball, kick-core's
+    /// ShellBall) or a law of the kick's family by its --law name
+    #[arg(long, value_name = "NAME", default_value = "shell", value_parser = bounce::parse_law)]
+    law: kick_bounce::LawChoice,
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
 }
 
 #[derive(Args)]
@@ -540,6 +562,11 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(a.format, &simulation)
         }
         Command::Flight(a) => out.print(a.format, &flight::flight_report(&a.flight.spec(), a.history.request()?.as_ref())?),
+        Command::Bounce(a) => {
+            let mut spec = a.bounce.spec();
+            spec.law = Some(a.law);
+            out.print(a.format, &bounce::bounce(&spec)?)
+        }
         Command::Table2(a) => {
             let table = table2::compare(&a.scenarios)?;
             out.print(a.format, &table)?;

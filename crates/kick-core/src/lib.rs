@@ -17,6 +17,7 @@ pub mod parameters;
 pub mod paper;
 pub mod roots;
 pub mod scenario;
+pub mod shell;
 pub mod special;
 
 pub use error::{KickError, Status};
@@ -30,6 +31,7 @@ pub use outcome::{
 };
 pub use parameters::{Level, ParameterDef, SetLaw, SetParameter, Value, PARAMETERS};
 pub use scenario::{Parameter, Scenario, ScenarioSpec};
+pub use shell::ShellBall;
 
 /// Standard gravity of every model level that has gravity (kick-3d's scene,
 /// kick-flight), m/s².

@@ -34,6 +34,9 @@ pub enum Level {
     Kick3d,
     /// The ball's flight after the kick (kick-flight's own list).
     Flight,
+    /// The ball alone: the shell law's parameters (kick-core's `shell`) and
+    /// a bounce on a rigid plate (kick-bounce's own list).
+    Bounce,
 }
 
 impl Level {
@@ -42,6 +45,7 @@ impl Level {
             Level::Scenario => "1D scenario",
             Level::Kick3d => "3D kick",
             Level::Flight => "flight",
+            Level::Bounce => "bounce",
         }
     }
 }

@@ -1,5 +1,6 @@
 //! The `kick` binary's contract, one test binary: names other tools read, exit codes, messages, files.
 
+mod bounce;
 mod check_and_leg;
 mod cli;
 mod fit_and_laws;

@@ -1,0 +1,49 @@
+//! `kick bounce`: the flags of kick-bounce's declared parameters, one call
+//! to [`kick_bounce::run`], the outcome printed.
+
+use crate::flags::FlagSpec;
+use kick_bounce::{BounceOutcome, BounceSpec, BOUNCE_PARAMETERS};
+use kick_core::parameters::{ParameterDef, Value};
+use kick_core::KickError;
+
+impl FlagSpec for BounceSpec {
+    const LAW: bool = false;
+    fn parameters() -> Vec<&'static ParameterDef> {
+        BOUNCE_PARAMETERS.iter().collect()
+    }
+    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
+        // Flags exist only for declared parameters, with their shapes.
+        let _ = BounceSpec::set(self, parameter.name, value);
+    }
+}
+
+/// `--law NAME`: shell or a law of the kick's family.
+pub fn parse_law(name: &str) -> Result<kick_bounce::LawChoice, String> {
+    kick_bounce::LawChoice::from_name(name).map_err(|e| e.to_string())
+}
+
+/// The outcome, printable.
+#[derive(serde::Serialize)]
+#[serde(transparent)]
+pub struct Report(pub BounceOutcome);
+
+impl kick_runner::Printable for Report {
+    fn text(&self) -> String {
+        self.0.text()
+    }
+}
+
+/// Bounce, with a refusal naming the flag the user gave.
+pub fn bounce(spec: &BounceSpec) -> Result<Report, String> {
+    kick_bounce::run(spec).map(Report).map_err(|e| {
+        let name = match &e {
+            KickError::InvalidParameter { name, .. } => Some(*name),
+            KickError::DoesNotApply { given, .. } => Some(*given),
+            _ => None,
+        };
+        match name.and_then(|n| kick_bounce::parameter(n).ok()) {
+            Some(p) => format!("{e} (flag {})", p.flag()),
+            None => e.to_string(),
+        }
+    })
+}

@@ -1,0 +1,71 @@
+//! `kick bounce`: the JSON contract, the FIFA drop, refusals naming the flag.
+
+use super::kick;
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let out = kick(args);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn bounce_json_has_the_contract_keys() {
+    let j = json(&["bounce", "--speed", "12", "--angle", "25", "--spin", "0,-10,3", "--format", "json"]);
+    for key in ["restitution", "contact_time", "peak_force", "max_compression"] {
+        assert!(j[key].as_f64().unwrap() > 0.0, "{key}");
+    }
+    for key in ["exit_velocity", "exit_spin"] {
+        assert_eq!(j[key].as_array().unwrap().len(), 3, "{key}");
+    }
+    assert!(j.get("rebound_height").is_none());
+    // Normal exit speed is e times the normal impact speed; z-spin untouched.
+    let e = j["restitution"].as_f64().unwrap();
+    let vz = j["exit_velocity"][2].as_f64().unwrap();
+    assert!((vz - e * 12.0 * 25f64.to_radians().cos()).abs() < 1e-12 * vz, "{vz}");
+    assert_eq!(j["exit_spin"][2].as_f64().unwrap(), 3.0);
+}
+
+/// The library's answer, through the flags: the same numbers as `kick_bounce::run`.
+#[test]
+fn bounce_drop_matches_the_library() {
+    let j = json(&["bounce", "--drop-height", "2", "--inflation-pressure", "70000", "--format", "json"]);
+    let mut spec = kick_bounce::BounceSpec::default();
+    spec.set("drop_height", kick_core::Value::Number(2.0)).unwrap();
+    spec.set("inflation_pressure", kick_core::Value::Number(7.0e4)).unwrap();
+    let o = kick_bounce::run(&spec).unwrap();
+    // To a few ulp: JSON text parsed back need not be the bit pattern printed.
+    let same = |a: f64, b: f64| (a - b).abs() <= 4.0 * f64::EPSILON * b.abs();
+    assert!(same(j["rebound_height"].as_f64().unwrap(), o.rebound_height.unwrap()));
+    assert!(same(j["peak_force"].as_f64().unwrap(), o.peak_force));
+}
+
+#[test]
+fn bounce_refusals_name_the_flag() {
+    for (args, flag) in [
+        (&["bounce", "--speed", "0"][..], "--speed"),
+        (&["bounce", "--speed", "nan"][..], "--speed"),
+        (&["bounce"][..], "--speed"),
+        (&["bounce", "--speed", "5", "--angle", "90"][..], "--angle"),
+        (&["bounce", "--speed", "5", "--inflation-pressure", "-1"][..], "--inflation-pressure"),
+        (&["bounce", "--speed", "5", "--drop-height", "2"][..], "--speed"),
+        (&["bounce", "--drop-height", "2", "--angle", "5"][..], "--angle"),
+        (&["bounce", "--speed", "5", "--spin", "1,2"][..], "--spin"),
+        (&["bounce", "--speed", "5", "--stiffness", "1e5"][..], "--stiffness"),
+        (&["bounce", "--law", "power-law", "--speed", "5", "--shell-loss", "0.01"][..], "--shell-loss"),
+        (&["bounce", "--law", "hertz", "--speed", "5"][..], "--law"),
+    ] {
+        let out = kick(args);
+        assert_eq!(out.status.code(), Some(if flag == "--spin" || flag == "--law" { 2 } else { 1 }), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(flag), "{args:?}: {err}");
+    }
+}
+
+/// `--law power-law` is the kick's default ball (Eq. 20, Table 1): the
+/// drop the issue reports, e ≈ 0.64.
+#[test]
+fn bounce_takes_the_kick_family_laws() {
+    let j = json(&["bounce", "--law", "power-law", "--drop-height", "2", "--format", "json"]);
+    let e = j["restitution"].as_f64().unwrap();
+    assert!((e - 0.64).abs() < 0.01, "{e}");
+}
