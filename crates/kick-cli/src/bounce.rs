@@ -27,7 +27,7 @@ pub fn parse_law(name: &str) -> Result<kick_bounce::LawChoice, String> {
 #[serde(transparent)]
 pub struct Report(pub BounceOutcome);
 
-impl kick_runner::Printable for Report {
+impl kick_study::Printable for Report {
     fn text(&self) -> String {
         self.0.text()
     }
