@@ -266,6 +266,34 @@ fn in_pool<T: Send>(threads: Option<usize>, f: impl FnOnce() -> T + Send) -> PyR
     }
 }
 
+/// A keyword's value as a float64 array (a switch's bools as 0 and 1), by
+/// the rules of `params::real_array`; a switch takes bools only, a number
+/// or vector no bools.
+fn input_array<'py>(parameter: &'static ParameterDef, value: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let takes = match parameter.shape {
+        Shape::Switch => "true or false",
+        Shape::Scalar => "real numbers",
+        Shape::Vector3 => "real numbers (x, y, z on the last axis)",
+    };
+    let (array, switches) = real_array(parameter.name, takes, value)?;
+    if switches != (parameter.shape == Shape::Switch) {
+        return Err(PyTypeError::new_err(format!("`{}` takes {takes}, got {}", parameter.name, described(value))));
+    }
+    Ok(array)
+}
+
+/// `input_array` for `kick.dask`, which splits the rows on the client: the
+/// keyword `name` of `function` (`simulate_many` or `simulate3d_many`).
+#[pyfunction]
+pub fn many_input<'py>(function: &str, name: &str, value: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let levels = match function {
+        "simulate_many" => ScenarioSpec::LEVELS,
+        "simulate3d_many" => KickSpec::LEVELS,
+        other => return Err(value_error(format!("no function `{other}` takes arrays"))),
+    };
+    input_array(parameters::find_at(levels, name).map_err(value_error)?, value)
+}
+
 /// The whole call: inputs from the keywords, outputs allocated, rows solved
 /// without the GIL, the dict of arrays.
 fn run_many<'py, M: Model>(
@@ -281,19 +309,9 @@ fn run_many<'py, M: Model>(
         for (key, value) in arrays.iter() {
             let name: String = key.extract()?;
             let parameter = parameters::find_at(M::Spec::LEVELS, &name).map_err(value_error)?;
-            if value.is_none() {
-                continue;
+            if !value.is_none() {
+                given.push((parameter, input_array(parameter, &value)?));
             }
-            let takes = match parameter.shape {
-                Shape::Switch => "true or false",
-                Shape::Scalar => "real numbers",
-                Shape::Vector3 => "real numbers (x, y, z on the last axis)",
-            };
-            let (array, switches) = real_array(parameter.name, takes, &value)?;
-            if switches != (parameter.shape == Shape::Switch) {
-                return Err(PyTypeError::new_err(format!("`{name}` takes {takes}, got {}", described(&value))));
-            }
-            given.push((parameter, array));
         }
     }
     // Row shapes: a vector's array has a trailing axis of 3.
