@@ -9,6 +9,8 @@ use kick_identify::fit::{fit as identify, FitOptions, FitProblem};
 use kick_identify::{FitSpec, Observations};
 use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
+use crate::params::{names, optional_number, real_number, real_vector};
+use pyo3::exceptions::PyTypeError;
 use pyo3::types::PyDict;
 use std::collections::BTreeMap;
 
@@ -22,23 +24,29 @@ const SOURCE: &str = "fit data";
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
     py: Python<'py>,
-    time: Vec<f64>,
-    force: Option<Vec<f64>>,
+    time: &Bound<'py, PyAny>,
+    force: Option<&Bound<'py, PyAny>>,
     sigma: &Bound<'py, PyAny>,
-    free: Vec<String>,
+    free: &Bound<'py, PyAny>,
     law: &str,
-    time_offset: Option<f64>,
+    time_offset: Option<&Bound<'py, PyAny>>,
     data: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         // Keywords: channels (arrays over time) or known 1D parameters.
-        let mut channels: Vec<(Channel, Vec<f64>)> = force.map(|f| (Channel::Force, f)).into_iter().collect();
+        let time = real_vector("time", time)?;
+        let time_offset = optional_number("time_offset", time_offset)?;
+        let free = names("free", free)?;
+        let mut channels: Vec<(Channel, Vec<f64>)> = Vec::new();
+        if let Some(force) = force.filter(|f| !f.is_none()) {
+            channels.push((Channel::Force, real_vector("force", force)?));
+        }
         let known = PyDict::new(py);
         if let Some(data) = data {
             for (key, value) in data.iter() {
                 let name: String = key.extract()?;
                 match Channel::from_name(&name) {
-                    Ok(channel) if !value.is_none() => channels.push((channel, value.extract()?)),
+                    Ok(channel) if !value.is_none() => channels.push((channel, real_vector(&name, &value)?)),
                     Ok(_) => {}
                     Err(_) if parameters::find_at(ScenarioSpec::LEVELS, &name).is_ok() => known.set_item(key, value)?,
                     Err(_) => {
@@ -54,11 +62,24 @@ pub fn fit<'py>(
         }
         let data = HistoryData { times: time, channels }.checked(SOURCE).map_err(value_error)?;
         // One sigma for every channel, or one per channel by name.
-        let sigma: BTreeMap<Channel, f64> = match sigma.extract::<f64>() {
-            Ok(s) => data.channels.iter().map(|(c, _)| (*c, s)).collect(),
+        let sigma: BTreeMap<Channel, f64> = match sigma.cast::<PyDict>() {
+            Ok(given) => given
+                .iter()
+                .map(|(k, v)| {
+                    let name: String = k.extract().map_err(|_| PyTypeError::new_err(format!("`sigma`'s keys are channel names, got {k}")))?;
+                    Ok((Channel::from_name(&name).map_err(value_error)?, real_number(&format!("sigma[{name:?}]"), &v)?))
+                })
+                .collect::<PyResult<_>>()?,
             Err(_) => {
-                let given: BTreeMap<String, f64> = sigma.extract()?;
-                given.iter().map(|(k, v)| Ok((Channel::from_name(k).map_err(value_error)?, *v))).collect::<PyResult<_>>()?
+                let s = real_number("sigma", sigma).map_err(|e| {
+                    let got = sigma.get_type().name().map(|n| n.to_string()).unwrap_or_default();
+                    if e.is_instance_of::<PyTypeError>(py) {
+                        PyTypeError::new_err(format!("`sigma` takes a number or a dict {{channel: number}}, got {got} {}", sigma.repr().map(|r| r.to_string()).unwrap_or_default()))
+                    } else {
+                        e
+                    }
+                })?;
+                data.channels.iter().map(|(c, _)| (*c, s)).collect()
             }
         };
         let observations = Observations::history(WeightedHistory::new(data, sigma).map_err(value_error)?);

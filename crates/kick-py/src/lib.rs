@@ -24,6 +24,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::fmt::Display;
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::time::Duration;
 
 /// A `ValueError` carrying the library's message.
 pub(crate) fn value_error(e: impl Display) -> PyErr {
@@ -43,6 +46,45 @@ pub(crate) fn guard<T>(f: impl FnOnce() -> PyResult<T>) -> PyResult<T> {
     })
 }
 
+/// How often a long call checks for Ctrl-C.
+const SIGNAL_CHECK: Duration = Duration::from_millis(50);
+
+/// Run `work` without the GIL on a thread of its own while this thread
+/// checks for signals every [`SIGNAL_CHECK`] (Python runs its handlers on
+/// the main thread only, holding the GIL). When a handler raises
+/// (`KeyboardInterrupt` on Ctrl-C), `cancel` is set, `work` returns at its
+/// next look at it, and the exception is the answer.
+pub(crate) fn interruptible<T: Send>(py: Python<'_>, work: impl FnOnce(&AtomicBool) -> T + Send) -> PyResult<T> {
+    let cancel = AtomicBool::new(false);
+    let (answer, raised) = py.detach(|| {
+        std::thread::scope(|scope| {
+            let (done, finished) = mpsc::channel::<()>();
+            let cancel = &cancel;
+            let worker = scope.spawn(move || {
+                let answer = work(cancel);
+                let _ = done.send(());
+                answer
+            });
+            let mut raised = None;
+            // A panic drops `done` unsent: Disconnected, and `join` carries the panic on to `guard`.
+            while let Err(RecvTimeoutError::Timeout) = finished.recv_timeout(SIGNAL_CHECK) {
+                if raised.is_none() {
+                    if let Err(e) = Python::attach(|py| py.check_signals()) {
+                        cancel.store(true, Ordering::Relaxed);
+                        raised = Some(e);
+                    }
+                }
+            }
+            (worker.join(), raised)
+        })
+    });
+    match (answer, raised) {
+        (_, Some(e)) => Err(e),
+        (Ok(answer), None) => Ok(answer),
+        (Err(panic), None) => std::panic::resume_unwind(panic),
+    }
+}
+
 /// The contact law named as `kick simulate --law` names it.
 pub(crate) fn law(name: &str) -> PyResult<LawKind> {
     LawKind::from_name(name).map_err(value_error)
@@ -60,10 +102,11 @@ fn simulate<'py>(
     py: Python<'py>,
     solver: &str,
     law: &str,
-    dt: Option<f64>,
+    dt: Option<&Bound<'py, PyAny>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     guard(|| {
+        let dt = params::optional_number("dt", dt)?;
         let spec = params::scenario_spec(params, crate::law(law)?)?;
         let object = bridge::simulate(&spec, solver, dt).map_err(value_error)?;
         convert::json_to_py(py, &object)
@@ -77,10 +120,11 @@ fn simulate3d<'py>(
     py: Python<'py>,
     solver: &str,
     law: &str,
-    dt: Option<f64>,
+    dt: Option<&Bound<'py, PyAny>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     guard(|| {
+        let dt = params::optional_number("dt", dt)?;
         let spec = params::kick_spec(params, crate::law(law)?)?;
         let object = bridge::simulate3d(&spec, solver, dt).map_err(value_error)?;
         convert::json_to_py(py, &object)
@@ -96,16 +140,16 @@ fn history<'py>(
     py: Python<'py>,
     solver: &str,
     law: &str,
-    dt: Option<f64>,
+    dt: Option<&Bound<'py, PyAny>>,
     samples: Option<usize>,
-    interval: Option<f64>,
+    interval: Option<&Bound<'py, PyAny>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let spacing = spacing(samples, interval)?;
+        let spacing = spacing(samples, params::optional_number("interval", interval)?)?;
         let spec = params::scenario_spec(params, crate::law(law)?)?;
         let scenario = spec.build().map_err(value_error)?;
-        let solver = solver_1d(solver, dt)?;
+        let solver = solver_1d(solver, params::optional_number("dt", dt)?)?;
         let (_, history) =
             py.detach(|| solver.solve_sampled(&scenario, spacing, MAX_HISTORY_SAMPLES)).map_err(value_error)?;
         let out = PyDict::new(py);
@@ -136,11 +180,11 @@ fn history3d<'py>(
     solver: &str,
     law: &str,
     samples: Option<usize>,
-    interval: Option<f64>,
+    interval: Option<&Bound<'py, PyAny>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let spacing = spacing(samples, interval)?;
+        let spacing = spacing(samples, params::optional_number("interval", interval)?)?;
         let spec = params::kick_spec(params, crate::law(law)?)?;
         let (_, history) = py.detach(|| kick_study::simulate::sampled3d(&spec, solver, spacing)).map_err(value_error)?;
         let out = PyDict::new(py);
@@ -154,12 +198,16 @@ fn history3d<'py>(
 
 #[pymodule]
 fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    // Load numpy's C API now: loaded lazily, inside a call, a Ctrl-C during
+    // the import panics in rust-numpy.
+    PyArray1::<f64>::zeros(m.py(), 0, false);
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate3d, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;
     m.add_function(wrap_pyfunction!(history3d, m)?)?;
     m.add_function(wrap_pyfunction!(many::simulate_many, m)?)?;
     m.add_function(wrap_pyfunction!(many::simulate3d_many, m)?)?;
+    m.add_function(wrap_pyfunction!(many::many_input, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(flight::flight, m)?)?;
     m.add_function(wrap_pyfunction!(params::declared, m)?)?;

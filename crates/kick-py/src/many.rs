@@ -4,7 +4,7 @@
 //! that fails gets a status code (`kick_core::Status::code`), NaN outcomes
 //! and its message, not an exception.
 
-use crate::params::LawSpec;
+use crate::params::{described, real_array, LawSpec, MAX_AXES};
 use crate::{guard, value_error};
 use kick_3d::{KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
@@ -12,10 +12,11 @@ use kick_core::parameters::{self, ParameterDef, SetParameter, Shape, Value};
 use kick_core::{ScenarioSpec, Solver, Status, OBSERVABLES};
 use numpy::ndarray::{ArrayViewD, IxDyn};
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyMemoryError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyDict, PyList, PyTuple};
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Rows one parallel task solves in turn (as `kick run` chunks its rows).
 const CHUNK: usize = 1024;
@@ -193,8 +194,16 @@ struct Chunk<'a> {
     evaluations: &'a mut [u64],
 }
 
-/// Solve rows `chunk.start..` into the chunk's outputs; the failures (row, message).
-fn solve_chunk<M: Model>(model: &M, base: &M::Spec, inputs: &[Input], shape: &[usize], chunk: Chunk) -> Vec<(usize, String)> {
+/// Solve rows `chunk.start..` into the chunk's outputs; the failures (row,
+/// message). Returns early, rows unsolved, once `cancel` is set (Ctrl-C).
+fn solve_chunk<M: Model>(
+    model: &M,
+    base: &M::Spec,
+    inputs: &[Input],
+    shape: &[usize],
+    chunk: Chunk,
+    cancel: &AtomicBool,
+) -> Vec<(usize, String)> {
     let Chunk { start, rows, mut columns, status, evaluations } = chunk;
     let widths: Vec<usize> = model.columns().iter().map(|(_, w)| *w).collect();
     let mut row = vec![0.0; widths.iter().sum()];
@@ -202,6 +211,9 @@ fn solve_chunk<M: Model>(model: &M, base: &M::Spec, inputs: &[Input], shape: &[u
     let mut scratch = Vec::with_capacity(shape.len() + 1);
     let mut failures = Vec::new();
     for j in 0..rows {
+        if cancel.load(Ordering::Relaxed) {
+            break;
+        }
         unravel(start + j, shape, &mut index);
         let mut spec = *base;
         for input in inputs {
@@ -254,6 +266,34 @@ fn in_pool<T: Send>(threads: Option<usize>, f: impl FnOnce() -> T + Send) -> PyR
     }
 }
 
+/// A keyword's value as a float64 array (a switch's bools as 0 and 1), by
+/// the rules of `params::real_array`; a switch takes bools only, a number
+/// or vector no bools.
+fn input_array<'py>(parameter: &'static ParameterDef, value: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let takes = match parameter.shape {
+        Shape::Switch => "true or false",
+        Shape::Scalar => "real numbers",
+        Shape::Vector3 => "real numbers (x, y, z on the last axis)",
+    };
+    let (array, switches) = real_array(parameter.name, takes, value)?;
+    if switches != (parameter.shape == Shape::Switch) {
+        return Err(PyTypeError::new_err(format!("`{}` takes {takes}, got {}", parameter.name, described(value))));
+    }
+    Ok(array)
+}
+
+/// `input_array` for `kick.dask`, which splits the rows on the client: the
+/// keyword `name` of `function` (`simulate_many` or `simulate3d_many`).
+#[pyfunction]
+pub fn many_input<'py>(function: &str, name: &str, value: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let levels = match function {
+        "simulate_many" => ScenarioSpec::LEVELS,
+        "simulate3d_many" => KickSpec::LEVELS,
+        other => return Err(value_error(format!("no function `{other}` takes arrays"))),
+    };
+    input_array(parameters::find_at(levels, name).map_err(value_error)?, value)
+}
+
 /// The whole call: inputs from the keywords, outputs allocated, rows solved
 /// without the GIL, the dict of arrays.
 fn run_many<'py, M: Model>(
@@ -264,18 +304,14 @@ fn run_many<'py, M: Model>(
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let numpy = py.import("numpy")?;
-    let float64 = numpy.getattr("float64")?;
     let mut given: Vec<(&'static ParameterDef, Bound<'py, PyArrayDyn<f64>>)> = Vec::new();
     if let Some(arrays) = arrays {
         for (key, value) in arrays.iter() {
             let name: String = key.extract()?;
             let parameter = parameters::find_at(M::Spec::LEVELS, &name).map_err(value_error)?;
-            if value.is_none() {
-                continue;
+            if !value.is_none() {
+                given.push((parameter, input_array(parameter, &value)?));
             }
-            let array = numpy.getattr("asarray")?.call1((value, &float64))?;
-            let array = array.cast_into::<PyArrayDyn<f64>>().map_err(|e| PyValueError::new_err(e.to_string()))?;
-            given.push((parameter, array));
         }
     }
     // Row shapes: a vector's array has a trailing axis of 3.
@@ -294,7 +330,28 @@ fn run_many<'py, M: Model>(
         shapes.push((p.name, shape));
     }
     let shape = broadcast_shapes(&shapes)?;
-    let rows: usize = shape.iter().product();
+    // Outputs with a vector axis have one axis more than the rows.
+    let widest = model.columns().iter().find(|(_, w)| *w > 1);
+    let axes = shape.len() + usize::from(widest.is_some());
+    if axes > MAX_AXES {
+        let from = shapes.iter().max_by_key(|(_, s)| s.len()).map_or("", |(n, _)| *n);
+        let (column, _) = widest.map_or(("", 1), |(c, w)| (c.as_str(), *w));
+        return Err(PyValueError::new_err(format!(
+            "the rows' shape (from `{from}`) has {} axes, so `{column}` would have {axes}: at most {MAX_AXES}",
+            shape.len()
+        )));
+    }
+    // Every output's size before any is allocated: bytes per row, times rows.
+    let row_bytes = model.columns().iter().map(|(_, w)| w * size_of::<f64>()).sum::<usize>() + size_of::<u8>() + size_of::<u64>();
+    let rows = shape.iter().try_fold(1usize, |n, &k| n.checked_mul(k));
+    let bytes = rows.and_then(|n| n.checked_mul(row_bytes)).filter(|&b| b <= isize::MAX as usize);
+    let (Some(rows), Some(_)) = (rows, bytes) else {
+        let exact: Vec<String> = shape.iter().map(|k| k.to_string()).collect();
+        return Err(PyMemoryError::new_err(format!(
+            "outputs of {} rows ({row_bytes} bytes each) are larger than this machine can address",
+            exact.join(" x ")
+        )));
+    };
 
     let guards: Vec<PyReadonlyArrayDyn<'py, f64>> = given.iter().map(|(_, a)| a.readonly()).collect();
     let bases: Vec<ArrayViewD<f64>> = guards.iter().map(|g| g.as_array()).collect();
@@ -316,10 +373,16 @@ fn run_many<'py, M: Model>(
         }
         s
     };
-    let outputs: Vec<Bound<'py, PyArrayDyn<f64>>> =
-        model.columns().iter().map(|(_, w)| PyArrayDyn::<f64>::zeros(py, IxDyn(&with_axis(*w)), false)).collect();
-    let status = PyArrayDyn::<u8>::zeros(py, IxDyn(&shape), false);
-    let evaluations = PyArrayDyn::<u64>::zeros(py, IxDyn(&shape), false);
+    // Allocated by numpy, whose failure is a MemoryError (rust-numpy's `zeros` panics).
+    let zeros = |shape: Vec<usize>, dtype: &str| -> PyResult<Bound<'py, PyAny>> {
+        numpy.call_method1("zeros", (PyTuple::new(py, shape)?, numpy.getattr(dtype)?))
+    };
+    let mut outputs: Vec<Bound<'py, PyArrayDyn<f64>>> = Vec::with_capacity(model.columns().len());
+    for (_, w) in model.columns() {
+        outputs.push(zeros(with_axis(*w), "float64")?.cast_into().map_err(value_error)?);
+    }
+    let status: Bound<'py, PyArrayDyn<u8>> = zeros(shape.clone(), "uint8")?.cast_into().map_err(value_error)?;
+    let evaluations: Bound<'py, PyArrayDyn<u64>> = zeros(shape.clone(), "uint64")?.cast_into().map_err(value_error)?;
     let mut output_guards: Vec<_> = outputs.iter().map(|a| a.readwrite()).collect();
     let mut status_guard = status.readwrite();
     let mut evaluations_guard = evaluations.readwrite();
@@ -344,14 +407,20 @@ fn run_many<'py, M: Model>(
     let shape_ref = &shape;
     let inputs_ref = &inputs;
     let base_ref = &base;
-    let failures: Vec<(usize, String)> = py.detach(|| {
+    let solve = |cancel: &AtomicBool| {
         in_pool(threads, || {
             chunks
                 .into_par_iter()
-                .flat_map_iter(|chunk| solve_chunk(model, base_ref, inputs_ref, shape_ref, chunk))
+                .flat_map_iter(|chunk| solve_chunk(model, base_ref, inputs_ref, shape_ref, chunk, cancel))
                 .collect()
         })
-    })?;
+    };
+    // One chunk is over in moments: no watching thread (it doubled a one-row call's 24 us).
+    let failures: Vec<(usize, String)> = if rows <= CHUNK {
+        py.detach(|| solve(&AtomicBool::new(false)))?
+    } else {
+        crate::interruptible(py, solve)??
+    };
     drop(output_guards);
     drop(status_guard);
     drop(evaluations_guard);
@@ -391,11 +460,12 @@ pub fn simulate_many<'py>(
     py: Python<'py>,
     solver: &str,
     law: &str,
-    dt: Option<f64>,
+    dt: Option<&Bound<'py, PyAny>>,
     threads: Option<usize>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
+        let dt = crate::params::optional_number("dt", dt)?;
         let model = Model1d::new(crate::solver_1d(solver, dt)?);
         let law = crate::law(law)?;
         check_law_keywords(law, arrays)?;
@@ -412,11 +482,12 @@ pub fn simulate3d_many<'py>(
     py: Python<'py>,
     solver: &str,
     law: &str,
-    dt: Option<f64>,
+    dt: Option<&Bound<'py, PyAny>>,
     threads: Option<usize>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
+        let dt = crate::params::optional_number("dt", dt)?;
         let solver = Solver3d::with_step(solver, dt).map_err(value_error)?;
         let model = Model3d::new(solver)?;
         let law = crate::law(law)?;

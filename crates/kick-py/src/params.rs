@@ -5,56 +5,125 @@ use crate::value_error;
 use kick_3d::KickSpec;
 use kick_core::parameters::{self, ParameterDef, ParameterError, SetLaw, SetParameter, Shape, Value};
 use kick_core::{LawKind, ScenarioSpec, Status};
-use pyo3::exceptions::PyTypeError;
+use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyList};
+use pyo3::types::{PyDict, PyList, PyString};
 
 /// A spec keywords fill: its levels' parameters and the contact law.
 pub trait LawSpec: SetParameter + SetLaw + Default {}
 
 impl<S: SetParameter + SetLaw + Default> LawSpec for S {}
 
-/// The shape a Python value has: a bool is a switch, a sequence a vector,
-/// anything `float()` takes a number.
-fn shape_of(value: &Bound<'_, PyAny>) -> Option<Shape> {
-    if value.is_instance_of::<PyBool>() {
-        Some(Shape::Switch)
-    } else if value.extract::<f64>().is_ok() {
-        Some(Shape::Scalar)
-    } else if value.len().is_ok() {
-        Some(Shape::Vector3)
-    } else {
-        None
+/// Most axes an array may have: numpy 1's limit, which rust-numpy's views assume.
+pub const MAX_AXES: usize = 32;
+
+/// What the user gave, in words for a refusal: its type (and dtype), then its repr.
+pub fn described(value: &Bound<'_, PyAny>) -> String {
+    let kind = value.get_type().name().map(|n| n.to_string()).unwrap_or_default();
+    let dtype = value.getattr("dtype").ok().and_then(|d| d.str().ok()).map(|d| format!(" of dtype {d}")).unwrap_or_default();
+    let mut repr = value.repr().map(|r| r.to_string()).unwrap_or_default();
+    if repr.chars().count() > 60 {
+        repr = repr.chars().take(57).collect::<String>() + "...";
     }
+    format!("{kind}{dtype} {repr}")
 }
 
-/// One value for `parameter`, or an error naming it.
-pub fn value(parameter: &'static ParameterDef, value: &Bound<'_, PyAny>) -> PyResult<Value> {
-    let wrong = |found: Shape| value_error(ParameterError::WrongShape { name: parameter.name, expected: parameter.shape, found });
-    let found = shape_of(value).ok_or_else(|| {
-        PyTypeError::new_err(format!(
-            "`{}` takes {}, got a {}",
-            parameter.name,
-            parameter.shape.describe(),
-            value.get_type().name().map(|n| n.to_string()).unwrap_or_default()
-        ))
-    })?;
-    if found != parameter.shape {
-        return Err(wrong(found));
+/// A keyword's value as numpy reads it: real numbers (ints, floats, or bools
+/// when `switches`) as a float64 array of at most [`MAX_AXES`] axes.
+/// Anything else (complex, datetime, strings, objects) is a `TypeError` and
+/// a masked value a `ValueError`, each naming the keyword; `takes` says what
+/// the keyword takes. Nothing is converted silently.
+pub fn real_array<'py>(name: &str, takes: &str, value: &Bound<'py, PyAny>) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, bool)> {
+    let numpy = value.py().import("numpy")?;
+    let ma = numpy.getattr("ma")?;
+    let mut given = value.clone();
+    if value.is_instance(&ma.getattr("MaskedArray")?)? {
+        let masked: usize = ma.call_method1("count_masked", (value,))?.extract()?;
+        if masked > 0 {
+            return Err(PyValueError::new_err(format!(
+                "`{name}` has {masked} masked value(s): fill them (numpy.ma.filled) or leave those rows out"
+            )));
+        }
+        given = ma.call_method1("getdata", (value,))?;
     }
-    Ok(match parameter.shape {
-        Shape::Scalar => Value::Number(value.extract()?),
-        Shape::Switch => Value::Switch(value.extract()?),
-        Shape::Vector3 => match value.extract::<Vec<f64>>() {
-            Ok(v) if v.len() == 3 => Value::Vector([v[0], v[1], v[2]]),
-            _ => {
-                return Err(PyTypeError::new_err(format!(
-                    "`{}` takes three numbers (x, y, z), got {}",
-                    parameter.name,
-                    value.repr()?
-                )))
-            }
-        },
+    let array = numpy.call_method1("asarray", (&given,)).map_err(|e| {
+        let py = value.py();
+        PyErr::from_type(e.get_type(py), format!("`{name}`: {}", e.value(py)))
+    })?;
+    let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
+    let switches = kind == "b";
+    if !matches!(kind.as_str(), "b" | "i" | "u" | "f") {
+        return Err(PyTypeError::new_err(format!("`{name}` takes {takes}, got {}", described(value))));
+    }
+    let ndim: usize = array.getattr("ndim")?.extract()?;
+    if ndim > MAX_AXES {
+        return Err(PyValueError::new_err(format!("`{name}` has {ndim} axes: at most {MAX_AXES}")));
+    }
+    // Copied only when not float64 or not aligned (rust-numpy's views need
+    // alignment; arrays unpickled from a buffer, as dask's, may lack it).
+    let array = numpy.call_method1("require", (array, numpy.getattr("float64")?, "A"))?;
+    Ok((array.cast_into::<PyArrayDyn<f64>>().map_err(|e| PyTypeError::new_err(e.to_string()))?, switches))
+}
+
+/// One real number for keyword `name` (an option such as `dt`), or a `TypeError` naming it.
+pub fn real_number(name: &str, value: &Bound<'_, PyAny>) -> PyResult<f64> {
+    let (array, switches) = real_array(name, "a number", value)?;
+    if switches || array.ndim() != 0 {
+        return Err(PyTypeError::new_err(format!("`{name}` takes a number, got {}", described(value))));
+    }
+    Ok(array.readonly().as_array().iter().copied().next().unwrap_or(f64::NAN))
+}
+
+/// `real_number` for an optional keyword (None: not given).
+pub fn optional_number(name: &str, value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<f64>> {
+    value.filter(|v| !v.is_none()).map(|v| real_number(name, v)).transpose()
+}
+
+/// Real numbers along one axis for keyword `name` (a data channel), or an error naming it.
+pub fn real_vector(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+    let (array, switches) = real_array(name, "an array of real numbers", value)?;
+    if switches || array.ndim() != 1 {
+        return Err(PyTypeError::new_err(format!("`{name}` takes an array of real numbers, got {}", described(value))));
+    }
+    Ok(array.readonly().as_array().iter().copied().collect())
+}
+
+/// A list of names for keyword `name` (`free`); a lone string is refused
+/// (it would be read as a list of letters).
+pub fn names(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
+    let refused = || PyTypeError::new_err(format!("`{name}` takes a list of names, got {}", described(value)));
+    if value.is_instance_of::<PyString>() {
+        let one: String = value.extract()?;
+        return Err(PyTypeError::new_err(format!("`{name}` takes a list of names, got str {one:?}: write {name}=[{one:?}]").replace('"', "'")));
+    }
+    value.extract::<Vec<String>>().map_err(|_| refused())
+}
+
+/// One value for `parameter`, or an error naming it: a bool is a switch, a
+/// real number a number, three real numbers a vector; a value of the wrong
+/// one of these shapes is the library's `WrongShape` (`ValueError`), any
+/// other value a `TypeError` with its type.
+pub fn value(parameter: &'static ParameterDef, value: &Bound<'_, PyAny>) -> PyResult<Value> {
+    let takes = match parameter.shape {
+        Shape::Vector3 => "three numbers (x, y, z)",
+        shape => shape.describe(),
+    };
+    let (array, switches) = real_array(parameter.name, takes, value)?;
+    let numbers: Vec<f64> = array.readonly().as_array().iter().copied().collect();
+    let found = match (switches, array.ndim(), numbers.len()) {
+        (true, 0, _) => Shape::Switch,
+        (false, 0, _) => Shape::Scalar,
+        (false, 1, 3) => Shape::Vector3,
+        _ => return Err(PyTypeError::new_err(format!("`{}` takes {takes}, got {}", parameter.name, described(value)))),
+    };
+    if found != parameter.shape {
+        return Err(value_error(ParameterError::WrongShape { name: parameter.name, expected: parameter.shape, found }));
+    }
+    Ok(match found {
+        Shape::Scalar => Value::Number(numbers[0]),
+        Shape::Switch => Value::Switch(numbers[0] != 0.0),
+        Shape::Vector3 => Value::Vector([numbers[0], numbers[1], numbers[2]]),
     })
 }
 

@@ -54,3 +54,16 @@ def test_scalars_and_bad_input(client):
         kick.dask.simulate_many(client, chunks=0, foot_mass=[1.0])
     with pytest.raises(ValueError, match="unknown parameter `foot_mas`"):
         kick.dask.simulate_many(client, foot_mas=[1.0])
+
+
+def test_values_are_checked_as_the_local_call_checks_them(client):
+    """The client side reads keywords as `simulate_many` does, not by a silent float64 cast."""
+    with pytest.raises(TypeError, match=r"`foot_mass` takes real numbers, got .*complex128"):
+        kick.dask.simulate_many(client, foot_mass=np.array([3.0 + 1.0j, 4.0]))
+    with pytest.raises(ValueError, match=r"`foot_mass` has 1 masked"):
+        kick.dask.simulate_many(client, foot_mass=np.ma.masked_array([3.0, 4.0], mask=[False, True]))
+    with pytest.raises(TypeError, match=r"`foot_mass` takes real numbers, got str"):
+        kick.dask.simulate_many(client, foot_mass="3")
+    # Switches travel as bools.
+    local = kick.simulate3d_many(offset=0.03, gravity=np.array([False, True]))
+    assert_same(kick.dask.simulate3d_many(client, chunks=1, offset=0.03, gravity=np.array([False, True])), local)

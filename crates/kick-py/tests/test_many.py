@@ -129,3 +129,25 @@ def test_a_million_rows_allocate_only_the_output_arrays():
     assert (out["status"] == 0).all()
     print(f"\n{n} rows: outputs {outputs / 1e6:.1f} MB, traced peak {peak / 1e6:.1f} MB")
     assert peak < outputs + 1_000_000, (peak, outputs)
+
+
+def test_more_axes_than_numpy_1_allows_are_a_value_error_naming_the_keyword():
+    with pytest.raises(ValueError, match=r"`foot_mass` has 33 axes: at most 32"):
+        kick.simulate_many(foot_mass=np.ones((1,) * 33))
+    with pytest.raises(ValueError, match=r"`foot_inertia` has 33 axes: at most 32"):
+        kick.simulate3d_many(foot_inertia=np.full((1,) * 32 + (3,), 0.02))
+    # 32 row axes fit a 1D call; a 3D call's vector outcomes need one more.
+    assert kick.simulate_many(foot_mass=np.ones((1,) * 32))["v_ball_out"].ndim == 32
+    with pytest.raises(ValueError, match=r"`offset`.* 32 axes.* would have 33: at most 32"):
+        kick.simulate3d_many(offset=np.zeros((1,) * 32))
+
+
+def test_outputs_too_large_to_allocate_are_a_memory_error():
+    # 1e12 rows: 145 TB of outputs, refused before any row is solved.
+    with pytest.raises(MemoryError):
+        kick.simulate_many(foot_mass=np.broadcast_to(3.0, (10**6, 10**6)))
+    # 2^80 rows: the size does not fit a machine word.
+    with pytest.raises(MemoryError, match=r"outputs of .* rows"):
+        kick.simulate_many(foot_mass=np.broadcast_to(3.0, (2**40,)), stiffness=np.broadcast_to(4e5, (2**40, 1)))
+    with pytest.raises(MemoryError):
+        kick.simulate3d_many(offset=np.broadcast_to(0.01, (10**5, 10**5)))

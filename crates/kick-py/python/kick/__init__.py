@@ -18,7 +18,12 @@ fit                       identify parameters from a measured history (``kick fi
 flight                    the ball's flight after the kick (kick-flight)
 kick.dask.simulate_many   ``simulate_many`` spread over a dask ``distributed`` cluster
 
-Bad input raises ``ValueError`` with the command line's message.
+Bad input raises ``ValueError`` with the command line's message. A keyword
+takes real numbers (Python or numpy ints and floats; bools for switches):
+a complex, datetime, string or object value is a ``TypeError`` and a masked
+element a ``ValueError``, each naming the keyword. Outputs too large to
+allocate are a ``MemoryError`` before any row is solved. Ctrl-C stops a
+long call within moments (``KeyboardInterrupt``).
 """
 
 from __future__ import annotations

@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 import kick
+from kick import _kick
 
 __all__ = ["simulate_many", "simulate3d_many"]
 
@@ -37,10 +38,11 @@ def _run(function, client, chunks, options, arrays):
     for name, value in arrays.items():
         if value is None:
             continue
-        if name not in shapes:
-            # The local function refuses it with the nearby names.
-            getattr(kick, function)(**{name: value})
-        a = np.asarray(value, dtype=np.float64)
+        # Read as the local call reads it (unknown names, types, masks refused);
+        # switches travel as bools.
+        a = _kick.many_input(function, name, value)
+        if shapes[name] == "switch":
+            a = a.astype(bool)
         vector = shapes[name] == "vector3"
         if vector and (a.ndim == 0 or a.shape[-1] != 3):
             raise ValueError(f"`{name}` takes three numbers (x, y, z) on its last axis, got shape {a.shape}")

@@ -1,0 +1,98 @@
+"""Keyword values a numpy user might pass: real numbers and arrays of them
+are taken; anything else is a TypeError (a masked value a ValueError) that
+names the keyword and the type it got, never a silent conversion."""
+
+import numpy as np
+import pytest
+
+import kick
+
+# (value, the type named in the message) for a keyword that takes a number.
+NOT_REAL = [
+    ("3", "str"),
+    ({}, "dict"),
+    ([1.0], "list"),
+    (np.complex128(3.0 + 1.0j), "complex128"),
+    (np.array([3.0 + 0.5j]), "complex128"),
+    (np.datetime64(3, "s"), "datetime64"),
+    (np.timedelta64(3, "s"), "timedelta64"),
+    (np.array(["3.0"]), "<U3"),
+    (np.array([3.0, None]), "object"),
+]
+
+
+@pytest.mark.parametrize("value,named", NOT_REAL)
+def test_simulate_refuses_what_is_not_a_real_number(value, named):
+    with pytest.raises(TypeError, match=rf"`foot_mass` takes a number, got .*{named}") as error:
+        kick.simulate(foot_mass=value)
+    assert "three numbers" not in str(error.value)
+
+
+@pytest.mark.parametrize("value,named", [v for v in NOT_REAL if v[1] != "list"])
+def test_simulate_many_refuses_what_is_not_real_numbers(value, named):
+    with pytest.raises(TypeError, match=rf"`foot_mass` takes .*numbers, got .*{named}"):
+        kick.simulate_many(foot_mass=value)
+
+
+def test_vectors_refuse_complex_and_strings():
+    with pytest.raises(TypeError, match=r"`foot_inertia` takes three numbers \(x, y, z\), got .*complex128"):
+        kick.simulate3d(foot_inertia=np.array([0.01, 0.02, 0.02j]))
+    with pytest.raises(TypeError, match=r"`foot_inertia` takes three numbers \(x, y, z\), got str"):
+        kick.simulate3d(foot_inertia="abc")
+    with pytest.raises(TypeError, match=r"`foot_inertia` .*numbers.*, got .*complex128"):
+        kick.simulate3d_many(foot_inertia=np.array([[0.01, 0.02, 0.02j]]))
+
+
+def test_switches_take_bools_only():
+    with pytest.raises(TypeError, match=r"`gravity` takes true or false, got .*str"):
+        kick.simulate3d(gravity="yes")
+    with pytest.raises(TypeError, match=r"`foot_mass` takes .*numbers, got .*bool"):
+        kick.simulate_many(foot_mass=np.array([True, False]))
+    with pytest.raises(TypeError, match=r"`gravity` takes true or false, got .*float64"):
+        kick.simulate3d_many(gravity=np.array([0.0, 1.0]))
+    # A bool array is a switch per row.
+    rows = kick.simulate3d_many(offset=0.03, gravity=np.array([False, True]))
+    assert rows["speed"][1] == kick.simulate3d(offset=0.03, gravity=True)["speed"]
+
+
+def test_masked_values_are_refused_and_unmasked_arrays_taken():
+    masked = np.ma.masked_array([3.0, 4.0], mask=[False, True])
+    with pytest.raises(ValueError, match=r"`foot_mass` .*1 masked"):
+        kick.simulate_many(foot_mass=masked)
+    with pytest.raises(ValueError, match=r"`foot_mass` .*1 masked"):
+        kick.simulate(foot_mass=np.ma.masked_array(3.0, mask=True))
+    clear = np.ma.masked_array([3.0, 4.0], mask=[False, False])
+    np.testing.assert_array_equal(kick.simulate_many(foot_mass=clear)["v_ball_out"], kick.simulate_many(foot_mass=[3.0, 4.0])["v_ball_out"])
+
+
+def test_real_numbers_of_any_kind_are_taken():
+    base = kick.simulate(foot_mass=3.0)["v_ball_out"]
+    for value in (3, np.int8(3), np.uint16(3), np.float32(3.0), np.array(3.0), np.longdouble(3.0)):
+        assert kick.simulate(foot_mass=value)["v_ball_out"] == base, value
+    many = kick.simulate_many(foot_mass=np.array([3, 3], dtype=np.int32))["v_ball_out"]
+    assert many.tolist() == [base, base]
+
+
+def test_a_ragged_list_names_the_keyword():
+    with pytest.raises(ValueError, match=r"`foot_mass`.*inhomogeneous"):
+        kick.simulate_many(foot_mass=[[1.0], [1.0, 2.0]])
+
+
+def test_fit_refuses_a_string_for_free_and_complex_data():
+    t = np.linspace(0.0, 9e-3, 10)
+    force = 1000.0 * np.sin(np.pi * t / 9e-3)
+    with pytest.raises(TypeError, match=r"`free` takes a list of names, got str 'foot_mass'"):
+        kick.fit(t, force, sigma=1.0, free="foot_mass")
+    with pytest.raises(TypeError, match=r"`force` takes .*numbers, got .*complex128"):
+        kick.fit(t, force + 1.0j, sigma=1.0, free=["foot_mass"])
+    with pytest.raises(TypeError, match=r"`time` takes .*numbers, got str"):
+        kick.fit("0.001", force, sigma=1.0, free=["foot_mass"])
+    with pytest.raises(TypeError, match=r"`sigma` takes a number or a dict .*, got str"):
+        kick.fit(t, force, sigma="1", free=["foot_mass"])
+
+
+def test_options_refuse_complex_numbers():
+    with pytest.raises(TypeError, match=r"`dt` takes a number, got .*complex128"):
+        kick.simulate(solver="seed-rk4", dt=np.complex128(5e-6 + 1.0j))
+    with pytest.raises(TypeError, match=r"`interval` takes a number, got .*complex128"):
+        kick.history(interval=np.complex128(1e-4 + 1.0j))

@@ -1,0 +1,38 @@
+"""Ctrl-C during a long call stops it within moments: the calls solve
+without the GIL and check for signals while they run."""
+
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+# Each call would run for tens of seconds (2e7 1D rows took 46 s on 2 cores in release).
+CALLS = {
+    "simulate_many": ("np.linspace(1.0, 8.0, 20_000_000)", "kick.simulate_many(foot_mass=x, threads=1)"),
+    "simulate3d_many": ("np.linspace(0.0, 0.05, 2_000_000)", "kick.simulate3d_many(offset=x, threads=1)"),
+}
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="SIGINT to a child process")
+@pytest.mark.parametrize("call", sorted(CALLS))
+def test_ctrl_c_interrupts_a_long_call(call):
+    given, solve = CALLS[call]
+    script = f"import numpy as np, kick\nx = {given}\nprint('solving', flush=True)\n{solve}\nprint('returned', flush=True)\n"
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert child.stdout.readline() == "solving\n"
+        time.sleep(1.0)
+        child.send_signal(signal.SIGINT)
+        sent = time.monotonic()
+        out, err = child.communicate(timeout=10)
+    except subprocess.TimeoutExpired:
+        child.kill()
+        child.communicate()
+        pytest.fail(f"{call} ignored Ctrl-C for 10 s")
+    waited = time.monotonic() - sent
+    assert "returned" not in out
+    assert err.rstrip().endswith("KeyboardInterrupt"), err[-2000:]
+    print(f"\n{call}: interrupted {waited:.2f} s after SIGINT")
+    assert waited < 5.0
