@@ -51,7 +51,7 @@ pub mod validation;
 
 pub use air::Air;
 pub use coefficients::{DragModel, LiftModel};
-pub use solve::{history, solve, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
+pub use solve::{history, solve, Aerodynamics, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
 pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 
 use kick_core::short;
