@@ -44,12 +44,14 @@ pub mod air;
 pub mod coefficients;
 /// The integrator lives in kick-core (kick-3d steps with it too).
 pub use kick_core::dop853;
+pub mod many;
 pub mod models;
 pub mod solve;
 pub mod spec;
 pub mod validation;
 
 pub use air::Air;
+pub use many::{flight_many, Column};
 pub use coefficients::{DragModel, LiftModel};
 pub use solve::{history, solve, Aerodynamics, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
 pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
