@@ -7,7 +7,10 @@
 //! back down to z = R. State: position r, velocity v, spin ω.
 //!
 //! - gravity (0, 0, −g);
-//! - drag −½ ρ A C_D(Re) |v| v, Re = ρ |v| 2R/μ, A = π R²;
+//! - drag −½ ρ A C_D(Re, S) |v| v, Re = ρ |v| 2R/μ, A = π R²: the drag
+//!   crisis of Goff & Carré (2010) Eq. 3 (moved to the ball construction's
+//!   critical Re, `ball_panels`), joined smoothly above the crisis to their
+//!   Eq. 4 for a spinning ball ([`coefficients::SpinDrag`]);
 //! - Magnus lift ½ ρ A C_L(S) |v|² (ω × v)/|ω × v|, zero when ω × v = 0,
 //!   with S = R |ω × v|/|v|², the spin parameter R|ω|/|v| of the spin
 //!   component across the flight direction (the only one that lifts);

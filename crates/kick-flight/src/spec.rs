@@ -106,7 +106,7 @@ pub static FLIGHT_PARAMETERS: [ParameterDef; 17] = [
     flight("altitude", "h", "m", Number(0.0), Closed(-500.0), Closed(11000.0),
         "[-500, 11000]; not with both temperature and pressure",
         "Geopotential altitude: standard-atmosphere temperature and pressure where not given"),
-    flight("drag_coefficient", "C_D", "1", Derived("Goff & Carré (2010) drag crisis in Re"), Closed(0.0), Unbounded,
+    flight("drag_coefficient", "C_D", "1", Derived("Goff & Carré (2010) drag crisis in Re (Eq. 3), with spin above it (Eq. 4)"), Closed(0.0), Unbounded,
         "finite and >= 0", "A constant drag coefficient instead of the drag-crisis model"),
     flight("ball_panels", "N_p", "1", Number(BallConstruction::DEFAULT_PANELS as f64), Closed(6.0), Closed(32.0),
         PANELS_REQUIREMENT,
