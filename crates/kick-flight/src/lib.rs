@@ -34,7 +34,8 @@
 //! (vacuum parabola; vertical flight with quadratic drag; spin decay along a
 //! vacuum parabola) and of a solve at a 100× tighter tolerance, over kicks of
 //! 3–40 m/s at 3–85° with spins up to 80 rad/s per axis (64 random kicks in
-//! the test; `examples/accuracy.rs` found 1.5e-10 at worst over 20000). The
+//! the test; `examples/accuracy.rs` found 3.3e-10 at worst over 20000 with
+//! the spinning ball's drag, 1.5e-10 before it). The
 //! landing point is measured against the flight's size (range, or apex
 //! height for a steep kick landing near its start), the crossing point
 //! against its distance from the launch point: a ball dropping steeply
