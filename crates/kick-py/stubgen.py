@@ -39,6 +39,7 @@ RETURNS = {
     "history3d": "dict[str, NDArray[np.float64]]",
     "fit": "dict[str, Any]",
     "flight": "dict[str, Any]",
+    "flight_many": "dict[str, Any]",
 }
 
 

@@ -7,7 +7,10 @@
 //! back down to z = R. State: position r, velocity v, spin ω.
 //!
 //! - gravity (0, 0, −g);
-//! - drag −½ ρ A C_D(Re) |v| v, Re = ρ |v| 2R/μ, A = π R²;
+//! - drag −½ ρ A C_D(Re, S) |v| v, Re = ρ |v| 2R/μ, A = π R²: the drag
+//!   crisis of Goff & Carré (2010) Eq. 3 (moved to the ball construction's
+//!   critical Re, `ball_panels`), joined smoothly above the crisis to their
+//!   Eq. 4 for a spinning ball ([`coefficients::SpinDrag`]);
 //! - Magnus lift ½ ρ A C_L(S) |v|² (ω × v)/|ω × v|, zero when ω × v = 0,
 //!   with S = R |ω × v|/|v|², the spin parameter R|ω|/|v| of the spin
 //!   component across the flight direction (the only one that lifts);
@@ -31,7 +34,8 @@
 //! (vacuum parabola; vertical flight with quadratic drag; spin decay along a
 //! vacuum parabola) and of a solve at a 100× tighter tolerance, over kicks of
 //! 3–40 m/s at 3–85° with spins up to 80 rad/s per axis (64 random kicks in
-//! the test; `examples/accuracy.rs` found 1.5e-10 at worst over 20000). The
+//! the test; `examples/accuracy.rs` found 3.3e-10 at worst over 20000 with
+//! the spinning ball's drag, 1.5e-10 before it). The
 //! landing point is measured against the flight's size (range, or apex
 //! height for a steep kick landing near its start), the crossing point
 //! against its distance from the launch point: a ball dropping steeply
@@ -44,14 +48,16 @@ pub mod air;
 pub mod coefficients;
 /// The integrator lives in kick-core (kick-3d steps with it too).
 pub use kick_core::dop853;
+pub mod many;
 pub mod models;
 pub mod solve;
 pub mod spec;
 pub mod validation;
 
 pub use air::Air;
+pub use many::{flight_many, Column};
 pub use coefficients::{DragModel, LiftModel};
-pub use solve::{history, solve, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
+pub use solve::{history, solve, Aerodynamics, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
 pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 
 use kick_core::short;

@@ -46,10 +46,25 @@ pub struct FlightOutcome {
     pub landing_spin: [f64; 3],
     /// At x = d when a distance is given and the ball gets there before landing.
     pub crossing: Option<Crossing>,
+    /// Reynolds number, spin parameter and coefficients at launch.
+    pub launch: Aerodynamics,
     /// Accepted integrator steps.
     pub steps: u64,
     /// Right-hand-side evaluations.
     pub evaluations: u64,
+}
+
+/// The air's numbers at one state of the ball.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Aerodynamics {
+    /// Re = ρ |v| 2R/μ.
+    pub reynolds: f64,
+    /// S = R |ω × v|/|v|².
+    pub spin_parameter: f64,
+    /// C_D at Re and S.
+    pub drag_coefficient: f64,
+    /// C_L at S.
+    pub lift_coefficient: f64,
 }
 
 /// One point of a flight's history.
@@ -88,6 +103,8 @@ struct Dynamics {
     radius_squared: f64,
     /// 3 ρ A k_M/(4 m), 1/m: dω/dt = −decay |v| ω.
     decay: f64,
+    /// ρ 2R/μ, s/m.
+    reynolds_per_speed: f64,
 }
 
 impl Dynamics {
@@ -103,6 +120,38 @@ impl Dynamics {
             lift: flight.lift(),
             radius_squared: flight.ball_radius().powi(2),
             decay: 3.0 * air.density * area * flight.spin_decay() / (4.0 * m),
+            reynolds_per_speed,
+        }
+    }
+
+    /// S² = R²|ω × v|²/|v|⁴ (0 without lift: ω × v = 0) and ω × v, |ω × v|².
+    #[inline]
+    fn spin_parameter_squared(&self, v: &Vector3<f64>, w: &Vector3<f64>, v2: f64) -> (f64, Vector3<f64>, f64) {
+        let c = w.cross(v);
+        let c2 = c.norm_squared();
+        let s2 = if c2 > 0.0 { self.radius_squared * c2 / (v2 * v2) } else { 0.0 };
+        (s2, c, c2)
+    }
+
+    #[inline]
+    fn lift_coefficient(&self, s2: f64) -> f64 {
+        match self.lift {
+            LiftModel::Constant { value } => value,
+            LiftModel::Saturating => SaturatingLift::of_square(s2),
+        }
+    }
+
+    /// Re, S, C_D and C_L of a ball moving at `v` and spinning at `w`.
+    fn aerodynamics(&self, v: [f64; 3], w: [f64; 3]) -> Aerodynamics {
+        let (v, w) = (Vector3::from(v), Vector3::from(w));
+        let v2 = v.norm_squared();
+        let (s2, _, c2) = self.spin_parameter_squared(&v, &w, v2);
+        let speed = v2.sqrt();
+        Aerodynamics {
+            reynolds: self.reynolds_per_speed * speed,
+            spin_parameter: s2.sqrt(),
+            drag_coefficient: self.drag.at(speed, s2),
+            lift_coefficient: if c2 > 0.0 { self.lift_coefficient(s2) } else { 0.0 },
         }
     }
 }
@@ -114,18 +163,14 @@ impl System<9> for Dynamics {
         let w = Vector3::new(y[6], y[7], y[8]);
         let v2 = v.norm_squared();
         let speed = v2.sqrt();
+        // S = R|ω×v|/|v|², for drag and lift.
+        let (s2, c, c2) = self.spin_parameter_squared(&v, &w, v2);
         // Drag (−½ρA C_D |v| v)/m and gravity.
-        let mut a = v * (-self.aero * self.drag.at_speed(speed) * speed);
+        let mut a = v * (-self.aero * self.drag.at(speed, s2) * speed);
         a.z -= self.gravity;
-        // Magnus lift ½ρA C_L |v|² (ω×v)/|ω×v| / m; S = R|ω×v|/|v|².
-        let c = w.cross(&v);
-        let c2 = c.norm_squared();
+        // Magnus lift ½ρA C_L |v|² (ω×v)/|ω×v| / m.
         if c2 > 0.0 {
-            let cl = match self.lift {
-                LiftModel::Constant { value } => value,
-                LiftModel::Saturating => SaturatingLift::of_square(self.radius_squared * c2 / (v2 * v2)),
-            };
-            a += c * (self.aero * cl * v2 / c2.sqrt());
+            a += c * (self.aero * self.lift_coefficient(s2) * v2 / c2.sqrt());
         }
         let dw = w * (-self.decay * speed);
         State::from_column_slice(&[v.x, v.y, v.z, a.x, a.y, a.z, dw.x, dw.y, dw.z])
@@ -249,6 +294,7 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
                     landing_velocity: vector(&s, 3),
                     landing_spin: vector(&s, 6),
                     crossing,
+                    launch: dynamics.aerodynamics(v0, w0),
                     steps: stepper.accepted,
                     evaluations: stepper.evaluations,
                 };
@@ -416,7 +462,10 @@ mod tests {
         let k = dynamics.aero;
         let s = flight.ball_radius() * b.abs() / v;
         // ω × v = (0, 0, −b v): straight up for backspin b < 0.
-        assert_eq!([dy[4], dy[3] + k * dynamics.drag.at_speed(v) * v * v], [0.0, 0.0]);
+        assert_eq!(dy[4], 0.0);
+        // Drag along −v with the spinning ball's C_D at this S.
+        let drag = k * dynamics.drag.at(v, s * s) * v * v;
+        assert!((dy[3] + drag).abs() <= 1e-14 * drag, "{} vs {drag}", -dy[3]);
         let lift = dy[5] + dynamics.gravity;
         assert!((lift / (k * SaturatingLift::at(s) * v * v) - 1.0).abs() < 1e-14, "{lift}");
     }

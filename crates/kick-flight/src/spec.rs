@@ -7,7 +7,7 @@
 //! the parameter by the same name.
 
 use crate::air::{Air, SEA_LEVEL_DENSITY};
-use crate::coefficients::{DragModel, LiftModel};
+use crate::coefficients::{BallConstruction, DragModel, LiftModel};
 use crate::{FlightError, DEFAULT_RELATIVE_TOLERANCE};
 use kick_core::{DEFAULT_BALL_MASS, DEFAULT_BALL_RADIUS, GRAVITY};
 use serde::{Deserialize, Serialize};
@@ -29,12 +29,16 @@ pub enum FlightParameter {
     Pressure,
     Altitude,
     DragCoefficient,
+    BallPanels,
     LiftCoefficient,
     SpinDecay,
     Distance,
 }
 
 use kick_core::parameters::{Bound, DefaultValue, Level, ParameterDef, Shape, Valid};
+
+/// What `ball_panels` must be: a construction of [`crate::coefficients::BALL_CONSTRUCTIONS`].
+const PANELS_REQUIREMENT: &str = "one of 32, 14, 8, 6 (the constructions with a published critical Reynolds number)";
 
 #[allow(clippy::too_many_arguments)] // one row of the declaration table
 const fn flight(
@@ -68,7 +72,7 @@ use DefaultValue::{Derived, Number, Unset};
 /// kick's is a switch), in [`FlightParameter::ALL`] order. Refusals keep
 /// their own wording (with the unit) in [`FlightSpec::build`]; conditions
 /// between parameters are in the requirement text.
-pub static FLIGHT_PARAMETERS: [ParameterDef; 16] = [
+pub static FLIGHT_PARAMETERS: [ParameterDef; 17] = [
     flight("speed", "|v0|", "m/s", Unset("required"), Open(0.0), Unbounded, "finite and > 0, m/s", "Launch speed of the ball"),
     flight("launch_angle", "θ", "deg", Unset("required"), Open(0.0), Closed(90.0), "in (0, 90] degrees (the ball starts on the ground)",
         "Elevation of the launch velocity above the ground"),
@@ -102,8 +106,12 @@ pub static FLIGHT_PARAMETERS: [ParameterDef; 16] = [
     flight("altitude", "h", "m", Number(0.0), Closed(-500.0), Closed(11000.0),
         "[-500, 11000]; not with both temperature and pressure",
         "Geopotential altitude: standard-atmosphere temperature and pressure where not given"),
-    flight("drag_coefficient", "C_D", "1", Derived("Goff & Carré (2010) drag crisis in Re"), Closed(0.0), Unbounded,
+    flight("drag_coefficient", "C_D", "1", Derived("Goff & Carré (2010) drag crisis in Re (Eq. 3), with spin above it (Eq. 4)"), Closed(0.0), Unbounded,
         "finite and >= 0", "A constant drag coefficient instead of the drag-crisis model"),
+    flight("ball_panels", "N_p", "1", Number(BallConstruction::DEFAULT_PANELS as f64), Closed(6.0), Closed(32.0),
+        PANELS_REQUIREMENT,
+        "Panel count of the ball: moves the drag crisis to its published critical Re (Asai & Hong 2021: 32, 14, 8, 6); \
+         not with drag_coefficient"),
     flight("lift_coefficient", "C_L", "1", Derived("saturating fit in S to published soccer-ball data"), Closed(0.0), Unbounded,
         "finite and >= 0", "A constant lift coefficient instead of the C_L(S) model"),
     flight("spin_decay", "k_M", "1", Number(0.0), Closed(0.0), Unbounded, "finite and >= 0",
@@ -113,7 +121,7 @@ pub static FLIGHT_PARAMETERS: [ParameterDef; 16] = [
 ];
 
 impl FlightParameter {
-    pub const ALL: [FlightParameter; 16] = [
+    pub const ALL: [FlightParameter; 17] = [
         FlightParameter::Speed,
         FlightParameter::LaunchAngle,
         FlightParameter::Azimuth,
@@ -127,6 +135,7 @@ impl FlightParameter {
         FlightParameter::Pressure,
         FlightParameter::Altitude,
         FlightParameter::DragCoefficient,
+        FlightParameter::BallPanels,
         FlightParameter::LiftCoefficient,
         FlightParameter::SpinDecay,
         FlightParameter::Distance,
@@ -185,6 +194,7 @@ pub struct FlightSpec {
     pub pressure: Option<f64>,
     pub altitude: Option<f64>,
     pub drag_coefficient: Option<f64>,
+    pub ball_panels: Option<f64>,
     pub lift_coefficient: Option<f64>,
     pub spin_decay: Option<f64>,
     pub distance: Option<f64>,
@@ -243,6 +253,7 @@ impl FlightSpec {
             FlightParameter::Pressure => self.pressure = x,
             FlightParameter::Altitude => self.altitude = x,
             FlightParameter::DragCoefficient => self.drag_coefficient = x,
+            FlightParameter::BallPanels => self.ball_panels = x,
             FlightParameter::LiftCoefficient => self.lift_coefficient = x,
             FlightParameter::SpinDecay => self.spin_decay = x,
             FlightParameter::Distance => self.distance = x,
@@ -266,6 +277,7 @@ impl FlightSpec {
             FlightParameter::Pressure => self.pressure.is_some(),
             FlightParameter::Altitude => self.altitude.is_some(),
             FlightParameter::DragCoefficient => self.drag_coefficient.is_some(),
+            FlightParameter::BallPanels => self.ball_panels.is_some(),
             FlightParameter::LiftCoefficient => self.lift_coefficient.is_some(),
             FlightParameter::SpinDecay => self.spin_decay.is_some(),
             FlightParameter::Distance => self.distance.is_some(),
@@ -310,9 +322,16 @@ impl FlightSpec {
         let gravity = self.gravity.unwrap_or(GRAVITY);
         let gravity = check("gravity", gravity, gravity > 0.0, "finite and > 0, m/s^2 (the ball must come down)")?;
         let air = Air::new(self.air_density, self.temperature, self.pressure, self.altitude)?;
-        let drag = match self.drag_coefficient {
-            None => DragModel::DragCrisis,
-            Some(c) => DragModel::Constant { value: check("drag_coefficient", c, c >= 0.0, "finite and >= 0")? },
+        let drag = match (self.drag_coefficient, self.ball_panels) {
+            (Some(_), Some(_)) => return Err(FlightError::Conflict { first: "drag_coefficient", second: "ball_panels" }),
+            (Some(c), None) => DragModel::Constant { value: check("drag_coefficient", c, c >= 0.0, "finite and >= 0")? },
+            (None, panels) => {
+                let panels = panels.unwrap_or(BallConstruction::DEFAULT_PANELS as f64);
+                match BallConstruction::with_panels(panels) {
+                    Some(construction) => DragModel::DragCrisis { construction },
+                    None => return Err(invalid("ball_panels", panels, PANELS_REQUIREMENT)),
+                }
+            }
         };
         let lift = match self.lift_coefficient {
             None => LiftModel::Saturating,
@@ -508,6 +527,16 @@ mod tests {
         assert_eq!(refused(with(&|s| s.altitude = Some(f64::NAN))), "altitude");
         assert_eq!(refused(with(&|s| s.drag_coefficient = Some(-0.2))), "drag_coefficient");
         assert_eq!(refused(with(&|s| s.lift_coefficient = Some(-0.2))), "lift_coefficient");
+        assert_eq!(refused(with(&|s| s.ball_panels = Some(12.0))), "ball_panels");
+        assert_eq!(refused(with(&|s| s.ball_panels = Some(f64::NAN))), "ball_panels");
+        assert_eq!(
+            with(&|s| {
+                s.ball_panels = Some(32.0);
+                s.drag_coefficient = Some(0.2)
+            })
+            .build(),
+            Err(FlightError::Conflict { first: "drag_coefficient", second: "ball_panels" })
+        );
         assert_eq!(refused(with(&|s| s.spin_decay = Some(-1.0))), "spin_decay");
         assert_eq!(refused(with(&|s| s.distance = Some(0.0))), "distance");
         assert_eq!(

@@ -34,3 +34,128 @@ pub fn flight<'py>(py: Python<'py>, params: Option<&Bound<'py, PyDict>>) -> PyRe
         crate::convert::json_to_py(py, &serde_json::to_value(outcome).map_err(value_error)?)
     })
 }
+
+/// Many flights: `flight`'s keywords, each a scalar or an array, broadcast
+/// by numpy's rules (a vector with a trailing axis of 3); the rows solved by
+/// `kick_flight::flight_many` with the GIL released. Per row a status code
+/// (`FlightError::status`), NaN outcomes and a message when it failed.
+#[pyfunction]
+#[pyo3(signature = (*, threads = None, **arrays))]
+pub fn flight_many<'py>(
+    py: Python<'py>,
+    threads: Option<usize>,
+    arrays: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    guard(|| {
+        let numpy = py.import("numpy")?;
+        let float64 = numpy.getattr("float64")?;
+        let mut given: Vec<(FlightParameter, Bound<'py, PyAny>)> = Vec::new();
+        if let Some(arrays) = arrays {
+            for (key, value) in arrays.iter() {
+                let name: String = key.extract()?;
+                let parameter = FlightParameter::from_name(&name).map_err(|_| {
+                    let valid: Vec<&str> = FLIGHT_PARAMETERS.iter().map(|p| p.name).collect();
+                    value_error(format!(
+                        "unknown flight parameter `{name}`{}",
+                        parameters::did_you_mean(&parameters::nearby(&name, &valid), &valid)
+                    ))
+                })?;
+                if !value.is_none() {
+                    given.push((parameter, numpy.getattr("asarray")?.call1((value, &float64))?));
+                }
+            }
+        }
+        // Row shapes: a vector's array has a trailing axis of 3.
+        let mut shapes = Vec::new();
+        for (p, array) in &given {
+            let mut shape: Vec<usize> = array.getattr("shape")?.extract()?;
+            if p.components() == 3 {
+                if shape.last() != Some(&3) {
+                    return Err(value_error(format!(
+                        "`{}` takes three numbers (x, y, z) on its last axis, got shape {shape:?}",
+                        p.name()
+                    )));
+                }
+                shape.pop();
+            }
+            shapes.push(pyo3::types::PyTuple::new(py, shape)?);
+        }
+        let shape: Vec<usize> = numpy
+            .getattr("broadcast_shapes")?
+            .call1(pyo3::types::PyTuple::new(py, &shapes)?)
+            .map_err(|e| value_error(format!("shape mismatch: the parameters cannot be broadcast to one shape ({e})")))?
+            .extract()?;
+        let rows: usize = shape.iter().product();
+        let mut flat: Vec<(FlightParameter, Vec<f64>)> = Vec::with_capacity(given.len());
+        for (p, array) in &given {
+            let mut target = shape.clone();
+            if p.components() == 3 {
+                target.push(3);
+            }
+            let full = numpy.getattr("broadcast_to")?.call1((array, pyo3::types::PyTuple::new(py, target)?))?;
+            let values: Vec<f64> = numpy.getattr("ravel")?.call1((full,))?.extract()?;
+            flat.push((*p, values));
+        }
+        let columns: Vec<kick_flight::Column> =
+            flat.iter().map(|(p, v)| kick_flight::Column { parameter: *p, values: v }).collect();
+        let results = py
+            .detach(|| kick_flight::flight_many(&FlightSpec::default(), &columns, rows, threads))
+            .map_err(value_error)?;
+        many_outputs(py, &shape, &results)
+    })
+}
+
+/// The rows' results as a dict of arrays of the rows' shape (vectors with a
+/// trailing axis of 2 or 3).
+fn many_outputs<'py>(
+    py: Python<'py>,
+    shape: &[usize],
+    results: &[Result<kick_flight::FlightOutcome, kick_flight::FlightError>],
+) -> PyResult<Bound<'py, PyDict>> {
+    type Get = fn(&kick_flight::FlightOutcome) -> Vec<f64>;
+    let columns: [(&str, usize, Get); 16] = [
+        ("flight_time", 1, |o| vec![o.flight_time]),
+        ("landing_point", 2, |o| o.landing_point.to_vec()),
+        ("apex_height", 1, |o| vec![o.apex_height]),
+        ("apex_time", 1, |o| vec![o.apex_time]),
+        ("landing_velocity", 3, |o| o.landing_velocity.to_vec()),
+        ("landing_spin", 3, |o| o.landing_spin.to_vec()),
+        ("crossed", 1, |o| vec![if o.crossing.is_some() { 1.0 } else { 0.0 }]),
+        ("crossing_time", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.time])),
+        ("crossing_height", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.height])),
+        ("crossing_lateral_offset", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.lateral_offset])),
+        ("crossing_velocity", 3, |o| o.crossing.map_or(vec![f64::NAN; 3], |c| c.velocity.to_vec())),
+        ("launch_reynolds", 1, |o| vec![o.launch.reynolds]),
+        ("launch_spin_parameter", 1, |o| vec![o.launch.spin_parameter]),
+        ("launch_drag_coefficient", 1, |o| vec![o.launch.drag_coefficient]),
+        ("launch_lift_coefficient", 1, |o| vec![o.launch.lift_coefficient]),
+        ("steps", 1, |o| vec![o.steps as f64]),
+    ];
+    let out = PyDict::new(py);
+    let reshape = |values: Bound<'py, PyAny>, width: usize| -> PyResult<Bound<'py, PyAny>> {
+        let mut s = shape.to_vec();
+        if width > 1 {
+            s.push(width);
+        }
+        values.call_method1("reshape", (pyo3::types::PyTuple::new(py, s)?,))
+    };
+    for (name, width, get) in columns {
+        let mut values = Vec::with_capacity(results.len() * width);
+        for r in results {
+            match r {
+                Ok(o) => values.extend(get(o)),
+                Err(_) => values.extend(std::iter::repeat_n(f64::NAN, width)),
+            }
+        }
+        out.set_item(name, reshape(numpy::PyArray1::from_vec(py, values).into_any(), width)?)?;
+    }
+    let evaluations: Vec<u64> = results.iter().map(|r| r.as_ref().map_or(0, |o| o.evaluations)).collect();
+    out.set_item("evaluations", reshape(numpy::PyArray1::from_vec(py, evaluations).into_any(), 1)?)?;
+    let status: Vec<u8> = results.iter().map(|r| r.as_ref().map_or_else(|e| e.status().code(), |_| 0)).collect();
+    out.set_item("status", reshape(numpy::PyArray1::from_vec(py, status).into_any(), 1)?)?;
+    let failures: Vec<(i64, String)> =
+        results.iter().enumerate().filter_map(|(i, r)| r.as_ref().err().map(|e| (i as i64, e.to_string()))).collect();
+    out.set_item("failure_index", numpy::PyArray1::from_vec(py, failures.iter().map(|f| f.0).collect()))?;
+    out.set_item("failure_message", pyo3::types::PyList::new(py, failures.iter().map(|f| f.1.as_str()))?)?;
+    Ok(out)
+}

@@ -193,7 +193,7 @@ pub fn keywords(function: &str) -> PyResult<Vec<&'static str>> {
     Ok(match function {
         "simulate" | "simulate_many" | "history" => parameters::at_levels(ScenarioSpec::LEVELS).map(|p| p.name).collect(),
         "simulate3d" | "simulate3d_many" | "history3d" => parameters::at_levels(KickSpec::LEVELS).map(|p| p.name).collect(),
-        "flight" => kick_flight::spec::FLIGHT_PARAMETERS.iter().map(|p| p.name).collect(),
+        "flight" | "flight_many" => kick_flight::spec::FLIGHT_PARAMETERS.iter().map(|p| p.name).collect(),
         other => return Err(value_error(format!("no function `{other}` takes declared parameters"))),
     })
 }

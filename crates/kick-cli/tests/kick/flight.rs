@@ -57,6 +57,39 @@ fn flight_json_has_the_contract_keys_and_matches_kick_flight() {
     assert!(v.get("crossing").is_some_and(|c| c.is_null()));
 }
 
+/// `--format json` reports the air's numbers at launch: Re = ρ v 2R/μ,
+/// S = R|ω × v|/|v|², C_D and C_L there, computed here independently (Eq. 3
+/// without spin; the spinning ball's join above the crisis; the 32-panel
+/// ball's crisis at 2.5/3.1 of the Teamgeist's Re).
+#[test]
+fn flight_json_reports_the_launch_aerodynamics() {
+    let v = json(&["flight", "--speed", "12", "--launch-angle", "10", "--format", "json"]);
+    let launch = &v["launch"];
+    let (rho, mu, d) = (1.225, 1.7894e-5, 0.22);
+    assert!(close(num(&launch["reynolds"]), rho * 12.0 * d / mu, 1e-4), "{launch}");
+    assert_eq!(num(&launch["spin_parameter"]), 0.0);
+    assert_eq!(num(&launch["lift_coefficient"]), 0.0);
+    let eq3 = |v: f64| 0.155 + 0.346 / (1.0 + ((v - 12.19) / 1.309_f64).exp());
+    assert!(close(num(&launch["drag_coefficient"]), eq3(12.0), 1e-12), "{launch}");
+    // Sidespin 50 rad/s about the vertical at 25 m/s, 10° up: |ω × v| = ω v cos θ, so S = R ω cos θ/v.
+    let v = json(&["flight", "--speed", "25", "--launch-angle", "10", "--spin", "0,0,50", "--format", "json"]);
+    let launch = &v["launch"];
+    let s = 0.11 * 50.0 * 10f64.to_radians().cos() / 25.0;
+    assert!(close(num(&launch["spin_parameter"]), s, 1e-12), "{launch}");
+    let s_star = (0.155_f64 / 0.4127).powf(1.0 / 0.3056);
+    let sup = 0.155 * (1.0 + (s / s_star).powi(4)).powf(0.3056 / 4.0);
+    let sigma = 1.0 / (1.0 + ((25.0 - 12.19) / 1.309_f64).exp());
+    assert!(close(num(&launch["drag_coefficient"]), sup + sigma * (0.501 - sup), 1e-9), "{launch}");
+    assert!(num(&launch["drag_coefficient"]) > 0.2, "a spinning ball has more drag than 0.155");
+    let lift = 0.2923 * (1.0 - (-(s / 0.1027).powi(2)).exp());
+    assert!(close(num(&launch["lift_coefficient"]), lift, 1e-12), "{launch}");
+    // A 32-panel ball at 12 m/s is past more of its crisis: its Re_c is 2.5/3.1 of the default's.
+    let v = json(&["flight", "--speed", "12", "--launch-angle", "10", "--ball-panels", "32", "--format", "json"]);
+    let k = 2.5 / 3.1;
+    let expected = 0.155 + 0.346 / (1.0 + ((12.0 - k * 12.19) / (k * 1.309_f64)).exp());
+    assert!(close(num(&v["launch"]["drag_coefficient"]), expected, 1e-9), "{}", v["launch"]);
+}
+
 /// No drag, no lift: the vacuum parabola, T = 2 v sinθ/g, range v² sin2θ/g,
 /// apex R + v² sin²θ/(2g) (the centre's height above the ground, starting at
 /// R), crossing height R + v sinθ t − g t²/2 at x = d.
@@ -86,12 +119,13 @@ fn flight_without_air_forces_is_the_parabola() {
 
 #[test]
 fn flight_bad_input_names_the_flag() {
-    let cases: [(&[&str], &str); 7] = [
+    let cases: [(&[&str], &str); 8] = [
         (&["flight", "--speed", "-1", "--launch-angle", "20"], "--speed"),
         (&["flight", "--speed", "nan", "--launch-angle", "20"], "--speed"),
         (&["flight", "--speed", "20"], "--launch-angle"),
         (&["flight", "--speed", "20", "--launch-angle", "20", "--spin", "1,2"], "--spin"),
         (&["flight", "--speed", "20", "--launch-angle", "20", "--drag-coefficient", "-0.1"], "--drag-coefficient"),
+        (&["flight", "--speed", "20", "--launch-angle", "20", "--ball-panels", "12"], "--ball-panels"),
         (&["flight", "--speed", "20", "--launch-angle", "20", "--launch-velocity", "20,0,5"], "--speed"),
         (&["simulate", "--distance", "20"], "--flight"),
     ];

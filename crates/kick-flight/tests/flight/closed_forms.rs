@@ -151,8 +151,9 @@ fn model_flights_against_a_tightened_solve() {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
-    /// Kicks through the drag crisis (3–40 m/s), with any spin, spin decay
-    /// on or off, default coefficient models.
+    /// Kicks through the drag crisis (3–40 m/s), with any spin (so through
+    /// the join of the spinning ball's drag, S* ≈ 0.04), spin decay on or
+    /// off, any ball construction, default coefficient models.
     #[test]
     fn random_kicks_against_a_tightened_solve(
         speed in 3.0..40.0_f64,
@@ -161,11 +162,13 @@ proptest! {
         spin in prop::array::uniform3(-80.0..80.0_f64),
         decay in prop::option::of(0.0..2.0_f64),
         distance in 1.0..40.0_f64,
+        panels in prop::option::of(prop::sample::select(vec![32.0, 14.0, 8.0, 6.0])),
     ) {
         let spec = FlightSpec {
             azimuth: Some(azimuth),
             spin: Some(spin),
             spin_decay: decay,
+            ball_panels: panels,
             distance: Some(distance),
             ..FlightSpec::from_exit_speed(speed, angle)
         };

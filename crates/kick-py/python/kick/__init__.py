@@ -16,6 +16,7 @@ history                   uniform time history of one 1D contact (dict of 1-D ar
 history3d                 uniform time history of one 3D kick, accurate path (dict of 1-D arrays)
 fit                       identify parameters from a measured history (``kick fit data``)
 flight                    the ball's flight after the kick (kick-flight)
+flight_many               many flights from arrays (numpy broadcasting), in parallel in Rust
 kick.dask.simulate_many   ``simulate_many`` spread over a dask ``distributed`` cluster
 
 Bad input raises ``ValueError`` with the command line's message. A keyword
@@ -52,6 +53,7 @@ __all__ = [
     "history3d",
     "fit",
     "flight",
+    "flight_many",
     "PARAMETERS",
     "STATUS",
     "OBSERVABLES",
@@ -72,7 +74,7 @@ PARAMETERS = tuple(_kick.parameters())
 def keywords(function: str) -> list[dict]:
     """The declared parameters a function takes as keywords, in declaration order."""
     names = _kick.keywords(function)
-    flight = function == "flight"
+    flight = function in ("flight", "flight_many")
     return [p for n in names for p in PARAMETERS if p["name"] == n and (p["level"] == "flight") == flight]
 
 
@@ -317,7 +319,43 @@ _declare(
     "apex_height (m), apex_time (s), landing_velocity (array of 3, m/s),\n"
     "landing_spin (array of 3, rad/s), crossing (None, or a dict with\n"
     "distance, time, height, lateral_offset, velocity when ``distance`` is\n"
-    "given and reached), steps, evaluations.",
+    "given and reached), launch (dict: reynolds, spin_parameter,\n"
+    "drag_coefficient, lift_coefficient at launch), steps, evaluations.",
+)
+
+
+def flight_many(**arrays):
+    return _kick.flight_many(**arrays)
+
+
+_FLIGHT_MANY_OUTPUTS = [
+    ("flight_time", "s"),
+    ("landing_point", "m (x, y: trailing axis of 2)"),
+    ("apex_height", "m"),
+    ("apex_time", "s"),
+    ("landing_velocity", "m/s (trailing axis of 3)"),
+    ("landing_spin", "rad/s (trailing axis of 3)"),
+    ("crossed", "1 when the ball reaches x = distance before landing, else 0"),
+    ("crossing_time", "s (NaN when not crossed)"),
+    ("crossing_height", "m"),
+    ("crossing_lateral_offset", "m"),
+    ("crossing_velocity", "m/s (trailing axis of 3)"),
+    ("launch_reynolds", "1"),
+    ("launch_spin_parameter", "1"),
+    ("launch_drag_coefficient", "1"),
+    ("launch_lift_coefficient", "1"),
+    ("steps", "1"),
+]
+
+_declare(
+    flight_many,
+    "flight_many",
+    [],
+    [_threads],
+    "Solve many flights, as ``flight`` does, from arrays "
+    "(``kick_flight::flight_many``).\n" + _MANY_DOC.replace("1 numerical failure, 2 trapped", "1 numerical failure")
+    .replace("0 separated", "0 landed"),
+    "Outcomes\n--------\n" + _outputs_docs(_FLIGHT_MANY_OUTPUTS),
 )
 
 from . import dask  # noqa: E402  (kick.dask.simulate_many; needs `distributed` only when called)

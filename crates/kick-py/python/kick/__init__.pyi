@@ -200,8 +200,32 @@ def flight(
     pressure: float | None = ...,
     altitude: float | None = ...,
     drag_coefficient: float | None = ...,
+    ball_panels: float | None = ...,
     lift_coefficient: float | None = ...,
     spin_decay: float | None = ...,
     distance: float | None = ...,
 ) -> dict[str, Any]:
     """The ball's flight after the kick (crate kick-flight): drag crisis in Re,"""
+
+def flight_many(
+    *,
+    speed: ArrayLike | None = ...,
+    launch_angle: ArrayLike | None = ...,
+    azimuth: ArrayLike | None = ...,
+    launch_velocity: ArrayLike | None = ...,
+    spin: ArrayLike | None = ...,
+    ball_mass: ArrayLike | None = ...,
+    ball_radius: ArrayLike | None = ...,
+    gravity: ArrayLike | None = ...,
+    air_density: ArrayLike | None = ...,
+    temperature: ArrayLike | None = ...,
+    pressure: ArrayLike | None = ...,
+    altitude: ArrayLike | None = ...,
+    drag_coefficient: ArrayLike | None = ...,
+    ball_panels: ArrayLike | None = ...,
+    lift_coefficient: ArrayLike | None = ...,
+    spin_decay: ArrayLike | None = ...,
+    distance: ArrayLike | None = ...,
+    threads: int | None = ...,
+) -> dict[str, Any]:
+    """Solve many flights, as ``flight`` does, from arrays (``kick_flight::flight_many``)."""
