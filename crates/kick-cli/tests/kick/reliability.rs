@@ -155,11 +155,22 @@ fn sigkill_keeps_the_old_result_and_the_next_run_clears_what_it_left() {
 }
 
 /// Largest resident set of any child of this test process so far, bytes.
-fn children_peak_rss() -> u64 {
-    // SAFETY: getrusage fills the zeroed struct it is given.
+/// Runs `command` to its end with stdout captured: its stdout and its own
+/// peak resident set (wait4's rusage of that child alone: RUSAGE_CHILDREN
+/// would also count the children of the tests running beside this one).
+fn output_and_peak_rss(command: &mut Command) -> (std::process::ExitStatus, Vec<u8>, Vec<u8>, u64) {
+    use std::io::Read;
+    use std::os::unix::process::ExitStatusExt;
+    let mut child = command.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
+    let (mut stdout, mut stderr) = (Vec::new(), Vec::new());
+    child.stdout.take().unwrap().read_to_end(&mut stdout).unwrap();
+    child.stderr.take().unwrap().read_to_end(&mut stderr).unwrap();
+    let mut status = 0;
+    // SAFETY: wait4 fills the zeroed struct it is given; the child is ours and not yet waited for.
     let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
-    assert_eq!(unsafe { libc::getrusage(libc::RUSAGE_CHILDREN, &mut usage) }, 0);
-    u64::try_from(usage.ru_maxrss).unwrap() * 1024
+    let pid = unsafe { libc::wait4(child.id() as libc::pid_t, &mut status, 0, &mut usage) };
+    assert_eq!(pid, child.id() as libc::pid_t);
+    (std::process::ExitStatus::from_raw(status), stdout, stderr, u64::try_from(usage.ru_maxrss).unwrap() * 1024)
 }
 
 /// `kick simulate --history FILE --interval 2e-8` (2.7e5 rows, 60 MB) and
@@ -169,13 +180,16 @@ fn children_peak_rss() -> u64 {
 #[test]
 fn long_histories_are_streamed_to_the_file() {
     let dir = scratch("history");
+    let mut peak = 0;
     for (command, interval, file, least_rows) in
         [("simulate", "2e-8", "h1.csv", 260_000usize), ("simulate3d", "2e-8", "h3.csv", 260_000)]
     {
         let path = dir.join(file);
-        let out = kick().args([command, "--history", path.to_str().unwrap(), "--interval", interval, "--format", "json"]).output().unwrap();
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-        let summary: serde_json::Value = serde_json::from_slice(&out.stdout).expect("stdout is the JSON summary alone");
+        let (status, stdout, stderr, rss) =
+            output_and_peak_rss(kick().args([command, "--history", path.to_str().unwrap(), "--interval", interval, "--format", "json"]));
+        assert!(status.success(), "{}", String::from_utf8_lossy(&stderr));
+        peak = peak.max(rss);
+        let summary: serde_json::Value = serde_json::from_slice(&stdout).expect("stdout is the JSON summary alone");
         assert!(summary.get("history").is_none());
         // Read line by line: this process's memory would count for the next child's (fork).
         use std::io::BufRead;
@@ -185,7 +199,6 @@ fn long_histories_are_streamed_to_the_file() {
         assert!(rows > least_rows, "{command}: {rows} rows");
         assert!(bytes > 50_000_000, "{command}: {bytes} bytes");
     }
-    let peak = children_peak_rss();
     println!("peak resident set {peak} bytes");
     assert!(peak < 50_000_000, "peak resident set of kick: {peak} bytes");
     assert_eq!(names(&dir), ["h1.csv", "h3.csv"]);

@@ -53,6 +53,7 @@ fn each_row_is_the_solve_of_its_stored_parameters() {
     let status = file.dataset("outcomes/status").unwrap().read_raw::<u8>().unwrap();
     let outcomes: Vec<Vec<[f64; 3]>> = OUTCOMES.iter().map(|c| rows(&file, &format!("outcomes/{}", c.0))).collect();
     let energy: Vec<Vec<[f64; 3]>> = ENERGY.iter().map(|c| rows(&file, &format!("outcomes/energy/{}", c.0))).collect();
+    let mut refused = 0;
     for i in 0..48 {
         let mut spec = KickSpec::default();
         spec.scenario.law = Some(law);
@@ -66,7 +67,16 @@ fn each_row_is_the_solve_of_its_stored_parameters() {
             };
             spec.set_parameter(p, value).unwrap();
         }
-        let o = Solver3d::Auto.solve(&spec.build().unwrap()).unwrap();
+        // A row the model refuses (a compression beyond the ball's radius) is
+        // stored with the status of that refusal.
+        let o = match Solver3d::Auto.solve(&spec.build().unwrap()) {
+            Ok(o) => o,
+            Err(e) => {
+                assert_eq!(status[i], e.status().code(), "row {i}: {e}");
+                refused += 1;
+                continue;
+            }
+        };
         assert_eq!(status[i], Status::Separated.code(), "row {i}");
         for (c, column) in OUTCOMES.iter().zip(&outcomes) {
             let expected = (c.3)(&o);
@@ -78,6 +88,8 @@ fn each_row_is_the_solve_of_its_stored_parameters() {
         // The drawn kick is the stored one: the sampler's spec solves to the same row.
         assert_eq!(Solver3d::Auto.solve(&SampledKicks { seed: 11, fixed: settings(1, 11, &out).fixed }.spec(i as u64).build().unwrap()).unwrap(), o);
     }
+    println!("{refused} of 48 rows refused");
+    assert!(refused * 8 < 48, "{refused} of 48 rows refused: the sampled box should mostly solve");
     // Inside the box and the declared ranges.
     let by_name = |name: &str| &stored[declared.iter().position(|p| p.name == name).unwrap()];
     for i in 0..48 {
