@@ -37,7 +37,7 @@ impl OffCenterBox {
     /// The box's draws of kick `index`: offset (m), approach angle (deg),
     /// friction and foot mass (kg), the same for every run, order and thread.
     pub fn values(&self, index: u64) -> [f64; 4] {
-        // SplitMix64 finaliser of (seed, index), as kick-runner's sweeps.
+        // SplitMix64 finaliser of (seed, index), as kick-study's sweeps.
         let mut z = self.seed ^ index.wrapping_mul(0x9E37_79B9_7F4A_7C15);
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);

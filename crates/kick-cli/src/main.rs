@@ -265,7 +265,7 @@ struct Leg {
     height: f64,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
-    /// Also write the figure data to DIR (kick-runner's HDF5 sweep layout):
+    /// Also write the figure data to DIR (kick-store's HDF5 sweep layout):
     /// leg_effective_mass.h5 (knee 0-120 x ankle 0-90 deg, locked and free
     /// ankle) and leg_exit_speed.h5 (v_b+ vs m_f); other settings as given
     #[arg(long, value_name = "DIR")]

@@ -271,7 +271,7 @@ fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<
     Ok(written)
 }
 
-/// Figure data through kick-runner's sweep writer: parameters and outcome
+/// Figure data through kick-store's sweep writer: parameters and outcome
 /// columns with units, provenance at the root.
 fn write_sweeps(
     dir: &std::path::Path,

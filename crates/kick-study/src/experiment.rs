@@ -254,13 +254,11 @@ impl Scenarios {
         match self {
             Scenarios::Grid { base, axes } => {
                 let mut values = base.values();
-                let mut rest = index;
-                for axis in axes.iter().rev() {
-                    let n = axis.values.len() as u64;
+                crate::grid::decode(axes.iter().map(|a| a.values.len()), index, |k, position| {
+                    let axis = &axes[k];
                     let slot = Parameter::ALL.iter().position(|&p| p == axis.parameter).unwrap_or(0);
-                    values[slot] = axis.values[(rest % n) as usize];
-                    rest /= n;
-                }
+                    values[slot] = axis.values[position];
+                });
                 Scenario::from_values(values)?.with_law(base.law_kind(), base.restitution_target())
             }
             Scenarios::Named { scenarios, .. } => Ok(scenarios[index as usize]),

@@ -20,6 +20,7 @@ pub mod columns;
 pub mod experiment;
 pub mod flight;
 pub mod free_kick;
+pub mod grid;
 pub mod history;
 pub mod limits;
 pub mod numbers_3d;

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 /// with HDF5 file locking off as the `kick` binary has it.
 pub fn scratch(name: &str) -> PathBuf {
     kick_store::h5::disable_file_locking();
-    let dir = std::env::temp_dir().join(format!("kick-runner-{}-{name}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("kick-paper-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("temp dir");
     dir

@@ -1,5 +1,5 @@
 //! The result files of `kick laws` and `kick fit` (HDF5, through
-//! kick-runner's writers; every dataset has `units`, the root the
+//! kick-store's writers; every dataset has `units`, the root the
 //! provenance), and their readers. Figures and `paper/laws.md`,
 //! `paper/identification.md` are drawn from these files only.
 //!

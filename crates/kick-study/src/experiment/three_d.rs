@@ -77,12 +77,7 @@ impl Grid3d {
     /// The axes' values at cell `index`, in axis order.
     pub fn coordinates(&self, index: u64) -> Vec<f64> {
         let mut out = vec![0.0; self.axes.len()];
-        let mut rest = index;
-        for (slot, axis) in out.iter_mut().zip(&self.axes).rev() {
-            let n = axis.values.len() as u64;
-            *slot = axis.values[(rest % n) as usize];
-            rest /= n;
-        }
+        crate::grid::decode(self.axes.iter().map(|a| a.values.len()), index, |k, position| out[k] = self.axes[k].values[position]);
         out
     }
 
