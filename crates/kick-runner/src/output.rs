@@ -32,6 +32,8 @@ pub enum OutputError {
     Busy { path: PathBuf, lock: PathBuf, holder: Option<u32> },
     #[error("cannot write {}: {message}", path.display())]
     Io { path: PathBuf, message: String },
+    #[error("`{flag}` = `{}`: {message}", path.display())]
+    Refused { flag: String, path: PathBuf, message: String },
 }
 
 fn io(path: &Path) -> impl Fn(std::io::Error) -> OutputError + '_ {
@@ -85,6 +87,40 @@ pub fn install_signal_cleanup() -> Result<(), OutputError> {
         .map_err(|e| OutputError::Io { path: PathBuf::from("(signal thread)"), message: e.to_string() })?;
     *installed = true;
     Ok(())
+}
+
+/// Refuse, before any work, an output `out` (given as `flag`) that does not
+/// end in `.EXT` or is one of `inputs` (the same file, by device and inode:
+/// a second name or a link to an input counts), or a directory.
+pub fn check_output(out: &Path, flag: &str, ext: &str, inputs: &[&Path]) -> Result<(), OutputError> {
+    let refused = |message: String| OutputError::Refused { flag: flag.to_string(), path: out.to_path_buf(), message };
+    if out.extension().and_then(|e| e.to_str()) != Some(ext) {
+        return Err(refused(format!("an output file must end in `.{ext}` (this keeps an input from being replaced by mistake)")));
+    }
+    if std::fs::metadata(out).is_ok_and(|m| m.is_dir()) {
+        return Err(refused("is a directory; give a file name".into()));
+    }
+    for input in inputs {
+        if is_same_file(out, input) {
+            return Err(refused(format!("is the input {}; write elsewhere", input.display())));
+        }
+    }
+    Ok(())
+}
+
+/// Whether two paths name one existing file.
+#[cfg(unix)]
+pub fn is_same_file(a: &Path, b: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    match (std::fs::metadata(a), std::fs::metadata(b)) {
+        (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+        _ => false,
+    }
+}
+
+#[cfg(not(unix))]
+pub fn is_same_file(a: &Path, b: &Path) -> bool {
+    matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b)
 }
 
 /// `NAME.EXT.lock` beside `target`.
@@ -252,6 +288,10 @@ impl Staged {
             _ => PathBuf::from("."),
         };
         std::fs::create_dir_all(&directory).map_err(io(&directory))?;
+        // Checked now, not found at the rename after all the work.
+        if std::fs::symlink_metadata(target).is_ok_and(|m| m.is_dir()) {
+            return Err(OutputError::Io { path: target.to_path_buf(), message: "it is a directory; give a file name or another directory".into() });
+        }
         let lock = Lock::acquire(target)?;
         let (stem, ext) = split_name(target);
         remove_stale_temporaries(&directory, &stem, &ext);

@@ -275,6 +275,8 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
 /// unsharded run of the experiment writes.
 pub fn merge(out: &Path, parts: &[PathBuf]) -> Result<MergeReport, ShardError> {
     disable_file_locking();
+    let inputs: Vec<&Path> = parts.iter().map(|p| p.as_path()).collect();
+    crate::output::check_output(out, "OUT", "h5", &inputs)?;
     let pieces = check(parts.iter().map(|p| Piece::open(p)).collect::<Result<Vec<_>, _>>()?)?;
     let total = pieces[0].total;
     let (file, staged) = create_staged(out)?;

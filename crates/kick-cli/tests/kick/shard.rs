@@ -139,3 +139,36 @@ fn a_3d_experiment_runs_in_shards_and_merges() {
     assert_eq!(merged, whole);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An output that is one of the inputs, or not `.h5`, is refused naming the
+/// argument, and the input is left as it was (issue 21).
+#[test]
+fn merge_refuses_an_output_that_would_replace_an_input() {
+    let dir = scratch("overwrite");
+    let file = dir.join("grid.toml");
+    std::fs::write(&file, GRID).unwrap();
+    let parts = dir.join("parts");
+    let mut names = Vec::new();
+    for given in ["0/2", "1/2"] {
+        let done = kick(&["run", file.to_str().unwrap(), "--out", parts.to_str().unwrap(), "--shard", given]);
+        assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
+        names.push(parts.join(format!("grid.shard-{}-of-2.h5", &given[..1])).to_str().unwrap().to_string());
+    }
+    let before = std::fs::read(&names[0]).unwrap();
+    let toml = std::fs::read(&file).unwrap();
+    for (out, says) in [(names[0].as_str(), "is the input"), (file.to_str().unwrap(), "must end in `.h5`")] {
+        let done = kick(&["merge", out, &names[0], &names[1]]);
+        assert_eq!(done.status.code(), Some(1), "{out}");
+        let stderr = String::from_utf8_lossy(&done.stderr);
+        assert!(stderr.contains(&format!("`OUT` = `{out}`")) && stderr.contains(says), "{stderr}");
+    }
+    assert_eq!(std::fs::read(&names[0]).unwrap(), before);
+    assert_eq!(std::fs::read(&file).unwrap(), toml);
+    // A directory where the file goes is refused before any row is solved.
+    std::fs::create_dir_all(dir.join("whole/grid.h5")).unwrap();
+    let done = kick(&["run", file.to_str().unwrap(), "--out", dir.join("whole").to_str().unwrap()]);
+    assert_eq!(done.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&done.stderr);
+    assert!(stderr.contains("grid.h5") && stderr.contains("it is a directory; give a file name"), "{stderr}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

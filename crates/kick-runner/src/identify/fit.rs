@@ -188,6 +188,11 @@ pub struct DataFit {
 pub fn data(spec_path: &Path, out: Option<&Path>) -> Result<DataFit, String> {
     let (spec, observations) = FitSpec::load(spec_path).map_err(text)?;
     let name = spec_path.display().to_string();
+    if let Some(path) = out {
+        let history = spec.history.as_ref().map(|h| spec_path.parent().unwrap_or(Path::new(".")).join(&h.file));
+        let inputs: Vec<&Path> = std::iter::once(spec_path).chain(history.as_deref()).collect();
+        crate::output::check_output(path, "--out", "h5", &inputs).map_err(|e| e.to_string())?;
+    }
     let start = spec.start(&name).map_err(text)?;
     let free = spec.free_parameters().map_err(text)?;
     let truth = spec.truth().map_err(text)?;
