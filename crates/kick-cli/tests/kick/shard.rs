@@ -172,3 +172,45 @@ fn merge_refuses_an_output_that_would_replace_an_input() {
     assert!(stderr.contains("grid.h5") && stderr.contains("it is a directory; give a file name"), "{stderr}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// 1,200 parts merge with at most 256 open files (one part open at a time),
+/// into the file an unsharded run writes (issue 21).
+#[test]
+fn many_parts_merge_under_a_low_open_file_limit() {
+    let dir = scratch("many");
+    let values = |n: usize, from: f64, step: f64| (0..n).map(|i| format!("{}", from + step * i as f64)).collect::<Vec<_>>().join(", ");
+    let text = format!(
+        "solver = \"accurate\"\n[[sweep]]\nparameter = \"stiffness\"\nvalues = [{}]\n[[sweep]]\nparameter = \"damping\"\nvalues = [{}]\n",
+        values(40, 2e5, 2e4),
+        values(30, 0.0, 4.0)
+    );
+    let file = dir.join("many.toml");
+    std::fs::write(&file, &text).unwrap();
+    let experiment = kick_runner::experiment::parse(&file, &text).unwrap();
+    let count = 1200;
+    let parts: Vec<String> = (0..count)
+        .map(|i| {
+            let shard = kick_runner::shard::Shard::parse(&format!("{i}/{count}"), "--shard").unwrap();
+            kick_runner::shard::run_shard(&experiment, shard, &dir.join("parts"), false).unwrap();
+            dir.join("parts").join(shard.file_name("many")).to_str().unwrap().to_string()
+        })
+        .collect();
+    let merged = dir.join("merged.h5");
+    let out = Command::new("bash")
+        .arg("-c")
+        .arg("ulimit -n 256 && exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_kick"))
+        .arg("merge")
+        .arg(&merged)
+        .args(&parts)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("1200 shards, 1200 rows"));
+    let whole = kick_runner::run(&experiment, &dir.join("whole"), false).unwrap().path;
+    let mut merged = kick_runner::SweepData::read(&merged).unwrap();
+    let whole = kick_runner::SweepData::read(&whole).unwrap();
+    merged.path = whole.path.clone();
+    assert_eq!(merged, whole);
+    let _ = std::fs::remove_dir_all(&dir);
+}
