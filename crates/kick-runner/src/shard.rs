@@ -413,8 +413,9 @@ pub fn merge(out: &Path, parts: &[PathBuf]) -> Result<MergeReport, ShardError> {
     crate::output::check_output(out, "OUT", "h5", &inputs)?;
     let pieces = check(parts.iter().map(|p| Piece::open(p)).collect::<Result<Vec<_>, _>>()?)?;
     let total = pieces[0].total;
+    let experiment = experiment_of(&pieces[0]);
     let (file, staged) = create_staged(out)?;
-    let merger = Merger { out, pieces: &pieces, total };
+    let merger = Merger { out, pieces: &pieces, total, experiment: experiment.as_ref() };
     let first = File::open(&pieces[0].path).map_err(h5(&pieces[0].path))?;
     merger.group(&first, &file, "")?;
     drop(first);
@@ -426,6 +427,23 @@ pub fn merge(out: &Path, parts: &[PathBuf]) -> Result<MergeReport, ShardError> {
     drop(pieces);
     let path = close_file(file, staged, out)?;
     Ok(MergeReport { path, parts: parts.len(), rows: total })
+}
+
+/// The 1D experiment the parts were run from, when its text (stored in
+/// every part, the same by fingerprint) parses where the merge runs: its
+/// parameter columns are then checked row by row.
+fn experiment_of(piece: &Piece) -> Option<Experiment> {
+    let file = File::open(&piece.path).ok()?;
+    let text = read_str_attr(&file, "experiment_text")?;
+    let path = read_str_attr(&file, "experiment_file")?;
+    // An experiment file's (`kick sweep` and `kick sweep3d` name no file).
+    if fingerprint(&text) != piece.fingerprint || Path::new(&path).extension().and_then(|e| e.to_str()) != Some("toml") {
+        return None;
+    }
+    match crate::experiment::parse_any(Path::new(&path), &text).ok()? {
+        AnyExperiment::OneD(e) if e.scenarios.len() == piece.total => Some(e),
+        _ => None,
+    }
 }
 
 fn varlen(text: &str) -> hdf5::Result<VarLenUnicode> {
@@ -493,6 +511,7 @@ struct Merger<'a> {
     out: &'a Path,
     pieces: &'a [Piece],
     total: u64,
+    experiment: Option<&'a Experiment>,
 }
 
 impl Merger<'_> {
@@ -557,6 +576,9 @@ impl Merger<'_> {
         }
         for d in &piece.datasets {
             let source = from.dataset(&d.path).map_err(|e| part_error(&piece.path, format!("{}: {e}", d.path)))?;
+            if let (Some(experiment), Some(name)) = (self.experiment, d.path.strip_prefix("/parameters/")) {
+                self.check_parameter(piece, experiment, name, &source)?;
+            }
             let target = file.dataset(&d.path).map_err(self.err())?;
             match kind(&d.path) {
                 Some(Kind::PerRow) => {
@@ -574,6 +596,31 @@ impl Merger<'_> {
             }
         }
         self.histories(piece, &from, file)
+    }
+
+    /// Parameter column `name` of a part: row by row the experiment's value
+    /// (as [`crate::run`] writes it: the scenario's, NaN where it is invalid).
+    fn check_parameter(&self, piece: &Piece, experiment: &Experiment, name: &str, data: &hdf5::Dataset) -> Result<(), ShardError> {
+        let columns = crate::run::parameter_columns(experiment.scenarios.has_restitution());
+        let Some(j) = columns.iter().position(|c| c.name == name) else {
+            return Err(part_error(&piece.path, format!("/parameters/{name}: not a parameter of the experiment")));
+        };
+        let values = data.read_raw::<f64>().map_err(h5(&piece.path))?;
+        for (i, &value) in values.iter().enumerate() {
+            let row = piece.rows.start + i as u64;
+            let expected = match experiment.scenarios.scenario(row) {
+                Ok(s) if j < 8 => s.values()[j],
+                Ok(s) => s.restitution_target().unwrap_or(f64::NAN),
+                Err(_) => f64::NAN,
+            };
+            if value.to_bits() != expected.to_bits() && !(value.is_nan() && expected.is_nan()) {
+                return Err(part_error(&piece.path, format!(
+                    "/parameters/{name}: {} at row {row}, where the experiment gives {}",
+                    kick_core::short(value), kick_core::short(expected)
+                )));
+            }
+        }
+        Ok(())
     }
 
     /// The part's histories, renamed to experiment rows.
@@ -844,7 +891,7 @@ mod tests {
         let dir = scratch("corrupt");
         let (_, parts) = two_parts(&dir);
         type Corruption = (&'static str, &'static str, fn(&hdf5::File));
-        let corruptions: [Corruption; 6] = [
+        let corruptions: [Corruption; 7] = [
             ("short dataset", "5 entries in a part of 6 rows", |f| {
                 f.dataset("parameters/stiffness").unwrap().resize(5).unwrap();
             }),
@@ -855,6 +902,9 @@ mod tests {
                 let name = &crate::run::outcome_columns()[0].name;
                 assert_eq!(f.dataset("outcomes/status").unwrap().read_raw::<u8>().unwrap()[0], 0);
                 f.dataset(&format!("outcomes/{name}")).unwrap().write_slice(&[f64::NAN], 0..1).unwrap();
+            }),
+            ("changed parameter", "/parameters/stiffness: 1 at row 6, where the experiment gives", |f| {
+                f.dataset("parameters/stiffness").unwrap().write_slice(&[1.0], 0..1).unwrap();
             }),
             ("other units", "parameters/damping: f64 [N*s/mm] here, f64 [", |f| {
                 let d = f.dataset("parameters/damping").unwrap();
