@@ -456,7 +456,7 @@ mod tests {
         let victim = dir.join("victim.txt");
         std::fs::write(&victim, b"precious").unwrap();
         std::os::unix::fs::symlink(&victim, lock_path(&target)).unwrap();
-        let message = write(&target, b"new").err().expect("a linked lock must be refused").to_string();
+        let message = write(&target, b"new").expect_err("a linked lock must be refused").to_string();
         assert!(message.contains("run.h5.lock") && message.contains("symbolic link"), "{message}");
         assert_eq!(std::fs::read(&victim).unwrap(), b"precious");
         assert!(std::fs::symlink_metadata(lock_path(&target)).unwrap().file_type().is_symlink(), "the link is left for the user to see");
@@ -472,7 +472,7 @@ mod tests {
         // A hard link to another file is not ours to truncate.
         let third = dir.join("third.h5");
         std::fs::hard_link(&victim, lock_path(&third)).unwrap();
-        let message = write(&third, b"new").err().expect("a hard-linked lock must be refused").to_string();
+        let message = write(&third, b"new").expect_err("a hard-linked lock must be refused").to_string();
         assert!(message.contains("third.h5.lock") && message.contains("hard link"), "{message}");
         assert_eq!(std::fs::read(&victim).unwrap(), b"precious");
 
@@ -480,7 +480,7 @@ mod tests {
         let fourth = dir.join("fourth.h5");
         let fifo = std::ffi::CString::new(lock_path(&fourth).to_str().unwrap()).unwrap();
         assert_eq!(unsafe { libc::mkfifo(fifo.as_ptr(), 0o600) }, 0);
-        let message = write(&fourth, b"new").err().expect("a FIFO lock must be refused").to_string();
+        let message = write(&fourth, b"new").expect_err("a FIFO lock must be refused").to_string();
         assert!(message.contains("fourth.h5.lock") && message.contains("special file"), "{message}");
         let _ = std::fs::remove_dir_all(&dir);
     }
