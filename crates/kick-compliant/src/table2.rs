@@ -59,7 +59,17 @@ pub struct Table2File {
 
 impl Table2File {
     pub fn parse(text: &str) -> Result<Self, String> {
-        toml::from_str(text).map_err(|e| e.to_string())
+        // Position and message, not the offending line: the file given as a
+        // scenario file may be any file (`table2 = "/etc/passwd"`).
+        toml::from_str(text).map_err(|e: toml::de::Error| match e.span() {
+            Some(span) => {
+                let before = text.get(..span.start).unwrap_or(text);
+                let line = before.matches('\n').count() + 1;
+                let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
+                format!("line {line}, column {column}: {}", e.message().trim())
+            }
+            None => e.message().trim().to_string(),
+        })
     }
 
     /// The scenarios, in the paper's order.

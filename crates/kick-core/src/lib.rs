@@ -7,6 +7,7 @@
 pub mod error;
 pub mod check;
 pub mod dop853;
+pub mod input;
 pub mod law;
 pub mod laws;
 pub mod measurements;

@@ -149,6 +149,11 @@ impl Channel {
     }
 }
 
+/// Data rows of a history. A 1 MHz record of a 100 ms contact is 100,000
+/// rows; 200,000 keeps a fit under a minute (a fit's time grows with the
+/// rows: 10 million took 153 s and 10 GB) while no measurement reaches it.
+pub const MAX_HISTORY_ROWS: usize = 200_000;
+
 /// Sampled channels on a common time grid.
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct HistoryData {
@@ -157,7 +162,8 @@ pub struct HistoryData {
 }
 
 impl HistoryData {
-    /// Parse the CSV format described in the module documentation.
+    /// Parse the CSV format described in the module documentation (at most
+    /// [`MAX_HISTORY_ROWS`] data rows).
     pub fn parse_csv(text: &str, source_name: &str) -> Result<HistoryData, IdentifyError> {
         let err = |line: usize, message: String| IdentifyError::data(format!("{source_name}:{line}"), message);
         let mut lines = text
@@ -169,7 +175,8 @@ impl HistoryData {
             lines.next().ok_or_else(|| IdentifyError::data(source_name, "empty file: expected a header line"))?;
         let names: Vec<&str> = header.split(',').map(str::trim).collect();
         if names.first() != Some(&"time") {
-            return Err(err(header_line, format!("the first column must be `time`, found `{}`", names[0])));
+            // The found text is not quoted: the file may be any file.
+            return Err(err(header_line, "the first column must be `time` (is this a history file?)".into()));
         }
         let mut channels = Vec::new();
         for name in &names[1..] {
@@ -184,6 +191,9 @@ impl HistoryData {
         }
         let mut times: Vec<f64> = Vec::new();
         for (number, line) in lines {
+            if times.len() == MAX_HISTORY_ROWS {
+                return Err(err(number, format!("more than {MAX_HISTORY_ROWS} data rows, the most a history may have")));
+            }
             let fields: Vec<&str> = line.split(',').map(str::trim).collect();
             if fields.len() != names.len() {
                 return Err(err(number, format!("{} fields, the header has {}", fields.len(), names.len())));
@@ -242,6 +252,9 @@ impl HistoryData {
         }
         if self.channels.is_empty() {
             return err(format!("no data channel: expected any of {}", Channel::NAMES));
+        }
+        if self.times.len() > MAX_HISTORY_ROWS {
+            return err(format!("{} samples, more than the {MAX_HISTORY_ROWS} a history may have", self.times.len()));
         }
         for (k, pair) in self.times.windows(2).enumerate() {
             if !(pair[1] > pair[0]) {
@@ -340,6 +353,20 @@ impl Observations {
         if self.is_empty() {
             return Err(IdentifyError::NoData);
         }
+        if let Some(history) = &self.history {
+            // A channel that never changes (all zero, or one value) says
+            // nothing about the contact: refused now, not after a long fit.
+            for (channel, values) in &history.data.channels {
+                let first = values[0];
+                if values.iter().all(|&v| v == first) {
+                    let what = if first == 0.0 { "zero".to_string() } else { format!("the one value {}", kick_core::short(first)) };
+                    return Err(IdentifyError::data(
+                        format!("history column `{}`", channel.name()),
+                        format!("all {} rows are {what}: a constant record carries no information on the contact", values.len()),
+                    ));
+                }
+            }
+        }
         for s in &self.scalars {
             if !s.value.is_finite() {
                 return Err(IdentifyError::data(s.observable.name(), format!("value {} is not finite", s.value)));
@@ -433,14 +460,14 @@ impl FitSpec {
     /// Read the specification and the history file it names (relative to it).
     pub fn load(path: &Path) -> Result<(FitSpec, Observations), IdentifyError> {
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| IdentifyError::data(&name, e.to_string()))?;
+        let text = kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| IdentifyError::data(&name, e))?;
         let spec = FitSpec::parse(&text, &name)?;
         let history = match &spec.history {
             None => None,
             Some(h) => {
                 let file = path.parent().unwrap_or(Path::new(".")).join(&h.file);
                 let file_name = file.display().to_string();
-                let csv = std::fs::read_to_string(&file).map_err(|e| IdentifyError::data(&file_name, e.to_string()))?;
+                let csv = kick_core::input::read_text(&file, kick_core::input::MAX_DATA_BYTES).map_err(|e| IdentifyError::data(&file_name, e))?;
                 let data = HistoryData::parse_csv(&csv, &file_name)?;
                 let mut sigma = BTreeMap::new();
                 for (k, v) in &h.sigma {
@@ -501,5 +528,33 @@ mod tests {
         let json = r#"{"free": ["damping"], "scalar": [{"observable": "peak_force", "value": 3804, "sigma": 0.5}]}"#;
         assert_eq!(FitSpec::parse(json, "a.json").unwrap().scalar[0].value, 3804.0);
         assert!(FitSpec::parse("free = [\"k\"]\nbogus = 1\n", "b.toml").is_err());
+    }
+
+    /// All-zero or constant data is refused before any fit, naming the column.
+    #[test]
+    fn a_constant_record_is_refused_naming_the_column() {
+        for (force, says) in [("0", "are zero"), ("250", "are the one value 250")] {
+            let text: String = std::iter::once("time,force,ball_velocity\n".to_string())
+                .chain((0..50).map(|i| format!("{},{force},{}\n", i as f64 * 1e-4, i as f64 * 0.1)))
+                .collect();
+            let data = HistoryData::parse_csv(&text, "k.csv").unwrap();
+            let sigma = BTreeMap::from([(Channel::Force, 1.0), (Channel::BallVelocity, 0.1)]);
+            let e = Observations::history(WeightedHistory::new(data, sigma).unwrap()).validate().unwrap_err().to_string();
+            assert!(e.contains("`force`") && e.contains(says) && e.contains("50 rows"), "{e}");
+        }
+    }
+
+    /// More rows than a history may have: refused at the first row beyond,
+    /// not after reading and fitting them all; the header's text is not quoted.
+    #[test]
+    fn histories_are_bounded_and_errors_quote_no_content() {
+        let mut text = String::from("time,force\n");
+        for i in 0..=MAX_HISTORY_ROWS {
+            text.push_str(&format!("{i},1\n"));
+        }
+        let e = HistoryData::parse_csv(&text, "big.csv").unwrap_err().to_string();
+        assert!(e.contains(&format!("big.csv:{}", MAX_HISTORY_ROWS + 2)) && e.contains("more than 200000 data rows"), "{e}");
+        let e = HistoryData::parse_csv("root:x:0:0:root:/root:/bin/bash\n", "/etc/passwd").unwrap_err().to_string();
+        assert!(e.contains("/etc/passwd:1") && !e.contains("root:x"), "{e}");
     }
 }

@@ -113,7 +113,8 @@ pub fn write_u64_attr(location: &hdf5::Location, path: &Path, name: &str, value:
 /// Read a scalar string attribute.
 pub fn read_str_attr(location: &hdf5::Location, name: &str) -> Option<String> {
     let attr = location.attr(name).ok()?;
-    attr.read_scalar::<VarLenUnicode>().ok().map(|s| s.as_str().to_string())
+    // Lossy: a file may hold any bytes, and a `str` must be UTF-8.
+    attr.read_scalar::<VarLenUnicode>().ok().map(|s| String::from_utf8_lossy(s.as_bytes()).into_owned())
 }
 
 /// Read a scalar u64 attribute.

@@ -32,6 +32,8 @@ pub enum OutputError {
     Busy { path: PathBuf, lock: PathBuf, holder: Option<u32> },
     #[error("cannot write {}: {message}", path.display())]
     Io { path: PathBuf, message: String },
+    #[error("`{flag}` = `{}`: {message}", path.display())]
+    Refused { flag: String, path: PathBuf, message: String },
 }
 
 fn io(path: &Path) -> impl Fn(std::io::Error) -> OutputError + '_ {
@@ -87,6 +89,40 @@ pub fn install_signal_cleanup() -> Result<(), OutputError> {
     Ok(())
 }
 
+/// Refuse, before any work, an output `out` (given as `flag`) that does not
+/// end in `.EXT` or is one of `inputs` (the same file, by device and inode:
+/// a second name or a link to an input counts), or a directory.
+pub fn check_output(out: &Path, flag: &str, ext: &str, inputs: &[&Path]) -> Result<(), OutputError> {
+    let refused = |message: String| OutputError::Refused { flag: flag.to_string(), path: out.to_path_buf(), message };
+    if out.extension().and_then(|e| e.to_str()) != Some(ext) {
+        return Err(refused(format!("an output file must end in `.{ext}` (this keeps an input from being replaced by mistake)")));
+    }
+    if std::fs::metadata(out).is_ok_and(|m| m.is_dir()) {
+        return Err(refused("is a directory; give a file name".into()));
+    }
+    for input in inputs {
+        if is_same_file(out, input) {
+            return Err(refused(format!("is the input {}; write elsewhere", input.display())));
+        }
+    }
+    Ok(())
+}
+
+/// Whether two paths name one existing file.
+#[cfg(unix)]
+pub fn is_same_file(a: &Path, b: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    match (std::fs::metadata(a), std::fs::metadata(b)) {
+        (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+        _ => false,
+    }
+}
+
+#[cfg(not(unix))]
+pub fn is_same_file(a: &Path, b: &Path) -> bool {
+    matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b)
+}
+
 /// `NAME.EXT.lock` beside `target`.
 pub fn lock_path(target: &Path) -> PathBuf {
     let mut name = target.file_name().unwrap_or_default().to_owned();
@@ -126,7 +162,7 @@ impl Lock {
         // A few tries: the holder may remove its lock file between our open
         // and our lock, leaving us a lock on a file no longer there.
         for _ in 0..100 {
-            let mut file = OpenOptions::new().read(true).write(true).create(true).truncate(false).open(&path).map_err(io(&path))?;
+            let mut file = open_lock_file(&path)?;
             match file.try_lock() {
                 Ok(()) => {}
                 Err(TryLockError::WouldBlock) => {
@@ -151,6 +187,61 @@ impl Lock {
         }
         Err(OutputError::Io { path, message: "the lock file keeps being replaced".into() })
     }
+}
+
+/// The lock file, created exclusively or (left by a killed writer) opened
+/// without following a link: a planted link, FIFO, directory or hard link to
+/// another file is refused, never written through (another user of a shared
+/// directory could otherwise make us clobber any file we may write).
+fn open_lock_file(path: &Path) -> Result<File, OutputError> {
+    let refused = |what: &str| OutputError::Io {
+        path: path.to_path_buf(),
+        message: format!("the lock file is {what}, not a regular file of its own; remove it if no kick is writing here"),
+    };
+    let mut options = OpenOptions::new();
+    options.read(true).write(true);
+    no_follow(&mut options);
+    match options.clone().create_new(true).open(path) {
+        Ok(file) => return Ok(file),
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {}
+        Err(e) => return Err(io(path)(e)),
+    }
+    let kind = std::fs::symlink_metadata(path).map_err(io(path))?.file_type();
+    if kind.is_symlink() {
+        return Err(refused("a symbolic link"));
+    }
+    if !kind.is_file() {
+        return Err(refused("a directory or special file"));
+    }
+    let file = options.open(path).map_err(|e| if e.raw_os_error() == Some(libc::ELOOP) { refused("a symbolic link") } else { io(path)(e) })?;
+    let metadata = file.metadata().map_err(io(path))?;
+    if !metadata.is_file() {
+        return Err(refused("a directory or special file"));
+    }
+    if links(&metadata) != 1 {
+        return Err(refused("a hard link to another file"));
+    }
+    Ok(file)
+}
+
+#[cfg(unix)]
+fn no_follow(options: &mut OpenOptions) {
+    use std::os::unix::fs::OpenOptionsExt;
+    // Non-blocking too: a FIFO planted between the checks must not hang us.
+    options.custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK);
+}
+
+#[cfg(not(unix))]
+fn no_follow(_options: &mut OpenOptions) {}
+
+#[cfg(unix)]
+fn links(metadata: &std::fs::Metadata) -> u64 {
+    std::os::unix::fs::MetadataExt::nlink(metadata)
+}
+
+#[cfg(not(unix))]
+fn links(_metadata: &std::fs::Metadata) -> u64 {
+    1
 }
 
 impl Drop for Lock {
@@ -197,13 +288,32 @@ impl Staged {
             _ => PathBuf::from("."),
         };
         std::fs::create_dir_all(&directory).map_err(io(&directory))?;
+        // Checked now, not found at the rename after all the work.
+        if std::fs::symlink_metadata(target).is_ok_and(|m| m.is_dir()) {
+            return Err(OutputError::Io { path: target.to_path_buf(), message: "it is a directory; give a file name or another directory".into() });
+        }
         let lock = Lock::acquire(target)?;
         let (stem, ext) = split_name(target);
         remove_stale_temporaries(&directory, &stem, &ext);
-        let n = SEQUENCE.fetch_add(1, Ordering::Relaxed);
-        let temporary = target.with_file_name(format!("{stem}.{}-{n}.tmp{ext}", std::process::id()));
-        register(&temporary);
-        Ok(Staged { target: target.to_path_buf(), temporary, committed: false, _lock: lock })
+        // Created here, exclusively and not through a link: the writers that
+        // follow (HDF5, plotters) then truncate our own regular file. A name
+        // taken by something planted is skipped, never written through.
+        let mut options = OpenOptions::new();
+        options.write(true).create_new(true);
+        no_follow(&mut options);
+        for _ in 0..100 {
+            let n = SEQUENCE.fetch_add(1, Ordering::Relaxed);
+            let temporary = target.with_file_name(format!("{stem}.{}-{n}.tmp{ext}", std::process::id()));
+            match options.open(&temporary) {
+                Ok(_) => {
+                    register(&temporary);
+                    return Ok(Staged { target: target.to_path_buf(), temporary, committed: false, _lock: lock });
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+                Err(e) => return Err(io(&temporary)(e)),
+            }
+        }
+        Err(OutputError::Io { path: target.to_path_buf(), message: "every temporary name beside it is taken".into() })
     }
 
     /// Where to write the content.
@@ -334,5 +444,59 @@ mod tests {
         std::fs::write(dir.join("unrelated.999999-0.tmp.h5"), b"keep").unwrap();
         write(&target, b"whole").unwrap();
         assert_eq!(names(&dir), ["s.h5", "unrelated.999999-0.tmp.h5"]);
+    }
+
+    /// Another user's planted link at `NAME.h5.lock` (to a file, dangling, or
+    /// a FIFO) is refused naming it; the file it points at is untouched.
+    #[cfg(unix)]
+    #[test]
+    fn a_planted_lock_is_refused_never_written_through() {
+        let dir = scratch("planted");
+        let target = dir.join("run.h5");
+        let victim = dir.join("victim.txt");
+        std::fs::write(&victim, b"precious").unwrap();
+        std::os::unix::fs::symlink(&victim, lock_path(&target)).unwrap();
+        let message = write(&target, b"new").expect_err("a linked lock must be refused").to_string();
+        assert!(message.contains("run.h5.lock") && message.contains("symbolic link"), "{message}");
+        assert_eq!(std::fs::read(&victim).unwrap(), b"precious");
+        assert!(std::fs::symlink_metadata(lock_path(&target)).unwrap().file_type().is_symlink(), "the link is left for the user to see");
+        assert!(!target.exists());
+
+        // Dangling: nothing is created where it points.
+        let other = dir.join("other.h5");
+        let nowhere = dir.join("nowhere");
+        std::os::unix::fs::symlink(&nowhere, lock_path(&other)).unwrap();
+        assert!(write(&other, b"new").is_err());
+        assert!(!nowhere.exists() && !other.exists());
+
+        // A hard link to another file is not ours to truncate.
+        let third = dir.join("third.h5");
+        std::fs::hard_link(&victim, lock_path(&third)).unwrap();
+        let message = write(&third, b"new").expect_err("a hard-linked lock must be refused").to_string();
+        assert!(message.contains("third.h5.lock") && message.contains("hard link"), "{message}");
+        assert_eq!(std::fs::read(&victim).unwrap(), b"precious");
+
+        // A FIFO: refused at once, not waited on.
+        let fourth = dir.join("fourth.h5");
+        let fifo = std::ffi::CString::new(lock_path(&fourth).to_str().unwrap()).unwrap();
+        assert_eq!(unsafe { libc::mkfifo(fifo.as_ptr(), 0o600) }, 0);
+        let message = write(&fourth, b"new").expect_err("a FIFO lock must be refused").to_string();
+        assert!(message.contains("fourth.h5.lock") && message.contains("special file"), "{message}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// The temporary file exists, a regular file of ours, from `begin` on:
+    /// its name cannot be taken by a link between `begin` and the writer.
+    #[cfg(unix)]
+    #[test]
+    fn the_temporary_file_is_created_exclusively() {
+        let dir = scratch("exclusive");
+        let target = dir.join("t.h5");
+        let staged = Staged::begin(&target).unwrap();
+        assert!(std::fs::symlink_metadata(staged.temporary()).unwrap().file_type().is_file());
+        let planted = std::os::unix::fs::symlink(dir.join("victim"), staged.temporary());
+        assert_eq!(planted.err().map(|e| e.kind()), Some(std::io::ErrorKind::AlreadyExists));
+        drop(staged);
+        assert_eq!(names(&dir), Vec::<String>::new());
     }
 }

@@ -127,15 +127,37 @@ impl crate::Printable for MergeReport {
     }
 }
 
-/// One part of a merge, opened.
+/// One part of a merge: its root attributes and the shape, type and units of
+/// every dataset, read and checked with the file open, then closed (a merge
+/// of thousands of parts holds one part open at a time).
 struct Piece {
     path: PathBuf,
-    file: File,
     shard: Shard,
     rows: Range<u64>,
     total: u64,
     fingerprint: String,
+    experiment: String,
+    /// Root attributes but the shard's own and `rows`, printed to compare.
+    attributes: Vec<(String, String)>,
+    /// Every dataset outside `histories`.
+    datasets: Vec<Meta>,
+    /// The paths of its `histories` groups.
+    histories: Vec<String>,
 }
+
+/// A dataset of a part as its header describes it (nothing read yet).
+#[derive(Debug, Clone, PartialEq)]
+struct Meta {
+    path: String,
+    descriptor: TypeDescriptor,
+    /// `k` of a `[rows, k]` dataset.
+    width: Option<usize>,
+    units: String,
+    len: usize,
+}
+
+/// Vectors are `[rows, 3]`; a wider second dimension is no result layout's.
+const MAX_WIDTH: usize = 16;
 
 fn part_error(path: &Path, message: impl Into<String>) -> ShardError {
     ShardError::Part { path: path.to_path_buf(), message: message.into() }
@@ -143,6 +165,84 @@ fn part_error(path: &Path, message: impl Into<String>) -> ShardError {
 
 fn h5(path: &Path) -> impl Fn(hdf5::Error) -> ShardError + '_ {
     move |e| part_error(path, e.to_string())
+}
+
+/// A type of the result layout, by name (so a float32 column says so).
+fn type_name(descriptor: &TypeDescriptor) -> String {
+    match descriptor {
+        TypeDescriptor::Float(FloatSize::U8) => "f64".into(),
+        TypeDescriptor::Float(FloatSize::U4) => "f32".into(),
+        TypeDescriptor::Unsigned(IntSize::U8) => "u64".into(),
+        TypeDescriptor::Unsigned(IntSize::U1) => "u8".into(),
+        TypeDescriptor::VarLenUnicode => "text".into(),
+        other => format!("{other:?}"),
+    }
+}
+
+fn is_failure(path: &str) -> bool {
+    path.contains("/failures/")
+}
+
+/// The status dataset that says which rows of outcome `path` are solved.
+fn status_of(path: &str) -> Option<String> {
+    let at = path.find("/outcomes/")?;
+    Some(format!("{}/outcomes/status", &path[..at]))
+}
+
+/// Every dataset below `group` (at `prefix`), histories aside.
+fn collect(group: &Group, prefix: &str, path: &Path, out: &mut Vec<Meta>, histories: &mut Vec<String>) -> Result<(), ShardError> {
+    for name in group.member_names().map_err(h5(path))? {
+        let member = format!("{prefix}/{name}");
+        if let Ok(inner) = group.group(&name) {
+            if name == "histories" {
+                histories.push(member);
+            } else {
+                collect(&inner, &member, path, out, histories)?;
+            }
+            continue;
+        }
+        let d = group.dataset(&name).map_err(|e| part_error(path, format!("{member}: {e}")))?;
+        let descriptor = d.dtype().and_then(|t| t.to_descriptor()).map_err(|e| part_error(path, format!("{member}: {e}")))?;
+        let shape = d.shape();
+        let width = match shape.as_slice() {
+            [_] => None,
+            [_, k] => Some(*k),
+            other => return Err(part_error(path, format!("{member}: a dataset of shape {other:?}, not one of the result layout"))),
+        };
+        let units = crate::h5::read_str_attr(&d, "units").unwrap_or_default();
+        out.push(Meta { path: member, descriptor, width, units, len: shape[0] });
+    }
+    Ok(())
+}
+
+impl Meta {
+    /// Refuse what no writer of the layout makes, before anything is read:
+    /// lengths other than the part's rows, types other than the layout's.
+    fn check(&self, rows: usize, total: u64) -> Result<(), String> {
+        let kind = kind(&self.path).ok_or("a dataset the result layout does not have")?;
+        let allowed = matches!(
+            self.descriptor,
+            TypeDescriptor::Float(FloatSize::U8) | TypeDescriptor::Unsigned(IntSize::U8 | IntSize::U1) | TypeDescriptor::VarLenUnicode
+        );
+        if !allowed {
+            return Err(format!("a column of type {}, not one of the result layout (f64, u64, u8, text)", type_name(&self.descriptor)));
+        }
+        if let Some(k) = self.width {
+            if self.descriptor != TypeDescriptor::Float(FloatSize::U8) || k == 0 || k > MAX_WIDTH {
+                return Err(format!("a [rows, {k}] dataset of {}, not one of the result layout", type_name(&self.descriptor)));
+            }
+        }
+        let len = self.len;
+        match kind {
+            Kind::PerRow if is_failure(&self.path) && len > rows => Err(format!("{len} failures in a part of {rows} rows (a corrupt file)")),
+            Kind::PerRow if !is_failure(&self.path) && len != rows => {
+                Err(format!("{len} entries in a part of {rows} rows (a truncated or corrupt file)"))
+            }
+            // The grid's axes: no longer than the experiment.
+            Kind::Whole if len as u64 > total.max(1024) => Err(format!("{len} entries for an experiment of {total} rows (a corrupt file)")),
+            _ => Ok(()),
+        }
+    }
 }
 
 impl Piece {
@@ -156,7 +256,11 @@ impl Piece {
         let total = number("experiment_rows")?;
         let fingerprint = read_str_attr(&file, "experiment_fingerprint")
             .ok_or_else(|| part_error(path, "not a shard file (no root attribute `experiment_fingerprint`)"))?;
-        if shard.count == 0 || shard.index >= shard.count || shard.rows(total) != rows {
+        if total > crate::experiment::MAX_SCENARIOS
+            || shard.count == 0
+            || shard.index >= shard.count
+            || shard.rows(total) != rows
+        {
             return Err(part_error(path, format!(
                 "shard {}/{} of {total} rows cannot hold rows {}..{}",
                 shard.index, shard.count, rows.start, rows.end
@@ -165,7 +269,20 @@ impl Piece {
         if read_u64_attr(&file, "rows") != Some(rows.end - rows.start) {
             return Err(part_error(path, "its `rows` attribute disagrees with its row range (an incomplete file?)"));
         }
-        Ok(Piece { path: path.to_path_buf(), file, shard, rows, total, fingerprint })
+        let experiment = read_str_attr(&file, "experiment").unwrap_or_default();
+        let skip = |name: &str| SHARD_ATTRIBUTES.contains(&name) || name == "rows";
+        let mut attributes = Vec::new();
+        for name in file.attr_names().map_err(h5(path))?.into_iter().filter(|n| !skip(n)) {
+            let value = read_attr(&file, &name).map(|v| format!("{v:?}")).unwrap_or_else(|_| "(unreadable)".into());
+            attributes.push((name, value));
+        }
+        let (mut datasets, mut histories) = (Vec::new(), Vec::new());
+        collect(&file, "", path, &mut datasets, &mut histories)?;
+        let n = (rows.end - rows.start) as usize;
+        for d in &datasets {
+            d.check(n, total).map_err(|m| part_error(path, format!("{}: {m}", d.path)))?;
+        }
+        Ok(Piece { path: path.to_path_buf(), shard, rows, total, fingerprint, experiment, attributes, datasets, histories })
     }
 }
 
@@ -173,8 +290,8 @@ fn names(pieces: &[&Piece]) -> String {
     pieces.iter().map(|p| p.path.display().to_string()).collect::<Vec<_>>().join(", ")
 }
 
-/// Refuse parts of different experiments, N, tool or commit, and any set
-/// that misses or repeats a row; the parts in row order.
+/// Refuse parts of different experiments, N, tool or commit, layouts, and
+/// any set that misses or repeats a row; the parts in row order.
 fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
     let first = pieces.first().ok_or_else(|| ShardError::Merge("no shard files given".into()))?;
     let groups = |key: &dyn Fn(&Piece) -> String| {
@@ -199,13 +316,29 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
     }
     // Everything else at the root (experiment text, tool version, commit,
     // solver settings...) must agree too.
-    let skip = |name: &str| SHARD_ATTRIBUTES.contains(&name) || name == "rows";
-    for name in first.file.attr_names().map_err(h5(&first.path))?.into_iter().filter(|n| !skip(n)) {
-        let value = |p: &Piece| read_attr(&p.file, &name).map(|v| format!("{v:?}")).unwrap_or_else(|_| "(absent)".into());
+    for (name, _) in &first.attributes {
+        let value = |p: &Piece| p.attributes.iter().find(|(n, _)| n == name).map_or_else(|| "(absent)".into(), |(_, v)| v.clone());
         let by_value = groups(&|p| value(p));
         if by_value.len() > 1 {
             let list: Vec<String> = by_value.iter().map(|(_, ps)| names(ps)).collect();
             return Err(ShardError::Merge(format!("root attribute `{name}` differs between {}", list.join(" and "))));
+        }
+    }
+    // The same datasets, types and units in every part.
+    let layout = |p: &Piece| p.datasets.iter().map(|d| (d.path.clone(), d.descriptor.clone(), d.width, d.units.clone())).collect::<Vec<_>>();
+    let expected = layout(first);
+    for piece in &pieces[1..] {
+        let got = layout(piece);
+        if got != expected {
+            let differs = expected.iter().zip(&got).find(|(a, b)| a != b).map(|(a, b)| (a.clone(), b.clone()));
+            let message = match differs {
+                Some((a, b)) if a.0 == b.0 => format!(
+                    "{}: {} [{}] here, {} [{}] in {}",
+                    a.0, type_name(&b.1), b.3, type_name(&a.1), a.3, first.path.display()
+                ),
+                _ => format!("its datasets are not those of {}", first.path.display()),
+            };
+            return Err(part_error(&piece.path, message));
         }
     }
     pieces.sort_by_key(|p| (p.rows.start, p.rows.end, p.shard.index));
@@ -217,9 +350,9 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
         }
     }
     let present: Vec<u64> = pieces.iter().map(|p| p.shard.index).collect();
-    let name = read_str_attr(&pieces[0].file, "experiment").unwrap_or_default();
+    let name = pieces[0].experiment.clone();
     let missing: Vec<String> = (0..count)
-        .filter(|i| !present.contains(i))
+        .filter(|i| present.binary_search(i).is_err())
         .map(|index| {
             let shard = Shard { index, count };
             let rows = shard.rows(total);
@@ -237,22 +370,54 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
 
 /// Join shard files `parts` (any order) into `out`, whole or not at all
 /// (through [`create_staged`], like every result file): the file an
-/// unsharded run of the experiment writes.
+/// unsharded run of the experiment writes, stored as it stores it. Every
+/// part is checked against its rows and the layout, one open at a time.
 pub fn merge(out: &Path, parts: &[PathBuf]) -> Result<MergeReport, ShardError> {
     disable_file_locking();
+    let inputs: Vec<&Path> = parts.iter().map(|p| p.as_path()).collect();
+    crate::output::check_output(out, "OUT", "h5", &inputs)?;
     let pieces = check(parts.iter().map(|p| Piece::open(p)).collect::<Result<Vec<_>, _>>()?)?;
     let total = pieces[0].total;
+    let experiment = experiment_of(&pieces[0]);
     let (file, staged) = create_staged(out)?;
-    let writer = Merger { out, pieces: &pieces };
-    writer.group(&pieces[0].file, &file, "")?;
+    let merger = Merger { out, pieces: &pieces, total, experiment: experiment.as_ref() };
+    let first = File::open(&pieces[0].path).map_err(h5(&pieces[0].path))?;
+    merger.group(&first, &file, "")?;
+    drop(first);
+    let mut cursor = std::collections::HashMap::new();
+    for piece in &pieces {
+        merger.part(piece, &file, &mut cursor)?;
+    }
     write_u64_attr(&file, out, "rows", total)?;
     drop(pieces);
     let path = close_file(file, staged, out)?;
     Ok(MergeReport { path, parts: parts.len(), rows: total })
 }
 
+/// The 1D experiment the parts were run from, when its text (stored in
+/// every part, the same by fingerprint) parses where the merge runs: its
+/// parameter columns are then checked row by row.
+fn experiment_of(piece: &Piece) -> Option<Experiment> {
+    let file = File::open(&piece.path).ok()?;
+    let text = read_str_attr(&file, "experiment_text")?;
+    let path = read_str_attr(&file, "experiment_file")?;
+    // An experiment file's (`kick sweep` and `kick sweep3d` name no file).
+    if fingerprint(&text) != piece.fingerprint || Path::new(&path).extension().and_then(|e| e.to_str()) != Some("toml") {
+        return None;
+    }
+    match crate::experiment::parse_any(Path::new(&path), &text).ok()? {
+        AnyExperiment::OneD(e) if e.scenarios.len() == piece.total => Some(e),
+        _ => None,
+    }
+}
+
 fn varlen(text: &str) -> hdf5::Result<VarLenUnicode> {
     text.parse::<VarLenUnicode>().map_err(|e| hdf5::Error::from(e.to_string().as_str()))
+}
+
+/// Text of a file, which may hold any bytes: never a `str` that is not UTF-8.
+fn text_of(v: &VarLenUnicode) -> String {
+    String::from_utf8_lossy(v.as_bytes()).into_owned()
 }
 
 /// An attribute of a type the result layout uses: a scalar, or a list of
@@ -266,21 +431,25 @@ enum Value {
     Text(String),
 }
 
+/// Attributes longer than this are no result layout's (a `grid_shape` has one
+/// entry per axis).
+const MAX_ATTRIBUTE_LIST: usize = 64;
+
 fn read_attr(location: &Location, name: &str) -> hdf5::Result<Value> {
     let attr = location.attr(name)?;
     let descriptor = attr.dtype()?.to_descriptor()?;
     if !attr.is_scalar() {
         return match descriptor {
-            TypeDescriptor::Unsigned(IntSize::U8) => Ok(Value::U64s(attr.read_raw()?)),
-            other => Err(format!("attribute `{name}`: a list of {other:?}, not one of the result layout").as_str().into()),
+            TypeDescriptor::Unsigned(IntSize::U8) if attr.size() <= MAX_ATTRIBUTE_LIST => Ok(Value::U64s(attr.read_raw()?)),
+            other => Err(format!("attribute `{name}`: a list of {} {}, not one of the result layout", attr.size(), type_name(&other)).as_str().into()),
         };
     }
     Ok(match descriptor {
         TypeDescriptor::Float(FloatSize::U8) => Value::F64(attr.read_scalar()?),
         TypeDescriptor::Unsigned(IntSize::U8) => Value::U64(attr.read_scalar()?),
         TypeDescriptor::Unsigned(IntSize::U1) => Value::U8(attr.read_scalar()?),
-        TypeDescriptor::VarLenUnicode => Value::Text(attr.read_scalar::<VarLenUnicode>()?.as_str().to_string()),
-        other => return Err(format!("attribute `{name}` of type {other:?}, not one of the result layout").as_str().into()),
+        TypeDescriptor::VarLenUnicode => Value::Text(text_of(&attr.read_scalar::<VarLenUnicode>()?)),
+        other => return Err(format!("attribute `{name}` of type {}, not one of the result layout", type_name(&other)).as_str().into()),
     })
 }
 
@@ -301,10 +470,13 @@ fn copy_attrs(from: &Location, to: &Location, skip: &dyn Fn(&str) -> bool) -> hd
     Ok(())
 }
 
-/// Copies the first part's tree into the merged file, joining what is per row.
+/// Builds the merged file from the first part's tree, then joins every
+/// part's rows into it.
 struct Merger<'a> {
     out: &'a Path,
     pieces: &'a [Piece],
+    total: u64,
+    experiment: Option<&'a Experiment>,
 }
 
 impl Merger<'_> {
@@ -312,7 +484,8 @@ impl Merger<'_> {
         move |e| ShardError::H5(H5Error::Hdf5 { path: self.out.to_path_buf(), message: e.to_string() })
     }
 
-    /// Group `path` ("" the root) of the first part, into `to`.
+    /// Group `path` ("" the root) of the first part, into `to`: groups,
+    /// attributes, per-row datasets created empty, whole ones copied.
     fn group(&self, from: &Group, to: &Group, path: &str) -> Result<(), ShardError> {
         let root = path.is_empty();
         // At the root, `rows` is written by `merge`.
@@ -322,140 +495,224 @@ impl Merger<'_> {
             let member = format!("{path}/{name}");
             if let Ok(group) = from.group(&name) {
                 let target = new_group(to, &name).map_err(self.err())?;
-                if name == "histories" {
-                    self.histories(&member, &target)?;
-                } else {
+                if name != "histories" {
                     self.group(&group, &target, &member)?;
                 }
             } else {
+                let first = &self.pieces[0];
+                let like = from.dataset(&name).map_err(h5(&first.path))?;
                 match kind(&member) {
-                    Some(Kind::PerRow) => self.join(&member, to, &name, member.ends_with("failures/index"))?,
-                    Some(Kind::Whole) => self.same_in_every_part(&member, to, &name)?,
-                    None => return Err(part_error(&self.pieces[0].path, format!("{member}: a dataset the result layout does not have"))),
+                    Some(Kind::PerRow) => {
+                        let len = self.pieces.iter().flat_map(|p| p.datasets.iter().find(|d| d.path == member)).map(|d| d.len).sum();
+                        let mut chunk = (self.total as usize).clamp(1, CHUNK_ROWS);
+                        if is_failure(&member) {
+                            // As the writer sizes them: failures are usually few.
+                            chunk = chunk.min(64);
+                        }
+                        self.create(&like, to, &name, len, like.is_chunked().then_some(chunk))?;
+                    }
+                    Some(Kind::Whole) => {
+                        let created = self.create(&like, to, &name, like.shape()[0], like.chunk().map(|c| c[0]))?;
+                        self.append(first, &like, &created, &member, 0, 0, None)?;
+                    }
+                    None => return Err(part_error(&first.path, format!("{member}: a dataset the result layout does not have"))),
                 }
             }
         }
         Ok(())
     }
 
-    /// Dataset `path`, the same in every part (it describes the whole
-    /// experiment), copied once.
-    fn same_in_every_part(&self, path: &str, to: &Group, name: &str) -> Result<(), ShardError> {
-        let first = &self.pieces[0];
-        let content = |piece: &Piece| -> Result<(Vec<usize>, Vec<String>), ShardError> {
-            let d = piece.file.dataset(path).map_err(|e| part_error(&piece.path, format!("{path}: {e}")))?;
-            let values = match d.dtype().and_then(|t| t.to_descriptor()).map_err(h5(&piece.path))? {
-                TypeDescriptor::VarLenUnicode => d.read_raw::<VarLenUnicode>().map(|v| v.iter().map(|s| s.to_string()).collect()),
-                _ => d.read_raw::<f64>().map(|v| v.iter().map(|x| format!("{:016x}", x.to_bits())).collect()),
+    /// One part's rows, histories and whole datasets (these must equal the
+    /// first part's), into the merged `file`; `cursor`: rows written per dataset.
+    fn part(&self, piece: &Piece, file: &File, cursor: &mut std::collections::HashMap<String, usize>) -> Result<(), ShardError> {
+        let from = File::open(&piece.path).map_err(h5(&piece.path))?;
+        let rows = (piece.rows.end - piece.rows.start) as usize;
+        // Status codes first: they say which outcomes must be numbers.
+        let mut statuses: Vec<(String, Vec<u8>)> = Vec::new();
+        for d in piece.datasets.iter().filter(|d| d.path.ends_with("/outcomes/status")) {
+            let values = from.dataset(&d.path).and_then(|s| s.read_raw::<u8>()).map_err(|e| part_error(&piece.path, format!("{}: {e}", d.path)))?;
+            if let Some(i) = values.iter().position(|&c| usize::from(c) >= kick_core::Status::ALL.len()) {
+                return Err(part_error(&piece.path, format!(
+                    "{}: status {} at row {}, not one of the codes 0..{}",
+                    d.path, values[i], piece.rows.start + i as u64, kick_core::Status::ALL.len() - 1
+                )));
             }
-            .map_err(h5(&piece.path))?;
-            Ok((d.shape(), values))
-        };
-        let expected = content(first)?;
-        for piece in &self.pieces[1..] {
-            if content(piece)? != expected {
-                return Err(ShardError::Merge(format!("{path} differs between {} and {}", first.path.display(), piece.path.display())));
+            statuses.push((d.path.clone(), values));
+        }
+        for d in &piece.datasets {
+            let source = from.dataset(&d.path).map_err(|e| part_error(&piece.path, format!("{}: {e}", d.path)))?;
+            if let (Some(experiment), Some(name)) = (self.experiment, d.path.strip_prefix("/parameters/")) {
+                self.check_parameter(piece, experiment, name, &source)?;
+            }
+            let target = file.dataset(&d.path).map_err(self.err())?;
+            match kind(&d.path) {
+                Some(Kind::PerRow) => {
+                    let at = cursor.entry(d.path.clone()).or_insert(0);
+                    let offset = if d.path.ends_with("failures/index") { piece.rows.start } else { 0 };
+                    let status = status_of(&d.path).and_then(|s| statuses.iter().find(|(p, _)| *p == s)).map(|(_, v)| v.as_slice());
+                    let limit = if d.path.ends_with("failures/index") { Some(rows as u64) } else { None };
+                    *at += self.append(piece, &source, &target, &d.path, *at, offset, Some((status.unwrap_or(&[]), limit)))?;
+                }
+                _ => {
+                    if !same_content(&source, &target).map_err(h5(&piece.path))? {
+                        return Err(ShardError::Merge(format!("{} differs between {} and {}", d.path, self.pieces[0].path.display(), piece.path.display())));
+                    }
+                }
             }
         }
-        self.copy(first, path, to, name, 0)
+        self.histories(piece, &from, file)
     }
 
-    /// Every part's histories of `path`, renamed to experiment rows.
-    fn histories(&self, path: &str, to: &Group) -> Result<(), ShardError> {
-        for piece in self.pieces {
-            let Ok(from) = piece.file.group(path) else { continue };
+    /// Parameter column `name` of a part: row by row the experiment's value
+    /// (as [`crate::run`] writes it: the scenario's, NaN where it is invalid).
+    fn check_parameter(&self, piece: &Piece, experiment: &Experiment, name: &str, data: &hdf5::Dataset) -> Result<(), ShardError> {
+        let columns = crate::run::parameter_columns(experiment.scenarios.has_restitution());
+        let Some(j) = columns.iter().position(|c| c.name == name) else {
+            return Err(part_error(&piece.path, format!("/parameters/{name}: not a parameter of the experiment")));
+        };
+        let values = data.read_raw::<f64>().map_err(h5(&piece.path))?;
+        for (i, &value) in values.iter().enumerate() {
+            let row = piece.rows.start + i as u64;
+            let expected = match experiment.scenarios.scenario(row) {
+                Ok(s) if j < 8 => s.values()[j],
+                Ok(s) => s.restitution_target().unwrap_or(f64::NAN),
+                Err(_) => f64::NAN,
+            };
+            if value.to_bits() != expected.to_bits() && !(value.is_nan() && expected.is_nan()) {
+                return Err(part_error(&piece.path, format!(
+                    "/parameters/{name}: {} at row {row}, where the experiment gives {}",
+                    kick_core::short(value), kick_core::short(expected)
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// The part's histories, renamed to experiment rows.
+    fn histories(&self, piece: &Piece, file: &File, to: &File) -> Result<(), ShardError> {
+        for base in &piece.histories {
+            let from = file.group(base).map_err(h5(&piece.path))?;
+            // A part may have histories where the first part has none.
+            let target_group = match to.group(base) {
+                Ok(g) => g,
+                Err(_) => new_group(to, base).map_err(self.err())?,
+            };
             for name in from.member_names().map_err(h5(&piece.path))? {
-                let local: u64 = name.parse().map_err(|_| part_error(&piece.path, format!("{path}/{name}: not a row number")))?;
+                let local: u64 = name.parse().map_err(|_| part_error(&piece.path, format!("{base}/{name}: not a row number")))?;
+                if local >= piece.rows.end - piece.rows.start {
+                    return Err(part_error(&piece.path, format!("{base}/{name}: no such row in the part")));
+                }
                 let row = piece.rows.start + local;
                 let history = from.group(&name).map_err(h5(&piece.path))?;
-                let target = new_group(to, &format!("{row:06}")).map_err(self.err())?;
+                let target = new_group(&target_group, &format!("{row:06}")).map_err(self.err())?;
                 copy_attrs(&history, &target, &|n| n == "row").map_err(self.err())?;
                 write_u64_attr(&target, self.out, "row", row)?;
                 for column in history.member_names().map_err(h5(&piece.path))? {
-                    self.copy(piece, &format!("{path}/{name}/{column}"), &target, &column, 0)?;
+                    let like = history.dataset(&column).map_err(h5(&piece.path))?;
+                    let created = self.create(&like, &target, &column, like.shape().first().copied().unwrap_or(0), like.chunk().map(|c| c[0]))?;
+                    self.append(piece, &like, &created, &format!("{base}/{name}/{column}"), 0, 0, None)?;
                 }
             }
         }
         Ok(())
     }
 
-    /// Dataset `path` of every part, in row order, as `to/name` (`offset`:
-    /// add each part's first row, for row indices).
-    fn join(&self, path: &str, to: &Group, name: &str, offset: bool) -> Result<(), ShardError> {
-        let first = &self.pieces[0];
-        let dataset = first.file.dataset(path).map_err(h5(&first.path))?;
-        let created = self.create(&dataset, to, name)?;
-        for piece in self.pieces {
-            let from = piece.file.dataset(path).map_err(|e| part_error(&piece.path, format!("{path}: {e}")))?;
-            self.append(piece, &from, &created, if offset { piece.rows.start } else { 0 })?;
-        }
-        Ok(())
-    }
-
-    /// One part's dataset `path` alone (a history column).
-    fn copy(&self, piece: &Piece, path: &str, to: &Group, name: &str, offset: u64) -> Result<(), ShardError> {
-        let from = piece.file.dataset(path).map_err(h5(&piece.path))?;
-        let created = self.create(&from, to, name)?;
-        self.append(piece, &from, &created, offset)
-    }
-
-    /// An empty dataset of `like`'s type, attributes, filters and trailing
-    /// shape (`[rows]` or `[rows, k]`), extendable along the rows.
-    fn create(&self, like: &hdf5::Dataset, to: &Group, name: &str) -> Result<hdf5::Dataset, ShardError> {
+    /// A dataset of `like`'s type, attributes, filters and trailing shape
+    /// for `len` rows: chunked by `chunk` rows and extendable, or (None)
+    /// contiguous, as the unsharded writer stores it.
+    fn create(&self, like: &hdf5::Dataset, to: &Group, name: &str, len: usize, chunk: Option<usize>) -> Result<hdf5::Dataset, ShardError> {
         let layout_error = |what: String| part_error(&self.pieces[0].path, format!("{name}: {what}, not one of the result layout"));
         let shape = like.shape();
-        let (extents, chunk): (hdf5::Extents, Vec<usize>) = match shape.as_slice() {
-            [_] => ((0..).into(), vec![CHUNK_ROWS]),
-            [_, k] => ((0.., *k).into(), vec![CHUNK_ROWS, (*k).max(1)]),
+        let width = match shape.as_slice() {
+            [_] => None,
+            [_, k] => Some(*k),
             other => return Err(layout_error(format!("dataset of shape {other:?}"))),
         };
         // The part's filters (`--compress`): a merge of compressed parts is compressed.
         let filters = like.filters();
         macro_rules! of {
-            ($t:ty) => {
-                to.new_dataset::<$t>().obj_track_times(false).chunk(chunk.as_slice()).set_filters(&filters).shape(extents).create(name)
-            };
+            ($t:ty) => {{
+                let builder = to.new_dataset::<$t>().obj_track_times(false);
+                match (chunk, width) {
+                    (Some(c), None) => builder.chunk(c).set_filters(&filters).shape(0..).create(name),
+                    (Some(c), Some(k)) => builder.chunk((c, k.max(1))).set_filters(&filters).shape((0.., k)).create(name),
+                    (None, None) => builder.shape(len).create(name),
+                    (None, Some(k)) => builder.shape((len, k)).create(name),
+                }
+            }};
         }
         let created = match like.dtype().and_then(|t| t.to_descriptor()).map_err(self.err())? {
             TypeDescriptor::Float(FloatSize::U8) => of!(f64),
             TypeDescriptor::Unsigned(IntSize::U8) => of!(u64),
             TypeDescriptor::Unsigned(IntSize::U1) => of!(u8),
             TypeDescriptor::VarLenUnicode => of!(VarLenUnicode),
-            other => return Err(layout_error(format!("dataset of type {other:?}"))),
+            other => return Err(layout_error(format!("dataset of type {}", type_name(&other)))),
         }
         .map_err(self.err())?;
         copy_attrs(like, &created, &|_| false).map_err(self.err())?;
         Ok(created)
     }
 
-    /// Append `from` to `to` in blocks of rows.
-    fn append(&self, piece: &Piece, from: &hdf5::Dataset, to: &hdf5::Dataset, offset: u64) -> Result<(), ShardError> {
+    /// Append `from` (dataset `path` of `piece`) to `to` at row `at`, in
+    /// blocks of rows; the number of rows. `check`: the part's status codes
+    /// (an outcome that is NaN where the status says solved is refused) and
+    /// a bound on the values (row indices).
+    #[allow(clippy::too_many_arguments)]
+    fn append(
+        &self,
+        piece: &Piece,
+        from: &hdf5::Dataset,
+        to: &hdf5::Dataset,
+        path: &str,
+        at: usize,
+        offset: u64,
+        check: Option<(&[u8], Option<u64>)>,
+    ) -> Result<usize, ShardError> {
         let shape = from.shape();
         let n = shape.first().copied().unwrap_or(0);
+        let (status, limit) = check.unwrap_or((&[], None));
+        let bad = |what: String| part_error(&piece.path, format!("{path}: {what}"));
+        let nan_at = |i: usize| status.get(i) == Some(&kick_core::Status::Separated.code());
+        let chunked = to.is_chunked();
         let block = 16 * CHUNK_ROWS;
         let mut start = 0;
         while start < n {
             let end = (start + block).min(n);
-            let at = to.shape().first().copied().unwrap_or(0);
-            let rows = at..at + end - start;
+            let rows = at + start..at + end;
             let read = h5(&piece.path);
-            if let [_, k] = shape.as_slice() {
+            if chunked {
+                match shape.as_slice() {
+                    [_, k] => to.resize((rows.end, *k)),
+                    _ => to.resize(rows.end),
+                }
+                .map_err(self.err())?;
+            }
+            if let [_, _] = shape.as_slice() {
                 // Vectors: f64 [rows, k].
-                to.resize((rows.end, *k)).map_err(self.err())?;
                 let values = from.read_slice_2d::<f64, _>((start..end, ..)).map_err(read)?;
+                for (i, row) in values.outer_iter().enumerate() {
+                    if row.iter().any(|v| v.is_nan()) && nan_at(start + i) {
+                        return Err(bad(format!("NaN at row {} where the status says solved", piece.rows.start + (start + i) as u64)));
+                    }
+                }
                 to.write_slice(&values, (rows, ..)).map_err(self.err())?;
                 start = end;
                 continue;
             }
-            to.resize(rows.end).map_err(self.err())?;
             match to.dtype().and_then(|t| t.to_descriptor()).map_err(self.err())? {
                 TypeDescriptor::Float(_) => {
                     let values = from.read_slice_1d::<f64, _>(start..end).map_err(read)?;
+                    if let Some(i) = values.iter().enumerate().position(|(i, v)| v.is_nan() && nan_at(start + i)) {
+                        return Err(bad(format!("NaN at row {} where the status says solved", piece.rows.start + (start + i) as u64)));
+                    }
                     to.write_slice(&values, rows)
                 }
                 TypeDescriptor::Unsigned(IntSize::U8) => {
-                    let values = from.read_slice_1d::<u64, _>(start..end).map_err(read)?.mapv(|v| v + offset);
-                    to.write_slice(&values, rows)
+                    let values = from.read_slice_1d::<u64, _>(start..end).map_err(read)?;
+                    if let Some(v) = limit.and_then(|l| values.iter().find(|&&v| v >= l)) {
+                        return Err(bad(format!("row {v} in a part of {} rows", limit.unwrap_or(0))));
+                    }
+                    to.write_slice(&values.mapv(|v| v + offset), rows)
                 }
                 TypeDescriptor::Unsigned(_) => {
                     let values = from.read_slice_1d::<u8, _>(start..end).map_err(read)?;
@@ -463,14 +720,34 @@ impl Merger<'_> {
                 }
                 _ => {
                     let values = from.read_slice_1d::<VarLenUnicode, _>(start..end).map_err(read)?;
+                    if values.iter().any(|v| std::str::from_utf8(v.as_bytes()).is_err()) {
+                        return Err(bad("text that is not UTF-8".into()));
+                    }
                     to.write_slice(&values, rows)
                 }
             }
             .map_err(self.err())?;
             start = end;
         }
-        Ok(())
+        Ok(n)
     }
+}
+
+/// Whether a whole-experiment dataset of a part equals the merged file's copy.
+fn same_content(a: &hdf5::Dataset, b: &hdf5::Dataset) -> hdf5::Result<bool> {
+    if a.shape() != b.shape() {
+        return Ok(false);
+    }
+    Ok(match b.dtype()?.to_descriptor()? {
+        TypeDescriptor::VarLenUnicode => {
+            let text = |d: &hdf5::Dataset| d.read_raw::<VarLenUnicode>().map(|v| v.iter().map(text_of).collect::<Vec<_>>());
+            text(a)? == text(b)?
+        }
+        _ => {
+            let bits = |d: &hdf5::Dataset| d.read_raw::<f64>().map(|v| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>());
+            bits(a)? == bits(b)?
+        }
+    })
 }
 
 /// How a dataset of a result file is merged.
@@ -493,5 +770,112 @@ fn kind(path: &str) -> Option<Kind> {
         _ if path == "/scenario_names" => Some(Kind::PerRow),
         _ if groups.iter().any(|g| matches!(*g, "parameters" | "outcomes" | "failures")) => Some(Kind::PerRow),
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const GRID: &str = "solver = \"accurate\"\n[[sweep]]\nparameter = \"stiffness\"\nvalues = [2e5, 4.2e5, 8e5, 1.6e6]\n\
+                        [[sweep]]\nparameter = \"damping\"\nvalues = [0.0, 60.0, 120.0]\n";
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("kick-shard-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    /// `grid.toml` in `dir` and its shards 0/2, 1/2 in `dir/parts`.
+    fn two_parts(dir: &Path) -> (Experiment, Vec<PathBuf>) {
+        let file = dir.join("grid.toml");
+        std::fs::write(&file, GRID).unwrap();
+        let experiment = crate::experiment::parse(&file, GRID).unwrap();
+        let parts: Vec<PathBuf> = (0..2)
+            .map(|index| {
+                let shard = Shard { index, count: 2 };
+                run_shard(&experiment, shard, &dir.join("parts"), false).unwrap();
+                dir.join("parts").join(shard.file_name("grid"))
+            })
+            .collect();
+        (experiment, parts)
+    }
+
+    /// A part corrupted in each way a disk, a copy or a hand can: a clean
+    /// error naming the part and what is wrong, and no merged file.
+    #[test]
+    fn corrupt_parts_are_refused_naming_them() {
+        let dir = scratch("corrupt");
+        let (_, parts) = two_parts(&dir);
+        type Corruption = (&'static str, &'static str, fn(&hdf5::File));
+        let corruptions: [Corruption; 7] = [
+            ("short dataset", "5 entries in a part of 6 rows", |f| {
+                f.dataset("parameters/stiffness").unwrap().resize(5).unwrap();
+            }),
+            ("status out of range", "status 7 at row 7", |f| {
+                f.dataset("outcomes/status").unwrap().write_slice(&[7u8], 1..2).unwrap();
+            }),
+            ("NaN with status 0", "NaN at row 6 where the status says solved", |f| {
+                let name = &crate::run::outcome_columns()[0].name;
+                assert_eq!(f.dataset("outcomes/status").unwrap().read_raw::<u8>().unwrap()[0], 0);
+                f.dataset(&format!("outcomes/{name}")).unwrap().write_slice(&[f64::NAN], 0..1).unwrap();
+            }),
+            ("changed parameter", "/parameters/stiffness: 1 at row 6, where the experiment gives", |f| {
+                f.dataset("parameters/stiffness").unwrap().write_slice(&[1.0], 0..1).unwrap();
+            }),
+            ("other units", "parameters/damping: f64 [N*s/mm] here, f64 [", |f| {
+                let d = f.dataset("parameters/damping").unwrap();
+                d.delete_attr("units").unwrap();
+                crate::h5::write_str_attr(&d, Path::new("x"), "units", "N*s/mm").unwrap();
+            }),
+            ("float32 column", "a column of type f32", |f| {
+                let outcomes = f.group("outcomes").unwrap();
+                let name = &crate::run::outcome_columns()[0].name;
+                let values: Vec<f32> = outcomes.dataset(name).unwrap().read_raw::<f64>().unwrap().iter().map(|&v| v as f32).collect();
+                outcomes.unlink(name).unwrap();
+                outcomes.new_dataset_builder().with_data(&values).create(name.as_str()).unwrap();
+            }),
+            ("failure index beyond the part", "row 6 in a part of 6 rows", |f| {
+                let failures = f.group("failures").unwrap();
+                failures.unlink("index").unwrap();
+                failures.unlink("message").unwrap();
+                let index = failures.new_dataset_builder().with_data(&[6u64]).create("index").unwrap();
+                crate::h5::write_str_attr(&index, Path::new("x"), "units", "1").unwrap();
+                let text: VarLenUnicode = "x".parse().unwrap();
+                let message = failures.new_dataset_builder().with_data(&[text]).create("message").unwrap();
+                crate::h5::write_str_attr(&message, Path::new("x"), "units", "").unwrap();
+            }),
+        ];
+        for (what, says, corrupt) in corruptions {
+            let bad = dir.join("bad.shard-1-of-2.h5");
+            std::fs::copy(&parts[1], &bad).unwrap();
+            corrupt(&hdf5::File::open_rw(&bad).unwrap());
+            let out = dir.join("merged.h5");
+            let message = merge(&out, &[parts[0].clone(), bad.clone()]).err().unwrap_or_else(|| panic!("{what}: merged")).to_string();
+            assert!(message.contains("bad.shard-1-of-2.h5") && message.contains(says), "{what}: {message}");
+            assert!(!out.exists(), "{what}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// The merged file stores its datasets as the unsharded run does: chunks
+    /// sized by the experiment's rows, not 4096 rows against 12.
+    #[test]
+    fn a_merge_is_stored_like_the_unsharded_run() {
+        let dir = scratch("storage");
+        let (experiment, parts) = two_parts(&dir);
+        let merged = dir.join("merged.h5");
+        merge(&merged, &parts).unwrap();
+        let whole = crate::run::run(&experiment, &dir.join("whole"), false).unwrap().path;
+        let (merged, whole) = (hdf5::File::open(&merged).unwrap(), hdf5::File::open(&whole).unwrap());
+        let mut compared = 0;
+        for path in ["parameters/stiffness", "outcomes/status", "failures/index", "failures/message"] {
+            let (a, b) = (merged.dataset(path).unwrap(), whole.dataset(path).unwrap());
+            assert_eq!((a.chunk(), a.shape()), (b.chunk(), b.shape()), "{path}");
+            compared += 1;
+        }
+        assert_eq!(compared, 4);
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

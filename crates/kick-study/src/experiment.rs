@@ -399,12 +399,12 @@ fn file_stem(path: &Path) -> Result<String, ExperimentError> {
 /// Read and validate an experiment file.
 pub fn load(path: &Path) -> Result<Experiment, ExperimentError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| ExperimentError {
+    let text = kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|message| ExperimentError {
         file: file.clone(),
         line: 0,
         column: 0,
         key: String::new(),
-        message: format!("cannot read: {e}"),
+        message,
     })?;
     parse(path, &text)
 }
@@ -553,8 +553,8 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
         Scenarios::Named { names, scenarios }
     } else if let Some(t2) = &raw.table2 {
         let t2_path = path.parent().unwrap_or(Path::new(".")).join(t2.get_ref());
-        let t2_text = std::fs::read_to_string(&t2_path)
-            .map_err(|e| at.error(t2.span(), "table2", format!("cannot read {}: {e}", t2_path.display())))?;
+        let t2_text = kick_core::input::read_text(&t2_path, kick_core::input::MAX_TEXT_BYTES)
+            .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
         let file = Table2File::parse(&t2_text)
             .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
         let rows = file
@@ -661,12 +661,12 @@ pub enum AnyExperiment {
 
 /// Read and validate an experiment file of either level (see [`parse_any`]).
 pub fn load_any(path: &Path) -> Result<AnyExperiment, ExperimentError> {
-    let text = std::fs::read_to_string(path).map_err(|e| ExperimentError {
+    let text = kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|message| ExperimentError {
         file: path.display().to_string(),
         line: 0,
         column: 0,
         key: String::new(),
-        message: format!("cannot read: {e}"),
+        message,
     })?;
     parse_any(path, &text)
 }
@@ -895,5 +895,27 @@ mod tests {
         assert!(e.message.contains("name"), "{e}");
         let e = parse_text("restitution = 0.5\nlaw = \"flores\"\n[base]\nrestitution = 0.6\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (4, "base.restitution"), "{e}");
+    }
+
+    /// Inputs that are not experiment or scenario files: refused at once
+    /// (no read until memory runs out, no wait on a FIFO), naming the key,
+    /// and no line of the file quoted (issue 21).
+    #[cfg(unix)]
+    #[test]
+    fn inputs_are_bounded_and_their_contents_not_quoted() {
+        let e = parse_text("table2 = \"/dev/zero\"\n").unwrap_err();
+        assert!(e.key == "table2" && e.message.contains("not a regular file"), "{e}");
+        let e = load_any(Path::new("/dev/zero")).unwrap_err();
+        assert!(e.message.contains("not a regular file"), "{e}");
+        let secret = std::env::temp_dir().join(format!("kick-secret-{}.txt", std::process::id()));
+        std::fs::write(&secret, "root:x:0:0:root:/root:/bin/bash\n").unwrap();
+        let e = parse_text(&format!("table2 = {:?}\n", secret.to_str().unwrap())).unwrap_err();
+        assert!(e.key == "table2" && e.message.contains("line 1") && !e.to_string().contains("root:x"), "{e}");
+        let _ = std::fs::remove_file(&secret);
+        let big = std::env::temp_dir().join(format!("kick-big-{}.toml", std::process::id()));
+        std::fs::File::create(&big).unwrap().set_len(kick_core::input::MAX_TEXT_BYTES + 1).unwrap();
+        let e = load(&big).unwrap_err();
+        assert!(e.message.contains("more than the 16777216 bytes"), "{e}");
+        let _ = std::fs::remove_file(&big);
     }
 }

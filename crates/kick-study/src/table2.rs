@@ -56,11 +56,10 @@ pub const BUILT_IN: &str = include_str!("../../../experiments/table2.toml");
 /// The text of a Table 2 scenario file: the file on disk when it exists,
 /// else, for the default path only, the built-in copy.
 pub fn read_text(path: &Path) -> Result<String, String> {
-    match std::fs::read_to_string(path) {
-        Ok(text) => Ok(text),
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound && path == Path::new(DEFAULT_PATH) => Ok(BUILT_IN.to_string()),
-        Err(e) => Err(format!("cannot read {}: {e}", path.display())),
+    if path == Path::new(DEFAULT_PATH) && std::fs::symlink_metadata(path).is_err() {
+        return Ok(BUILT_IN.to_string());
     }
+    kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| format!("{}: {e}", path.display()))
 }
 
 /// Read a Table 2 scenario file (`kick fit table2 --write`); see [`read_text`].

@@ -124,3 +124,26 @@ fn laws_json_has_every_law_on_every_row() {
     assert!(!out.status.success());
 }
 
+/// `--out` naming the specification or its data file is refused before the
+/// fit, and both are left as they were (issue 21).
+#[test]
+fn fit_data_refuses_an_output_that_is_an_input() {
+    let dir = scratch("overwrite");
+    let out = kick(&["fit", "synthesize", "--out", dir.to_str().unwrap(), "--seed", "3", "--times", "20"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let (spec, data) = (dir.join("synthetic.toml"), dir.join("synthetic.csv"));
+    let (spec_text, data_text) = (std::fs::read(&spec).unwrap(), std::fs::read(&data).unwrap());
+    // Same file by another name: a link to the data, ending in .h5.
+    let alias = dir.join("alias.h5");
+    let _ = std::fs::remove_file(&alias);
+    std::fs::hard_link(&data, &alias).unwrap();
+    for (given, says) in [(&spec, "must end in `.h5`"), (&data, "must end in `.h5`"), (&alias, "is the input")] {
+        let out = kick(&["fit", "data", spec.to_str().unwrap(), "--out", given.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(1), "{}", given.display());
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(&format!("`--out` = `{}`", given.display())) && stderr.contains(says), "{stderr}");
+    }
+    assert_eq!(std::fs::read(&spec).unwrap(), spec_text);
+    assert_eq!(std::fs::read(&data).unwrap(), data_text);
+    let _ = std::fs::remove_dir_all(&dir);
+}

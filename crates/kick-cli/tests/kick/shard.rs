@@ -139,3 +139,78 @@ fn a_3d_experiment_runs_in_shards_and_merges() {
     assert_eq!(merged, whole);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An output that is one of the inputs, or not `.h5`, is refused naming the
+/// argument, and the input is left as it was (issue 21).
+#[test]
+fn merge_refuses_an_output_that_would_replace_an_input() {
+    let dir = scratch("overwrite");
+    let file = dir.join("grid.toml");
+    std::fs::write(&file, GRID).unwrap();
+    let parts = dir.join("parts");
+    let mut names = Vec::new();
+    for given in ["0/2", "1/2"] {
+        let done = kick(&["run", file.to_str().unwrap(), "--out", parts.to_str().unwrap(), "--shard", given]);
+        assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
+        names.push(parts.join(format!("grid.shard-{}-of-2.h5", &given[..1])).to_str().unwrap().to_string());
+    }
+    let before = std::fs::read(&names[0]).unwrap();
+    let toml = std::fs::read(&file).unwrap();
+    for (out, says) in [(names[0].as_str(), "is the input"), (file.to_str().unwrap(), "must end in `.h5`")] {
+        let done = kick(&["merge", out, &names[0], &names[1]]);
+        assert_eq!(done.status.code(), Some(1), "{out}");
+        let stderr = String::from_utf8_lossy(&done.stderr);
+        assert!(stderr.contains(&format!("`OUT` = `{out}`")) && stderr.contains(says), "{stderr}");
+    }
+    assert_eq!(std::fs::read(&names[0]).unwrap(), before);
+    assert_eq!(std::fs::read(&file).unwrap(), toml);
+    // A directory where the file goes is refused before any row is solved.
+    std::fs::create_dir_all(dir.join("whole/grid.h5")).unwrap();
+    let done = kick(&["run", file.to_str().unwrap(), "--out", dir.join("whole").to_str().unwrap()]);
+    assert_eq!(done.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&done.stderr);
+    assert!(stderr.contains("grid.h5") && stderr.contains("it is a directory; give a file name"), "{stderr}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// 1,200 parts merge with at most 256 open files (one part open at a time),
+/// into the file an unsharded run writes (issue 21).
+#[test]
+fn many_parts_merge_under_a_low_open_file_limit() {
+    let dir = scratch("many");
+    let values = |n: usize, from: f64, step: f64| (0..n).map(|i| format!("{}", from + step * i as f64)).collect::<Vec<_>>().join(", ");
+    let text = format!(
+        "solver = \"accurate\"\n[[sweep]]\nparameter = \"stiffness\"\nvalues = [{}]\n[[sweep]]\nparameter = \"damping\"\nvalues = [{}]\n",
+        values(40, 2e5, 2e4),
+        values(30, 0.0, 4.0)
+    );
+    let file = dir.join("many.toml");
+    std::fs::write(&file, &text).unwrap();
+    let experiment = kick_runner::experiment::parse(&file, &text).unwrap();
+    let count = 1200;
+    let parts: Vec<String> = (0..count)
+        .map(|i| {
+            let shard = kick_runner::shard::Shard::parse(&format!("{i}/{count}"), "--shard").unwrap();
+            kick_runner::shard::run_shard(&experiment, shard, &dir.join("parts"), false).unwrap();
+            dir.join("parts").join(shard.file_name("many")).to_str().unwrap().to_string()
+        })
+        .collect();
+    let merged = dir.join("merged.h5");
+    let out = Command::new("bash")
+        .arg("-c")
+        .arg("ulimit -n 256 && exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_kick"))
+        .arg("merge")
+        .arg(&merged)
+        .args(&parts)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("1200 shards, 1200 rows"));
+    let whole = kick_runner::run(&experiment, &dir.join("whole"), false).unwrap().path;
+    let mut merged = kick_runner::SweepData::read(&merged).unwrap();
+    let whole = kick_runner::SweepData::read(&whole).unwrap();
+    merged.path = whole.path.clone();
+    assert_eq!(merged, whole);
+    let _ = std::fs::remove_dir_all(&dir);
+}

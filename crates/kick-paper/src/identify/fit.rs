@@ -188,6 +188,11 @@ pub struct DataFit {
 pub fn data(spec_path: &Path, out: Option<&Path>) -> Result<DataFit, String> {
     let (spec, observations) = FitSpec::load(spec_path).map_err(text)?;
     let name = spec_path.display().to_string();
+    if let Some(path) = out {
+        let history = spec.history.as_ref().map(|h| spec_path.parent().unwrap_or(Path::new(".")).join(&h.file));
+        let inputs: Vec<&Path> = std::iter::once(spec_path).chain(history.as_deref()).collect();
+        crate::output::check_output(path, "--out", "h5", &inputs).map_err(|e| e.to_string())?;
+    }
     let start = spec.start(&name).map_err(text)?;
     let free = spec.free_parameters().map_err(text)?;
     let truth = spec.truth().map_err(text)?;
@@ -195,7 +200,7 @@ pub fn data(spec_path: &Path, out: Option<&Path>) -> Result<DataFit, String> {
     let report = fit(&problem, &FitOptions::default()).map_err(text)?;
     let mut written = Vec::new();
     if let Some(path) = out {
-        let spec_text = std::fs::read_to_string(spec_path).map_err(|e| format!("{name}: {e}"))?;
+        let spec_text = kick_core::input::read_text(spec_path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| format!("{name}: {e}"))?;
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("fit");
         let provenance = Provenance::now(stem, &name, &spec_text);
         let w = ResultWriter::create(path, &provenance, "kick-fit-1").map_err(|e| e.to_string())?;
