@@ -66,10 +66,10 @@ pub fn write(out: &Path) -> Result<PathBuf, String> {
     std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let path = dir.join(FILE);
     let text = format!(
-        "kick_runner::free_kick: lateral offsets {LATERAL_OFFSETS:?} m x friction {FRICTIONS:?}, contact {VERTICAL_OFFSET} m below \
+        "kick_paper::free_kick: lateral offsets {LATERAL_OFFSETS:?} m x friction {FRICTIONS:?}, contact {VERTICAL_OFFSET} m below \
          the centre, Table 1 foot, horizontal path; flights to x = {GOAL_DISTANCE} m and {WALL_DISTANCE} m"
     );
-    let provenance = Provenance::now("free_kick", "kick_runner::free_kick", &text);
+    let provenance = Provenance::now("free_kick", "kick_paper::free_kick", &text);
     let flight_set = |name: &str, distance: f64| OutcomeSet {
         solver: name.into(),
         settings: vec![("distance".into(), Setting::Number(distance))],
@@ -236,7 +236,7 @@ pub fn setup_note() -> String {
          backspin and curves with sidespin, as a free kick over a wall does. kick-3d's offset is lateral only; with a \
          horizontal path and no gravity during the few milliseconds of contact (kick-3d's default) the kick is \
          symmetric about the foot's path, so the kick at (e, h) is the lateral kick at offset √(e² + h²) turned about \
-         the path by β = atan2(h, e): its launch velocity and spin are that kick's, rotated (`kick_runner::free_kick::roll`). \
+         the path by β = atan2(h, e): its launch velocity and spin are that kick's, rotated (`kick_study::free_kick::roll`). \
          h is a choice: deep enough that the ball clears a wall, shallow enough that the spin stays mostly sidespin \
          at the larger offsets. The flight: kick-flight's defaults (drag crisis, saturating \
          lift in the spin parameter, no spin decay, sea-level air), the kick's ball and g; the goal line at {} m (the \

@@ -186,12 +186,12 @@ fn many_parts_merge_under_a_low_open_file_limit() {
     );
     let file = dir.join("many.toml");
     std::fs::write(&file, &text).unwrap();
-    let experiment = kick_runner::experiment::parse(&file, &text).unwrap();
+    let experiment = kick_study::experiment::parse(&file, &text).unwrap();
     let count = 1200;
     let parts: Vec<String> = (0..count)
         .map(|i| {
-            let shard = kick_runner::shard::Shard::parse(&format!("{i}/{count}"), "--shard").unwrap();
-            kick_runner::shard::run_shard(&experiment, shard, &dir.join("parts"), false).unwrap();
+            let shard = kick_study::shard::Shard::parse(&format!("{i}/{count}"), "--shard").unwrap();
+            kick_store::shard::run_shard(&experiment, shard, &dir.join("parts"), false).unwrap();
             dir.join("parts").join(shard.file_name("many")).to_str().unwrap().to_string()
         })
         .collect();
@@ -207,9 +207,9 @@ fn many_parts_merge_under_a_low_open_file_limit() {
         .unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(String::from_utf8_lossy(&out.stdout).contains("1200 shards, 1200 rows"));
-    let whole = kick_runner::run(&experiment, &dir.join("whole"), false).unwrap().path;
-    let mut merged = kick_runner::SweepData::read(&merged).unwrap();
-    let whole = kick_runner::SweepData::read(&whole).unwrap();
+    let whole = kick_store::run(&experiment, &dir.join("whole"), false).unwrap().path;
+    let mut merged = kick_store::SweepData::read(&merged).unwrap();
+    let whole = kick_store::SweepData::read(&whole).unwrap();
     merged.path = whole.path.clone();
     assert_eq!(merged, whole);
     let _ = std::fs::remove_dir_all(&dir);
