@@ -155,22 +155,35 @@ fn sigkill_keeps_the_old_result_and_the_next_run_clears_what_it_left() {
 }
 
 /// Largest resident set of any child of this test process so far, bytes.
-/// Runs `command` to its end with stdout captured: its stdout and its own
-/// peak resident set (wait4's rusage of that child alone: RUSAGE_CHILDREN
-/// would also count the children of the tests running beside this one).
-fn output_and_peak_rss(command: &mut Command) -> (std::process::ExitStatus, Vec<u8>, Vec<u8>, u64) {
-    use std::io::Read;
-    use std::os::unix::process::ExitStatusExt;
-    let mut child = command.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
-    let (mut stdout, mut stderr) = (Vec::new(), Vec::new());
-    child.stdout.take().unwrap().read_to_end(&mut stdout).unwrap();
-    child.stderr.take().unwrap().read_to_end(&mut stderr).unwrap();
-    let mut status = 0;
-    // SAFETY: wait4 fills the zeroed struct it is given; the child is ours and not yet waited for.
-    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
-    let pid = unsafe { libc::wait4(child.id() as libc::pid_t, &mut status, 0, &mut usage) };
-    assert_eq!(pid, child.id() as libc::pid_t);
-    (std::process::ExitStatus::from_raw(status), stdout, stderr, u64::try_from(usage.ru_maxrss).unwrap() * 1024)
+/// Runs `command` to its end, its stdout and stderr into files in `dir`:
+/// its status, stdout, stderr and the largest VmHWM (peak resident set of
+/// its own address space) seen while it ran, polled every 2 ms. Neither
+/// RUSAGE_CHILDREN nor wait4 will do: Rust spawns with vfork, so a child's
+/// maxrss starts at this test process's own peak (the other tests' memory).
+fn output_and_peak_rss(command: &mut Command, dir: &Path) -> (std::process::ExitStatus, Vec<u8>, Vec<u8>, u64) {
+    let (out, err) = (dir.join("stdout"), dir.join("stderr"));
+    let mut child = command
+        .stdout(std::fs::File::create(&out).unwrap())
+        .stderr(std::fs::File::create(&err).unwrap())
+        .spawn()
+        .unwrap();
+    let status_file = format!("/proc/{}/status", child.id());
+    let mut peak = 0;
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        let hwm = std::fs::read_to_string(&status_file).ok().and_then(|text| {
+            let line = text.lines().find(|l| l.starts_with("VmHWM:"))?;
+            line.split_whitespace().nth(1)?.parse::<u64>().ok()
+        });
+        peak = peak.max(hwm.unwrap_or(0) * 1024);
+        std::thread::sleep(Duration::from_millis(2));
+    };
+    let (stdout, stderr) = (std::fs::read(&out).unwrap(), std::fs::read(&err).unwrap());
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&err).unwrap();
+    (status, stdout, stderr, peak)
 }
 
 /// `kick simulate --history FILE --interval 2e-8` (2.7e5 rows, 60 MB) and
@@ -186,7 +199,7 @@ fn long_histories_are_streamed_to_the_file() {
     {
         let path = dir.join(file);
         let (status, stdout, stderr, rss) =
-            output_and_peak_rss(kick().args([command, "--history", path.to_str().unwrap(), "--interval", interval, "--format", "json"]));
+            output_and_peak_rss(kick().args([command, "--history", path.to_str().unwrap(), "--interval", interval, "--format", "json"]), &dir);
         assert!(status.success(), "{}", String::from_utf8_lossy(&stderr));
         peak = peak.max(rss);
         let summary: serde_json::Value = serde_json::from_slice(&stdout).expect("stdout is the JSON summary alone");
