@@ -238,8 +238,9 @@ pub fn setup_note() -> String {
          symmetric about the foot's path, so the kick at (e, h) is the lateral kick at offset √(e² + h²) turned about \
          the path by β = atan2(h, e): its launch velocity and spin are that kick's, rotated (`kick_study::free_kick::roll`). \
          h is a choice: deep enough that the ball clears a wall, shallow enough that the spin stays mostly sidespin \
-         at the larger offsets. The flight: kick-flight's defaults (drag crisis, saturating \
-         lift in the spin parameter, no spin decay, sea-level air), the kick's ball and g; the goal line at {} m (the \
+         at the larger offsets. The flight: kick-flight's defaults (the drag crisis of a \
+         14-panel ball joined to a spinning ball's drag, Goff & Carré 2010 Eq. 4; saturating lift in the spin \
+         parameter; no spin decay; sea-level air), the kick's ball and g; the goal line at {} m (the \
          issue's free kick), the wall at {} m (Law 13), the goal {} m wide and {} m high (Law 1), drawn centred on the \
          foot's path. Heights are those of the ball's centre, which starts at R = {} m.",
         kick_core::short(b.effective_foot_mass()),

@@ -79,7 +79,7 @@ impl FreeKick {
     }
 
     /// The flight after it, crossing x = `distance` (kick-flight's defaults:
-    /// drag crisis, saturating lift, no spin decay, sea-level air; the kick's
+    /// drag crisis joined to the spinning ball's drag, saturating lift, no spin decay, sea-level air; the kick's
     /// ball and g).
     pub fn flight(&self, distance: f64) -> Result<Flight, String> {
         let rest = FlightSpec {
