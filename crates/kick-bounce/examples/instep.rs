@@ -17,7 +17,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             o.peak_force,
             o.max_compression * 1e3,
             o.v_ball_out,
-            o.speed_ratio,
+            o.speed_ratio.unwrap_or(f64::NAN),
             o.restitution
         );
     }

@@ -90,7 +90,7 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
     let outcome = Outcome {
         v_ball_out,
         v_foot_out,
-        speed_ratio: v_ball_out / scenario.foot_speed(),
+        speed_ratio: Outcome::ratio(v_ball_out, scenario.foot_speed()),
         peak_force,
         peak_force_time,
         contact_time,

@@ -239,7 +239,7 @@ pub fn outcome<L: ContactLaw + Copy>(
     let outcome = Outcome {
         v_ball_out,
         v_foot_out,
-        speed_ratio: v_ball_out / scenario.foot_speed(),
+        speed_ratio: Outcome::ratio(v_ball_out, scenario.foot_speed()),
         peak_force: extremes.peak_force,
         peak_force_time: extremes.peak_force_time,
         contact_time: t,
@@ -261,7 +261,8 @@ pub fn check_finite(outcome: &Outcome) -> Result<Outcome, kick_core::KickError> 
     let fields = [
         ("ball exit velocity", outcome.v_ball_out),
         ("foot exit velocity", outcome.v_foot_out),
-        ("speed ratio", outcome.speed_ratio),
+        // An undefined ratio (v_f⁻ = 0) is absent, not a failure.
+        ("speed ratio", outcome.speed_ratio.unwrap_or(0.0)),
         ("peak force", outcome.peak_force),
         ("contact time", outcome.contact_time),
         ("max compression", outcome.max_compression),

@@ -51,7 +51,10 @@ pub fn max_relative_error(outcome: &Outcome, reference: &Outcome) -> f64 {
     [
         velocity(outcome.v_ball_out, reference.v_ball_out),
         velocity(outcome.v_foot_out, reference.v_foot_out),
-        relative(outcome.speed_ratio, reference.speed_ratio),
+        match (outcome.speed_ratio, reference.speed_ratio) {
+            (Some(a), Some(b)) => relative(a, b),
+            _ => 0.0, // both undefined (v_f⁻ = 0): nothing to compare
+        },
         relative(outcome.peak_force, reference.peak_force),
         relative(outcome.contact_time, reference.contact_time),
         relative(outcome.max_compression, reference.max_compression),

@@ -193,7 +193,7 @@ impl Reduced {
         let outcome = Outcome {
             v_ball_out: r.ball_velocity,
             v_foot_out: r.foot_velocity,
-            speed_ratio: r.ball_velocity / scenario.foot_speed(),
+            speed_ratio: Outcome::ratio(r.ball_velocity, scenario.foot_speed()),
             peak_force: end.peak_force,
             peak_force_time: end.peak_force_time,
             contact_time: end.time,

@@ -91,7 +91,8 @@ impl Table2File {
 pub fn columns(outcome: &Outcome) -> [f64; 5] {
     [
         outcome.v_ball_out,
-        outcome.speed_ratio,
+        // Table 2's rows all have v_f⁻ > 0: the ratio is defined.
+        outcome.speed_ratio.unwrap_or(f64::NAN),
         outcome.peak_force,
         outcome.contact_time * 1e3,
         outcome.max_compression * 1e3,

@@ -71,8 +71,9 @@ pub struct Outcome {
     pub v_ball_out: f64,
     /// v_f⁺ in m/s.
     pub v_foot_out: f64,
-    /// v_b⁺ / v_f⁻ (Eq. 38's left side; Table 2's "Ratio").
-    pub speed_ratio: f64,
+    /// v_b⁺ / v_f⁻ (Eq. 38's left side; Table 2's "Ratio"); `None` when
+    /// v_f⁻ = 0 (a ball hitting a resting foot), where it is undefined.
+    pub speed_ratio: Option<f64>,
     /// sup F over contact, including F(0⁺) = c V0, in N.
     pub peak_force: f64,
     pub peak_force_time: f64,
@@ -133,6 +134,10 @@ impl std::fmt::Display for SolverPath {
 }
 
 impl Outcome {
+    /// v_b⁺ / v_f⁻, `None` when v_f⁻ = 0 (undefined, not infinite).
+    pub fn ratio(v_ball_out: f64, v_foot_in: f64) -> Option<f64> {
+        (v_foot_in != 0.0).then(|| v_ball_out / v_foot_in)
+    }
     pub fn exit(&self) -> ExitVelocities {
         ExitVelocities {
             foot: self.v_foot_out,
@@ -363,12 +368,13 @@ pub const OBSERVABLES: [(&str, &str); 15] = [
 ];
 
 impl Outcome {
-    /// Values in [`OBSERVABLES`] order.
+    /// Values in [`OBSERVABLES`] order, for columns of numbers: an undefined
+    /// speed ratio (v_f⁻ = 0) is NaN, the one documented NaN of a row.
     pub fn observable_values(&self) -> [f64; 15] {
         [
             self.v_ball_out,
             self.v_foot_out,
-            self.speed_ratio,
+            self.speed_ratio.unwrap_or(f64::NAN),
             self.peak_force,
             self.peak_force_time,
             self.contact_time,

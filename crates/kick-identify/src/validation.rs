@@ -93,7 +93,8 @@ pub fn contact_model(scenario: &Scenario) -> Result<ContactModel, IdentifyError>
         peak_force: outcome.peak_force,
         mean_force,
         ball_speed: outcome.v_ball_out,
-        speed_ratio: outcome.speed_ratio,
+        // Table 1's foot speed is non-zero: the ratio is defined.
+        speed_ratio: outcome.speed_ratio.unwrap_or(f64::NAN),
         peak_to_mean: outcome.peak_force / mean_force,
     })
 }

@@ -197,7 +197,7 @@ impl Printable for LegReport {
         let _ = writeln!(w, "1D contact with m_f = effective_mass (Table 1 otherwise, accurate solver):");
         let _ = writeln!(w, "{:<20} {:>12} m/s", "v_ball_out", sig(outcome.v_ball_out));
         let _ = writeln!(w, "{:<20} {:>12} m/s", "v_foot_out", sig(outcome.v_foot_out));
-        let _ = writeln!(w, "{:<20} {:>12}", "speed_ratio", sig(outcome.speed_ratio));
+        let _ = writeln!(w, "{:<20} {:>12}", "speed_ratio", outcome.speed_ratio.map_or("undefined".to_string(), |r| sig(r).to_string()));
         let _ = writeln!(w, "{:<20} {:>12} s", "contact_time", sig(outcome.contact_time));
         w
     }
@@ -339,7 +339,7 @@ fn write_sweeps(
         writer.push_parameters(&[m]).map_err(|e| e.to_string())?;
         let bound = kick_restitution::speed_ratio_ball_at_rest(1.0, m, base.ball_mass()) * base.foot_speed();
         match exit_outcome(m, base) {
-            Ok(o) => writer.push_outcome(0, Ok(&[o.v_ball_out, o.speed_ratio, bound])),
+            Ok(o) => writer.push_outcome(0, Ok(&[o.v_ball_out, o.speed_ratio.unwrap_or(f64::NAN), bound])),
             Err(e) => writer.push_outcome(0, Err(&e.to_string())),
         }
         .map_err(|e| e.to_string())?;

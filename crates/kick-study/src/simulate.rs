@@ -78,6 +78,8 @@ pub fn outcome_json(scenario: &Scenario, solver: &str, outcome: &Outcome) -> Map
     for ((name, _), value) in OBSERVABLES.iter().zip(outcome.observable_values()) {
         object.insert((*name).into(), value.into());
     }
+    // Undefined (v_f⁻ = 0): null, not a number.
+    object.insert("speed_ratio".into(), outcome.speed_ratio.into());
     object.insert("energy_residual".into(), outcome.energy.residual().into());
     object.insert("solver".into(), solver.into());
     object.insert("method".into(), serde_json::to_value(outcome.method).unwrap_or(Value::Null));
@@ -108,7 +110,8 @@ impl Printable for Simulation {
         let o = &self.outcome;
         let _ = writeln!(w, "solver: {} (path: {})", self.solver, o.method);
         for ((name, unit), value) in OBSERVABLES.iter().zip(o.observable_values()) {
-            let _ = writeln!(w, "{name:<24} {:>12} {unit}", sig(value));
+            let value = if *name == "speed_ratio" && o.speed_ratio.is_none() { "undefined".to_string() } else { sig(value).to_string() };
+            let _ = writeln!(w, "{name:<24} {value:>12} {unit}");
         }
         let _ = writeln!(w, "{:<24} {:>12} J", "energy_residual", sig(o.energy.residual()));
         if let Some(f) = &self.flight {

@@ -214,3 +214,23 @@ fn reference_pages_are_current() {
         assert!(parameters.contains(&format!("| `{}`", p.name)) && parameters.contains(&format!("`{}`", p.flag())), "{}", p.name);
     }
 }
+
+#[test]
+fn a_ball_hitting_a_resting_foot_has_an_undefined_speed_ratio_and_every_other_observable() {
+    // v_f⁻ = 0: v_b⁺ / v_f⁻ is undefined (null, "undefined"), not a failure.
+    let args = ["simulate", "--foot-speed", "0", "--ball-speed", "-6", "--drive-force", "0"];
+    let out = kick(&[&args[..], &["--format", "json"]].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(value["speed_ratio"].is_null(), "{}", value["speed_ratio"]);
+    // Momentum is conserved without a drive: m_f v_f⁺ + m_b v_b⁺ = m_b v_b⁻.
+    let (m_f, m_b) = (value["scenario"]["foot_mass"].as_f64().unwrap(), value["scenario"]["ball_mass"].as_f64().unwrap());
+    let (v_f, v_b) = (value["v_foot_out"].as_f64().unwrap(), value["v_ball_out"].as_f64().unwrap());
+    assert!((m_f * v_f + m_b * v_b - m_b * -6.0).abs() < 1e-9 * m_b * 6.0, "{v_f} {v_b}");
+    let e = value["restitution"].as_f64().unwrap();
+    assert!(e > 0.0 && e <= 1.0, "{e}");
+    let text = kick(&args);
+    assert!(text.status.success(), "{}", String::from_utf8_lossy(&text.stderr));
+    let line = String::from_utf8_lossy(&text.stdout).lines().find(|l| l.starts_with("speed_ratio")).unwrap().to_string();
+    assert!(line.contains("undefined"), "{line}");
+}
