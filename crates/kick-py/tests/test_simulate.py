@@ -125,3 +125,13 @@ def test_help_lists_keywords_with_symbol_unit_and_default():
     assert signature.parameters["foot_half_extents"].default == (0.03, 0.12, 0.05)
     assert signature.parameters["ball_inertia"].default is None  # derived: 2/3 m_b R^2
     assert list(signature.parameters)[:2] == ["foot_mass", "ball_mass"]
+
+
+def test_a_ball_hitting_a_resting_foot_has_no_speed_ratio():
+    """v_f- = 0: the ratio v_b+/v_f- is undefined (None, never NaN); the rest
+    of the outcome conserves momentum (no drive force)."""
+    out = kick.simulate(foot_speed=0.0, ball_speed=-6.0, drive_force=0.0)
+    assert out["speed_ratio"] is None
+    m_f, m_b = out["scenario"]["foot_mass"], out["scenario"]["ball_mass"]
+    momentum = m_f * out["v_foot_out"] + m_b * out["v_ball_out"]
+    assert abs(momentum - m_b * -6.0) <= 1e-9 * m_b * 6.0
