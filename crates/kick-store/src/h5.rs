@@ -4,7 +4,7 @@
 //! or more sets of named outcome columns (one set per solver), every column a
 //! 1D dataset with a `units` attribute. Rows are streamed in chunks of
 //! [`CHUNK_ROWS`] into extendable, chunked datasets, so a writer's memory does
-//! not grow with the number of rows. Layout: paper/reference/files.md; guide:
+//! not grow with the number of rows. Layout and guide:
 //! this crate's README.md ("HDF5 result layout").
 //!
 //! ```text

@@ -3,7 +3,7 @@
 //! provenance), and their readers. Figures and `paper/laws.md`,
 //! `paper/identification.md` are drawn from these files only.
 //!
-//! `laws.h5` — the sweep layout (paper/reference/files.md): one row per
+//! `laws.h5` — the sweep layout (this crate's README.md): one row per
 //! Table 2 scenario (`scenario_names`), parameters the eight scenario
 //! parameters and `target_restitution`; one outcome set per law (the paper's
 //! at the root, the others under `solvers/<law>`), columns the observables
