@@ -43,10 +43,11 @@ pub fn flight<'py>(py: Python<'py>, params: Option<&Bound<'py, PyDict>>) -> PyRe
 #[pyo3(signature = (*, threads = None, **arrays))]
 pub fn flight_many<'py>(
     py: Python<'py>,
-    threads: Option<usize>,
+    threads: Option<&Bound<'py, PyAny>>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
+        let threads = crate::params::threads(threads)?;
         let numpy = py.import("numpy")?;
         let float64 = numpy.getattr("float64")?;
         let mut given: Vec<(FlightParameter, Bound<'py, PyAny>)> = Vec::new();

@@ -141,12 +141,12 @@ fn history<'py>(
     solver: &str,
     law: &str,
     dt: Option<&Bound<'py, PyAny>>,
-    samples: Option<usize>,
+    samples: Option<&Bound<'py, PyAny>>,
     interval: Option<&Bound<'py, PyAny>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let spacing = spacing(samples, params::optional_number("interval", interval)?)?;
+        let spacing = spacing(params::samples(samples)?, params::optional_number("interval", interval)?)?;
         let spec = params::scenario_spec(params, crate::law(law)?)?;
         let scenario = spec.build().map_err(value_error)?;
         let solver = solver_1d(solver, params::optional_number("dt", dt)?)?;
@@ -179,12 +179,12 @@ fn history3d<'py>(
     py: Python<'py>,
     solver: &str,
     law: &str,
-    samples: Option<usize>,
+    samples: Option<&Bound<'py, PyAny>>,
     interval: Option<&Bound<'py, PyAny>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let spacing = spacing(samples, params::optional_number("interval", interval)?)?;
+        let spacing = spacing(params::samples(samples)?, params::optional_number("interval", interval)?)?;
         let spec = params::kick_spec(params, crate::law(law)?)?;
         let (_, history) = py.detach(|| kick_study::simulate::sampled3d(&spec, solver, spacing)).map_err(value_error)?;
         let out = PyDict::new(py);

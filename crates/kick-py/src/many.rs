@@ -21,9 +21,6 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// Rows one parallel task solves in turn (as `kick run` chunks its rows).
 const CHUNK: usize = 1024;
 
-/// Most worker threads per core a call may ask for.
-const THREADS_PER_CORE: usize = 4;
-
 /// A model the rows are solved with: its output columns and one solve.
 trait Model: Sync {
     type Spec: LawSpec + Copy + Send + Sync;
@@ -245,18 +242,12 @@ fn solve_chunk<M: Model>(
     failures
 }
 
-/// Run `f` on `threads` workers of its own pool, or on rayon's global pool.
+/// Run `f` on `threads` workers of its own pool (a count `params::threads`
+/// checked), or on rayon's global pool.
 fn in_pool<T: Send>(threads: Option<usize>, f: impl FnOnce() -> T + Send) -> PyResult<T> {
     match threads {
         None => Ok(f()),
         Some(n) => {
-            let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
-            let limit = THREADS_PER_CORE * cores;
-            if !(1..=limit).contains(&n) {
-                return Err(PyValueError::new_err(format!(
-                    "threads = {n}: must be between 1 and {limit} ({THREADS_PER_CORE} per core, {cores} cores here)"
-                )));
-            }
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(n)
                 .build()
@@ -461,7 +452,7 @@ pub fn simulate_many<'py>(
     solver: &str,
     law: &str,
     dt: Option<&Bound<'py, PyAny>>,
-    threads: Option<usize>,
+    threads: Option<&Bound<'py, PyAny>>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
@@ -470,7 +461,7 @@ pub fn simulate_many<'py>(
         let law = crate::law(law)?;
         check_law_keywords(law, arrays)?;
         let base: ScenarioSpec = crate::params::spec(None, law)?;
-        run_many(py, &model, base, threads, arrays)
+        run_many(py, &model, base, crate::params::threads(threads)?, arrays)
     })
 }
 
@@ -483,7 +474,7 @@ pub fn simulate3d_many<'py>(
     solver: &str,
     law: &str,
     dt: Option<&Bound<'py, PyAny>>,
-    threads: Option<usize>,
+    threads: Option<&Bound<'py, PyAny>>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
@@ -493,6 +484,6 @@ pub fn simulate3d_many<'py>(
         let law = crate::law(law)?;
         check_law_keywords(law, arrays)?;
         let base: KickSpec = crate::params::spec(None, law)?;
-        run_many(py, &model, base, threads, arrays)
+        run_many(py, &model, base, crate::params::threads(threads)?, arrays)
     })
 }

@@ -8,7 +8,7 @@ use kick_core::{LawKind, ScenarioSpec, Status};
 use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString};
+use pyo3::types::{PyBool, PyDict, PyList, PyString};
 
 /// A spec keywords fill: its levels' parameters and the contact law.
 pub trait LawSpec: SetParameter + SetLaw + Default {}
@@ -78,6 +78,58 @@ pub fn real_number(name: &str, value: &Bound<'_, PyAny>) -> PyResult<f64> {
 /// `real_number` for an optional keyword (None: not given).
 pub fn optional_number(name: &str, value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<f64>> {
     value.filter(|v| !v.is_none()).map(|v| real_number(name, v)).transpose()
+}
+
+/// A count for keyword `name` (`samples`, `threads`): a Python int or a
+/// numpy integer (anything with `__index__` but a bool), in `range`, or a
+/// `TypeError` naming the keyword and the type it got (a `ValueError`
+/// naming the limit when out of `range`). A float is refused even when
+/// whole, as `range(3.0)` refuses it: a count computed as a float (`1e6`,
+/// `n / 2`) may not be the integer the user meant, and accepting `3.0` but
+/// not `3.5` would make the kind of error depend on the value.
+pub fn whole_number(name: &str, value: &Bound<'_, PyAny>, range: std::ops::RangeInclusive<usize>, limit: &str) -> PyResult<usize> {
+    let py = value.py();
+    let refused = |hint: String| PyTypeError::new_err(format!("`{name}` takes a whole number (int), got {}{hint}", described(value)));
+    let numpy_bool = py.import("numpy")?.getattr("bool_")?;
+    if value.is_instance_of::<PyBool>() || value.is_instance(&numpy_bool)? {
+        return Err(refused(String::new()));
+    }
+    let index = py.import("operator")?.call_method1("index", (value,)).map_err(|_| {
+        let whole = value.extract::<f64>().ok().filter(|x| x.fract() == 0.0 && x.abs() <= 2f64.powi(53));
+        refused(whole.map(|x| format!(": write {name}={x:.0}")).unwrap_or_default())
+    })?;
+    // Compared as Python ints, so no size overflows before the check.
+    let (low, high) = (*range.start(), *range.end());
+    if index.lt(low)? || index.gt(high)? {
+        return Err(PyValueError::new_err(format!(
+            "`{name}` = {}: must be between {low} and {high}{limit}",
+            described(&index).trim_start_matches("int ")
+        )));
+    }
+    index.extract()
+}
+
+/// `whole_number` for an optional keyword (None: not given).
+pub fn optional_whole_number(
+    name: &str,
+    value: Option<&Bound<'_, PyAny>>,
+    range: std::ops::RangeInclusive<usize>,
+    limit: &str,
+) -> PyResult<Option<usize>> {
+    value.filter(|v| !v.is_none()).map(|v| whole_number(name, v, range, limit)).transpose()
+}
+
+/// The `threads` keyword: None (rayon's pool) or 1 to
+/// [`kick_study::limits::max_threads`], as `--threads` is bounded.
+pub fn threads(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
+    use kick_study::limits::{cores, max_threads, THREADS_PER_CORE};
+    let limit = format!(" ({THREADS_PER_CORE} per core, {} cores here)", cores());
+    optional_whole_number("threads", value, 1..=max_threads(), &limit)
+}
+
+/// The `samples` keyword of a history: None or 2 to [`kick_core::MAX_HISTORY_SAMPLES`].
+pub fn samples(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
+    optional_whole_number("samples", value, 2..=kick_core::MAX_HISTORY_SAMPLES, "")
 }
 
 /// Real numbers along one axis for keyword `name` (a data channel), or an error naming it.

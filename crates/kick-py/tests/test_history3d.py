@@ -64,7 +64,7 @@ def test_history3d_grid_grip_slip_and_separation():
 def test_history3d_refusals_carry_the_message():
     with pytest.raises(ValueError, match="exactly one of `samples`"):
         kick.history3d()
-    with pytest.raises(ValueError, match="invalid parameter `samples` = 1"):
+    with pytest.raises(ValueError, match="`samples` = 1: must be between 2"):
         kick.history3d(samples=1)
     with pytest.raises(ValueError, match="--solver accurate"):
         kick.history3d(samples=10, solver="full-state")

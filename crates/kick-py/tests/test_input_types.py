@@ -96,3 +96,54 @@ def test_options_refuse_complex_numbers():
         kick.simulate(solver="seed-rk4", dt=np.complex128(5e-6 + 1.0j))
     with pytest.raises(TypeError, match=r"`interval` takes a number, got .*complex128"):
         kick.history(interval=np.complex128(1e-4 + 1.0j))
+
+
+# Every count keyword, as a call taking it: `samples` of the histories,
+# `threads` of the `_many` functions.
+COUNTS = {
+    "history.samples": ("samples", lambda n: kick.history(samples=n)),
+    "history3d.samples": ("samples", lambda n: kick.history3d(samples=n)),
+    "simulate_many.threads": ("threads", lambda n: kick.simulate_many(foot_mass=[3.0, 4.0], threads=n)),
+    "simulate3d_many.threads": ("threads", lambda n: kick.simulate3d_many(offset=[0.0, 0.02], threads=n)),
+    "flight_many.threads": ("threads", lambda n: kick.flight_many(speed=[20.0, 25.0], launch_angle=20.0, threads=n)),
+}
+
+# (value, the type named in the message): what is not an int is a TypeError,
+# a whole float included (as `range(3.0)` refuses it).
+NOT_INT = [(3.0, "float 3.0"), (2.5, "float 2.5"), (np.float64(3.0), "float64"), (True, "bool"), (np.bool_(True), "bool"), ("3", "str"), (3 + 0j, "complex")]
+
+
+@pytest.mark.parametrize("call", COUNTS)
+@pytest.mark.parametrize("value,named", NOT_INT)
+def test_counts_refuse_what_is_not_an_int(call, value, named):
+    keyword, f = COUNTS[call]
+    with pytest.raises(TypeError, match=rf"`{keyword}` takes a whole number \(int\), got .*{named}"):
+        f(value)
+
+
+def test_a_whole_float_count_says_how_to_write_it():
+    with pytest.raises(TypeError, match=r"got float 1000000.0: write samples=1000000"):
+        kick.history(samples=1e6)
+
+
+@pytest.mark.parametrize("call", COUNTS)
+@pytest.mark.parametrize("value", [-1, 10**6 + 1, 2**64, 10**30, np.int64(-5), np.uint64(2**64 - 1)])
+def test_counts_out_of_range_name_the_keyword_and_the_limit(call, value):
+    keyword, f = COUNTS[call]
+    low, high = (2, 1_000_000) if keyword == "samples" else (1, r"\d+")
+    with pytest.raises(ValueError, match=rf"`{keyword}` = {int(value)}: must be between {low} and {high}"):
+        f(value)
+
+
+def test_numpy_integer_counts_are_taken():
+    for n in (np.int8(40), np.uint16(40), np.int64(40), np.array(40)):
+        h = kick.history(samples=n)
+        assert len(h["time"]) == 40, n
+        np.testing.assert_array_equal(h["time"], kick.history(samples=40)["time"])
+    assert len(kick.history3d(samples=np.int32(25))["time"]) == 25
+    one = kick.simulate_many(foot_mass=[3.0, 4.0], threads=np.uint8(2))["v_ball_out"]
+    np.testing.assert_array_equal(one, kick.simulate_many(foot_mass=[3.0, 4.0])["v_ball_out"])
+    np.testing.assert_array_equal(
+        kick.flight_many(speed=[20.0, 25.0], launch_angle=20.0, threads=np.int64(1))["flight_time"],
+        kick.flight_many(speed=[20.0, 25.0], launch_angle=20.0)["flight_time"],
+    )

@@ -85,7 +85,7 @@ def test_thread_counts_give_the_same_numbers_and_are_bounded():
         np.testing.assert_array_equal(one[name], two[name])
         np.testing.assert_array_equal(one[name], default[name])
     for bad in (0, 10**6):
-        with pytest.raises(ValueError, match=rf"threads = {bad}: must be between 1 and \d+"):
+        with pytest.raises(ValueError, match=rf"`threads` = {bad}: must be between 1 and \d+"):
             kick.simulate_many(stiffness=k, threads=bad)
 
 

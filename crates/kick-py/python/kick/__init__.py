@@ -139,7 +139,8 @@ dt : float, optional
 """
 _MANY_DOC = f"""
 threads : int, optional
-    Worker threads (an own pool of that many); default: rayon's pool, one per core.
+    Worker threads (an own pool of that many, 1 to 4 per core; an int or numpy
+    integer, not a float or bool); default: rayon's pool, one per core.
 
 Every parameter is a scalar or an array; they broadcast by numpy's rules to
 the rows' shape S (a vector parameter has a trailing axis of 3). The rows are
@@ -228,7 +229,7 @@ _declare(
     [],
     [_solver, _law, _dt, _inspect.Parameter("samples", _KW, default=None), _inspect.Parameter("interval", _KW, default=None)],
     "Time history of one 1D contact, uniform samples, as ``kick simulate --history``.\n\n"
-    "Give one of ``samples`` (how many, >= 2: first touch to separation) or\n"
+    "Give one of ``samples`` (how many, an int from 2 to 1e6: first touch to separation) or\n"
     "``interval`` (s apart from first touch). The last row is the separation\n"
     "state (phase 0). Returns a dict of 1-D float64 arrays (below).\n" + _SOLVER_DOC,
     "Columns\n-------\n" + _outputs_docs(HISTORY_COLUMNS)
@@ -247,7 +248,7 @@ _declare(
     [_solver, _law, _inspect.Parameter("samples", _KW, default=None), _inspect.Parameter("interval", _KW, default=None)],
     "Time history of one off-center 3D kick, uniform samples, as ``kick simulate3d --history``.\n\n"
     "The accurate path's samples (solver ``auto`` or ``accurate``), world frame\n"
-    "(x along the foot's path, z up). Give one of ``samples`` (how many, >= 2:\n"
+    "(x along the foot's path, z up). Give one of ``samples`` (how many, an int from 2 to 1e6:\n"
     "first touch to separation) or ``interval`` (s apart from first touch). The\n"
     "last row is the separation state (contact_state 0), the outcome's exit\n"
     "velocities. Returns a dict of 1-D float64 arrays (below); vectors as\n"

@@ -79,7 +79,7 @@ def simulate_many(
     solver: str = ...,
     law: str = ...,
     dt: float | None = ...,
-    threads: int | None = ...,
+    threads: int | np.integer | None = ...,
 ) -> dict[str, Any]:
     """Solve many 1D contacts, as ``kick sweep`` does, from arrays."""
 
@@ -109,7 +109,7 @@ def simulate3d_many(
     solver: str = ...,
     law: str = ...,
     dt: float | None = ...,
-    threads: int | None = ...,
+    threads: int | np.integer | None = ...,
 ) -> dict[str, Any]:
     """Solve many off-center 3D kicks from arrays."""
 
@@ -127,7 +127,7 @@ def history(
     solver: str = ...,
     law: str = ...,
     dt: float | None = ...,
-    samples: int | None = ...,
+    samples: int | np.integer | None = ...,
     interval: float | None = ...,
 ) -> dict[str, NDArray[np.float64]]:
     """Time history of one 1D contact, uniform samples, as ``kick simulate --history``."""
@@ -157,7 +157,7 @@ def history3d(
     ground: bool | None = ...,
     solver: str = ...,
     law: str = ...,
-    samples: int | None = ...,
+    samples: int | np.integer | None = ...,
     interval: float | None = ...,
 ) -> dict[str, NDArray[np.float64]]:
     """Time history of one off-center 3D kick, uniform samples, as ``kick simulate3d --history``."""
@@ -226,6 +226,6 @@ def flight_many(
     lift_coefficient: ArrayLike | None = ...,
     spin_decay: ArrayLike | None = ...,
     distance: ArrayLike | None = ...,
-    threads: int | None = ...,
+    threads: int | np.integer | None = ...,
 ) -> dict[str, Any]:
     """Solve many flights, as ``flight`` does, from arrays (``kick_flight::flight_many``)."""
