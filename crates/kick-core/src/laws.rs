@@ -607,10 +607,12 @@ mod tests {
 
     #[test]
     fn onset_force_jumps_only_for_viscous_dashpots() {
-        for law in laws() {
+        let shell = AnyLaw::Shell(ShellBall::default_with_radius(crate::DEFAULT_BALL_RADIUS).unwrap());
+        for law in laws().into_iter().chain([shell]) {
             let onset = law.onset_force(22.0);
             match law {
-                AnyLaw::Hysteresis(_) => assert_eq!(onset, 0.0),
+                // The loss multiplies an elastic force that is 0 at first touch.
+                AnyLaw::Hysteresis(_) | AnyLaw::Shell(_) => assert_eq!(onset, 0.0),
                 AnyLaw::PowerLaw(p) => assert_eq!(onset, p.damping * 22.0),
                 AnyLaw::KelvinVoigt(k) => assert_eq!(onset, k.damping * 22.0),
             }

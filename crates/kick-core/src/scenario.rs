@@ -589,4 +589,26 @@ mod tests {
         assert_eq!(flores.restitution_target(), Some(0.5));
         assert_eq!(flores.spec().build().unwrap(), flores);
     }
+
+    /// TOML `law = "shell"` with the ball's keys builds the pressurised ball
+    /// they name (the rest at their declared defaults); its spec builds it
+    /// again, a changed parameter keeps the ball, and the ball's keys are
+    /// refused under another law, naming the key.
+    #[test]
+    fn law_shell_is_built_from_the_balls_keys() {
+        let spec: ScenarioSpec = toml::from_str("law = \"shell\"\ninflation_pressure = 7.0e4\nshell_loss = 0.03\n").unwrap();
+        let scenario = spec.build().unwrap();
+        let ball = ShellBall::new(7.0e4, crate::DEFAULT_BALL_RADIUS, 1.4, 0.0, 0.03).unwrap();
+        assert_eq!(scenario.contact_law(), AnyLaw::Shell(ball));
+        assert_eq!((scenario.law_kind(), scenario.restitution_target()), (LawKind::Shell, None));
+        assert_eq!(scenario.spec().build().unwrap(), scenario);
+        assert_eq!(scenario.with(Parameter::FootSpeed, 20.0).unwrap().contact_law(), AnyLaw::Shell(ball));
+        // The paper's law stays the default.
+        let paper: ScenarioSpec = toml::from_str("foot_mass = 3.0\n").unwrap();
+        assert_eq!(paper.build().unwrap().law_kind(), LawKind::PowerLaw);
+        let e = toml::from_str::<ScenarioSpec>("inflation_pressure = 7.0e4\n").unwrap().build().unwrap_err().to_string();
+        assert!(e.starts_with("`inflation_pressure` does not apply to law `power-law`"), "{e}");
+        let e = toml::from_str::<ScenarioSpec>("law = \"shell\"\ndamping = 10.0\n").unwrap().build().unwrap_err().to_string();
+        assert!(e.starts_with("`damping` does not apply to law `shell`"), "{e}");
+    }
 }
