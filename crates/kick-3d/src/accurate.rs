@@ -184,6 +184,8 @@ fn singular_exponent(law: &AnyLaw) -> Option<f64> {
         AnyLaw::PowerLaw(l) => l.exponent,
         AnyLaw::Hysteresis(h) => h.exponent,
         AnyLaw::KelvinVoigt(_) => 1.0,
+        // F = (2πR p0 + k_s) δ + O(δ²), smooth in δ.
+        AnyLaw::Shell(_) => 1.0,
     };
     (n.fract() != 0.0).then_some(n)
 }

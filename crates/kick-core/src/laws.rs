@@ -28,6 +28,7 @@
 
 use crate::error::KickError;
 use crate::law::{ContactLaw, PowerLawContact};
+use crate::shell::ShellBall;
 use serde::{Deserialize, Serialize};
 
 /// Which formula turned a target restitution into the hysteresis factor χ.
@@ -276,6 +277,9 @@ pub enum LawKind {
     /// k δⁿ (1 + χ δ̇) with χ from the exact restitution relation.
     HuntCrossleyExact,
     KelvinVoigt,
+    /// The pressurised ball ([`ShellBall`]), from the ball's measurable
+    /// quantities (inflation pressure, γ, shell stiffness and loss).
+    Shell,
 }
 
 impl LawKind {
@@ -287,8 +291,21 @@ impl LawKind {
         LawKind::HuntCrossleyExact,
         LawKind::KelvinVoigt,
     ];
+    /// Every law selectable by name: [`LawKind::ALL`] and the shell ball.
+    /// `ALL` is the family `kick laws` fits to one target restitution and
+    /// compares; the shell is not in it, being set by quantities measured on
+    /// a ball (its restitution is a prediction, not a target).
+    pub const SELECTABLE: [LawKind; 7] = [
+        LawKind::PowerLaw,
+        LawKind::HuntCrossley,
+        LawKind::LankaraniNikravesh,
+        LawKind::Flores,
+        LawKind::HuntCrossleyExact,
+        LawKind::KelvinVoigt,
+        LawKind::Shell,
+    ];
     pub const NAMES: &'static str =
-        "power-law, hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt";
+        "power-law, hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt, shell";
 
     pub fn name(self) -> &'static str {
         match self {
@@ -298,6 +315,7 @@ impl LawKind {
             LawKind::Flores => "flores",
             LawKind::HuntCrossleyExact => "hunt-crossley-exact",
             LawKind::KelvinVoigt => "kelvin-voigt",
+            LawKind::Shell => "shell",
         }
     }
 
@@ -314,6 +332,12 @@ impl LawKind {
                 reason: "the paper's law takes its damping from `damping` (Eq. 20); a target restitution sets the other laws' damping",
             }),
             LawKind::PowerLaw => Ok(()),
+            LawKind::Shell if damping || restitution => Err(KickError::DoesNotApply {
+                given: if damping { "damping" } else { "restitution" },
+                to,
+                reason: "the shell ball's loss is `shell_loss` (calibrated on the FIFA rebound test); its restitution is predicted, not a target",
+            }),
+            LawKind::Shell => Ok(()),
             _ if damping => Err(KickError::DoesNotApply {
                 given: "damping",
                 to,
@@ -324,7 +348,7 @@ impl LawKind {
     }
 
     pub fn from_name(name: &str) -> Result<LawKind, LawError> {
-        LawKind::ALL
+        LawKind::SELECTABLE
             .into_iter()
             .find(|k| k.name() == name)
             .ok_or_else(|| LawError::UnknownLaw { name: name.to_string(), expected: LawKind::NAMES })
@@ -344,6 +368,9 @@ pub struct LawParameters {
     pub impact_speed: f64,
     pub reduced_mass: f64,
     pub linear_stiffness: f64,
+    /// The ball of law `shell` (None: refused under that law).
+    #[serde(skip)]
+    pub shell: Option<ShellBall>,
 }
 
 /// Unknown law name or invalid law parameter.
@@ -363,6 +390,7 @@ pub enum AnyLaw {
     PowerLaw(PowerLawContact),
     Hysteresis(HysteresisContact),
     KelvinVoigt(KelvinVoigt),
+    Shell(ShellBall),
 }
 
 impl AnyLaw {
@@ -398,6 +426,9 @@ impl AnyLaw {
                 p.reduced_mass,
                 p.restitution,
             )?)),
+            LawKind::Shell => p.shell.map(AnyLaw::Shell).ok_or_else(|| {
+                KickError::InvalidParameter { name: "law", value: f64::NAN, requirement: "law `shell` needs the ball (ShellBall)" }.into()
+            }),
         }
     }
 
@@ -419,6 +450,14 @@ impl AnyLaw {
                 ("impact_speed", h.impact_speed),
             ],
             AnyLaw::KelvinVoigt(k) => vec![("stiffness", k.stiffness), ("damping", k.damping)],
+            AnyLaw::Shell(b) => vec![
+                ("inflation_pressure", b.pressure),
+                ("ball_radius", b.radius),
+                ("atmospheric_pressure", b.atmospheric_pressure),
+                ("gas_exponent", b.gas_exponent),
+                ("shell_stiffness", b.shell_stiffness),
+                ("shell_loss", b.shell_loss),
+            ],
         }
     }
 
@@ -432,6 +471,7 @@ impl AnyLaw {
                 HysteresisModel::Exact => LawKind::HuntCrossleyExact,
             },
             AnyLaw::KelvinVoigt(_) => LawKind::KelvinVoigt,
+            AnyLaw::Shell(_) => LawKind::Shell,
         }
     }
 }
@@ -452,6 +492,7 @@ macro_rules! dispatch {
             AnyLaw::PowerLaw($law) => $body,
             AnyLaw::Hysteresis($law) => $body,
             AnyLaw::KelvinVoigt($law) => $body,
+            AnyLaw::Shell($law) => $body,
         }
     };
 }
@@ -525,6 +566,7 @@ mod tests {
             impact_speed: 22.0,
             reduced_mass: 0.43 * 3.0 / 3.43,
             linear_stiffness: 1.0e5,
+            shell: None,
         };
         LawKind::ALL.iter().map(|&k| AnyLaw::new(k, &p).unwrap()).collect()
     }
@@ -565,10 +607,12 @@ mod tests {
 
     #[test]
     fn onset_force_jumps_only_for_viscous_dashpots() {
-        for law in laws() {
+        let shell = AnyLaw::Shell(ShellBall::default_with_radius(crate::DEFAULT_BALL_RADIUS).unwrap());
+        for law in laws().into_iter().chain([shell]) {
             let onset = law.onset_force(22.0);
             match law {
-                AnyLaw::Hysteresis(_) => assert_eq!(onset, 0.0),
+                // The loss multiplies an elastic force that is 0 at first touch.
+                AnyLaw::Hysteresis(_) | AnyLaw::Shell(_) => assert_eq!(onset, 0.0),
                 AnyLaw::PowerLaw(p) => assert_eq!(onset, p.damping * 22.0),
                 AnyLaw::KelvinVoigt(k) => assert_eq!(onset, k.damping * 22.0),
             }
@@ -653,11 +697,13 @@ mod tests {
             assert_eq!(any.onset_force(22.0), law.onset_force(22.0));
             assert_eq!(any.damps_compression_only(), law.damps_compression_only());
         }
-        for any in laws() {
+        let shell = AnyLaw::Shell(ShellBall::default_with_radius(crate::DEFAULT_BALL_RADIUS).unwrap());
+        for any in laws().into_iter().chain([shell]) {
             match any {
                 AnyLaw::PowerLaw(law) => same(&any, &law),
                 AnyLaw::Hysteresis(law) => same(&any, &law),
                 AnyLaw::KelvinVoigt(law) => same(&any, &law),
+                AnyLaw::Shell(law) => same(&any, &law),
             }
         }
         // The case that differed: compressing with δ̇ < 0 keeps the dashpot on.
@@ -679,6 +725,7 @@ mod tests {
             impact_speed: 1.0,
             reduced_mass: 1.0,
             linear_stiffness: 1.0,
+            shell: None,
         };
         assert!(AnyLaw::new(LawKind::HuntCrossley, &p).is_err());
         p.restitution = 0.5;

@@ -583,7 +583,7 @@ pub const GROUND_PLANE: ParameterDef = ParameterDef {
 };
 
 /// Every parameter of the 1D and 3D levels, each once, lower levels first.
-pub static PARAMETERS: [ParameterDef; 21] = [
+pub static PARAMETERS: [ParameterDef; 25] = [
     FOOT_MASS,
     BALL_MASS,
     FOOT_SPEED,
@@ -605,6 +605,11 @@ pub static PARAMETERS: [ParameterDef; 21] = [
     BORDER_RADIUS,
     GRAVITY_SWITCH,
     GROUND_PLANE,
+    // Law `shell`'s ball (kick-core's shell.rs), taken by 1D kicks under it.
+    crate::shell::INFLATION_PRESSURE,
+    crate::shell::GAS_EXPONENT,
+    crate::shell::SHELL_STIFFNESS,
+    crate::shell::SHELL_LOSS,
 ];
 
 /// The parameters of one level (not those it takes from lower levels).

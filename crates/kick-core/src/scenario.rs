@@ -4,6 +4,7 @@ use crate::error::KickError;
 use crate::law::PowerLawContact;
 use crate::laws::{AnyLaw, LawError, LawKind, LawParameters};
 use crate::parameters::{self, Level, ParameterDef, ParameterError, SetParameter, Value};
+use crate::shell::{self, ShellBall};
 use serde::{Deserialize, Serialize};
 
 /// See [`Scenario::contact_horizon`].
@@ -82,6 +83,16 @@ pub struct ScenarioSpec {
     pub law: Option<LawKind>,
     /// Target restitution of the other laws (they take their damping from it).
     pub restitution: Option<f64>,
+    /// The ball of law `shell` ([`ShellBall`]); each left out takes its
+    /// declared default, the radius is [`crate::DEFAULT_BALL_RADIUS`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inflation_pressure: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gas_exponent: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shell_stiffness: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shell_loss: Option<f64>,
 }
 
 impl ScenarioSpec {
@@ -137,7 +148,40 @@ impl ScenarioSpec {
     /// Refuse `damping` under a law that takes a restitution, and
     /// `restitution` under the paper's law ([`LawKind::check_given`]).
     pub fn check_given(&self) -> Result<(), KickError> {
-        self.law.unwrap_or(LawKind::PowerLaw).check_given(self.damping.is_some(), self.restitution.is_some())
+        let law = self.law.unwrap_or(LawKind::PowerLaw);
+        law.check_given(self.damping.is_some(), self.restitution.is_some())?;
+        if law != LawKind::Shell {
+            if let Some((name, _)) = self.ball_values().into_iter().find(|(_, v)| v.is_some()) {
+                return Err(KickError::DoesNotApply {
+                    given: name,
+                    to: format!("law `{}`", law.name()),
+                    reason: "it is a parameter of law shell (the pressurised ball)",
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The shell ball's parameters as given, by declared name.
+    fn ball_values(&self) -> [(&'static str, Option<f64>); 4] {
+        [
+            (shell::INFLATION_PRESSURE.name, self.inflation_pressure),
+            (shell::GAS_EXPONENT.name, self.gas_exponent),
+            (shell::SHELL_STIFFNESS.name, self.shell_stiffness),
+            (shell::SHELL_LOSS.name, self.shell_loss),
+        ]
+    }
+
+    /// The ball of law `shell`: given values, declared defaults for the rest.
+    pub fn shell_ball(&self) -> Result<ShellBall, KickError> {
+        let or = |v: Option<f64>, p: &ParameterDef| v.unwrap_or(p.default_number());
+        ShellBall::new(
+            or(self.inflation_pressure, &shell::INFLATION_PRESSURE),
+            crate::DEFAULT_BALL_RADIUS,
+            or(self.gas_exponent, &shell::GAS_EXPONENT),
+            or(self.shell_stiffness, &shell::SHELL_STIFFNESS),
+            or(self.shell_loss, &shell::SHELL_LOSS),
+        )
     }
 
     /// As [`ScenarioSpec::build`] without [`ScenarioSpec::check_given`]: for
@@ -150,18 +194,27 @@ impl ScenarioSpec {
         for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
             *slot = self.get(p).unwrap_or_else(|| base.get(p));
         }
-        Scenario::from_values(values)?.with_law(law, self.restitution)
+        let scenario = Scenario::from_values(values)?;
+        if law == LawKind::Shell {
+            return Ok(scenario.with_shell(self.shell_ball()?));
+        }
+        scenario.with_law(law, self.restitution)
     }
 }
 
 impl SetParameter for ScenarioSpec {
-    const LEVELS: &'static [Level] = &[Level::Scenario];
+    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Bounce];
 
     fn set_parameter(&mut self, parameter: &'static ParameterDef, value: Value) -> Result<(), ParameterError> {
         let x = parameters::number(parameter, value)?;
-        match Parameter::from_name(parameter.name) {
+        let name = parameter.name;
+        match Parameter::from_name(name) {
             Some(p) => self.set(p, x),
-            None if parameter.name == parameters::RESTITUTION.name => self.restitution = Some(x),
+            None if name == parameters::RESTITUTION.name => self.restitution = Some(x),
+            None if name == shell::INFLATION_PRESSURE.name => self.inflation_pressure = Some(x),
+            None if name == shell::GAS_EXPONENT.name => self.gas_exponent = Some(x),
+            None if name == shell::SHELL_STIFFNESS.name => self.shell_stiffness = Some(x),
+            None if name == shell::SHELL_LOSS.name => self.shell_loss = Some(x),
             None => return Err(parameters::unknown(Self::LEVELS, parameter.name)),
         }
         Ok(())
@@ -321,7 +374,17 @@ impl Scenario {
     pub fn with(&self, parameter: Parameter, value: f64) -> Result<Scenario, KickError> {
         let mut values = self.values();
         values[Parameter::ALL.iter().position(|&p| p == parameter).unwrap_or(0)] = value;
-        Scenario::from_values(values)?.with_law(self.law_kind(), self.restitution_target)
+        let scenario = Scenario::from_values(values)?;
+        match self.contact {
+            AnyLaw::Shell(ball) => Ok(scenario.with_shell(ball)),
+            _ => scenario.with_law(self.law_kind(), self.restitution_target),
+        }
+    }
+
+    /// A copy whose contact is the pressurised ball `ball` (law `shell`):
+    /// set by the ball's own quantities, with no target restitution.
+    pub fn with_shell(&self, ball: ShellBall) -> Scenario {
+        Scenario { contact: AnyLaw::Shell(ball), restitution_target: None, ..*self }
     }
 
     /// A copy with another contact law. The paper's law takes its damping
@@ -330,6 +393,14 @@ impl Scenario {
     pub fn with_law(&self, kind: LawKind, restitution: Option<f64>) -> Result<Scenario, KickError> {
         if kind == LawKind::PowerLaw {
             return Ok(Scenario { contact: AnyLaw::PowerLaw(self.paper_law()), restitution_target: None, ..*self });
+        }
+        if kind == LawKind::Shell {
+            // The ball in use, else the declared defaults ([`ScenarioSpec::shell_ball`]).
+            let ball = match self.contact {
+                AnyLaw::Shell(ball) => ball,
+                _ => ScenarioSpec::default().shell_ball()?,
+            };
+            return Ok(self.with_shell(ball));
         }
         let restitution = restitution.ok_or(KickError::InvalidParameter {
             name: "restitution",
@@ -347,6 +418,7 @@ impl Scenario {
             // Kelvin–Voigt's linear spring: the secant stiffness k δ*ⁿ⁻¹ at
             // the undamped maximum compression of this law.
             linear_stiffness: self.stiffness * self.elastic_max_compression().powf(self.exponent - 1.0),
+            shell: None,
         };
         let contact = AnyLaw::new(kind, &parameters).map_err(|e| match e {
             LawError::Invalid(error) => error,
@@ -383,6 +455,13 @@ impl Scenario {
         }
         spec.law = Some(self.law_kind());
         spec.restitution = self.restitution_target;
+        if let AnyLaw::Shell(b) = self.contact {
+            // Under the shell the damping and the law's own k, n are not used.
+            spec.inflation_pressure = Some(b.pressure);
+            spec.gas_exponent = Some(b.gas_exponent);
+            spec.shell_stiffness = Some(b.shell_stiffness);
+            spec.shell_loss = Some(b.shell_loss);
+        }
         spec
     }
 
@@ -509,5 +588,27 @@ mod tests {
         let flores = spec(Some(LawKind::Flores), None, Some(0.5)).build().unwrap();
         assert_eq!(flores.restitution_target(), Some(0.5));
         assert_eq!(flores.spec().build().unwrap(), flores);
+    }
+
+    /// TOML `law = "shell"` with the ball's keys builds the pressurised ball
+    /// they name (the rest at their declared defaults); its spec builds it
+    /// again, a changed parameter keeps the ball, and the ball's keys are
+    /// refused under another law, naming the key.
+    #[test]
+    fn law_shell_is_built_from_the_balls_keys() {
+        let spec: ScenarioSpec = toml::from_str("law = \"shell\"\ninflation_pressure = 7.0e4\nshell_loss = 0.03\n").unwrap();
+        let scenario = spec.build().unwrap();
+        let ball = ShellBall::new(7.0e4, crate::DEFAULT_BALL_RADIUS, 1.4, 0.0, 0.03).unwrap();
+        assert_eq!(scenario.contact_law(), AnyLaw::Shell(ball));
+        assert_eq!((scenario.law_kind(), scenario.restitution_target()), (LawKind::Shell, None));
+        assert_eq!(scenario.spec().build().unwrap(), scenario);
+        assert_eq!(scenario.with(Parameter::FootSpeed, 20.0).unwrap().contact_law(), AnyLaw::Shell(ball));
+        // The paper's law stays the default.
+        let paper: ScenarioSpec = toml::from_str("foot_mass = 3.0\n").unwrap();
+        assert_eq!(paper.build().unwrap().law_kind(), LawKind::PowerLaw);
+        let e = toml::from_str::<ScenarioSpec>("inflation_pressure = 7.0e4\n").unwrap().build().unwrap_err().to_string();
+        assert!(e.starts_with("`inflation_pressure` does not apply to law `power-law`"), "{e}");
+        let e = toml::from_str::<ScenarioSpec>("law = \"shell\"\ndamping = 10.0\n").unwrap().build().unwrap_err().to_string();
+        assert!(e.starts_with("`damping` does not apply to law `shell`"), "{e}");
     }
 }

@@ -17,6 +17,9 @@ CASES_1D = [
     {"solver": "accurate", "foot_speed": 30.0},
     {"law": "hunt-crossley", "restitution": 0.6},
     {"law": "kelvin-voigt", "restitution": 0.8, "solver": "reduced"},
+    # The pressurised ball by name, at its defaults and with a set pressure.
+    {"law": "shell"},
+    {"law": "shell", "inflation_pressure": 6.0e4, "shell_loss": 0.03, "solver": "accurate"},
 ]
 
 
@@ -58,6 +61,9 @@ ERRORS = [
     ("simulate", {"solver": "accurate", "dt": 1e-6}),
     ("simulate3d", {"solver": "accurate", "dt": 1e-6}),
     ("simulate3d", {"law": "hunt-crossley", "restitution": 0.5, "damping": 100.0}),
+    ("simulate", {"inflation_pressure": 7.0e4}),
+    ("simulate", {"law": "shell", "damping": 100.0}),
+    ("simulate", {"law": "shell", "restitution": 0.6}),
 ]
 
 
@@ -90,7 +96,7 @@ def test_unknown_names_list_the_valid_ones():
 
 
 def test_unknown_keywords_name_the_nearby_ones():
-    with pytest.raises(ValueError, match=r"unknown parameter `foot_mas` of the 1D scenario: did you mean `foot_mass`\?"):
+    with pytest.raises(ValueError, match=r"unknown parameter `foot_mas` of the 1D scenario or bounce: did you mean `foot_mass`\?"):
         kick.simulate(foot_mas=3.0)
     # A 3D parameter is not a keyword of the 1D function.
     with pytest.raises(ValueError, match="unknown parameter `offset` of the 1D scenario"):
@@ -105,9 +111,14 @@ def test_every_declared_keyword_is_accepted_with_its_default():
     """The keywords are exactly the CLI's flags; giving each its declared default changes nothing."""
     for function in ("simulate", "simulate3d"):
         base = getattr(kick, function)()
+        shell = getattr(kick, function)(law="shell") if function == "simulate" else None
         for p in kick.keywords(function):
             if p["default"] is not None:
-                same(getattr(kick, function)(**{p["name"]: p["default"]}), _plain(base))
+                # The shell ball's keywords apply under law="shell" only.
+                if p["level"] == "bounce":
+                    same(getattr(kick, function)(law="shell", **{p["name"]: p["default"]}), _plain(shell))
+                else:
+                    same(getattr(kick, function)(**{p["name"]: p["default"]}), _plain(base))
 
 
 def _plain(d):

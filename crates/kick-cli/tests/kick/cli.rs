@@ -234,3 +234,51 @@ fn a_ball_hitting_a_resting_foot_has_an_undefined_speed_ratio_and_every_other_ob
     let line = String::from_utf8_lossy(&text.stdout).lines().find(|l| l.starts_with("speed_ratio")).unwrap().to_string();
     assert!(line.contains("undefined"), "{line}");
 }
+
+/// `--law shell` is the pressurised ball (kick-core's ShellBall) from its
+/// declared defaults: the CLI's kick is `Accurate::solve_law` with that ball
+/// on Table 1's scenario, bit for bit; its restitution is the closed-form
+/// hysteresis relation at x0 = χ V0 (F = F_el (1 + χ δ̇) in the relative
+/// coordinate, whatever the elastic part); its flags are refused under the
+/// paper's law, and the paper's damping/restitution under it.
+#[test]
+fn simulate_takes_the_shell_ball_by_name() {
+    use kick_core::shell::SHELL_LOSS;
+    use kick_core::{Scenario, ShellBall, DEFAULT_BALL_RADIUS};
+    let out = kick(&["simulate", "--law", "shell", "--solver", "accurate", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(value["law"]["law"], "shell");
+    let ball = ShellBall::default_with_radius(DEFAULT_BALL_RADIUS).unwrap();
+    let expected = kick_compliant::Accurate::default().solve_law(&Scenario::BASELINE, ball).unwrap();
+    let got = |key: &str| value[key].as_f64().unwrap().to_bits();
+    assert_eq!(got("contact_time"), expected.contact_time.to_bits());
+    assert_eq!(got("v_ball_out"), expected.v_ball_out.to_bits());
+    assert_eq!(got("v_foot_out"), expected.v_foot_out.to_bits());
+    assert_eq!(got("peak_force"), expected.peak_force.to_bits());
+    assert_eq!(got("max_compression"), expected.max_compression.to_bits());
+    // Closed form: e solves x0 − ln(1 + x0) = −x_e − ln(1 − x_e), x_e = e x0.
+    let x0 = SHELL_LOSS.default_number() * 22.0;
+    let e = kick_core::laws::exact_restitution(x0);
+    let restitution = value["restitution"].as_f64().unwrap();
+    assert!((restitution / e - 1.0).abs() < 1e-9, "{restitution} vs {e}");
+    // The default (auto) path gives the same kick.
+    let auto = kick(&["simulate", "--law", "shell", "--format", "json"]);
+    let auto: serde_json::Value = serde_json::from_slice(&auto.stdout).unwrap();
+    let t = auto["contact_time"].as_f64().unwrap();
+    assert!((t / expected.contact_time - 1.0).abs() < 1e-9, "{t} vs {}", expected.contact_time);
+    // A set pressure reaches the ball: a softer ball stays on longer.
+    let soft = kick(&["simulate", "--law", "shell", "--inflation-pressure", "6e4", "--format", "json"]);
+    let soft: serde_json::Value = serde_json::from_slice(&soft.stdout).unwrap();
+    assert!(soft["contact_time"].as_f64().unwrap() > t);
+    for (args, needle) in [
+        (&["simulate", "--inflation-pressure", "7e4"][..], "inflation_pressure"),
+        (&["simulate", "--law", "flores", "--restitution", "0.6", "--shell-loss", "0.1"][..], "shell_loss"),
+        (&["simulate", "--law", "shell", "--damping", "100"][..], "damping"),
+        (&["simulate", "--law", "shell", "--restitution", "0.6"][..], "restitution"),
+    ] {
+        let out = kick(args);
+        assert!(!out.status.success(), "{args:?}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains(needle), "{args:?}");
+    }
+}

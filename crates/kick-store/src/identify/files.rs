@@ -80,6 +80,8 @@ fn law_values(parameters: &AnyLaw, outcome: &kick_core::Outcome, approach_speed:
         AnyLaw::PowerLaw(_) => {}
         AnyLaw::KelvinVoigt(k) => values.extend([k.stiffness, k.damping]),
         AnyLaw::Hysteresis(h) => values.push(h.hysteresis),
+        // Not in LawKind::ALL, so never among the compared laws' rows.
+        AnyLaw::Shell(_) => {}
     }
     values
 }
