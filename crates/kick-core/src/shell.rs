@@ -74,7 +74,7 @@ const fn ball(
 /// p0 = 0.8 bar, the FIFA Quality Programme's test pressure; sampled over
 /// Law 2's 0.6–1.1 atm.
 pub const INFLATION_PRESSURE: ParameterDef = ball(
-    "inflation_pressure", "p0", "Pa", 8.0e4, Valid { low: Bound::Open(0.0), high: Bound::Unbounded, requirement: "finite and > 0 (gauge, Pa)" },
+    "inflation_pressure", "p0", "Pa", 8.0e4, Valid { low: Bound::Closed(1.0e3), high: Bound::Closed(1.0e7), requirement: "in [1e3, 1e7] Pa gauge (0.01-100 bar: a ball neither flat nor burst)" },
     Some(SampleRange { spacing: Spacing::Linear, from: 0.6 * SEA_LEVEL_PRESSURE, to: 1.1 * SEA_LEVEL_PRESSURE, zero_probability: 0.0 }),
     "Gauge inflation pressure of the shell ball (Law 2: 0.6-1.1 atm; FIFA tests at 0.8 bar)",
 );
@@ -87,7 +87,7 @@ pub const GAS_EXPONENT: ParameterDef = ball(
 /// k_s: not identified from a checked measurement (kick-bounce SOURCES.md);
 /// 0 leaves the pressure alone to carry the ball.
 pub const SHELL_STIFFNESS: ParameterDef = ball(
-    "shell_stiffness", "k_s", "N/m", 0.0, Valid { low: Bound::Closed(0.0), high: Bound::Unbounded, requirement: "finite and >= 0" },
+    "shell_stiffness", "k_s", "N/m", 0.0, Valid { low: Bound::Closed(0.0), high: Bound::Closed(1.0e8), requirement: "in [0, 1e8] N/m (a shell, not a rigid sphere)" },
     None,
     "Linear stiffness of the shell itself (bending), beside the gas",
 );
@@ -95,7 +95,7 @@ pub const SHELL_STIFFNESS: ParameterDef = ball(
 /// e = √(1.40/2) (the middle of 115–165 cm from 2 m) and V0 = √(2 g 2 m);
 /// `shell_loss_is_the_fifa_rebound` recomputes it.
 pub const SHELL_LOSS: ParameterDef = ball(
-    "shell_loss", "χ", "s/m", 0.046_600_777, Valid { low: Bound::Closed(0.0), high: Bound::Unbounded, requirement: "finite and >= 0" },
+    "shell_loss", "χ", "s/m", 0.046_600_777, Valid { low: Bound::Closed(0.0), high: Bound::Closed(1.0), requirement: "in [0, 1] s/m (20x the FIFA-calibrated loss)" },
     None,
     "Hysteretic loss of the shell, F = F_elastic (1 + χ δ̇) (calibrated on the FIFA rebound test)",
 );

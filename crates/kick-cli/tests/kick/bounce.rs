@@ -71,3 +71,23 @@ fn bounce_takes_the_kick_family_laws() {
     let e = j["restitution"].as_f64().unwrap();
     assert!((e - 0.64).abs() < 0.01, "{e}");
 }
+
+/// Values far outside a ball are refused by name before any solve: before
+/// their bounds, 1e300 ended in "integration failed … step size underflow"
+/// or in an error naming the foot (the bounce's ball plays the 1D foot).
+#[test]
+fn values_beyond_a_ball_are_refused_by_name() {
+    for (args, name) in [
+        (&["bounce", "--speed", "1e300"][..], "`speed`"),
+        (&["bounce", "--speed", "5", "--shell-loss", "1e300"][..], "`shell_loss`"),
+        (&["bounce", "--speed", "5", "--inflation-pressure", "1e-300"][..], "`inflation_pressure`"),
+        (&["simulate", "--law", "shell", "--shell-stiffness", "1e300"][..], "`shell_stiffness`"),
+        (&["simulate", "--law", "shell", "--shell-loss", "1e300"][..], "`shell_loss`"),
+        (&["simulate", "--law", "shell", "--inflation-pressure", "1e300"][..], "`inflation_pressure`"),
+    ] {
+        let out = kick(args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(name) && !err.contains("integration failed"), "{args:?}: {err}");
+    }
+}
