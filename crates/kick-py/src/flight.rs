@@ -7,6 +7,14 @@ use kick_flight::spec::{FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+/// The flight parameter a keyword names, or a ValueError naming the nearby ones.
+fn flight_parameter(name: &str) -> PyResult<FlightParameter> {
+    FlightParameter::from_name(name).map_err(|_| {
+        let valid: Vec<&str> = FLIGHT_PARAMETERS.iter().map(|p| p.name).collect();
+        value_error(format!("unknown flight parameter `{name}`{}", parameters::did_you_mean(&parameters::nearby(name, &valid), &valid)))
+    })
+}
+
 #[pyfunction]
 #[pyo3(signature = (**params))]
 pub fn flight<'py>(py: Python<'py>, params: Option<&Bound<'py, PyDict>>) -> PyResult<Bound<'py, PyAny>> {
@@ -15,13 +23,7 @@ pub fn flight<'py>(py: Python<'py>, params: Option<&Bound<'py, PyDict>>) -> PyRe
         if let Some(params) = params {
             for (key, value) in params.iter() {
                 let name: String = key.extract()?;
-                let parameter = FlightParameter::from_name(&name).map_err(|_| {
-                    let valid: Vec<&str> = FLIGHT_PARAMETERS.iter().map(|p| p.name).collect();
-                    value_error(format!(
-                        "unknown flight parameter `{name}`{}",
-                        parameters::did_you_mean(&parameters::nearby(&name, &valid), &valid)
-                    ))
-                })?;
+                let parameter = flight_parameter(&name)?;
                 if value.is_none() {
                     continue;
                 }
@@ -54,13 +56,7 @@ pub fn flight_many<'py>(
         if let Some(arrays) = arrays {
             for (key, value) in arrays.iter() {
                 let name: String = key.extract()?;
-                let parameter = FlightParameter::from_name(&name).map_err(|_| {
-                    let valid: Vec<&str> = FLIGHT_PARAMETERS.iter().map(|p| p.name).collect();
-                    value_error(format!(
-                        "unknown flight parameter `{name}`{}",
-                        parameters::did_you_mean(&parameters::nearby(&name, &valid), &valid)
-                    ))
-                })?;
+                let parameter = flight_parameter(&name)?;
                 if !value.is_none() {
                     given.push((parameter, numpy.getattr("asarray")?.call1((value, &float64))?));
                 }
