@@ -57,7 +57,7 @@ pub mod validation;
 pub use air::Air;
 pub use many::{flight_many, Column};
 pub use coefficients::{DragModel, LiftModel};
-pub use solve::{history, solve, Aerodynamics, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling};
+pub use solve::{history, outcome_columns, solve, Aerodynamics, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling, OUTCOME_COLUMNS};
 pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 
 use kick_core::short;

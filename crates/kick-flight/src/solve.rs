@@ -54,6 +54,71 @@ pub struct FlightOutcome {
     pub evaluations: u64,
 }
 
+/// Outcome columns of a flight in a result table (name, unit), the flight's
+/// own: the landing and apex, then, when a crossing plane is given, `crossed`
+/// (1 when the ball reaches x = d before landing, 0 when it lands first; the
+/// crossing columns are then NaN) and the crossing's time, height, lateral
+/// position and velocity. Vectors as `_x`, `_y`, `_z`, as every result table.
+pub const OUTCOME_COLUMNS: [(&str, &str); 18] = [
+    ("flight_time", "s"),
+    ("landing_point_x", "m"),
+    ("landing_point_y", "m"),
+    ("apex_height", "m"),
+    ("apex_time", "s"),
+    ("landing_velocity_x", "m/s"),
+    ("landing_velocity_y", "m/s"),
+    ("landing_velocity_z", "m/s"),
+    ("landing_spin_x", "rad/s"),
+    ("landing_spin_y", "rad/s"),
+    ("landing_spin_z", "rad/s"),
+    ("crossed", "1"),
+    ("crossing_time", "s"),
+    ("crossing_height", "m"),
+    ("crossing_lateral_offset", "m"),
+    ("crossing_velocity_x", "m/s"),
+    ("crossing_velocity_y", "m/s"),
+    ("crossing_velocity_z", "m/s"),
+];
+
+/// The columns of [`OUTCOME_COLUMNS`] a flight has: all with a crossing plane,
+/// the landing and apex only without.
+pub fn outcome_columns(crossing: bool) -> &'static [(&'static str, &'static str)] {
+    if crossing {
+        &OUTCOME_COLUMNS
+    } else {
+        &OUTCOME_COLUMNS[..11]
+    }
+}
+
+impl FlightOutcome {
+    /// The values of [`OUTCOME_COLUMNS`], in order; a flight without a
+    /// crossing has `crossed` 0 and NaN crossing columns.
+    pub fn values(&self) -> [f64; OUTCOME_COLUMNS.len()] {
+        let c = self.crossing;
+        let crossing = |f: fn(&Crossing) -> f64| c.as_ref().map_or(f64::NAN, f);
+        [
+            self.flight_time,
+            self.landing_point[0],
+            self.landing_point[1],
+            self.apex_height,
+            self.apex_time,
+            self.landing_velocity[0],
+            self.landing_velocity[1],
+            self.landing_velocity[2],
+            self.landing_spin[0],
+            self.landing_spin[1],
+            self.landing_spin[2],
+            if c.is_some() { 1.0 } else { 0.0 },
+            crossing(|c| c.time),
+            crossing(|c| c.height),
+            crossing(|c| c.lateral_offset),
+            crossing(|c| c.velocity[0]),
+            crossing(|c| c.velocity[1]),
+            crossing(|c| c.velocity[2]),
+        ]
+    }
+}
+
 /// The air's numbers at one state of the ball.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Aerodynamics {

@@ -18,16 +18,17 @@
 //! fastest; `/grid`, `grid_shape`); outcome sets `launch` (the rotated
 //! launch: [`LAUNCH_COLUMNS`]), `goal` (the flight with its crossing of
 //! x = [`GOAL_DISTANCE`]) and `wall` (crossing x = [`WALL_DISTANCE`]), both
-//! [`crate::flight::flight_columns`]; root attribute `vertical_offset` (m);
+//! [`kick_flight::OUTCOME_COLUMNS`]; root attribute `vertical_offset` (m);
 //! the trajectories of [`TRAJECTORY_OFFSETS`] × [`TRAJECTORY_FRICTIONS`] as
 //! `solvers/goal/histories/<row>` ([`TRAJECTORY_COLUMNS`], uniform in time).
 
 use crate::figures::{color, save_grid, FigureError, Panel, Series};
-use crate::flight::{flight_columns, flight_values};
-use crate::h5::{write_grid, write_str_attr, Column, H5Error, OutcomeSet, Setting, SweepData, SweepWriter};
+use crate::h5::{write_grid, write_str_attr, Column, H5Error, SweepData};
+use crate::run::{create_table, fill_table};
+use kick_study::level::Level;
 use crate::provenance::Provenance;
 use kick_3d::Kick3d;
-use kick_flight::{history, solve, FlightOutcome, Sampling};
+use kick_flight::{history, Sampling};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::path::{Path, PathBuf};
 
@@ -70,41 +71,18 @@ pub fn write(out: &Path) -> Result<PathBuf, String> {
          the centre, Table 1 foot, horizontal path; flights to x = {GOAL_DISTANCE} m and {WALL_DISTANCE} m"
     );
     let provenance = Provenance::now("free_kick", "kick_paper::free_kick", &text);
-    let flight_set = |name: &str, distance: f64| OutcomeSet {
-        solver: name.into(),
-        settings: vec![("distance".into(), Setting::Number(distance))],
-        columns: columns(&flight_columns(true)),
-    };
-    let sets = [
-        OutcomeSet { solver: "launch".into(), settings: vec![("vertical_offset".into(), Setting::Number(VERTICAL_OFFSET))], columns: columns(&LAUNCH_COLUMNS) },
-        flight_set("goal", GOAL_DISTANCE),
-        flight_set("wall", WALL_DISTANCE),
-    ];
-    let parameters = [Column::new("lateral_offset", "m"), Column::new("friction", "1")];
     let rows = grid();
-    let mut writer = SweepWriter::create(&path, &provenance, &parameters, &sets, rows.len() as u64).map_err(|e| e.to_string())?;
+    let mut writer = create_table(&FreeKicks, &path, &provenance, rows.len() as u64, Default::default()).map_err(|e| e.to_string())?;
     let file = writer.file().clone();
     let h5 = |e: H5Error| e.to_string();
+    let parameters = FreeKicks.parameter_columns();
     write_str_attr(&file, &path, "description", "Free kicks: the 3D kick (contact below and beside the centre) chained into the flight").map_err(h5)?;
     write_grid(&file, &path, &[(parameters[0].clone(), &LATERAL_OFFSETS[..]), (parameters[1].clone(), &FRICTIONS[..])]).map_err(h5)?;
+    fill_table(&FreeKicks, 0..rows.len() as u64, &mut writer, &indicatif::ProgressBar::hidden()).map_err(h5)?;
     for (row, &(e, mu)) in rows.iter().enumerate() {
-        writer.push_parameters(&[e, mu]).map_err(h5)?;
-        let kick = FreeKick::new(e, mu);
-        match &kick {
-            Ok(k) => writer.push_outcome(0, Ok(&k.launch_values())).map_err(h5)?,
-            Err(m) => writer.push_outcome(0, Err(m)).map_err(h5)?,
-        }
-        for (set, distance) in [(1, GOAL_DISTANCE), (2, WALL_DISTANCE)] {
-            let flown: Result<FlightOutcome, String> =
-                kick.as_ref().map_err(Clone::clone).and_then(|k| k.flight(distance)).and_then(|f| solve(&f).map_err(crate::flight::flight_error));
-            match flown {
-                Ok(o) => writer.push_outcome(set, Ok(&flight_values(&o, true))).map_err(h5)?,
-                Err(m) => writer.push_outcome(set, Err(&m)).map_err(h5)?,
-            }
-        }
         let keep = TRAJECTORY_OFFSETS.contains(&e) && TRAJECTORY_FRICTIONS.iter().any(|m| m.to_bits() == mu.to_bits());
-        if let (true, Ok(k)) = (keep, &kick) {
-            let f = k.flight(GOAL_DISTANCE)?;
+        if keep {
+            let f = FreeKick::new(e, mu)?.flight(GOAL_DISTANCE)?;
             let h = history(&f, Sampling::Samples(TRAJECTORY_SAMPLES)).map_err(crate::flight::flight_error)?;
             let values: Vec<Vec<f64>> = vec![
                 h.samples.iter().map(|s| s.time).collect(),

@@ -316,7 +316,7 @@ fn write_sweeps(
                     .and_then(|m| Ok([m.effective_mass, exit_outcome(m.effective_mass, base)?.v_ball_out]));
                 match row {
                     Ok(values) => writer.push_outcome(i, Ok(&values)),
-                    Err(e) => writer.push_outcome(i, Err(&e.to_string())),
+                    Err(e) => writer.push_outcome(i, Err((e.status(), &e.to_string()))),
                 }
                 .map_err(|e| e.to_string())?;
             }
@@ -340,7 +340,7 @@ fn write_sweeps(
         let bound = kick_restitution::speed_ratio_ball_at_rest(1.0, m, base.ball_mass()) * base.foot_speed();
         match exit_outcome(m, base) {
             Ok(o) => writer.push_outcome(0, Ok(&[o.v_ball_out, o.speed_ratio.unwrap_or(f64::NAN), bound])),
-            Err(e) => writer.push_outcome(0, Err(&e.to_string())),
+            Err(e) => writer.push_outcome(0, Err((e.status(), &e.to_string()))),
         }
         .map_err(|e| e.to_string())?;
     }

@@ -12,8 +12,9 @@
 //!                        git_dirty, experiment, experiment_file, experiment_text,
 //!                        solver, solver_settings, ...), layout_version, rows
 //! /parameters/<name>     f64[rows], attribute units
-//! /outcomes/<name>       f64[rows] of the first solver (NaN where status = 1)
-//! /outcomes/status       u8[rows]: 0 solved, 1 failed
+//! /outcomes/<name>       f64[rows] of the first solver (NaN where status != 0)
+//! /outcomes/status       u8[rows]: kick_core::Status codes (0 separated, 1 numerical
+//!                        failure, 2 trapped, 3 refused)
 //! /failures/index        u64[f]: rows that failed
 //! /failures/message      string[f]: their error messages
 //! /histories/<row>/<name>  time histories of that row (when recorded)
@@ -44,6 +45,7 @@
 use crate::output::{OutputError, Staged};
 use crate::provenance::Provenance;
 use hdf5::types::VarLenUnicode;
+use kick_core::Status;
 use hdf5::{Dataset, File, Group};
 use std::path::{Path, PathBuf};
 
@@ -297,6 +299,8 @@ struct SetWriter {
     failures: Vec<(u64, VarLenUnicode)>,
     failures_written: usize,
     failure_count: u64,
+    /// Rows per status code.
+    counts: [u64; 4],
 }
 
 /// Turn HDF5's file locking off for this process, before the library reads
@@ -337,6 +341,26 @@ pub fn write_printed_table2(file: &File, path: &Path, names: &[String]) -> Resul
         write_column(&group, path, &Column::new(name, unit), &values)?;
     }
     Ok(())
+}
+
+/// The `meaning` attribute of every status dataset: each [`Status`] code and its name.
+pub fn status_meaning() -> String {
+    Status::ALL.map(|s| format!("{}: {}", s.code(), s.name())).join("; ")
+}
+
+impl kick_study::level::RowSink for SweepWriter {
+    type Error = H5Error;
+    /// The row's parameters, then each set's values or failure.
+    fn push_row(&mut self, row: &kick_study::level::Row) -> Result<(), H5Error> {
+        self.push_parameters(&row.parameters)?;
+        for (set, values) in row.outcomes.iter().enumerate() {
+            match &row.failures[set] {
+                None => self.push_outcome(set, Ok(values))?,
+                Some(f) => self.push_outcome(set, Err((f.status, &f.message)))?,
+            }
+        }
+        Ok(())
+    }
 }
 
 /// Streams a sweep into a new result file.
@@ -423,7 +447,7 @@ impl SweepWriter {
                 .map(|c| column(&outcomes, c))
                 .collect::<Result<Vec<_>, _>>()?;
             let status = extendable_with::<u8>(&outcomes, "status", "1", chunk, compression, path)?;
-            write_str_attr(&status, path, "meaning", "0: solved; 1: failed, outcomes NaN, message in failures/")?;
+            write_str_attr(&status, path, "meaning", &status_meaning())?;
             let failures = new_group(&base, "failures").map_err(h5err(path))?;
             let failure_index = extendable_with::<u64>(&failures, "index", "1", failure_chunk, compression, path)?;
             let failure_message = extendable_with::<VarLenUnicode>(&failures, "message", "", failure_chunk, compression, path)?;
@@ -438,6 +462,7 @@ impl SweepWriter {
                 failures: Vec::new(),
                 failures_written: 0,
                 failure_count: 0,
+                counts: [0; 4],
             });
         }
         Ok(SweepWriter {
@@ -480,8 +505,9 @@ impl SweepWriter {
     }
 
     /// The current row's outcome in set `set`: its values, or the error message
-    /// of a failed solve (stored as NaN values, status 1 and the message).
-    pub fn push_outcome(&mut self, set: usize, outcome: Result<&[f64], &str>) -> Result<(), H5Error> {
+    /// of a failed solve with its status (stored as NaN values, the status
+    /// code and the message).
+    pub fn push_outcome(&mut self, set: usize, outcome: Result<&[f64], (Status, &str)>) -> Result<(), H5Error> {
         let row = self.rows();
         // Split borrows: the path only for messages, no copy per row.
         let (path, sets) = (&self.path, &mut self.sets);
@@ -502,17 +528,24 @@ impl SweepWriter {
                     buffer.push(v);
                 }
                 writer.status_buffer.push(0);
+                writer.counts[0] += 1;
             }
-            Err(message) => {
+            Err((status, message)) => {
                 for buffer in writer.buffer.iter_mut() {
                     buffer.push(f64::NAN);
                 }
-                writer.status_buffer.push(1);
+                writer.status_buffer.push(status.code());
+                writer.counts[usize::from(status.code()).min(3)] += 1;
                 writer.failures.push(((row - 1) as u64, varlen(path, message)?));
                 writer.failure_count += 1;
             }
         }
         Ok(())
+    }
+
+    /// Rows so far of set `set` per status code (`kick_core::Status`).
+    pub fn status_counts(&self, set: usize) -> [u64; 4] {
+        self.sets.get(set).map_or([0; 4], |s| s.counts)
     }
 
     /// Failed rows so far in each set.

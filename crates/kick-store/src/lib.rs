@@ -26,7 +26,7 @@ pub mod identify {
 }
 
 // kick-study's modules under the names this crate's files use.
-pub(crate) use kick_study::{experiment, flight, limits, printable, sample};
+pub(crate) use kick_study::{experiment, limits, printable, sample};
 pub(crate) use kick_study::{Experiment, Output, Printable, Scenarios};
 
 pub use h5::{Column, OutcomeSet, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};

@@ -2,12 +2,11 @@
 //! over [`crate::h5::SweepWriter`].
 
 use crate::experiment::{Experiment, Output, Scenarios};
-use crate::h5::{Column, H5Error, OutcomeSet, Setting, SweepWriter, CHUNK_ROWS};
+use crate::h5::{Column, Compression, H5Error, SweepWriter, CHUNK_ROWS};
 use crate::provenance::Provenance;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use kick_compliant::SolverChoice;
-use kick_core::{KickError, Outcome, Parameter, RecordingSolver, Scenario, Solver, Spacing, HISTORY_COLUMNS, OBSERVABLES};
-use rayon::prelude::*;
+use kick_core::{KickError, Outcome, RecordingSolver, Spacing, HISTORY_COLUMNS};
+use kick_study::level::{run_rows, Level, RowSink};
 use std::io::IsTerminal;
 use std::ops::ControlFlow;
 use std::ops::Range;
@@ -35,29 +34,7 @@ pub struct RunSummary {
     pub failures: Vec<(String, u64)>,
 }
 
-/// Parameter columns of the 1D model: the eight [`Parameter`]s, and the
-/// target restitution when the law takes one (names and units as declared).
-pub fn parameter_columns(with_restitution: bool) -> Vec<Column> {
-    let mut columns: Vec<Column> = Parameter::ALL.iter().map(|p| Column::new(p.name(), p.unit())).collect();
-    if with_restitution {
-        let e = &kick_core::parameters::RESTITUTION;
-        columns.push(Column::new(e.name, e.unit));
-    }
-    columns
-}
-
-/// Outcome columns of the 1D model: [`OBSERVABLES`].
-pub fn outcome_columns() -> Vec<Column> {
-    OBSERVABLES.iter().map(|(n, u)| Column::new(n, u)).collect()
-}
-
-/// The outcome-set description of a solver: its name, its settings and the
-/// scenarios' contact law (`law`; the target restitution is a parameter column).
-pub fn outcome_set(solver: &SolverChoice, law: kick_core::LawKind) -> OutcomeSet {
-    let mut settings = Setting::numbers(solver.settings());
-    settings.push(("law".into(), Setting::Text(law.name().into())));
-    OutcomeSet { solver: solver.name().to_string(), settings, columns: outcome_columns() }
-}
+pub use kick_study::level::one_d::{outcome_columns, outcome_set, parameter_columns};
 
 /// A progress bar on a terminal, nothing otherwise.
 pub(crate) fn progress(total: u64, show: bool) -> ProgressBar {
@@ -70,114 +47,6 @@ pub(crate) fn progress(total: u64, show: bool) -> ProgressBar {
     } else {
         ProgressBar::hidden()
     }
-}
-
-/// Solve one scenario with one solver; summary only, no allocation unless it fails.
-fn solve(solver: &SolverChoice, scenario: &Result<Scenario, KickError>) -> Result<Outcome, KickError> {
-    scenario.clone().and_then(|s| solver.solve(&s))
-}
-
-/// One chunk of rows of a summary run: its scenarios and every solver's results.
-struct Chunk {
-    start: u64,
-    end: u64,
-    scenarios: Vec<Result<Scenario, KickError>>,
-    outcomes: Vec<Vec<Result<Outcome, KickError>>>,
-    /// Per solver, the flights after its kicks (experiments with `[flight]`).
-    flights: Vec<Vec<Result<Vec<f64>, String>>>,
-}
-
-impl Chunk {
-    fn new(solvers: usize) -> Chunk {
-        Chunk {
-            start: 0,
-            end: 0,
-            scenarios: Vec::with_capacity(CHUNK_ROWS),
-            outcomes: vec![Vec::with_capacity(CHUNK_ROWS); solvers],
-            flights: vec![Vec::new(); solvers],
-        }
-    }
-
-    /// Make and solve rows start..end in parallel.
-    fn solve(&mut self, experiment: &Experiment, start: u64, end: u64) {
-        (self.start, self.end) = (start, end);
-        // Scenario i is a pure function of i (sampled sweeps included).
-        (0..(end - start) as usize)
-            .into_par_iter()
-            .map(|j| experiment.scenarios.scenario(start + j as u64))
-            .collect_into_vec(&mut self.scenarios);
-        for (k, solver) in experiment.solvers.iter().enumerate() {
-            self.scenarios.par_iter().map(|s| solve(solver, s)).collect_into_vec(&mut self.outcomes[k]);
-            if let Some(rest) = &experiment.flight {
-                self.scenarios
-                    .par_iter()
-                    .zip(&self.outcomes[k])
-                    .map(|(s, o)| fly_1d(rest, s, o))
-                    .collect_into_vec(&mut self.flights[k]);
-            }
-        }
-    }
-
-    /// Append the chunk's rows to the file, in order; nothing when empty.
-    fn write(&self, experiment: &Experiment, writer: &mut SweepWriter) -> Result<(), RunError> {
-        if self.start == self.end {
-            return Ok(());
-        }
-        for (j, scenario) in self.scenarios.iter().enumerate() {
-            push_row(writer, experiment, scenario, self.outcomes.iter().map(|o| &o[j]))?;
-            if experiment.flight.is_some() {
-                push_flights(writer, experiment, self.flights.iter().map(|f| &f[j]))?;
-            }
-        }
-        Ok(())
-    }
-}
-
-/// One row of the table: the scenario's parameters and each set's outcome.
-fn push_row<'a>(
-    writer: &mut SweepWriter,
-    experiment: &Experiment,
-    scenario: &Result<Scenario, KickError>,
-    outcomes: impl Iterator<Item = &'a Result<Outcome, KickError>>,
-) -> Result<(), RunError> {
-    let mut values = [f64::NAN; 9];
-    if let Ok(s) = scenario {
-        values[..8].copy_from_slice(&s.values());
-        values[8] = s.restitution_target().unwrap_or(f64::NAN);
-    }
-    writer.push_parameters(&values[..if experiment.scenarios.has_restitution() { 9 } else { 8 }])?;
-    for (k, result) in outcomes.enumerate() {
-        match result {
-            Ok(o) => writer.push_outcome(k, Ok(&o.observable_values()))?,
-            Err(e) => writer.push_outcome(k, Err(&e.to_string()))?,
-        }
-    }
-    Ok(())
-}
-
-/// The flight after one 1D kick, in [`crate::flight::flight_columns`] order.
-fn fly_1d(rest: &kick_flight::FlightSpec, scenario: &Result<Scenario, KickError>, outcome: &Result<Outcome, KickError>) -> Result<Vec<f64>, String> {
-    match (scenario, outcome) {
-        (Ok(s), Ok(o)) => crate::flight::after_1d(s, o, rest)
-            .map(|run| crate::flight::flight_values(&run.outcome, rest.distance.is_some())),
-        (Err(e), _) | (_, Err(e)) => Err(format!("no flight: the kick failed: {e}")),
-    }
-}
-
-/// The row's flight outcomes, one set per solver after the kick sets.
-fn push_flights<'a>(
-    writer: &mut SweepWriter,
-    experiment: &Experiment,
-    flights: impl Iterator<Item = &'a Result<Vec<f64>, String>>,
-) -> Result<(), RunError> {
-    let first = experiment.solvers.len();
-    for (k, flight) in flights.enumerate() {
-        match flight {
-            Ok(values) => writer.push_outcome(first + k, Ok(values))?,
-            Err(e) => writer.push_outcome(first + k, Err(e))?,
-        }
-    }
-    Ok(())
 }
 
 /// Samples per streamed block of a history, and per HDF5 chunk of a long one.
@@ -283,6 +152,7 @@ fn receive_histories(
         columns.iter().cloned().zip(values.iter().map(Vec::as_slice)).collect()
     }
     let mut outcomes: Vec<Result<Outcome, KickError>> = Vec::with_capacity(solvers);
+    let mut table_row = experiment.empty_row();
     for (row, receiver) in receivers.into_iter().enumerate() {
         outcomes.clear();
         let mut streamed = vec![false; solvers];
@@ -305,11 +175,8 @@ fn receive_histories(
             }
         }
         let scenario = experiment.scenarios.scenario(first + row as u64);
-        push_row(writer, experiment, &scenario, outcomes.iter())?;
-        if let Some(rest) = &experiment.flight {
-            let flights: Vec<_> = outcomes.iter().map(|o| fly_1d(rest, &scenario, o)).collect();
-            push_flights(writer, experiment, flights.iter())?;
-        }
+        experiment.fill_row(&scenario, &outcomes, &mut table_row);
+        writer.push_row(&table_row)?;
         bar.inc(1);
     }
     Ok(())
@@ -356,23 +223,7 @@ pub fn run_part(
         eprintln!("{}: {} -> {}", experiment.name, size.describe(), path.display());
     }
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
-    // One law for every scenario of an experiment (the file's `law`).
-    let law = experiment.scenarios.scenario(0).map_or(kick_core::LawKind::PowerLaw, |s| s.law_kind());
-    let mut sets: Vec<OutcomeSet> = experiment.solvers.iter().map(|s| outcome_set(s, law)).collect();
-    if let Some(rest) = &experiment.flight {
-        let flown = kick_flight::FlightSpec { speed: Some(1.0), ..*rest }.build().ok();
-        let flight_sets: Vec<OutcomeSet> =
-            experiment.solvers.iter().map(|s| crate::flight::flight_set(s.name(), rest, flown.as_ref())).collect();
-        sets.extend(flight_sets);
-    }
-    let mut writer = SweepWriter::create_with(
-        &path,
-        &provenance,
-        &parameter_columns(experiment.scenarios.has_restitution()),
-        &sets,
-        part.rows.end - part.rows.start,
-        experiment.compress,
-    )?;
+    let mut writer = create_table(experiment, &path, &provenance, part.rows.end - part.rows.start, experiment.compress)?;
     crate::h5::write_str_attr(writer.file(), &path, "description", &experiment.description)?;
     if let Some(names) = experiment.scenarios.names() {
         let names = &names[part.rows.start as usize..part.rows.end as usize];
@@ -392,41 +243,38 @@ pub fn run_part(
         crate::h5::write_f64_attr(writer.file(), &path, "history_interval", interval)?;
     }
 
-    let total = part.rows.end;
     let bar = progress(part.rows.end - part.rows.start, show_progress);
     bar.set_message(experiment.name.clone());
-    if let Output::History { interval } = experiment.output {
-        write_histories(experiment, &part.rows, &mut writer, interval, &bar)?;
-        return finish(experiment, writer, &bar);
+    match experiment.output {
+        Output::History { interval } => write_histories(experiment, &part.rows, &mut writer, interval, &bar)?,
+        Output::Summary => fill_table(experiment, part.rows.clone(), &mut writer, &bar)?,
     }
-    // Two chunks in flight: while one is written (HDF5 is serial), the next is
-    // solved on the rest of the pool. Their buffers are swapped, not reallocated.
-    let mut solving = Chunk::new(experiment.solvers.len());
-    let mut writing = Chunk::new(experiment.solvers.len());
-    let mut start = part.rows.start;
-    while start < total || writing.start < writing.end {
-        let end = (start + CHUNK_ROWS as u64).min(total);
-        let (written, ()) = rayon::join(
-            || writing.write(experiment, &mut writer),
-            || solving.solve(experiment, start, end),
-        );
-        written?;
-        bar.inc(writing.end - writing.start);
-        std::mem::swap(&mut solving, &mut writing);
-        solving.start = end;
-        solving.end = end;
-        start = end;
-    }
-    finish(experiment, writer, &bar)
+    finish_table(experiment, writer, &bar)
 }
 
-fn finish(experiment: &Experiment, writer: SweepWriter, bar: &ProgressBar) -> Result<RunSummary, RunError> {
+/// A new sweep table at `path` shaped as `level`'s rows: its parameter
+/// columns and outcome sets ([`SweepWriter`], chunks sized for `rows`).
+pub fn create_table<L: Level + ?Sized>(
+    level: &L,
+    path: &Path,
+    provenance: &Provenance,
+    rows: u64,
+    compress: Compression,
+) -> Result<SweepWriter, H5Error> {
+    SweepWriter::create_with(path, provenance, &level.parameter_columns(), &level.outcome_sets(), rows, compress)
+}
+
+/// Solve rows `rows` of `level` and push them to `writer`: the one run loop
+/// ([`kick_study::level::run_rows`]), the bar counting rows written.
+pub fn fill_table<L: Level + ?Sized>(level: &L, rows: Range<u64>, writer: &mut SweepWriter, bar: &ProgressBar) -> Result<(), H5Error> {
+    run_rows(level, rows, writer, &|n| bar.inc(n))
+}
+
+/// Close the table and count each set's rows without values.
+pub fn finish_table<L: Level + ?Sized>(level: &L, writer: SweepWriter, bar: &ProgressBar) -> Result<RunSummary, RunError> {
     bar.finish_and_clear();
-    let mut names: Vec<String> = experiment.solvers.iter().map(|s| s.name().to_string()).collect();
-    if experiment.flight.is_some() {
-        names.extend(experiment.solvers.iter().map(|s| crate::flight::flight_set_name(s.name())));
-    }
-    let failures = names.into_iter().zip(writer.failure_counts()).collect();
+    let names = level.outcome_sets().into_iter().map(|s| s.solver);
+    let failures = names.zip(writer.failure_counts()).collect();
     let scenarios = writer.rows() as u64;
     let path = writer.finish()?;
     Ok(RunSummary { path, scenarios, failures })

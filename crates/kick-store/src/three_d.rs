@@ -10,37 +10,17 @@
 //! its unit, and the root attribute `level = "3d"`.
 
 use crate::experiment::Experiment3d;
-use crate::h5::{law_settings, new_group, write_column, write_grid, write_str_attr, Column, H5Error, OutcomeSet, SweepWriter, CHUNK_ROWS};
+use crate::h5::{new_group, write_column, write_grid, write_str_attr, Column, H5Error};
 use crate::provenance::Provenance;
-use crate::run::{Part, RunError, RunSummary};
-use kick_3d::{Kick3dError, Outcome3d, OBSERVABLES_3D};
-use rayon::prelude::*;
+use crate::run::{create_table, fill_table, finish_table, progress, Part, RunError, RunSummary};
+use kick_study::level::Level;
 use std::path::Path;
-
-/// A row's flight values ([`crate::flight::flight_columns`] order) or why there is none.
-type FlightRow = Result<Vec<f64>, String>;
-
-/// The outcome set of a 3D run: the solver, its law and the 3D columns.
-fn outcome_set(experiment: &Experiment3d) -> OutcomeSet {
-    OutcomeSet {
-        solver: format!("{}-3d", experiment.solver_name),
-        settings: law_settings(&experiment.grid.scenario, []),
-        columns: OBSERVABLES_3D.iter().map(|(n, u)| Column::new(n, u)).collect(),
-    }
-}
 
 /// Run a 3D experiment into `out_dir/NAME.h5`: cells solved in parallel in
 /// chunks, written in grid order (the file does not depend on the threads).
 pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunError> {
     let part = Part { rows: 0..experiment.grid.len(), path: out_dir.join(format!("{}.h5", experiment.name)) };
     run_part(experiment, &part, &|_| Ok(()))
-}
-
-/// Data bytes of a row: the axes' values, the outcome columns and a status
-/// byte, and with `[flight]` the flight set's columns and status.
-fn bytes_per_row(experiment: &Experiment3d) -> u64 {
-    let flight = experiment.flight.as_ref().map_or(0, |rest| 8 * crate::flight::flight_columns(rest.distance.is_some()).len() as u64 + 1);
-    8 * (experiment.grid.axes.len() + OBSERVABLES_3D.len()) as u64 + 1 + flight
 }
 
 /// [`run`] of the cells `part.rows` into `part.path` (a shard: [`crate::shard`]);
@@ -51,24 +31,14 @@ pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf
     let path = part.path.clone();
     let out_dir = path.parent().unwrap_or(Path::new("."));
     let rows = part.rows.end - part.rows.start;
-    crate::limits::check_rows("cells", grid.len(), rows, bytes_per_row(experiment), out_dir)?;
+    crate::limits::check_rows("cells", grid.len(), rows, experiment.bytes_per_row(), out_dir)?;
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
-    let axes: Vec<Column> = grid.axes.iter().map(|a| Column::new(a.parameter.name, a.parameter.unit)).collect();
-    let kick_set = outcome_set(experiment);
-    let mut sets = vec![kick_set.clone()];
-    if let Some(rest) = &experiment.flight {
-        let flown = kick_flight::Flight::from_launch([1.0, 0.0, 1.0], [0.0; 3], &kick_flight::FlightSpec {
-            gravity: Some(kick_core::GRAVITY),
-            ..*rest
-        })
-        .ok();
-        sets.push(crate::flight::flight_set(&kick_set.solver, rest, flown.as_ref()));
-    }
-    let mut writer = SweepWriter::create_with(&path, &provenance, &axes, &sets, rows, experiment.compress)?;
+    let mut writer = create_table(experiment, &path, &provenance, rows, experiment.compress)?;
     let file = writer.file().clone();
     write_str_attr(&file, &path, "description", &experiment.description)?;
     write_str_attr(&file, &path, "level", "3d")?;
-    let coordinates: Vec<(Column, &[f64])> = axes.iter().cloned().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
+    let axes = experiment.parameter_columns();
+    let coordinates: Vec<(Column, &[f64])> = axes.into_iter().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
     write_grid(&file, &path, &coordinates)?;
     // Every parameter not swept, as the first cell was built with it.
     let fixed = new_group(&file, "fixed").map_err(|e| H5Error::Hdf5 { path: path.clone(), message: e.to_string() })?;
@@ -80,41 +50,10 @@ pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf
         write_column(&fixed, &path, &Column::new(def.name, def.unit), &value.numbers())?;
     }
     attributes(&file)?;
-
-    // The kick, and with `[flight]` its flight (in `flight_columns` order).
-    let solve = |i: u64| -> (Result<Outcome3d, Kick3dError>, Option<FlightRow>) {
-        let kick = grid.kick(i);
-        let outcome = kick.as_ref().map_err(Clone::clone).and_then(|k| experiment.solver.solve(k));
-        let flight = experiment.flight.as_ref().map(|rest| match (&kick, &outcome) {
-            (Ok(k), Ok(o)) => crate::flight::after_3d(k, o, rest)
-                .map(|run| crate::flight::flight_values(&run.outcome, rest.distance.is_some())),
-            (Err(e), _) | (_, Err(e)) => Err(format!("no flight: the kick failed: {e}")),
-        });
-        (outcome, flight)
-    };
-    let mut start = part.rows.start;
-    let mut outcomes = Vec::with_capacity(CHUNK_ROWS);
-    while start < part.rows.end {
-        let end = (start + CHUNK_ROWS as u64).min(part.rows.end);
-        (start as usize..end as usize).into_par_iter().map(|i| solve(i as u64)).collect_into_vec(&mut outcomes);
-        for (i, outcome) in (start..end).zip(&outcomes) {
-            writer.push_parameters(&grid.coordinates(i))?;
-            match &outcome.0 {
-                Ok(o) => writer.push_outcome(0, Ok(&o.observable_values()))?,
-                Err(e) => writer.push_outcome(0, Err(&e.to_string()))?,
-            }
-            match &outcome.1 {
-                Some(Ok(values)) => writer.push_outcome(1, Ok(values))?,
-                Some(Err(e)) => writer.push_outcome(1, Err(e))?,
-                None => {}
-            }
-        }
-        start = end;
-    }
-    let names = sets.iter().map(|s| s.solver.clone());
-    let failures = names.zip(writer.failure_counts()).collect();
-    let path = writer.finish()?;
-    Ok(RunSummary { path, scenarios: rows, failures })
+    drop(file);
+    let bar = progress(rows, false);
+    fill_table(experiment, part.rows.clone(), &mut writer, &bar)?;
+    finish_table(experiment, writer, &bar)
 }
 
 #[cfg(test)]

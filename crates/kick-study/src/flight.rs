@@ -2,6 +2,7 @@
 //! `kick simulate` and `kick simulate3d`): a kick-flight solve with its JSON
 //! and text forms, and the chaining of a kick's launch into it.
 
+use crate::level::Failure;
 use crate::history::{flight_values as sample_values, HistoryMeta, HistoryRequest, FLIGHT_HISTORY_COLUMNS};
 use crate::printable::Printable;
 use kick_3d::{Kick3d, Outcome3d};
@@ -41,9 +42,9 @@ impl After {
     }
 
     /// Refuse a parameter of `rest` that the kick sets.
-    fn refuse_set(self, rest: &FlightSpec) -> Result<(), String> {
+    fn refuse_set(self, rest: &FlightSpec) -> Result<(), Failure> {
         match FlightParameter::ALL.into_iter().find(|&p| self.sets(p) && rest.is_set(p)) {
-            Some(p) => Err(format!("flight parameter `{}` is set by the {} and cannot be given", p.name(), self.name())),
+            Some(p) => Err(Failure::refused(format!("flight parameter `{}` is set by the {} and cannot be given", p.name(), self.name()))),
             None => Ok(()),
         }
     }
@@ -71,15 +72,21 @@ pub fn flight_error(error: FlightError) -> String {
     }
 }
 
+/// A flight error with its status (refused or a numerical failure) and
+/// the message of [`flight_error`].
+pub fn flight_failure(error: FlightError) -> Failure {
+    Failure::new(error.status(), flight_error(error))
+}
+
 /// Solve one flight.
-pub fn fly(flight: Flight) -> Result<FlightRun, String> {
-    let outcome = solve(&flight).map_err(flight_error)?;
+pub fn fly(flight: Flight) -> Result<FlightRun, Failure> {
+    let outcome = solve(&flight).map_err(flight_failure)?;
     Ok(FlightRun { flight, outcome })
 }
 
 /// `kick flight`: validate `spec` and fly it.
-pub fn flight(spec: &FlightSpec) -> Result<FlightRun, String> {
-    fly(spec.build().map_err(flight_error)?)
+pub fn flight(spec: &FlightSpec) -> Result<FlightRun, Failure> {
+    fly(spec.build().map_err(flight_failure)?)
 }
 
 /// `kick flight` with `--history`: the flight and the files it wrote.
@@ -156,10 +163,10 @@ impl Printable for FlightReport {
 /// The flight after a 1D kick: the ball leaves at its exit speed v_b⁺ with no
 /// spin, in the direction `rest`'s launch_angle (required) and azimuth give;
 /// `rest` gives the air, coefficients, ball radius, g and crossing plane.
-pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Result<FlightRun, String> {
+pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Result<FlightRun, Failure> {
     After::Kick1d.refuse_set(rest)?;
     if !(outcome.v_ball_out > 0.0) {
-        return Err(format!("the ball leaves the 1D kick at {} m/s: nothing flies forward", outcome.v_ball_out));
+        return Err(Failure::refused(format!("the ball leaves the 1D kick at {} m/s: nothing flies forward", outcome.v_ball_out)));
     }
     let spec = FlightSpec { speed: Some(outcome.v_ball_out), ball_mass: Some(scenario.ball_mass()), ..*rest };
     flight(&spec)
@@ -167,7 +174,7 @@ pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Re
 
 /// The flight after a 3D kick: the ball leaves with the kick's launch velocity
 /// and spin; `rest` gives the air, coefficients and crossing plane.
-pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result<FlightRun, String> {
+pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result<FlightRun, Failure> {
     After::Kick3d.refuse_set(rest)?;
     let spec = FlightSpec {
         ball_mass: Some(kick.base.ball_mass()),
@@ -176,70 +183,12 @@ pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result
         ..*rest
     };
     if !(outcome.launch_velocity[2] > 0.0) {
-        return Err(format!(
+        return Err(Failure::refused(format!(
             "the 3D kick launches the ball at {} m/s, not upward: nothing to fly (an --approach-angle > 0 lifts it)",
             vector(&outcome.launch_velocity)
-        ));
+        )));
     }
-    fly(Flight::from_launch(outcome.launch_velocity, outcome.spin, &spec).map_err(flight_error)?)
-}
-
-/// Outcome columns of a flight in a result file (name, unit): always the
-/// landing and apex; with a crossing plane (`crossing`) also `crossed` (1 when
-/// the ball reaches x = d before landing, 0 when it lands first; the crossing
-/// columns are then NaN) and the crossing's time, height, lateral position
-/// and velocity. Vectors as `_x`, `_y`, `_z`, as the 3D columns.
-pub fn flight_columns(crossing: bool) -> Vec<(&'static str, &'static str)> {
-    let mut columns = vec![
-        ("flight_time", "s"),
-        ("landing_point_x", "m"),
-        ("landing_point_y", "m"),
-        ("apex_height", "m"),
-        ("apex_time", "s"),
-        ("landing_velocity_x", "m/s"),
-        ("landing_velocity_y", "m/s"),
-        ("landing_velocity_z", "m/s"),
-        ("landing_spin_x", "rad/s"),
-        ("landing_spin_y", "rad/s"),
-        ("landing_spin_z", "rad/s"),
-    ];
-    if crossing {
-        columns.extend([
-            ("crossed", "1"),
-            ("crossing_time", "s"),
-            ("crossing_height", "m"),
-            ("crossing_lateral_offset", "m"),
-            ("crossing_velocity_x", "m/s"),
-            ("crossing_velocity_y", "m/s"),
-            ("crossing_velocity_z", "m/s"),
-        ]);
-    }
-    columns
-}
-
-/// A flight's values in [`flight_columns`] order (`crossing`: as there).
-pub fn flight_values(outcome: &FlightOutcome, crossing: bool) -> Vec<f64> {
-    let o = outcome;
-    let mut values = vec![
-        o.flight_time,
-        o.landing_point[0],
-        o.landing_point[1],
-        o.apex_height,
-        o.apex_time,
-        o.landing_velocity[0],
-        o.landing_velocity[1],
-        o.landing_velocity[2],
-        o.landing_spin[0],
-        o.landing_spin[1],
-        o.landing_spin[2],
-    ];
-    if crossing {
-        match &o.crossing {
-            Some(c) => values.extend([1.0, c.time, c.height, c.lateral_offset, c.velocity[0], c.velocity[1], c.velocity[2]]),
-            None => values.extend([0.0, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN]),
-        }
-    }
-    values
+    fly(Flight::from_launch(outcome.launch_velocity, outcome.spin, &spec).map_err(flight_failure)?)
 }
 
 /// The name of the flight outcome set that follows the kick set `solver`
@@ -248,7 +197,7 @@ pub fn flight_set_name(solver: &str) -> String {
     format!("{solver}+flight")
 }
 
-/// The flight outcome set after the kick set `solver`: [`flight_columns`]
+/// The flight outcome set after the kick set `solver`: [`kick_flight::outcome_columns`]
 /// and, as settings, every flight parameter the experiment gave (`rest`)
 /// and the coefficient models and air the flight used.
 pub fn flight_set(solver: &str, rest: &FlightSpec, flown: Option<&Flight>) -> crate::columns::OutcomeSet {
@@ -270,7 +219,7 @@ pub fn flight_set(solver: &str, rest: &FlightSpec, flown: Option<&Flight>) -> cr
     crate::columns::OutcomeSet {
         solver: flight_set_name(solver),
         settings,
-        columns: flight_columns(rest.distance.is_some()).iter().map(|(n, u)| Column::new(n, u)).collect(),
+        columns: kick_flight::outcome_columns(rest.distance.is_some()).iter().map(|(n, u)| Column::new(n, u)).collect(),
     }
 }
 
@@ -334,12 +283,14 @@ mod tests {
         let rest = FlightSpec { launch_angle: Some(15.0), ..FlightSpec::default() };
         assert!(after_1d(&scenario, &outcome, &rest).is_ok());
         let error = after_1d(&scenario, &outcome, &FlightSpec { spin: Some([0.0, 0.0, 10.0]), ..rest }).unwrap_err();
-        assert!(error.contains("`spin` is set by the 1D kick"), "{error}");
+        assert!(error.message.contains("`spin` is set by the 1D kick"), "{error}");
+        assert_eq!(error.status, kick_core::Status::Refused);
         let kick = Kick3d::baseline();
         let o3 = kick_3d::Accurate3d::default().solve(&kick).unwrap();
         let error = after_3d(&kick, &o3, &rest).unwrap_err();
-        assert!(error.contains("`launch_angle` is set by the 3D kick"), "{error}");
+        assert!(error.message.contains("`launch_angle` is set by the 3D kick"), "{error}");
         let error = flight(&FlightSpec { launch_angle: Some(95.0), ..FlightSpec::from_exit_speed(20.0, 10.0) }).unwrap_err();
-        assert!(error.contains("(flag --launch-angle)"), "{error}");
+        assert!(error.message.contains("(flag --launch-angle)"), "{error}");
+        assert_eq!(error.status, kick_core::Status::Refused);
     }
 }

@@ -9,6 +9,8 @@
 
 use kick_3d::{Accurate3d, Kick3d, KickSpec, Outcome3d};
 use kick_core::parameters::{SetParameter, Value};
+use crate::columns::{Column, OutcomeSet, Setting};
+use crate::level::{Failure, Level, Row};
 use kick_flight::{Flight, FlightSpec};
 
 /// Depth of the contact below the ball's centre, h, m.
@@ -38,14 +40,14 @@ pub const LAUNCH_COLUMNS: [(&str, &str); 12] = [
 ];
 
 /// The lateral kick (offset √(e² + h²)) at friction `friction`, solved.
-pub fn lateral_kick(lateral_offset: f64, friction: f64) -> Result<(Kick3d, Outcome3d), String> {
+pub fn lateral_kick(lateral_offset: f64, friction: f64) -> Result<(Kick3d, Outcome3d), Failure> {
     let mut spec = KickSpec::default();
     let offset = lateral_offset.hypot(VERTICAL_OFFSET);
     for (name, v) in [("offset", offset), ("friction", friction)] {
-        spec.set_named(name, Value::Number(v)).map_err(|e| e.to_string())?;
+        spec.set_named(name, Value::Number(v)).map_err(|e| Failure::refused(e.to_string()))?;
     }
-    let kick = spec.build().map_err(|e| e.to_string())?;
-    let outcome = Accurate3d::default().solve(&kick).map_err(|e| e.to_string())?;
+    let kick = spec.build()?;
+    let outcome = Accurate3d::default().solve(&kick)?;
     Ok((kick, outcome))
 }
 
@@ -68,7 +70,7 @@ pub struct FreeKick {
 }
 
 impl FreeKick {
-    pub fn new(lateral_offset: f64, friction: f64) -> Result<FreeKick, String> {
+    pub fn new(lateral_offset: f64, friction: f64) -> Result<FreeKick, Failure> {
         let (kick, outcome) = lateral_kick(lateral_offset, friction)?;
         Ok(FreeKick {
             launch_velocity: roll(outcome.launch_velocity, lateral_offset),
@@ -81,7 +83,7 @@ impl FreeKick {
     /// The flight after it, crossing x = `distance` (kick-flight's defaults:
     /// drag crisis joined to the spinning ball's drag, saturating lift, no spin decay, sea-level air; the kick's
     /// ball and g).
-    pub fn flight(&self, distance: f64) -> Result<Flight, String> {
+    pub fn flight(&self, distance: f64) -> Result<Flight, Failure> {
         let rest = FlightSpec {
             ball_mass: Some(self.kick.base.ball_mass()),
             ball_radius: Some(self.kick.ball_radius),
@@ -89,7 +91,7 @@ impl FreeKick {
             distance: Some(distance),
             ..FlightSpec::default()
         };
-        Flight::from_launch(self.launch_velocity, self.spin, &rest).map_err(crate::flight::flight_error)
+        Flight::from_launch(self.launch_velocity, self.spin, &rest).map_err(crate::flight::flight_failure)
     }
 
     /// [`LAUNCH_COLUMNS`] values.
@@ -116,4 +118,61 @@ impl FreeKick {
 /// The rows of the grid: (lateral offset, friction), friction fastest.
 pub fn grid() -> Vec<(f64, f64)> {
     LATERAL_OFFSETS.iter().flat_map(|&e| FRICTIONS.iter().map(move |&mu| (e, mu))).collect()
+}
+
+/// The free-kick grid as a [`Level`]: parameters `lateral_offset` (m) and
+/// `friction` (1), grid order (friction fastest); outcome sets `launch`
+/// ([`LAUNCH_COLUMNS`]), `goal` and `wall` (the flight crossing x =
+/// [`GOAL_DISTANCE`] and x = [`WALL_DISTANCE`], kick-flight's columns).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct FreeKicks;
+
+fn columns(list: &[(&str, &str)]) -> Vec<Column> {
+    list.iter().map(|(n, u)| Column::new(n, u)).collect()
+}
+
+impl Level for FreeKicks {
+    fn rows(&self) -> u64 {
+        (LATERAL_OFFSETS.len() * FRICTIONS.len()) as u64
+    }
+
+    fn parameter_columns(&self) -> Vec<Column> {
+        vec![Column::new("lateral_offset", "m"), Column::new("friction", "1")]
+    }
+
+    fn outcome_sets(&self) -> Vec<OutcomeSet> {
+        let flight_set = |name: &str, distance: f64| OutcomeSet {
+            solver: name.into(),
+            settings: vec![("distance".into(), Setting::Number(distance))],
+            columns: columns(kick_flight::outcome_columns(true)),
+        };
+        vec![
+            OutcomeSet {
+                solver: "launch".into(),
+                settings: vec![("vertical_offset".into(), Setting::Number(VERTICAL_OFFSET))],
+                columns: columns(&LAUNCH_COLUMNS),
+            },
+            flight_set("goal", GOAL_DISTANCE),
+            flight_set("wall", WALL_DISTANCE),
+        ]
+    }
+
+    fn solve_row(&self, index: u64, row: &mut Row) {
+        let (e, mu) = grid()[index as usize];
+        row.parameters.copy_from_slice(&[e, mu]);
+        let kick = FreeKick::new(e, mu);
+        match &kick {
+            Ok(k) => row.set(0, &k.launch_values()),
+            Err(f) => row.fail(0, f.clone()),
+        }
+        for (set, distance) in [(1, GOAL_DISTANCE), (2, WALL_DISTANCE)] {
+            let flown = kick
+                .as_ref()
+                .map_err(|f| Failure::refused(format!("no flight: the kick failed: {f}")))
+                .and_then(|k| k.flight(distance))
+                .and_then(|f| kick_flight::solve(&f).map_err(crate::flight::flight_failure))
+                .map(|o| o.values());
+            row.put(set, flown.as_ref().map(|v| v.as_slice()).map_err(Clone::clone));
+        }
+    }
 }

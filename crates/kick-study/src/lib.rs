@@ -13,6 +13,7 @@
 //! - [`experiment`]: `experiments/*.toml` parsed and validated (errors name file, line and key).
 //! - [`columns`]: named columns with units, outcome sets, the compression a file asks for.
 //! - [`history`]: what a time history samples and the sink its rows stream into.
+//! - [`level`]: the `Level` trait every model level implements, and the one run loop over row ranges.
 //! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 
 pub mod checks;
@@ -22,6 +23,7 @@ pub mod flight;
 pub mod free_kick;
 pub mod grid;
 pub mod history;
+pub mod level;
 pub mod limits;
 pub mod numbers_3d;
 pub mod printable;

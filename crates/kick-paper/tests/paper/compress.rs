@@ -90,8 +90,8 @@ fn a_compressed_sweep_reads_back_the_plain_sweeps_bits_in_a_smaller_file() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// `kick sweep3d --compress 9` of 3000 kicks: [rows, 3] vectors, the energy
-/// partition and the status are filtered too, read back as the plain file's
+/// `kick sweep3d --compress 9` of 3000 kicks: every parameter column (vectors
+/// as `_x`, `_y`, `_z`), the 3D outcome columns and the status are filtered, read back as the plain file's
 /// bits, in a smaller file (the plain one is contiguous, without the chunk
 /// indices a filtered dataset needs, so a few hundred rows would not be).
 #[test]
@@ -106,10 +106,10 @@ fn a_compressed_sweep3d_reads_back_the_plain_sweeps_bits_in_a_smaller_file() {
     let packed = sweep3d(&settings(dir.join("packed/k.h5"), Compression::Deflate(9))).unwrap();
     assert_same_file(&packed.path, &plain.path);
     let filtered = assert_filtered(&packed.path, &["parameters", "outcomes"], 9);
-    // Every declared parameter, 22 outcomes, 9 energies and the status.
-    assert!(filtered >= 22 + 9 + 1 + 8, "{filtered}");
-    let launch = hdf5::File::open(&packed.path).unwrap().dataset("outcomes/launch_velocity").unwrap();
-    assert_eq!((launch.shape(), launch.filters()), (vec![3000, 3], vec![Filter::Shuffle, Filter::Deflate(9)]));
+    // Every declared parameter, kick-3d's outcome columns and the status.
+    assert!(filtered >= kick_3d::OBSERVABLES_3D.len() + 1 + 8, "{filtered}");
+    let launch = hdf5::File::open(&packed.path).unwrap().dataset("outcomes/launch_velocity_x").unwrap();
+    assert_eq!((launch.shape(), launch.filters()), (vec![3000], vec![Filter::Shuffle, Filter::Deflate(9)]));
     assert!(filters(&plain.path, "/").iter().all(|(_, f)| f.is_empty()));
     let (a, b) = (size(&packed.path), size(&plain.path));
     assert!(a < b, "compressed {a} bytes, plain {b} bytes");

@@ -6,7 +6,8 @@ use kick_core::parameters::{SetParameter, Value};
 use kick_core::{Parameter, Scenario, Solver};
 use kick_flight::FlightSpec;
 use kick_study::experiment::{parse_any, AnyExperiment};
-use kick_study::flight::{after_1d, after_3d, flight_columns, flight_set_name, flight_values};
+use kick_study::flight::{after_1d, after_3d, flight_set_name};
+use kick_flight::OUTCOME_COLUMNS;
 use kick_store::h5::SweepData;
 use std::path::Path;
 
@@ -43,9 +44,9 @@ fn a_3d_grid_with_flight_stores_each_cells_chained_flight() {
             let kick = spec.build().unwrap();
             let outcome = Accurate3d::default().solve(&kick).unwrap();
             let run = after_3d(&kick, &outcome, &rest).unwrap();
-            let expected = flight_values(&run.outcome, true);
+            let expected = run.outcome.values();
             assert_eq!(set.status[row], 0);
-            for ((name, _), value) in flight_columns(true).iter().zip(&expected) {
+            for ((name, _), value) in OUTCOME_COLUMNS.iter().zip(&expected) {
                 let stored = set.column(name).unwrap()[row];
                 assert!(same(stored, *value), "{name} at row {row}: {stored} vs {value}");
             }
@@ -78,7 +79,7 @@ fn a_1d_grid_with_flight_stores_each_rows_chained_flight_per_solver() {
             let scenario = Scenario::baseline().with(Parameter::FootMass, mass).unwrap();
             let outcome = solver.solve(&scenario).unwrap();
             let run = after_1d(&scenario, &outcome, &rest).unwrap();
-            for ((name, _), value) in flight_columns(true).iter().zip(flight_values(&run.outcome, true)) {
+            for ((name, _), value) in OUTCOME_COLUMNS.iter().zip(run.outcome.values()) {
                 let stored = set.column(name).unwrap()[row];
                 assert!(same(stored, value), "set {k} {name} at row {row}: {stored} vs {value}");
             }
@@ -139,7 +140,7 @@ fn free_kicks_and_the_generated_3d_and_flight_pages() {
         assert!((norm(k.spin) - norm(k.outcome.spin)).abs() < 1e-12 * norm(k.outcome.spin));
         assert!(k.launch_velocity[2] > 0.0 && k.spin[1] < 0.0, "row {r}: the ball must rise with backspin");
         let o = kick_flight::solve(&k.flight(25.0).unwrap()).unwrap();
-        for ((name, _), v) in flight_columns(true).iter().zip(flight_values(&o, true)) {
+        for ((name, _), v) in OUTCOME_COLUMNS.iter().zip(o.values()) {
             assert!(same(goal.column(name).unwrap()[r], v), "{name} at row {r}");
         }
         for (i, name) in ["launch_velocity_x", "launch_velocity_y", "launch_velocity_z"].iter().enumerate() {

@@ -77,8 +77,13 @@ impl Grid3d {
     /// The axes' values at cell `index`, in axis order.
     pub fn coordinates(&self, index: u64) -> Vec<f64> {
         let mut out = vec![0.0; self.axes.len()];
-        crate::grid::decode(self.axes.iter().map(|a| a.values.len()), index, |k, position| out[k] = self.axes[k].values[position]);
+        self.coordinates_into(index, &mut out);
         out
+    }
+
+    /// [`Self::coordinates`] into `out` (one slot per axis), allocating nothing.
+    pub fn coordinates_into(&self, index: u64, out: &mut [f64]) {
+        crate::grid::decode(self.axes.iter().map(|a| a.values.len()), index, |k, position| out[k] = self.axes[k].values[position]);
     }
 
     /// The validated kick of cell `index`.

@@ -1,0 +1,101 @@
+//! The 1D model as a [`Level`]: an experiment's scenarios (a grid, named
+//! rows or random samples), each solved by every solver of the experiment,
+//! and with `[flight]` each kick flown after it.
+
+use super::{Failure, Level, Row};
+use crate::columns::{Column, OutcomeSet, Setting};
+use crate::experiment::Experiment;
+use kick_compliant::SolverChoice;
+use kick_core::{KickError, LawKind, Outcome, Parameter, Scenario, Solver, OBSERVABLES};
+
+/// Parameter columns of the 1D model: the eight [`Parameter`]s, and the
+/// target restitution when the law takes one (names and units as declared).
+pub fn parameter_columns(with_restitution: bool) -> Vec<Column> {
+    let mut columns: Vec<Column> = Parameter::ALL.iter().map(|p| Column::new(p.name(), p.unit())).collect();
+    if with_restitution {
+        let e = &kick_core::parameters::RESTITUTION;
+        columns.push(Column::new(e.name, e.unit));
+    }
+    columns
+}
+
+/// Outcome columns of the 1D model: [`OBSERVABLES`].
+pub fn outcome_columns() -> Vec<Column> {
+    OBSERVABLES.iter().map(|(n, u)| Column::new(n, u)).collect()
+}
+
+/// The outcome-set description of a solver: its name, its settings and the
+/// scenarios' contact law (`law`; the target restitution is a parameter column).
+pub fn outcome_set(solver: &SolverChoice, law: LawKind) -> OutcomeSet {
+    let mut settings = Setting::numbers(solver.settings());
+    settings.push(("law".into(), Setting::Text(law.name().into())));
+    OutcomeSet { solver: solver.name().to_string(), settings, columns: outcome_columns() }
+}
+
+impl Experiment {
+    /// Fill `row` from scenario `scenario` and each solver's outcome (in the
+    /// experiment's solver order), flying each kick with `[flight]`: the one
+    /// place a 1D row is made, whether its kicks were solved here
+    /// ([`Level::solve_row`]) or streamed with their histories (kick-store).
+    pub fn fill_row(&self, scenario: &Result<Scenario, KickError>, outcomes: &[Result<Outcome, KickError>], row: &mut Row) {
+        self.put_parameters(scenario, row);
+        for (k, outcome) in outcomes.iter().enumerate() {
+            self.put_outcome(k, scenario, outcome, row);
+        }
+    }
+
+    fn put_parameters(&self, scenario: &Result<Scenario, KickError>, row: &mut Row) {
+        row.parameters.fill(f64::NAN);
+        if let Ok(s) = scenario {
+            row.parameters[..8].copy_from_slice(&s.values());
+            if let Some(slot) = row.parameters.get_mut(8) {
+                *slot = s.restitution_target().unwrap_or(f64::NAN);
+            }
+        }
+    }
+
+    /// Solver `k`'s outcome and, with `[flight]`, the flight after it.
+    fn put_outcome(&self, k: usize, scenario: &Result<Scenario, KickError>, outcome: &Result<Outcome, KickError>, row: &mut Row) {
+        match outcome {
+            Ok(o) => row.set(k, &o.observable_values()),
+            Err(e) => row.fail(k, e.clone().into()),
+        }
+        if let Some(rest) = &self.flight {
+            let flown = match (scenario, outcome) {
+                (Ok(s), Ok(o)) => crate::flight::after_1d(s, o, rest).map(|run| run.outcome.values()),
+                (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
+            };
+            row.put(self.solvers.len() + k, flown.as_ref().map(|v| v.as_slice()).map_err(Clone::clone));
+        }
+    }
+}
+
+impl Level for Experiment {
+    fn rows(&self) -> u64 {
+        self.scenarios.len()
+    }
+
+    fn parameter_columns(&self) -> Vec<Column> {
+        parameter_columns(self.scenarios.has_restitution())
+    }
+
+    fn outcome_sets(&self) -> Vec<OutcomeSet> {
+        // One law for every scenario of an experiment (the file's `law`).
+        let law = self.scenarios.scenario(0).map_or(LawKind::PowerLaw, |s| s.law_kind());
+        let mut sets: Vec<OutcomeSet> = self.solvers.iter().map(|s| outcome_set(s, law)).collect();
+        if let Some(rest) = &self.flight {
+            let flown = kick_flight::FlightSpec { speed: Some(1.0), ..*rest }.build().ok();
+            sets.extend(self.solvers.iter().map(|s| crate::flight::flight_set(s.name(), rest, flown.as_ref())));
+        }
+        sets
+    }
+
+    fn solve_row(&self, index: u64, row: &mut Row) {
+        let scenario = self.scenarios.scenario(index);
+        self.put_parameters(&scenario, row);
+        for (k, solver) in self.solvers.iter().enumerate() {
+            let outcome = scenario.clone().and_then(|s| solver.solve(&s));
+            self.put_outcome(k, &scenario, &outcome, row);
+        }
+    }
+}

@@ -1,0 +1,56 @@
+//! The 3D kick as a [`Level`]: a grid of kicks from an experiment file
+//! (`kick run` with `level = "3d"`), and with `[flight]` each kick flown.
+
+use super::{Failure, Level, Row};
+use crate::columns::{law_settings, Column, OutcomeSet};
+use crate::experiment::Experiment3d;
+use kick_3d::OBSERVABLES_3D;
+
+/// The 3D outcome set of a solver: its name (`NAME-3d`), the law and
+/// [`OBSERVABLES_3D`], kick-3d's columns.
+pub fn outcome_set_3d(solver: &str, scenario: &kick_core::Scenario) -> OutcomeSet {
+    OutcomeSet {
+        solver: format!("{solver}-3d"),
+        settings: law_settings(scenario, []),
+        columns: OBSERVABLES_3D.iter().map(|(n, u)| Column::new(n, u)).collect(),
+    }
+}
+
+impl Level for Experiment3d {
+    fn rows(&self) -> u64 {
+        self.grid.len()
+    }
+
+    /// The swept axes, in axis order.
+    fn parameter_columns(&self) -> Vec<Column> {
+        self.grid.axes.iter().map(|a| Column::new(a.parameter.name, a.parameter.unit)).collect()
+    }
+
+    fn outcome_sets(&self) -> Vec<OutcomeSet> {
+        let kick = outcome_set_3d(&self.solver_name, &self.grid.scenario);
+        let mut sets = vec![kick];
+        if let Some(rest) = &self.flight {
+            let spec = kick_flight::FlightSpec { gravity: Some(kick_core::GRAVITY), ..*rest };
+            let flown = kick_flight::Flight::from_launch([1.0, 0.0, 1.0], [0.0; 3], &spec).ok();
+            sets.push(crate::flight::flight_set(&sets[0].solver, rest, flown.as_ref()));
+        }
+        sets
+    }
+
+    fn solve_row(&self, index: u64, row: &mut Row) {
+        self.grid.coordinates_into(index, &mut row.parameters);
+        let kick = self.grid.kick(index);
+        let outcome = kick.as_ref().map_err(Clone::clone).and_then(|k| self.solver.solve(k));
+        match &outcome {
+            Ok(o) => row.set(0, &o.observable_values()),
+            Err(e) => row.fail(0, e.clone().into()),
+        }
+        if let Some(rest) = &self.flight {
+            let flown = match (&kick, &outcome) {
+                (Ok(k), Ok(o)) => crate::flight::after_3d(k, o, rest).map(|run| run.outcome.values()),
+                (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
+            };
+            row.put(1, flown.as_ref().map(|v| v.as_slice()).map_err(Clone::clone));
+        }
+    }
+}
