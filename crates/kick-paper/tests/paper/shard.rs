@@ -299,7 +299,7 @@ fn a_sweep_in_three_shards_merges_to_the_unsharded_sweep() {
 }
 
 /// `kick sweep3d --shard I/N`: three parts merged equal the unsharded sweep
-/// ([rows, 3] vectors, energy, failures renumbered), and each part's rows
+/// (vectors as `_x`, `_y`, `_z` columns, energy, failures renumbered), and each part's rows
 /// are the whole sweep's rows of its slice.
 #[test]
 fn a_sweep3d_in_three_shards_merges_to_the_unsharded_sweep() {
@@ -318,9 +318,9 @@ fn a_sweep3d_in_three_shards_merges_to_the_unsharded_sweep() {
     let whole_file = hdf5::File::open(&whole.path).unwrap();
     // Shard 2 of 3 of 40: samples 26..40.
     assert_eq!((read_u64_attr(&part, "shard_row_start"), read_u64_attr(&part, "rows"), read_u64_attr(&part, "samples")), (Some(26), Some(14), Some(40)));
-    let spin: Vec<f64> = part.dataset("outcomes/spin").unwrap().read_raw().unwrap();
-    let all: Vec<f64> = whole_file.dataset("outcomes/spin").unwrap().read_raw().unwrap();
-    assert!(spin.iter().zip(&all[26 * 3..]).all(|(a, b)| a.to_bits() == b.to_bits()) && spin.len() == 14 * 3);
+    let spin: Vec<f64> = part.dataset("outcomes/spin_z").unwrap().read_raw().unwrap();
+    let all: Vec<f64> = whole_file.dataset("outcomes/spin_z").unwrap().read_raw().unwrap();
+    assert!(spin.iter().zip(&all[26..]).all(|(a, b)| a.to_bits() == b.to_bits()) && spin.len() == 14);
     drop((part, whole_file));
     merge_and_compare(&dir, "k", &parts, &whole.path);
     let _ = std::fs::remove_dir_all(&dir);
