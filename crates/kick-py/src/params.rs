@@ -120,9 +120,9 @@ pub fn optional_whole_number(
 }
 
 /// The `threads` keyword: None (rayon's pool) or 1 to
-/// [`kick_study::limits::max_threads`], as `--threads` is bounded.
+/// [`kick_core::threads::max_threads`], as `--threads` is bounded.
 pub fn threads(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
-    use kick_study::limits::{cores, max_threads, THREADS_PER_CORE};
+    use kick_core::threads::{cores, max_threads, THREADS_PER_CORE};
     let limit = format!(" ({THREADS_PER_CORE} per core, {} cores here)", cores());
     optional_whole_number("threads", value, 1..=max_threads(), &limit)
 }
