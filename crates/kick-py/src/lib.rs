@@ -208,6 +208,7 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(many::simulate_many, m)?)?;
     m.add_function(wrap_pyfunction!(many::simulate3d_many, m)?)?;
     m.add_function(wrap_pyfunction!(many::many_input, m)?)?;
+    m.add_function(wrap_pyfunction!(params::whole_number_py, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(flight::flight, m)?)?;
     m.add_function(wrap_pyfunction!(flight::flight_many, m)?)?;

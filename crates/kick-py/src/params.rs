@@ -109,6 +109,14 @@ pub fn whole_number(name: &str, value: &Bound<'_, PyAny>, range: std::ops::Range
     index.extract()
 }
 
+/// `whole_number` for Python code of the package (`kick.dask`'s `chunks`):
+/// one rule for counts, bools refused.
+#[pyfunction]
+#[pyo3(name = "whole_number", signature = (name, value, low = 0))]
+pub fn whole_number_py(name: &str, value: &Bound<'_, PyAny>, low: usize) -> PyResult<usize> {
+    whole_number(name, value, low..=usize::MAX, "")
+}
+
 /// `whole_number` for an optional keyword (None: not given).
 pub fn optional_whole_number(
     name: &str,
