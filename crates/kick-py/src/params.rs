@@ -246,6 +246,16 @@ pub fn declared(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     Ok(list)
 }
 
+/// kick-bounce's declared parameters (`kick bounce`'s flags), in declaration order.
+#[pyfunction]
+pub fn bounce_parameters(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    let list = PyList::empty(py);
+    for p in kick_bounce::BOUNCE_PARAMETERS.iter() {
+        list.append(declaration(py, p)?)?;
+    }
+    Ok(list)
+}
+
 /// The parameter keywords of a function: `simulate`, `simulate3d`, `flight`,
 /// their `_many` forms, `history` or `history3d`.
 #[pyfunction]
@@ -254,6 +264,7 @@ pub fn keywords(function: &str) -> PyResult<Vec<&'static str>> {
         "simulate" | "simulate_many" | "history" => parameters::at_levels(ScenarioSpec::LEVELS).map(|p| p.name).collect(),
         "simulate3d" | "simulate3d_many" | "history3d" => parameters::at_levels(KickSpec::LEVELS).map(|p| p.name).collect(),
         "flight" | "flight_many" => kick_flight::spec::FLIGHT_PARAMETERS.iter().map(|p| p.name).collect(),
+        "bounce" | "bounce_many" => kick_bounce::BOUNCE_PARAMETERS.iter().map(|p| p.name).collect(),
         other => return Err(value_error(format!("no function `{other}` takes declared parameters"))),
     })
 }
