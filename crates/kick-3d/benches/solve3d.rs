@@ -64,5 +64,22 @@ fn off_center_box(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, off_center_box);
+/// One rapier scene step (`--solver rapier`): the baseline kick at the
+/// default dt (1e-6 s, about 5,300 steps), throughput in steps, so the
+/// scene's step budget (`kick_3d::scene::MAX_SCENE_STEPS`) can be stated in
+/// seconds.
+fn rapier_step(c: &mut Criterion) {
+    let kick = kick_3d::Kick3d::baseline();
+    let scene = kick_3d::scene::Scene::new(kick_3d::DEFAULT_SCENE_STEP).expect("valid step");
+    let steps = scene.solve(&kick).expect("solves").evaluations;
+    let mut group = c.benchmark_group("rapier_scene");
+    group.throughput(Throughput::Elements(steps));
+    group.sample_size(10);
+    group.bench_function(BenchmarkId::from_parameter("baseline kick, steps"), |b| {
+        b.iter(|| black_box(scene.solve(black_box(&kick)).expect("solves")))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, off_center_box, rapier_step);
 criterion_main!(benches);

@@ -32,16 +32,31 @@ const FOOT: Group = Group::GROUP_1;
 const BALL: Group = Group::GROUP_2;
 const GROUND: Group = Group::GROUP_3;
 
+/// Most rapier steps one scene run takes. One step costs 2.6 µs (`cargo
+/// bench -p kick-3d --features bench --bench solve3d --profile test --
+/// rapier`: 13.9 ms for the baseline kick's 5,293 steps at dt = 1e-6 s, on 2
+/// shared cores) and up to 7.2 µs in the unoptimised `kick` binary on a
+/// loaded machine (1e7 steps of a contact that never separates took 72 s),
+/// so a run ends within about 5 s (15 s unoptimised), where the 2e8 steps
+/// kick-compliant allows RK4 would be 9 minutes of rapier. The horizon over
+/// dt is still refused beyond 2e8 up front; a contact still open after this
+/// many steps is a numerical limit (naming `--dt`), not a finding. Real
+/// contacts take far fewer: 5,293 for the baseline kick at the default dt,
+/// 2e6 would be a 2 s contact there or a 20 ms one at dt = 1e-8 s.
+pub const MAX_SCENE_STEPS: u64 = 2_000_000;
+
 /// The rapier scene path with a fixed step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Scene {
     /// Rapier step Δt, s; the law is applied once per step.
     pub step: f64,
+    /// Most steps one run takes ([`MAX_SCENE_STEPS`]).
+    pub budget: u64,
 }
 
 impl Default for Scene {
     fn default() -> Self {
-        Scene { step: crate::DEFAULT_SCENE_STEP }
+        Scene { step: crate::DEFAULT_SCENE_STEP, budget: MAX_SCENE_STEPS }
     }
 }
 
@@ -53,7 +68,7 @@ impl Scene {
         if !(step.is_finite() && step > 0.0 && step <= MAX_STEP) {
             return Err(Kick3dError::InvalidParameter { name: "dt", value: step, requirement: "in (0, 1e-4] s" });
         }
-        Ok(Scene { step })
+        Ok(Scene { step, budget: MAX_SCENE_STEPS })
     }
 
     /// Run the kick in a rapier world.
@@ -104,8 +119,10 @@ impl Scene {
         }
 
         let horizon = kick.contact_horizon()?;
-        // A step budget refused up front: run time is ∝ 1/dt.
-        let max_steps = kick_compliant::events::fixed_steps(horizon, self.step)?;
+        // A step budget refused up front (run time is ∝ 1/dt), and the
+        // scene's own bound on the steps taken.
+        let horizon_steps = kick_compliant::events::fixed_steps(horizon, self.step)?;
+        let max_steps = horizon_steps.min(self.budget);
         let mut y = start;
         let first = dynamics.contact(&y);
         let mut peak_normal = Peak { value: first.normal_force, time: 0.0 };
@@ -165,11 +182,16 @@ impl Scene {
             world.step();
             t += dt;
         }
-        Err(kick_core::KickError::NoSeparation {
-            time: t,
-            reason: format!("rapier scene: contact outlasted the horizon of {horizon:.6e} s"),
-        }
-        .into())
+        let reason = if max_steps < horizon_steps {
+            format!(
+                "rapier scene: contact outlasted the budget of {max_steps} steps of dt = {} s (`--dt`), \
+                 short of the horizon of {horizon:.6e} s; a larger dt covers more",
+                kick_core::short(dt)
+            )
+        } else {
+            format!("rapier scene: contact outlasted the horizon of {horizon:.6e} s")
+        };
+        Err(kick_core::KickError::NoSeparation { time: t, reason }.into())
     }
 }
 
@@ -248,9 +270,9 @@ mod tests {
     use kick_core::KickError;
 
     /// A step whose run would exceed the fixed-step budget (time ∝ 1/dt) is
-    /// refused before the first step, naming dt and the count: 1e-10 s over
-    /// the baseline's horizon, and 1e-300 s, which used to end in "non-finite
-    /// contact time at t = inf s". The count is the horizon over the step.
+    /// refused before the first step, naming dt (`--dt`) and the count:
+    /// 1e-10 s over the baseline's horizon, and 1e-300 s, which used to end in
+    /// "non-finite contact time at t = inf s". The count is the horizon over the step.
     #[test]
     fn a_step_beyond_the_budget_is_refused_up_front() {
         let kick = Kick3d::baseline();
@@ -260,10 +282,34 @@ mod tests {
                 Err(Kick3dError::Core(e @ KickError::TooManySteps { .. })) => {
                     let KickError::TooManySteps { step, steps, limit, .. } = e else { unreachable!() };
                     assert_eq!((step, steps, limit), (dt, (horizon / dt).ceil(), MAX_FIXED_STEPS));
-                    assert!(e.to_string().contains("dt = "), "{e}");
+                    assert!(e.to_string().contains("dt = ") && e.to_string().contains("`--dt`"), "{e}");
                 }
                 other => panic!("dt = {dt}: {other:?}"),
             }
         }
+    }
+
+    /// A contact that never separates (a 3e4 N drive holds the foot on the
+    /// ball) stops after the scene's budget of steps, at t = budget x dt,
+    /// as a numerical limit naming `--dt`, not after the whole horizon
+    /// (5.4e5 steps here, 2e8 at the smallest dt the horizon's budget allows:
+    /// 9 minutes at the measured 2.6 µs a step).
+    /// A small budget stands in for [`MAX_SCENE_STEPS`]; the default runs the
+    /// baseline and stays within about 5 s of measured steps.
+    #[test]
+    fn a_contact_outlasting_the_scene_budget_stops_there() {
+        let mut driven = Kick3d::baseline();
+        driven.base = driven.base.with(kick_core::Parameter::DriveForce, 3e4).unwrap();
+        let scene = Scene { budget: 2_000, ..Scene::new(1e-5).unwrap() };
+        match scene.solve(&driven) {
+            Err(Kick3dError::Core(KickError::NoSeparation { time, reason })) => {
+                assert!((time - 2_000.0 * 1e-5).abs() < 1e-12, "{time}");
+                assert!(reason.contains("budget of 2000 steps") && reason.contains("`--dt`"), "{reason}");
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(MAX_SCENE_STEPS as f64 * 2.6e-6 < 10.0);
+        let baseline = Scene::default().solve(&Kick3d::baseline()).unwrap();
+        assert!(baseline.evaluations < MAX_SCENE_STEPS / 100, "{}", baseline.evaluations);
     }
 }

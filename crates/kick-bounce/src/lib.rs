@@ -339,14 +339,78 @@ pub struct BounceOutcome {
 /// The 1D normal contact: ball at V_n onto the plate, gravity as the drive
 /// (module docs); with the shell, Eq. 20's k, c, n only set the solvers'
 /// scales (the small-δ stiffness, linear).
+/// The scenario's refusals are in the bounce's own names ([`in_bounce_terms`]).
 pub fn normal_scenario(b: &Bounce, normal_speed: f64) -> Result<Scenario, KickError> {
     let scenario = |k, c, n| Scenario::from_values([b.mass, PLATE_MASS, normal_speed, 0.0, k, c, n, b.mass * b.gravity]);
     match b.law {
         BallLaw::Shell(shell) => scenario(shell.small_compression_stiffness(), 0.0, 1.0),
         BallLaw::Kick { kind, stiffness, damping, exponent, restitution } => {
-            scenario(stiffness, damping, exponent)?.with_law(kind, restitution)
+            scenario(stiffness, damping, exponent).and_then(|s| s.with_law(kind, restitution))
         }
     }
+    .map_err(|e| in_bounce_terms(b, e))
+}
+
+/// The bounce parameters a parameter of the 1D scenario comes from: the
+/// ball is the 1D "foot" (its mass, the normal speed V cos θ or √(2gH), the
+/// drive its weight m g); the plate, the 1D "ball", is fixed; with the
+/// shell, k (n = 1) is 2πR p0 + k_s and there is no c.
+fn bounce_names(b: &Bounce, one_d: &str) -> &'static [&'static str] {
+    let shell = matches!(b.law, BallLaw::Shell(_));
+    match one_d {
+        "foot_mass" => &["ball_mass"],
+        "foot_speed" if b.drop_height.is_some() => &["drop_height", "gravity"],
+        "foot_speed" => &["speed", "angle"],
+        "ball_mass" | "ball_speed" => &[],
+        "drive_force" => &["ball_mass", "gravity"],
+        "stiffness" | "exponent" if shell => &["inflation_pressure", "ball_radius", "shell_stiffness"],
+        "damping" if shell => &[],
+        "stiffness" => &["stiffness"],
+        "exponent" => &["exponent"],
+        "damping" => &["damping"],
+        _ => &[],
+    }
+}
+
+/// A refusal of the 1D scenario under the bounce restated in the bounce's
+/// parameters (`kick bounce` has no foot_mass or foot_speed).
+pub fn in_bounce_terms(b: &Bounce, e: KickError) -> KickError {
+    match e {
+        KickError::OutOfRange { quantity, value, unit, parameters } => {
+            let mut names: Vec<&str> = Vec::new();
+            for one_d in parameters.split(", ") {
+                match bounce_names(b, one_d) {
+                    [] if one_d == "every parameter" => names.push(one_d),
+                    mapped => names.extend(mapped.iter().filter(|n| !names.contains(n)).copied().collect::<Vec<_>>()),
+                }
+            }
+            let quantity = match quantity {
+                "foot kinetic energy ½ m_f v_f²" => "ball's normal kinetic energy ½ m V_n²",
+                "ball kinetic energy ½ m_b v_b²" => "plate's kinetic energy",
+                "drive force" => "ball's weight m g",
+                other => other,
+            };
+            KickError::OutOfRange { quantity, value, unit, parameters: interned(names.join(", ")) }
+        }
+        KickError::InvalidParameter { name, value, requirement } => match bounce_names(b, name).first() {
+            Some(&own) => KickError::InvalidParameter { name: own, value, requirement },
+            None => KickError::InvalidParameter { name, value, requirement },
+        },
+        other => other,
+    }
+}
+
+/// `text` as a `&'static str`, each distinct text allocated once (the
+/// lists [`in_bounce_terms`] makes are a few fixed combinations).
+fn interned(text: String) -> &'static str {
+    static SEEN: std::sync::Mutex<std::collections::BTreeSet<&'static str>> = std::sync::Mutex::new(std::collections::BTreeSet::new());
+    let mut seen = SEEN.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    if let Some(&known) = seen.get(text.as_str()) {
+        return known;
+    }
+    let leaked: &'static str = Box::leak(text.into_boxed_str());
+    seen.insert(leaked);
+    leaked
 }
 
 /// Which solver runs the normal phase: `Reduced` (Dop853 on the relative

@@ -191,6 +191,43 @@ fn bad_input_names_the_parameter() {
     kick_core::parameters::check_declarations(&kick_bounce::BOUNCE_PARAMETERS).unwrap();
 }
 
+/// Valid values whose 1D contact leaves double precision are refused in the
+/// bounce's own names: the refusal names the parameter given (or the ones
+/// the quantity comes from), every name in it is a bounce parameter, and no
+/// 1D name of the kick (foot_mass, foot_speed, ball_speed, drive_force) is in it.
+#[test]
+fn refusals_of_the_normal_contact_name_the_bounces_own_parameters() {
+    type Case<'a> = (&'a str, &'a [(&'a str, Value)], &'a str);
+    let cases: [Case; 8] = [
+        ("shell", &[("speed", n(5.0)), ("ball_mass", n(1e-300))], "ball_mass"),
+        ("shell", &[("speed", n(5.0)), ("ball_mass", n(1e300))], "ball_mass"),
+        ("shell", &[("speed", n(1e-300))], "speed"),
+        ("shell", &[("drop_height", n(1e300))], "drop_height"),
+        ("shell", &[("speed", n(5.0)), ("gravity", n(1e300))], "gravity"),
+        ("shell", &[("speed", n(5.0)), ("ball_radius", n(1e-300))], "ball_radius"),
+        ("power-law", &[("speed", n(5.0)), ("stiffness", n(1e-300))], "stiffness"),
+        ("power-law", &[("speed", n(5.0)), ("damping", n(1e300))], "damping"),
+    ];
+    for (law, values, given) in cases {
+        let spec = with_law(law, values);
+        let error = match run(&spec) {
+            Err(e @ KickError::OutOfRange { .. }) => e,
+            other => panic!("{values:?}: {other:?}"),
+        };
+        let KickError::OutOfRange { parameters, quantity, .. } = &error else { unreachable!() };
+        let text = error.to_string();
+        for one_d in ["foot", "ball_speed", "drive_force"] {
+            assert!(!text.contains(one_d), "{values:?}: {text}");
+        }
+        assert!(!quantity.contains("foot"), "{quantity}");
+        let names: Vec<&str> = parameters.split(", ").collect();
+        assert!(names.contains(&given), "{values:?}: {text}");
+        for name in names {
+            assert!(kick_bounce::parameter(name).is_ok(), "{name} in {text}");
+        }
+    }
+}
+
 /// The JSON carries the fields `kick bounce` promises, rebound_height only with a drop.
 #[test]
 fn json_fields() {

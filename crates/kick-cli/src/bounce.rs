@@ -33,17 +33,21 @@ impl kick_study::Printable for Report {
     }
 }
 
-/// Bounce, with a refusal naming the flag the user gave.
+/// Bounce, with a refusal naming the flags the user gave (the library's
+/// errors use the bounce's own parameter names, never the kick's 1D ones).
 pub fn bounce(spec: &BounceSpec) -> Result<Report, String> {
     kick_bounce::run(spec).map(Report).map_err(|e| {
-        let name = match &e {
-            KickError::InvalidParameter { name, .. } => Some(*name),
-            KickError::DoesNotApply { given, .. } => Some(*given),
-            _ => None,
+        let names: Vec<&str> = match &e {
+            KickError::InvalidParameter { name, .. } => vec![*name],
+            KickError::DoesNotApply { given, .. } => vec![*given],
+            KickError::OutOfRange { parameters, .. } => parameters.split(", ").collect(),
+            _ => Vec::new(),
         };
-        match name.and_then(|n| kick_bounce::parameter(n).ok()) {
-            Some(p) => format!("{e} (flag {})", p.flag()),
-            None => e.to_string(),
+        let flags: Vec<String> = names.iter().filter_map(|n| kick_bounce::parameter(n).ok()).map(|p| p.flag()).collect();
+        match flags.len() {
+            0 => e.to_string(),
+            1 => format!("{e} (flag {})", flags[0]),
+            _ => format!("{e} (flags {})", flags.join(", ")),
         }
     })
 }

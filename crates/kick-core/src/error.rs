@@ -87,8 +87,8 @@ pub enum KickError {
     /// A fixed step that would need more steps than the budget to cover the
     /// contact horizon: refused before integrating, as its run time is ∝ 1/dt.
     #[error(
-        "step too small: dt = {} s needs {} steps to cover the contact horizon of {} s, more than \
-         the budget of {} steps; use a larger dt or an adaptive solver",
+        "step too small: dt = {} s (`--dt`, the `dt` key or keyword) needs {} steps to cover the contact \
+         horizon of {} s, more than the budget of {} steps; use a larger dt or an adaptive solver",
         short(*.step),
         short(*.steps),
         short(*.horizon),

@@ -294,20 +294,26 @@ impl LawKind {
     /// Every law selectable by name: [`LawKind::ALL`] and the shell ball.
     /// `ALL` is the family `kick laws` fits to one target restitution and
     /// compares; the shell is not in it, being set by quantities measured on
-    /// a ball (its restitution is a prediction, not a target).
-    pub const SELECTABLE: [LawKind; 7] = [
-        LawKind::PowerLaw,
-        LawKind::HuntCrossley,
-        LawKind::LankaraniNikravesh,
-        LawKind::Flores,
-        LawKind::HuntCrossleyExact,
-        LawKind::KelvinVoigt,
-        LawKind::Shell,
-    ];
-    pub const NAMES: &'static str =
-        "power-law, hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt, shell";
+    /// a ball (its restitution is a prediction, not a target). Derived from
+    /// `ALL`, so a law added there is selectable too.
+    pub const SELECTABLE: [LawKind; LawKind::ALL.len() + 1] = {
+        let mut out = [LawKind::Shell; LawKind::ALL.len() + 1];
+        let mut i = 0;
+        while i < LawKind::ALL.len() {
+            out[i] = LawKind::ALL[i];
+            i += 1;
+        }
+        out
+    };
+    /// The names of [`LawKind::SELECTABLE`], ", "-separated, derived from it.
+    pub const NAMES: &'static str = {
+        match std::str::from_utf8(&NAMES_BYTES) {
+            Ok(names) => names,
+            Err(_) => panic!("law names are ASCII"),
+        }
+    };
 
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             LawKind::PowerLaw => "power-law",
             LawKind::HuntCrossley => "hunt-crossley",
@@ -354,6 +360,40 @@ impl LawKind {
             .ok_or_else(|| LawError::UnknownLaw { name: name.to_string(), expected: LawKind::NAMES })
     }
 }
+
+/// Length of [`LawKind::NAMES`].
+const NAMES_LEN: usize = {
+    let mut len = 0;
+    let mut i = 0;
+    while i < LawKind::SELECTABLE.len() {
+        len += LawKind::SELECTABLE[i].name().len() + if i > 0 { 2 } else { 0 };
+        i += 1;
+    }
+    len
+};
+
+/// The bytes of [`LawKind::NAMES`].
+const NAMES_BYTES: [u8; NAMES_LEN] = {
+    let mut out = [0u8; NAMES_LEN];
+    let mut at = 0;
+    let mut i = 0;
+    while i < LawKind::SELECTABLE.len() {
+        if i > 0 {
+            out[at] = b',';
+            out[at + 1] = b' ';
+            at += 2;
+        }
+        let name = LawKind::SELECTABLE[i].name().as_bytes();
+        let mut j = 0;
+        while j < name.len() {
+            out[at] = name[j];
+            at += 1;
+            j += 1;
+        }
+        i += 1;
+    }
+    out
+};
 
 /// What a law needs besides its name. `damping` is used by the paper's law
 /// only; the others take their dissipation from `restitution`, at the
@@ -709,6 +749,30 @@ mod tests {
         // The case that differed: compressing with δ̇ < 0 keeps the dashpot on.
         let AnyLaw::PowerLaw(paper) = laws()[0] else { panic!("the paper's law first") };
         assert_eq!(AnyLaw::PowerLaw(paper).branch_force(0.01, -1.0, true).1, paper.elastic_force(0.01) - paper.damping);
+    }
+
+    /// Every law is selectable by its name, once, and the list of names in
+    /// errors is the list of selectable laws; the match has no wildcard, so a
+    /// new law must be placed here (and in `ALL` or as the shell) to compile.
+    #[test]
+    fn every_law_is_selectable_once_and_named_in_names() {
+        for kind in LawKind::SELECTABLE {
+            let in_family = match kind {
+                LawKind::PowerLaw
+                | LawKind::HuntCrossley
+                | LawKind::LankaraniNikravesh
+                | LawKind::Flores
+                | LawKind::HuntCrossleyExact
+                | LawKind::KelvinVoigt => true,
+                LawKind::Shell => false,
+            };
+            assert_eq!(LawKind::ALL.contains(&kind), in_family, "{kind:?}");
+            assert_eq!(LawKind::SELECTABLE.iter().filter(|&&k| k == kind).count(), 1, "{kind:?}");
+            assert_eq!(LawKind::from_name(kind.name()).unwrap(), kind);
+        }
+        assert_eq!(LawKind::SELECTABLE.len(), 7);
+        let names: Vec<&str> = LawKind::SELECTABLE.iter().map(|k| k.name()).collect();
+        assert_eq!(LawKind::NAMES, names.join(", "));
     }
 
     #[test]

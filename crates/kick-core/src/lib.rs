@@ -20,6 +20,7 @@ pub mod roots;
 pub mod scenario;
 pub mod shell;
 pub mod special;
+pub mod threads;
 
 pub use error::{KickError, Status};
 pub use number::{short, sig};

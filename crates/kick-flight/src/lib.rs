@@ -95,4 +95,11 @@ pub enum FlightError {
     NonFinite { quantity: &'static str, time: f64 },
     #[error("`{name}` asks for {} samples, more than the limit {limit}", short(*.requested))]
     TooManySamples { name: &'static str, requested: f64, limit: usize },
+    #[error(
+        "`threads` = {requested}: must be between 1 and {max}, the most this machine can use \
+         ({} per core x its {cores} cores, never above {})",
+        kick_core::threads::THREADS_PER_CORE,
+        kick_core::threads::MAX_THREADS
+    )]
+    TooManyThreads { requested: usize, max: usize, cores: usize },
 }

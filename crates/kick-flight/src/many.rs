@@ -4,10 +4,8 @@
 //! and turn each row's result into a status code ([`FlightError::status`]).
 
 use crate::{solve, FlightError, FlightOutcome, FlightParameter, FlightSpec};
+use kick_core::threads::{cores, max_threads};
 use rayon::prelude::*;
-
-/// Most worker threads per core a call may ask for (as kick-py's `*_many`).
-pub const THREADS_PER_CORE: usize = 4;
 
 /// Rows a worker takes at a time: large enough that rayon's bookkeeping is
 /// small beside the flights (a few µs each), small enough to balance.
@@ -25,8 +23,8 @@ pub struct Column<'a> {
 /// Solve `rows` flights: row i is `base` with every column's i-th value set.
 /// A row that is refused or fails has its error (its status:
 /// [`FlightError::status`]); the call itself is refused only for columns
-/// of the wrong length or a thread count outside 1..=[`THREADS_PER_CORE`] ×
-/// cores. `threads`: None runs on rayon's global pool.
+/// of the wrong length or a thread count outside 1..=[`max_threads`] (the
+/// workspace's one bound). `threads`: None runs on rayon's global pool.
 pub fn flight_many(
     base: &FlightSpec,
     columns: &[Column],
@@ -52,14 +50,11 @@ pub fn flight_many(
     match threads {
         None => Ok(run()),
         Some(n) => {
-            let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
-            let limit = THREADS_PER_CORE * cores;
-            if !(1..=limit).contains(&n) {
-                return Err(FlightError::InvalidParameter {
-                    name: "threads",
-                    value: n as f64,
-                    requirement: "between 1 and 4 per core",
-                });
+            if n == 0 {
+                return Err(FlightError::InvalidParameter { name: "threads", value: 0.0, requirement: "at least 1" });
+            }
+            if n > max_threads() {
+                return Err(FlightError::TooManyThreads { requested: n, max: max_threads(), cores: cores() });
             }
             let pool = rayon::ThreadPoolBuilder::new().num_threads(n).build().map_err(|_| FlightError::InvalidParameter {
                 name: "threads",
@@ -86,7 +81,8 @@ impl FlightError {
             | FlightError::WrongLength { .. }
             | FlightError::UnknownParameter { .. }
             | FlightError::Conflict { .. }
-            | FlightError::TooManySamples { .. } => Status::Refused,
+            | FlightError::TooManySamples { .. }
+            | FlightError::TooManyThreads { .. } => Status::Refused,
         }
     }
 }
@@ -133,10 +129,13 @@ mod tests {
             Err(FlightError::WrongLength { name: "spin", expected: 6, found: 4 })
         );
         assert!(matches!(flight_many(&base, &[], 1, Some(0)), Err(FlightError::InvalidParameter { name: "threads", .. })));
-        assert!(matches!(
-            flight_many(&base, &[], 1, Some(100_000)),
-            Err(FlightError::InvalidParameter { name: "threads", .. })
-        ));
+        // The workspace's one bound (kick_core::threads), as `--threads` and Python's `threads=`.
+        let max = kick_core::threads::max_threads();
+        assert_eq!(
+            flight_many(&base, &[], 1, Some(max + 1)),
+            Err(FlightError::TooManyThreads { requested: max + 1, max, cores: kick_core::threads::cores() })
+        );
+        assert_eq!(flight_many(&base, &[], 1, Some(max)).unwrap().len(), 1);
         assert_eq!(flight_many(&base, &[], 0, None).unwrap().len(), 0);
         // Unchanged rows: the base flight, every time.
         let out = flight_many(&base, &[], 3, Some(2)).unwrap();

@@ -20,6 +20,10 @@
 //! weighted residuals beyond ~1e154 overflow χ² even where the optimiser's
 //! own norm does not. How the optimiser stopped is a [`FitStop`], printed
 //! in words.
+//!
+//! A caller may cancel ([`fit_with_cancel`]: Python's `kick.fit` on Ctrl-C):
+//! the closure is asked before every model evaluation, and a fit it cancels
+//! stops with [`FitStop::Cancelled`] at the best point evaluated so far.
 
 use crate::data::Observations;
 use crate::model::predict;
@@ -30,7 +34,7 @@ use kick_core::{LawKind, Parameter};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt, TerminationReason};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
 use serde::Serialize;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 
 /// Relative singular value below which JᵀJ is treated as singular: the
 /// finite-difference Jacobian is accurate to about 1e-6 relative, so
@@ -89,6 +93,9 @@ pub enum FitStop {
     NonFinite { quantity: &'static str },
     /// The problem had no parameters, no residuals or inconsistent sizes.
     Malformed { problem: &'static str },
+    /// The caller's cancel check returned true ([`fit_with_cancel`]); the
+    /// report is of the best point evaluated before, without uncertainties.
+    Cancelled,
 }
 
 impl FitStop {
@@ -130,6 +137,7 @@ impl std::fmt::Display for FitStop {
             FitStop::ModelFailed => write!(f, "stopped: the model could not be evaluated"),
             FitStop::NonFinite { quantity } => write!(f, "stopped: non-finite {quantity}"),
             FitStop::Malformed { problem } => write!(f, "stopped: malformed problem ({problem})"),
+            FitStop::Cancelled => write!(f, "stopped: cancelled by the caller (best point so far, no uncertainties)"),
         }
     }
 }
@@ -226,6 +234,11 @@ struct Problem<'a> {
     /// is given 10x that, so the trust region shrinks away from it.
     worst: RefCell<f64>,
     failure: RefCell<Option<IdentifyError>>,
+    /// Asked before every evaluation; true stops the optimiser.
+    cancel: &'a dyn Fn() -> bool,
+    cancelled: Cell<bool>,
+    /// The valid point of smallest residual norm so far: (θ, weighted residuals).
+    best: RefCell<(DVector<f64>, DVector<f64>)>,
 }
 
 impl Problem<'_> {
@@ -246,6 +259,14 @@ impl Problem<'_> {
         ))
     }
 
+    /// Whether the caller cancelled (asked once more unless it already did).
+    fn cancelled(&self) -> bool {
+        if !self.cancelled.get() && (self.cancel)() {
+            self.cancelled.set(true);
+        }
+        self.cancelled.get()
+    }
+
     /// Residuals at θ, or a large penalty if the model fails there.
     fn residuals_or_penalty(&self, theta: &DVector<f64>) -> DVector<f64> {
         match self.weighted(theta) {
@@ -253,6 +274,10 @@ impl Problem<'_> {
                 let norm = r.norm();
                 let mut worst = self.worst.borrow_mut();
                 *worst = worst.max(norm);
+                let mut best = self.best.borrow_mut();
+                if norm < best.1.norm() {
+                    *best = (theta.clone(), r.clone());
+                }
                 r
             }
             Err(e) => {
@@ -306,9 +331,15 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
         self.theta.clone()
     }
     fn residuals(&self) -> Option<DVector<f64>> {
+        if self.cancelled() {
+            return None;
+        }
         Some(self.residuals_or_penalty(&self.theta))
     }
     fn jacobian(&self) -> Option<DMatrix<f64>> {
+        if self.cancelled() {
+            return None;
+        }
         match self.jacobian_at(&self.theta) {
             Ok(j) => Some(j),
             Err(e) => {
@@ -335,18 +366,25 @@ pub const MAX_ONSET_RESTARTS: usize = 20;
 /// Fewer observations than free parameters is refused
 /// ([`IdentifyError::UnderDetermined`]); [`minimise`] allows it.
 pub fn fit(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, IdentifyError> {
-    fit_checked(problem, options, true)
+    fit_checked(problem, options, true, &|| false)
+}
+
+/// As [`fit`], asking `cancel` before every model evaluation (and before
+/// each onset restart): once it returns true the fit stops with
+/// [`FitStop::Cancelled`], reporting the best point evaluated so far.
+pub fn fit_with_cancel(problem: &FitProblem, options: &FitOptions, cancel: &dyn Fn() -> bool) -> Result<FitReport, IdentifyError> {
+    fit_checked(problem, options, true, cancel)
 }
 
 /// As [`fit`], but an under-determined problem is minimised too: for
 /// misfit profiles ([`crate::profile`]), where a χ² minimum that other
 /// parameters reach exactly is the finding. Uncertainties are then `None`.
 pub fn minimise(problem: &FitProblem, options: &FitOptions) -> Result<FitReport, IdentifyError> {
-    fit_checked(problem, options, false)
+    fit_checked(problem, options, false, &|| false)
 }
 
-fn fit_checked(problem: &FitProblem, options: &FitOptions, determined: bool) -> Result<FitReport, IdentifyError> {
-    let mut best = fit_from(problem, options, determined)?;
+fn fit_checked(problem: &FitProblem, options: &FitOptions, determined: bool, cancel: &dyn Fn() -> bool) -> Result<FitReport, IdentifyError> {
+    let mut best = fit_from(problem, options, determined, cancel)?;
     let (Some(index), Some(history)) = (
         problem.free.iter().position(|&p| p == FitParameter::TimeOffset),
         problem.observations.history.as_ref(),
@@ -355,6 +393,9 @@ fn fit_checked(problem: &FitProblem, options: &FitOptions, determined: bool) -> 
     };
     let times = &history.data.times;
     for _ in 0..MAX_ONSET_RESTARTS {
+        if best.stop == FitStop::Cancelled {
+            break;
+        }
         let t0 = best.estimates[index].value;
         // Samples i−1 < t0 ≤ i: move the onset past sample i (later) or i−1 (earlier).
         let i = times.partition_point(|&t| t < t0);
@@ -362,13 +403,29 @@ fn fit_checked(problem: &FitProblem, options: &FitOptions, determined: bool) -> 
         let earlier = (i >= 1).then(|| times[i - 1] - 0.5 * (times[i - 1] - times[i.saturating_sub(2)]));
         let mut improved = false;
         for candidate in [later, earlier].into_iter().flatten() {
+            if cancel() {
+                best.stop = FitStop::Cancelled;
+                best.termination = best.stop.to_string();
+                best.converged = false;
+                break;
+            }
             let mut start = problem.start;
             for e in &best.estimates {
                 start = start.with(e.parameter, e.value)?;
             }
             let restart = FitProblem { start: start.with(FitParameter::TimeOffset, candidate)?, ..problem.clone() };
             // A restart the model cannot compute is no better.
-            let Ok(mut report) = fit_from(&restart, options, determined) else { continue };
+            let Ok(mut report) = fit_from(&restart, options, determined, cancel) else { continue };
+            if report.stop == FitStop::Cancelled {
+                // Stopped inside the restart: the better point, reported as cancelled.
+                if report.chi_square >= best.chi_square {
+                    best.stop = FitStop::Cancelled;
+                    best.termination = best.stop.to_string();
+                    best.converged = false;
+                    best.evaluations += report.evaluations;
+                    break;
+                }
+            }
             if report.chi_square < best.chi_square {
                 report.evaluations += best.evaluations;
                 for (e, first) in report.estimates.iter_mut().zip(&best.estimates) {
@@ -387,7 +444,7 @@ fn fit_checked(problem: &FitProblem, options: &FitOptions, determined: bool) -> 
 
 /// One Levenberg–Marquardt run from `problem.start`; `determined` refuses
 /// fewer observations than free parameters.
-fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool) -> Result<FitReport, IdentifyError> {
+fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel: &dyn Fn() -> bool) -> Result<FitReport, IdentifyError> {
     if problem.free.is_empty() {
         return Err(IdentifyError::NoFreeParameters);
     }
@@ -423,10 +480,14 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool) -> Res
         theta: DVector::from_vec(theta0.clone()),
         worst: RefCell::new(0.0),
         failure: RefCell::new(None),
+        cancel,
+        cancelled: Cell::new(false),
+        best: RefCell::new((DVector::zeros(0), DVector::zeros(0))),
     };
     // The starting point itself must be computable.
     let start_residuals = lm_problem.weighted(&lm_problem.theta)?;
     *lm_problem.worst.borrow_mut() = start_residuals.norm();
+    *lm_problem.best.borrow_mut() = (lm_problem.theta.clone(), start_residuals);
 
     let lm = LevenbergMarquardt::new()
         .with_ftol(options.tolerance)
@@ -434,7 +495,8 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool) -> Res
         .with_gtol(0.0)
         .with_patience(options.patience.max(1));
     let (solved, report) = lm.minimize(lm_problem);
-    let stop = FitStop::of(&report.termination);
+    let cancelled = solved.cancelled.get();
+    let stop = if cancelled { FitStop::Cancelled } else { FitStop::of(&report.termination) };
     let converged = stop.converged();
     match stop {
         FitStop::ModelFailed => {
@@ -449,9 +511,16 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool) -> Res
         }
         _ => {}
     }
-    let theta = solved.theta.clone();
-    let residual_vector = solved.weighted(&theta)?;
-    let jacobian = solved.jacobian_at(&theta)?;
+    // Cancelled: the best point so far, as evaluated, and no Jacobian (2n more solves).
+    let (theta, residual_vector, jacobian) = if cancelled {
+        let (theta, residuals) = solved.best.borrow().clone();
+        (theta, residuals, None)
+    } else {
+        let theta = solved.theta.clone();
+        let residuals = solved.weighted(&theta)?;
+        let jacobian = solved.jacobian_at(&theta)?;
+        (theta, residuals, Some(jacobian))
+    };
     let point = solved.point(&theta)?;
 
     let m = residual_vector.len();
@@ -461,13 +530,13 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool) -> Res
     let residual_variance = (dof > 0).then(|| chi_square / dof as f64);
 
     // (JᵀJ)⁻¹ = V Σ⁻² Vᵀ from the SVD of J; refuse when a direction is unresolved.
-    let svd = jacobian.clone().svd(false, true);
-    let mut singular: Vec<f64> = svd.singular_values.iter().copied().collect();
+    let svd = jacobian.clone().map(|j| j.svd(false, true));
+    let mut singular: Vec<f64> = svd.iter().flat_map(|svd| svd.singular_values.iter().copied()).collect();
     singular.sort_by(|a, b| b.total_cmp(a));
     let largest = singular.first().copied().unwrap_or(0.0);
     let resolved = m >= n && largest > 0.0 && singular.iter().all(|&s| s > RANK_TOLERANCE * largest);
-    let covariance = match (resolved, residual_variance, svd.v_t.as_ref()) {
-        (true, Some(s2), Some(v_t)) => {
+    let covariance = match (resolved, residual_variance, svd.as_ref().and_then(|svd| svd.v_t.as_ref().map(|v_t| (svd, v_t)))) {
+        (true, Some(s2), Some((svd, v_t))) => {
             let mut inv = DMatrix::zeros(n, n);
             for (k, &sv) in svd.singular_values.iter().enumerate() {
                 let row = v_t.row(k);
@@ -527,7 +596,7 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool) -> Res
         termination: stop.to_string(),
         converged,
         evaluations: report.number_of_evaluations,
-        jacobian: (0..m).map(|i| jacobian.row(i).iter().copied().collect()).collect(),
+        jacobian: jacobian.map_or_else(Vec::new, |j| (0..m).map(|i| j.row(i).iter().copied().collect()).collect()),
     };
     check_finite(&report)?;
     Ok(report)

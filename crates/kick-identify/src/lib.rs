@@ -29,7 +29,7 @@ pub mod table2;
 pub mod validation;
 
 pub use data::{Channel, FitSpec, HistoryData, Observable, Observations, ScalarObservation};
-pub use fit::{fit, Estimate, FitOptions, FitProblem, FitReport, FitStop};
+pub use fit::{fit, fit_with_cancel, Estimate, FitOptions, FitProblem, FitReport, FitStop};
 pub use parameter::{Coordinate, FitParameter, ModelPoint};
 
 use kick_core::KickError;

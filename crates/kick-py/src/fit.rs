@@ -5,7 +5,8 @@ use crate::{guard, value_error};
 use kick_core::parameters::{self, SetParameter};
 use kick_core::ScenarioSpec;
 use kick_identify::data::{Channel, HistoryData, WeightedHistory};
-use kick_identify::fit::{fit as identify, FitOptions, FitProblem};
+use kick_identify::fit::{fit_with_cancel, FitOptions, FitProblem};
+use std::sync::atomic::Ordering;
 use kick_identify::{FitSpec, Observations};
 use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
@@ -97,7 +98,11 @@ pub fn fit<'py>(
         let start = spec.start(SOURCE).map_err(value_error)?;
         let free = spec.free_parameters().map_err(value_error)?;
         let problem = FitProblem { start, free, observations };
-        let report = py.detach(|| identify(&problem, &FitOptions::default())).map_err(value_error)?;
+        // Ctrl-C stops the optimiser at its next model evaluation (KeyboardInterrupt).
+        let report = crate::interruptible(py, |cancel| {
+            fit_with_cancel(&problem, &FitOptions::default(), &|| cancel.load(Ordering::Relaxed))
+        })?
+        .map_err(value_error)?;
 
         let out = PyDict::new(py);
         let names: Vec<&str> = report.estimates.iter().map(|e| e.parameter.name()).collect();

@@ -9,6 +9,7 @@
 //! the library error's message (the text the command line prints); a panic
 //! never crosses into Python ([`guard`]).
 
+mod bounce;
 mod bridge;
 mod convert;
 mod fit;
@@ -208,9 +209,13 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(many::simulate_many, m)?)?;
     m.add_function(wrap_pyfunction!(many::simulate3d_many, m)?)?;
     m.add_function(wrap_pyfunction!(many::many_input, m)?)?;
+    m.add_function(wrap_pyfunction!(params::whole_number_py, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(flight::flight, m)?)?;
     m.add_function(wrap_pyfunction!(flight::flight_many, m)?)?;
+    m.add_function(wrap_pyfunction!(bounce::bounce, m)?)?;
+    m.add_function(wrap_pyfunction!(bounce::bounce_many, m)?)?;
+    m.add_function(wrap_pyfunction!(params::bounce_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(params::declared, m)?)?;
     m.add_function(wrap_pyfunction!(params::keywords, m)?)?;
     m.add("STATUS", params::status_codes(m.py())?)?;
@@ -221,6 +226,7 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SOLVERS", SolverChoice::NAMES.to_vec())?;
     m.add("SOLVERS_3D", kick_3d::Solver3d::NAMES.to_vec())?;
     m.add("LAWS", LawKind::ALL.map(LawKind::name).to_vec())?;
+    m.add("BOUNCE_COLUMNS", bounce::BOUNCE_COLUMNS.iter().map(|(n, _, u)| (*n, *u)).collect::<Vec<_>>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

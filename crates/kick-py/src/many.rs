@@ -4,7 +4,7 @@
 //! that fails gets a status code (`kick_core::Status::code`), NaN outcomes
 //! and its message, not an exception.
 
-use crate::params::{described, real_array, LawSpec, MAX_AXES};
+use crate::params::{described, real_array, MAX_AXES};
 use crate::{guard, value_error};
 use kick_3d::{KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
@@ -21,9 +21,13 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// Rows one parallel task solves in turn (as `kick run` chunks its rows).
 const CHUNK: usize = 1024;
 
-/// A model the rows are solved with: its output columns and one solve.
-trait Model: Sync {
-    type Spec: LawSpec + Copy + Send + Sync;
+/// A model the rows are solved with: its keywords, its output columns and one solve.
+pub(crate) trait Model: Sync {
+    type Spec: Clone + Send + Sync;
+    /// The declaration a keyword names, or the library's error naming the nearby ones.
+    fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef>;
+    /// Set a declared parameter; shapes were checked when the inputs were made.
+    fn set(&self, spec: &mut Self::Spec, parameter: &'static ParameterDef, value: Value);
     /// Output columns: name and width (1, or 3 for a vector).
     fn columns(&self) -> &[(String, usize)];
     /// Solve one row into `row` (the columns' values, vectors expanded);
@@ -44,8 +48,21 @@ impl Model1d {
     }
 }
 
+/// A model whose spec holds declared levels of kick-core's list.
+macro_rules! declared_levels {
+    ($spec:ty) => {
+        fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef> {
+            parameters::find_at(<$spec as SetParameter>::LEVELS, name).map_err(value_error)
+        }
+        fn set(&self, spec: &mut $spec, parameter: &'static ParameterDef, value: Value) {
+            let _ = spec.set_parameter(parameter, value);
+        }
+    };
+}
+
 impl Model for Model1d {
     type Spec = ScenarioSpec;
+    declared_levels!(ScenarioSpec);
     fn columns(&self) -> &[(String, usize)] {
         &self.columns
     }
@@ -101,6 +118,7 @@ impl Model3d {
 
 impl Model for Model3d {
     type Spec = KickSpec;
+    declared_levels!(KickSpec);
     fn columns(&self) -> &[(String, usize)] {
         &self.columns
     }
@@ -212,10 +230,9 @@ fn solve_chunk<M: Model>(
             break;
         }
         unravel(start + j, shape, &mut index);
-        let mut spec = *base;
+        let mut spec = base.clone();
         for input in inputs {
-            // Shapes were checked when the inputs were made.
-            let _ = spec.set_parameter(input.parameter, input.value(&index, &mut scratch));
+            model.set(&mut spec, input.parameter, input.value(&index, &mut scratch));
         }
         let result = model.solve(&spec, &mut row);
         let mut at = 0;
@@ -287,7 +304,7 @@ pub fn many_input<'py>(function: &str, name: &str, value: &Bound<'py, PyAny>) ->
 
 /// The whole call: inputs from the keywords, outputs allocated, rows solved
 /// without the GIL, the dict of arrays.
-fn run_many<'py, M: Model>(
+pub(crate) fn run_many<'py, M: Model>(
     py: Python<'py>,
     model: &M,
     base: M::Spec,
@@ -299,7 +316,7 @@ fn run_many<'py, M: Model>(
     if let Some(arrays) = arrays {
         for (key, value) in arrays.iter() {
             let name: String = key.extract()?;
-            let parameter = parameters::find_at(M::Spec::LEVELS, &name).map_err(value_error)?;
+            let parameter = model.parameter(&name)?;
             if !value.is_none() {
                 given.push((parameter, input_array(parameter, &value)?));
             }

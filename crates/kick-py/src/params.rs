@@ -109,6 +109,14 @@ pub fn whole_number(name: &str, value: &Bound<'_, PyAny>, range: std::ops::Range
     index.extract()
 }
 
+/// `whole_number` for Python code of the package (`kick.dask`'s `chunks`):
+/// one rule for counts, bools refused.
+#[pyfunction]
+#[pyo3(name = "whole_number", signature = (name, value, low = 0))]
+pub fn whole_number_py(name: &str, value: &Bound<'_, PyAny>, low: usize) -> PyResult<usize> {
+    whole_number(name, value, low..=usize::MAX, "")
+}
+
 /// `whole_number` for an optional keyword (None: not given).
 pub fn optional_whole_number(
     name: &str,
@@ -120,9 +128,9 @@ pub fn optional_whole_number(
 }
 
 /// The `threads` keyword: None (rayon's pool) or 1 to
-/// [`kick_study::limits::max_threads`], as `--threads` is bounded.
+/// [`kick_core::threads::max_threads`], as `--threads` is bounded.
 pub fn threads(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
-    use kick_study::limits::{cores, max_threads, THREADS_PER_CORE};
+    use kick_core::threads::{cores, max_threads, THREADS_PER_CORE};
     let limit = format!(" ({THREADS_PER_CORE} per core, {} cores here)", cores());
     optional_whole_number("threads", value, 1..=max_threads(), &limit)
 }
@@ -238,6 +246,16 @@ pub fn declared(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     Ok(list)
 }
 
+/// kick-bounce's declared parameters (`kick bounce`'s flags), in declaration order.
+#[pyfunction]
+pub fn bounce_parameters(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    let list = PyList::empty(py);
+    for p in kick_bounce::BOUNCE_PARAMETERS.iter() {
+        list.append(declaration(py, p)?)?;
+    }
+    Ok(list)
+}
+
 /// The parameter keywords of a function: `simulate`, `simulate3d`, `flight`,
 /// their `_many` forms, `history` or `history3d`.
 #[pyfunction]
@@ -246,6 +264,7 @@ pub fn keywords(function: &str) -> PyResult<Vec<&'static str>> {
         "simulate" | "simulate_many" | "history" => parameters::at_levels(ScenarioSpec::LEVELS).map(|p| p.name).collect(),
         "simulate3d" | "simulate3d_many" | "history3d" => parameters::at_levels(KickSpec::LEVELS).map(|p| p.name).collect(),
         "flight" | "flight_many" => kick_flight::spec::FLIGHT_PARAMETERS.iter().map(|p| p.name).collect(),
+        "bounce" | "bounce_many" => kick_bounce::BOUNCE_PARAMETERS.iter().map(|p| p.name).collect(),
         other => return Err(value_error(format!("no function `{other}` takes declared parameters"))),
     })
 }

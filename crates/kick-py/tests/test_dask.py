@@ -50,8 +50,13 @@ def test_3d_chunks_equal_the_local_call(client):
 
 def test_scalars_and_bad_input(client):
     assert_same(kick.dask.simulate_many(client, foot_mass=2.0), kick.simulate_many(foot_mass=2.0))
-    with pytest.raises(ValueError, match="chunks = 0"):
+    with pytest.raises(ValueError, match="`chunks` = 0: must be between 1"):
         kick.dask.simulate_many(client, chunks=0, foot_mass=[1.0])
+    # A bool is an int in Python: refused as every count of the package refuses it.
+    for chunks, got in [(True, "bool True"), (np.True_, "bool"), (2.0, "float 2.0")]:
+        with pytest.raises(TypeError, match=f"`chunks` takes a whole number \\(int\\), got {got}"):
+            kick.dask.simulate_many(client, chunks=chunks, foot_mass=[1.0, 2.0])
+    assert_same(kick.dask.simulate_many(client, chunks=np.int64(1), foot_mass=[1.0, 2.0]), kick.simulate_many(foot_mass=[1.0, 2.0]))
     with pytest.raises(ValueError, match="unknown parameter `foot_mas`"):
         kick.dask.simulate_many(client, foot_mas=[1.0])
 

@@ -12,7 +12,16 @@ import pytest
 CALLS = {
     "simulate_many": ("np.linspace(1.0, 8.0, 20_000_000)", "kick.simulate_many(foot_mass=x, threads=1)"),
     "simulate3d_many": ("np.linspace(0.0, 0.05, 2_000_000)", "kick.simulate3d_many(offset=x, threads=1)"),
+    # A fit of six parameters to a reversed pulse of 200,000 samples: 22 s in a
+    # debug build; the optimiser asks the cancel check before every evaluation.
+    "fit": (
+        "kick.history(samples=200_000, solver='accurate')",
+        "kick.fit(x['time'], x['force'][::-1].copy(), sigma=25.0, stiffness=3e5, foot_mass=2.0, "
+        "free=['stiffness', 'damping', 'foot_mass', 'exponent', 'foot_speed', 'time_offset'])",
+    ),
 }
+# Seconds between the start of a call and Ctrl-C (the fit is the shortest call).
+WAIT = {"fit": 0.3}
 
 
 @pytest.mark.skipif(sys.platform == "win32", reason="SIGINT to a child process")
@@ -23,7 +32,7 @@ def test_ctrl_c_interrupts_a_long_call(call):
     child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         assert child.stdout.readline() == "solving\n"
-        time.sleep(1.0)
+        time.sleep(WAIT.get(call, 1.0))
         child.send_signal(signal.SIGINT)
         sent = time.monotonic()
         out, err = child.communicate(timeout=10)

@@ -9,10 +9,8 @@ use kick_core::{short, Spacing, HISTORY_COLUMNS, OBSERVABLES};
 use std::ops::Range;
 use std::path::Path;
 
-/// Most worker threads on any machine.
-pub const MAX_THREADS: usize = 1024;
-/// Threads per available core allowed (more only adds switching).
-pub const THREADS_PER_CORE: usize = 4;
+pub use kick_core::threads::{cores, max_threads, MAX_THREADS, THREADS_PER_CORE};
+
 /// Runs from this many estimated bytes, or [`LARGE_OUTPUT_ROWS`] rows, on
 /// state their size before starting.
 pub const LARGE_OUTPUT_BYTES: u64 = 1 << 30;
@@ -49,16 +47,6 @@ pub fn bytes(n: u64) -> String {
         n if n >= 1e3 => format!("{} kB", short(n / 1e3)),
         n => format!("{n} B"),
     }
-}
-
-/// Cores this process may use (1 if unknown).
-pub fn cores() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get())
-}
-
-/// Most threads allowed here: [`THREADS_PER_CORE`] per core, at most [`MAX_THREADS`].
-pub fn max_threads() -> usize {
-    (THREADS_PER_CORE * cores()).clamp(1, MAX_THREADS)
 }
 
 /// Use `requested` rayon workers for the rest of the process (default: one

@@ -91,3 +91,20 @@ fn values_beyond_a_ball_are_refused_by_name() {
         assert!(err.contains(name) && !err.contains("integration failed"), "{args:?}: {err}");
     }
 }
+
+/// Valid values whose normal contact leaves double precision are refused
+/// naming `kick bounce`'s own flags, never the 1D kick's (`foot_mass`,
+/// `foot_speed`, `drive_force`), which `kick bounce` does not have.
+#[test]
+fn bounce_out_of_range_names_its_own_flags() {
+    for (args, flag) in [
+        (&["bounce", "--speed", "5", "--ball-mass", "1e-300"][..], "--ball-mass"),
+        (&["bounce", "--drop-height", "1e300"][..], "--drop-height"),
+        (&["bounce", "--speed", "5", "--gravity", "1e300"][..], "--gravity"),
+    ] {
+        let out = kick(args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(flag) && !err.contains("foot") && !err.contains("drive_force"), "{args:?}: {err}");
+    }
+}

@@ -80,6 +80,8 @@ fn simulate3d_refuses_bad_input_by_name() {
         (vec!["simulate3d", "--ball-inertia", "1"], "ball_inertia"),
         (vec!["simulate3d", "--friction", "-1"], "friction"),
         (vec!["simulate3d", "--solver", "rapier", "--dt", "0"], "dt"),
+        // A step the budget cannot cover is refused up front, naming the flag.
+        (vec!["simulate3d", "--solver", "rapier", "--dt", "1e-10"], "`--dt`"),
         (vec!["simulate3d", "--foot-inertia", "1,2"], "foot-inertia"),
         // The flag given is blamed, not the inner half-extent it would make negative.
         (vec!["simulate3d", "--border-radius", "0.04"], "border_radius"),

@@ -108,3 +108,46 @@ fn covariance_from_correlation_and_uncertainties() {
     assert_eq!(c[0][1], rho[0][1] * s[0] * s[1]);
     assert_eq!(c[0][1], c[1][0]);
 }
+
+/// A cancel check that says yes after N evaluations stops the fit there
+/// (Python's `kick.fit` on Ctrl-C): stop `Cancelled`, not converged, the
+/// check not asked again, and the report is of the best point evaluated,
+/// its χ² the misfit an independent evaluation gives there, no larger than
+/// the start's; no uncertainties (no Jacobian at a point the optimiser left).
+#[test]
+fn a_cancel_after_n_evaluations_stops_with_cancelled() {
+    use kick_identify::fit::{fit_with_cancel, misfit};
+    use std::cell::Cell;
+    let solver = Accurate::default();
+    let truth = solver.solve(&Scenario::baseline().with(Parameter::FootMass, 1.5).unwrap().with(Parameter::Stiffness, 2e6).unwrap()).unwrap();
+    let observations = vec![
+        exit_speed(truth.v_ball_out, 0.01),
+        ScalarObservation { observable: Observable::ContactTime, value: truth.contact_time, sigma: 1e-6 },
+        ScalarObservation { observable: Observable::PeakForce, value: truth.peak_force, sigma: 1.0 },
+    ];
+    let p = problem(&[Parameter::FootMass, Parameter::Stiffness], observations);
+    let whole = fit(&p, &FitOptions::default()).unwrap();
+    let n = 3;
+    assert!(whole.converged && whole.evaluations > n + 1, "{whole:?}");
+    let asked = Cell::new(0usize);
+    let cancel = || {
+        asked.set(asked.get() + 1);
+        asked.get() > n
+    };
+    let report = fit_with_cancel(&p, &FitOptions::default(), &cancel).unwrap();
+    assert_eq!(report.stop, FitStop::Cancelled);
+    assert!(!report.converged && report.termination.starts_with("stopped: cancelled"), "{}", report.termination);
+    assert_eq!(asked.get(), n + 1);
+    assert!(report.evaluations <= n + 1, "{}", report.evaluations);
+    let mut at = p.start;
+    for e in &report.estimates {
+        assert!(e.standard_uncertainty.is_none());
+        at = at.with(e.parameter, e.value).unwrap();
+    }
+    let independent = misfit(&solver, &at, &p.observations).unwrap();
+    assert!((report.chi_square - independent).abs() <= 1e-12 * independent, "{} vs {independent}", report.chi_square);
+    assert!(report.chi_square <= misfit(&solver, &p.start, &p.observations).unwrap());
+    assert!(report.chi_square > whole.chi_square);
+    // A check that never says yes changes nothing.
+    assert_eq!(fit_with_cancel(&p, &FitOptions::default(), &|| false).unwrap(), whole);
+}

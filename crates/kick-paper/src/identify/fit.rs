@@ -121,6 +121,10 @@ pub struct Table2Fits {
 /// file (Brent roots); `out`: the fits (HDF5) beside the values of the
 /// scenario file `scenarios`.
 pub fn table2(write: Option<&Path>, out: Option<&Path>, scenarios: &Path) -> Result<Table2Fits, String> {
+    if let Some(path) = out {
+        let inputs: Vec<&Path> = std::iter::once(scenarios).chain(write).collect();
+        crate::output::check_output(path, "--out", "h5", &inputs).map_err(|e| e.to_string())?;
+    }
     let mut written = Vec::new();
     if let Some(path) = write {
         let file = kick_compliant::table2::fit().map_err(|e| e.to_string())?;

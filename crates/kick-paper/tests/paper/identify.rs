@@ -159,3 +159,30 @@ fn fit_and_profile_h5_equal_independent_computations() {
     assert!(dir.join("identifiability.png").exists() && !dir.join("identifiability.json").exists());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `kick fit table2 --out` goes through the outputs' one check before any
+/// fit: an output that is the scenario file (or a second name of it), that
+/// does not end in `.h5`, or that is a directory is refused naming `--out`,
+/// and the scenario file is left as it was.
+#[test]
+fn fit_table2_out_refuses_an_input_a_wrong_extension_and_a_directory() {
+    let dir = scratch("fit-table2-out");
+    let scenarios = dir.join("table2.toml");
+    std::fs::copy(experiments().join("table2.toml"), &scenarios).unwrap();
+    let before = std::fs::read(&scenarios).unwrap();
+    let link = dir.join("same.h5");
+    std::fs::hard_link(&scenarios, &link).unwrap();
+    let subdirectory = dir.join("out.h5");
+    std::fs::create_dir(&subdirectory).unwrap();
+    for (out, says) in [
+        (scenarios.clone(), "must end in `.h5`"),
+        (dir.join("fit.csv"), "must end in `.h5`"),
+        (link.clone(), "is the input"),
+        (subdirectory.clone(), "is a directory"),
+    ] {
+        let error = kick_paper::identify::table2(None, Some(&out), &scenarios).map(|_| ()).unwrap_err();
+        assert!(error.contains("--out") && error.contains(says), "{}: {error}", out.display());
+        assert_eq!(std::fs::read(&scenarios).unwrap(), before, "{}", out.display());
+    }
+    assert!(!dir.join("fit.csv").exists());
+}

@@ -17,6 +17,8 @@ history3d                 uniform time history of one 3D kick, accurate path (di
 fit                       identify parameters from a measured history (``kick fit data``)
 flight                    the ball's flight after the kick (kick-flight)
 flight_many               many flights from arrays (numpy broadcasting), in parallel in Rust
+bounce                    the ball alone on a rigid plate (``kick bounce``; kick-bounce)
+bounce_many               many bounces from arrays (numpy broadcasting), in parallel in Rust
 kick.dask.simulate_many   ``simulate_many`` spread over a dask ``distributed`` cluster
 
 Bad input raises ``ValueError`` with the command line's message. A keyword
@@ -33,6 +35,7 @@ import inspect as _inspect
 
 from . import _kick
 from ._kick import (
+    BOUNCE_COLUMNS,
     CHANNELS,
     HISTORY_COLUMNS,
     HISTORY_COLUMNS_3D,
@@ -54,7 +57,10 @@ __all__ = [
     "fit",
     "flight",
     "flight_many",
+    "bounce",
+    "bounce_many",
     "PARAMETERS",
+    "BOUNCE_PARAMETERS",
     "STATUS",
     "OBSERVABLES",
     "HISTORY_COLUMNS",
@@ -69,11 +75,15 @@ __all__ = [
 #: Every declared parameter (1D, 3D, flight): dicts with name, symbol, unit,
 #: level, shape, default, default_text, doc, requirement.
 PARAMETERS = tuple(_kick.parameters())
+#: The parameters of ``bounce`` (kick-bounce's declared list, ``kick bounce``'s flags).
+BOUNCE_PARAMETERS = tuple(_kick.bounce_parameters())
 
 
 def keywords(function: str) -> list[dict]:
     """The declared parameters a function takes as keywords, in declaration order."""
     names = _kick.keywords(function)
+    if function in ("bounce", "bounce_many"):
+        return [p for n in names for p in BOUNCE_PARAMETERS if p["name"] == n]
     flight = function in ("flight", "flight_many")
     return [p for n in names for p in PARAMETERS if p["name"] == n and (p["level"] == "flight") == flight]
 
@@ -357,6 +367,46 @@ _declare(
     "(``kick_flight::flight_many``).\n" + _MANY_DOC.replace("1 numerical failure, 2 trapped", "1 numerical failure")
     .replace("0 separated", "0 landed"),
     "Outcomes\n--------\n" + _outputs_docs(_FLIGHT_MANY_OUTPUTS),
+)
+
+def bounce(**params):
+    return _kick.bounce(**params)
+
+
+_bounce_law = _inspect.Parameter("law", _KW, default="shell")
+_BOUNCE_LAW_DOC = """
+law : str, default "shell"
+    The ball's law, as ``kick bounce --law``: shell (the pressurised ball) or a
+    law of the kick's family (power-law, hunt-crossley, ...).
+"""
+
+_declare(
+    bounce,
+    "bounce",
+    [_bounce_law],
+    [],
+    "The ball alone on a rigid, massive plate (``kick bounce``; ``kick_bounce::run``).\n\n"
+    "Fired square or oblique, with or without spin: give ``speed`` (and ``angle``,\n"
+    "``spin``) or ``drop_height``.\n" + _BOUNCE_LAW_DOC + "\n"
+    "Returns the dict ``kick bounce --format json`` prints: restitution (normal),\n"
+    "contact_time (s), peak_force (N), peak_force_time (s), max_compression (m),\n"
+    "max_compression_time (s), normal_impulse (N s), impact_velocity, exit_velocity\n"
+    "(lists of 3, m/s), exit_spin (list of 3, rad/s), tangential (no_slip, grips\n"
+    "or slides), rebound_height (m, with drop_height), evaluations.",
+)
+
+
+def bounce_many(**arrays):
+    return _kick.bounce_many(**arrays)
+
+
+_declare(
+    bounce_many,
+    "bounce_many",
+    [_bounce_law],
+    [_threads],
+    "Solve many bounces, as ``bounce`` does, from arrays.\n" + _BOUNCE_LAW_DOC + _MANY_DOC.replace(", 2 trapped", ""),
+    "Outcomes\n--------\n" + _outputs_docs(BOUNCE_COLUMNS),
 )
 
 from . import dask  # noqa: E402  (kick.dask.simulate_many; needs `distributed` only when called)

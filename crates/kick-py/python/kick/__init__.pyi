@@ -16,6 +16,8 @@ CHANNELS: list[tuple[str, str]]
 SOLVERS: list[str]
 SOLVERS_3D: list[str]
 LAWS: list[str]
+BOUNCE_PARAMETERS: tuple[dict[str, Any], ...]
+BOUNCE_COLUMNS: list[tuple[str, str]]
 
 def keywords(function: str) -> list[dict[str, Any]]: ...
 
@@ -245,3 +247,52 @@ def flight_many(
     threads: int | np.integer | None = ...,
 ) -> dict[str, Any]:
     """Solve many flights, as ``flight`` does, from arrays (``kick_flight::flight_many``)."""
+
+def bounce(
+    *,
+    law: str = ...,
+    stiffness: float | None = ...,
+    damping: float | None = ...,
+    exponent: float | None = ...,
+    restitution: float | None = ...,
+    speed: float | None = ...,
+    angle: float | None = ...,
+    spin: tuple[float, float, float] | Sequence[float] | None = ...,
+    drop_height: float | None = ...,
+    ball_mass: float | None = ...,
+    ball_radius: float | None = ...,
+    ball_inertia: float | None = ...,
+    friction: float | None = ...,
+    tangential_restitution: float | None = ...,
+    gravity: float | None = ...,
+    inflation_pressure: float | None = ...,
+    gas_exponent: float | None = ...,
+    shell_stiffness: float | None = ...,
+    shell_loss: float | None = ...,
+) -> dict[str, Any]:
+    """The ball alone on a rigid, massive plate (``kick bounce``; ``kick_bounce::run``)."""
+
+def bounce_many(
+    *,
+    law: str = ...,
+    stiffness: ArrayLike | None = ...,
+    damping: ArrayLike | None = ...,
+    exponent: ArrayLike | None = ...,
+    restitution: ArrayLike | None = ...,
+    speed: ArrayLike | None = ...,
+    angle: ArrayLike | None = ...,
+    spin: ArrayLike | None = ...,
+    drop_height: ArrayLike | None = ...,
+    ball_mass: ArrayLike | None = ...,
+    ball_radius: ArrayLike | None = ...,
+    ball_inertia: ArrayLike | None = ...,
+    friction: ArrayLike | None = ...,
+    tangential_restitution: ArrayLike | None = ...,
+    gravity: ArrayLike | None = ...,
+    inflation_pressure: ArrayLike | None = ...,
+    gas_exponent: ArrayLike | None = ...,
+    shell_stiffness: ArrayLike | None = ...,
+    shell_loss: ArrayLike | None = ...,
+    threads: int | np.integer | None = ...,
+) -> dict[str, Any]:
+    """Solve many bounces, as ``bounce`` does, from arrays."""

@@ -30,8 +30,8 @@ def _solve(function: str, options: dict, arrays: dict) -> dict:
 
 
 def _run(function, client, chunks, options, arrays):
-    if not (isinstance(chunks, (int, np.integer)) and chunks >= 1):
-        raise ValueError(f"chunks = {chunks!r}: must be a whole number of rows >= 1")
+    # As every count of the package: an int or numpy integer, not a bool or float.
+    chunks = _kick.whole_number("chunks", chunks, 1)
     shapes = {p["name"]: p["shape"] for p in kick.keywords(function)}
     given = {}
     row_shapes = []
