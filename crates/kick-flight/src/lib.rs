@@ -44,6 +44,7 @@
 //! A flight that has not landed after [`HORIZON_FACTOR`] × 2|v0|/g (or the
 //! horizon set by [`Flight::with_horizon`]) is refused.
 
+pub mod aim;
 pub mod air;
 pub mod coefficients;
 /// The integrator lives in kick-core (kick-3d steps with it too).
@@ -54,6 +55,7 @@ pub mod solve;
 pub mod spec;
 pub mod validation;
 
+pub use aim::{aim_launch, aim_with, AimError, AimSolution, LaunchFree, Scene, Wall};
 pub use air::Air;
 pub use many::{flight_many, Column};
 pub use coefficients::{DragModel, LiftModel};

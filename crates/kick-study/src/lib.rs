@@ -15,6 +15,7 @@
 //! - [`history`]: what a time history samples and the sink its rows stream into.
 //! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 
+pub mod aim;
 pub mod checks;
 pub mod columns;
 pub mod experiment;
