@@ -177,7 +177,13 @@ fn aim_kick(target: [f64; 3], wall: Wall, request: &AimRequest) -> Result<AimRep
         Some(names) => names.iter().map(|n| KickFree::from_name(n)).collect::<Result<Vec<_>, _>>().map_err(aim_error)?,
     };
     check_unique(&free, KickFree::name).map_err(aim_error)?;
-    After::Kick3d.refuse_set(&request.flight)?;
+    if let Some(p) = FlightParameter::ALL.into_iter().find(|&p| After::Kick3d.sets(p) && request.flight.is_set(p)) {
+        return Err(format!(
+            "flight parameter `{}` is set by the 3D kick and cannot be given with --from kick (flag {})",
+            p.name(),
+            p.def().flag()
+        ));
+    }
     if let Some(d) = request.flight.distance {
         return Err(aim_error(AimError::Invalid { name: "distance", values: vec![d], requirement: "left out: the target's X is the goal plane" }));
     }

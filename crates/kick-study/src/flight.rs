@@ -41,7 +41,7 @@ impl After {
     }
 
     /// Refuse a parameter of `rest` that the kick sets.
-    pub(crate) fn refuse_set(self, rest: &FlightSpec) -> Result<(), String> {
+    fn refuse_set(self, rest: &FlightSpec) -> Result<(), String> {
         match FlightParameter::ALL.into_iter().find(|&p| self.sets(p) && rest.is_set(p)) {
             Some(p) => Err(format!("flight parameter `{}` is set by the {} and cannot be given", p.name(), self.name())),
             None => Ok(()),
