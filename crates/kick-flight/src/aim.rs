@@ -169,6 +169,9 @@ pub struct AimSolution {
     pub wall_crossing: [f64; 2],
     /// The flight to its landing, crossing the goal plane.
     pub outcome: FlightOutcome,
+    /// The flight flown (its launch, ball, air, coefficients; crossing the goal plane).
+    #[serde(skip)]
+    pub flight: Flight,
     /// Residual evaluations over all starts (each two flights), Jacobians included.
     pub evaluations: usize,
     /// Starts tried (the last one succeeded).
@@ -374,6 +377,7 @@ pub fn aim_with(scene: &Scene, free: &[Free], restarts: &[Vec<f64>], launch: &La
                 wall_clearance: t.clearance,
                 wall_crossing: t.wall,
                 outcome: t.outcome,
+                flight: flight.with_distance(Some(scene.target[0]))?,
                 evaluations,
                 starts: tried,
             });
