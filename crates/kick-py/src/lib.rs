@@ -211,6 +211,7 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(flight::flight, m)?)?;
     m.add_function(wrap_pyfunction!(flight::flight_many, m)?)?;
+    m.add_function(wrap_pyfunction!(flight::aim, m)?)?;
     m.add_function(wrap_pyfunction!(params::declared, m)?)?;
     m.add_function(wrap_pyfunction!(params::keywords, m)?)?;
     m.add("STATUS", params::status_codes(m.py())?)?;

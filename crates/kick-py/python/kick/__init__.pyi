@@ -245,3 +245,29 @@ def flight_many(
     threads: int | np.integer | None = ...,
 ) -> dict[str, Any]:
     """Solve many flights, as ``flight`` does, from arrays (``kick_flight::flight_many``)."""
+
+def aim(
+    target: tuple[float, float, float] | Sequence[float],
+    *,
+    wall: tuple[float, float, float] | Sequence[float] | None = ...,
+    from_: str = ...,
+    free: Sequence[str] | None = ...,
+    speed: float | None = ...,
+    launch_angle: float | None = ...,
+    azimuth: float | None = ...,
+    launch_velocity: tuple[float, float, float] | Sequence[float] | None = ...,
+    spin: tuple[float, float, float] | Sequence[float] | None = ...,
+    ball_mass: float | None = ...,
+    ball_radius: float | None = ...,
+    gravity: float | None = ...,
+    air_density: float | None = ...,
+    temperature: float | None = ...,
+    pressure: float | None = ...,
+    altitude: float | None = ...,
+    drag_coefficient: float | None = ...,
+    ball_panels: float | None = ...,
+    lift_coefficient: float | None = ...,
+    spin_decay: float | None = ...,
+    distance: float | None = ...,
+) -> dict[str, Any]:
+    """Aim a free kick, as ``kick aim``: the launch (or the 3D kick) that clears"""
