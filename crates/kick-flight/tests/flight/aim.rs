@@ -145,3 +145,25 @@ fn bad_scenes_are_refused_by_name() {
         Err(AimError::Flight(kick_flight::FlightError::InvalidParameter { name: "air_density", .. }))
     ));
 }
+
+/// A low shot at the goal's centre behind a high wall: the path the target
+/// alone gives goes through the wall, so the wall's residual has to lift it.
+#[test]
+fn the_wall_lifts_a_path_that_would_go_through_it() {
+    let target = [25.0, 0.3, 0.8];
+    let high = Wall { distance: 9.15, height: 2.2, half_width: 1.0 };
+    let no_wall = Wall { height: 0.0, half_width: 0.0, ..high };
+    let fixed = FlightSpec::default();
+    let free = solve_or_panic(aim_launch(target, no_wall, &LaunchFree::DEFAULT, &fixed));
+    let r = kick_core::DEFAULT_BALL_RADIUS;
+    assert!(free.wall_crossing[1] - r < high.height && free.wall_crossing[0].abs() - r < high.half_width, "{:?}", free.wall_crossing);
+    let over = solve_or_panic(aim_launch(target, high, &LaunchFree::DEFAULT, &fixed));
+    check_reflown(&over, target, high);
+    assert!(over.wall_crossing[1] - r >= high.height, "{:?}", over.wall_crossing);
+    // From the first start, where the target alone leads into the wall (no restart needed).
+    assert_eq!(over.starts, 1);
+}
+
+fn solve_or_panic(r: Result<AimSolution, AimError>) -> AimSolution {
+    r.unwrap_or_else(|e| panic!("{e}"))
+}
