@@ -177,6 +177,9 @@ struct AimArgs {
     /// The declared flight parameters: fixed values, or the starts of free ones
     #[command(flatten)]
     flight: Flags<FlightSpec>,
+    /// With --from kick: the kick's parameters (--foot-speed: fixed, or the start when free)
+    #[command(flatten)]
+    kick: Flags<flags::AimKick>,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,
 }
@@ -613,7 +616,11 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
                 from: Some(AimFrom::from_name(&a.from)?),
                 free: a.free,
                 flight: a.flight.spec(),
-                kick: kick_3d::KickSpec::default(),
+                // Nothing given: the default kick (so --from launch can refuse a kick flag given).
+                kick: match (a.kick.given.is_empty(), a.kick.law) {
+                    (true, None | Some(kick_core::LawKind::PowerLaw)) => kick_3d::KickSpec::default(),
+                    _ => a.kick.spec().0,
+                },
             };
             out.print(a.format, &aim(&request)?)
         }

@@ -162,7 +162,7 @@ pub fn aim(request: &AimRequest) -> Result<AimReport, String> {
                 Some(names) => names.iter().map(|n| LaunchFree::from_name(n)).collect::<Result<Vec<_>, _>>().map_err(aim_error)?,
             };
             if request.kick != KickSpec::default() {
-                return Err("kick parameters apply only with --from kick".into());
+                return Err("kick parameters (and --law) apply only with --from kick".into());
             }
             let solution = aim_launch(target, wall, &free, &request.flight).map_err(aim_error)?;
             Ok(AimReport { from, solution, kick: None })

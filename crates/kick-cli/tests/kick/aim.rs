@@ -63,6 +63,9 @@ fn bad_input_names_the_flag() {
         (&["aim", "--target", "25,0,1", "--distance", "20"], "--distance"),
         (&["aim", "--target", "25,0,1", "--from", "kick", "--speed", "20"], "--speed"),
         (&["aim", "--target", "25,0,1", "--from", "foot"], "--from"),
+        (&["aim", "--target", "25,0,1", "--foot-mass", "5"], "--from kick"),
+        (&["aim", "--target", "25,0,1", "--from", "kick", "--offset", "0.02"], "--offset"),
+        (&["aim", "--target", "25,0,1", "--from", "kick", "--foot-speed", "50"], "--foot-speed"),
     ] {
         let out = kick(args);
         let stderr = String::from_utf8_lossy(&out.stderr);
@@ -70,4 +73,18 @@ fn bad_input_names_the_flag() {
         assert!(stderr.contains(flag), "{args:?}: {stderr}");
         assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
     }
+}
+
+/// Kick flags reach the kick: a heavier foot needs a slower swing for the
+/// same target (the ball leaves faster per unit foot speed, Eq. 57's mass ratio).
+#[test]
+fn kick_flags_set_the_kick() {
+    let foot_speed = |args: &[&str]| {
+        let mut all = vec!["aim", "--target", "25,-2,1.8", "--from", "kick", "--format", "json"];
+        all.extend(args);
+        let v = json(&all);
+        v["parameters"][0]["value"].as_f64().unwrap()
+    };
+    let (light, heavy) = (foot_speed(&[]), foot_speed(&["--foot-mass", "6"]));
+    assert!(heavy < light - 1.0, "{heavy} vs {light}");
 }
