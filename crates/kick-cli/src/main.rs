@@ -53,8 +53,10 @@ enum Command {
     /// says that no solution exists within the ranges (exit 1).
     /// Free parameters (--free): launch: speed, launch_angle, azimuth,
     /// spin_x, spin_y, spin_z [speed,launch_angle,azimuth]; kick: foot_speed,
-    /// lateral_offset, contact_depth, heading [all]. A free launch
-    /// parameter's flag gives its start; the others hold what is given.
+    /// lateral_offset, contact_depth, heading [all]. A free parameter's flag
+    /// gives its start (else speed 25 m/s, launch_angle 15°, azimuth and
+    /// heading toward the target, spin 0, foot_speed 18 m/s, lateral_offset
+    /// 0.02 m, contact_depth 0.03 m); the others hold what is given.
     Aim(AimArgs),
     /// Fire the ball at a rigid, massive, horizontal plate: the shell ball
     /// (pressure over the flat patch, adiabatic gas, shell loss; kick-bounce).
