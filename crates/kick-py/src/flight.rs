@@ -167,7 +167,9 @@ fn three(name: &str, values: &[f64]) -> PyResult<[f64; 3]> {
 
 /// `kick aim`: the launch (or 3D kick, `from_="kick"`) that clears the wall
 /// and crosses the goal plane at `target`; the other keywords are the
-/// declared flight parameters, fixed (or the starts of free launch parameters).
+/// declared flight parameters, fixed (or the starts of free launch
+/// parameters), and with `from_="kick"` the kick's (`simulate3d`'s keywords
+/// but those the flight declares too).
 #[pyfunction]
 #[pyo3(signature = (target, *, wall = None, from_ = None, free = None, **params))]
 pub fn aim<'py>(
@@ -178,13 +180,27 @@ pub fn aim<'py>(
     free: Option<Vec<String>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
+    use kick_core::parameters::SetParameter;
     use kick_study::aim::{AimFrom, AimRequest};
     guard(|| {
         let mut flight = FlightSpec::default();
+        let mut kick = kick_3d::KickSpec::default();
         if let Some(params) = params {
             for (key, value) in params.iter() {
                 let name: String = key.extract()?;
-                let parameter = flight_parameter(&name)?;
+                // A flight keyword, else a kick one (the kick's names the flight does not declare).
+                let parameter = match flight_parameter(&name) {
+                    Ok(p) => Ok(p),
+                    Err(e) => match parameters::find_at(kick_3d::KickSpec::LEVELS, &name) {
+                        Ok(def) => {
+                            if !value.is_none() {
+                                kick.set_parameter(def, crate::params::value(def, &value)?).map_err(value_error)?;
+                            }
+                            continue;
+                        }
+                        Err(_) => Err(e),
+                    },
+                }?;
                 if value.is_none() {
                     continue;
                 }
@@ -198,7 +214,7 @@ pub fn aim<'py>(
             from: from_.as_deref().map(AimFrom::from_name).transpose().map_err(value_error)?,
             free,
             flight,
-            kick: kick_3d::KickSpec::default(),
+            kick,
         };
         let report = py.detach(|| kick_study::aim::aim(&request)).map_err(value_error)?;
         crate::convert::json_to_py(py, &serde_json::to_value(report).map_err(value_error)?)

@@ -26,6 +26,11 @@ def test_from_the_kick():
     out = kick.aim([25.0, -2.0, 1.8], from_="kick", wall=(9.15, 1.9, 1.0))
     assert [p["name"] for p in out["parameters"]] == ["foot_speed", "lateral_offset", "contact_depth", "heading"]
     assert out["miss"] <= 1e-6 and out["kick"]["contact_time"] > 0.0
+    # Kick keywords reach the kick: a heavier foot swings slower to the same target.
+    heavy = kick.aim([25.0, -2.0, 1.8], from_="kick", wall=(9.15, 1.9, 1.0), foot_mass=6.0)
+    assert heavy["parameters"][0]["value"] < out["parameters"][0]["value"] - 1.0
+    with pytest.raises(ValueError, match="--from kick"):
+        kick.aim([25.0, -2.0, 1.8], foot_mass=6.0)
 
 
 def test_no_solution_and_bad_input_are_value_errors():

@@ -368,7 +368,17 @@ spin, crossing, miss (m), wall_clearance (m), wall_crossing, outcome (the
 flight's, as ``flight`` returns), evaluations, starts, kick (the kick's
 offset, contact_time, spin_rev_per_s with from_="kick", else None).
 No solution within the ranges raises ValueError saying so.
+
+With ``from_="kick"`` the keywords of ``simulate3d`` that the flight does
+not declare too (foot_mass, foot_speed, friction, ...; not ball_mass,
+ball_radius, gravity) set the kick (Table 1's and kick-3d's defaults
+otherwise); ``foot_speed`` is the start when it is free.
 """,
+)
+_flight_names = {p["name"] for p in keywords("flight")}
+aim.__signature__ = aim.__signature__.replace(
+    parameters=list(aim.__signature__.parameters.values())
+    + [_inspect.Parameter(p["name"], _KW, default=None) for p in keywords("simulate3d") if p["name"] not in _flight_names]
 )
 
 
