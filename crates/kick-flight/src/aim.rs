@@ -478,8 +478,12 @@ pub fn check_unique<T: PartialEq + Copy>(free: &[T], name: impl Fn(T) -> &'stati
 /// `fixed` may not set `launch_velocity` or `distance` (the target sets the plane).
 pub fn aim_launch(target: [f64; 3], wall: Wall, free: &[LaunchFree], fixed: &crate::FlightSpec) -> Result<AimSolution, AimError> {
     check_unique(free, LaunchFree::name)?;
-    if fixed.launch_velocity.is_some() {
-        return Err(FlightError::Conflict { first: "launch_velocity", second: "speed" }.into());
+    if let Some(v) = fixed.launch_velocity {
+        return Err(AimError::Invalid {
+            name: "launch_velocity",
+            values: v.to_vec(),
+            requirement: "left out: the launch is aimed as speed, launch_angle and azimuth",
+        });
     }
     if let Some(d) = fixed.distance {
         return Err(AimError::Invalid { name: "distance", values: vec![d], requirement: "left out: the target's X is the goal plane" });

@@ -61,6 +61,7 @@ fn bad_input_names_the_flag() {
         (&["aim", "--target", "25,0,1", "--free", "speed,speed"], "--free"),
         (&["aim", "--target", "25,0,1", "--speed", "50"], "--speed"),
         (&["aim", "--target", "25,0,1", "--distance", "20"], "--distance"),
+        (&["aim", "--target", "25,0,1", "--launch-velocity", "20,0,5"], "--launch-velocity"),
         (&["aim", "--target", "25,0,1", "--from", "kick", "--speed", "20"], "--speed"),
         (&["aim", "--target", "25,0,1", "--from", "foot"], "--from"),
         (&["aim", "--target", "25,0,1", "--foot-mass", "5"], "--from kick"),
