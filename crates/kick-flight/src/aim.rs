@@ -4,7 +4,7 @@
 //! The scene ([`Scene`]): the ball starts at (0, 0, R); the wall stands in
 //! the plane x = `wall.distance`, centred on y = 0, `wall.half_width` to
 //! either side, its top `wall.height` above the ground; the goal plane is
-//! x = target[0], the goal centred on y = 0 (Law 1: 7.32 m × 2.44 m). The
+//! x = X of the target, the goal centred on y = 0 (Law 1: 7.32 m × 2.44 m). The
 //! target is where the ball's centre should cross the goal plane: the whole
 //! ball inside the posts and under the bar.
 //!

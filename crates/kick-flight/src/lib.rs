@@ -41,6 +41,9 @@
 //! against its distance from the launch point: a ball dropping steeply
 //! through the plane has an ill-conditioned crossing height.
 //!
+//! The inverse problem, the launch that clears a wall and crosses the goal
+//! plane at a target (`kick aim`): [`aim`].
+//!
 //! A flight that has not landed after [`HORIZON_FACTOR`] × 2|v0|/g (or the
 //! horizon set by [`Flight::with_horizon`]) is refused.
 
