@@ -300,10 +300,14 @@ pub fn aim_figure(aims: &[kick_study::aim::AimReport], dir: &Path) -> Result<Vec
     top.push(Series::line("", GREY, &[WALL_DISTANCE, WALL_DISTANCE], &[-WALL_HALF_WIDTH, WALL_HALF_WIDTH]).with_markers());
     top.push(Series::line("", RGBColor(0, 0, 0), &[GOAL_DISTANCE, GOAL_DISTANCE], &[-half, half]).with_markers());
     let target = format!("target ({tx}, {ty}, {tz}) m");
-    top.push(Series::line(&target, TARGET_GREEN, &[tx], &[ty]).with_markers());
+    // A cross over the target, scaled to each panel's axes.
+    let cross = |label: &str, (a, b): (f64, f64), (da, db): (f64, f64)| {
+        [Series::line(label, TARGET_GREEN, &[a - da, a + da], &[b, b]), Series::line("", TARGET_GREEN, &[a, a], &[b - db, b + db])]
+    };
+    top.extend(cross(&target, (tx, ty), (0.6, 0.25)));
     side.push(Series::line("", GREY, &[WALL_DISTANCE, WALL_DISTANCE], &[0.0, WALL_HEIGHT]));
     side.push(Series::line("", RGBColor(0, 0, 0), &[GOAL_DISTANCE, GOAL_DISTANCE, GOAL_DISTANCE + 1.0], &[0.0, GOAL_HEIGHT, GOAL_HEIGHT]));
-    side.push(Series::line(&target, TARGET_GREEN, &[tx], &[tz]).with_markers());
+    side.extend(cross(&target, (tx, tz), (0.6, 0.12)));
     let mut top_panel = Panel::new(
         &format!("from above (wall {} m wide at {WALL_DISTANCE} m, goal {GOAL_WIDTH} m wide at {GOAL_DISTANCE} m)", 2.0 * WALL_HALF_WIDTH),
         "x toward the goal (m)",
