@@ -42,10 +42,19 @@ RETURNS = {
     "flight_many": "dict[str, Any]",
     "bounce": "dict[str, Any]",
     "bounce_many": "dict[str, Any]",
+    "aim": "dict[str, Any]",
+}
+AIM = {
+    "target": "tuple[float, float, float] | Sequence[float]",
+    "wall": "tuple[float, float, float] | Sequence[float] | None",
+    "from_": "str",
+    "free": "Sequence[str] | None",
 }
 
 
 def annotation(function: str, name: str, shapes: dict) -> str:
+    if function == "aim" and name in AIM:
+        return AIM[name]
     if name in OPTIONS:
         return OPTIONS[name]
     if name in dict(kick.CHANNELS):

@@ -94,6 +94,25 @@ impl<const THREE_D: bool> FlagSpec for FlightAfter<THREE_D> {
     }
 }
 
+/// `kick aim --from kick`: the 1D and 3D kick parameters and `--law`, but
+/// not those whose names the flight declares too (`ball_mass`,
+/// `ball_radius`, `gravity`: one flag per name; the kick keeps their defaults).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AimKick(pub KickSpec);
+
+impl FlagSpec for AimKick {
+    const LAW: bool = true;
+    fn parameters() -> Vec<&'static ParameterDef> {
+        parameters::at_levels(KickSpec::LEVELS).filter(|p| FlightParameter::from_name(p.name).is_err()).collect()
+    }
+    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
+        let _ = self.0.set_parameter(parameter, value);
+    }
+    fn set_law(&mut self, law: LawKind) {
+        SetLaw::set_law(&mut self.0, law);
+    }
+}
+
 /// The switch that chains a kick into its flight; its id, for `requires`.
 pub const FLIGHT: &str = "flight";
 

@@ -42,6 +42,22 @@ enum Command {
     Simulate3d(Simulate3d),
     /// Fly the ball from its launch: drag crisis, Magnus lift, landing, apex, plane crossing.
     Flight(FlightArgs),
+    /// Aim a free kick: the launch (or the 3D kick) that clears the wall and
+    /// crosses the goal plane at the target.
+    ///
+    /// Axes as `kick flight`: the ball starts at the origin, x toward the
+    /// goal, y lateral, z up; the goal (7.32 m x 2.44 m) and the wall are
+    /// centred on y = 0. Least squares (Levenberg-Marquardt) over the free
+    /// parameters within their ranges; prints the solution, the miss, the
+    /// wall clearance and d(y, z at the goal)/d(each free parameter), or
+    /// says that no solution exists within the ranges (exit 1).
+    /// Free parameters (--free): launch: speed, launch_angle, azimuth,
+    /// spin_x, spin_y, spin_z [speed,launch_angle,azimuth]; kick: foot_speed,
+    /// lateral_offset, contact_depth, heading [all]. A free parameter's flag
+    /// gives its start (else speed 25 m/s, launch_angle 15°, azimuth and
+    /// heading toward the target, spin 0, foot_speed 18 m/s, lateral_offset
+    /// 0.02 m, contact_depth 0.03 m); the others hold what is given.
+    Aim(AimArgs),
     /// Fire the ball at a rigid, massive, horizontal plate: the shell ball
     /// (pressure over the flat patch, adiabatic gas, shell loss; kick-bounce).
     ///
@@ -144,6 +160,38 @@ struct FlightArgs {
     format: Format,
     #[command(flatten)]
     history: HistoryArgs,
+}
+
+#[derive(Args)]
+struct AimArgs {
+    /// Where the ball's centre should cross the goal plane x = X, m (inside the posts, under the bar)
+    #[arg(long, value_name = "X,Y,Z", value_delimiter = ',', allow_hyphen_values = true, required = true)]
+    target: Vec<f64>,
+    /// The wall: distance, height of its top and half-width, m [default: 9.15,1.8,1]
+    #[arg(long, value_name = "DIST,HEIGHT,HALF_WIDTH", value_delimiter = ',', allow_hyphen_values = true)]
+    wall: Option<Vec<f64>>,
+    /// Solve for the launch or for the 3D kick before it
+    #[arg(long, default_value = "launch", value_parser = kick_study::aim::AimFrom::NAMES)]
+    from: String,
+    /// The free parameters, comma-separated (see above)
+    #[arg(long, value_name = "NAMES", value_delimiter = ',')]
+    free: Option<Vec<String>>,
+    /// The declared flight parameters: fixed values, or the starts of free ones
+    #[command(flatten)]
+    flight: Flags<FlightSpec>,
+    /// With --from kick: the kick's parameters (--foot-speed: fixed, or the start when free)
+    #[command(flatten)]
+    kick: Flags<flags::AimKick>,
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+/// Three numbers given to `flag`, or an error naming it.
+fn three(flag: &str, values: &[f64]) -> Result<[f64; 3], String> {
+    match values {
+        &[x, y, z] => Ok([x, y, z]),
+        other => Err(format!("{flag} takes three numbers separated by commas, got {}", other.len())),
+    }
 }
 
 /// `--history FILE [--samples N | --interval DT]` (kick_store::history).
@@ -562,6 +610,22 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(a.format, &simulation)
         }
         Command::Flight(a) => out.print(a.format, &flight::flight_report(&a.flight.spec(), a.history.request()?.as_ref())?),
+        Command::Aim(a) => {
+            use kick_study::aim::{aim, AimFrom, AimRequest};
+            let request = AimRequest {
+                target: Some(three("--target", &a.target)?),
+                wall: a.wall.as_deref().map(|w| three("--wall", w)).transpose()?,
+                from: Some(AimFrom::from_name(&a.from)?),
+                free: a.free,
+                flight: a.flight.spec(),
+                // Nothing given: the default kick (so --from launch can refuse a kick flag given).
+                kick: match (a.kick.given.is_empty(), a.kick.law) {
+                    (true, None | Some(kick_core::LawKind::PowerLaw)) => kick_3d::KickSpec::default(),
+                    _ => a.kick.spec().0,
+                },
+            };
+            out.print(a.format, &aim(&request)?)
+        }
         Command::Bounce(a) => {
             let mut spec = a.bounce.spec();
             spec.law = Some(a.law);

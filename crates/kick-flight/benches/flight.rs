@@ -1,4 +1,4 @@
-//! Cost of one flight.
+//! Cost of one flight, and of one aim solve.
 //!
 //! `cargo bench -p kick-flight --features bench --bench flight`
 //! Ratios are meaningful only between benches of one run (the machine is shared).
@@ -44,5 +44,25 @@ fn flights(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, flights);
+/// One aim solve (the "well under a second"): the default free
+/// parameters (speed, elevation, azimuth) to a target by the far post, with
+/// sidespin held; and azimuth and sidespin alone (two in two).
+fn aims(c: &mut Criterion) {
+    use kick_flight::aim::{aim_launch, LaunchFree, Wall};
+    let mut group = c.benchmark_group("aim");
+    group.sample_size(20);
+    let curl = kick_flight::FlightSpec { spin: Some([0.0, 0.0, 50.0]), ..kick_flight::FlightSpec::default() };
+    group.bench_function("launch_default_free", |b| {
+        b.iter(|| black_box(aim_launch([25.0, 2.8, 2.0], Wall::default(), &LaunchFree::DEFAULT, &curl).expect("aims")))
+    });
+    let held = kick_flight::FlightSpec { speed: Some(27.0), launch_angle: Some(18.0), ..kick_flight::FlightSpec::default() };
+    group.bench_function("launch_azimuth_and_sidespin", |b| {
+        b.iter(|| {
+            black_box(aim_launch([25.0, 3.0, 1.9], Wall::default(), &[LaunchFree::Azimuth, LaunchFree::SpinZ], &held).expect("aims"))
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, flights, aims);
 criterion_main!(benches);

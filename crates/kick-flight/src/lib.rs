@@ -41,9 +41,13 @@
 //! against its distance from the launch point: a ball dropping steeply
 //! through the plane has an ill-conditioned crossing height.
 //!
+//! The inverse problem, the launch that clears a wall and crosses the goal
+//! plane at a target (`kick aim`): [`aim`].
+//!
 //! A flight that has not landed after [`HORIZON_FACTOR`] × 2|v0|/g (or the
 //! horizon set by [`Flight::with_horizon`]) is refused.
 
+pub mod aim;
 pub mod air;
 pub mod coefficients;
 /// The integrator lives in kick-core (kick-3d steps with it too).
@@ -54,6 +58,7 @@ pub mod solve;
 pub mod spec;
 pub mod validation;
 
+pub use aim::{aim_launch, aim_with, AimError, AimSolution, LaunchFree, Scene, Wall};
 pub use air::Air;
 pub use many::{flight_many, Column};
 pub use coefficients::{DragModel, LiftModel};

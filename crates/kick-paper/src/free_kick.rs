@@ -41,13 +41,8 @@ pub const TRAJECTORY_OFFSETS: [f64; 4] = [0.0, 0.02, 0.04, 0.06];
 pub const TRAJECTORY_FRICTIONS: [f64; 2] = [0.5, f64::INFINITY];
 /// Samples per trajectory.
 pub const TRAJECTORY_SAMPLES: usize = 301;
-/// Height of the wall drawn (players jumping), m.
-pub const WALL_HEIGHT: f64 = 1.8;
-/// Half the width of the wall drawn in the top view, m.
-pub const WALL_HALF_WIDTH: f64 = 1.0;
-/// Goal: 7.32 m wide, 2.44 m high (Law 1).
-pub const GOAL_WIDTH: f64 = 7.32;
-pub const GOAL_HEIGHT: f64 = 2.44;
+/// The wall drawn and the goal (Law 1): one definition, kick-flight's aim scene.
+pub use kick_flight::aim::{GOAL_HEIGHT, GOAL_WIDTH, WALL_HALF_WIDTH, WALL_HEIGHT};
 
 /// Columns of a stored trajectory.
 pub const TRAJECTORY_COLUMNS: [(&str, &str); 7] =
@@ -232,4 +227,79 @@ pub fn setup_note() -> String {
         GOAL_HEIGHT,
         kick_core::short(k.ball_radius),
     )
+}
+
+/// The aimed free kick of paper/flight.md: the ball's centre 2.6 m to the
+/// +y side of the goal's centre and 2 m up at the goal line (under the bar
+/// by the post), past the default wall.
+pub const AIM_TARGET: [f64; 3] = [GOAL_DISTANCE, 2.6, 2.0];
+/// Its launch aim holds this sidespin (about 8 rev/s, curving toward +y).
+pub const AIM_SPIN: [f64; 3] = [0.0, 0.0, 50.0];
+
+/// The two aims of the page: the launch (speed, elevation, azimuth free,
+/// [`AIM_SPIN`] held) and the 3D kick (foot speed, e, h, heading free), to [`AIM_TARGET`].
+pub fn aims() -> Result<[kick_study::aim::AimReport; 2], String> {
+    use kick_study::aim::{aim, AimFrom, AimRequest};
+    let launch = AimRequest {
+        target: Some(AIM_TARGET),
+        from: Some(AimFrom::Launch),
+        flight: kick_flight::FlightSpec { spin: Some(AIM_SPIN), ..kick_flight::FlightSpec::default() },
+        ..AimRequest::default()
+    };
+    let kick = AimRequest { target: Some(AIM_TARGET), from: Some(AimFrom::Kick), ..AimRequest::default() };
+    Ok([aim(&launch)?, aim(&kick)?])
+}
+
+/// The target's marker: apart from the trajectories' colours.
+const TARGET_GREEN: RGBColor = RGBColor(0, 140, 60);
+
+/// `flight_aim.png`/`.svg`: the aimed free kicks from above and from the
+/// side, with the wall, the goal and the target.
+pub fn aim_figure(aims: &[kick_study::aim::AimReport], dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
+    let draw_error = |message: String| FigureError::Draw { figure: "flight_aim".into(), message };
+    let mut top = Vec::new();
+    let mut side = Vec::new();
+    for (i, report) in aims.iter().enumerate() {
+        let s = &report.solution;
+        let h = history(&s.flight, Sampling::Samples(TRAJECTORY_SAMPLES)).map_err(|e| draw_error(e.to_string()))?;
+        let shown: Vec<_> = h.samples.iter().take_while(|p| p.position[0] <= SHOWN_TO).collect();
+        let x: Vec<f64> = shown.iter().map(|p| p.position[0]).collect();
+        let y: Vec<f64> = shown.iter().map(|p| p.position[1]).collect();
+        let z: Vec<f64> = shown.iter().map(|p| p.position[2]).collect();
+        let label = match report.from {
+            kick_study::aim::AimFrom::Launch => format!("launch aimed ({} rad/s sidespin held)", kick_core::short(AIM_SPIN[2])),
+            kick_study::aim::AimFrom::Kick => "3D kick aimed (foot speed, e, h, heading)".to_string(),
+        };
+        top.push(Series::line(&label, color(i), &x, &y));
+        side.push(Series::line(&label, color(i), &x, &z));
+    }
+    let [tx, ty, tz] = AIM_TARGET;
+    let half = GOAL_WIDTH / 2.0;
+    top.push(Series::line("", GREY, &[WALL_DISTANCE, WALL_DISTANCE], &[-WALL_HALF_WIDTH, WALL_HALF_WIDTH]).with_markers());
+    top.push(Series::line("", RGBColor(0, 0, 0), &[GOAL_DISTANCE, GOAL_DISTANCE], &[-half, half]).with_markers());
+    let target = format!("target ({tx}, {ty}, {tz}) m");
+    // A cross over the target, scaled to each panel's axes.
+    let cross = |label: &str, (a, b): (f64, f64), (da, db): (f64, f64)| {
+        [Series::line(label, TARGET_GREEN, &[a - da, a + da], &[b, b]), Series::line("", TARGET_GREEN, &[a, a], &[b - db, b + db])]
+    };
+    top.extend(cross(&target, (tx, ty), (0.6, 0.25)));
+    side.push(Series::line("", GREY, &[WALL_DISTANCE, WALL_DISTANCE], &[0.0, WALL_HEIGHT]));
+    side.push(Series::line("", RGBColor(0, 0, 0), &[GOAL_DISTANCE, GOAL_DISTANCE, GOAL_DISTANCE + 1.0], &[0.0, GOAL_HEIGHT, GOAL_HEIGHT]));
+    side.extend(cross(&target, (tx, tz), (0.6, 0.12)));
+    let mut top_panel = Panel::new(
+        &format!("from above (wall {} m wide at {WALL_DISTANCE} m, goal {GOAL_WIDTH} m wide at {GOAL_DISTANCE} m)", 2.0 * WALL_HALF_WIDTH),
+        "x toward the goal (m)",
+        "lateral y (m)",
+        top,
+    );
+    top_panel.y_from_zero = false;
+    top_panel.legend = SeriesLabelPosition::UpperLeft;
+    let mut side_panel = Panel::new(
+        &format!("from the side (wall {WALL_HEIGHT} m, crossbar {GOAL_HEIGHT} m; height of the ball's centre)"),
+        "x toward the goal (m)",
+        "height z (m)",
+        side,
+    );
+    side_panel.legend = SeriesLabelPosition::UpperLeft;
+    save_grid(dir, "flight_aim", "Aimed free kicks (kick aim): over the wall to the target under the bar", (2, 1), &[top_panel, side_panel])
 }

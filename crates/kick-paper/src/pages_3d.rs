@@ -498,10 +498,99 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
 pub fn write_all(out: &Path, report_dir: &Path, log: &mut dyn Write) -> Result<Vec<PathBuf>, String> {
     let _ = writeln!(log, "\n# free kicks -> {}", out.join("flight").join(free_kick::FILE).display());
     let path = free_kick::write(out)?;
-    let drawn = free_kick::figures(&path, &out.join("figures")).map_err(err)?;
+    let mut drawn = free_kick::figures(&path, &out.join("figures")).map_err(err)?;
+    let aims = free_kick::aims()?;
+    drawn.extend(free_kick::aim_figure(&aims, &out.join("figures")).map_err(err)?);
     let _ = writeln!(log, "figures: {} files in {}", drawn.len(), out.join("figures").display());
     let mut written = vec![path];
     written.push(crate::output::write(report_dir.join("3d.md"), page_3d(out, report_dir)?).map_err(err)?);
-    written.push(crate::output::write(report_dir.join("flight.md"), page_flight(out, report_dir)?).map_err(err)?);
+    let mut flight = page_flight(out, report_dir)?;
+    flight.push_str(&aim_section(&aims, &relative(report_dir, &out.join("figures"))));
+    written.push(crate::output::write(report_dir.join("flight.md"), flight).map_err(err)?);
     Ok(written)
+}
+
+/// The aimed free kicks on `paper/flight.md` (`kick aim`), from [`free_kick::aims`].
+pub fn aim_section(aims: &[kick_study::aim::AimReport], fig: &str) -> String {
+    use kick_flight::aim::{MISS_TOLERANCE, WALL_MARGIN};
+    let mut w = String::new();
+    let [x, y, z] = free_kick::AIM_TARGET;
+    let _ = writeln!(
+        w,
+        "## Aiming a free kick (`kick aim`)\n\n\
+         The inverse problem: which launch, or which kick, sends the ball over the wall ({} m away, {} m high, {} m to \
+         either side of the line to the goal's centre) so that its centre crosses the goal line {x} m away at y = {y} m, \
+         z = {z} m, under the bar by the post? `kick aim` (`kick_flight::aim`) solves it by Levenberg–Marquardt over \
+         the free parameters within their ranges, on the residuals (y, z at the goal plane minus the target) and the \
+         wall's shortfall below a {} m margin, through the located plane crossings of the flight, with a \
+         central-difference Jacobian; success is a miss of at most {} m. The aims below: \
+         `kick aim --target {x},{y},{z} --spin {},{},{}` (speed, elevation and azimuth free, the sidespin held) and \
+         `kick aim --target {x},{y},{z} --from kick` (Table 1's foot through kick-3d and the free-kick roll of the \
+         section above: foot speed, the contact's lateral offset e and depth h, the heading of the whole kick). \
+         Sensitivities are ∂(y, z at the goal line)/∂(parameter), central differences of the forward flight \
+         (Richardson-extrapolated).\n",
+        free_kick::WALL_DISTANCE,
+        free_kick::WALL_HEIGHT,
+        free_kick::WALL_HALF_WIDTH,
+        WALL_MARGIN,
+        kick_core::short(MISS_TOLERANCE),
+        free_kick::AIM_SPIN[0],
+        free_kick::AIM_SPIN[1],
+        free_kick::AIM_SPIN[2],
+    );
+    let _ = writeln!(w, "![aimed free kicks from above and from the side]({fig}/flight_aim.png)\n");
+    let _ = writeln!(w, "| aimed | parameter | value | range | ∂y/∂p (m per unit) | ∂z/∂p (m per unit) |\n| --- | --- | --- | --- | --- | --- |");
+    for report in aims {
+        let from = match report.from {
+            kick_study::aim::AimFrom::Launch => "launch",
+            kick_study::aim::AimFrom::Kick => "kick",
+        };
+        for p in &report.solution.parameters {
+            let _ = writeln!(
+                w,
+                "| {from} | {} ({}) | {} | {} – {} | {} | {} |",
+                p.name,
+                p.unit,
+                sig(p.value, 4),
+                sig(p.low, 3),
+                sig(p.high, 3),
+                sig(p.sensitivity[0], 3),
+                sig(p.sensitivity[1], 3)
+            );
+        }
+    }
+    let _ = writeln!(w);
+    for report in aims {
+        let s = &report.solution;
+        let v = s.launch_velocity;
+        let speed = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        let spin = (s.spin[0] * s.spin[0] + s.spin[1] * s.spin[1] + s.spin[2] * s.spin[2]).sqrt() / std::f64::consts::TAU;
+        let how = if s.wall_crossing[1] - s.flight.ball_radius() >= s.scene.wall.height { "over" } else { "beside" };
+        let _ = writeln!(
+            w,
+            "- {}: launch {} m/s at {}° elevation, {}° azimuth, {} rev/s; misses by {} m; passes {how} the wall with {} m to spare \
+             (centre at y = {} m, z = {} m); {} residual evaluations (each two flights) from {} start(s).",
+            match report.from {
+                kick_study::aim::AimFrom::Launch => "Launch aimed",
+                kick_study::aim::AimFrom::Kick => "Kick aimed",
+            },
+            sig(speed, 4),
+            sig(v[2].atan2(v[0].hypot(v[1])).to_degrees(), 3),
+            sig(v[1].atan2(v[0]).to_degrees(), 3),
+            sig(spin, 3),
+            kick_core::short(s.miss),
+            sig(s.wall_clearance, 3),
+            sig(s.wall_crossing[0], 3),
+            sig(s.wall_crossing[1], 3),
+            s.evaluations,
+            s.starts,
+        );
+    }
+    let _ = writeln!(
+        w,
+        "\nThe free parameters outnumber the two target equations, so a solution is one of a family; LM returns the one \
+         its damped steps reach from the start (given values of free launch parameters are starts; `--free` chooses \
+         which are free). A target no launch within the ranges reaches is reported as such (exit 1), with the best miss.\n"
+    );
+    w
 }

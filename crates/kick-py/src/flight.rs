@@ -156,3 +156,67 @@ fn many_outputs<'py>(
     out.set_item("failure_message", pyo3::types::PyList::new(py, failures.iter().map(|f| f.1.as_str()))?)?;
     Ok(out)
 }
+
+/// Three numbers for `name`, or a ValueError naming it.
+fn three(name: &str, values: &[f64]) -> PyResult<[f64; 3]> {
+    match values {
+        &[x, y, z] => Ok([x, y, z]),
+        other => Err(value_error(format!("`{name}` takes three numbers, got {}", other.len()))),
+    }
+}
+
+/// `kick aim`: the launch (or 3D kick, `from_="kick"`) that clears the wall
+/// and crosses the goal plane at `target`; the other keywords are the
+/// declared flight parameters, fixed (or the starts of free launch
+/// parameters), and with `from_="kick"` the kick's (`simulate3d`'s keywords
+/// but those the flight declares too).
+#[pyfunction]
+#[pyo3(signature = (target, *, wall = None, from_ = None, free = None, **params))]
+pub fn aim<'py>(
+    py: Python<'py>,
+    target: Vec<f64>,
+    wall: Option<Vec<f64>>,
+    from_: Option<String>,
+    free: Option<Vec<String>>,
+    params: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    use kick_core::parameters::SetParameter;
+    use kick_study::aim::{AimFrom, AimRequest};
+    guard(|| {
+        let mut flight = FlightSpec::default();
+        let mut kick = kick_3d::KickSpec::default();
+        if let Some(params) = params {
+            for (key, value) in params.iter() {
+                let name: String = key.extract()?;
+                // A flight keyword, else a kick one (the kick's names the flight does not declare).
+                let parameter = match flight_parameter(&name) {
+                    Ok(p) => Ok(p),
+                    Err(e) => match parameters::find_at(kick_3d::KickSpec::LEVELS, &name) {
+                        Ok(def) => {
+                            if !value.is_none() {
+                                kick.set_parameter(def, crate::params::value(def, &value)?).map_err(value_error)?;
+                            }
+                            continue;
+                        }
+                        Err(_) => Err(e),
+                    },
+                }?;
+                if value.is_none() {
+                    continue;
+                }
+                let values = crate::params::value(parameter.def(), &value)?.numbers();
+                flight.set(parameter, &values).map_err(value_error)?;
+            }
+        }
+        let request = AimRequest {
+            target: Some(three("target", &target)?),
+            wall: wall.as_deref().map(|w| three("wall", w)).transpose()?,
+            from: from_.as_deref().map(AimFrom::from_name).transpose().map_err(value_error)?,
+            free,
+            flight,
+            kick,
+        };
+        let report = py.detach(|| kick_study::aim::aim(&request)).map_err(value_error)?;
+        crate::convert::json_to_py(py, &serde_json::to_value(report).map_err(value_error)?)
+    })
+}

@@ -216,6 +216,7 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bounce::bounce, m)?)?;
     m.add_function(wrap_pyfunction!(bounce::bounce_many, m)?)?;
     m.add_function(wrap_pyfunction!(params::bounce_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(flight::aim, m)?)?;
     m.add_function(wrap_pyfunction!(params::declared, m)?)?;
     m.add_function(wrap_pyfunction!(params::keywords, m)?)?;
     m.add("STATUS", params::status_codes(m.py())?)?;

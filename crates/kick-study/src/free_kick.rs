@@ -42,10 +42,15 @@ pub const LAUNCH_COLUMNS: [(&str, &str); 12] = [
 /// The lateral kick (offset √(e² + h²)) at friction `friction`, solved.
 pub fn lateral_kick(lateral_offset: f64, friction: f64) -> Result<(Kick3d, Outcome3d), Failure> {
     let mut spec = KickSpec::default();
-    let offset = lateral_offset.hypot(VERTICAL_OFFSET);
-    for (name, v) in [("offset", offset), ("friction", friction)] {
-        spec.set_named(name, Value::Number(v)).map_err(|e| Failure::refused(e.to_string()))?;
-    }
+    spec.set_named("friction", Value::Number(friction)).map_err(|e| Failure::refused(e.to_string()))?;
+    kick_at(&spec, lateral_offset, VERTICAL_OFFSET)
+}
+
+/// `spec`'s kick at the contact (e, h), solved as the lateral kick at
+/// offset √(e² + h²) (its launch still to be turned by [`roll_at`]).
+pub fn kick_at(spec: &KickSpec, lateral_offset: f64, depth: f64) -> Result<(Kick3d, Outcome3d), Failure> {
+    let mut spec = *spec;
+    spec.set_named("offset", Value::Number(lateral_offset.hypot(depth))).map_err(|e| Failure::refused(e.to_string()))?;
     let kick = spec.build()?;
     let outcome = Accurate3d::default().solve(&kick)?;
     Ok((kick, outcome))
@@ -55,8 +60,16 @@ pub fn lateral_kick(lateral_offset: f64, friction: f64) -> Result<(Kick3d, Outco
 /// goes to (0, cos β, −sin β), below the centre, so a ball sent toward −y
 /// rises (see the module docs).
 pub fn roll(v: [f64; 3], lateral_offset: f64) -> [f64; 3] {
-    let r = lateral_offset.hypot(VERTICAL_OFFSET);
-    let (c, s) = (lateral_offset / r, VERTICAL_OFFSET / r);
+    roll_at(v, lateral_offset, VERTICAL_OFFSET)
+}
+
+/// [`roll`] for a contact `depth` h below the centre (a central contact, e = h = 0, is not turned).
+pub fn roll_at(v: [f64; 3], lateral_offset: f64, depth: f64) -> [f64; 3] {
+    let r = lateral_offset.hypot(depth);
+    if r == 0.0 {
+        return v;
+    }
+    let (c, s) = (lateral_offset / r, depth / r);
     // Rotation about x by −β: y' = y cos β + z sin β, z' = −y sin β + z cos β.
     [v[0], v[1] * c + v[2] * s, -v[1] * s + v[2] * c]
 }

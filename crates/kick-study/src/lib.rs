@@ -16,6 +16,7 @@
 //! - [`level`]: the `Level` trait every model level implements, and the one run loop over row ranges.
 //! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 
+pub mod aim;
 pub mod checks;
 pub mod columns;
 pub mod experiment;

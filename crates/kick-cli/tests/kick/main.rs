@@ -4,6 +4,7 @@ mod bounce;
 mod check_and_leg;
 mod cli;
 mod fit_and_laws;
+mod aim;
 mod flight;
 mod history;
 mod run_reproduce;

@@ -3,3 +3,4 @@
 mod closed_forms;
 mod robustness;
 mod validation;
+mod aim;

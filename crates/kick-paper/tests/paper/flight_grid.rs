@@ -154,7 +154,18 @@ fn free_kicks_and_the_generated_3d_and_flight_pages() {
         }
     }
     assert_eq!(straight, 4);
-    let figures: Vec<_> = ["flight_free_kick.png", "flight_deflection.png", "3d_offset_friction.png", "3d_offset_friction_tradeoff.png"]
+    // The aimed free kicks: both reach the target past the wall, flown again here.
+    let target = kick_paper::free_kick::AIM_TARGET;
+    for report in kick_paper::free_kick::aims().unwrap() {
+        let s = &report.solution;
+        let rest = kick_flight::FlightSpec { distance: Some(target[0]), ..kick_flight::FlightSpec::default() };
+        let c = kick_flight::solve(&kick_flight::Flight::from_launch(s.launch_velocity, s.spin, &rest).unwrap()).unwrap().crossing.unwrap();
+        assert!((c.lateral_offset - target[1]).hypot(c.height - target[2]) <= kick_flight::aim::MISS_TOLERANCE);
+        assert!(s.wall_clearance >= 0.0);
+    }
+    let flight_page = std::fs::read_to_string(dir.join("paper").join("flight.md")).unwrap();
+    assert!(flight_page.contains("## Aiming a free kick (`kick aim`)") && flight_page.contains("flight_aim.png"));
+    let figures: Vec<_> = ["flight_free_kick.png", "flight_deflection.png", "flight_aim.png", "3d_offset_friction.png", "3d_offset_friction_tradeoff.png"]
         .iter()
         .map(|f| dir.join("figures").join(f))
         .collect();

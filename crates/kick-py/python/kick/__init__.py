@@ -19,6 +19,7 @@ flight                    the ball's flight after the kick (kick-flight)
 flight_many               many flights from arrays (numpy broadcasting), in parallel in Rust
 bounce                    the ball alone on a rigid plate (``kick bounce``; kick-bounce)
 bounce_many               many bounces from arrays (numpy broadcasting), in parallel in Rust
+aim                       the launch (or 3D kick) that clears the wall and hits a target in the goal
 kick.dask.simulate_many   ``simulate_many`` spread over a dask ``distributed`` cluster
 
 Bad input raises ``ValueError`` with the command line's message. A keyword
@@ -59,6 +60,7 @@ __all__ = [
     "flight_many",
     "bounce",
     "bounce_many",
+    "aim",
     "PARAMETERS",
     "BOUNCE_PARAMETERS",
     "STATUS",
@@ -332,6 +334,61 @@ _declare(
     "distance, time, height, lateral_offset, velocity when ``distance`` is\n"
     "given and reached), launch (dict: reynolds, spin_parameter,\n"
     "drag_coefficient, lift_coefficient at launch), steps, evaluations.",
+)
+
+
+def aim(target, **params):
+    return _kick.aim(target, **params)
+
+
+_declare(
+    aim,
+    "flight",
+    [
+        _inspect.Parameter("target", _inspect.Parameter.POSITIONAL_OR_KEYWORD),
+        _inspect.Parameter("wall", _KW, default=None),
+        _inspect.Parameter("from_", _KW, default="launch"),
+        _inspect.Parameter("free", _KW, default=None),
+    ],
+    [],
+    """Aim a free kick, as ``kick aim``: the launch (or the 3D kick) that clears
+the wall and crosses the goal plane at ``target`` (crate kick-flight's
+``aim``: Levenberg-Marquardt over the free parameters within their ranges).
+
+Axes as ``flight``: the ball starts at the origin, x toward the goal, y
+lateral, z up; the goal (7.32 m x 2.44 m) and the wall centred on y = 0.
+
+target : (X, Y, Z) [m]
+    The goal plane x = X and where the ball's centre should cross it
+    (inside the posts, under the bar).
+wall : (DIST, HEIGHT, HALF_WIDTH) [m], default (9.15, 1.8, 1)
+    The wall's plane, the height of its top and its half-width.
+from_ : str, default "launch"
+    "launch" (free: speed, launch_angle, azimuth, spin_x, spin_y, spin_z)
+    or "kick" (free: foot_speed, lateral_offset, contact_depth, heading;
+    Table 1's foot and kick-3d's defaults otherwise).
+free : list of str, optional
+    The free parameters; default speed, launch_angle, azimuth (launch) or
+    all four (kick). The flight keywords below are fixed values, or the
+    starts of free launch parameters.
+
+Returns a dict: from, scene, parameters (list of dicts: name, unit, value,
+low, high, sensitivity = d(y, z at the goal)/d parameter), launch_velocity,
+spin, crossing, miss (m), wall_clearance (m), wall_crossing, outcome (the
+flight's, as ``flight`` returns), evaluations, starts, kick (the kick's
+offset, contact_time, spin_rev_per_s with from_="kick", else None).
+No solution within the ranges raises ValueError saying so.
+
+With ``from_="kick"`` the keywords of ``simulate3d`` that the flight does
+not declare too (foot_mass, foot_speed, friction, ...; not ball_mass,
+ball_radius, gravity) set the kick (Table 1's and kick-3d's defaults
+otherwise); ``foot_speed`` is the start when it is free.
+""",
+)
+_flight_names = {p["name"] for p in keywords("flight")}
+aim.__signature__ = aim.__signature__.replace(
+    parameters=list(aim.__signature__.parameters.values())
+    + [_inspect.Parameter(p["name"], _KW, default=None) for p in keywords("simulate3d") if p["name"] not in _flight_names]
 )
 
 
