@@ -587,6 +587,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             let text = match page {
                 reference::Page::Cli => reference::cli(Cli::command()),
                 reference::Page::Parameters => reference::parameters(),
+                reference::Page::Files => kick_store::layouts::markdown(),
             };
             out.write_all(text.as_bytes()).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
         }

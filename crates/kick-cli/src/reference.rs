@@ -15,6 +15,8 @@ pub enum Page {
     Cli,
     /// The declared parameters: keys, flags, columns, keywords (paper/reference/parameters.md)
     Parameters,
+    /// The result-file layouts, every file's contract (paper/reference/files.md)
+    Files,
 }
 
 /// Text for one Markdown table cell: one line, `|` escaped.

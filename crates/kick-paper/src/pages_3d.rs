@@ -488,7 +488,7 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
          `flight_time`, `landing_point_x`/`_y`, `apex_height`, `apex_time`, `landing_velocity_x`/`_y`/`_z`, \
          `landing_spin_x`/`_y`/`_z`, and with `distance` `crossed` (1, or 0 when the ball lands first and the crossing \
          columns hold no number), `crossing_time`, `crossing_height`, `crossing_lateral_offset`, `crossing_velocity_x`/`_y`/`_z`, each \
-         with its unit; a row whose kick failed, or whose 3D launch is not upward, has status 1 and its message.\n"
+         with its unit; a row whose kick failed, or whose 3D launch is not upward, has the status of that refusal or failure (`kick_core::Status`) and its message.\n"
     );
     Ok(w)
 }

@@ -193,7 +193,7 @@ pub fn render(results: &Path, figures: &str, checks: Option<&[CheckLine]>) -> Re
             let _ = writeln!(w);
         }
     }
-    let _ = writeln!(w, "## Files\n\nResult files (HDF5, layouts in [kick-store's README](../crates/kick-store/README.md#hdf5-result-layout-version-1)): {}.\n",
+    let _ = writeln!(w, "## Files\n\nResult files (HDF5, layouts in [reference/files.md](reference/files.md)): {}.\n",
         list_h5(results).iter().map(|n| format!("`results/{n}`")).collect::<Vec<_>>().join(", "));
     Ok(md)
 }

@@ -4,13 +4,13 @@
 //! or more sets of named outcome columns (one set per solver), every column a
 //! 1D dataset with a `units` attribute. Rows are streamed in chunks of
 //! [`CHUNK_ROWS`] into extendable, chunked datasets, so a writer's memory does
-//! not grow with the number of rows. Layout and guide:
-//! this crate's README.md ("HDF5 result layout").
+//! not grow with the number of rows. The layouts are specified once, in
+//! [`crate::layouts`] (printed as paper/reference/files.md).
 //!
 //! ```text
 //! /                      attributes: provenance (tool, tool_version, git_commit,
 //!                        git_dirty, experiment, experiment_file, experiment_text,
-//!                        solver, solver_settings, ...), layout_version, rows
+//!                        solver, solver_settings, ...), layout, layout_version, rows
 //! /parameters/<name>     f64[rows], attribute units
 //! /outcomes/<name>       f64[rows] of the first solver (NaN where status != 0)
 //! /outcomes/status       u8[rows]: kick_core::Status codes (0 separated, 1 numerical
@@ -46,13 +46,12 @@ use crate::output::{OutputError, Staged};
 use crate::provenance::Provenance;
 use hdf5::types::VarLenUnicode;
 use kick_core::Status;
+use crate::layouts::Layout;
 use hdf5::{Dataset, File, Group};
 use std::path::{Path, PathBuf};
 
 /// Rows per HDF5 chunk and per flush.
 pub const CHUNK_ROWS: usize = 4096;
-/// Version of the layout described above; bump on incompatible changes.
-pub const LAYOUT_VERSION: u32 = 1;
 
 pub use kick_study::columns::{law_settings, Column, Compression, OutcomeSet, Setting};
 
@@ -423,7 +422,7 @@ impl SweepWriter {
             }
         }
         let (file, staged) = create_file(path, provenance)?;
-        write_u64_attr(&file, path, "layout_version", u64::from(LAYOUT_VERSION))?;
+        crate::layouts::SWEEP.stamp(&file, path)?;
         write_set_attrs(&file, path, &sets[0])?;
 
         let group = new_group(&file, "parameters").map_err(h5err(path))?;
@@ -698,10 +697,11 @@ pub struct ResultWriter {
 }
 
 impl ResultWriter {
-    /// Create the file; `layout` names its group layout (documented where it is written).
-    pub fn create(path: &Path, provenance: &Provenance, layout: &str) -> Result<ResultWriter, H5Error> {
+    /// Create the file of layout `layout` (one of [`crate::layouts::LAYOUTS`]:
+    /// its `layout` and `layout_version` attributes).
+    pub fn create(path: &Path, provenance: &Provenance, layout: &Layout) -> Result<ResultWriter, H5Error> {
         let (file, staged) = create_file(path, provenance)?;
-        write_str_attr(&file, path, "layout", layout)?;
+        layout.stamp(&file, path)?;
         Ok(ResultWriter { path: path.to_path_buf(), file, staged })
     }
 

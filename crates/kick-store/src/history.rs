@@ -72,7 +72,7 @@ impl HistoryWriter {
             }
             HistoryFormat::Hdf5 => {
                 let provenance = Provenance::now("history", "", "");
-                let writer = ResultWriter::create(&path, &provenance, "history").map_err(h5)?;
+                let writer = ResultWriter::create(&path, &provenance, &crate::layouts::HISTORY).map_err(h5)?;
                 let file = writer.file().clone();
                 h5::write_str_attr(&file, &path, "level", &meta.level).map_err(h5)?;
                 for (name, text) in &meta.texts {

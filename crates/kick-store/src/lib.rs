@@ -14,6 +14,7 @@ pub mod h5;
 pub mod history;
 pub mod output;
 pub mod provenance;
+pub mod layouts;
 pub mod run;
 pub mod shard;
 pub mod sweep;

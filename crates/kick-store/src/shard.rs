@@ -266,6 +266,18 @@ impl Piece {
                 shard.index, shard.count, rows.start, rows.end
             )));
         }
+        // Only the table layout this merge knows, at its version.
+        let table = &crate::layouts::SWEEP;
+        let (layout, version) = (read_str_attr(&file, "layout"), read_u64_attr(&file, "layout_version"));
+        if layout.as_deref() != Some(table.name) || version != Some(table.version) {
+            return Err(part_error(path, format!(
+                "layout {} version {}, not `{}` version {} (written by another version of kick: rerun the shard)",
+                layout.as_deref().unwrap_or("(none)"),
+                version.map_or("(none)".into(), |v| v.to_string()),
+                table.name,
+                table.version
+            )));
+        }
         if read_u64_attr(&file, "rows") != Some(rows.end - rows.start) {
             return Err(part_error(path, "its `rows` attribute disagrees with its row range (an incomplete file?)"));
         }
@@ -809,7 +821,11 @@ mod tests {
         let dir = scratch("corrupt");
         let (_, parts) = two_parts(&dir);
         type Corruption = (&'static str, &'static str, fn(&hdf5::File));
-        let corruptions: [Corruption; 7] = [
+        let corruptions: [Corruption; 8] = [
+            ("older layout", "layout sweep version 1, not `sweep` version 2", |f| {
+                f.delete_attr("layout_version").unwrap();
+                f.new_attr::<u64>().create("layout_version").unwrap().write_scalar(&1u64).unwrap();
+            }),
             ("short dataset", "5 entries in a part of 6 rows", |f| {
                 f.dataset("parameters/stiffness").unwrap().resize(5).unwrap();
             }),

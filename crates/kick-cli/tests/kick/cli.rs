@@ -175,7 +175,7 @@ fn sweeps_take_compress_with_or_without_a_level() {
 #[test]
 fn reference_pages_are_current() {
     let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
-    for page in ["cli", "parameters"] {
+    for page in ["cli", "parameters", "files"] {
         let out = kick(&["reference", page]);
         assert!(out.status.success(), "{page}: {}", String::from_utf8_lossy(&out.stderr));
         assert_eq!(kick(&["reference", page]).stdout, out.stdout, "{page}: not the same bytes on a second run");

@@ -207,7 +207,7 @@ pub fn data(spec_path: &Path, out: Option<&Path>) -> Result<DataFit, String> {
         let spec_text = kick_core::input::read_text(spec_path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| format!("{name}: {e}"))?;
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("fit");
         let provenance = Provenance::now(stem, &name, &spec_text);
-        let w = ResultWriter::create(path, &provenance, "kick-fit-1").map_err(|e| e.to_string())?;
+        let w = ResultWriter::create(path, &provenance, &kick_store::layouts::FIT).map_err(|e| e.to_string())?;
         files::write_fit(&w, "fit", &report, &problem.observations, &truth)?;
         written.push(w.finish().map_err(|e| e.to_string())?);
     }

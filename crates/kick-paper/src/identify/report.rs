@@ -513,7 +513,7 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, String> {
         w,
         "## Data formats\n\n\
          See `crates/kick-identify/README.md` and the layouts in \
-         [kick-store's README](../crates/kick-store/README.md#hdf5-result-layout-version-1). Files here: {}.\n\n\
+         [reference/files.md](reference/files.md). Files here: {}.\n\n\
          ## Not covered\n\n\
          - One time offset for all channels (no per-channel delays or clock drift).\n\
          - The (k, c) misfit maps are stored in `{IDENTIFIABILITY}` but not drawn.\n\

@@ -98,7 +98,7 @@ fn fit_and_profile_h5_equal_independent_computations() {
     kick_paper::identify::profile(&settings).unwrap();
     // The fit report: predictions at the stored estimates.
     let file = kick_store::ResultFile::open(&dir.join("s_fit.h5")).unwrap();
-    assert_eq!(file.text("", "layout").unwrap(), "kick-fit-1");
+    assert_eq!(file.text("", "layout").unwrap(), "kick-fit");
     assert_eq!(file.text("fit", "law").unwrap(), "flores");
     let (spec, observations) = FitSpec::load(&dir.join("s.toml")).unwrap();
     let mut point = spec.start("s.toml").unwrap();

@@ -9,7 +9,7 @@ fn result_files_round_trip_with_units_and_provenance() {
     let dir = crate::scratch("result-file");
     let path = dir.join("r.h5");
     let provenance = Provenance::now("r", "test (command line)", "text of the run");
-    let w = ResultWriter::create(&path, &provenance, "test-layout-1").unwrap();
+    let w = ResultWriter::create(&path, &provenance, &kick_store::layouts::HISTORY).unwrap();
     w.column("a/b", &Column::new("time", "s"), &[0.0, 1e-3, 2e-3]).unwrap();
     w.scalar("a", "chi_square", "1", 320.78).unwrap();
     w.strings("a", "names", &["x".to_string(), "y z".to_string()]).unwrap();
@@ -21,7 +21,8 @@ fn result_files_round_trip_with_units_and_provenance() {
 
     // Independently, with the hdf5 crate.
     let file = hdf5::File::open(&path).unwrap();
-    assert_eq!(read_str_attr(&file, "layout").as_deref(), Some("test-layout-1"));
+    assert_eq!(read_str_attr(&file, "layout").as_deref(), Some("history"));
+    assert_eq!(kick_store::h5::read_u64_attr(&file, "layout_version"), Some(kick_store::layouts::HISTORY.version));
     assert_eq!(read_str_attr(&file, "experiment_text").as_deref(), Some("text of the run"));
     assert_eq!(read_str_attr(&file, "tool").as_deref(), Some("kick"));
     let time = file.dataset("a/b/time").unwrap();
@@ -35,7 +36,7 @@ fn result_files_round_trip_with_units_and_provenance() {
     assert_eq!(r.scalar("a/chi_square").unwrap(), 320.78);
     assert_eq!(r.strings("a/names").unwrap(), ["x", "y z"]);
     assert_eq!(r.text("a/b", "parameter").unwrap(), "stiffness");
-    assert_eq!(r.text("", "layout").unwrap(), "test-layout-1");
+    assert_eq!(r.text("", "layout").unwrap(), "history");
     assert_eq!(r.members("a").unwrap(), ["b", "chi_square", "names"]);
     assert!(r.exists("a/b/time") && r.exists("a/b") && !r.exists("a/c") && !r.exists("a/b/time/x"));
     // Errors name the path.

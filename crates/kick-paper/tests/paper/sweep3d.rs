@@ -47,6 +47,9 @@ fn each_row_is_the_solve_of_its_stored_parameters() {
     assert_eq!(report.kicks, 48);
     let file = hdf5::File::open(&report.path).unwrap();
     let law = LawKind::from_name(&read_str_attr(&file, "law").unwrap()).unwrap();
+    // The one table layout of every run, stamped with its version.
+    assert_eq!(read_str_attr(&file, "layout").as_deref(), Some(kick_store::layouts::SWEEP.name));
+    assert_eq!(kick_store::h5::read_u64_attr(&file, "layout_version"), Some(kick_store::layouts::SWEEP.version));
     let declared: Vec<_> = parameters::at_levels(KickSpec::LEVELS).collect();
     let stored: Vec<Vec<[f64; 3]>> = declared
         .iter()

@@ -14,7 +14,7 @@
 //! `restitution_formulas/`: `target_restitution` and, per law, the
 //! restitution it gives when asked for that target (baseline, simulated).
 //!
-//! Fit reports (layout `kick-fit-1`, under a group G):
+//! Fit reports (layout `kick-fit`, version 1, under a group G):
 //!
 //! ```text
 //! G                         attributes law, termination, converged ("true"/"false")
@@ -28,13 +28,13 @@
 //! ```
 //!
 //! `kick fit data --out` writes one report at `/fit`. `kick fit table2 --out`
-//! (layout `kick-fit-table2-1`) writes `/rows/<i>` per Table 2 row
+//! (layout `kick-fit-table2`, version 1) writes `/rows/<i>` per Table 2 row
 //! (attributes name, parameter): the fit at `/rows/<i>/fit`, `file_value`
 //! (the value in experiments/table2.toml) and `seed_fit_value` (the same fit
 //! to seed-rk4's unrounded outputs at that value), each in the parameter's
 //! unit; the baseline row has `baseline_residuals/<observable>` (weighted, 1).
 //!
-//! `identifiability.h5` (layout `kick-identifiability-1`): `settings/` (seed,
+//! `identifiability.h5` (layout `kick-identifiability`, version 1): `settings/` (seed,
 //! history_times, exit_speed_sigma), `truth/<p>`, `history_sigma/<channel>`,
 //! `profiles/<source>/<p>/{factor, value, chi_square, others/<q>}` with
 //! `profiles/<source>/parameters` giving the order, and
@@ -363,7 +363,7 @@ pub fn write_table2_fits(
     file_values: &[Option<f64>],
     seed_fits: &[Option<f64>],
 ) -> Result<PathBuf, String> {
-    let w = ResultWriter::create(path, provenance, "kick-fit-table2-1").map_err(text)?;
+    let w = ResultWriter::create(path, provenance, &crate::layouts::FIT_TABLE2).map_err(text)?;
     for (i, f) in fits.iter().enumerate() {
         let g = format!("rows/{i:02}");
         w.text(&g, "name", &f.name).map_err(text)?;
@@ -466,7 +466,7 @@ fn write_map(w: &ResultWriter, source: &str, map: &MisfitMap) -> Result<(), Stri
 
 /// Write `identifiability.h5` (module docs).
 pub fn write_identifiability(path: &Path, provenance: &Provenance, study: &IdentifiabilityStudy) -> Result<PathBuf, String> {
-    let w = ResultWriter::create(path, provenance, "kick-identifiability-1").map_err(text)?;
+    let w = ResultWriter::create(path, provenance, &crate::layouts::IDENTIFIABILITY).map_err(text)?;
     write_scalar(&w, "settings", "seed", "1", study.seed as f64)?;
     write_scalar(&w, "settings", "history_times", "1", study.history_times as f64)?;
     write_scalar(&w, "settings", "exit_speed_sigma", "m/s", study.exit_speed_sigma)?;
