@@ -296,6 +296,7 @@ def bounce_many(
     threads: int | np.integer | None = ...,
 ) -> dict[str, Any]:
     """Solve many bounces, as ``bounce`` does, from arrays."""
+
 def aim(
     target: tuple[float, float, float] | Sequence[float],
     *,
