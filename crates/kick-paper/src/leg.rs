@@ -271,8 +271,9 @@ fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<
     Ok(written)
 }
 
-/// Figure data through kick-store's sweep writer: parameters and outcome
-/// columns with units, provenance at the root.
+/// Figure data as two tables of the one run loop (kick-study's leg levels)
+/// through kick-store's sweep writer: parameters and outcome columns with
+/// units, provenance at the root.
 fn write_sweeps(
     dir: &std::path::Path,
     leg: &Leg,
@@ -281,69 +282,23 @@ fn write_sweeps(
     base: &Scenario,
     command: &str,
 ) -> Result<Vec<std::path::PathBuf>, String> {
-    use crate::{Column, OutcomeSet, Provenance, Setting, SweepWriter};
+    use crate::run::{create_table, fill_table, finish_table};
+    use crate::Provenance;
+    use kick_study::level::leg::{LegMassAxis, LegPoseGrid};
+    use kick_study::level::Level;
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    let text = command.to_string();
-    let set = |name: &str, columns: Vec<Column>| OutcomeSet {
-        solver: name.into(),
-        settings: vec![
-            ("effective_mass".into(), Setting::Text("Eq. 11, de Leva (1996) segments".into())),
-            ("exit_solver".into(), Setting::Text("accurate".into())),
-        ],
-        columns,
-    };
-    let m_and_v = || vec![Column::new("effective_mass", "kg"), Column::new("v_ball_out", "m/s")];
-    let mut written = Vec::new();
-
-    let path = dir.join("leg_effective_mass.h5");
     let (knees, ankles) = grid_axes();
-    let provenance = Provenance::now("leg_effective_mass", "kick leg (command line)", &text);
-    let mut writer = SweepWriter::create(
-        &path,
-        &provenance,
-        &[Column::new("knee", "deg"), Column::new("ankle", "deg")],
-        &[set("locked-ankle", m_and_v()), set("free-ankle", m_and_v())],
-        (knees.len() * ankles.len()) as u64,
-    )
-    .map_err(|e| e.to_string())?;
-    for &knee in &knees {
-        for &ankle in &ankles {
-            writer.push_parameters(&[knee, ankle]).map_err(|e| e.to_string())?;
-            let p = Pose { knee_flexion: knee, plantarflexion: ankle, ..*pose };
-            for (i, joint) in [AnkleJoint::Locked, AnkleJoint::Free].into_iter().enumerate() {
-                let row = leg
-                    .effective_mass(&p, impact, joint)
-                    .and_then(|m| Ok([m.effective_mass, exit_outcome(m.effective_mass, base)?.v_ball_out]));
-                match row {
-                    Ok(values) => writer.push_outcome(i, Ok(&values)),
-                    Err(e) => writer.push_outcome(i, Err((e.status(), &e.to_string()))),
-                }
-                .map_err(|e| e.to_string())?;
-            }
-        }
+    let grid = LegPoseGrid { leg: *leg, pose: *pose, impact: *impact, base: *base, knees, ankles };
+    let axis = LegMassAxis { base: *base, masses: mass_axis() };
+    let tables: [(&str, &dyn Level); 2] = [("leg_effective_mass", &grid), ("leg_exit_speed", &axis)];
+    let mut written = Vec::new();
+    for (name, level) in tables {
+        let path = dir.join(format!("{name}.h5"));
+        let provenance = Provenance::now(name, "kick leg (command line)", command);
+        let bar = indicatif::ProgressBar::hidden();
+        let mut writer = create_table(level, &path, &provenance, level.rows(), Default::default()).map_err(|e| e.to_string())?;
+        fill_table(level, 0..level.rows(), &mut writer, &bar).map_err(|e| e.to_string())?;
+        written.push(finish_table(level, writer, &bar).map_err(|e| e.to_string())?.path);
     }
-    written.push(writer.finish().map_err(|e| e.to_string())?);
-
-    let path = dir.join("leg_exit_speed.h5");
-    let masses = mass_axis();
-    let provenance = Provenance::now("leg_exit_speed", "kick leg (command line)", &text);
-    let columns = vec![
-        Column::new("v_ball_out", "m/s"),
-        Column::new("speed_ratio", "1"),
-        // Eq. 38 with e = 1: the perfectly elastic bound.
-        Column::new("elastic_bound_v_ball_out", "m/s"),
-    ];
-    let mut writer = SweepWriter::create(&path, &provenance, &[Column::new("foot_mass", "kg")], &[set("accurate", columns)], masses.len() as u64)
-        .map_err(|e| e.to_string())?;
-    for m in masses {
-        writer.push_parameters(&[m]).map_err(|e| e.to_string())?;
-        let bound = kick_restitution::speed_ratio_ball_at_rest(1.0, m, base.ball_mass()) * base.foot_speed();
-        match exit_outcome(m, base) {
-            Ok(o) => writer.push_outcome(0, Ok(&[o.v_ball_out, o.speed_ratio.unwrap_or(f64::NAN), bound])),
-            Err(e) => writer.push_outcome(0, Err((e.status(), &e.to_string()))),
-        }
-        .map_err(|e| e.to_string())?;
-    }
-    written.push(writer.finish().map_err(|e| e.to_string())?);
     Ok(written)
 }

@@ -23,5 +23,5 @@ pub mod validation;
 
 // The modules of kick-study and kick-store under the names this crate's files use.
 pub(crate) use kick_store::{compare, h5, output, provenance, run, shard, sweep, sweep3d};
-pub(crate) use kick_store::{Column, OutcomeSet, Provenance, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};
+pub(crate) use kick_store::{Provenance, ResultFile, ResultWriter, SweepData};
 pub(crate) use kick_study::{checks, flight, printable, sample, table2};
