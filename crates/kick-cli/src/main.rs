@@ -218,6 +218,7 @@ impl HistoryArgs {
             .as_deref()
             .map(|path| kick_store::history::request(path, self.samples, self.interval))
             .transpose()
+            .map_err(|e| e.to_string())
     }
 }
 
