@@ -52,6 +52,9 @@ pub enum StudyError {
     /// A history whose solve reported more rows than reached its sink.
     #[error("{}: {written} of {total} rows written", .path.display())]
     ShortHistory { path: PathBuf, written: u64, total: u64 },
+    /// A deflate level outside 1..=9, given as `what` (`--compress`, `compress`).
+    #[error("{what} {level}: the deflate level must be 1 (fastest) to 9 (smallest)")]
+    Deflate { what: String, level: i64 },
     /// A value that has no JSON form.
     #[error("{0}")]
     Json(String),
@@ -73,7 +76,8 @@ impl StudyError {
             | StudyError::Spacing { .. }
             | StudyError::HistoryRows { .. }
             | StudyError::Flag { .. }
-            | StudyError::File { .. } => Status::Refused,
+            | StudyError::File { .. }
+            | StudyError::Deflate { .. } => Status::Refused,
         }
     }
 }
