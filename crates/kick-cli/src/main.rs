@@ -218,6 +218,7 @@ impl HistoryArgs {
             .as_deref()
             .map(|path| kick_store::history::request(path, self.samples, self.interval))
             .transpose()
+            .map_err(|e| e.to_string())
     }
 }
 
@@ -564,7 +565,7 @@ fn main() -> ExitCode {
 
 /// `--compress [LEVEL]` as given: absent, without a level, or with one.
 fn compression(given: Option<Option<i64>>) -> Result<kick_store::h5::Compression, String> {
-    given.map_or(Ok(kick_store::h5::Compression::None), |level| kick_store::h5::Compression::deflate(level, "--compress"))
+    given.map_or(Ok(kick_store::h5::Compression::None), |level| Ok(kick_store::h5::Compression::deflate(level, "--compress")?))
 }
 
 fn execute(command: Command, out: &mut Out) -> CliResult {

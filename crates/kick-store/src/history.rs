@@ -25,6 +25,7 @@
 //! (3D) and [`FLIGHT_HISTORY_COLUMNS`] (flight); vectors as `_x`, `_y`, `_z`.
 //! No wall-clock time is written: the same run writes the same bytes.
 
+use crate::error::StoreError;
 use crate::h5::{self, Column, H5Error, ResultWriter, CHUNK_ROWS};
 pub use kick_study::history::*;
 use crate::output::{OutputError, Staged};
@@ -49,21 +50,21 @@ pub struct HistoryWriter {
     rows: u64,
 }
 
-fn io(path: &Path) -> impl Fn(std::io::Error) -> String + '_ {
-    move |e| OutputError::Io { path: path.to_path_buf(), message: e.to_string() }.to_string()
+fn io(path: &Path) -> impl Fn(std::io::Error) -> StoreError + '_ {
+    move |e| OutputError::Io { path: path.to_path_buf(), message: e.to_string() }.into()
 }
 
-fn h5(e: H5Error) -> String {
-    e.to_string()
+fn h5(e: H5Error) -> StoreError {
+    e.into()
 }
 
 impl HistoryWriter {
     /// Begin `request.path` (a temporary file until [`Self::finish`]).
-    pub fn create(request: &HistoryRequest, columns: &[(&str, &str)], meta: &HistoryMeta) -> Result<HistoryWriter, String> {
+    pub fn create(request: &HistoryRequest, columns: &[(&str, &str)], meta: &HistoryMeta) -> Result<HistoryWriter, StoreError> {
         let path = request.path.clone();
         let sink = match HistoryFormat::of(&path)? {
             HistoryFormat::Csv => {
-                let staged = Staged::begin(&path).map_err(|e| e.to_string())?;
+                let staged = Staged::begin(&path)?;
                 let file = File::create(staged.temporary()).map_err(io(&path))?;
                 let mut out = BufWriter::new(file);
                 let header: Vec<String> = columns.iter().map(|(n, u)| format!("{n} [{u}]")).collect();
@@ -103,15 +104,12 @@ impl HistoryWriter {
     }
 
     /// Append one row (one value per column).
-    pub fn push(&mut self, values: &[f64]) -> Result<(), String> {
+    pub fn push(&mut self, values: &[f64]) -> Result<(), StoreError> {
         if values.len() != self.width {
-            return Err(format!("{}: a row of {} values for {} columns", self.path.display(), values.len(), self.width));
+            return Err(StoreError::RowWidth { path: self.path.clone(), values: values.len(), columns: self.width });
         }
         if self.rows >= MAX_FILE_SAMPLES {
-            return Err(format!(
-                "--history {}: more than {MAX_FILE_SAMPLES} rows; give a larger --interval or fewer --samples",
-                self.path.display()
-            ));
+            return Err(StoreError::HistoryRows { path: self.path.clone(), max: MAX_FILE_SAMPLES });
         }
         self.rows += 1;
         match &mut self.sink {
@@ -139,7 +137,7 @@ impl HistoryWriter {
         }
     }
 
-    fn flush(&mut self) -> Result<(), String> {
+    fn flush(&mut self) -> Result<(), StoreError> {
         if let Sink::Hdf5 { datasets, buffer, .. } = &mut self.sink {
             for (dataset, column) in datasets.iter().zip(buffer.iter_mut()) {
                 let start = dataset.size();
@@ -154,18 +152,18 @@ impl HistoryWriter {
     }
 
     /// Write the last rows and give the file its name.
-    pub fn finish(mut self) -> Result<PathBuf, String> {
+    pub fn finish(mut self) -> Result<PathBuf, StoreError> {
         self.flush()?;
         let path = self.path.clone();
         match self.sink {
             Sink::Csv { staged, out } => {
                 out.into_inner().map_err(|e| io(&path)(e.into_error()))?.sync_all().map_err(io(&path))?;
-                staged.commit().map_err(|e| e.to_string())
+                Ok(staged.commit()?)
             }
             Sink::Hdf5 { writer, datasets, .. } => {
                 h5::write_u64_attr(writer.file(), &path, "samples", self.rows).map_err(h5)?;
                 drop(datasets);
-                writer.finish().map_err(h5)
+                Ok(writer.finish()?)
             }
         }
     }
@@ -175,7 +173,7 @@ impl HistoryWriter {
     pub fn sink<'a, S>(
         &'a mut self,
         values: impl Fn(&S) -> Vec<f64> + 'a,
-        error: &'a mut Option<String>,
+        error: &'a mut Option<StoreError>,
     ) -> impl FnMut(&S) -> ControlFlow<()> + 'a {
         move |s| match self.push(&values(s)) {
             Ok(()) => ControlFlow::Continue(()),
@@ -189,7 +187,7 @@ impl HistoryWriter {
 
 impl HistorySink for HistoryWriter {
     fn push(&mut self, values: &[f64]) -> Result<(), String> {
-        HistoryWriter::push(self, values)
+        Ok(HistoryWriter::push(self, values)?)
     }
 
     fn rows(&self) -> u64 {
@@ -197,7 +195,7 @@ impl HistorySink for HistoryWriter {
     }
 
     fn finish(self: Box<Self>) -> Result<PathBuf, String> {
-        HistoryWriter::finish(*self)
+        Ok(HistoryWriter::finish(*self)?)
     }
 }
 
@@ -208,8 +206,8 @@ pub fn open(request: &HistoryRequest, columns: &[(&str, &str)], meta: &HistoryMe
 
 /// A request for a history file (`--history FILE [--samples N | --interval DT]`),
 /// written by [`HistoryWriter`].
-pub fn request(path: &Path, samples: Option<usize>, interval: Option<f64>) -> Result<HistoryRequest, String> {
-    HistoryRequest::new(path, samples, interval, open)
+pub fn request(path: &Path, samples: Option<usize>, interval: Option<f64>) -> Result<HistoryRequest, StoreError> {
+    Ok(HistoryRequest::new(path, samples, interval, open)?)
 }
 
 #[cfg(test)]
@@ -217,6 +215,8 @@ mod tests {
     use super::*;
     use crate::h5::ResultFile;
     use kick_core::parameters::Value;
+    use kick_core::KickError;
+    use kick_study::StudyError;
 
     fn scratch(name: &str) -> PathBuf {
         let dir = std::env::temp_dir().join(format!("kick-history-{name}-{}", std::process::id()));
@@ -235,7 +235,7 @@ mod tests {
 
     type Sink<'a> = &'a mut dyn FnMut(&u64) -> ControlFlow<()>;
 
-    fn stream(rows: u64) -> impl FnOnce(Sink) -> Result<(&'static str, u64), String> {
+    fn stream(rows: u64) -> impl FnOnce(Sink) -> Result<(&'static str, u64), StudyError> {
         move |sink| {
             for k in 0..rows {
                 if sink(&k).is_break() {
@@ -247,19 +247,47 @@ mod tests {
     }
 
     #[test]
+    fn a_row_of_another_width_is_refused_by_name() {
+        let dir = scratch("width");
+        let path = dir.join("h.csv");
+        let request = HistoryRequest { path: path.clone(), spacing: Spacing::Count(5), open };
+        let mut writer = HistoryWriter::create(&request, &COLUMNS, &HistoryMeta::default()).unwrap();
+        let e = writer.push(&[1.0, 2.0]).unwrap_err();
+        assert!(matches!(&e, StoreError::RowWidth { values: 2, columns: 3, path: p } if *p == path), "{e:?}");
+        assert_eq!(e.to_string(), format!("{}: a row of 2 values for 3 columns", path.display()));
+        drop(writer);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_sweep_target_names_the_flag_it_refuses() {
+        let e = crate::sweep::SweepTarget::check(0, Path::new("a.h5"), None, None).unwrap_err();
+        assert!(matches!(e, StoreError::Flag { flag: "samples", .. }), "{e:?}");
+        let e = crate::sweep::SweepTarget::check(5, Path::new("a.csv"), None, None).unwrap_err();
+        assert!(matches!(e, StoreError::Flag { flag: "out", .. }), "{e:?}");
+        assert_eq!(e.to_string(), "--out a.csv must name a file NAME.h5");
+        let e = crate::sweep::SweepTarget::check(5, Path::new("a.h5"), Some("3/2"), None).unwrap_err();
+        assert!(matches!(e, StoreError::ShardFlag(_)), "{e:?}");
+    }
+
+    #[test]
     fn formats_come_from_the_extension_only() {
         assert_eq!(HistoryFormat::of(Path::new("a/b.CSV")), Ok(HistoryFormat::Csv));
         assert_eq!(HistoryFormat::of(Path::new("b.h5")), Ok(HistoryFormat::Hdf5));
         assert_eq!(HistoryFormat::of(Path::new("b.hdf5")), Ok(HistoryFormat::Hdf5));
         for bad in ["b.txt", "b", "b.h5.tmp", "csv"] {
             let e = HistoryFormat::of(Path::new(bad)).unwrap_err();
+            assert!(matches!(e, StudyError::Flag { flag: "history", .. }), "{e:?}");
+            let e = e.to_string();
             assert!(e.starts_with(&format!("--history {bad}:")) && e.contains(".csv, .h5 or .hdf5"), "{e}");
         }
         let e = request(Path::new("a.csv"), Some(2), Some(1e-3)).unwrap_err();
-        assert!(e.contains("--samples or --interval"), "{e}");
+        assert!(matches!(e, StoreError::Study(StudyError::Flag { flag: "samples", .. })), "{e:?}");
+        assert!(e.to_string().contains("--samples or --interval"), "{e}");
         assert_eq!(request(Path::new("a.csv"), None, None).unwrap().spacing, Spacing::Count(DEFAULT_SAMPLES));
         let e = request(Path::new("a.csv"), Some(MAX_FILE_SAMPLES as usize + 1), None).unwrap_err();
-        assert!(e.contains("--samples"), "{e}");
+        assert!(matches!(e, StoreError::Study(StudyError::HistoryRows { max: MAX_FILE_SAMPLES, .. })), "{e:?}");
+        assert_eq!(e.to_string(), format!("--samples {}: at most {MAX_FILE_SAMPLES} rows in a history file", MAX_FILE_SAMPLES + 1));
     }
 
     /// CSV: the header line, then the rows' numbers, every bit kept.
@@ -315,17 +343,21 @@ mod tests {
             let path = dir.join(name);
             std::fs::write(&path, b"old").unwrap();
             let request = HistoryRequest { path: path.clone(), spacing: Spacing::Count(5), open };
-            let failing = |sink: &mut dyn FnMut(&u64) -> ControlFlow<()>| -> Result<((), u64), String> {
+            let no_separation = KickError::NoSeparation { time: 1e-3, reason: "horizon".into() };
+            let failing = |sink: &mut dyn FnMut(&u64) -> ControlFlow<()>| -> Result<((), u64), KickError> {
                 let _ = sink(&0);
-                Err("no separation".into())
+                Err(no_separation.clone())
             };
-            assert_eq!(write(&request, &COLUMNS, &HistoryMeta::default(), |&k| row(k), failing).unwrap_err(), "no separation");
-            let short = |sink: &mut dyn FnMut(&u64) -> ControlFlow<()>| -> Result<((), u64), String> {
+            let e = write(&request, &COLUMNS, &HistoryMeta::default(), |&k| row(k), failing).unwrap_err();
+            assert_eq!(e, StudyError::Kick(no_separation.clone()));
+            assert_eq!(e.status(), kick_core::Status::NumericalFailure);
+            let short = |sink: &mut dyn FnMut(&u64) -> ControlFlow<()>| -> Result<((), u64), StudyError> {
                 let _ = sink(&0);
                 Ok(((), 2))
             };
             let e = write(&request, &COLUMNS, &HistoryMeta::default(), |&k| row(k), short).unwrap_err();
-            assert!(e.contains("1 of 2 rows"), "{e}");
+            assert!(matches!(e, StudyError::ShortHistory { written: 1, total: 2, .. }), "{e:?}");
+            assert!(e.to_string().contains("1 of 2 rows"), "{e}");
             assert_eq!(std::fs::read(&path).unwrap(), b"old");
         }
         let mut names: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();

@@ -10,6 +10,7 @@
 //! No plotting: figures and pages are kick-paper's.
 
 pub mod compare;
+pub mod error;
 pub mod h5;
 pub mod history;
 pub mod output;
@@ -30,6 +31,7 @@ pub mod identify {
 pub(crate) use kick_study::{experiment, limits, printable, sample};
 pub(crate) use kick_study::{Experiment, Output, Printable, Scenarios};
 
+pub use error::StoreError;
 pub use h5::{Column, OutcomeSet, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};
 pub use provenance::Provenance;
 pub use run::{run, RunReport, RunSummary};

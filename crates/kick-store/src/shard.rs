@@ -27,6 +27,7 @@
 //! histories); what describes the whole experiment (`/grid`, a 3D file's
 //! `/fixed`) must be the same in every part and is copied once.
 
+use crate::error::StoreError;
 use crate::experiment::{AnyExperiment, Experiment, Experiment3d};
 use crate::h5::{close_file, create_staged, disable_file_locking, new_group, read_str_attr, read_u64_attr, write_str_attr, write_u64_attr, H5Error, CHUNK_ROWS};
 use crate::output::OutputError;
@@ -88,28 +89,26 @@ pub fn run_shard3d(experiment: &Experiment3d, shard: Shard, out_dir: &Path) -> R
 
 /// `kick run FILE [--shard I/N]`: the whole experiment (1D or 3D) into
 /// `out/NAME.h5`, or shard I/N (`shard` as given) into `out/NAME.shard-I-of-N.h5`.
-pub fn run_file(file: &Path, out: &Path, shard: Option<&str>) -> Result<RunReport, String> {
+pub fn run_file(file: &Path, out: &Path, shard: Option<&str>) -> Result<RunReport, StoreError> {
     let Some(given) = shard else { return run_whole(file, out) };
-    let shard = Shard::parse(given, "--shard").map_err(|e| e.to_string())?;
-    let experiment = crate::experiment::load_any(file).map_err(|e| e.to_string())?;
+    let shard = Shard::parse(given, "--shard")?;
+    let experiment = crate::experiment::load_any(file)?;
     let started = std::time::Instant::now();
     let summary = match &experiment {
         AnyExperiment::OneD(e) => run_shard(e, shard, out, true),
         AnyExperiment::ThreeD(e) => run_shard3d(e, shard, out),
-    }
-    .map_err(|e| e.to_string())?;
+    }?;
     Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
 }
 
 /// Load and run one experiment file of either level into `out/NAME.h5`.
-fn run_whole(file: &Path, out: &Path) -> Result<RunReport, String> {
-    let experiment = crate::experiment::load_any(file).map_err(|e| e.to_string())?;
+fn run_whole(file: &Path, out: &Path) -> Result<RunReport, StoreError> {
+    let experiment = crate::experiment::load_any(file)?;
     let started = std::time::Instant::now();
     let summary = match &experiment {
         crate::experiment::AnyExperiment::OneD(e) => crate::run::run(e, out, true),
         crate::experiment::AnyExperiment::ThreeD(e) => crate::three_d::run(e, out),
-    }
-    .map_err(|e| e.to_string())?;
+    }?;
     Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
 }
 

@@ -8,6 +8,7 @@
 //! scenario in every shard (drawn from (seed, i)), and `kick merge
 //! NAME.h5 PART...` joins the parts into the unsharded sweep's file.
 
+use crate::error::StoreError;
 use crate::experiment::MAX_SCENARIOS;
 use crate::limits::LimitError;
 use crate::printable::Printable;
@@ -62,22 +63,22 @@ pub struct SweepTarget {
 impl SweepTarget {
     /// Check `--samples` (1 ..= [`MAX_SCENARIOS`]), `--out` (a file NAME.h5)
     /// and `--shard`, then start `--threads` workers; errors name the flag.
-    pub fn check(samples: u64, out: &Path, shard: Option<&str>, threads: Option<usize>) -> Result<SweepTarget, String> {
+    pub fn check(samples: u64, out: &Path, shard: Option<&str>, threads: Option<usize>) -> Result<SweepTarget, StoreError> {
         if samples == 0 {
-            return Err("--samples must be at least 1".into());
+            return Err(StoreError::Flag { flag: "samples", message: "--samples must be at least 1".into() });
         }
         if samples > MAX_SCENARIOS {
-            return Err(LimitError::TooManyRows { what: "--samples", rows: samples }.to_string());
+            return Err(LimitError::TooManyRows { what: "--samples", rows: samples }.into());
         }
         let name = out
             .file_stem()
             .and_then(|s| s.to_str())
             .filter(|_| out.extension().is_some_and(|e| e == "h5"))
-            .ok_or_else(|| format!("--out {} must name a file NAME.h5", out.display()))?
+            .ok_or_else(|| StoreError::Flag { flag: "out", message: format!("--out {} must name a file NAME.h5", out.display()) })?
             .to_string();
         let directory = out.parent().map(PathBuf::from).unwrap_or_default();
-        let shard = shard.map(|given| Shard::parse(given, "--shard")).transpose().map_err(|e| e.to_string())?;
-        crate::limits::use_threads(threads, "--threads").map_err(|e| e.to_string())?;
+        let shard = shard.map(|given| Shard::parse(given, "--shard")).transpose()?;
+        crate::limits::use_threads(threads, "--threads")?;
         let (rows, path) = match shard {
             Some(shard) => (shard.rows(samples), directory.join(shard.file_name(&name))),
             None => (0..samples, out.to_path_buf()),
@@ -108,12 +109,12 @@ pub struct SweepReport {
 
 /// Sample `settings.samples` scenarios, solve them in parallel and stream
 /// them into the result file.
-pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
+pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
     let target = SweepTarget::check(settings.samples, &settings.out, settings.shard.as_deref(), settings.threads)?;
     let SweepTarget { name, directory, .. } = target.clone();
-    let solver = SolverChoice::with_step(&settings.solver, settings.dt).map_err(|e| e.to_string())?;
+    let solver = SolverChoice::with_step(&settings.solver, settings.dt)?;
     let sweep = SampledSweep { samples: settings.samples, seed: settings.seed, fixed: settings.fixed };
-    sweep.scenario(0).map_err(|e| e.to_string())?;
+    sweep.scenario(0)?;
     // The provenance keeps what made the file: the command and the ranges.
     let mut fixed: String = Parameter::ALL
         .iter()
@@ -145,8 +146,8 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, String> {
     };
     let started = std::time::Instant::now();
     let summary = match target.shard {
-        None => crate::run(&experiment, &directory, true).map_err(|e| e.to_string())?,
-        Some(shard) => crate::shard::run_shard(&experiment, shard, &directory, true).map_err(|e| e.to_string())?,
+        None => crate::run(&experiment, &directory, true)?,
+        Some(shard) => crate::shard::run_shard(&experiment, shard, &directory, true)?,
     };
     let seconds = started.elapsed().as_secs_f64();
     let auto_paths = matches!(solver, SolverChoice::Auto(_)).then(|| {

@@ -22,6 +22,7 @@
 //! "3d"`, `law` (the set's setting), `seed` and `samples` (the sweep's; `rows` is the file's),
 //! and a shard's attributes ([`crate::shard`]).
 
+use crate::error::StoreError;
 use crate::h5::{write_str_attr, write_u64_attr, Compression, H5Error};
 use crate::limits;
 use crate::printable::Printable;
@@ -71,16 +72,16 @@ pub struct Sweep3dReport {
 }
 
 /// Sample `settings.samples` kicks, solve them in parallel and write the file.
-pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, String> {
+pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> {
     let target = SweepTarget::check(settings.samples, &settings.out, settings.shard.as_deref(), settings.threads)?;
     let rows = target.rows.end - target.rows.start;
-    limits::check_rows("--samples", settings.samples, rows, SampledSweep3d { kicks: SampledKicks { seed: settings.seed, fixed: settings.fixed }, samples: settings.samples }.bytes_per_row(), &target.directory).map_err(|e| e.to_string())?;
+    limits::check_rows("--samples", settings.samples, rows, SampledSweep3d { kicks: SampledKicks { seed: settings.seed, fixed: settings.fixed }, samples: settings.samples }.bytes_per_row(), &target.directory)?;
     let kicks = SampledKicks { seed: settings.seed, fixed: settings.fixed };
     // A held value the model refuses is refused before the run, and so is a
     // held damping or restitution the law would ignore (the drawn damping is
     // the sampler's, not the user's).
-    settings.fixed.scenario.check_given().map_err(|e| e.to_string())?;
-    kicks.spec(0).build_drawn().map_err(|e| e.to_string())?;
+    settings.fixed.scenario.check_given()?;
+    kicks.spec(0).build_drawn()?;
     let law = settings.fixed.scenario.law.unwrap_or(kick_core::LawKind::PowerLaw);
     let mut given = String::new();
     for p in parameters::at_levels(KickSpec::LEVELS) {
@@ -105,7 +106,7 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, String> {
     let provenance = Provenance::now(&target.name, &format!("kick sweep3d (seed {})", settings.seed), &text);
     let started = std::time::Instant::now();
     let cpu_started = cpu_seconds();
-    let (path, not_separated) = write(&target, &provenance, &kicks, settings.compress).map_err(|e| e.to_string())?;
+    let (path, not_separated) = write(&target, &provenance, &kicks, settings.compress)?;
     Ok(Sweep3dReport {
         kicks: rows,
         shard: target.describe_shard(),

@@ -12,7 +12,8 @@
 //! spec's; the foot's path stays horizontal with no gravity during the
 //! contact, which the turn about the path needs.
 
-use crate::flight::{flight_error, After};
+use crate::error::StudyError;
+use crate::flight::After;
 use crate::free_kick::{self, VERTICAL_OFFSET};
 use crate::printable::Printable;
 use kick_3d::KickSpec;
@@ -33,11 +34,11 @@ pub enum AimFrom {
 impl AimFrom {
     pub const NAMES: [&'static str; 2] = ["launch", "kick"];
 
-    pub fn from_name(name: &str) -> Result<AimFrom, String> {
+    pub fn from_name(name: &str) -> Result<AimFrom, StudyError> {
         match name {
             "launch" => Ok(AimFrom::Launch),
             "kick" => Ok(AimFrom::Kick),
-            _ => Err(format!("unknown `from` = `{name}`: expected launch or kick (flag --from)")),
+            _ => Err(StudyError::Flag { flag: "from", message: format!("unknown `from` = `{name}`: expected launch or kick (flag --from)") }),
         }
     }
 }
@@ -132,24 +133,25 @@ pub struct AimReport {
 }
 
 /// An aim error as front ends show it, naming the flag.
-pub fn aim_error(error: AimError) -> String {
+pub fn aim_error(error: AimError) -> StudyError {
+    let flag = match &error {
+        AimError::Flight(_) => None,
+        AimError::Invalid { name, .. } => Some(match FlightParameter::from_name(name) {
+            Ok(p) => p.def().flag(),
+            Err(_) => format!("--{}", name.replace('_', "-")),
+        }),
+        AimError::UnknownFree { .. } | AimError::DuplicateFree { .. } | AimError::NoFree => Some("--free".into()),
+        _ => None,
+    };
     match error {
-        AimError::Flight(e) => flight_error(e),
-        AimError::Invalid { name, .. } => {
-            let flag = match FlightParameter::from_name(name) {
-                Ok(p) => p.def().flag(),
-                Err(_) => format!("--{}", name.replace('_', "-")),
-            };
-            format!("{error} (flag {flag})")
-        }
-        e @ (AimError::UnknownFree { .. } | AimError::DuplicateFree { .. } | AimError::NoFree) => format!("{e} (flag --free)"),
-        e => e.to_string(),
+        AimError::Flight(e) => e.into(),
+        source => StudyError::Aim { source, flag },
     }
 }
 
 /// `kick aim`: solve `request` (see the module docs and [`kick_flight::aim`]).
-pub fn aim(request: &AimRequest) -> Result<AimReport, String> {
-    let target = request.target.ok_or("`target` is required (flag --target X,Y,Z)")?;
+pub fn aim(request: &AimRequest) -> Result<AimReport, StudyError> {
+    let target = request.target.ok_or(StudyError::Flag { flag: "target", message: "`target` is required (flag --target X,Y,Z)".into() })?;
     let wall = match request.wall {
         None => Wall::default(),
         Some([distance, height, half_width]) => Wall { distance, height, half_width },
@@ -162,7 +164,7 @@ pub fn aim(request: &AimRequest) -> Result<AimReport, String> {
                 Some(names) => names.iter().map(|n| LaunchFree::from_name(n)).collect::<Result<Vec<_>, _>>().map_err(aim_error)?,
             };
             if request.kick != KickSpec::default() {
-                return Err("kick parameters (and --law) apply only with --from kick".into());
+                return Err(StudyError::Flag { flag: "from", message: "kick parameters (and --law) apply only with --from kick".into() });
             }
             let solution = aim_launch(target, wall, &free, &request.flight).map_err(aim_error)?;
             Ok(AimReport { from, solution, kick: None })
@@ -171,18 +173,21 @@ pub fn aim(request: &AimRequest) -> Result<AimReport, String> {
     }
 }
 
-fn aim_kick(target: [f64; 3], wall: Wall, request: &AimRequest) -> Result<AimReport, String> {
+fn aim_kick(target: [f64; 3], wall: Wall, request: &AimRequest) -> Result<AimReport, StudyError> {
     let free = match &request.free {
         None => KickFree::ALL.to_vec(),
         Some(names) => names.iter().map(|n| KickFree::from_name(n)).collect::<Result<Vec<_>, _>>().map_err(aim_error)?,
     };
     check_unique(&free, KickFree::name).map_err(aim_error)?;
     if let Some(p) = FlightParameter::ALL.into_iter().find(|&p| After::Kick3d.sets(p) && request.flight.is_set(p)) {
-        return Err(format!(
-            "flight parameter `{}` is set by the 3D kick and cannot be given with --from kick (flag {})",
-            p.name(),
-            p.def().flag()
-        ));
+        return Err(StudyError::Flag {
+            flag: "from",
+            message: format!(
+                "flight parameter `{}` is set by the 3D kick and cannot be given with --from kick (flag {})",
+                p.name(),
+                p.def().flag()
+            ),
+        });
     }
     if let Some(d) = request.flight.distance {
         return Err(aim_error(AimError::Invalid { name: "distance", values: vec![d], requirement: "left out: the target's X is the goal plane" }));
@@ -195,15 +200,18 @@ fn aim_kick(target: [f64; 3], wall: Wall, request: &AimRequest) -> Result<AimRep
         ("ground", k.ground == Some(true)),
     ] {
         if given {
-            return Err(format!(
-                "kick parameter `{name}` cannot be given with --from kick: the contact is placed by lateral_offset and \
-                 contact_depth on a horizontal path without gravity (flag --{})",
-                name.replace('_', "-")
-            ));
+            return Err(StudyError::Flag {
+                flag: "from",
+                message: format!(
+                    "kick parameter `{name}` cannot be given with --from kick: the contact is placed by lateral_offset and \
+                     contact_depth on a horizontal path without gravity (flag --{})",
+                    name.replace('_', "-")
+                ),
+            });
         }
     }
     // The kick as given, validated once (its ball radius places the target).
-    let base = request.kick.build().map_err(|e| e.to_string())?;
+    let base = request.kick.build()?;
     let scene = Scene::new(target, wall, base.ball_radius).map_err(aim_error)?;
     let start = |p: KickFree| match p {
         KickFree::FootSpeed => request.kick.scenario.foot_speed.unwrap_or(18.0),
@@ -374,8 +382,10 @@ mod tests {
 
     #[test]
     fn bad_requests_name_their_flags() {
-        let error = |r: AimRequest| aim(&r).unwrap_err();
+        let error = |r: AimRequest| aim(&r).unwrap_err().to_string();
         let base = AimRequest { target: Some([25.0, 0.0, 1.5]), ..AimRequest::default() };
+        let typed = aim(&AimRequest { target: None, ..base.clone() }).unwrap_err();
+        assert!(matches!(typed, StudyError::Flag { flag: "target", .. }), "{typed:?}");
         assert!(error(AimRequest { target: None, ..base.clone() }).contains("--target"));
         let text = error(AimRequest { target: Some([25.0, 0.0, 10.0]), ..base.clone() });
         assert!(text.contains("`target`") && text.contains("(flag --target)"), "{text}");
@@ -396,6 +406,6 @@ mod tests {
         assert!(text.contains("--from kick"), "{text}");
         let text = error(AimRequest { flight: FlightSpec { speed: Some(20.0), ..FlightSpec::default() }, ..kick.clone() });
         assert!(text.contains("`speed`") && text.contains("3D kick"), "{text}");
-        assert!(AimFrom::from_name("foot").unwrap_err().contains("--from"));
+        assert!(AimFrom::from_name("foot").unwrap_err().to_string().contains("--from"));
     }
 }

@@ -71,11 +71,11 @@ impl Compression {
 
     /// Shuffle + deflate at `level` (`None`: [`Self::DEFAULT_LEVEL`]), given
     /// as `what` (a flag or key, named in the error).
-    pub fn deflate(level: Option<i64>, what: &str) -> Result<Compression, String> {
+    pub fn deflate(level: Option<i64>, what: &str) -> Result<Compression, crate::error::StudyError> {
         match level {
             None => Ok(Compression::Deflate(Self::DEFAULT_LEVEL)),
             Some(l @ 1..=9) => Ok(Compression::Deflate(l as u8)),
-            Some(l) => Err(format!("{what} {l}: the deflate level must be 1 (fastest) to 9 (smallest)")),
+            Some(level) => Err(crate::error::StudyError::Deflate { what: what.into(), level }),
         }
     }
 }

@@ -631,8 +631,8 @@ fn compression(at: &Locator, given: Option<&Spanned<toml::Value>>) -> Result<cra
     let Some(given) = given else { return Ok(Compression::None) };
     match given.get_ref() {
         toml::Value::Boolean(false) => Ok(Compression::None),
-        toml::Value::Boolean(true) => Compression::deflate(None, "compress"),
-        toml::Value::Integer(level) => Compression::deflate(Some(*level), "compress"),
+        toml::Value::Boolean(true) => Compression::deflate(None, "compress").map_err(|e| e.to_string()),
+        toml::Value::Integer(level) => Compression::deflate(Some(*level), "compress").map_err(|e| e.to_string()),
         other => Err(format!("compress = {other}: expected a deflate level 1 (fastest) to 9 (smallest), or true")),
     }
     .map_err(|message| at.error(given.span(), "compress", message))

@@ -2,6 +2,7 @@
 //! `kick simulate` and `kick simulate3d`): a kick-flight solve with its JSON
 //! and text forms, and the chaining of a kick's launch into it.
 
+use crate::error::StudyError;
 use crate::level::Failure;
 use crate::history::{flight_values as sample_values, HistoryMeta, HistoryRequest, FLIGHT_HISTORY_COLUMNS};
 use crate::printable::Printable;
@@ -57,19 +58,21 @@ pub struct FlightRun {
     pub outcome: FlightOutcome,
 }
 
-/// A flight error as front ends show it: the parameter's name and its flag.
-pub fn flight_error(error: FlightError) -> String {
-    let name = match &error {
+/// The flag of the flight parameter `error` names, if it names one.
+pub fn flight_flag(error: &FlightError) -> Option<String> {
+    let name = match error {
         FlightError::InvalidParameter { name, .. } | FlightError::Missing { name } | FlightError::WrongLength { name, .. } => {
             Some(*name)
         }
         FlightError::Conflict { second, .. } => Some(*second),
         _ => None,
     };
-    match name.and_then(|n| FlightParameter::from_name(n).ok()) {
-        Some(p) => format!("{error} (flag {})", p.def().flag()),
-        None => error.to_string(),
-    }
+    name.and_then(|n| FlightParameter::from_name(n).ok()).map(|p| p.def().flag())
+}
+
+/// A flight error as front ends show it: the parameter's name and its flag.
+pub fn flight_error(error: FlightError) -> String {
+    StudyError::from(error).to_string()
 }
 
 /// A flight error with its status (refused or a numerical failure) and
@@ -118,11 +121,11 @@ fn meta_flight(flight: &Flight) -> HistoryMeta {
 /// `kick flight`: validate `spec`, fly it and, with `history`, write its
 /// uniform samples ([`kick_flight::history`], columns
 /// [`crate::history::FLIGHT_HISTORY_COLUMNS`]) into that file.
-pub fn flight_report(spec: &FlightSpec, history: Option<&HistoryRequest>) -> Result<FlightReport, String> {
+pub fn flight_report(spec: &FlightSpec, history: Option<&HistoryRequest>) -> Result<FlightReport, StudyError> {
+    let f = spec.build()?;
     let Some(request) = history else {
-        return Ok(FlightReport { run: flight(spec)?, written: Vec::new() });
+        return Ok(FlightReport { run: fly(f)?, written: Vec::new() });
     };
-    let f = spec.build().map_err(flight_error)?;
     let sampling = match request.spacing {
         Spacing::Count(n) => Sampling::Samples(n),
         Spacing::Interval(dt) => Sampling::Interval(dt),
@@ -131,16 +134,16 @@ pub fn flight_report(spec: &FlightSpec, history: Option<&HistoryRequest>) -> Res
         let h = kick_flight::history(&f, sampling).map_err(|e| match e {
             // The spacing's own flags, not flight parameters.
             FlightError::TooManySamples { name, .. } | FlightError::InvalidParameter { name: name @ ("samples" | "interval"), .. } => {
-                format!("{e} (flag --{name})")
+                StudyError::Flight { source: e, flag: Some(format!("--{name}")) }
             }
-            e => flight_error(e),
+            e => StudyError::from(e),
         })?;
         for s in &h.samples {
             if sink(s).is_break() {
                 break;
             }
         }
-        Ok((h.outcome, h.samples.len() as u64))
+        Ok::<_, StudyError>((h.outcome, h.samples.len() as u64))
     })?;
     Ok(FlightReport { run: FlightRun { flight: f, outcome }, written: vec![path] })
 }

@@ -3,6 +3,7 @@
 //! ([`HistoryMeta`]), and the [`HistorySink`] the rows stream into. The file
 //! formats (CSV, HDF5) are kick-store's `history` module.
 
+use crate::error::StudyError;
 use kick_core::parameters::Value;
 use kick_core::Spacing;
 use std::ops::ControlFlow;
@@ -39,17 +40,20 @@ pub struct HistoryRequest {
 impl HistoryRequest {
     /// From the front ends' `--history FILE [--samples N | --interval DT]`
     /// (neither: [`DEFAULT_SAMPLES`]; both: refused).
-    pub fn new(path: &Path, samples: Option<usize>, interval: Option<f64>, open: OpenSink) -> Result<HistoryRequest, String> {
+    pub fn new(path: &Path, samples: Option<usize>, interval: Option<f64>, open: OpenSink) -> Result<HistoryRequest, StudyError> {
         let spacing = match (samples, interval) {
-            (Some(_), Some(_)) => return Err("give --samples or --interval, not both".into()),
+            (Some(_), Some(_)) => {
+                return Err(StudyError::Flag { flag: "samples", message: "give --samples or --interval, not both".into() })
+            }
             (Some(n), None) => Spacing::Count(n),
             (None, Some(dt)) => Spacing::Interval(dt),
             (None, None) => Spacing::Count(DEFAULT_SAMPLES),
         };
-        let spacing = spacing.validate().map_err(|e| format!("{e} (flag --{})", if samples.is_some() { "samples" } else { "interval" }))?;
+        let flag = if samples.is_some() { "samples" } else { "interval" };
+        let spacing = spacing.validate().map_err(|source| StudyError::Spacing { flag, source })?;
         if let Spacing::Count(n) = spacing {
             if n as u64 > MAX_FILE_SAMPLES {
-                return Err(format!("--samples {n}: at most {MAX_FILE_SAMPLES} rows in a history file"));
+                return Err(StudyError::HistoryRows { samples: n, max: MAX_FILE_SAMPLES });
             }
         }
         HistoryFormat::of(path)?;
@@ -66,15 +70,15 @@ pub enum HistoryFormat {
 
 impl HistoryFormat {
     /// `.csv` → CSV, `.h5`/`.hdf5` → HDF5 (any case); anything else is an error naming `--history`.
-    pub fn of(path: &Path) -> Result<HistoryFormat, String> {
+    pub fn of(path: &Path) -> Result<HistoryFormat, StudyError> {
         let ext = path.extension().map(|e| e.to_string_lossy().to_ascii_lowercase());
         match ext.as_deref() {
             Some("csv") => Ok(HistoryFormat::Csv),
             Some("h5" | "hdf5") => Ok(HistoryFormat::Hdf5),
-            _ => Err(format!(
-                "--history {}: the format comes from the extension: .csv, .h5 or .hdf5",
-                path.display()
-            )),
+            _ => Err(StudyError::Flag {
+                flag: "history",
+                message: format!("--history {}: the format comes from the extension: .csv, .h5 or .hdf5", path.display()),
+            }),
         }
     }
 }
@@ -123,14 +127,17 @@ impl HistoryMeta {
 /// Write a history streamed by `solve` (which hands rows to its sink and
 /// returns its outcome and the full history's row count): the outcome and
 /// the file, or nothing written.
-pub fn write<S, O>(
+pub fn write<S, O, E>(
     request: &HistoryRequest,
     columns: &[(&str, &str)],
     meta: &HistoryMeta,
     values: impl Fn(&S) -> Vec<f64>,
-    solve: impl FnOnce(&mut dyn FnMut(&S) -> ControlFlow<()>) -> Result<(O, u64), String>,
-) -> Result<(O, PathBuf), String> {
-    let mut writer = (request.open)(request, columns, meta)?;
+    solve: impl FnOnce(&mut dyn FnMut(&S) -> ControlFlow<()>) -> Result<(O, u64), E>,
+) -> Result<(O, PathBuf), StudyError>
+where
+    StudyError: From<E>,
+{
+    let mut writer = (request.open)(request, columns, meta).map_err(StudyError::Sink)?;
     let mut error = None;
     let (outcome, total) = {
         let mut sink = |s: &S| match writer.push(&values(s)) {
@@ -143,11 +150,11 @@ pub fn write<S, O>(
         solve(&mut sink)?
     };
     if let Some(e) = error {
-        return Err(e);
+        return Err(StudyError::Sink(e));
     }
     if total != writer.rows() {
-        return Err(format!("{}: {} of {total} rows written", request.path.display(), writer.rows()));
+        return Err(StudyError::ShortHistory { path: request.path.clone(), written: writer.rows(), total });
     }
-    Ok((outcome, writer.finish()?))
+    Ok((outcome, writer.finish().map_err(StudyError::Sink)?))
 }
 

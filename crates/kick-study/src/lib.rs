@@ -11,6 +11,7 @@
 //! that kick-store implements for files and kick-py keeps in memory.
 //!
 //! - [`experiment`]: `experiments/*.toml` parsed and validated (errors name file, line and key).
+//! - [`error`]: [`StudyError`], every way a study command refuses or fails, wrapping the model crates' errors.
 //! - [`columns`]: named columns with units, outcome sets, the compression a file asks for.
 //! - [`history`]: what a time history samples and the sink its rows stream into.
 //! - [`level`]: the `Level` trait every model level implements, and the one run loop over row ranges.
@@ -19,6 +20,7 @@
 pub mod aim;
 pub mod checks;
 pub mod columns;
+pub mod error;
 pub mod experiment;
 pub mod flight;
 pub mod free_kick;
@@ -33,6 +35,7 @@ pub mod shard;
 pub mod simulate;
 pub mod table2;
 
+pub use error::StudyError;
 pub use experiment::{Experiment, ExperimentError, Output, Scenarios};
 pub use limits::set_threads;
 pub use printable::{json, Printable};

@@ -66,8 +66,8 @@ pub fn use_threads(requested: Option<usize>, name: &str) -> Result<(), LimitErro
 }
 
 /// Use `threads` rayon workers for the rest of the process (if given).
-pub fn set_threads(threads: Option<usize>) -> Result<(), String> {
-    use_threads(threads, "--threads").map_err(|e| e.to_string())
+pub fn set_threads(threads: Option<usize>) -> Result<(), crate::error::StudyError> {
+    Ok(use_threads(threads, "--threads")?)
 }
 
 /// The size of a run's result file, estimated before it runs.

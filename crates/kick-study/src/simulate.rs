@@ -1,6 +1,7 @@
 //! One contact, 1D (`kick simulate`) or 3D (`kick simulate3d`): the solve and
 //! its JSON and text forms.
 
+use crate::error::StudyError;
 use crate::flight::{self, FlightRun};
 use crate::history::{self, HistoryMeta, HistoryRequest};
 use crate::printable::Printable;
@@ -8,7 +9,7 @@ use kick_flight::FlightSpec;
 use kick_3d::{Kick3d, KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
 use kick_core::number::{sig, vector};
-use kick_core::{Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, HISTORY_COLUMNS, OBSERVABLES};
+use kick_core::{KickError, Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, HISTORY_COLUMNS, OBSERVABLES};
 use serde::ser::{Serialize, Serializer};
 use serde_json::{Map, Value};
 use std::fmt::Write as _;
@@ -53,19 +54,19 @@ pub fn simulate(
     dt: Option<f64>,
     history: Option<&HistoryRequest>,
     flight: Option<&FlightSpec>,
-) -> Result<Simulation, String> {
-    let scenario = spec.build().map_err(|e| e.to_string())?;
-    let choice = SolverChoice::with_step(solver, dt).map_err(|e| e.to_string())?;
+) -> Result<Simulation, StudyError> {
+    let scenario = spec.build()?;
+    let choice = SolverChoice::with_step(solver, dt)?;
     let (outcome, written) = match history {
         Some(request) => {
             let meta = meta_1d(&scenario, choice.name());
             let (outcome, path) = history::write(request, &HISTORY_COLUMNS, &meta, |s: &kick_core::Sample| s.values().to_vec(), |sink| {
-                let streamed = choice.solve_streamed(&scenario, request.spacing, sink).map_err(|e| e.to_string())?;
-                Ok((streamed.outcome, streamed.samples))
+                let streamed = choice.solve_streamed(&scenario, request.spacing, sink)?;
+                Ok::<_, KickError>((streamed.outcome, streamed.samples))
             })?;
             (outcome, vec![path])
         }
-        None => (choice.solve(&scenario).map_err(|e| e.to_string())?, Vec::new()),
+        None => (choice.solve(&scenario)?, Vec::new()),
     };
     let flight = flight.map(|rest| flight::after_1d(&scenario, &outcome, rest)).transpose()?;
     Ok(Simulation { scenario, solver: choice.name(), outcome, flight, written })
@@ -151,11 +152,14 @@ pub fn meta_3d(kick: &Kick3d) -> HistoryMeta {
 
 /// The accurate path a 3D history needs: `auto` or `accurate` (the other
 /// paths sample no history).
-fn history_solver(solver: &Solver3d) -> Result<kick_3d::Accurate3d, String> {
+fn history_solver(solver: &Solver3d) -> Result<kick_3d::Accurate3d, StudyError> {
     match solver {
         Solver3d::Auto => Ok(kick_3d::Accurate3d::default()),
         Solver3d::Accurate(a) => Ok(*a),
-        _ => Err("--history samples the accurate 3D path: use --solver accurate (or auto)".into()),
+        _ => Err(StudyError::Flag {
+            flag: "history",
+            message: "--history samples the accurate 3D path: use --solver accurate (or auto)".into(),
+        }),
     }
 }
 
@@ -170,16 +174,16 @@ pub fn simulate3d(
     dt: Option<f64>,
     history: Option<&HistoryRequest>,
     flight: Option<&FlightSpec>,
-) -> Result<Simulation3d, String> {
-    let kick = spec.build().map_err(|e| e.to_string())?;
-    let solver = Solver3d::with_step(solver, dt).map_err(|e| e.to_string())?;
+) -> Result<Simulation3d, StudyError> {
+    let kick = spec.build()?;
+    let solver = Solver3d::with_step(solver, dt)?;
     let start = Instant::now();
     let (outcome, written) = match history {
         Some(request) => {
             let (outcome, path) = history3d(&kick, &solver, request)?;
             (outcome, vec![path])
         }
-        None => (solver.solve(&kick).map_err(|e| e.to_string())?, Vec::new()),
+        None => (solver.solve(&kick)?, Vec::new()),
     };
     let seconds = start.elapsed().as_secs_f64();
     let flight = flight.map(|rest| flight::after_3d(&kick, &outcome, rest)).transpose()?;
@@ -189,17 +193,17 @@ pub fn simulate3d(
 /// The accurate path's history of `spec` collected, at most
 /// [`kick_core::MAX_HISTORY_SAMPLES`] rows (Python's `kick.history3d`);
 /// `solver` as for [`simulate3d`] with a history.
-pub fn sampled3d(spec: &KickSpec, solver: &str, spacing: kick_core::Spacing) -> Result<(Outcome3d, Vec<kick_3d::Sample3d>), String> {
-    let kick = spec.build().map_err(|e| e.to_string())?;
-    let accurate = history_solver(&Solver3d::from_name(solver, 0.0).map_err(|e| e.to_string())?)?;
-    accurate.solve_sampled(&kick, spacing, kick_core::MAX_HISTORY_SAMPLES).map_err(|e| e.to_string())
+pub fn sampled3d(spec: &KickSpec, solver: &str, spacing: kick_core::Spacing) -> Result<(Outcome3d, Vec<kick_3d::Sample3d>), StudyError> {
+    let kick = spec.build()?;
+    let accurate = history_solver(&Solver3d::from_name(solver, 0.0)?)?;
+    Ok(accurate.solve_sampled(&kick, spacing, kick_core::MAX_HISTORY_SAMPLES)?)
 }
 
 /// Write the accurate path's history of `kick` into `request`'s file.
-pub fn history3d(kick: &Kick3d, solver: &Solver3d, request: &HistoryRequest) -> Result<(Outcome3d, PathBuf), String> {
+pub fn history3d(kick: &Kick3d, solver: &Solver3d, request: &HistoryRequest) -> Result<(Outcome3d, PathBuf), StudyError> {
     let accurate = history_solver(solver)?;
     history::write(request, &kick_3d::HISTORY_COLUMNS_3D, &meta_3d(kick), |s: &kick_3d::Sample3d| s.values().to_vec(), |sink| {
-        accurate.solve_streamed(kick, request.spacing, sink).map_err(|e| e.to_string())
+        accurate.solve_streamed(kick, request.spacing, sink)
     })
 }
 
@@ -265,10 +269,10 @@ pub struct SceneConvergence {
     pub accurate_seconds: f64,
 }
 
-pub fn scene_convergence(spec: &KickSpec) -> Result<SceneConvergence, String> {
-    let kick = spec.build().map_err(|e| e.to_string())?;
+pub fn scene_convergence(spec: &KickSpec) -> Result<SceneConvergence, StudyError> {
+    let kick = spec.build()?;
     let steps: Vec<f64> = (0..7).map(|i| 4e-5 / f64::from(1u32 << i)).collect();
-    let (rows, accurate_seconds) = kick_3d::scene::convergence(&kick, &steps).map_err(|e| e.to_string())?;
+    let (rows, accurate_seconds) = kick_3d::scene::convergence(&kick, &steps)?;
     Ok(SceneConvergence { rows, accurate_seconds })
 }
 

@@ -1,6 +1,7 @@
 //! `kick table2`: Table 2 side by side, the paper's printed values, seed-rk4
 //! and accurate, from a Table 2 scenario file.
 
+use crate::error::StudyError;
 use crate::printable::Printable;
 use kick_compliant::table2::{columns, printed_columns, Table2File};
 use kick_compliant::{Accurate, SeedRk4};
@@ -55,29 +56,30 @@ pub const BUILT_IN: &str = include_str!("../../../experiments/table2.toml");
 
 /// The text of a Table 2 scenario file: the file on disk when it exists,
 /// else, for the default path only, the built-in copy.
-pub fn read_text(path: &Path) -> Result<String, String> {
+pub fn read_text(path: &Path) -> Result<String, StudyError> {
     if path == Path::new(DEFAULT_PATH) && std::fs::symlink_metadata(path).is_err() {
         return Ok(BUILT_IN.to_string());
     }
-    kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| format!("{}: {e}", path.display()))
+    kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES)
+        .map_err(|e| StudyError::File { path: path.to_path_buf(), message: e.to_string() })
 }
 
 /// Read a Table 2 scenario file (`kick fit table2 --write`); see [`read_text`].
-pub fn load(path: &Path) -> Result<Table2File, String> {
+pub fn load(path: &Path) -> Result<Table2File, StudyError> {
     let text = read_text(path)?;
-    Table2File::parse(&text).map_err(|e| format!("{}: {e}", path.display()))
+    Table2File::parse(&text).map_err(|e| StudyError::File { path: path.to_path_buf(), message: e.to_string() })
 }
 
 /// Table 2 from the scenario file `scenarios`: printed, seed-rk4 and accurate.
-pub fn compare(scenarios: &Path) -> Result<Table2Comparison, String> {
+pub fn compare(scenarios: &Path) -> Result<Table2Comparison, StudyError> {
     let file = load(scenarios)?;
-    let scenarios = file.scenarios().map_err(|e| e.to_string())?;
-    let seed = SeedRk4::new(file.dt).map_err(|e| e.to_string())?;
+    let scenarios = file.scenarios()?;
+    let seed = SeedRk4::new(file.dt)?;
     let accurate = Accurate::default();
     let mut rows = Vec::new();
     for ((name, scenario), (printed, spec)) in scenarios.iter().zip(TABLE2.iter().zip(&file.row)) {
-        let s = seed.solve(scenario).map_err(|e| format!("{name}: {e}"))?;
-        let a = accurate.solve(scenario).map_err(|e| format!("{name}: {e}"))?;
+        let s = seed.solve(scenario).map_err(|source| StudyError::Row { name: name.clone(), source })?;
+        let a = accurate.solve(scenario).map_err(|source| StudyError::Row { name: name.clone(), source })?;
         let mut cells = std::collections::BTreeMap::new();
         for (i, column) in COLUMNS.iter().enumerate() {
             let (p, sv, av) = (printed_columns(printed)[i], columns(&s)[i], columns(&a)[i]);

@@ -184,7 +184,8 @@ fn a_bad_compression_level_is_refused_by_name() {
     }
     for level in [0, 10, -1] {
         let e = Compression::deflate(Some(level), "--compress").unwrap_err();
-        assert_eq!(e, format!("--compress {level}: the deflate level must be 1 (fastest) to 9 (smallest)"));
+        assert_eq!(e, kick_study::StudyError::Deflate { what: "--compress".into(), level });
+        assert_eq!(e.to_string(), format!("--compress {level}: the deflate level must be 1 (fastest) to 9 (smallest)"));
     }
     assert_eq!(Compression::deflate(None, "--compress"), Ok(Compression::Deflate(4)));
     let _ = std::fs::remove_dir_all(&dir);

@@ -17,12 +17,12 @@ fn spec(law: LawKind, damping: Option<f64>, restitution: Option<f64>) -> Scenari
 /// --restitution 0.5 --damping 100`, `--solver accurate --dt 1e-6`.
 #[test]
 fn simulate_refuses_settings_that_do_not_apply() {
-    let e = simulate(&spec(LawKind::PowerLaw, None, Some(0.5)), "auto", None, None, None).unwrap_err();
+    let e = simulate(&spec(LawKind::PowerLaw, None, Some(0.5)), "auto", None, None, None).unwrap_err().to_string();
     assert!(e.starts_with("`restitution` does not apply to law `power-law`"), "{e}");
-    let e = simulate(&spec(LawKind::Flores, Some(100.0), Some(0.5)), "auto", None, None, None).unwrap_err();
+    let e = simulate(&spec(LawKind::Flores, Some(100.0), Some(0.5)), "auto", None, None, None).unwrap_err().to_string();
     assert!(e.starts_with("`damping` does not apply to law `flores`"), "{e}");
     for solver in ["accurate", "auto", "dop853", "series", "closed-form"] {
-        let e = simulate(&ScenarioSpec::default(), solver, Some(1e-6), None, None).unwrap_err();
+        let e = simulate(&ScenarioSpec::default(), solver, Some(1e-6), None, None).unwrap_err().to_string();
         assert!(e.starts_with(&format!("`dt` does not apply to solver `{solver}`")), "{e}");
     }
     // What applies still runs: the fixed-step solvers take dt, each law its own damping.
@@ -36,14 +36,14 @@ fn simulate_refuses_settings_that_do_not_apply() {
 #[test]
 fn simulate3d_refuses_settings_that_do_not_apply() {
     let kick = |scenario| KickSpec { scenario, ..Default::default() };
-    let e = simulate3d(&KickSpec::default(), "accurate", Some(1e-6), None, None).unwrap_err();
+    let e = simulate3d(&KickSpec::default(), "accurate", Some(1e-6), None, None).unwrap_err().to_string();
     assert!(e.starts_with("`dt` does not apply to 3D solver `accurate`"), "{e}");
-    let e = simulate3d(&kick(spec(LawKind::PowerLaw, None, Some(0.5))), "auto", None, None, None).unwrap_err();
+    let e = simulate3d(&kick(spec(LawKind::PowerLaw, None, Some(0.5))), "auto", None, None, None).unwrap_err().to_string();
     assert!(e.starts_with("`restitution` does not apply"), "{e}");
-    let e = simulate3d(&kick(spec(LawKind::HuntCrossley, Some(50.0), Some(0.5))), "auto", None, None, None).unwrap_err();
+    let e = simulate3d(&kick(spec(LawKind::HuntCrossley, Some(50.0), Some(0.5))), "auto", None, None, None).unwrap_err().to_string();
     assert!(e.starts_with("`damping` does not apply to law `hunt-crossley`"), "{e}");
     assert!(simulate3d(&kick(spec(LawKind::HuntCrossley, None, Some(0.5))), "auto", None, None, None).is_ok());
-    let e = kick_study::simulate::scene_convergence(&kick(spec(LawKind::PowerLaw, None, Some(0.5)))).unwrap_err();
+    let e = kick_study::simulate::scene_convergence(&kick(spec(LawKind::PowerLaw, None, Some(0.5)))).unwrap_err().to_string();
     assert!(e.starts_with("`restitution` does not apply"), "{e}");
 }
 

@@ -177,31 +177,31 @@ fn a_held_parameter_leaves_the_other_draws() {
 #[test]
 fn bad_settings_are_refused_by_name() {
     let dir = scratch("sweep3d-bad");
-    let error = sweep3d(&settings(0, 1, &dir.join("a.h5"))).unwrap_err();
+    let error = sweep3d(&settings(0, 1, &dir.join("a.h5"))).unwrap_err().to_string();
     assert!(error.contains("--samples"), "{error}");
-    let error = sweep3d(&settings(5, 1, &dir.join("a.csv"))).unwrap_err();
+    let error = sweep3d(&settings(5, 1, &dir.join("a.csv"))).unwrap_err().to_string();
     assert!(error.contains("--out"), "{error}");
-    let error = sweep3d(&settings(200_000_000, 1, &dir.join("a.h5"))).unwrap_err();
+    let error = sweep3d(&settings(200_000_000, 1, &dir.join("a.h5"))).unwrap_err().to_string();
     assert!(error.contains("--samples"), "{error}");
     let mut s = settings(5, 1, &dir.join("a.h5"));
     s.fixed.kick3d.friction = Some(-1.0);
-    let error = sweep3d(&s).unwrap_err();
+    let error = sweep3d(&s).unwrap_err().to_string();
     assert!(error.contains("`friction` = -1"), "{error}");
     let mut s = settings(5, 1, &dir.join("a.h5"));
     s.fixed.scenario.law = Some(LawKind::Flores);
-    let error = sweep3d(&s).unwrap_err();
+    let error = sweep3d(&s).unwrap_err().to_string();
     assert!(error.contains("restitution"), "{error}");
     // A held damping under a law that takes its damping from a restitution.
     let mut s = settings(5, 1, &dir.join("a.h5"));
     s.fixed.scenario.law = Some(LawKind::Flores);
     s.fixed.scenario.restitution = Some(0.6);
     s.fixed.scenario.damping = Some(100.0);
-    let error = sweep3d(&s).unwrap_err();
+    let error = sweep3d(&s).unwrap_err().to_string();
     assert!(error.contains("damping"), "{error}");
     for (given, says) in [("5/5", "numbered from 0 to 4"), ("2", "expected I/N")] {
         let mut s = settings(5, 1, &dir.join("a.h5"));
         s.shard = Some(given.into());
-        let error = sweep3d(&s).unwrap_err();
+        let error = sweep3d(&s).unwrap_err().to_string();
         assert!(error.starts_with(&format!("`--shard` = `{given}`")) && error.contains(says), "{error}");
         let error = kick_store::sweep::sweep(&kick_store::sweep::SweepSettings {
             samples: 5,
@@ -214,7 +214,8 @@ fn bad_settings_are_refused_by_name() {
             threads: None,
             compress: Default::default(),
         })
-        .unwrap_err();
+        .unwrap_err()
+        .to_string();
         assert!(error.starts_with(&format!("`--shard` = `{given}`")), "{error}");
     }
     // Nothing was written.
