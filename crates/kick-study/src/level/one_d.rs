@@ -99,3 +99,31 @@ impl Level for Experiment {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::level::run_table;
+    use kick_core::{Parameter, Scenario, Solver, Status, OBSERVABLES};
+    use std::path::Path;
+
+    /// A 1D grid with a flight after each kick, run into memory: a kick that
+    /// does not separate keeps its own status (a numerical failure, not a
+    /// bare "failed"), its flight is refused with the kick's reason, and a
+    /// row that separates equals the solve and the flight done by hand.
+    #[test]
+    fn a_failed_kick_keeps_its_status_and_its_flight_is_refused() {
+        let text = "solver = \"accurate\"\n[[sweep]]\nparameter = \"drive_force\"\nvalues = [0.0, 1e6]\n[flight]\nlaunch_angle = 20.0\n";
+        let experiment = crate::experiment::parse(Path::new("chain.toml"), text).unwrap();
+        let table = run_table(&experiment, 0..2);
+        let failed = kick_compliant::Accurate::default().solve(&Scenario::baseline().with(Parameter::DriveForce, 1e6).unwrap()).unwrap_err();
+        assert_ne!(failed.status(), Status::Refused);
+        assert_eq!(table.status[0], vec![0, failed.status().code()]);
+        assert_eq!(table.status[1], vec![0, Status::Refused.code()]);
+        assert!(table.failures[1][0].1.starts_with("no flight: the kick failed"), "{:?}", table.failures[1]);
+        let solved = kick_compliant::Accurate::default().solve(&Scenario::baseline()).unwrap();
+        let k = OBSERVABLES.iter().position(|(n, _)| *n == "v_ball_out").unwrap();
+        assert_eq!(table.outcomes[0][k][0], solved.v_ball_out);
+        let flown = crate::flight::after_1d(&Scenario::baseline(), &solved, &experiment.flight.unwrap()).unwrap();
+        assert_eq!(table.outcomes[1][0][0], flown.outcome.flight_time);
+    }
+}
