@@ -174,31 +174,6 @@ impl Filters for Compression {
     }
 }
 
-/// A per-row dataset of a known `rows` (`[rows]`, or `[rows, width]` for
-/// `width` > 1) with its unit: contiguous when plain; chunked by
-/// [`CHUNK_ROWS`] rows and filtered when compressed.
-pub fn per_row<T: hdf5::H5Type>(
-    group: &Group,
-    name: &str,
-    unit: &str,
-    (rows, width): (usize, usize),
-    compression: Compression,
-    path: &Path,
-) -> Result<Dataset, H5Error> {
-    let mut builder = group.new_dataset::<T>().obj_track_times(false);
-    if compression != Compression::None {
-        let chunk = rows.clamp(1, CHUNK_ROWS);
-        builder = if width > 1 { builder.chunk((chunk, width)) } else { builder.chunk(chunk) };
-        // Rows are written in whole chunks: a cache of two chunks, not HDF5's
-        // 1 MiB per dataset (~45 MB over a 3D sweep's columns).
-        let bytes = 2 * chunk * width * std::mem::size_of::<T>().max(16);
-        builder = builder.set_filters(&compression.filters_for::<T>()).chunk_cache(11, bytes, 1.0);
-    }
-    let dataset = if width > 1 { builder.shape((rows, width)).create(name) } else { builder.shape(rows).create(name) }.map_err(h5err(path))?;
-    write_str_attr(&dataset, path, "units", unit)?;
-    Ok(dataset)
-}
-
 pub(crate) fn extendable<T: hdf5::H5Type>(group: &Group, name: &str, unit: &str, chunk: usize, path: &Path) -> Result<Dataset, H5Error> {
     extendable_with::<T>(group, name, unit, chunk, Compression::None, path)
 }
@@ -709,7 +684,7 @@ impl ResultWriter {
         group_at(&self.file, group, &self.path)
     }
 
-    /// The open file, for datasets of other shapes (e.g. `[rows, 3]`).
+    /// The open file, for datasets the writer has no method for.
     pub fn file(&self) -> &File {
         &self.file
     }

@@ -23,7 +23,7 @@
 //! `NAME.shard-I-of-N.h5` beside `--out NAME.h5`; sample i is a pure
 //! function of the seed and i, whatever the shard). What is per row is
 //! joined in row order (datasets below `parameters`, `outcomes` and
-//! `failures`, vectors `[rows, 3]` too, failure indices renumbered, and
+//! `failures`, failure indices renumbered, and
 //! histories); what describes the whole experiment (`/grid`, a 3D file's
 //! `/fixed`) must be the same in every part and is copied once.
 
@@ -149,14 +149,9 @@ struct Piece {
 struct Meta {
     path: String,
     descriptor: TypeDescriptor,
-    /// `k` of a `[rows, k]` dataset.
-    width: Option<usize>,
     units: String,
     len: usize,
 }
-
-/// Vectors are `[rows, 3]`; a wider second dimension is no result layout's.
-const MAX_WIDTH: usize = 16;
 
 fn part_error(path: &Path, message: impl Into<String>) -> ShardError {
     ShardError::Part { path: path.to_path_buf(), message: message.into() }
@@ -203,13 +198,12 @@ fn collect(group: &Group, prefix: &str, path: &Path, out: &mut Vec<Meta>, histor
         let d = group.dataset(&name).map_err(|e| part_error(path, format!("{member}: {e}")))?;
         let descriptor = d.dtype().and_then(|t| t.to_descriptor()).map_err(|e| part_error(path, format!("{member}: {e}")))?;
         let shape = d.shape();
-        let width = match shape.as_slice() {
-            [_] => None,
-            [_, k] => Some(*k),
-            other => return Err(part_error(path, format!("{member}: a dataset of shape {other:?}, not one of the result layout"))),
+        // One value per row (vectors are `_x/_y/_z` columns): 1-D only.
+        let [len] = shape.as_slice() else {
+            return Err(part_error(path, format!("{member}: a dataset of shape {shape:?}, not one of the result layout (1-D)")));
         };
         let units = crate::h5::read_str_attr(&d, "units").unwrap_or_default();
-        out.push(Meta { path: member, descriptor, width, units, len: shape[0] });
+        out.push(Meta { path: member, descriptor, units, len: *len });
     }
     Ok(())
 }
@@ -225,11 +219,6 @@ impl Meta {
         );
         if !allowed {
             return Err(format!("a column of type {}, not one of the result layout (f64, u64, u8, text)", type_name(&self.descriptor)));
-        }
-        if let Some(k) = self.width {
-            if self.descriptor != TypeDescriptor::Float(FloatSize::U8) || k == 0 || k > MAX_WIDTH {
-                return Err(format!("a [rows, {k}] dataset of {}, not one of the result layout", type_name(&self.descriptor)));
-            }
         }
         let len = self.len;
         match kind {
@@ -336,7 +325,7 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
         }
     }
     // The same datasets, types and units in every part.
-    let layout = |p: &Piece| p.datasets.iter().map(|d| (d.path.clone(), d.descriptor.clone(), d.width, d.units.clone())).collect::<Vec<_>>();
+    let layout = |p: &Piece| p.datasets.iter().map(|d| (d.path.clone(), d.descriptor.clone(), d.units.clone())).collect::<Vec<_>>();
     let expected = layout(first);
     for piece in &pieces[1..] {
         let got = layout(piece);
@@ -345,7 +334,7 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
             let message = match differs {
                 Some((a, b)) if a.0 == b.0 => format!(
                     "{}: {} [{}] here, {} [{}] in {}",
-                    a.0, type_name(&b.1), b.3, type_name(&a.1), a.3, first.path.display()
+                    a.0, type_name(&b.1), b.2, type_name(&a.1), a.2, first.path.display()
                 ),
                 _ => format!("its datasets are not those of {}", first.path.display()),
             };
@@ -634,21 +623,17 @@ impl Merger<'_> {
     fn create(&self, like: &hdf5::Dataset, to: &Group, name: &str, len: usize, chunk: Option<usize>) -> Result<hdf5::Dataset, ShardError> {
         let layout_error = |what: String| part_error(&self.pieces[0].path, format!("{name}: {what}, not one of the result layout"));
         let shape = like.shape();
-        let width = match shape.as_slice() {
-            [_] => None,
-            [_, k] => Some(*k),
-            other => return Err(layout_error(format!("dataset of shape {other:?}"))),
-        };
+        if shape.len() != 1 {
+            return Err(layout_error(format!("dataset of shape {shape:?}")));
+        }
         // The part's filters (`--compress`): a merge of compressed parts is compressed.
         let filters = like.filters();
         macro_rules! of {
             ($t:ty) => {{
                 let builder = to.new_dataset::<$t>().obj_track_times(false);
-                match (chunk, width) {
-                    (Some(c), None) => builder.chunk(c).set_filters(&filters).shape(0..).create(name),
-                    (Some(c), Some(k)) => builder.chunk((c, k.max(1))).set_filters(&filters).shape((0.., k)).create(name),
-                    (None, None) => builder.shape(len).create(name),
-                    (None, Some(k)) => builder.shape((len, k)).create(name),
+                match chunk {
+                    Some(c) => builder.chunk(c).set_filters(&filters).shape(0..).create(name),
+                    None => builder.shape(len).create(name),
                 }
             }};
         }
@@ -692,23 +677,7 @@ impl Merger<'_> {
             let rows = at + start..at + end;
             let read = h5(&piece.path);
             if chunked {
-                match shape.as_slice() {
-                    [_, k] => to.resize((rows.end, *k)),
-                    _ => to.resize(rows.end),
-                }
-                .map_err(self.err())?;
-            }
-            if let [_, _] = shape.as_slice() {
-                // Vectors: f64 [rows, k].
-                let values = from.read_slice_2d::<f64, _>((start..end, ..)).map_err(read)?;
-                for (i, row) in values.outer_iter().enumerate() {
-                    if row.iter().any(|v| v.is_nan()) && nan_at(start + i) {
-                        return Err(bad(format!("NaN at row {} where the status says solved", piece.rows.start + (start + i) as u64)));
-                    }
-                }
-                to.write_slice(&values, (rows, ..)).map_err(self.err())?;
-                start = end;
-                continue;
+                to.resize(rows.end).map_err(self.err())?;
             }
             match to.dtype().and_then(|t| t.to_descriptor()).map_err(self.err())? {
                 TypeDescriptor::Float(_) => {
@@ -820,7 +789,12 @@ mod tests {
         let dir = scratch("corrupt");
         let (_, parts) = two_parts(&dir);
         type Corruption = (&'static str, &'static str, fn(&hdf5::File));
-        let corruptions: [Corruption; 8] = [
+        let corruptions: [Corruption; 9] = [
+            ("a [rows, 3] column", "parameters/stiffness: a dataset of shape [6, 3], not one of the result layout (1-D)", |f| {
+                f.unlink("parameters/stiffness").unwrap();
+                let d = f.new_dataset::<f64>().shape((6, 3)).create("parameters/stiffness").unwrap();
+                d.write_raw(&[1.0; 18]).unwrap();
+            }),
             ("older layout", "layout sweep version 1, not `sweep` version 2", |f| {
                 f.delete_attr("layout_version").unwrap();
                 f.new_attr::<u64>().create("layout_version").unwrap().write_scalar(&1u64).unwrap();

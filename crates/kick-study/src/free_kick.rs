@@ -171,13 +171,12 @@ impl Level for FreeKicks {
     }
 
     fn solve_row(&self, index: u64, row: &mut Row) {
-        let (e, mu) = grid()[index as usize];
+        // Grid order, friction fastest (as `grid`), without building the grid.
+        let i = index as usize;
+        let (e, mu) = (LATERAL_OFFSETS[i / FRICTIONS.len()], FRICTIONS[i % FRICTIONS.len()]);
         row.parameters.copy_from_slice(&[e, mu]);
         let kick = FreeKick::new(e, mu);
-        match &kick {
-            Ok(k) => row.set(0, &k.launch_values()),
-            Err(f) => row.fail(0, f.clone()),
-        }
+        row.put(0, kick.as_ref().map(FreeKick::launch_values).map_err(Clone::clone));
         for (set, distance) in [(1, GOAL_DISTANCE), (2, WALL_DISTANCE)] {
             let flown = kick
                 .as_ref()
@@ -185,7 +184,7 @@ impl Level for FreeKicks {
                 .and_then(|k| k.flight(distance))
                 .and_then(|f| kick_flight::solve(&f).map_err(crate::flight::flight_failure))
                 .map(|o| o.values());
-            row.put(set, flown.as_ref().map(|v| v.as_slice()).map_err(Clone::clone));
+            row.put(set, flown);
         }
     }
 }

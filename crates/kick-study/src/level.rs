@@ -104,9 +104,9 @@ impl Row {
     }
 
     /// Set `set`'s result: its values or its failure.
-    pub fn put(&mut self, set: usize, result: Result<&[f64], Failure>) {
+    pub fn put(&mut self, set: usize, result: Result<impl AsRef<[f64]>, Failure>) {
         match result {
-            Ok(values) => self.set(set, values),
+            Ok(values) => self.set(set, values.as_ref()),
             Err(failure) => self.fail(set, failure),
         }
     }

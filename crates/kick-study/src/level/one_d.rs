@@ -65,7 +65,7 @@ impl Experiment {
                 (Ok(s), Ok(o)) => crate::flight::after_1d(s, o, rest).map(|run| run.outcome.values()),
                 (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
             };
-            row.put(self.solvers.len() + k, flown.as_ref().map(|v| v.as_slice()).map_err(Clone::clone));
+            row.put(self.solvers.len() + k, flown);
         }
     }
 }

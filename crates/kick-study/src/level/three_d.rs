@@ -50,7 +50,7 @@ impl Level for Experiment3d {
                 (Ok(k), Ok(o)) => crate::flight::after_3d(k, o, rest).map(|run| run.outcome.values()),
                 (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
             };
-            row.put(1, flown.as_ref().map(|v| v.as_slice()).map_err(Clone::clone));
+            row.put(1, flown);
         }
     }
 }
