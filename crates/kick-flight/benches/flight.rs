@@ -29,15 +29,8 @@ fn flights(c: &mut Criterion) {
     });
     // 1000 model free kicks at spread speeds through `flight_many` on 2 threads:
     // time per call / 1000 is the cost of a flight at that parallelism.
-    let speeds: Vec<f64> = (0..1000).map(|i| 22.0 + 10.0 * i as f64 / 1000.0).collect();
+    let (base, speeds) = models::free_kick_speeds(1000);
     let columns = [kick_flight::Column { parameter: kick_flight::FlightParameter::Speed, values: &speeds }];
-    let base = kick_flight::FlightSpec {
-        speed: None,
-        launch_angle: Some(18.0),
-        spin: Some([0.0, 0.0, 56.5]),
-        distance: Some(9.15),
-        ..kick_flight::FlightSpec::default()
-    };
     group.bench_function("flight_many_1000_free_kicks_2_threads", |b| {
         b.iter(|| black_box(kick_flight::flight_many(&base, &columns, 1000, Some(2)).expect("valid")))
     });

@@ -21,6 +21,22 @@ pub fn free_kick() -> Flight {
     })
 }
 
+/// `rows` free kicks for [`crate::flight_many`]: the base (18° elevation,
+/// 9 rev/s of sidespin, crossing the wall plane) and launch speeds spread
+/// evenly over 22–32 m/s, one per row. Shared by `kick bench` and the
+/// criterion bench, so both time the same flights.
+pub fn free_kick_speeds(rows: usize) -> (FlightSpec, Vec<f64>) {
+    let base = FlightSpec {
+        speed: None,
+        launch_angle: Some(18.0),
+        spin: Some([0.0, 0.0, 9.0 * TAU]),
+        distance: Some(WALL_DISTANCE),
+        ..FlightSpec::default()
+    };
+    let speeds = (0..rows).map(|i| 22.0 + 10.0 * i as f64 / rows.max(1) as f64).collect();
+    (base, speeds)
+}
+
 fn build(spec: FlightSpec) -> Flight {
     match spec.build() {
         Ok(f) => f,

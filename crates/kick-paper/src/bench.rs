@@ -57,6 +57,10 @@ pub struct BenchReport {
     pub sweep_per_second_2_threads: f64,
     /// Off-center 3D kick / its 1D contact, both `auto`, one core.
     pub off_center_3d_vs_1d_cost_ratio: f64,
+    /// The shell ball's 1D cost over the paper law's (auto, one thread).
+    pub shell_vs_paper_law_1d_cost_ratio: f64,
+    /// Free kicks through `flight_many` on 2 threads.
+    pub flights_per_second_2_threads: f64,
     #[serde(skip)]
     pub written: Vec<PathBuf>,
 }
@@ -85,6 +89,50 @@ fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) -> Res
     });
     std::hint::black_box(solved);
     Ok(sweep.samples as f64 / started.elapsed().as_secs_f64())
+}
+
+/// Flights per second through `kick_flight::flight_many` on a pool of
+/// `threads`: `rows` free kicks of `kick_flight::models::free_kick_speeds`
+/// (the criterion bench's flights), outcomes only.
+fn flights_per_second(rows: usize, threads: usize) -> Result<f64, String> {
+    let (base, speeds) = kick_flight::models::free_kick_speeds(rows);
+    let columns = [kick_flight::Column { parameter: kick_flight::FlightParameter::Speed, values: &speeds }];
+    let started = Instant::now();
+    let out = kick_flight::flight_many(&base, &columns, rows, Some(threads)).map_err(|e| e.to_string())?;
+    let seconds = started.elapsed().as_secs_f64();
+    if let Some(Err(e)) = out.iter().find(|r| r.is_err()) {
+        return Err(format!("a bench flight failed: {e}"));
+    }
+    Ok(rows as f64 / seconds)
+}
+
+/// Seconds of one aim solve, median of `repeats`: the launch to a target by
+/// the far post over the wall with sidespin held (as `kick aim --target
+/// 25,2.8,2 --spin 0,0,50`), and through the 3D kick (as `kick aim --target
+/// 25,-3,1.5 --from kick`).
+fn aim_seconds(repeats: usize) -> Result<(f64, f64), String> {
+    use kick_flight::aim::{aim_launch, LaunchFree, Wall};
+    let curl = kick_flight::FlightSpec { spin: Some([0.0, 0.0, 50.0]), ..kick_flight::FlightSpec::default() };
+    let request = kick_study::aim::AimRequest {
+        target: Some([25.0, -3.0, 1.5]),
+        from: Some(kick_study::aim::AimFrom::Kick),
+        ..kick_study::aim::AimRequest::default()
+    };
+    let (mut launch, mut kick) = (Vec::new(), Vec::new());
+    for _ in 0..repeats {
+        let started = Instant::now();
+        std::hint::black_box(aim_launch([25.0, 2.8, 2.0], Wall::default(), &LaunchFree::DEFAULT, &curl).map_err(|e| e.to_string())?);
+        launch.push(started.elapsed().as_secs_f64());
+        let started = Instant::now();
+        std::hint::black_box(kick_study::aim::aim(&request).map_err(|e| e.to_string())?);
+        kick.push(started.elapsed().as_secs_f64());
+    }
+    Ok((median(&mut launch), median(&mut kick)))
+}
+
+fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
 }
 
 /// One sweep written to its HDF5 file as `kick sweep`/`kick sweep3d --out`
@@ -145,6 +193,23 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
             runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
             let _ = std::fs::remove_file(&report.path);
         }
+        // The shell ball in 3D (issue 22: at least 10,000 kicks/s on 2 threads).
+        let mut fixed = kick_3d::KickSpec::default();
+        fixed.scenario.law = Some(kick_core::LawKind::Shell);
+        let settings = crate::sweep3d::Sweep3dSettings {
+            samples: samples_3d,
+            seed: 1,
+            out: dir.join("sweep3d.h5"),
+            fixed,
+            shard: None,
+            threads: None,
+            compress: Compression::None,
+        };
+        let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
+        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+        let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --out sweep3d.h5");
+        runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
+        let _ = std::fs::remove_file(&report.path);
         Ok(())
     };
     let result = measure();
@@ -226,6 +291,34 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         cost.ratio
     );
 
+    // The shell ball's 1D cost beside the paper's law: the same sampled
+    // scenarios with `law = shell`, auto, one thread, alternated, medians.
+    let mut shell_sweep = sweep;
+    shell_sweep.fixed.law = Some(kick_core::LawKind::Shell);
+    let (mut paper_law, mut shell) = (Vec::new(), Vec::new());
+    for _ in 0..3 {
+        paper_law.push(throughput(&default_auto, sweep, 1)?);
+        shell.push(throughput(&default_auto, shell_sweep, 1)?);
+    }
+    let (paper_law, shell) = (median(&mut paper_law), median(&mut shell));
+    let _ = writeln!(
+        log,
+        "shell ball, 1D (auto, 1 thread): {shell:.0} scenarios/s against {paper_law:.0} with the paper's law, {:.1}x the cost",
+        paper_law / shell
+    );
+    // Flights through `flight_many`, 1 and 2 threads alternated, medians.
+    let flight_rows = if args.quick { 1_000 } else { 50_000 };
+    let (mut flights_1, mut flights_2) = (Vec::new(), Vec::new());
+    for _ in 0..3 {
+        flights_1.push(flights_per_second(flight_rows, 1)?);
+        flights_2.push(flights_per_second(flight_rows, 2)?);
+    }
+    let (flights_1, flights_2) = (median(&mut flights_1), median(&mut flights_2));
+    let _ = writeln!(log, "flight_many of {flight_rows} free kicks: {flights_1:.0} flights/s on 1 thread, {flights_2:.0} on 2 threads");
+    let (aim_launch_s, aim_kick_s) = aim_seconds(if args.quick { 1 } else { 5 })?;
+    let _ = writeln!(log, "aim solve: {:.2} ms for the launch, {:.2} ms through the 3D kick", aim_launch_s * 1e3, aim_kick_s * 1e3);
+    let other = Other { shell, paper_law, flight_rows, flights_1, flights_2, aim_launch: aim_launch_s, aim_kick: aim_kick_s };
+
     let files = file_runs(args.quick)?;
     for run in &files {
         let _ = writeln!(
@@ -267,6 +360,11 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         ("sweep_per_second_2_threads", two),
         ("sweep_samples", sweep.samples as f64),
         ("off_center_3d_vs_1d_cost_ratio", cost.ratio),
+        ("shell_vs_paper_law_1d_cost_ratio", paper_law / shell),
+        ("flights_per_second_1_thread", flights_1),
+        ("flights_per_second_2_threads", flights_2),
+        ("aim_launch_seconds", aim_launch_s),
+        ("aim_kick_seconds", aim_kick_s),
     ] {
         write_f64_attr(writer.file(), &path, name, value).map_err(|e| e.to_string())?;
     }
@@ -275,7 +373,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let path = writer.finish().map_err(|e| e.to_string())?;
     let mut written = vec![path.clone()];
     written.extend(draw(&path, &args.out.join("figures"))?);
-    let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples, cost: &cost, files: &files };
+    let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples, cost: &cost, files: &files, other: &other };
     if let Some(report) = &args.report {
         let report_dir = report.parent().unwrap_or(std::path::Path::new(""));
         let figure = crate::links::relative(report_dir, &args.out.join("figures/work_precision.png"));
@@ -295,6 +393,8 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         sweep_per_second_1_thread: one,
         sweep_per_second_2_threads: two,
         off_center_3d_vs_1d_cost_ratio: cost.ratio,
+        shell_vs_paper_law_1d_cost_ratio: paper_law / shell,
+        flights_per_second_2_threads: flights_2,
         written,
     })
 }
@@ -310,6 +410,20 @@ struct Measured<'a> {
     samples: u64,
     cost: &'a kick_3d::precision::CostRatio,
     files: &'a [FileRun],
+    other: &'a Other,
+}
+
+/// The shell ball's cost, flights and aims.
+struct Other {
+    /// Scenarios/s, auto, one thread: the shell ball and the paper's law.
+    shell: f64,
+    paper_law: f64,
+    flight_rows: usize,
+    flights_1: f64,
+    flights_2: f64,
+    /// Seconds per aim solve.
+    aim_launch: f64,
+    aim_kick: f64,
 }
 
 /// The machine a timing was taken on.
@@ -434,7 +548,15 @@ impl Measured<'_> {
              - Off-center 3D kick against the same kick's 1D contact along its normal (both `auto`, one core, \
              medians over {} kicks of `kick_3d::models::OffCenterBox`, seed {}, timed alternately): {:.1} µs against \
              {:.2} µs, **{:.1}x**; {:.0} against {:.0} right-hand-side evaluations per kick. The 3D path's error \
-             against its tightened reference is held to 1e-9 by `crates/kick-3d/tests/model/box_accuracy.rs`.\n",
+             against its tightened reference is held to 1e-9 by `crates/kick-3d/tests/model/box_accuracy.rs`.\n\
+             - The shell ball (`law = shell`) in 1D, the same sampled scenarios, `auto`, one thread: {:.0} scenarios/s \
+             against {:.0} with the paper's law: **{:.1}x** the cost (medians of 3 alternating runs). The paper's law \
+             has a series path; the shell law is integrated.\n\
+             - Flights: {} free kicks (18°, 9 rev/s of sidespin, 22–32 m/s, `kick_flight::models::free_kick_speeds`) \
+             through `flight_many` (Python's `kick.flight_many`): {:.0} flights/s on 1 thread, **{:.0} flights/s on 2 \
+             threads** (medians of 3 alternating runs), {:.2} µs per flight on one.\n\
+             - Aim solves (median of 5): {:.2} ms for the launch (`kick aim --target 25,2.8,2 --spin 0,0,50`), \
+             {:.2} ms through the 3D kick (`kick aim --target 25,-3,1.5 --from kick`).\n",
             machine.describe(),
             crate::provenance::utc_timestamp(std::time::SystemTime::now()),
             self.ratio,
@@ -451,6 +573,15 @@ impl Measured<'_> {
             self.cost.ratio,
             self.cost.evaluations_3d,
             self.cost.evaluations_1d,
+            self.other.shell,
+            self.other.paper_law,
+            self.other.paper_law / self.other.shell,
+            self.other.flight_rows,
+            self.other.flights_1,
+            self.other.flights_2,
+            1e6 / self.other.flights_1,
+            self.other.aim_launch * 1e3,
+            self.other.aim_kick * 1e3,
         );
         format!(
             "{body}\n## Sweeps into result files\n\n\
