@@ -174,6 +174,11 @@ impl KickSpec {
         Kick3d::new(self.scenario.build()?, &self.kick3d)
     }
 
+    /// The declared parameters a row of 3D kicks holds as columns (result
+    /// files, [`Kick3d::parameter_values`]): the 1D and 3D levels. The shell
+    /// ball's (Level::Bounce) are settings of the law, as in 1D files.
+    pub const ROW_LEVELS: &'static [Level] = &[Level::Scenario, Level::Kick3d];
+
     /// [`KickSpec::build`] for a spec whose 1D parameters were drawn, not
     /// given (`kick sweep3d` draws every one, damping included, whatever the
     /// law): nothing in it is the user's to refuse.
@@ -189,11 +194,13 @@ impl kick_core::parameters::SetLaw for KickSpec {
 }
 
 impl SetParameter for KickSpec {
-    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Kick3d];
+    /// The 1D scenario's parameters with the shell ball's (Level::Bounce, as
+    /// in `kick simulate`), and the 3D ones.
+    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Bounce, Level::Kick3d];
 
     fn set_parameter(&mut self, parameter: &'static ParameterDef, value: Value) -> Result<(), ParameterError> {
         match parameter.level {
-            Level::Scenario => self.scenario.set_parameter(parameter, value),
+            Level::Scenario | Level::Bounce => self.scenario.set_parameter(parameter, value),
             _ => self.kick3d.set_parameter(parameter, value),
         }
     }
@@ -262,6 +269,18 @@ impl Kick3d {
     pub fn new(base: Scenario, spec: &Kick3dSpec) -> Result<Kick3d, Kick3dError> {
         use parameters as p;
         let radius = check(&p::BALL_RADIUS, spec.ball_radius.unwrap_or(Self::DEFAULT_BALL_RADIUS))?;
+        // The shell ball is this kick's ball: its patch and gas volume follow
+        // `ball_radius` (the 1D scenario builds it at the default radius).
+        let base = match base.contact_law() {
+            AnyLaw::Shell(ball) if ball.radius != radius => base.with_shell(kick_core::ShellBall::new(
+                ball.pressure,
+                radius,
+                ball.gas_exponent,
+                ball.shell_stiffness,
+                ball.shell_loss,
+            )?),
+            _ => base,
+        };
         let m_b = base.ball_mass();
         let shell = 2.0 / 3.0 * m_b * radius * radius;
         let ball_inertia = check(&p::BALL_INERTIA, spec.ball_inertia.unwrap_or(shell))?;
@@ -328,7 +347,7 @@ impl Kick3d {
     /// (degrees); the instep's size is its outer size, as given.
     pub fn parameter_values(&self) -> Vec<(&'static ParameterDef, Value)> {
         let mut values = Vec::new();
-        for def in parameters::at_levels(KickSpec::LEVELS) {
+        for def in parameters::at_levels(KickSpec::ROW_LEVELS) {
             let value = match def.name {
                 "restitution" => match self.base.restitution_target() {
                     Some(e) => Value::Number(e),
@@ -447,7 +466,7 @@ impl Kick3d {
         for (parameter, value) in [(Parameter::FootSpeed, foot_n), (Parameter::BallSpeed, ball_n), (Parameter::DriveForce, drive_n)] {
             values[Parameter::ALL.iter().position(|&p| p == parameter).unwrap_or(0)] = value;
         }
-        Ok(Scenario::from_values(values)?.with_law(self.base.law_kind(), self.base.restitution_target())?)
+        Ok(self.base.with_values(values)?)
     }
 
     /// True when the kick is the 1D kick along the normal: central and square

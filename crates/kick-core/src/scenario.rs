@@ -172,6 +172,19 @@ impl ScenarioSpec {
         ]
     }
 
+    /// The shell ball's parameters given (for command lines a file records).
+    pub fn given_ball(&self) -> Vec<(&'static ParameterDef, f64)> {
+        [
+            (&shell::INFLATION_PRESSURE, self.inflation_pressure),
+            (&shell::GAS_EXPONENT, self.gas_exponent),
+            (&shell::SHELL_STIFFNESS, self.shell_stiffness),
+            (&shell::SHELL_LOSS, self.shell_loss),
+        ]
+        .into_iter()
+        .filter_map(|(p, v)| v.map(|v| (p, v)))
+        .collect()
+    }
+
     /// The ball of law `shell`: given values, declared defaults for the rest.
     pub fn shell_ball(&self) -> Result<ShellBall, KickError> {
         let or = |v: Option<f64>, p: &ParameterDef| v.unwrap_or(p.default_number());
@@ -188,17 +201,21 @@ impl ScenarioSpec {
     /// samplers that draw every parameter whatever the law (`kick sweep3d`),
     /// whose `damping` is not the user's. Front ends call `build`.
     pub fn build_drawn(&self) -> Result<Scenario, KickError> {
-        let law = self.law.unwrap_or(LawKind::PowerLaw);
         let base = Scenario::BASELINE;
         let mut values = [0.0; 8];
         for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
             *slot = self.get(p).unwrap_or_else(|| base.get(p));
         }
-        let scenario = Scenario::from_values(values)?;
-        if law == LawKind::Shell {
-            return Ok(scenario.with_shell(self.shell_ball()?));
+        self.law_on(Scenario::from_values(values)?)
+    }
+
+    /// `scenario` under this spec's law: its target restitution, or for the
+    /// shell law its ball (given values, declared defaults for the rest).
+    pub fn law_on(&self, scenario: Scenario) -> Result<Scenario, KickError> {
+        match self.law.unwrap_or(LawKind::PowerLaw) {
+            LawKind::Shell => Ok(scenario.with_shell(self.shell_ball()?)),
+            law => scenario.with_law(law, self.restitution),
         }
-        scenario.with_law(law, self.restitution)
     }
 }
 
@@ -374,6 +391,14 @@ impl Scenario {
     pub fn with(&self, parameter: Parameter, value: f64) -> Result<Scenario, KickError> {
         let mut values = self.values();
         values[Parameter::ALL.iter().position(|&p| p == parameter).unwrap_or(0)] = value;
+        self.with_values(values)
+    }
+
+    /// A copy with all eight values replaced (in [`Parameter::ALL`] order),
+    /// validated again, the law choice kept: its kind, its target
+    /// restitution (the damping recomputed at the new impact speed) and the
+    /// shell law's ball.
+    pub fn with_values(&self, values: [f64; 8]) -> Result<Scenario, KickError> {
         let scenario = Scenario::from_values(values)?;
         match self.contact {
             AnyLaw::Shell(ball) => Ok(scenario.with_shell(ball)),

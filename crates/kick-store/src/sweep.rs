@@ -123,6 +123,9 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
     if let Some(e) = settings.fixed.restitution {
         fixed.push_str(&format!(" --restitution {e}"));
     }
+    for (p, v) in settings.fixed.given_ball() {
+        fixed.push_str(&format!(" {} {v}", p.flag()));
+    }
     let text = format!(
         "# kick sweep --samples {} --seed {} --solver {}{} --law {}{fixed}\n# ranges (a parameter given is fixed):\n{}\n\
          # auto paths: no drive and c = 0 or n = 1 -> closed-form; otherwise the paper's law -> series; another law -> reduced\n",

@@ -30,7 +30,7 @@ use crate::provenance::Provenance;
 use crate::run::{create_table, fill_table, finish_table, RunError};
 use crate::sweep::SweepTarget;
 use kick_3d::KickSpec;
-use kick_core::parameters::{self, SetParameter, Shape};
+use kick_core::parameters::{self, Shape};
 use kick_core::{Parameter, Status};
 pub use kick_study::level::sampled_3d::{solved_value, SampledKicks, SampledSweep3d};
 use kick_study::level::Level;
@@ -84,7 +84,7 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> 
     kicks.spec(0).build_drawn()?;
     let law = settings.fixed.scenario.law.unwrap_or(kick_core::LawKind::PowerLaw);
     let mut given = String::new();
-    for p in parameters::at_levels(KickSpec::LEVELS) {
+    for p in parameters::at_levels(KickSpec::ROW_LEVELS) {
         let value = solved_value(p, &settings.fixed, None);
         let held = match p.name {
             "offset" => settings.fixed.kick3d.offset.is_some(),
@@ -95,6 +95,9 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> 
         if held {
             let _ = write!(given, " {} {}", p.flag(), value[0]);
         }
+    }
+    for (p, v) in settings.fixed.scenario.given_ball() {
+        let _ = write!(given, " {} {v}", p.flag());
     }
     let text = format!(
         "# kick sweep3d --samples {} --seed {} --law {}{given}\n# ranges (a parameter given is held):\n{}\n",
@@ -150,7 +153,7 @@ fn write(
     write_u64_attr(&file, out, "seed", kicks.seed)?;
     write_u64_attr(&file, out, "samples", target.samples)?;
     // Symbol and meaning of every parameter column, from its declaration.
-    for p in parameters::at_levels(KickSpec::LEVELS) {
+    for p in parameters::at_levels(KickSpec::ROW_LEVELS) {
         let names: Vec<String> = match p.shape {
             Shape::Vector3 => ["x", "y", "z"].map(|a| format!("{}_{a}", p.name)).to_vec(),
             _ => vec![p.name.to_string()],

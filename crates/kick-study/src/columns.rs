@@ -33,7 +33,24 @@ pub fn law_settings<'a>(scenario: &kick_core::Scenario, numbers: impl IntoIterat
     if let Some(e) = scenario.restitution_target() {
         settings.push(("restitution".into(), Setting::Number(e)));
     }
+    settings.extend(ball_settings(scenario.contact_law()));
     settings
+}
+
+/// The shell ball's own quantities under their declared names, so a file
+/// records the ball it was solved with (none for the other laws, whose
+/// parameters are columns or the scenario's).
+pub fn ball_settings(law: kick_core::AnyLaw) -> Vec<(String, Setting)> {
+    use kick_core::shell::{GAS_EXPONENT, INFLATION_PRESSURE, SHELL_LOSS, SHELL_STIFFNESS};
+    match law {
+        kick_core::AnyLaw::Shell(b) => Setting::numbers([
+            (INFLATION_PRESSURE.name, b.pressure),
+            (GAS_EXPONENT.name, b.gas_exponent),
+            (SHELL_STIFFNESS.name, b.shell_stiffness),
+            (SHELL_LOSS.name, b.shell_loss),
+        ]),
+        _ => Vec::new(),
+    }
 }
 
 /// The value of one setting attribute: a number or a text, never both in one string.

@@ -64,7 +64,7 @@ impl SampledSweep {
             let drawn = p.def().sample.map_or(f64::NAN, |range| range.draw(&mut uniform));
             *slot = self.fixed.get(p).unwrap_or(drawn);
         }
-        Scenario::from_values(values)?.with_law(law, self.fixed.restitution)
+        self.fixed.law_on(Scenario::from_values(values)?)
     }
 }
 
@@ -132,6 +132,24 @@ mod tests {
             let (a, b) = (free.scenario(i).unwrap(), fixed.scenario(i).unwrap());
             assert_eq!(b.get(Parameter::Stiffness), 1e6);
             assert_eq!(a.with(Parameter::Stiffness, 1e6).unwrap(), b);
+        }
+    }
+
+    /// `kick sweep --law shell --inflation-pressure 6e4 --shell-loss 0.03`:
+    /// every scenario is solved with that ball (it once fell back to the
+    /// declared 0.8 bar), the other values drawn as without it.
+    #[test]
+    fn a_given_shell_ball_is_the_ball_of_every_scenario() {
+        let mut sweep = SampledSweep::new(50, 5);
+        sweep.fixed.law = Some(kick_core::LawKind::Shell);
+        let default_ball = sweep;
+        sweep.fixed.inflation_pressure = Some(6.0e4);
+        sweep.fixed.shell_loss = Some(0.03);
+        let ball = kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, 0.03).unwrap();
+        for i in 0..sweep.samples {
+            let (a, b) = (default_ball.scenario(i).unwrap(), sweep.scenario(i).unwrap());
+            assert_eq!(b.contact_law(), kick_core::AnyLaw::Shell(ball), "row {i}");
+            assert_eq!(a.values(), b.values(), "row {i}");
         }
     }
 }

@@ -332,3 +332,36 @@ fn a_damping_the_law_ignores_is_refused_by_the_build() {
     }
     assert!(spec.build_drawn().is_ok());
 }
+
+/// The shell ball given by name (as `kick simulate3d --law shell
+/// --inflation-pressure … --ball-radius …` sets it) is the ball the 3D kick
+/// solves with, at the kick's radius: a central frictionless kick equals the
+/// 1D accurate solve with that ball built independently (MATCH_1D), and an
+/// off-center kick keeps it (its normal scenario once fell back to the
+/// default ball).
+#[test]
+fn the_shell_ball_given_by_name_is_the_ball_of_the_3d_kick() {
+    use kick_core::parameters::{find, SetParameter, Value};
+    let mut spec = kick_3d::KickSpec::default();
+    spec.scenario.law = Some(LawKind::Shell);
+    for (name, value) in [("inflation_pressure", 6.0e4), ("shell_stiffness", 2.0e3), ("shell_loss", 0.03), ("ball_radius", 0.105), ("friction", 0.0)] {
+        spec.set_parameter(find(name).unwrap(), Value::Number(value)).unwrap();
+    }
+    let ball = kick_core::ShellBall::new(6.0e4, 0.105, 1.4, 2.0e3, 0.03).unwrap();
+    let k = spec.build().unwrap();
+    assert_eq!(k.law(), AnyLaw::Shell(ball));
+    let base = Scenario::baseline().with_shell(ball);
+    let o1 = kick_core::Solver::solve(&kick_compliant::Accurate::default(), &base).unwrap();
+    let o3 = solve(&k);
+    for (name, three, one) in [
+        ("v_ball_out", o3.launch_velocity[0], o1.v_ball_out),
+        ("contact_time", o3.contact_time, o1.contact_time),
+        ("peak_force", o3.peak_normal_force, o1.peak_force),
+        ("max_compression", o3.max_compression, o1.max_compression),
+    ] {
+        assert!(rel(three, one) <= MATCH_1D, "{name} {three} vs {one}: {:.2e}", rel(three, one));
+    }
+    spec.set_parameter(find("offset").unwrap(), Value::Number(0.05)).unwrap();
+    let off = spec.build().unwrap();
+    assert_eq!(off.law(), AnyLaw::Shell(ball), "an off-center kick solves with the given ball");
+}

@@ -108,3 +108,52 @@ fn experiment_3d_keys_that_do_not_apply_name_their_line() {
         assert!(e.message.contains("does not apply"), "{text}: {e}");
     }
 }
+
+/// `kick sweep` and `kick sweep3d` with `--law shell --inflation-pressure
+/// 6e4`: the file records the ball it was solved with (its attributes and
+/// the command line), and a 1D row equals a solve with that ball built here.
+#[test]
+fn a_sweep_records_the_shell_ball_it_solved_with() {
+    use kick_store::h5::{read_f64_attr, Compression, SweepData};
+    let dir = crate::scratch("shell-ball-sweeps");
+    let fixed = ScenarioSpec { law: Some(LawKind::Shell), inflation_pressure: Some(6.0e4), ..Default::default() };
+    let settings = kick_store::sweep::SweepSettings {
+        samples: 4,
+        seed: 3,
+        solver: "accurate".into(),
+        dt: None,
+        out: dir.join("sweep.h5"),
+        fixed,
+        shard: None,
+        threads: None,
+        compress: Compression::None,
+    };
+    let one = kick_store::sweep::sweep(&settings).unwrap().path;
+    let mut kick = KickSpec::default();
+    kick.scenario = fixed;
+    let three = kick_store::sweep3d::sweep3d(&kick_store::sweep3d::Sweep3dSettings {
+        samples: 2,
+        seed: 3,
+        out: dir.join("sweep3d.h5"),
+        fixed: kick,
+        shard: None,
+        threads: None,
+        compress: Compression::None,
+    })
+    .unwrap()
+    .path;
+    for path in [&one, &three] {
+        let f = hdf5::File::open(path).unwrap();
+        assert_eq!(read_f64_attr(&f, "inflation_pressure"), Some(6.0e4), "{}", path.display());
+        let text = f.attr("experiment_text").unwrap().read_scalar::<hdf5::types::VarLenUnicode>().unwrap().to_string();
+        assert!(text.lines().next().unwrap().ends_with("--law shell --inflation-pressure 60000"), "{text}");
+    }
+    let ball = kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, kick_core::shell::SHELL_LOSS.default_number()).unwrap();
+    let data = SweepData::read(&one).unwrap();
+    let column = |name: &str| data.parameters.iter().find(|(c, _)| c.name == name).map(|(_, v)| v[0]).unwrap();
+    let values = kick_core::Parameter::ALL.map(|p| column(p.def().name));
+    let scenario = kick_core::Scenario::from_values(values).unwrap().with_shell(ball);
+    let solved = kick_core::Solver::solve(&kick_compliant::Accurate::default(), &scenario).unwrap();
+    let contact_time = data.sets[0].columns.iter().find(|(c, _)| c.name == "contact_time").map(|(_, v)| v[0]).unwrap();
+    assert_eq!(contact_time, solved.contact_time);
+}

@@ -6,7 +6,7 @@ use super::{Failure, Level, Row};
 use crate::columns::{Column, OutcomeSet, Setting};
 use crate::experiment::Experiment;
 use kick_compliant::SolverChoice;
-use kick_core::{KickError, LawKind, Outcome, Parameter, Scenario, Solver, OBSERVABLES};
+use kick_core::{AnyLaw, KickError, Outcome, Parameter, Scenario, Solver, OBSERVABLES};
 
 /// Parameter columns of the 1D model: the eight [`Parameter`]s, and the
 /// target restitution when the law takes one (names and units as declared).
@@ -26,9 +26,10 @@ pub fn outcome_columns() -> Vec<Column> {
 
 /// The outcome-set description of a solver: its name, its settings and the
 /// scenarios' contact law (`law`; the target restitution is a parameter column).
-pub fn outcome_set(solver: &SolverChoice, law: LawKind) -> OutcomeSet {
+pub fn outcome_set(solver: &SolverChoice, law: AnyLaw) -> OutcomeSet {
     let mut settings = Setting::numbers(solver.settings());
-    settings.push(("law".into(), Setting::Text(law.name().into())));
+    settings.push(("law".into(), Setting::Text(law.kind().name().into())));
+    settings.extend(crate::columns::ball_settings(law));
     OutcomeSet { solver: solver.name().to_string(), settings, columns: outcome_columns() }
 }
 
@@ -81,7 +82,7 @@ impl Level for Experiment {
 
     fn outcome_sets(&self) -> Vec<OutcomeSet> {
         // One law for every scenario of an experiment (the file's `law`).
-        let law = self.scenarios.scenario(0).map_or(LawKind::PowerLaw, |s| s.law_kind());
+        let law = self.scenarios.scenario(0).map_or(AnyLaw::PowerLaw(Scenario::BASELINE.paper_law()), |s| s.contact_law());
         let mut sets: Vec<OutcomeSet> = self.solvers.iter().map(|s| outcome_set(s, law)).collect();
         if let Some(rest) = &self.flight {
             let flown = kick_flight::FlightSpec { speed: Some(1.0), ..*rest }.build().ok();

@@ -98,7 +98,7 @@ pub const SOLVER: &str = "auto-3d";
 /// parameter under its name, a vector as three columns `NAME_x`, `NAME_y`, `NAME_z`.
 pub fn parameter_columns() -> Vec<Column> {
     let mut columns = Vec::new();
-    for p in parameters::at_levels(KickSpec::LEVELS) {
+    for p in parameters::at_levels(KickSpec::ROW_LEVELS) {
         if p.shape == Shape::Vector3 {
             columns.extend(["x", "y", "z"].map(|axis| Column::new(&format!("{}_{axis}", p.name), p.unit)));
         } else {
@@ -126,9 +126,13 @@ impl Level for SampledSweep3d {
 
     fn outcome_sets(&self) -> Vec<OutcomeSet> {
         let law = self.kicks.fixed.scenario.law.unwrap_or(kick_core::LawKind::PowerLaw);
+        let mut settings = vec![("law".into(), Setting::Text(law.name().into()))];
+        if let (kick_core::LawKind::Shell, Ok(ball)) = (law, self.kicks.fixed.scenario.shell_ball()) {
+            settings.extend(crate::columns::ball_settings(kick_core::AnyLaw::Shell(ball)));
+        }
         vec![OutcomeSet {
             solver: SOLVER.into(),
-            settings: vec![("law".into(), Setting::Text(law.name().into()))],
+            settings,
             columns: OBSERVABLES_3D.iter().map(|(n, u)| Column::new(n, u)).collect(),
         }]
     }
@@ -137,7 +141,7 @@ impl Level for SampledSweep3d {
         let spec = self.kicks.spec(index);
         let kick = spec.build_drawn();
         let mut slot = 0;
-        for p in parameters::at_levels(KickSpec::LEVELS) {
+        for p in parameters::at_levels(KickSpec::ROW_LEVELS) {
             let value = solved_value(p, &spec, kick.as_ref().ok());
             let width = if p.shape == Shape::Vector3 { 3 } else { 1 };
             row.parameters[slot..slot + width].copy_from_slice(&value[..width]);
