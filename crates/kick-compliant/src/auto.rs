@@ -5,6 +5,7 @@
 //! | no drive, c = 0 | `closed-form` (energy integral, Beta function) |
 //! | no drive, n = 1 | `closed-form` (damped oscillator, undamped return) |
 //! | the paper's law | `series` (power series to δ_max, energy integral back) |
+//! | the shell ball, drive ≥ 0 | `series` ([`crate::shell_series`]: Taylor steps from touch to separation) |
 //! | another contact law | `reduced` (δ through the whole contact) |
 //! | time history wanted | `accurate` (full state; outcome and history from one run) |
 //!

@@ -25,6 +25,7 @@ pub mod precision;
 pub mod reduced;
 pub mod seed;
 pub mod series;
+pub mod shell_series;
 pub mod stability;
 pub mod table2;
 

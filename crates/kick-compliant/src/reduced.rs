@@ -109,15 +109,15 @@ impl<L: ContactLaw + Copy> ContactSystem<3> for RelativeOde<L> {
 
 /// Foot and ball from the relative state at time t.
 #[derive(Debug, Clone, Copy)]
-struct Reconstruction {
-    foot_velocity: f64,
-    ball_velocity: f64,
-    foot_position: f64,
-    ball_position: f64,
-    drive_work: f64,
+pub(crate) struct Reconstruction {
+    pub foot_velocity: f64,
+    pub ball_velocity: f64,
+    pub foot_position: f64,
+    pub ball_position: f64,
+    pub drive_work: f64,
 }
 
-fn reconstruct(scenario: &Scenario, t: f64, y: &RelativeState) -> Reconstruction {
+pub(crate) fn reconstruct(scenario: &Scenario, t: f64, y: &RelativeState) -> Reconstruction {
     let total = scenario.total_mass();
     let drive = scenario.drive_force();
     let v_cm = scenario.centre_of_mass_speed() + drive * t / total; // Eq. 26

@@ -604,8 +604,10 @@ impl Series {
         Ok(Series { tolerance })
     }
 
+    /// The paper's law, or the shell ball with a drive ≥ 0
+    /// ([`crate::shell_series`]).
     pub fn applies(scenario: &Scenario) -> bool {
-        scenario.law_kind() == LawKind::PowerLaw
+        scenario.law_kind() == LawKind::PowerLaw || crate::shell_series::applies(scenario)
     }
 
     /// Maximum compression, its time, the force peak and the dissipated
@@ -673,10 +675,15 @@ impl Solver for Series {
         "series"
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        if let kick_core::AnyLaw::Shell(ball) = scenario.contact_law() {
+            if crate::shell_series::applies(scenario) {
+                return crate::shell_series::solve(scenario, ball, self.tolerance);
+            }
+        }
         if !Self::applies(scenario) {
             return Err(KickError::NotApplicable {
                 solver: "series",
-                reason: "its power series and energy-integral return are written for the paper's law (Eq. 20)",
+                reason: "its power series are written for the paper's law (Eq. 20) and the shell ball under a drive >= 0",
             });
         }
         let (mut end, mut powers) = self.compression(scenario)?;

@@ -476,6 +476,9 @@ impl Measured<'_> {
              | the paper's law, otherwise | `series` | power series through compression (a Frobenius double series in t and t^(n+1) at \
              first touch, Taylor steps after), the undamped return from its energy integral (Beta function, or tanh–sinh \
              quadrature under a drive) |\n\
+             | the shell ball (`law = shell`), drive ≥ 0 | `series` | Taylor steps of order 20 from first touch to separation \
+             (its force is analytic at δ = 0), the power (1 − c)^(−γ) by Miller's recurrence, events as roots of the step \
+             polynomials; within 1e-10 of `reduced` at 1e-14 over the sweep's box |\n\
              | another contact law | `reduced` | Dop853 on δ (Eq. 18) through the whole contact |\n\
              | a time history is wanted | `accurate` | full state of Eq. 47, every sample an integrator point |\n\n\
              ## Precision\n\n\
@@ -550,8 +553,8 @@ impl Measured<'_> {
              {:.2} µs, **{:.1}x**; {:.0} against {:.0} right-hand-side evaluations per kick. The 3D path's error \
              against its tightened reference is held to 1e-9 by `crates/kick-3d/tests/model/box_accuracy.rs`.\n\
              - The shell ball (`law = shell`) in 1D, the same sampled scenarios, `auto`, one thread: {:.0} scenarios/s \
-             against {:.0} with the paper's law: **{:.1}x** the cost (medians of 3 alternating runs). The paper's law \
-             has a series path; the shell law is integrated.\n\
+             against {:.0} with the paper's law: **{:.1}x** the cost (medians of 3 alternating runs); both take the \
+             `series` path (`kick_compliant::shell_series` for the shell ball).\n\
              - Flights: {} free kicks (18°, 9 rev/s of sidespin, 22–32 m/s, `kick_flight::models::free_kick_speeds`) \
              through `flight_many` (Python's `kick.flight_many`): {:.0} flights/s on 1 thread, **{:.0} flights/s on 2 \
              threads** (medians of 3 alternating runs), {:.2} µs per flight on one.\n\

@@ -128,7 +128,7 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
     }
     let text = format!(
         "# kick sweep --samples {} --seed {} --solver {}{} --law {}{fixed}\n# ranges (a parameter given is fixed):\n{}\n\
-         # auto paths: no drive and c = 0 or n = 1 -> closed-form; otherwise the paper's law -> series; another law -> reduced\n",
+         # auto paths: no drive and c = 0 or n = 1 -> closed-form; otherwise the paper's law or the shell ball (drive >= 0) -> series; another law -> reduced\n",
         settings.samples,
         settings.seed,
         settings.solver,

@@ -9,6 +9,7 @@ mod contact_laws_everywhere;
 mod history;
 mod properties;
 mod series;
+mod shell_series;
 mod step_size;
 mod stress;
 mod support;
