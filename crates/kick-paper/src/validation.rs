@@ -230,7 +230,10 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
                     "ball speed / foot speed, mechanical limb",
                     get("speed_ratio_mechanical_limb")?,
                     k.speed_ratio,
-                    format!("a rigid foot gives (1 + e) m_f/(m_f + m_b) with the law's own e; {af}; Table 1's 3 kg foot, the limb's own mass not read"),
+                    format!(
+                        "a rigid foot gives (1 + e) m_f/(m_f + m_b): model e = {:.3} (the limb's measured COR 0.66-0.79); {af}; Table 1's 3 kg foot, the limb's own mass not read",
+                        k.speed_ratio * (c.effective_foot_mass() + c.ball_mass()) / c.effective_foot_mass() - 1.0
+                    ),
                 ),
             ));
             rows.push(row(
@@ -594,10 +597,10 @@ fn interval(m: &Measured) -> String {
     }
 }
 
-/// A spin as printed: zero to rounding below [`ZERO_SPIN`].
+/// A spin as printed in a table cell: zero to rounding below [`ZERO_SPIN`] (no `|` inside a cell).
 pub fn spin_text(x: f64) -> String {
     if x.abs() < ZERO_SPIN {
-        "0 (|ω| < 1e-12)".into()
+        "0 (< 1e-12)".into()
     } else {
         format!("{}", short(x))
     }
