@@ -683,7 +683,9 @@ impl Validation {
             "Both laws, `accurate` solver, Table 1's foot ({} kg effective mass). A force is compared at the ball speed \
              measured with it: the foot speed is lowered until the ball leaves at that speed \
              (`kick_identify::validation::with_ball_speed`). The rigid foot is set against a nearly rigid mechanical \
-             kicking limb at the limb's own foot speeds; players' ratios are shown apart.\n",
+             kicking limb at the limb's own foot speeds; players' ratios are shown apart. What each law was calibrated on: \
+             the paper's law takes Table 1's k, n and c (the paper's values, fitted to none of these measurements); \
+             the shell ball takes the FIFA rebound's χ and the test's 0.8 bar, and nothing else.\n",
             short(Scenario::baseline().effective_foot_mass())
         );
         table(&mut w, &self.contact);
@@ -707,7 +709,7 @@ impl Validation {
             w,
             "Table 1's kick in 3D (`kick_3d`), the rigid sphere on a knife-edge face tilted by asin(e/R). A spin is \
              compared where the model's ball leaves at the measured ball speed: the offset is chosen for that speed \
-             at μ = 0.5.\n"
+             at μ = 0.5 (kick-3d's default friction and tangential spring, assumed, calibrated on nothing here).\n"
         );
         table(&mut w, &ck.rows);
         let frictions: Vec<String> = ck.curves.iter().map(|c| c.first().map_or("?".into(), |p| format!("{}", short(p.friction)))).collect();
