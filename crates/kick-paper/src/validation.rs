@@ -82,6 +82,8 @@ pub struct FreeKicksAtLaunch {
     pub kicks: FreeKicks,
     /// Re, S, C_D, C_L at launch of each kick (the flight's own launch report), in `kicks.kicks` order.
     pub launch: Vec<kick_flight::Aerodynamics>,
+    /// The circle estimate's role: a check of the integrator (same C_L), not a measurement.
+    pub circle_estimate_role: Role,
 }
 
 /// The curve kicks: the sweep and the rows.
@@ -537,7 +539,7 @@ fn free_kicks(m: &Measurements) -> Result<FreeKicksAtLaunch, String> {
             Ok(kick_flight::solve(&flight).map_err(error)?.launch)
         })
         .collect::<Result<_, String>>()?;
-    Ok(FreeKicksAtLaunch { kicks, launch })
+    Ok(FreeKicksAtLaunch { kicks, launch, circle_estimate_role: Role::Check })
 }
 
 /// Compare the model with the measurements in `measurements`.

@@ -43,6 +43,7 @@ fn every_row_has_a_valid_role() {
         assert!(!row["model_conditions"].as_str().unwrap_or("").is_empty(), "{row}");
     }
     assert_eq!(seen.len(), 3, "{seen:?}");
+    assert_eq!(json["free_kicks"]["circle_estimate_role"], "check");
     // Prose states only what was computed: no literal foot of another scenario.
     assert!(!page.contains("m_f = 1.2 kg"));
     assert!(!page.contains("NaN"));
