@@ -250,6 +250,16 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
         ));
     }
     let elevation = g.column("launch_angle")?.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    // Spin added by friction 0 -> 1 at 5 cm, solved here (Table 1's kick, as the validation chapter's sweep).
+    let base = kick_core::Scenario::baseline();
+    let spin_at = |mu: f64| kick_3d::validation::spin_point(&base, 0.05, mu).map(|p| p.spin).map_err(|e| e.to_string());
+    let (spin0, spin1) = (spin_at(0.0)?, spin_at(1.0)?);
+    if spin0.abs() >= crate::validation::ZERO_SPIN {
+        return Err(format!("the frictionless kick at 5 cm spins at {spin0} rad/s: the page says zero to rounding"));
+    }
+    let gain5 = spin1 - spin0;
+    let sweep = kick_3d::validation::spin_curve(&base, kick_3d::validation::REFERENCE_FRICTION).map_err(|e| e.to_string())?;
+    let optimum = kick_3d::validation::largest_spin(&base, &sweep).map_err(|e| e.to_string())?;
     let tilt5 = (0.05 / k.ball_radius).asin().to_degrees();
     let _ = writeln!(w, "{}\n", lines.join("\n"));
     let rad = |rpm: f64| rpm * std::f64::consts::TAU / 60.0;
@@ -258,8 +268,11 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
         w,
         "Spin grows with the offset at every step of the grid for {}: the lever arm of the tangential force grows \
          with e, and so does the tangential component of the approach speed that the tilted normal leaves to grip{}. \
-         At 5 cm the four frictions give {}–{} rpm, {} rad/s apart (Asai et al. 2002 report at most about 13 rad/s \
-         from μ = 0 to 1): once μ is moderate, the offset sets the spin. The launch direction follows the tilted \
+         At 5 cm the four frictions give {}–{} rpm, {} rad/s apart: once μ is moderate, the offset sets the spin. \
+         That spread is not Asai et al.'s (2002) comparison: from μ = 0 to μ = 1 the rigid sphere's spin at 5 cm goes \
+         from zero to rounding (|ω| < 1e-12 rad/s) to {} rad/s, all of it from friction, where Asai et al. found that \
+         friction from 0 to 1 adds at most about 13 rad/s to a ball that also spins by wrapping around the foot \
+         ([validation.md](validation.md)). The launch direction follows the tilted \
          normal: the azimuth grows in size with the offset; at 5 cm it is smaller in size than the normal's tilt \
          φ = asin(e/R) = {}°, the tangential impulse pulling the ball back toward the foot's path. The largest \
          elevation over the grid is {}°: with a square, horizontal approach the kick stays in the ground plane (an \
@@ -269,6 +282,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
         sig(lo, 3),
         sig(hi, 3),
         sig(rad(hi) - rad(lo), 2),
+        sig(gain5, 3),
         sig(tilt5, 3),
         sig(elevation, 2),
     );
@@ -365,16 +379,25 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
          spin trade off across offsets.\n\n\
          Where this model follows them: spin grows with offset, speed falls with it (the trade-off), and once μ is \
          moderate the offset dominates. Where a rigid sphere cannot: at μ = 0 the normal force passes through the \
-         centre (r ∥ n in Eq. 61), so the spin is exactly zero, where the deforming ball of the FE model spins; and \
-         the tilted-face geometry gives no optimum offset inside the ball (e < R) — the optimum near 100 mm comes from \
-         a contact patch the rigid geometry lacks. The tangential constants are assumed (above), so details of the \
-         spin's dependence on μ near grip are properties of the assumed compliance, not predictions.\n\n\
+         centre (r ∥ n in Eq. 61), so the spin is zero to rounding (|ω| < 1e-12 rad/s), where the deforming ball of \
+         the FE model spins. Past this page's offsets the rigid geometry does reach a largest spin inside the ball: at \
+         μ = {} it is {} rad/s at e = {} mm (R = {} mm), where the ball leaves at only {} m/s because the steeply tilted \
+         normal lets the foot glance off (`kick_3d::validation::largest_spin`, [validation.md](validation.md)). That \
+         optimum is not Asai et al.'s near 100 mm: their offset runs from the foot's axis to the ball's on a deforming \
+         ball, the model's tilts a knife-edge normal by asin(e/R), and their ball leaves fast. The tangential constants \
+         are assumed (above), so details of the spin's dependence on μ near grip are properties of the assumed \
+         compliance, not predictions.\n\n\
          ## Checks (`kick check`, `cargo test -p kick-3d`)\n\n\
          Central frictionless = 1D to ≤ 1e-9; zero offset with friction: zero spin; I_b Δω = ∫ r × F dt (Eq. 61); the \
          energy partition (ball translation, ball spin, foot, elastic, normal damping, friction) closes; mechanical \
          energy never rises along the run; mirrored offsets give mirrored spin exactly; μ = ∞ matches the closed-form \
          damped tangential oscillator and, with a stiff critically damped spring, the rigid gripping limit \
-         ω = R m_t |v_t0| / I_b; the scene path converges at order 1.\n"
+         ω = R m_t |v_t0| / I_b; the scene path converges at order 1.\n",
+        kick_core::short(optimum.friction),
+        sig(optimum.spin, 4),
+        sig(1e3 * optimum.offset, 3),
+        sig(1e3 * k.ball_radius, 3),
+        sig(optimum.speed, 3),
     );
     Ok(w)
 }
@@ -410,11 +433,31 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
     let describe = |r: usize| format!("e = {} cm, μ = {}", sig(offsets[r] * 100.0, 2), value_label(frictions[r]));
     let _ = writeln!(
         w,
-        "Of the {} kicks of the grid, {} leave at 25–30 m/s with 8–10 rev/s, the free kicks Asai et al. (2002) \
-         measured: {}.\n",
+        "Of the {} kicks of the grid, {} leave at 25–30 m/s with 8–10 rev/s, the free kicks Asai, Akatsuka & Haake \
+         (1998, Physics World) are cited for (`free_kick_speed`, `free_kick_spin` in the validation chapter's \
+         measurement file; the article itself was not read, so the numbers are marked unchecked there): {}. C_D, C_L, \
+         Re and S are the flight's own launch report (`kick_flight::solve`, `launch`): the spinning ball's drag (Goff \
+         & Carré 2010, Eq. 4, joined to the drag crisis) is what these kicks fly with, well above the no-spin 0.155.\n",
         data.rows(),
         realistic.len(),
-        realistic.iter().map(|&r| format!("{} ({} m/s, {} rev/s)", describe(r), sig(speed[r], 3), sig(rev[r], 2))).collect::<Vec<_>>().join("; ")
+        realistic
+            .iter()
+            .map(|&r| -> Result<String, String> {
+                let flight = free_kick::FreeKick::new(offsets[r], frictions[r])?.flight(d)?;
+                let a = kick_flight::solve(&flight).map_err(crate::flight::flight_error)?.launch;
+                Ok(format!(
+                    "{} ({} m/s, {} rev/s; at launch Re = {}, S = {}, C_D = {}, C_L = {})",
+                    describe(r),
+                    sig(speed[r], 3),
+                    sig(rev[r], 2),
+                    sig(a.reynolds, 3),
+                    sig(a.spin_parameter, 3),
+                    sig(a.drag_coefficient, 3),
+                    sig(a.lift_coefficient, 3)
+                ))
+            })
+            .collect::<Result<Vec<_>, _>>()?
+            .join("; ")
     );
     let _ = writeln!(w, "![free kicks from above and from the side]({fig}/flight_free_kick.png)\n");
     let _ = writeln!(w, "![deflection and heights against the lateral offset]({fig}/flight_deflection.png)\n");
