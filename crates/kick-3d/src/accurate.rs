@@ -257,13 +257,36 @@ impl Accurate3d {
         let clock = if singular { Clock::Onset } else { Clock::Time };
         let mut system = Relative::new(
             kick,
-            Phase { compressing: true, friction: Friction::Grip, geometry: Geometry::Face, clamped: false, clock: Clock::Time },
+            Phase {
+                compressing: true,
+                friction: Friction::Grip,
+                geometry: Geometry::Face,
+                clamped: false,
+                clock: Clock::Time,
+                slip_direction: parry3d_f64::math::Vec3::ZERO,
+            },
         );
+        let mut y0 = y0;
+        let sliding = system.local(0.0, &y0).sliding_velocity;
         let friction = if kick.friction == 0.0 {
             Friction::None
+        } else if system.rigid && sliding != parry3d_f64::math::Vec3::ZERO {
+            // Rigid grip: μ = ∞ stops the sliding at once; a finite μ starts
+            // in slip, against the sliding.
+            if kick.friction.is_infinite() {
+                y0 = system.grip_impulse(&y0);
+                Friction::Grip
+            } else {
+                system = system.in_phase(Phase { slip_direction: sliding.normalize(), ..system.phase });
+                Friction::Slip
+            }
         } else if system.local(0.0, &y0).grip_margin >= 0.0 {
             Friction::Grip
         } else {
+            if system.rigid {
+                let needed = system.local(0.0, &y0).tangential_force;
+                system = system.in_phase(Phase { slip_direction: -needed.normalize_or_zero(), ..system.phase });
+            }
             Friction::Slip
         };
         system = system.in_phase(Phase { friction, clock, ..system.phase });
@@ -530,7 +553,18 @@ impl Accurate3d {
                     phase.compressing = !phase.compressing;
                 }
                 Switch::GripSlip => {
+                    if system.rigid && phase.friction == Friction::Grip {
+                        // Sliding starts against the force that could no longer hold it.
+                        phase.slip_direction = -c_end.tangential_force.normalize_or_zero();
+                    }
                     phase.friction = if phase.friction == Friction::Grip { Friction::Slip } else { Friction::Grip };
+                }
+                Switch::Geometry if system.rigid && phase.geometry == Geometry::Face => {
+                    return Err(Kick3dError::UnsupportedScene {
+                        path: "accurate",
+                        reason: "rigid grip (tangential_stiffness = inf) is a constraint on the flat face; the ball reached \
+                                 the instep's edge or rounded border, where the normal turns under the contact",
+                    });
                 }
                 Switch::Geometry => {
                     phase.geometry = if phase.geometry == Geometry::Face { Geometry::Border } else { Geometry::Face };

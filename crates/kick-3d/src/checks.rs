@@ -206,7 +206,12 @@ fn friction_to_infinity() -> Result<Vec<CheckRow>, Kick3dError> {
     let rigid = try_kick(Kick3dSpec { tangential_stiffness: Some(k_t), tangential_damping: Some(c_t), ..spec })?;
     let o_rigid = solve(&rigid)?;
     let limit = gripping_limit_spin(&rigid, stiff_foot);
+    // Rigid grip (k_t = inf): a constraint, the limit itself.
+    let constrained = try_kick(Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..spec })?;
+    let o_constrained = solve(&constrained)?;
+    let exact = gripping_limit_spin(&constrained, stiff_foot);
     Ok(vec![
+        CheckRow::compare("3d mu = inf, rigid grip (k_t = inf): spin_z = gripping limit", "Eq. 61", exact.z, o_constrained.spin[2], exact.z.abs(), MATCH_1D),
         CheckRow::compare("3d mu = inf: |spin| = damped-oscillator closed form", "Eq. 61", expected, norm(o.spin), expected, MATCH_1D),
         CheckRow::compare("3d mu = inf, k_t = 1e8, critical: spin_z = gripping limit", "Eq. 61", limit.z, o_rigid.spin[2], limit.z.abs(), MATCH_1D),
         CheckRow::compare("3d mu = inf: slip time", "-", 0.0, o.slip_time, o.contact_time, ROUNDING),

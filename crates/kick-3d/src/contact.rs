@@ -96,9 +96,11 @@ pub(crate) fn rotation(y: &State) -> Rot3 {
 pub enum Friction {
     /// μ = 0: no slider; the spring relaxes through its damper.
     None,
-    /// The element carries k_t ξ + c_t v_t (always, for μ = ∞).
+    /// The element carries k_t ξ + c_t v_t (always, for μ = ∞). With rigid
+    /// grip (k_t = ∞): the force that keeps the contact point from sliding.
     Grip,
-    /// The element carries μ F_n along k_t ξ + c_t v_t.
+    /// The element carries μ F_n along k_t ξ + c_t v_t. With rigid grip:
+    /// μ F_n against [`Phase::slip_direction`].
     Slip,
 }
 
@@ -133,6 +135,9 @@ pub struct Phase {
     /// The normal force held at zero where the law would pull (see `ContactLaw::unclamped_force`).
     pub clamped: bool,
     pub clock: Clock,
+    /// Rigid grip only: the sliding direction (body frame, tangential) of a
+    /// slip phase, fixed through it (exact while the kick stays in one plane).
+    pub slip_direction: Vec3,
 }
 
 /// The law at one state, body frame.
@@ -184,6 +189,9 @@ pub struct Relative {
     pub tangential_damping: f64,
     /// True for a law that can pull (damps while restituting): its clamp is a switch.
     pub clamps: bool,
+    /// k_t = ∞: grip is a constraint on the contact point's sliding velocity,
+    /// not a stiff spring ([`Relative::grip_force`]).
+    pub rigid: bool,
     /// F_drive in the world frame.
     pub drive: Vec3,
     pub phase: Phase,
@@ -210,6 +218,7 @@ impl Relative {
             tangential_stiffness: kick.tangential_stiffness,
             tangential_damping: kick.tangential_damping,
             clamps: !kick.law().damps_compression_only(),
+            rigid: kick.rigid_grip(),
             drive: kick.drive(),
             phase,
         }
@@ -306,14 +315,29 @@ impl Relative {
         let trial = xi_t * k_t + sliding * c_t;
         let trial_size = trial.length();
         let cap = if self.friction.is_infinite() { f64::INFINITY } else { self.friction * normal_force };
+        // Rigid grip: the constraint's force, or μ F_n against the slip.
+        let rigid_force = match self.phase.friction {
+            _ if !self.rigid => Vec3::ZERO,
+            Friction::None => Vec3::ZERO,
+            Friction::Grip => self.grip_force::<FACE>(y, n, point, normal_force),
+            Friction::Slip => -self.phase.slip_direction * cap,
+        };
         let grip_margin = if self.friction == 0.0 {
             0.0
         } else if self.friction.is_infinite() {
             1.0
+        } else if self.rigid {
+            match self.phase.friction {
+                // The slip ends where the sliding reverses.
+                Friction::Slip => -sliding.dot(self.phase.slip_direction),
+                _ => cap - rigid_force.length(),
+            }
         } else {
             cap - trial_size
         };
         let (tangential_force, spring_rate, friction_power) = match self.phase.friction {
+            // The power the contact takes out of the motion: ~0 while gripping.
+            _ if self.rigid => (rigid_force, Vec3::ZERO, -rigid_force.dot(sliding)),
             Friction::None => {
                 let spring_rate = -xi_t * (k_t / c_t);
                 (Vec3::ZERO, spring_rate, c_t * spring_rate.length_squared())
@@ -404,7 +428,65 @@ impl Relative {
             + 0.5 * omega.dot(omega * self.foot_inertia)
             + 0.5 * self.ball_inertia * vec3(y, BALL_ANGULAR_VELOCITY).length_squared()
             + self.law.potential(c.compression)
-            + 0.5 * self.tangential_stiffness * vec3(y, SPRING).length_squared()
+            + if self.rigid { 0.0 } else { 0.5 * self.tangential_stiffness * vec3(y, SPRING).length_squared() }
+    }
+
+    /// K f: the rate of the contact point's relative velocity (ball's
+    /// material point minus foot's) per unit force f on the ball at p, on the
+    /// face: f (1/m_b + 1/m_f) + (R²/I_b) f_t − p × I_f⁻¹ (p × f), the
+    /// inverse effective mass of the contact (symmetric, positive definite).
+    #[inline]
+    fn contact_compliance<const FACE: bool>(&self, n: Vec3, point: Vec3, f: Vec3) -> Vec3 {
+        let r2 = self.ball_radius * self.ball_radius;
+        f * self.inverse_reduced_mass + tangential::<FACE>(n, f) * (r2 / self.ball_inertia)
+            - point.cross(point.cross(f) / self.foot_inertia)
+    }
+
+    /// Rigid grip: the tangential force on the ball that keeps the sliding
+    /// velocity v_t = w − R ω_b × n − Ω × p at its value (zero while
+    /// gripping). d/dt v = K F + b with F = F_n n + F_t (the body-frame
+    /// rates of [`Relative::derivative`], n fixed on the face); the
+    /// tangential rows K_tt F_t = −(b + K F_n n)_t are a 2×2 system.
+    #[inline]
+    fn grip_force<const FACE: bool>(&self, y: &State, n: Vec3, point: Vec3, normal_force: f64) -> Vec3 {
+        let r = self.centre(y);
+        let w = vec3(y, RELATIVE_VELOCITY);
+        let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
+        let spin = vec3(y, BALL_ANGULAR_VELOCITY);
+        let mut b = -omega.cross(w) + omega.cross(spin).cross(n) * self.ball_radius
+            + (omega.cross(omega * self.foot_inertia) / self.foot_inertia).cross(point)
+            - omega.cross(w - omega.cross(r));
+        if self.drive != Vec3::ZERO {
+            b -= rotation(y).inverse() * self.drive / self.foot_mass;
+        }
+        let rhs = -(b + self.contact_compliance::<FACE>(n, point, along::<FACE>(n, normal_force)));
+        self.tangential_solve::<FACE>(n, point, rhs)
+    }
+
+    /// The tangential f with (K f)_t = rhs_t (face: the y and z rows).
+    #[inline]
+    fn tangential_solve<const FACE: bool>(&self, n: Vec3, point: Vec3, rhs: Vec3) -> Vec3 {
+        let ky = self.contact_compliance::<FACE>(n, point, Vec3::Y);
+        let kz = self.contact_compliance::<FACE>(n, point, Vec3::Z);
+        let det = ky.y * kz.z - kz.y * ky.z;
+        Vec3::new(0.0, (rhs.y * kz.z - kz.y * rhs.z) / det, (ky.y * rhs.z - rhs.y * ky.z) / det)
+    }
+
+    /// Rigid grip with μ = ∞: the tangential impulse J at first touch that
+    /// stops the sliding at once (the k_t → ∞ limit of the spring at any
+    /// damping ratio > 0: the spring's transient shrinks to an instant and
+    /// its energy is lost), applied to `y`: J = −K_tt⁻¹ v_t, the ball takes
+    /// J and the foot −J at p. The energy it takes goes to the friction loss.
+    pub fn grip_impulse(&self, y: &State) -> State {
+        let before = self.internal_energy(0.0, y);
+        let c = self.local_on::<true>(0.0, y);
+        let j = self.tangential_solve::<true>(Vec3::X, c.point, -c.sliding_velocity);
+        let mut out = *y;
+        put3(&mut out, RELATIVE_VELOCITY, vec3(y, RELATIVE_VELOCITY) + j * self.inverse_reduced_mass);
+        put3(&mut out, FOOT_ANGULAR_VELOCITY, vec3(y, FOOT_ANGULAR_VELOCITY) + c.point.cross(-j) / self.foot_inertia);
+        put3(&mut out, BALL_ANGULAR_VELOCITY, vec3(y, BALL_ANGULAR_VELOCITY) + cross_normal::<true>(j, Vec3::X) * (self.ball_radius / self.ball_inertia));
+        out[FRICTION_LOSS] += before - self.internal_energy(0.0, &out);
+        out
     }
 }
 

@@ -399,6 +399,9 @@ impl FullState3d {
     }
 
     fn run(&self, kick: &Kick3d, mut recorder: Option<&mut Vec<EnergySample>>) -> Result<(Outcome3d, State), Kick3dError> {
+        if kick.rigid_grip() {
+            return Err(Kick3dError::UnsupportedScene { path: "full-state", reason: crate::model::RIGID_GRIP_PATHS });
+        }
         if kick.ground {
             return Err(Kick3dError::UnsupportedScene {
                 path: "accurate",

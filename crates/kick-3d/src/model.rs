@@ -206,6 +206,10 @@ impl SetParameter for KickSpec {
     }
 }
 
+/// Why the world-frame paths refuse rigid grip.
+pub const RIGID_GRIP_PATHS: &str =
+    "rigid grip (tangential_stiffness = inf) is a constraint solved by the accurate path only; the world-frame paths integrate the spring";
+
 /// Standard gravity, m/s² (one value for every model level: kick-core's).
 pub use kick_core::GRAVITY;
 
@@ -391,6 +395,20 @@ impl Kick3d {
     /// Unit direction of the foot's velocity, û = (cos α, 0, sin α).
     pub fn foot_direction(&self) -> Vec3 {
         Vec3::new(self.approach_angle.cos(), 0.0, self.approach_angle.sin())
+    }
+
+    /// True for rigid grip (k_t = ∞): grip is a constraint, no spring.
+    pub fn rigid_grip(&self) -> bool {
+        self.tangential_stiffness.is_infinite()
+    }
+
+    /// ½ k_t |ξ|² of the tangential spring (none with rigid grip).
+    pub fn spring_energy(&self, extension_squared: f64) -> f64 {
+        if self.rigid_grip() {
+            0.0
+        } else {
+            0.5 * self.tangential_stiffness * extension_squared
+        }
     }
 
     /// Face normal (foot → ball) at first touch, n0 = (cos φ, −sin φ, 0).

@@ -245,7 +245,7 @@ pub(crate) fn assemble(kick: &Kick3d, end: &EndState, peaks: Peaks, evaluations:
             ball_translation: 0.5 * kick.base.ball_mass() * end.ball_velocity.length_squared(),
             ball_spin: 0.5 * kick.ball_inertia * end.ball_angular_velocity.length_squared(),
             foot: end.foot_energy(kick),
-            elastic_final: law.potential(end.compression) + 0.5 * kick.tangential_stiffness * end.spring.length_squared(),
+            elastic_final: law.potential(end.compression) + kick.spring_energy(end.spring.length_squared()),
             normal_damping_loss: end.normal_damping_loss,
             friction_loss: end.friction_loss,
             drive_work: end.drive_work,

@@ -73,6 +73,9 @@ impl Scene {
 
     /// Run the kick in a rapier world.
     pub fn solve(&self, kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
+        if kick.rigid_grip() {
+            return Err(Kick3dError::UnsupportedScene { path: "rapier", reason: crate::model::RIGID_GRIP_PATHS });
+        }
         let dynamics = Dynamics::new(kick);
         let start = dynamics::initial_state(kick);
         let init = kick.initial_state();

@@ -525,8 +525,9 @@ pub const BALL_INERTIA: ParameterDef = scalar(
     "Ball moment of inertia (at most 2/3 m_b R^2, a thin shell)",
 );
 pub const TANGENTIAL_STIFFNESS: ParameterDef = scalar(
-    "tangential_stiffness", "k_t", "N/m", Kick3d, Number(1.0e5), Valid::POSITIVE, SampleRange::log(1e4, 1e6),
-    "Tangential stiffness of the contact (Cundall-Strack spring)",
+    "tangential_stiffness", "k_t", "N/m", Kick3d, Number(1.0e5),
+    Valid::new(Bound::Open(0.0), Bound::Closed(f64::INFINITY), "> 0 (inf: rigid grip, solved as a constraint)"), SampleRange::log(1e4, 1e6),
+    "Tangential stiffness of the contact (Cundall-Strack spring; inf: rigid grip, a constraint with no spring)",
 );
 pub const TANGENTIAL_DAMPING: ParameterDef = scalar(
     "tangential_damping", "c_t", "N s/m", Kick3d, Number(100.0), Valid::POSITIVE, SampleRange::log(10.0, 1000.0),

@@ -130,6 +130,42 @@ fn aim_seconds(repeats: usize) -> Result<(f64, f64), String> {
     Ok((median(&mut launch), median(&mut kick)))
 }
 
+/// One off-center 3D kick (Table 1, 5 cm offset, `accurate`, one core) in
+/// four forms, µs per kick and evaluations, timed in alternation, medians:
+/// the default spring at μ = ∞, the stiff spring of the rigid-stick limit
+/// (k_t = 1e9 N/m, c_t = 1e4 N s/m), rigid grip as a constraint (k_t = ∞),
+/// and the shell ball at μ = 0.5.
+fn kick_costs(min_seconds: f64) -> Result<[(f64, u64); 4], String> {
+    use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
+    let at = |scenario: kick_core::ScenarioSpec, kick3d: Kick3dSpec| KickSpec { scenario, kick3d }.build().map_err(|e| e.to_string());
+    let spec = Kick3dSpec { offset: Some(0.05), friction: Some(f64::INFINITY), ..Kick3dSpec::default() };
+    let shell = kick_core::ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() };
+    let kicks = [
+        at(Default::default(), spec)?,
+        at(Default::default(), Kick3dSpec { tangential_stiffness: Some(1e9), tangential_damping: Some(1e4), ..spec })?,
+        at(Default::default(), Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..spec })?,
+        at(shell, Kick3dSpec { friction: Some(0.5), ..spec })?,
+    ];
+    let solver = Accurate3d::default();
+    let mut times: [Vec<f64>; 4] = Default::default();
+    let mut evaluations = [0u64; 4];
+    for _ in 0..5 {
+        for (i, kick) in kicks.iter().enumerate() {
+            let (mut runs, started) = (0u32, Instant::now());
+            while runs == 0 || started.elapsed().as_secs_f64() < min_seconds {
+                evaluations[i] = std::hint::black_box(solver.solve(kick).map_err(|e| e.to_string())?).evaluations;
+                runs += 1;
+            }
+            times[i].push(started.elapsed().as_secs_f64() / f64::from(runs));
+        }
+    }
+    let mut out = [(0.0, 0); 4];
+    for i in 0..4 {
+        out[i] = (median(&mut times[i]) * 1e6, evaluations[i]);
+    }
+    Ok(out)
+}
+
 fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
     values[values.len() / 2]
@@ -317,7 +353,13 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let _ = writeln!(log, "flight_many of {flight_rows} free kicks: {flights_1:.0} flights/s on 1 thread, {flights_2:.0} on 2 threads");
     let (aim_launch_s, aim_kick_s) = aim_seconds(if args.quick { 1 } else { 5 })?;
     let _ = writeln!(log, "aim solve: {:.2} ms for the launch, {:.2} ms through the 3D kick", aim_launch_s * 1e3, aim_kick_s * 1e3);
-    let other = Other { shell, paper_law, flight_rows, flights_1, flights_2, aim_launch: aim_launch_s, aim_kick: aim_kick_s };
+    let kicks = kick_costs(min_time / 30.0)?;
+    let _ = writeln!(
+        log,
+        "5 cm kick, one core: default spring {:.1} µs, stiff spring {:.1} µs, rigid grip {:.1} µs, shell ball {:.1} µs",
+        kicks[0].0, kicks[1].0, kicks[2].0, kicks[3].0
+    );
+    let other = Other { shell, paper_law, flight_rows, flights_1, flights_2, aim_launch: aim_launch_s, aim_kick: aim_kick_s, kicks };
 
     let files = file_runs(args.quick)?;
     for run in &files {
@@ -424,6 +466,8 @@ struct Other {
     /// Seconds per aim solve.
     aim_launch: f64,
     aim_kick: f64,
+    /// µs and evaluations per kick ([`kick_costs`]).
+    kicks: [(f64, u64); 4],
 }
 
 /// The machine a timing was taken on.
@@ -559,7 +603,11 @@ impl Measured<'_> {
              through `flight_many` (Python's `kick.flight_many`): {:.0} flights/s on 1 thread, **{:.0} flights/s on 2 \
              threads** (medians of 3 alternating runs), {:.2} µs per flight on one.\n\
              - Aim solves (median of 5): {:.2} ms for the launch (`kick aim --target 25,2.8,2 --spin 0,0,50`), \
-             {:.2} ms through the 3D kick (`kick aim --target 25,-3,1.5 --from kick`).\n",
+             {:.2} ms through the 3D kick (`kick aim --target 25,-3,1.5 --from kick`).\n\
+             - One off-center kick (Table 1, 5 cm offset, `accurate`, one core, medians of 5 alternating \
+             measurements), µs and right-hand-side evaluations: μ = ∞ with the default spring {:.1} µs ({}); the \
+             rigid-stick limit as a stiff spring (k_t = 1e9 N/m, c_t = 1e4 N s/m) {:.1} µs ({}); rigid grip as a \
+             constraint (`--tangential-stiffness inf`) {:.1} µs ({}); the shell ball at μ = 0.5 {:.1} µs ({}).\n",
             machine.describe(),
             crate::provenance::utc_timestamp(std::time::SystemTime::now()),
             self.ratio,
@@ -585,6 +633,14 @@ impl Measured<'_> {
             1e6 / self.other.flights_1,
             self.other.aim_launch * 1e3,
             self.other.aim_kick * 1e3,
+            self.other.kicks[0].0,
+            self.other.kicks[0].1,
+            self.other.kicks[1].0,
+            self.other.kicks[1].1,
+            self.other.kicks[2].0,
+            self.other.kicks[2].1,
+            self.other.kicks[3].0,
+            self.other.kicks[3].1,
         );
         format!(
             "{body}\n## Sweeps into result files\n\n\

@@ -6,5 +6,6 @@ mod scene;
 mod validation;
 mod box_accuracy;
 mod peaks;
+mod grip;
 mod history;
 mod support;

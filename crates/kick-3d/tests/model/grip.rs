@@ -1,0 +1,156 @@
+//! Rigid grip (`tangential_stiffness = inf`): grip as a constraint on the
+//! contact point's sliding velocity instead of a stiff spring. Held to the
+//! gripping limit's closed form, to conservation laws, to no sliding while
+//! gripping, and to the stiff spring it is the limit of.
+
+use kick_3d::checks::{gripping_limit_spin, kick, MATCH_1D};
+use kick_3d::outcome::EndState;
+use kick_3d::{Accurate3d, FullState3d, Kick3d, Kick3dError, Kick3dSpec, Solver3d};
+use parry3d_f64::math::Vec3;
+
+fn rigid(spec: Kick3dSpec) -> Kick3dSpec {
+    Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..spec }
+}
+
+/// Sliding velocity of the ball's material point over the foot's at the
+/// undeformed contact point, from both bodies at separation (world frame;
+/// the ball stays on the flat face in these kicks).
+fn sliding_at(k: &Kick3d, e: &EndState) -> Vec3 {
+    let n = e.foot_orientation * Vec3::X;
+    let p = e.ball_position - n * k.ball_radius;
+    let v_ball = e.ball_velocity + e.ball_angular_velocity.cross(p - e.ball_position);
+    let v_foot = e.foot_velocity + e.foot_angular_velocity.cross(p - e.foot_position);
+    let v = v_ball - v_foot;
+    v - n * v.dot(n)
+}
+
+/// A foot that cannot turn, μ = ∞: the sliding is stopped at touch by the
+/// impulse J_t = m_t v_t0 and nothing acts tangentially after it (no drive,
+/// no gravity), so the spin is the gripping limit's closed form.
+#[test]
+fn a_foot_that_cannot_turn_gives_the_gripping_limit() {
+    let stiff_foot = 1e12;
+    for offset in [0.02, 0.05, 0.08] {
+        let k = kick(rigid(Kick3dSpec {
+            offset: Some(offset),
+            friction: Some(f64::INFINITY),
+            foot_inertia: Some([stiff_foot; 3]),
+            ..Kick3dSpec::default()
+        }));
+        let o = Accurate3d::default().solve(&k).unwrap();
+        let limit = gripping_limit_spin(&k, stiff_foot);
+        let error = (o.spin[2] - limit.z).abs() / limit.z.abs();
+        assert!(error <= MATCH_1D, "offset {offset}: {} vs {}: {error:.2e}", o.spin[2], limit.z);
+        assert_eq!(o.slip_time, 0.0);
+    }
+}
+
+/// While gripping, nothing slides: on every history sample of a grip phase
+/// the contact point's sliding velocity is zero to the solver's tolerance
+/// (1e-9 of the approach speed), for μ = ∞ (also at separation) and for a
+/// finite μ, which slips at touch, grips, and slips again as F_n → 0.
+#[test]
+fn nothing_slides_while_gripping() {
+    use kick_3d::history::ContactState;
+    for (friction, offset) in [(f64::INFINITY, 0.05), (f64::INFINITY, 0.08), (2.0, 0.05), (0.6, 0.03)] {
+        let k = kick(rigid(Kick3dSpec { offset: Some(offset), friction: Some(friction), ..Kick3dSpec::default() }));
+        let v_n = k.normal_approach_speed();
+        let (o, samples) = Accurate3d::default().solve_sampled(&k, kick_core::Spacing::Count(400), 400).unwrap();
+        let mut worst = 0.0_f64;
+        let mut gripping = 0;
+        for s in samples.iter().filter(|s| s.contact_state == ContactState::Grip) {
+            let f_n = Vec3::from(s.normal_force);
+            if f_n.length() == 0.0 {
+                continue;
+            }
+            let n = f_n.normalize();
+            let (c_b, c_f) = (Vec3::from(s.ball_position), Vec3::from(s.foot_position));
+            let p = c_b - n * k.ball_radius;
+            let v = Vec3::from(s.ball_velocity) + Vec3::from(s.ball_angular_velocity).cross(p - c_b)
+                - Vec3::from(s.foot_velocity)
+                - Vec3::from(s.foot_angular_velocity).cross(p - c_f);
+            worst = worst.max((v - n * v.dot(n)).length());
+            gripping += 1;
+        }
+        println!("mu {friction}, e {offset}: slip {:.3e} of {:.3e} s; {gripping} grip samples, sliding at most {worst:.2e} m/s", o.slip_time, o.contact_time);
+        assert!(gripping > 100, "mu {friction}: {gripping}");
+        assert!(worst <= 1e-9 * v_n, "mu {friction}, e {offset}: {worst:e}");
+        if friction.is_finite() {
+            assert!(o.slip_time > 0.0, "a finite mu slips first: the foot slides over the ball at touch");
+        } else {
+            let (_, end) = Accurate3d::default().solve_to_state(&k).unwrap();
+            assert!(sliding_at(&k, &end).length() <= 1e-9 * v_n);
+        }
+    }
+}
+
+/// Energy closes (the impulse's loss is in the friction loss) and the
+/// pair's momentum and angular momentum are conserved (no drive, no gravity).
+#[test]
+fn energy_momentum_and_angular_momentum_close() {
+    for friction in [f64::INFINITY, 0.8] {
+        let k = kick(rigid(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(0.0), friction: Some(friction), ..Kick3dSpec::default() }));
+        let (o, e) = Accurate3d::default().solve_to_state(&k).unwrap();
+        assert!(o.energy.relative_residual().abs() <= 1e-9, "mu {friction}: {:e}", o.energy.relative_residual());
+        assert!(o.energy.friction_loss > 0.0);
+        let (m_f, m_b) = (k.base.effective_foot_mass(), k.base.ball_mass());
+        let [ix, iy, iz] = k.foot_inertia;
+        let q = e.foot_orientation;
+        let foot_spin = q * ((q.inverse() * e.foot_angular_velocity) * Vec3::new(ix, iy, iz));
+        let angular = e.foot_position.cross(e.foot_velocity * m_f)
+            + foot_spin
+            + e.ball_position.cross(e.ball_velocity * m_b)
+            + e.ball_angular_velocity * k.ball_inertia;
+        let s = k.initial_state();
+        let angular0 = s.foot_position.cross(s.foot_velocity * m_f) + s.ball_position.cross(s.ball_velocity * m_b);
+        let scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
+        assert!((angular - angular0).length() <= 1e-9 * scale, "mu {friction}: {:e}", (angular - angular0).length() / scale);
+    }
+}
+
+/// The stiff spring tends to rigid grip: at a fixed damping ratio (0.35)
+/// the spin's distance to the rigid kick falls about tenfold per decade of
+/// k_t, and at 1e9 N/m is below 1e-5 of it; the constraint costs a tenth of
+/// the evaluations.
+#[test]
+fn a_stiff_spring_tends_to_rigid_grip() {
+    let base = Kick3dSpec { offset: Some(0.05), friction: Some(f64::INFINITY), ..Kick3dSpec::default() };
+    let limit = Accurate3d::default().solve(&kick(rigid(base))).unwrap();
+    let mass = kick_3d::checks::tangential_mass(&kick(base), kick(base).foot_inertia[2]);
+    let mut previous = f64::INFINITY;
+    for k_t in [1e7, 1e8, 1e9] {
+        let c_t = 2.0 * 0.35 * (k_t * mass).sqrt();
+        let spring = Accurate3d::default()
+            .solve(&kick(Kick3dSpec { tangential_stiffness: Some(k_t), tangential_damping: Some(c_t), ..base }))
+            .unwrap();
+        let distance = (spring.spin[2] - limit.spin[2]).abs() / limit.spin[2].abs();
+        println!("k_t {k_t:e}: spin {} vs rigid {}: {distance:.2e}; {} vs {} evaluations", spring.spin[2], limit.spin[2], spring.evaluations, limit.evaluations);
+        assert!(distance < previous / 5.0, "k_t {k_t:e}: {distance:e} after {previous:e}");
+        previous = distance;
+        if k_t == 1e9 {
+            assert!(distance < 1e-5, "{distance:e}");
+            assert!(limit.evaluations * 5 < spring.evaluations, "{} vs {}", limit.evaluations, spring.evaluations);
+        }
+    }
+}
+
+/// The world-frame paths integrate the spring and refuse rigid grip by name;
+/// a kick whose ball reaches the instep's border is refused, not solved wrong.
+#[test]
+fn paths_without_the_constraint_refuse_it() {
+    let k = kick(rigid(Kick3dSpec { offset: Some(0.05), ..Kick3dSpec::default() }));
+    let e = FullState3d::default().solve(&k).unwrap_err();
+    assert!(matches!(e, Kick3dError::UnsupportedScene { path: "full-state", .. }), "{e}");
+    assert!(e.to_string().contains("tangential_stiffness = inf"), "{e}");
+    #[cfg(feature = "rapier")]
+    {
+        let e = Solver3d::from_name("rapier", 1e-6).unwrap().solve(&k).unwrap_err();
+        assert!(matches!(e, Kick3dError::UnsupportedScene { path: "rapier", .. }), "{e}");
+    }
+    // A narrow instep face the ball rolls off.
+    let off = kick(rigid(Kick3dSpec { offset: Some(0.08), foot_half_extents: Some([0.03, 0.01, 0.05]), ..Kick3dSpec::default() }));
+    match Accurate3d::default().solve(&off) {
+        Err(e) => assert!(matches!(e, Kick3dError::UnsupportedScene { path: "accurate", .. }), "{e}"),
+        Ok(o) => panic!("the ball rolls off a face 1 cm either side: {o:?}"),
+    }
+}
