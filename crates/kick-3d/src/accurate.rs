@@ -250,6 +250,13 @@ impl Accurate3d {
                 reason: "a ground plane is a third body; use the rapier scene path",
             });
         }
+        if kick.rigid_grip() && kick.friction.is_finite() && kick.friction > 0.0 && kick.offset != 0.0 && kick.approach_angle != 0.0 {
+            return Err(Kick3dError::UnsupportedScene {
+                path: "accurate",
+                reason: "rigid grip (tangential_stiffness = inf) with a finite friction keeps each slip in one direction, \
+                         exact for a kick in one plane: give offset = 0 or approach_angle = 0 (or friction = inf)",
+            });
+        }
         let horizon = kick.contact_horizon()?;
         let scales = kick_compliant::events::Scales::of(&kick.normal_scenario()?);
         let y0 = contact::initial_state(kick);
