@@ -8,6 +8,7 @@
 //! Depends on kick-study (what to compute) and kick-store (the files it
 //! reads and writes), and on plotters; neither depends on it.
 
+pub mod ball;
 pub mod bench;
 pub mod figures;
 pub mod force_history;

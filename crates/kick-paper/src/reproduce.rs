@@ -107,6 +107,9 @@ pub enum Call {
     FitTable2 { scenarios: PathBuf, out: PathBuf },
     /// `kick bench`.
     Bench(crate::bench::BenchSettings),
+    /// The ball alone: the shell ball's bounces over impact speeds, their
+    /// figure and `paper/ball.md` (part of `kick reproduce` only).
+    Ball,
     /// `paper/leg.md`, `laws.md` and `identification.md` from their result files (part of `kick reproduce` only).
     Pages,
     /// The validation chapter: the model beside published measurements (part of `kick reproduce` only).
@@ -126,13 +129,14 @@ pub struct Step {
 }
 
 /// The names of the steps, in the order they run.
-pub const STEP_NAMES: [&str; 16] = [
+pub const STEP_NAMES: [&str; 17] = [
     "experiments",
     "figures",
     "checks",
     "3d",
     "force-history",
     "leg",
+    "ball",
     "laws",
     "profile",
     "synthesize",
@@ -212,7 +216,7 @@ impl Call {
                 b.report.as_deref().map(|r| format!(" --report {}", d(r))).unwrap_or_default(),
                 b.solvers_report.as_deref().map(|r| format!(" --solvers-report {}", d(r))).unwrap_or_default()
             ),
-            Call::Figures { .. } | Call::Pages | Call::Validation | Call::Pages3d | Call::Report => format!(
+            Call::Figures { .. } | Call::Ball | Call::Pages | Call::Validation | Call::Pages3d | Call::Report => format!(
                 "kick reproduce --experiments {} --out {} --report {}{} --only {step}",
                 d(&args.experiments),
                 d(&args.out),
@@ -255,13 +259,14 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         ..kick_core::ScenarioSpec::default()
     };
     let synthesize = |name: &str, seed, truth, time_offset| Call::Synthesize { out: fits.clone(), name: name.into(), seed, times: 80, truth, time_offset };
-    let calls: [Vec<Call>; 16] = [
+    let calls: [Vec<Call>; 17] = [
         files.into_iter().map(|file| Call::Run { file, out: out.clone() }).collect(),
         vec![Call::Figures { out: out.clone(), figures: figures.clone() }],
         vec![Call::Checks],
         three_d.into_iter().map(|file| Call::Run3d { file, out: out.clone(), figures: figures.clone() }).collect(),
         vec![Call::ForceHistory { out: out.clone(), figures: figures.clone() }],
         vec![leg_call(args)],
+        vec![Call::Ball],
         vec![Call::Laws(crate::identify::LawsSettings { scenarios: args.experiments.join("table2.toml"), out: Some(fits.clone()), samples: 200 })],
         vec![Call::Profile(crate::identify::ProfileSettings { out: Some(fits.clone()), spread: 1.5, points: 9, map_points: 21, seed: 5 })],
         // Synthetic data (the paper's law; Hunt-Crossley with a late first touch), fitted back.
@@ -388,6 +393,10 @@ impl Call {
                 let bench = crate::bench::bench(settings, log)?;
                 say(log, &bench.text());
             }
+            Call::Ball => {
+                let written = crate::ball::write(&args.out, &args.out.join("figures"), &report_dir.join("ball.md"), &self.command(args, "ball"))?;
+                say(log, &format!("the ball alone: {} files\n", written.len()));
+            }
             Call::Pages => {
                 let out = args.out.display().to_string();
                 // The leg's section: its figures, drawn from results/leg_*.h5.
@@ -443,6 +452,7 @@ impl Call {
                     (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
                     ("3d.md", "Off-center 3D kicks: spin, friction, launch direction, the speed–spin trade-off"),
                     ("flight.md", "Ball flight: free kicks from the 3D kick, deflection at 25 m"),
+                    ("ball.md", "The ball alone: restitution, contact time and compression against impact speed"),
                     ("leg.md", "Effective mass of the articulated leg"),
                     ("laws.md", "Contact laws compared"),
                     ("identification.md", "Parameter identification and identifiability"),
