@@ -40,7 +40,7 @@ impl Level for BounceSpeeds {
     }
 
     fn outcome_sets(&self) -> Vec<OutcomeSet> {
-        let mut settings = vec![("solver".into(), Setting::Text("reduced (kick_bounce::run)".into()))];
+        let mut settings = vec![("normal_solver".into(), Setting::Text("reduced (kick_bounce::run)".into()))];
         if let Ok(b) = self.at(self.speeds.first().copied().unwrap_or(1.0)).build() {
             settings.push(("ball_mass".into(), Setting::Number(b.mass)));
             settings.push(("ball_radius".into(), Setting::Number(b.radius)));
