@@ -1,5 +1,6 @@
-//! Run an experiment of the 1D model into a result file: the thin 1D layer
-//! over [`crate::h5::SweepWriter`].
+//! Run an experiment into a result file: the thin layer over
+//! [`crate::h5::SweepWriter`] for either level (a 3D experiment's own
+//! groups are [`crate::three_d`]'s).
 
 use crate::experiment::{Experiment, Kicks, Output, Scenarios};
 use crate::h5::{Column, Compression, H5Error, SweepWriter, CHUNK_ROWS};
@@ -183,7 +184,7 @@ fn receive_histories(
     Ok(())
 }
 
-/// Run `experiment` and write `out_dir/NAME.h5`.
+/// Run `experiment` (1D or 3D) and write `out_dir/NAME.h5`.
 ///
 /// Refused before it starts beyond the bounds of [`crate::limits::check`]
 /// (rows, free space); with `show_progress`, a large run states its size on
