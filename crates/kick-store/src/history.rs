@@ -185,23 +185,24 @@ impl HistoryWriter {
     }
 }
 
+/// A [`HistorySink`] whose errors are the [`StoreError`]s, typed inside a [`SinkError`].
 impl HistorySink for HistoryWriter {
-    fn push(&mut self, values: &[f64]) -> Result<(), String> {
-        Ok(HistoryWriter::push(self, values)?)
+    fn push(&mut self, values: &[f64]) -> Result<(), SinkError> {
+        HistoryWriter::push(self, values).map_err(SinkError::new)
     }
 
     fn rows(&self) -> u64 {
         HistoryWriter::rows(self)
     }
 
-    fn finish(self: Box<Self>) -> Result<PathBuf, String> {
-        Ok(HistoryWriter::finish(*self)?)
+    fn finish(self: Box<Self>) -> Result<PathBuf, SinkError> {
+        HistoryWriter::finish(*self).map_err(SinkError::new)
     }
 }
 
 /// The [`OpenSink`] of history files: a [`HistoryWriter`].
-pub fn open(request: &HistoryRequest, columns: &[(&str, &str)], meta: &HistoryMeta) -> Result<Box<dyn HistorySink>, String> {
-    Ok(Box::new(HistoryWriter::create(request, columns, meta)?))
+pub fn open(request: &HistoryRequest, columns: &[(&str, &str)], meta: &HistoryMeta) -> Result<Box<dyn HistorySink>, SinkError> {
+    Ok(Box::new(HistoryWriter::create(request, columns, meta).map_err(SinkError::new)?))
 }
 
 /// A request for a history file (`--history FILE [--samples N | --interval DT]`),
@@ -332,6 +333,33 @@ mod tests {
         let h = hdf5::File::open(&path).unwrap();
         assert_eq!(h5::read_u64_attr(&h, "samples"), Some(rows));
         assert_eq!(h5::read_f64_attr(&h, "interval"), Some(1e-6));
+    }
+
+    /// A sink's failure reaches the study as `StudyError::Sink` holding the
+    /// store's own error, matched by its variant, its message the store's;
+    /// the old file stays as it was.
+    #[test]
+    fn a_sink_error_is_the_stores_error_by_variant() {
+        let dir = scratch("sink-error");
+        for name in ["h.csv", "h.h5"] {
+            let path = dir.join(name);
+            std::fs::write(&path, b"old").unwrap();
+            let request = HistoryRequest { path: path.clone(), spacing: Spacing::Count(5), open };
+            // Rows of two values for three columns.
+            let e = write(&request, &COLUMNS, &HistoryMeta::default(), |&k: &u64| vec![k as f64; 2], stream(3)).unwrap_err();
+            let StudyError::Sink(sink) = &e else { panic!("not a sink error: {e:?}") };
+            let store = sink.downcast_ref::<StoreError>().expect("the store's error inside");
+            assert!(matches!(store, StoreError::RowWidth { values: 2, columns: 3, path: p } if *p == path), "{store:?}");
+            assert_eq!(e.to_string(), format!("{}: a row of 2 values for 3 columns", path.display()));
+            assert_eq!(e.status(), kick_core::Status::NumericalFailure);
+            assert_eq!(std::fs::read(&path).unwrap(), b"old");
+        }
+        // A directory where the file goes: the sink cannot open, by variant too.
+        let request = HistoryRequest { path: dir.clone(), spacing: Spacing::Count(5), open };
+        let e = write(&request, &COLUMNS, &HistoryMeta::default(), |&k| row(k), stream(3)).unwrap_err();
+        let StudyError::Sink(sink) = &e else { panic!("not a sink error: {e:?}") };
+        assert!(sink.downcast_ref::<StoreError>().is_some(), "{e:?}");
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     /// A solve that fails, or a history that comes short, leaves the old

@@ -1,11 +1,13 @@
-//! Run an experiment of the 1D model into a result file: the thin 1D layer
-//! over [`crate::h5::SweepWriter`].
+//! Run an experiment into a result file: the thin layer over
+//! [`crate::h5::SweepWriter`] for either level (a 3D experiment's own
+//! groups are [`crate::three_d`]'s).
 
-use crate::experiment::{Experiment, Output, Scenarios};
+use crate::experiment::{Experiment, Kicks, Output, Scenarios};
 use crate::h5::{Column, Compression, H5Error, SweepWriter, CHUNK_ROWS};
 use crate::provenance::Provenance;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use kick_core::{KickError, Outcome, RecordingSolver, Spacing, HISTORY_COLUMNS};
+use kick_study::level::one_d::OneD;
 use kick_study::level::{run_rows, Level, RowSink};
 use std::io::IsTerminal;
 use std::ops::ControlFlow;
@@ -68,9 +70,9 @@ fn empty_block() -> Vec<Vec<f64>> {
 
 /// Solve scenario `row` with every solver, streaming each history to `to_writer`
 /// in blocks: a worker holds one block, the channel a few.
-fn stream_row(experiment: &Experiment, row: u64, interval: f64, to_writer: &SyncSender<Message>) {
-    let scenario = experiment.scenarios.scenario(row);
-    for (set, solver) in experiment.solvers.iter().enumerate() {
+fn stream_row(level: OneD, row: u64, interval: f64, to_writer: &SyncSender<Message>) {
+    let scenario = level.kicks.scenarios.scenario(row);
+    for (set, solver) in level.kicks.solvers.iter().enumerate() {
         let mut block = empty_block();
         let result = scenario.clone().and_then(|s| {
             let mut sink = |sample: &kick_core::Sample| {
@@ -104,14 +106,14 @@ fn stream_row(experiment: &Experiment, row: u64, interval: f64, to_writer: &Sync
 /// memory is a few blocks per worker whatever the histories' lengths. The
 /// file's content does not depend on the number of threads.
 fn write_histories(
-    experiment: &Experiment,
+    level: OneD,
     part: &Range<u64>,
     writer: &mut SweepWriter,
     interval: f64,
     bar: &ProgressBar,
 ) -> Result<(), RunError> {
     let rows = (part.end - part.start) as usize;
-    let solvers = experiment.solvers.len();
+    let solvers = level.kicks.solvers.len();
     let threads = rayon::current_num_threads().clamp(1, rows.max(1));
     let (senders, receivers): (Vec<_>, Vec<_>) =
         (0..rows).map(|_| sync_channel::<Message>(HISTORY_BLOCKS_IN_FLIGHT)).map(|(s, r)| (Mutex::new(Some(s)), r)).unzip();
@@ -127,12 +129,12 @@ fn write_histories(
                     }
                     let sender = senders[row].lock().unwrap_or_else(|e| e.into_inner()).take();
                     if let Some(sender) = sender {
-                        stream_row(experiment, part.start + row as u64, interval, &sender);
+                        stream_row(level, part.start + row as u64, interval, &sender);
                     }
                 }
             });
         }
-        let written = receive_histories(experiment, part.start, writer, receivers, solvers, bar);
+        let written = receive_histories(level, part.start, writer, receivers, solvers, bar);
         // On an error the receivers are gone: workers stop at their next send.
         stop.store(true, Ordering::Relaxed);
         written
@@ -140,7 +142,7 @@ fn write_histories(
 }
 
 fn receive_histories(
-    experiment: &Experiment,
+    level: OneD,
     first: u64,
     writer: &mut SweepWriter,
     receivers: Vec<Receiver<Message>>,
@@ -152,7 +154,7 @@ fn receive_histories(
         columns.iter().cloned().zip(values.iter().map(Vec::as_slice)).collect()
     }
     let mut outcomes: Vec<Result<Outcome, KickError>> = Vec::with_capacity(solvers);
-    let mut table_row = experiment.empty_row();
+    let mut table_row = level.empty_row();
     for (row, receiver) in receivers.into_iter().enumerate() {
         outcomes.clear();
         let mut streamed = vec![false; solvers];
@@ -174,15 +176,15 @@ fn receive_histories(
                 }
             }
         }
-        let scenario = experiment.scenarios.scenario(first + row as u64);
-        experiment.fill_row(&scenario, &outcomes, &mut table_row);
+        let scenario = level.kicks.scenarios.scenario(first + row as u64);
+        level.fill_row(&scenario, &outcomes, &mut table_row);
         writer.push_row(&table_row)?;
         bar.inc(1);
     }
     Ok(())
 }
 
-/// Run `experiment` and write `out_dir/NAME.h5`.
+/// Run `experiment` (1D or 3D) and write `out_dir/NAME.h5`.
 ///
 /// Refused before it starts beyond the bounds of [`crate::limits::check`]
 /// (rows, free space); with `show_progress`, a large run states its size on
@@ -195,7 +197,7 @@ fn receive_histories(
 /// histories are streamed to the file in blocks (see `write_histories`), so
 /// memory does not grow with their length.
 pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Result<RunSummary, RunError> {
-    let part = Part { rows: 0..experiment.scenarios.len(), path: out_dir.join(format!("{}.h5", experiment.name)) };
+    let part = Part { rows: 0..experiment.rows(), path: out_dir.join(format!("{}.h5", experiment.name)) };
     run_part(experiment, &part, show_progress, &|_| Ok(()))
 }
 
@@ -216,6 +218,11 @@ pub fn run_part(
     show_progress: bool,
     attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>,
 ) -> Result<RunSummary, RunError> {
+    let kicks = match &experiment.kicks {
+        Kicks::OneD(kicks) => kicks,
+        Kicks::ThreeD(kicks) => return crate::three_d::run_part(experiment, kicks, part, attributes),
+    };
+    let level = OneD { kicks, flight: experiment.flight.as_ref() };
     let out_dir = part.path.parent().unwrap_or(Path::new("."));
     let size = crate::limits::check(experiment, &part.rows, out_dir)?;
     let path = part.path.clone();
@@ -225,15 +232,14 @@ pub fn run_part(
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     let mut writer = create_table(experiment, &path, &provenance, part.rows.end - part.rows.start, experiment.compress)?;
     crate::h5::write_str_attr(writer.file(), &path, "description", &experiment.description)?;
-    if let Some(names) = experiment.scenarios.names() {
+    if let Some(names) = kicks.scenarios.names() {
         let names = &names[part.rows.start as usize..part.rows.end as usize];
         crate::h5::write_strings(writer.file(), &path, "scenario_names", names)?;
         crate::h5::write_printed_table2(writer.file(), &path, names)?;
     }
-    if let Scenarios::Grid { axes, .. } = &experiment.scenarios {
+    if let Scenarios::Grid { grid, .. } = &kicks.scenarios {
         // The grid's shape (the whole experiment's, in a shard too).
-        let coordinates: Vec<(Column, &[f64])> =
-            axes.iter().map(|a| (Column::new(a.parameter.name(), a.parameter.unit()), a.values.as_slice())).collect();
+        let coordinates: Vec<(Column, &[f64])> = grid.columns().into_iter().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
         if !coordinates.is_empty() {
             crate::h5::write_grid(writer.file(), &path, &coordinates)?;
         }
@@ -246,7 +252,7 @@ pub fn run_part(
     let bar = progress(part.rows.end - part.rows.start, show_progress);
     bar.set_message(experiment.name.clone());
     match experiment.output {
-        Output::History { interval } => write_histories(experiment, &part.rows, &mut writer, interval, &bar)?,
+        Output::History { interval } => write_histories(level, &part.rows, &mut writer, interval, &bar)?,
         Output::Summary => fill_table(experiment, part.rows.clone(), &mut writer, &bar)?,
     }
     finish_table(experiment, writer, &bar)

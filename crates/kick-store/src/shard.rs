@@ -28,7 +28,8 @@
 //! `/fixed`) must be the same in every part and is copied once.
 
 use crate::error::StoreError;
-use crate::experiment::{AnyExperiment, Experiment, Experiment3d};
+use crate::experiment::Experiment;
+use kick_study::level::Level;
 use crate::h5::{close_file, create_staged, disable_file_locking, new_group, read_str_attr, read_u64_attr, write_str_attr, write_u64_attr, H5Error, CHUNK_ROWS};
 use crate::output::OutputError;
 pub use kick_study::shard::{fingerprint, Shard};
@@ -71,44 +72,25 @@ pub fn write_shard_attributes(file: &hdf5::Location, path: &Path, shard: Shard, 
     write_str_attr(file, path, "experiment_fingerprint", &fingerprint(text))
 }
 
-/// Run shard `shard` of `experiment` into `out_dir/NAME.shard-I-of-N.h5`.
+/// Run shard `shard` of `experiment` (1D or 3D: its rows `shard.rows(rows)`)
+/// into `out_dir/NAME.shard-I-of-N.h5`.
 pub fn run_shard(experiment: &Experiment, shard: Shard, out_dir: &Path, show_progress: bool) -> Result<crate::RunSummary, ShardError> {
-    let total = experiment.scenarios.len();
+    let total = experiment.rows();
     let part = Part { rows: shard.rows(total), path: out_dir.join(shard.file_name(&experiment.name)) };
     let attributes = |file: &File| write_shard_attributes(file, &part.path, shard, total, &experiment.text);
     Ok(run_part(experiment, &part, show_progress, &attributes)?)
 }
 
-/// [`run_shard`] of a 3D experiment: its cells `shard.rows(cells)`.
-pub fn run_shard3d(experiment: &Experiment3d, shard: Shard, out_dir: &Path) -> Result<crate::RunSummary, ShardError> {
-    let total = experiment.grid.len();
-    let part = Part { rows: shard.rows(total), path: out_dir.join(shard.file_name(&experiment.name)) };
-    let attributes = |file: &File| write_shard_attributes(file, &part.path, shard, total, &experiment.text);
-    Ok(crate::three_d::run_part(experiment, &part, &attributes)?)
-}
-
 /// `kick run FILE [--shard I/N]`: the whole experiment (1D or 3D) into
 /// `out/NAME.h5`, or shard I/N (`shard` as given) into `out/NAME.shard-I-of-N.h5`.
 pub fn run_file(file: &Path, out: &Path, shard: Option<&str>) -> Result<RunReport, StoreError> {
-    let Some(given) = shard else { return run_whole(file, out) };
-    let shard = Shard::parse(given, "--shard")?;
-    let experiment = crate::experiment::load_any(file)?;
+    let shard = shard.map(|given| Shard::parse(given, "--shard")).transpose()?;
+    let experiment = crate::experiment::load(file)?;
     let started = std::time::Instant::now();
-    let summary = match &experiment {
-        AnyExperiment::OneD(e) => run_shard(e, shard, out, true),
-        AnyExperiment::ThreeD(e) => run_shard3d(e, shard, out),
-    }?;
-    Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
-}
-
-/// Load and run one experiment file of either level into `out/NAME.h5`.
-fn run_whole(file: &Path, out: &Path) -> Result<RunReport, StoreError> {
-    let experiment = crate::experiment::load_any(file)?;
-    let started = std::time::Instant::now();
-    let summary = match &experiment {
-        crate::experiment::AnyExperiment::OneD(e) => crate::run::run(e, out, true),
-        crate::experiment::AnyExperiment::ThreeD(e) => crate::three_d::run(e, out),
-    }?;
+    let summary = match shard {
+        None => crate::run::run(&experiment, out, true)?,
+        Some(shard) => run_shard(&experiment, shard, out, true)?,
+    };
     Ok(RunReport { file: file.to_path_buf(), summary, seconds: started.elapsed().as_secs_f64() })
 }
 
@@ -405,10 +387,8 @@ fn experiment_of(piece: &Piece) -> Option<Experiment> {
     if fingerprint(&text) != piece.fingerprint || Path::new(&path).extension().and_then(|e| e.to_str()) != Some("toml") {
         return None;
     }
-    match crate::experiment::parse_any(Path::new(&path), &text).ok()? {
-        AnyExperiment::OneD(e) if e.scenarios.len() == piece.total => Some(e),
-        _ => None,
-    }
+    let experiment = crate::experiment::parse(Path::new(&path), &text).ok()?;
+    (experiment.one_d().is_some() && experiment.rows() == piece.total).then_some(experiment)
 }
 
 fn varlen(text: &str) -> hdf5::Result<VarLenUnicode> {
@@ -566,14 +546,16 @@ impl Merger<'_> {
     /// Parameter column `name` of a part: row by row the experiment's value
     /// (as [`crate::run`] writes it: the scenario's, NaN where it is invalid).
     fn check_parameter(&self, piece: &Piece, experiment: &Experiment, name: &str, data: &hdf5::Dataset) -> Result<(), ShardError> {
-        let columns = crate::run::parameter_columns(experiment.scenarios.has_restitution());
+        // `experiment_of` gives 1D experiments only.
+        let Some(kicks) = experiment.one_d() else { return Ok(()) };
+        let columns = crate::run::parameter_columns(kicks.scenarios.has_restitution());
         let Some(j) = columns.iter().position(|c| c.name == name) else {
             return Err(part_error(&piece.path, format!("/parameters/{name}: not a parameter of the experiment")));
         };
         let values = data.read_raw::<f64>().map_err(h5(&piece.path))?;
         for (i, &value) in values.iter().enumerate() {
             let row = piece.rows.start + i as u64;
-            let expected = match experiment.scenarios.scenario(row) {
+            let expected = match kicks.scenarios.scenario(row) {
                 Ok(s) if j < 8 => s.values()[j],
                 Ok(s) => s.restitution_target().unwrap_or(f64::NAN),
                 Err(_) => f64::NAN,

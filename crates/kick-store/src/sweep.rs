@@ -15,6 +15,7 @@ use crate::printable::Printable;
 use crate::sample::{ranges, SampledSweep};
 use crate::shard::Shard;
 use crate::{Experiment, Output, Scenarios};
+use kick_study::{Kicks, Kicks1d};
 use kick_compliant::{Auto, SolverChoice};
 use kick_core::{LawKind, Parameter, ScenarioSpec, SolverPath};
 use serde::Serialize;
@@ -141,11 +142,10 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
         description: format!("random sweep of {} scenarios around the baseline (seed {})", settings.samples, settings.seed),
         path: PathBuf::from(format!("kick sweep (seed {})", settings.seed)),
         text,
-        solvers: vec![solver],
-        scenarios: Scenarios::Sampled(sweep),
         output: Output::Summary,
         flight: None,
         compress: settings.compress,
+        kicks: Kicks::OneD(Kicks1d { solvers: vec![solver], scenarios: Scenarios::Sampled(sweep) }),
     };
     let started = std::time::Instant::now();
     let summary = match target.shard {

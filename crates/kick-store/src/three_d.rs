@@ -9,29 +9,29 @@
 //! (defaults filled in; vectors as three numbers, switches as 0 or 1) with
 //! its unit, and the root attribute `level = "3d"`.
 
-use crate::experiment::Experiment3d;
+use crate::experiment::{Experiment, Kicks3d};
 use crate::h5::{new_group, write_column, write_grid, write_str_attr, Column, H5Error};
 use crate::provenance::Provenance;
 use crate::run::{create_table, fill_table, finish_table, progress, Part, RunError, RunSummary};
 use kick_study::level::Level;
 use std::path::Path;
 
-/// Run a 3D experiment into `out_dir/NAME.h5`: cells solved in parallel in
-/// chunks, written in grid order (the file does not depend on the threads).
-pub fn run(experiment: &Experiment3d, out_dir: &Path) -> Result<RunSummary, RunError> {
-    let part = Part { rows: 0..experiment.grid.len(), path: out_dir.join(format!("{}.h5", experiment.name)) };
-    run_part(experiment, &part, &|_| Ok(()))
-}
-
-/// [`run`] of the cells `part.rows` into `part.path` (a shard: [`crate::shard`]);
-/// `attributes` adds root attributes of the caller's. `/grid` and `/fixed`
-/// describe the whole experiment in every part.
-pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>) -> Result<RunSummary, RunError> {
-    let grid = &experiment.grid;
+/// The 3D part of [`crate::run::run_part`]: the cells `part.rows` of
+/// `experiment` (whose kicks are `kicks`) into `part.path`, solved in
+/// parallel in chunks and written in grid order (the file does not depend
+/// on the threads); `attributes` adds root attributes of the caller's.
+/// `/grid` and `/fixed` describe the whole experiment in every part.
+pub(crate) fn run_part(
+    experiment: &Experiment,
+    kicks: &Kicks3d,
+    part: &Part,
+    attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>,
+) -> Result<RunSummary, RunError> {
+    let grid = &kicks.grid;
     let path = part.path.clone();
     let out_dir = path.parent().unwrap_or(Path::new("."));
     let rows = part.rows.end - part.rows.start;
-    crate::limits::check_rows("cells", grid.len(), rows, experiment.bytes_per_row(), out_dir)?;
+    crate::limits::check(experiment, &part.rows, out_dir)?;
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     let mut writer = create_table(experiment, &path, &provenance, rows, experiment.compress)?;
     let file = writer.file().clone();
@@ -42,7 +42,7 @@ pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf
     write_grid(&file, &path, &coordinates)?;
     // Every parameter not swept, as the first cell was built with it.
     let fixed = new_group(&file, "fixed").map_err(|e| H5Error::Hdf5 { path: path.clone(), message: e.to_string() })?;
-    let first = grid.kick(0).map_err(|e| H5Error::Layout { path: path.clone(), message: e.to_string() })?;
+    let first = kicks.kick(0).map_err(|e| H5Error::Layout { path: path.clone(), message: e.to_string() })?;
     for (def, value) in first.parameter_values() {
         if grid.axes.iter().any(|a| a.parameter.name == def.name) {
             continue;
@@ -58,7 +58,7 @@ pub fn run_part(experiment: &Experiment3d, part: &Part, attributes: &dyn Fn(&hdf
 
 #[cfg(test)]
 mod tests {
-    use crate::experiment::{parse_any, AnyExperiment};
+    use crate::experiment::parse;
     use crate::h5::{read_grid_shape, SweepData};
     use kick_3d::{Accurate3d, KickSpec};
     use kick_core::parameters::{SetParameter, Value};
@@ -71,9 +71,10 @@ mod tests {
         let text = "description = \"t\"\n[base]\nfoot_mass = 2.0\n[kick3d]\nfriction = 0.7\n\
                     [[sweep]]\nparameter = \"foot_speed\"\nvalues = [18.0, 24.0]\n\
                     [[sweep]]\nparameter = \"offset\"\nlinear = { from = 0.0, to = 0.06, count = 3 }\n";
-        let AnyExperiment::ThreeD(e) = parse_any(Path::new("grid.toml"), text).unwrap() else { panic!("read as 1D") };
+        let e = parse(Path::new("grid.toml"), text).unwrap();
+        assert!(e.three_d().is_some(), "read as 1D");
         let dir = std::env::temp_dir().join(format!("kick-grid3d-{}", std::process::id()));
-        let summary = super::run(&e, &dir).unwrap();
+        let summary = crate::run::run(&e, &dir, false).unwrap();
         let data = SweepData::read(&summary.path).unwrap();
         let file = hdf5::File::open(&summary.path).unwrap();
         assert_eq!(read_grid_shape(&file), Some(vec![2, 3]));
@@ -103,11 +104,11 @@ mod tests {
 
     #[test]
     fn bad_3d_keys_are_refused_with_their_line() {
-        let e = parse_any(Path::new("x.toml"), "level = \"3d\"\n[kick3d]\nfriction = 0.5\nofset = 0.02\n").unwrap_err();
+        let e = parse(Path::new("x.toml"), "level = \"3d\"\n[kick3d]\nfriction = 0.5\nofset = 0.02\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (4, "ofset"), "{e}");
-        let e = parse_any(Path::new("x.toml"), "[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.2]\n").unwrap_err();
+        let e = parse(Path::new("x.toml"), "[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.2]\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (3, "sweep.offset"), "{e}");
-        let e = parse_any(Path::new("x.toml"), "[kick3d]\noffset = 0.5\n").unwrap_err();
+        let e = parse(Path::new("x.toml"), "[kick3d]\noffset = 0.5\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (2, "kick3d.offset"), "{e}");
     }
 }

@@ -46,9 +46,10 @@ pub enum StudyError {
     /// One named row of a table (Table 2's) whose solve failed.
     #[error("{name}: {source}")]
     Row { name: String, source: KickError },
-    /// A history's sink (kick-store's file, an in-memory sink) failed.
-    #[error("{0}")]
-    Sink(String),
+    /// A history's sink (kick-store's file, an in-memory sink) failed: its
+    /// own error inside.
+    #[error(transparent)]
+    Sink(#[from] crate::history::SinkError),
     /// A history whose solve reported more rows than reached its sink.
     #[error("{}: {written} of {total} rows written", .path.display())]
     ShortHistory { path: PathBuf, written: u64, total: u64 },
@@ -100,12 +101,12 @@ impl From<StudyError> for String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::history::{HistoryMeta, HistoryRequest, HistorySink, MAX_FILE_SAMPLES};
+    use crate::history::{HistoryMeta, HistoryRequest, HistorySink, SinkError, MAX_FILE_SAMPLES};
     use kick_core::{Parameter, ScenarioSpec};
     use kick_flight::FlightSpec;
     use std::path::Path;
 
-    fn no_sink(_: &HistoryRequest, _: &[(&str, &str)], _: &HistoryMeta) -> Result<Box<dyn HistorySink>, String> {
+    fn no_sink(_: &HistoryRequest, _: &[(&str, &str)], _: &HistoryMeta) -> Result<Box<dyn HistorySink>, SinkError> {
         Err("no sink in this test".into())
     }
 

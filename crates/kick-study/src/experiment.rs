@@ -26,19 +26,27 @@
 //! `table2 = "table2.toml"`. A Table 2 file itself (`kick fit table2`) is run
 //! as its eight named rows with its own solver and `accurate`.
 //!
+//! One schema for both levels: [`parse`] reads the keys every level shares
+//! (`name`, `description`, `law`, `restitution`, `[base]`, `[flight]`,
+//! `compress`) once into one [`Experiment`], and the level's own keys into its
+//! [`Kicks`]: 1D solvers and [`Scenarios`], or a 3D kick and its [`Grid`]
+//! ([`three_d`] says which files are 3D). Both grids are one [`Grid`] type.
+//!
 //! Every problem is reported with the file, line, column and key.
 
-use kick_compliant::table2::Table2File;
 use kick_compliant::SolverChoice;
 use kick_core::parameters::{self, Level, ParameterDef};
 use kick_core::{short, KickError, Parameter, Scenario};
+use serde::de::IgnoredAny;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
 mod flight;
-mod three_d;
-pub use three_d::{Axis3d, Experiment3d, Grid3d, MAX_CELLS_3D};
+mod one_d;
+pub mod three_d;
+pub use crate::grid::{Axis, Grid};
+pub use three_d::{Kicks3d, MAX_CELLS_3D};
 
 type Span = std::ops::Range<usize>;
 
@@ -71,10 +79,12 @@ pub struct ExperimentError {
     pub message: String,
 }
 
+/// Every key of an experiment file, of either level; which keys a level
+/// takes is [`Keys1d`]'s and [`Keys3d`]'s.
 #[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
 struct RawExperiment {
-    /// "1d" or "3d" (see [`parse_any`]).
+    /// "1d" or "3d": decided by [`is_three_d`], here for its type's error.
+    #[allow(dead_code)]
     level: Option<Spanned<String>>,
     name: Option<Spanned<String>>,
     description: Option<String>,
@@ -90,10 +100,52 @@ struct RawExperiment {
     law: Option<Spanned<String>>,
     /// Target restitution of a law other than the paper's.
     restitution: Option<Spanned<f64>>,
+    /// The 3D kick's own parameters (3D only).
+    kick3d: Option<kick_3d::Kick3dSpec>,
     /// Flight outcomes on every row ([`flight`]).
     flight: Option<Spanned<kick_flight::FlightSpec>>,
     /// Store the per-row datasets compressed ([`compression`]).
     compress: Option<Spanned<toml::Value>>,
+}
+
+/// The keys of a 1D experiment, in the order an unknown key's message lists them.
+#[allow(dead_code)]
+#[derive(Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct Keys1d {
+    level: IgnoredAny,
+    name: IgnoredAny,
+    description: IgnoredAny,
+    solver: IgnoredAny,
+    solvers: IgnoredAny,
+    dt: IgnoredAny,
+    base: IgnoredAny,
+    sweep: IgnoredAny,
+    scenario: IgnoredAny,
+    table2: IgnoredAny,
+    output: IgnoredAny,
+    law: IgnoredAny,
+    restitution: IgnoredAny,
+    flight: IgnoredAny,
+    compress: IgnoredAny,
+}
+
+/// The keys of a 3D experiment, as [`Keys1d`].
+#[allow(dead_code)]
+#[derive(Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct Keys3d {
+    level: IgnoredAny,
+    name: IgnoredAny,
+    description: IgnoredAny,
+    solver: IgnoredAny,
+    law: IgnoredAny,
+    restitution: IgnoredAny,
+    base: IgnoredAny,
+    kick3d: IgnoredAny,
+    sweep: IgnoredAny,
+    flight: IgnoredAny,
+    compress: IgnoredAny,
 }
 
 /// A `[base]` or `[[scenario]]` table: values of the declared 1D parameters
@@ -167,8 +219,8 @@ impl<'de, const NAMED: bool> Deserialize<'de> for RawSpec<NAMED> {
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawAxis<P = Parameter> {
-    parameter: Spanned<P>,
+struct RawAxis {
+    parameter: Spanned<String>,
     values: Option<Spanned<Vec<Spanned<f64>>>>,
     linear: Option<Spanned<RawRange>>,
     log: Option<Spanned<RawRange>>,
@@ -198,25 +250,19 @@ pub enum Output {
     History { interval: f64 },
 }
 
-/// One swept parameter and its values.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Axis {
-    pub parameter: Parameter,
-    pub values: Vec<f64>,
-}
-
 /// Where the scenarios come from.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Scenarios {
-    /// The base scenario, or every combination of the axes over it.
-    Grid { base: Scenario, axes: Vec<Axis> },
+    /// The base scenario, or every cell of the grid (of 1D parameters) over it.
+    Grid { base: Scenario, grid: Grid },
     /// Named scenarios (Table 2 rows, `[[scenario]]` lists).
     Named { names: Vec<String>, scenarios: Vec<Scenario> },
     /// Random scenarios drawn on demand (`kick sweep`).
     Sampled(crate::sample::SampledSweep),
 }
 
-/// A validated experiment, ready to run.
+/// A validated experiment of either level, ready to run: what every level
+/// shares, and the level's own part ([`Kicks`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Experiment {
     pub name: String,
@@ -225,21 +271,56 @@ pub struct Experiment {
     pub path: PathBuf,
     /// The file's full text (stored in every result file).
     pub text: String,
-    pub solvers: Vec<SolverChoice>,
-    pub scenarios: Scenarios,
+    /// What to record per row (1D histories; a 3D experiment's is [`Output::Summary`]).
     pub output: Output,
     /// The `[flight]` table: every row's kick is flown (after each solver's
     /// kick) and the flight outcomes stored beside it.
     pub flight: Option<kick_flight::FlightSpec>,
     /// The `compress` key: how the result file stores its per-row datasets.
     pub compress: crate::columns::Compression,
+    /// The level's kicks.
+    pub kicks: Kicks,
+}
+
+/// The kicks of an experiment, by level.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Kicks {
+    /// 1D scenarios, each solved by every solver.
+    OneD(Kicks1d),
+    /// A grid of 3D kicks ([`three_d`]).
+    ThreeD(Kicks3d),
+}
+
+/// The 1D part of an experiment.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Kicks1d {
+    pub solvers: Vec<SolverChoice>,
+    pub scenarios: Scenarios,
+}
+
+impl Experiment {
+    /// The 1D part, when the experiment is 1D.
+    pub fn one_d(&self) -> Option<&Kicks1d> {
+        match &self.kicks {
+            Kicks::OneD(k) => Some(k),
+            Kicks::ThreeD(_) => None,
+        }
+    }
+
+    /// The 3D part, when the experiment is 3D.
+    pub fn three_d(&self) -> Option<&Kicks3d> {
+        match &self.kicks {
+            Kicks::ThreeD(k) => Some(k),
+            Kicks::OneD(_) => None,
+        }
+    }
 }
 
 impl Scenarios {
     /// Number of scenarios.
     pub fn len(&self) -> u64 {
         match self {
-            Scenarios::Grid { axes, .. } => axes.iter().map(|a| a.values.len() as u64).product(),
+            Scenarios::Grid { grid, .. } => grid.len(),
             Scenarios::Named { scenarios, .. } => scenarios.len() as u64,
             Scenarios::Sampled(sweep) => sweep.samples,
         }
@@ -252,12 +333,13 @@ impl Scenarios {
     /// Scenario `index` (grid order: the last axis varies fastest).
     pub fn scenario(&self, index: u64) -> Result<Scenario, KickError> {
         match self {
-            Scenarios::Grid { base, axes } => {
+            Scenarios::Grid { base, grid } => {
                 let mut values = base.values();
-                crate::grid::decode(axes.iter().map(|a| a.values.len()), index, |k, position| {
-                    let axis = &axes[k];
-                    let slot = Parameter::ALL.iter().position(|&p| p == axis.parameter).unwrap_or(0);
-                    values[slot] = axis.values[position];
+                // A 1D grid's axes are the eight `Parameter`s (checked when read).
+                grid.decode(index, |_, axis, value| {
+                    if let Some(slot) = Parameter::ALL.iter().position(|p| p.name() == axis.parameter.name) {
+                        values[slot] = value;
+                    }
                 });
                 Scenario::from_values(values)?.with_law(base.law_kind(), base.restitution_target())
             }
@@ -396,11 +478,10 @@ fn file_stem(path: &Path) -> Result<String, ExperimentError> {
     }
 }
 
-/// Read and validate an experiment file.
+/// Read and validate an experiment file of either level (see [`parse`]).
 pub fn load(path: &Path) -> Result<Experiment, ExperimentError> {
-    let file = path.display().to_string();
     let text = kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|message| ExperimentError {
-        file: file.clone(),
+        file: path.display().to_string(),
         line: 0,
         column: 0,
         key: String::new(),
@@ -409,218 +490,72 @@ pub fn load(path: &Path) -> Result<Experiment, ExperimentError> {
     parse(path, &text)
 }
 
-/// Validate an experiment given its text (`path` names it in errors and
-/// resolves `table2 = ...`).
+/// The keys that decide an experiment's level.
+#[derive(Deserialize)]
+struct LevelProbe {
+    level: Option<Spanned<String>>,
+    kick3d: Option<toml::Value>,
+    sweep: Option<Vec<AxisProbe>>,
+}
+
+#[derive(Deserialize)]
+struct AxisProbe {
+    parameter: Option<toml::Value>,
+}
+
+/// Whether the file is 3D: it says `level = "3d"`, or without a `level` key
+/// it has a `[kick3d]` table or sweeps a parameter of the 3D level.
+fn is_three_d(at: &Locator, text: &str) -> Result<bool, ExperimentError> {
+    match toml::from_str::<LevelProbe>(text) {
+        Ok(LevelProbe { level: Some(level), .. }) => match level.get_ref().as_str() {
+            "1d" => Ok(false),
+            "3d" => Ok(true),
+            other => Err(at.error(level.span(), "level", format!("`{other}`: expected \"1d\" or \"3d\""))),
+        },
+        Ok(probe) => Ok(probe.kick3d.is_some()
+            || probe.sweep.iter().flatten().any(|a| {
+                a.parameter.as_ref().and_then(|p| p.as_str()).and_then(parameters::find).is_some_and(|p| p.level == Level::Kick3d)
+            })),
+        // The 1D reader names the problem.
+        Err(_) => Ok(false),
+    }
+}
+
+/// Validate an experiment of either level given its text (`path` names it
+/// in errors and resolves `table2 = ...`): the shared keys here, the level's
+/// own in `one_d` or [`three_d`].
 pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     let file = path.display().to_string();
     let at = Locator { file: &file, text };
+    let three_d = is_three_d(&at, text)?;
     let stem = file_stem(path)?;
     let table: toml::Table = toml::from_str(text).map_err(|e| at.toml_error(&e))?;
-    if table.contains_key("row") {
-        return table2_experiment(path, text, stem, &at);
+    if !three_d && table.contains_key("row") {
+        return one_d::table2_experiment(path, text, stem, &at);
     }
+    // The level's keys, then their values.
+    let keys = if three_d { toml::from_str::<Keys3d>(text).map(drop) } else { toml::from_str::<Keys1d>(text).map(drop) };
+    keys.map_err(|e| at.toml_error(&e))?;
     let raw: RawExperiment = toml::from_str(text).map_err(|e| at.toml_error(&e))?;
-    if let Some(level) = &raw.level {
-        if level.get_ref() != "1d" {
-            return Err(at.error(level.span(), "level", format!("`{}`: this reader takes 1D experiments (`kick run` reads both)", level.get_ref())));
-        }
-    }
+    let swept_1d = if three_d { Vec::new() } else { one_d::axes(&at, &raw)? };
     let name = experiment_name(&at, raw.name.as_ref(), stem)?;
-
-    let dt = match &raw.dt {
-        Some(dt) => {
-            let v = *dt.get_ref();
-            if !(v.is_finite() && v > 0.0) {
-                return Err(at.error(dt.span(), "dt", format!("{} must be finite and > 0 (s)", short(v))));
-            }
-            v
-        }
-        None => kick_compliant::SeedRk4::default().step,
-    };
-    let solver_names: Vec<Spanned<String>> = match (&raw.solver, &raw.solvers) {
-        (Some(s), None) => vec![s.clone()],
-        (None, Some(list)) => {
-            if list.get_ref().is_empty() {
-                return Err(at.error(list.span(), "solvers", "list at least one solver"));
-            }
-            list.get_ref().clone()
-        }
-        (None, None) => vec![Spanned::new(0..0, "accurate".to_string())],
-        (Some(s), Some(_)) => return Err(at.error(s.span(), "solver", "give `solver` or `solvers`, not both")),
-    };
-    if let Some(given) = &raw.dt {
-        let names: Vec<&str> = solver_names.iter().map(|n| n.get_ref().as_str()).collect();
-        SolverChoice::check_step_given(&names).map_err(|e| at.error(given.span(), "dt", e.to_string()))?;
-    }
-    let mut solvers = Vec::new();
-    for (i, name) in solver_names.iter().enumerate() {
-        if solver_names[..i].iter().any(|n| n.get_ref() == name.get_ref()) {
-            return Err(at.error(name.span(), "solvers", format!("`{}` listed twice", name.get_ref())));
-        }
-        solvers.push(
-            SolverChoice::from_name(name.get_ref(), dt)
-                .map_err(|e| at.error(name.span(), "solver", e.to_string()))?,
-        );
-    }
-
-    let base_raw = raw.base.unwrap_or_default();
-    let law = match &raw.law {
-        Some(name) => kick_core::LawKind::from_name(name.get_ref()).map_err(|e| at.error(name.span(), "law", e.to_string()))?,
-        None => kick_core::LawKind::PowerLaw,
-    };
-    // The target restitution is a declared parameter: at the top level beside
-    // `law`, or in a table ([[scenario]] over [base]), but not both.
-    let top_restitution = raw.restitution.as_ref();
-    let law_span = top_restitution.map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
-    let check_law = |damping, restitution| law_settings_apply(&at, law, damping, restitution);
-    let with_law = |s: Scenario, table: &str, given: Option<&Spanned<f64>>, damping: Located| -> Result<Scenario, ExperimentError> {
-        let key = format!("{table}.restitution");
-        if let (Some(_), Some(r)) = (top_restitution, given) {
-            return Err(at.error(r.span(), &key, "`restitution` is also set at the top level; set it in one place"));
-        }
-        let restitution_key = if given.is_some() { key.clone() } else { "restitution".to_string() };
-        check_law(damping, given.or(top_restitution).map(|r| (r.span(), restitution_key)))?;
-        let (restitution, span, key) = match given.or(top_restitution) {
-            Some(r) if given.is_some() => (Some(*r.get_ref()), r.span(), key),
-            other => (other.map(|r| *r.get_ref()), law_span.clone(), "law".to_string()),
-        };
-        s.with_law(law, restitution).map_err(|e| at.error(span, &key, e.to_string()))
-    };
-    // The base scenario of a grid; named scenarios build their own over [base].
-    let base_damping = || base_raw.get(Parameter::Damping).map(|d| (d.span(), "base.damping".to_string()));
-    let base = || with_law(build(&at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution(), base_damping());
-
-    let sources = [raw.sweep.is_some(), raw.scenario.is_some(), raw.table2.is_some()];
-    if sources.iter().filter(|&&s| s).count() > 1 {
-        let span = raw.table2.as_ref().map(|t| t.span()).unwrap_or(0..0);
-        return Err(at.error(span, "sweep", "give one of [[sweep]], [[scenario]] or table2"));
-    }
-
-    let scenarios = if let Some(axes_raw) = &raw.sweep {
-        let base = base()?;
-        let mut axes: Vec<Axis> = Vec::new();
-        let mut spans = Vec::new();
-        let mut total: u64 = 1;
-        for axis in axes_raw {
-            let parameter = *axis.parameter.get_ref();
-            let key = format!("sweep.{}", parameter.name());
-            if axes.iter().any(|a| a.parameter == parameter) {
-                return Err(at.error(axis.parameter.span(), &key, "parameter swept twice"));
-            }
-            if let Some(v) = base_raw.get(parameter) {
-                return Err(at.error(v.span(), &format!("base.{}", parameter.name()), "this parameter is also swept; set it in one place"));
-            }
-            if parameter == Parameter::Damping {
-                check_law(Some((axis.parameter.span(), key.clone())), None)?;
-            }
-            let (values, span, value_spans) = axis_values(&at, axis, &key)?;
-            total = total.saturating_mul(values.len() as u64);
-            if total > MAX_SCENARIOS {
-                return Err(at.error(span, &key, format!("the grid exceeds {MAX_SCENARIOS} scenarios")));
-            }
-            // Each value alone against the base, so the error names its line.
-            for (&v, value_span) in values.iter().zip(&value_spans) {
-                base.with(parameter, v).map_err(|e| at.error(value_span.clone(), &key, format!("value {}: {e}", short(v))))?;
-            }
-            axes.push(Axis { parameter, values });
-            spans.push(span);
-        }
-        let grid = Scenarios::Grid { base, axes };
-        // Combinations (e.g. foot_speed with ball_speed) can still fail.
-        for i in 0..grid.len() {
-            if let Err(e) = grid.scenario(i) {
-                return Err(at.error(spans.last().cloned().unwrap_or(0..0), "sweep", format!("grid point {i}: {e}")));
-            }
-        }
-        grid
-    } else if let Some(list) = &raw.scenario {
-        let mut names = Vec::new();
-        let mut scenarios = Vec::new();
-        for entry in list {
-            let key = format!("scenario.{}", entry.name().get_ref());
-            if names.contains(entry.name().get_ref()) {
-                return Err(at.error(entry.name().span(), &key, "scenario name used twice"));
-            }
-            let restitution = entry.restitution().or(base_raw.restitution());
-            let damping = entry.get(Parameter::Damping).map(|d| (d.span(), format!("{key}.damping"))).or_else(base_damping);
-            let scenario = with_law(build(&at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution, damping)?;
-            names.push(entry.name().get_ref().clone());
-            scenarios.push(scenario);
-        }
-        if scenarios.is_empty() {
-            return Err(at.error(0..0, "scenario", "list at least one scenario"));
-        }
-        Scenarios::Named { names, scenarios }
-    } else if let Some(t2) = &raw.table2 {
-        let t2_path = path.parent().unwrap_or(Path::new(".")).join(t2.get_ref());
-        let t2_text = kick_core::input::read_text(&t2_path, kick_core::input::MAX_TEXT_BYTES)
-            .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
-        let file = Table2File::parse(&t2_text)
-            .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
-        let rows = file
-            .scenarios()
-            .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
-        let (names, scenarios) = rows.into_iter().unzip();
-        Scenarios::Named { names, scenarios }
+    let (kicks, output, after) = if three_d {
+        (Kicks::ThreeD(three_d::kicks(&at, text, &raw)?), Output::Summary, flight::After::ThreeD)
     } else {
-        Scenarios::Grid { base: base()?, axes: Vec::new() }
+        let (kicks, output) = one_d::kicks(&at, path, &raw, &swept_1d)?;
+        (Kicks::OneD(kicks), output, flight::After::OneD)
     };
-
-    let output = match &raw.output {
-        None => Output::Summary,
-        Some(out) => {
-            let mode = out.mode.as_ref().map(|m| m.get_ref().as_str()).unwrap_or("summary");
-            let mode_span = out.mode.as_ref().map(|m| m.span()).unwrap_or(0..0);
-            match (mode, &out.interval) {
-                ("summary", None) => Output::Summary,
-                ("summary", Some(i)) => {
-                    return Err(at.error(i.span(), "output.interval", "only with mode = \"history\""))
-                }
-                ("history", None) => {
-                    return Err(at.error(mode_span, "output.interval", "mode = \"history\" needs a sampling interval (s)"))
-                }
-                ("history", Some(i)) => {
-                    let v = *i.get_ref();
-                    if !(v.is_finite() && v > 0.0) {
-                        return Err(at.error(i.span(), "output.interval", format!("{} must be finite and > 0 (s)", short(v))));
-                    }
-                    if scenarios.len() > MAX_HISTORY_SCENARIOS {
-                        return Err(at.error(mode_span, "output.mode", format!(
-                            "histories of {} scenarios; at most {MAX_HISTORY_SCENARIOS} (use mode = \"summary\" for large sweeps)",
-                            scenarios.len()
-                        )));
-                    }
-                    for k in 0..scenarios.len() {
-                        let horizon = scenarios.scenario(k).map(|s| s.contact_horizon()).unwrap_or(0.0);
-                        // The horizon is 1000 elastic contact times; a history
-                        // of a normal contact is ~1/1000 of this bound.
-                        if horizon / v > MAX_HISTORY_SAMPLES * kick_core::scenario::CONTACT_HORIZON_FACTOR {
-                            return Err(at.error(i.span(), "output.interval", format!(
-                                "{v} s is too fine: more than {MAX_HISTORY_SAMPLES:e} samples per contact"
-                            )));
-                        }
-                    }
-                    Output::History { interval: v }
-                }
-                (other, _) => {
-                    return Err(at.error(mode_span, "output.mode", format!("`{other}`: expected \"summary\" or \"history\"")))
-                }
-            }
-        }
-    };
-
-    let flight = flight::parse(&at, text, raw.flight.as_ref(), flight::After::OneD)?;
+    let flight = flight::parse(&at, text, raw.flight.as_ref(), after)?;
     let compress = compression(&at, raw.compress.as_ref())?;
     Ok(Experiment {
         name,
         description: raw.description.unwrap_or_default(),
         path: path.to_path_buf(),
         text: text.to_string(),
-        solvers,
-        scenarios,
         output,
         flight,
         compress,
+        kicks,
     })
 }
 
@@ -638,6 +573,14 @@ fn compression(at: &Locator, given: Option<&Spanned<toml::Value>>) -> Result<cra
     .map_err(|message| at.error(given.span(), "compress", message))
 }
 
+/// The `law` key (default: the paper's power law).
+fn contact_law(at: &Locator, raw: &RawExperiment) -> Result<kick_core::LawKind, ExperimentError> {
+    match &raw.law {
+        Some(name) => kick_core::LawKind::from_name(name.get_ref()).map_err(|e| at.error(name.span(), "law", e.to_string())),
+        None => Ok(kick_core::LawKind::PowerLaw),
+    }
+}
+
 /// The `name` key checked, or the file's stem.
 fn experiment_name(at: &Locator, name: Option<&Spanned<String>>, stem: String) -> Result<String, ExperimentError> {
     match name {
@@ -652,70 +595,8 @@ fn experiment_name(at: &Locator, name: Option<&Spanned<String>>, stem: String) -
     }
 }
 
-/// An experiment of either level.
-#[derive(Debug, Clone, PartialEq)]
-pub enum AnyExperiment {
-    OneD(Experiment),
-    ThreeD(Experiment3d),
-}
-
-/// Read and validate an experiment file of either level (see [`parse_any`]).
-pub fn load_any(path: &Path) -> Result<AnyExperiment, ExperimentError> {
-    let text = kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|message| ExperimentError {
-        file: path.display().to_string(),
-        line: 0,
-        column: 0,
-        key: String::new(),
-        message,
-    })?;
-    parse_any(path, &text)
-}
-
-/// The keys that decide an experiment's level.
-#[derive(Deserialize)]
-struct LevelProbe {
-    level: Option<Spanned<String>>,
-    kick3d: Option<toml::Value>,
-    sweep: Option<Vec<AxisProbe>>,
-}
-
-#[derive(Deserialize)]
-struct AxisProbe {
-    parameter: Option<toml::Value>,
-}
-
-/// Validate an experiment of either level. It is 3D ([`three_d`]) when it
-/// says `level = "3d"`, or without a `level` key when it has a `[kick3d]`
-/// table or sweeps a parameter of the 3D level; 1D ([`parse`]) otherwise.
-pub fn parse_any(path: &Path, text: &str) -> Result<AnyExperiment, ExperimentError> {
-    let file = path.display().to_string();
-    let at = Locator { file: &file, text };
-    let probe: Result<LevelProbe, _> = toml::from_str(text);
-    let three_d = match probe {
-        Ok(LevelProbe { level: Some(level), .. }) => match level.get_ref().as_str() {
-            "1d" => false,
-            "3d" => true,
-            other => return Err(at.error(level.span(), "level", format!("`{other}`: expected \"1d\" or \"3d\""))),
-        },
-        Ok(probe) => {
-            probe.kick3d.is_some()
-                || probe.sweep.iter().flatten().any(|a| {
-                    a.parameter.as_ref().and_then(|p| p.as_str()).and_then(parameters::find).is_some_and(|p| p.level == Level::Kick3d)
-                })
-        }
-        // The 1D reader names the problem.
-        Err(_) => false,
-    };
-    if three_d {
-        let stem = file_stem(path)?;
-        three_d::parse(path, text, &at, stem).map(AnyExperiment::ThreeD)
-    } else {
-        parse(path, text).map(AnyExperiment::OneD)
-    }
-}
-
 /// The axis values, the span of the whole axis and the span of each value.
-fn axis_values<P>(at: &Locator, axis: &RawAxis<P>, key: &str) -> Result<(Vec<f64>, Span, Vec<Span>), ExperimentError> {
+fn axis_values(at: &Locator, axis: &RawAxis, key: &str) -> Result<(Vec<f64>, Span, Vec<Span>), ExperimentError> {
     let given = [axis.values.is_some(), axis.linear.is_some(), axis.log.is_some()];
     if given.iter().filter(|&&g| g).count() != 1 {
         return Err(at.error(axis.parameter.span(), key, "give exactly one of `values`, `linear` or `log`"));
@@ -807,29 +688,6 @@ fn build<'a>(
     })
 }
 
-fn table2_experiment(path: &Path, text: &str, name: String, at: &Locator) -> Result<Experiment, ExperimentError> {
-    let file = Table2File::parse(text).map_err(|e| at.error(0..0, "row", e))?;
-    let rows = file.scenarios().map_err(|e| at.error(0..0, "row", e.to_string()))?;
-    // The file's own solver (the paper's method) first, then the accurate reference.
-    let mut solvers = vec![SolverChoice::from_name(&file.solver, file.dt)
-        .map_err(|e| at.error(0..0, "solver", e.to_string()))?];
-    if file.solver != "accurate" {
-        solvers.push(SolverChoice::from_name("accurate", file.dt).map_err(|e| at.error(0..0, "solver", e.to_string()))?);
-    }
-    let (names, scenarios) = rows.into_iter().unzip();
-    Ok(Experiment {
-        name: if file.name.is_empty() { name } else { file.name.clone() },
-        description: file.description.clone(),
-        path: path.to_path_buf(),
-        text: text.to_string(),
-        solvers,
-        scenarios: Scenarios::Named { names, scenarios },
-        output: Output::Summary,
-        flight: None,
-        compress: crate::columns::Compression::None,
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -846,9 +704,57 @@ mod tests {
         use std::os::unix::ffi::OsStrExt;
         let path = Path::new(std::ffi::OsStr::from_bytes(b"dir/bad\xff.toml"));
         for text in ["[base]\nfoot_speed = 20.0\n", "[kick3d]\noffset = 0.01\n"] {
-            let error = parse_any(path, text).err().expect("refused");
+            let error = parse(path, text).expect_err("refused");
             assert!(error.to_string().contains("bad\u{FFFD}.toml") && error.to_string().contains("UTF-8"), "{error}");
         }
+    }
+
+    /// One `parse` for both levels: the keys every level shares land in the
+    /// same fields, the level's own in its `kicks`, and a sweep of the same
+    /// 1D axes is the same `Grid` in a 1D and a 3D experiment.
+    #[test]
+    fn both_levels_share_one_schema_and_one_grid() {
+        let shared = "name = \"both\"\ndescription = \"one schema\"\ncompress = 6\nlaw = \"flores\"\nrestitution = 0.5\n\
+                      [base]\nfoot_mass = 1.5\n\
+                      [[sweep]]\nparameter = \"stiffness\"\nvalues = [1e5, 1e6]\n\
+                      [[sweep]]\nparameter = \"foot_speed\"\nlinear = { from = 10.0, to = 20.0, count = 3 }\n";
+        let one = parse(Path::new("a.toml"), &format!("{shared}[flight]\nlaunch_angle = 20.0\ndistance = 11.0\n")).unwrap();
+        let three = parse(Path::new("b.toml"), &format!("level = \"3d\"\n{shared}[flight]\ndistance = 11.0\n")).unwrap();
+        for e in [&one, &three] {
+            assert_eq!((e.name.as_str(), e.description.as_str()), ("both", "one schema"));
+            assert_eq!(e.compress, crate::columns::Compression::Deflate(6));
+            assert_eq!(e.output, Output::Summary);
+            assert_eq!(e.flight.and_then(|f| f.distance), Some(11.0));
+        }
+        let Kicks::OneD(Kicks1d { scenarios: Scenarios::Grid { base, grid }, .. }) = &one.kicks else { panic!("{:?}", one.kicks) };
+        let Kicks::ThreeD(kicks) = &three.kicks else { panic!("{:?}", three.kicks) };
+        assert_eq!(grid, &kicks.grid);
+        assert_eq!((grid.len(), grid.shape()), (6, vec![2, 3]));
+        assert_eq!(grid.coordinates(5), vec![1e6, 20.0]);
+        // The base kick and its law, read once for both.
+        assert_eq!(base, &kicks.scenario);
+        assert_eq!((base.get(Parameter::FootMass), base.restitution_target()), (1.5, Some(0.5)));
+        // Cell 4 of each level is the same scenario: (1e6, 15).
+        let four = one.one_d().unwrap().scenarios.scenario(4).unwrap();
+        assert_eq!((four.get(Parameter::Stiffness), four.get(Parameter::FootSpeed)), (1e6, 15.0));
+        assert_eq!(kicks.kick(4).unwrap().base, four);
+    }
+
+    /// A key of the other level is refused at its line with the keys this
+    /// level takes (1D histories, 3D `[kick3d]`).
+    #[test]
+    fn a_key_of_the_other_level_is_refused_with_this_levels_keys() {
+        let e = parse_text("level = \"3d\"\n[output]\nmode = \"summary\"\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (2, "output"), "{e}");
+        assert_eq!(e.message, "unknown field `output`, expected one of `level`, `name`, `description`, `solver`, `law`, \
+                               `restitution`, `base`, `kick3d`, `sweep`, `flight`, `compress`");
+        let e = parse_text("level = \"1d\"\n[kick3d]\noffset = 0.01\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (2, "kick3d"), "{e}");
+        assert!(e.message.starts_with("unknown field `kick3d`, expected one of `level`, `name`, `description`, `solver`, `solvers`, `dt`"), "{e}");
+        // A 1D axis is one of the eight 1D parameters.
+        let e = parse_text("[[sweep]]\nparameter = \"restitution\"\nvalues = [0.5]\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (2, "parameter"), "{e}");
+        assert!(e.message.starts_with("unknown variant `restitution`, expected one of `foot_mass`, `ball_mass`"), "{e}");
     }
 
     /// A linear range spanning more than f64 holds (-1e308 .. 1e308) gives
@@ -874,7 +780,7 @@ mod tests {
             for table in ["[base]", "[[scenario]]\nname = \"a\""] {
                 let text = format!("{law}{table}\n{} = {value:?}\n", p.name);
                 let experiment = parse_text(&text).unwrap_or_else(|e| panic!("{}: {e}", p.name));
-                let scenario = experiment.scenarios.scenario(0).unwrap();
+                let scenario = experiment.one_d().unwrap().scenarios.scenario(0).unwrap();
                 let got = match Parameter::from_name(p.name) {
                     Some(q) => scenario.get(q),
                     None => scenario.restitution_target().unwrap(),
@@ -905,7 +811,7 @@ mod tests {
     fn inputs_are_bounded_and_their_contents_not_quoted() {
         let e = parse_text("table2 = \"/dev/zero\"\n").unwrap_err();
         assert!(e.key == "table2" && e.message.contains("not a regular file"), "{e}");
-        let e = load_any(Path::new("/dev/zero")).unwrap_err();
+        let e = load(Path::new("/dev/zero")).unwrap_err();
         assert!(e.message.contains("not a regular file"), "{e}");
         let secret = std::env::temp_dir().join(format!("kick-secret-{}.txt", std::process::id()));
         std::fs::write(&secret, "root:x:0:0:root:/root:/bin/bash\n").unwrap();

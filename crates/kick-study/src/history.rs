@@ -8,6 +8,7 @@ use kick_core::parameters::Value;
 use kick_core::Spacing;
 use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// `--samples`' default: 201 rows (200 intervals over the contact or flight).
 pub const DEFAULT_SAMPLES: usize = 201;
@@ -16,17 +17,61 @@ pub const MAX_FILE_SAMPLES: u64 = 10_000_000;
 
 /// Where a history's rows go: begins the sink for a request, its columns
 /// (name, unit) and its description.
-pub type OpenSink = fn(&HistoryRequest, &[(&str, &str)], &HistoryMeta) -> Result<Box<dyn HistorySink>, String>;
+pub type OpenSink = fn(&HistoryRequest, &[(&str, &str)], &HistoryMeta) -> Result<Box<dyn HistorySink>, SinkError>;
 
 /// Rows of one history streamed somewhere (a file, kick-store's
 /// `HistoryWriter`): written whole by [`HistorySink::finish`] or not at all.
 pub trait HistorySink {
     /// Append one row (one value per column).
-    fn push(&mut self, values: &[f64]) -> Result<(), String>;
+    fn push(&mut self, values: &[f64]) -> Result<(), SinkError>;
     /// Rows pushed so far.
     fn rows(&self) -> u64;
     /// The last rows written; the sink's name (a file's path).
-    fn finish(self: Box<Self>) -> Result<PathBuf, String>;
+    fn finish(self: Box<Self>) -> Result<PathBuf, SinkError>;
+}
+
+/// Why a [`HistorySink`] failed: the sink's own error (kick-store's
+/// `StoreError` for a file), kept typed behind the trait, which knows no
+/// file format: [`SinkError::downcast_ref`] gives it back. Its message is
+/// the sink's.
+#[derive(Debug, Clone, thiserror::Error)]
+#[error(transparent)]
+pub struct SinkError(Arc<dyn std::error::Error + Send + Sync>);
+
+impl SinkError {
+    pub fn new(source: impl std::error::Error + Send + Sync + 'static) -> SinkError {
+        SinkError(Arc::new(source))
+    }
+
+    /// The sink's error, when it is an `E`.
+    pub fn downcast_ref<E: std::error::Error + 'static>(&self) -> Option<&E> {
+        self.0.downcast_ref()
+    }
+}
+
+/// Equal when the same error or the same message (errors of a sink need not
+/// compare).
+impl PartialEq for SinkError {
+    fn eq(&self, other: &SinkError) -> bool {
+        Arc::ptr_eq(&self.0, &other.0) || self.0.to_string() == other.0.to_string()
+    }
+}
+
+/// The failure of a sink that has only a message (an in-memory sink, a test's).
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+struct Message(String);
+
+impl From<String> for SinkError {
+    fn from(message: String) -> SinkError {
+        SinkError::new(Message(message))
+    }
+}
+
+impl From<&str> for SinkError {
+    fn from(message: &str) -> SinkError {
+        SinkError::new(Message(message.to_string()))
+    }
 }
 
 /// A history to write: where, on which grid, and through which sink.

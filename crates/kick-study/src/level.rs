@@ -144,6 +144,35 @@ pub trait Level: Sync {
     }
 }
 
+/// An experiment file of either level is the level of its kicks.
+impl crate::experiment::Experiment {
+    /// `f` of this experiment's level: [`one_d::OneD`] or [`three_d::ThreeD`]
+    /// with the experiment's `[flight]`.
+    pub fn with_level<R>(&self, f: impl FnOnce(&dyn Level) -> R) -> R {
+        use crate::experiment::Kicks;
+        let flight = self.flight.as_ref();
+        match &self.kicks {
+            Kicks::OneD(kicks) => f(&one_d::OneD { kicks, flight }),
+            Kicks::ThreeD(kicks) => f(&three_d::ThreeD { kicks, flight }),
+        }
+    }
+}
+
+impl Level for crate::experiment::Experiment {
+    fn rows(&self) -> u64 {
+        self.with_level(|l| l.rows())
+    }
+    fn parameter_columns(&self) -> Vec<Column> {
+        self.with_level(|l| l.parameter_columns())
+    }
+    fn outcome_sets(&self) -> Vec<OutcomeSet> {
+        self.with_level(|l| l.outcome_sets())
+    }
+    fn solve_row(&self, index: u64, row: &mut Row) {
+        self.with_level(|l| l.solve_row(index, row))
+    }
+}
+
 /// Where the run loop's rows go, in row order.
 pub trait RowSink {
     type Error;

@@ -36,6 +36,7 @@ pub mod simulate;
 pub mod table2;
 
 pub use error::StudyError;
-pub use experiment::{Experiment, ExperimentError, Output, Scenarios};
+pub use experiment::{Experiment, ExperimentError, Kicks, Kicks1d, Kicks3d, Output, Scenarios};
+pub use grid::{Axis, Grid};
 pub use limits::set_threads;
 pub use printable::{json, Printable};

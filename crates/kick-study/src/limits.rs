@@ -4,7 +4,8 @@
 //! machine can use, more rows than [`MAX_SCENARIOS`], or a file larger than
 //! the free space where it goes; a large run states its size first.
 
-use crate::experiment::{Experiment, Output, Scenarios, MAX_SCENARIOS};
+use crate::experiment::{Experiment, Kicks, Kicks1d, Output, Scenarios, MAX_SCENARIOS};
+use crate::level::Level;
 use kick_core::{short, Spacing, HISTORY_COLUMNS, OBSERVABLES};
 use std::ops::Range;
 use std::path::Path;
@@ -85,7 +86,11 @@ impl OutputSize {
     /// a shard is sized by its own rows and histories.
     pub fn of(experiment: &Experiment, part: &Range<u64>) -> OutputSize {
         let rows = part.end.saturating_sub(part.start);
-        let solvers = experiment.solvers.len() as u64;
+        let Some(kicks) = experiment.one_d() else {
+            // A 3D row: its values and status bytes.
+            return OutputSize { rows, bytes: rows.saturating_mul(experiment.bytes_per_row()) };
+        };
+        let solvers = kicks.solvers.len() as u64;
         let mut per_row = 8 * kick_core::Parameter::ALL.len() as u64 + solvers * (8 * OBSERVABLES.len() as u64 + 1);
         if let Some(flight) = &experiment.flight {
             // A flight set per solver (`[flight]`).
@@ -95,7 +100,7 @@ impl OutputSize {
         if let Output::History { interval } = experiment.output {
             let per_sample = 8 * HISTORY_COLUMNS.len() as u64;
             for row in part.clone() {
-                if let Ok(s) = experiment.scenarios.scenario(row) {
+                if let Ok(s) = kicks.scenarios.scenario(row) {
                     let end = s.elastic_contact_time();
                     let samples = Spacing::Interval(interval).grid(end).samples_until(end);
                     bytes = bytes.saturating_add(solvers.saturating_mul(samples).saturating_mul(per_sample));
@@ -119,11 +124,12 @@ impl OutputSize {
 /// whole experiment's, or a shard's) would not fit the free space of
 /// `directory`; otherwise that file's estimated size.
 pub fn check(experiment: &Experiment, part: &Range<u64>, directory: &Path) -> Result<OutputSize, LimitError> {
-    let rows = experiment.scenarios.len();
+    let rows = experiment.rows();
     if rows > MAX_SCENARIOS {
-        let what = match experiment.scenarios {
-            Scenarios::Sampled(_) => "samples",
-            _ => "scenarios",
+        let what = match &experiment.kicks {
+            Kicks::OneD(Kicks1d { scenarios: Scenarios::Sampled(_), .. }) => "samples",
+            Kicks::OneD(_) => "scenarios",
+            Kicks::ThreeD(_) => "cells",
         };
         return Err(LimitError::TooManyRows { what, rows });
     }
@@ -196,7 +202,9 @@ mod tests {
 
     fn sweep(samples: u64) -> Experiment {
         let mut e = crate::experiment::parse(Path::new("e.toml"), "").unwrap();
-        e.scenarios = Scenarios::Sampled(crate::sample::SampledSweep::new(samples, 1));
+        if let Kicks::OneD(kicks) = &mut e.kicks {
+            kicks.scenarios = Scenarios::Sampled(crate::sample::SampledSweep::new(samples, 1));
+        }
         e
     }
 

@@ -178,7 +178,7 @@ fn a_bad_compression_level_is_refused_by_name() {
     ] {
         let file = dir.join("bad.toml");
         std::fs::write(&file, &text).unwrap();
-        let e = kick_study::experiment::load_any(&file).unwrap_err();
+        let e = kick_study::experiment::load(&file).unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (2, "compress"), "{text}: {e}");
         assert!(e.message.contains(says), "{text}: {e}");
     }

@@ -5,7 +5,7 @@ use kick_3d::{Accurate3d, KickSpec};
 use kick_core::parameters::{SetParameter, Value};
 use kick_core::{Parameter, Scenario, Solver};
 use kick_flight::FlightSpec;
-use kick_study::experiment::{parse_any, AnyExperiment};
+use kick_study::experiment::parse;
 use kick_study::flight::{after_1d, after_3d, flight_set_name};
 use kick_flight::OUTCOME_COLUMNS;
 use kick_store::h5::SweepData;
@@ -27,9 +27,10 @@ fn a_3d_grid_with_flight_stores_each_cells_chained_flight() {
                 [[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.04, 0.08]\n\
                 [[sweep]]\nparameter = \"friction\"\nvalues = [0.3, inf]\n\
                 [flight]\ndistance = 6.0\nair_density = 1.2\n";
-    let AnyExperiment::ThreeD(e) = parse_any(Path::new("f3.toml"), text).unwrap() else { panic!("read as 1D") };
+    let e = parse(Path::new("f3.toml"), text).unwrap();
+    assert!(e.three_d().is_some(), "read as 1D");
     let dir = scratch("3d");
-    let summary = kick_store::three_d::run(&e, &dir).unwrap();
+    let summary = kick_store::run(&e, &dir, false).unwrap();
     let data = SweepData::read(&summary.path).unwrap();
     let set = data.set(&flight_set_name("accurate-3d")).unwrap();
     let rest = FlightSpec { distance: Some(6.0), air_density: Some(1.2), ..FlightSpec::default() };
@@ -65,7 +66,8 @@ fn a_1d_grid_with_flight_stores_each_rows_chained_flight_per_solver() {
     let text = "solvers = [\"accurate\", \"seed-rk4\"]\n\
                 [[sweep]]\nparameter = \"foot_mass\"\nvalues = [1.0, 3.0, 8.0]\n\
                 [flight]\nlaunch_angle = 18.0\nazimuth = 5.0\ndistance = 20.0\n";
-    let AnyExperiment::OneD(e) = parse_any(Path::new("f1.toml"), text).unwrap() else { panic!("read as 3D") };
+    let e = parse(Path::new("f1.toml"), text).unwrap();
+    let Some(kicks) = e.one_d() else { panic!("read as 3D") };
     // The size estimate counts a flight set per solver: 18 columns and a status byte per row.
     let without = kick_study::limits::OutputSize::of(&kick_study::Experiment { flight: None, ..e.clone() }, &(0..3));
     assert_eq!(kick_study::limits::OutputSize::of(&e, &(0..3)).bytes - without.bytes, 3 * 2 * (18 * 8 + 1));
@@ -73,7 +75,7 @@ fn a_1d_grid_with_flight_stores_each_rows_chained_flight_per_solver() {
     let summary = kick_store::run::run(&e, &dir, false).unwrap();
     let data = SweepData::read(&summary.path).unwrap();
     let rest = FlightSpec { launch_angle: Some(18.0), azimuth: Some(5.0), distance: Some(20.0), ..FlightSpec::default() };
-    for (k, solver) in e.solvers.iter().enumerate() {
+    for (k, solver) in kicks.solvers.iter().enumerate() {
         let set = data.set(&flight_set_name(solver.name())).unwrap();
         for (row, mass) in [1.0, 3.0, 8.0].into_iter().enumerate() {
             let scenario = Scenario::baseline().with(Parameter::FootMass, mass).unwrap();
@@ -94,7 +96,7 @@ fn a_1d_grid_with_flight_stores_each_rows_chained_flight_per_solver() {
 
 #[test]
 fn bad_flight_keys_name_file_line_and_key() {
-    let at = |text: &str| parse_any(Path::new("x.toml"), text).unwrap_err();
+    let at = |text: &str| parse(Path::new("x.toml"), text).unwrap_err();
     let e = at("[base]\nfoot_mass = 2.0\n[flight]\nlaunch_angle = 15.0\ndistanse = 20.0\n");
     assert_eq!((e.file.as_str(), e.line, e.key.as_str()), ("x.toml", 5, "distanse"), "{e}");
     let e = at("[flight]\ndistance = 20.0\n");

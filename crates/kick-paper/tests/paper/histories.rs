@@ -63,7 +63,7 @@ fn fine_histories_are_streamed_with_bounded_memory_and_unchanged_outcomes() {
     assert!(set.status.iter().all(|&s| s == 0), "every row solved: {:?}", set.status);
     let mut samples = 0;
     for row in 0..data.rows() {
-        let scenario: Scenario = experiment.scenarios.scenario(row as u64).unwrap();
+        let scenario: Scenario = experiment.one_d().unwrap().scenarios.scenario(row as u64).unwrap();
         // The outcome is the one without a history, bit for bit.
         let outcome = Accurate::default().solve(&scenario).unwrap();
         for ((name, _), value) in OBSERVABLES.iter().zip(outcome.observable_values()) {

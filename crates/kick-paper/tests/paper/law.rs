@@ -7,8 +7,8 @@ use std::path::Path;
 fn an_experiment_file_sets_the_law_of_every_scenario() {
     let text = "name = \"hc\"\nsolver = \"auto\"\nlaw = \"hunt-crossley\"\nrestitution = 0.7\n\n[[sweep]]\nparameter = \"foot_mass\"\nvalues = [1.0, 3.0, 8.0]\n";
     let experiment = kick_study::experiment::parse(Path::new("hc.toml"), text).unwrap();
-    for i in 0..experiment.scenarios.len() {
-        let scenario = experiment.scenarios.scenario(i).unwrap();
+    for i in 0..experiment.one_d().unwrap().scenarios.len() {
+        let scenario = experiment.one_d().unwrap().scenarios.scenario(i).unwrap();
         assert_eq!(scenario.law_kind(), LawKind::HuntCrossley);
         assert_eq!(scenario.restitution_target(), Some(0.7));
     }

@@ -103,7 +103,7 @@ fn experiment_3d_keys_that_do_not_apply_name_their_line() {
         ),
     ];
     for (text, line, key) in cases {
-        let e = kick_study::experiment::parse_any(Path::new("e.toml"), text).unwrap_err();
+        let e = kick_study::experiment::parse(Path::new("e.toml"), text).unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (line, key), "{text}: {e}");
         assert!(e.message.contains("does not apply"), "{text}: {e}");
     }

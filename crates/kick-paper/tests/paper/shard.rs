@@ -120,7 +120,7 @@ fn three_shards_merged_equal_the_unsharded_run() {
     // drive) that a direct solve does not separate, less 6.
     let experiment = experiment::load(&dir.join("grid.toml")).unwrap();
     let failing: Vec<u64> = (6..12)
-        .filter(|&row| experiment.scenarios.scenario(row).and_then(|s| Accurate::default().solve(&s)).is_err())
+        .filter(|&row| experiment.one_d().unwrap().scenarios.scenario(row).and_then(|s| Accurate::default().solve(&s)).is_err())
         .collect();
     assert!(!failing.is_empty());
     let failed: Vec<u64> = middle.dataset("failures/index").unwrap().read_raw().unwrap();

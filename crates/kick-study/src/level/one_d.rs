@@ -4,8 +4,9 @@
 
 use super::{Failure, Level, Row};
 use crate::columns::{Column, OutcomeSet, Setting};
-use crate::experiment::Experiment;
+use crate::experiment::Kicks1d;
 use kick_compliant::SolverChoice;
+use kick_flight::FlightSpec;
 use kick_core::{AnyLaw, KickError, Outcome, Parameter, Scenario, Solver, OBSERVABLES};
 
 /// Parameter columns of the 1D model: the eight [`Parameter`]s, and the
@@ -33,7 +34,14 @@ pub fn outcome_set(solver: &SolverChoice, law: AnyLaw) -> OutcomeSet {
     OutcomeSet { solver: solver.name().to_string(), settings, columns: outcome_columns() }
 }
 
-impl Experiment {
+/// The 1D part of an experiment with its `[flight]`, as a [`Level`].
+#[derive(Debug, Clone, Copy)]
+pub struct OneD<'a> {
+    pub kicks: &'a Kicks1d,
+    pub flight: Option<&'a FlightSpec>,
+}
+
+impl OneD<'_> {
     /// Fill `row` from scenario `scenario` and each solver's outcome (in the
     /// experiment's solver order), flying each kick with `[flight]`: the one
     /// place a 1D row is made, whether its kicks were solved here
@@ -61,40 +69,40 @@ impl Experiment {
             Ok(o) => row.set(k, &o.observable_values()),
             Err(e) => row.fail(k, e.clone().into()),
         }
-        if let Some(rest) = &self.flight {
+        if let Some(rest) = self.flight {
             let flown = match (scenario, outcome) {
                 (Ok(s), Ok(o)) => crate::flight::after_1d(s, o, rest).map(|run| run.outcome.values()),
                 (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
             };
-            row.put(self.solvers.len() + k, flown);
+            row.put(self.kicks.solvers.len() + k, flown);
         }
     }
 }
 
-impl Level for Experiment {
+impl Level for OneD<'_> {
     fn rows(&self) -> u64 {
-        self.scenarios.len()
+        self.kicks.scenarios.len()
     }
 
     fn parameter_columns(&self) -> Vec<Column> {
-        parameter_columns(self.scenarios.has_restitution())
+        parameter_columns(self.kicks.scenarios.has_restitution())
     }
 
     fn outcome_sets(&self) -> Vec<OutcomeSet> {
         // One law for every scenario of an experiment (the file's `law`).
-        let law = self.scenarios.scenario(0).map_or(AnyLaw::PowerLaw(Scenario::BASELINE.paper_law()), |s| s.contact_law());
-        let mut sets: Vec<OutcomeSet> = self.solvers.iter().map(|s| outcome_set(s, law)).collect();
-        if let Some(rest) = &self.flight {
+        let law = self.kicks.scenarios.scenario(0).map_or(AnyLaw::PowerLaw(Scenario::BASELINE.paper_law()), |s| s.contact_law());
+        let mut sets: Vec<OutcomeSet> = self.kicks.solvers.iter().map(|s| outcome_set(s, law)).collect();
+        if let Some(rest) = self.flight {
             let flown = kick_flight::FlightSpec { speed: Some(1.0), ..*rest }.build().ok();
-            sets.extend(self.solvers.iter().map(|s| crate::flight::flight_set(s.name(), rest, flown.as_ref())));
+            sets.extend(self.kicks.solvers.iter().map(|s| crate::flight::flight_set(s.name(), rest, flown.as_ref())));
         }
         sets
     }
 
     fn solve_row(&self, index: u64, row: &mut Row) {
-        let scenario = self.scenarios.scenario(index);
+        let scenario = self.kicks.scenarios.scenario(index);
         self.put_parameters(&scenario, row);
-        for (k, solver) in self.solvers.iter().enumerate() {
+        for (k, solver) in self.kicks.solvers.iter().enumerate() {
             let outcome = scenario.clone().and_then(|s| solver.solve(&s));
             self.put_outcome(k, &scenario, &outcome, row);
         }
@@ -115,6 +123,7 @@ mod tests {
     fn a_failed_kick_keeps_its_status_and_its_flight_is_refused() {
         let text = "solver = \"accurate\"\n[[sweep]]\nparameter = \"drive_force\"\nvalues = [0.0, 1e6]\n[flight]\nlaunch_angle = 20.0\n";
         let experiment = crate::experiment::parse(Path::new("chain.toml"), text).unwrap();
+        assert!(experiment.one_d().is_some());
         let table = run_table(&experiment, 0..2);
         let failed = kick_compliant::Accurate::default().solve(&Scenario::baseline().with(Parameter::DriveForce, 1e6).unwrap()).unwrap_err();
         assert_ne!(failed.status(), Status::Refused);

@@ -3,8 +3,9 @@
 
 use super::{Failure, Level, Row};
 use crate::columns::{law_settings, Column, OutcomeSet};
-use crate::experiment::Experiment3d;
+use crate::experiment::Kicks3d;
 use kick_3d::OBSERVABLES_3D;
+use kick_flight::FlightSpec;
 
 /// The 3D outcome set of a solver: its name (`NAME-3d`), the law and
 /// [`OBSERVABLES_3D`], kick-3d's columns.
@@ -16,20 +17,27 @@ pub fn outcome_set_3d(solver: &str, scenario: &kick_core::Scenario) -> OutcomeSe
     }
 }
 
-impl Level for Experiment3d {
+/// The 3D part of an experiment with its `[flight]`, as a [`Level`].
+#[derive(Debug, Clone, Copy)]
+pub struct ThreeD<'a> {
+    pub kicks: &'a Kicks3d,
+    pub flight: Option<&'a FlightSpec>,
+}
+
+impl Level for ThreeD<'_> {
     fn rows(&self) -> u64 {
-        self.grid.len()
+        self.kicks.grid.len()
     }
 
     /// The swept axes, in axis order.
     fn parameter_columns(&self) -> Vec<Column> {
-        self.grid.axes.iter().map(|a| Column::new(a.parameter.name, a.parameter.unit)).collect()
+        self.kicks.grid.columns()
     }
 
     fn outcome_sets(&self) -> Vec<OutcomeSet> {
-        let kick = outcome_set_3d(&self.solver_name, &self.grid.scenario);
+        let kick = outcome_set_3d(&self.kicks.solver_name, &self.kicks.scenario);
         let mut sets = vec![kick];
-        if let Some(rest) = &self.flight {
+        if let Some(rest) = self.flight {
             let spec = kick_flight::FlightSpec { gravity: Some(kick_core::GRAVITY), ..*rest };
             let flown = kick_flight::Flight::from_launch([1.0, 0.0, 1.0], [0.0; 3], &spec).ok();
             sets.push(crate::flight::flight_set(&sets[0].solver, rest, flown.as_ref()));
@@ -38,14 +46,14 @@ impl Level for Experiment3d {
     }
 
     fn solve_row(&self, index: u64, row: &mut Row) {
-        self.grid.coordinates_into(index, &mut row.parameters);
-        let kick = self.grid.kick(index);
-        let outcome = kick.as_ref().map_err(Clone::clone).and_then(|k| self.solver.solve(k));
+        self.kicks.grid.coordinates_into(index, &mut row.parameters);
+        let kick = self.kicks.kick(index);
+        let outcome = kick.as_ref().map_err(Clone::clone).and_then(|k| self.kicks.solver.solve(k));
         match &outcome {
             Ok(o) => row.set(0, &o.observable_values()),
             Err(e) => row.fail(0, e.clone().into()),
         }
-        if let Some(rest) = &self.flight {
+        if let Some(rest) = self.flight {
             let flown = match (&kick, &outcome) {
                 (Ok(k), Ok(o)) => crate::flight::after_3d(k, o, rest).map(|run| run.outcome.values()),
                 (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
