@@ -16,6 +16,7 @@
 //! Statuses are [`Status`] codes in every table: 0 separated (an outcome),
 //! 1 numerical failure, 2 trapped, 3 refused.
 
+pub mod laws;
 pub mod leg;
 pub mod one_d;
 pub mod sampled_3d;
