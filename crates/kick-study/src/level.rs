@@ -131,6 +131,14 @@ pub trait Level: Sync {
     /// function of `index`.
     fn solve_row(&self, index: u64, row: &mut Row);
 
+    /// The parameter values of row `index` as [`Level::solve_row`] writes
+    /// them, without solving it, where the level can give them cheaply
+    /// (`false`: it cannot). `kick merge` checks a part's parameter columns
+    /// against them.
+    fn parameters_into(&self, _index: u64, _parameters: &mut [f64]) -> bool {
+        false
+    }
+
     /// An empty row of this level's shape.
     fn empty_row(&self) -> Row {
         Row::shaped(self.parameter_columns().len(), &self.outcome_sets())

@@ -53,4 +53,9 @@ impl Level for Experiment3d {
             row.put(1, flown);
         }
     }
+
+    fn parameters_into(&self, index: u64, parameters: &mut [f64]) -> bool {
+        self.grid.coordinates_into(index, parameters);
+        true
+    }
 }
