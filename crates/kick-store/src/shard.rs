@@ -2,6 +2,11 @@
 //! experiment's rows into a file of its own, `kick merge OUT PART...` joins
 //! the slices into the file an unsharded run writes.
 //!
+//! A part's parameter columns are checked row by row against the level it
+//! was cut from, rebuilt where the merge runs (`Level::parameters_into`):
+//! an experiment file's rows (1D scenarios, a 3D grid's coordinates) or a
+//! `kick sweep3d`'s kicks (its seed and the held spec of its provenance text).
+//!
 //! Shards are numbered from 0, as Slurm numbers array tasks
 //! (`--array=0-(N-1)`, `--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT`).
 //! Shard I of N holds rows `floor(I*rows/N) .. floor((I+1)*rows/N)`; the
