@@ -20,7 +20,9 @@
 //! `/outcomes/<name>` kick-3d's [`kick_3d::OBSERVABLES_3D`] of the set
 //! `auto-3d`, status codes of `kick_core::Status`; root attributes `level =
 //! "3d"`, `law` (the set's setting), `seed` and `samples` (the sweep's; `rows` is the file's),
-//! and a shard's attributes ([`crate::shard`]).
+//! and a shard's attributes ([`crate::shard`]). The provenance's experiment
+//! text ends with the held spec exactly (`# held:`, then `#   name = value`
+//! TOML lines), from which `kick merge` redraws every row's parameters.
 
 use crate::error::StoreError;
 use crate::h5::{write_str_attr, write_u64_attr, Compression, H5Error};
@@ -123,14 +125,15 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> 
 const HELD: &str = "# held:";
 
 /// The held spec, every given value exactly (TOML, `#   name = value`
-/// lines under [`HELD`]), so a merge can redraw the sweep's rows.
+/// lines under [`HELD`]), so a merge can redraw the sweep's rows; nothing
+/// (and no check at the merge) should it not serialize.
 fn held_text(fixed: &KickSpec) -> String {
-    let mut table = toml::Table::new();
-    for part in [toml::Table::try_from(fixed.scenario), toml::Table::try_from(fixed.kick3d)] {
-        // Plain numbers, vectors, switches and the law's name: they always serialize.
-        table.extend(part.unwrap_or_default());
-    }
-    let lines = toml::to_string(&table).unwrap_or_default();
+    let table = || -> Option<String> {
+        let mut table = toml::Table::try_from(fixed.scenario).ok()?;
+        table.extend(toml::Table::try_from(fixed.kick3d).ok()?);
+        toml::to_string(&table).ok()
+    };
+    let Some(lines) = table() else { return String::new() };
     let mut text = format!("{HELD}\n");
     for line in lines.lines().filter(|l| !l.is_empty()) {
         let _ = writeln!(text, "#   {line}");
