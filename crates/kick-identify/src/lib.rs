@@ -71,6 +71,26 @@ pub enum IdentifyError {
 }
 
 impl IdentifyError {
+    /// What became of the fit: the model's own status, a fit that stopped
+    /// or went non-finite a numerical failure, anything else refused.
+    pub fn status(&self) -> kick_core::Status {
+        use kick_core::Status;
+        match self {
+            IdentifyError::Model(e) => e.status(),
+            IdentifyError::NotConverged(_) | IdentifyError::NonFinite { .. } => Status::NumericalFailure,
+            IdentifyError::NoFreeParameters
+            | IdentifyError::DuplicateParameter(_)
+            | IdentifyError::UnknownParameter { .. }
+            | IdentifyError::StartOutOfRange { .. }
+            | IdentifyError::NotApplicable { .. }
+            | IdentifyError::NoData
+            | IdentifyError::UnknownObservable { .. }
+            | IdentifyError::UnknownChannel { .. }
+            | IdentifyError::Data { .. }
+            | IdentifyError::UnderDetermined { .. } => Status::Refused,
+        }
+    }
+
     pub(crate) fn data(source_name: impl Into<String>, message: impl Into<String>) -> Self {
         IdentifyError::Data { source_name: source_name.into(), message: message.into() }
     }

@@ -4,7 +4,7 @@
 //! `kick_bounce::run`; `bounce_many` the same per row of arrays.
 
 use crate::many::{run_many, Model};
-use crate::{guard, value_error};
+use crate::{guard, library_error, value_error};
 use kick_bounce::{BounceOutcome, BounceSpec, LawChoice, Tangential};
 use kick_core::parameters::{ParameterDef, Value};
 use kick_core::Status;
@@ -37,7 +37,7 @@ pub fn bounce<'py>(py: Python<'py>, law: &str, params: Option<&Bound<'py, PyDict
                 }
             }
         }
-        let outcome = py.detach(|| kick_bounce::run(&spec)).map_err(value_error)?;
+        let outcome = py.detach(|| kick_bounce::run(&spec)).map_err(library_error)?;
         crate::convert::json_to_py(py, &serde_json::to_value(outcome).map_err(value_error)?)
     })
 }

@@ -5,14 +5,15 @@
 
 use kick_3d::KickSpec;
 use kick_core::ScenarioSpec;
+use kick_study::StudyError;
 use serde_json::Value;
 
 /// `kick simulate --format json` (without `--history`); `dt` as given (None: the default step).
-pub fn simulate(spec: &ScenarioSpec, solver: &str, dt: Option<f64>) -> Result<Value, String> {
-    serde_json::to_value(kick_study::simulate::simulate(spec, solver, dt, None, None)?).map_err(|e| e.to_string())
+pub fn simulate(spec: &ScenarioSpec, solver: &str, dt: Option<f64>) -> Result<Value, StudyError> {
+    serde_json::to_value(kick_study::simulate::simulate(spec, solver, dt, None, None)?).map_err(|e| StudyError::Json(e.to_string()))
 }
 
 /// `kick simulate3d --format json`.
-pub fn simulate3d(spec: &KickSpec, solver: &str, dt: Option<f64>) -> Result<Value, String> {
-    serde_json::to_value(kick_study::simulate::simulate3d(spec, solver, dt, None, None)?).map_err(|e| e.to_string())
+pub fn simulate3d(spec: &KickSpec, solver: &str, dt: Option<f64>) -> Result<Value, StudyError> {
+    serde_json::to_value(kick_study::simulate::simulate3d(spec, solver, dt, None, None)?).map_err(|e| StudyError::Json(e.to_string()))
 }

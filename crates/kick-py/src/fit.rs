@@ -1,7 +1,7 @@
 //! `fit`: the identification of `kick fit data` (crate kick-identify) from
 //! arrays instead of a specification file and a CSV file.
 
-use crate::{guard, value_error};
+use crate::{guard, library_error, value_error};
 use kick_core::parameters::{self, SetParameter};
 use kick_core::ScenarioSpec;
 use kick_identify::data::{Channel, HistoryData, WeightedHistory};
@@ -102,7 +102,7 @@ pub fn fit<'py>(
         let report = crate::interruptible(py, |cancel| {
             fit_with_cancel(&problem, &FitOptions::default(), &|| cancel.load(Ordering::Relaxed))
         })?
-        .map_err(value_error)?;
+        .map_err(library_error)?;
 
         let out = PyDict::new(py);
         let names: Vec<&str> = report.estimates.iter().map(|e| e.parameter.name()).collect();

@@ -1,7 +1,7 @@
 //! `flight`: the ball's flight after the kick (crate kick-flight), keywords
 //! from its declared list (`kick_flight::spec::FLIGHT_PARAMETERS`).
 
-use crate::{guard, value_error};
+use crate::{guard, library_error, value_error};
 use kick_core::parameters;
 use kick_flight::spec::{FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 use pyo3::prelude::*;
@@ -32,7 +32,7 @@ pub fn flight<'py>(py: Python<'py>, params: Option<&Bound<'py, PyDict>>) -> PyRe
             }
         }
         let flight = spec.build().map_err(value_error)?;
-        let outcome = py.detach(|| kick_flight::solve::solve(&flight)).map_err(value_error)?;
+        let outcome = py.detach(|| kick_flight::solve::solve(&flight)).map_err(library_error)?;
         crate::convert::json_to_py(py, &serde_json::to_value(outcome).map_err(value_error)?)
     })
 }
@@ -97,7 +97,7 @@ pub fn flight_many<'py>(
             flat.iter().map(|(p, v)| kick_flight::Column { parameter: *p, values: v }).collect();
         let results = py
             .detach(|| kick_flight::flight_many(&FlightSpec::default(), &columns, rows, threads))
-            .map_err(value_error)?;
+            .map_err(library_error)?;
         many_outputs(py, &shape, &results)
     })
 }
@@ -216,7 +216,7 @@ pub fn aim<'py>(
             flight,
             kick,
         };
-        let report = py.detach(|| kick_study::aim::aim(&request)).map_err(value_error)?;
+        let report = py.detach(|| kick_study::aim::aim(&request)).map_err(library_error)?;
         crate::convert::json_to_py(py, &serde_json::to_value(report).map_err(value_error)?)
     })
 }

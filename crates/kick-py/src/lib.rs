@@ -5,9 +5,9 @@
 //! library's specs (names, defaults and validation from the declared
 //! parameter lists, `kick_core::parameters` and
 //! `kick_flight::spec::FLIGHT_PARAMETERS`), calls one library function and
-//! turns the answer into Python objects. Bad input is a `ValueError` with
-//! the library error's message (the text the command line prints); a panic
-//! never crosses into Python ([`guard`]).
+//! turns the answer into Python objects. A library error raises by its
+//! status ([`library_error`]) with its message (the text the command line
+//! prints): bad input a `ValueError`; a panic never crosses into Python ([`guard`]).
 
 mod bounce;
 mod bridge;
@@ -18,9 +18,10 @@ mod many;
 mod params;
 
 use kick_compliant::SolverChoice;
-use kick_core::{LawKind, RecordingSolver, Spacing, HISTORY_COLUMNS, MAX_HISTORY_SAMPLES};
+use kick_core::{LawKind, RecordingSolver, Spacing, Status, HISTORY_COLUMNS, MAX_HISTORY_SAMPLES};
 use numpy::PyArray1;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::create_exception;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::fmt::Display;
@@ -29,9 +30,44 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, RecvTimeoutError};
 use std::time::Duration;
 
-/// A `ValueError` carrying the library's message.
+/// A `ValueError` carrying the library's message (input refused).
 pub(crate) fn value_error(e: impl Display) -> PyErr {
     PyValueError::new_err(e.to_string())
+}
+
+create_exception!(
+    kick,
+    NumericalError,
+    PyRuntimeError,
+    "A numerical limit ended the computation (step budget, step too large, integration failure, \
+     non-finite state): no statement about the physics (status 1, `kick.STATUS`)."
+);
+
+/// A library error that says what became of the request (`kick_core::Status`).
+pub(crate) trait WithStatus: Display {
+    fn status(&self) -> Status;
+}
+
+macro_rules! with_status {
+    ($($error:ty),*) => {$(
+        impl WithStatus for $error {
+            fn status(&self) -> Status {
+                <$error>::status(self)
+            }
+        }
+    )*};
+}
+with_status!(kick_core::KickError, kick_3d::Kick3dError, kick_flight::FlightError, kick_study::StudyError, kick_identify::IdentifyError);
+
+/// The Python exception of a library error, by its status, with the
+/// library's message: refused input a `ValueError`, a numerical failure a
+/// [`NumericalError`], anything else (a ball proven trapped) a `RuntimeError`.
+pub(crate) fn library_error(e: impl WithStatus) -> PyErr {
+    match e.status() {
+        Status::Refused => PyValueError::new_err(e.to_string()),
+        Status::NumericalFailure => NumericalError::new_err(e.to_string()),
+        Status::Separated | Status::Trapped => PyRuntimeError::new_err(e.to_string()),
+    }
 }
 
 /// Run a front-end function; a panic (a bug) becomes a `RuntimeError` with
@@ -109,7 +145,7 @@ fn simulate<'py>(
     guard(|| {
         let dt = params::optional_number("dt", dt)?;
         let spec = params::scenario_spec(params, crate::law(law)?)?;
-        let object = bridge::simulate(&spec, solver, dt).map_err(value_error)?;
+        let object = bridge::simulate(&spec, solver, dt).map_err(library_error)?;
         convert::json_to_py(py, &object)
     })
 }
@@ -127,7 +163,7 @@ fn simulate3d<'py>(
     guard(|| {
         let dt = params::optional_number("dt", dt)?;
         let spec = params::kick_spec(params, crate::law(law)?)?;
-        let object = bridge::simulate3d(&spec, solver, dt).map_err(value_error)?;
+        let object = bridge::simulate3d(&spec, solver, dt).map_err(library_error)?;
         convert::json_to_py(py, &object)
     })
 }
@@ -152,7 +188,7 @@ fn history<'py>(
         let scenario = spec.build().map_err(value_error)?;
         let solver = solver_1d(solver, params::optional_number("dt", dt)?)?;
         let (_, history) =
-            py.detach(|| solver.solve_sampled(&scenario, spacing, MAX_HISTORY_SAMPLES)).map_err(value_error)?;
+            py.detach(|| solver.solve_sampled(&scenario, spacing, MAX_HISTORY_SAMPLES)).map_err(library_error)?;
         let out = PyDict::new(py);
         for (k, (name, _)) in HISTORY_COLUMNS.iter().enumerate() {
             let column: Vec<f64> = history.samples.iter().map(|s| s.values()[k]).collect();
@@ -187,7 +223,7 @@ fn history3d<'py>(
     guard(|| {
         let spacing = spacing(params::samples(samples)?, params::optional_number("interval", interval)?)?;
         let spec = params::kick_spec(params, crate::law(law)?)?;
-        let (_, history) = py.detach(|| kick_study::simulate::sampled3d(&spec, solver, spacing)).map_err(value_error)?;
+        let (_, history) = py.detach(|| kick_study::simulate::sampled3d(&spec, solver, spacing)).map_err(library_error)?;
         let out = PyDict::new(py);
         for (k, (name, _)) in kick_3d::HISTORY_COLUMNS_3D.iter().enumerate() {
             let column: Vec<f64> = history.iter().map(|s| s.values()[k]).collect();
@@ -202,6 +238,7 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     // Load numpy's C API now: loaded lazily, inside a call, a Ctrl-C during
     // the import panics in rust-numpy.
     PyArray1::<f64>::zeros(m.py(), 0, false);
+    m.add("NumericalError", m.py().get_type::<NumericalError>())?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate3d, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;

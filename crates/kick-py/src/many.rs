@@ -5,7 +5,7 @@
 //! and its message, not an exception.
 
 use crate::params::{described, real_array, MAX_AXES};
-use crate::{guard, value_error};
+use crate::{guard, library_error, value_error};
 use kick_3d::{KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
 use kick_core::parameters::{self, ParameterDef, SetParameter, Shape, Value};
@@ -108,7 +108,7 @@ struct Model3d {
 impl Model3d {
     fn new(solver: Solver3d) -> PyResult<Model3d> {
         // The columns of a solved kick (the baseline on the cheap 1D path).
-        let baseline = kick_3d::one_d::solve(&kick_3d::Kick3d::baseline()).map_err(value_error)?;
+        let baseline = kick_3d::one_d::solve(&kick_3d::Kick3d::baseline()).map_err(library_error)?;
         let mut flat = Vec::new();
         flatten3d(&baseline, &mut flat);
         let columns = flat.into_iter().filter(|(n, _)| n != "evaluations").map(|(n, v)| (n, v.len())).collect();

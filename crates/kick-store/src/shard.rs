@@ -2,6 +2,11 @@
 //! experiment's rows into a file of its own, `kick merge OUT PART...` joins
 //! the slices into the file an unsharded run writes.
 //!
+//! A part's parameter columns are checked row by row against the level it
+//! was cut from, rebuilt where the merge runs (`Level::parameters_into`):
+//! an experiment file's rows (1D scenarios, a 3D grid's coordinates) or a
+//! `kick sweep3d`'s kicks (its seed and the held spec of its provenance text).
+//!
 //! Shards are numbered from 0, as Slurm numbers array tasks
 //! (`--array=0-(N-1)`, `--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT`).
 //! Shard I of N holds rows `floor(I*rows/N) .. floor((I+1)*rows/N)`; the
@@ -362,7 +367,7 @@ pub fn merge(out: &Path, parts: &[PathBuf]) -> Result<MergeReport, ShardError> {
     let total = pieces[0].total;
     let experiment = experiment_of(&pieces[0]);
     let (file, staged) = create_staged(out)?;
-    let merger = Merger { out, pieces: &pieces, total, experiment: experiment.as_ref() };
+    let merger = Merger { out, pieces: &pieces, total, experiment: experiment.as_deref() };
     let first = File::open(&pieces[0].path).map_err(h5(&pieces[0].path))?;
     merger.group(&first, &file, "")?;
     drop(first);
@@ -376,19 +381,26 @@ pub fn merge(out: &Path, parts: &[PathBuf]) -> Result<MergeReport, ShardError> {
     Ok(MergeReport { path, parts: parts.len(), rows: total })
 }
 
-/// The 1D experiment the parts were run from, when its text (stored in
-/// every part, the same by fingerprint) parses where the merge runs: its
-/// parameter columns are then checked row by row.
-fn experiment_of(piece: &Piece) -> Option<Experiment> {
+/// The level the parts were cut from, when it can be rebuilt where the
+/// merge runs: an experiment file's (its text, stored in every part and the
+/// same by fingerprint, parses), 1D or a 3D grid, or a `kick sweep3d`'s
+/// (its seed, samples and held spec). Its parameter columns are then
+/// checked row by row.
+fn experiment_of(piece: &Piece) -> Option<Box<dyn Level>> {
     let file = File::open(&piece.path).ok()?;
     let text = read_str_attr(&file, "experiment_text")?;
     let path = read_str_attr(&file, "experiment_file")?;
-    // An experiment file's (`kick sweep` and `kick sweep3d` name no file).
-    if fingerprint(&text) != piece.fingerprint || Path::new(&path).extension().and_then(|e| e.to_str()) != Some("toml") {
+    if fingerprint(&text) != piece.fingerprint {
         return None;
     }
-    let experiment = crate::experiment::parse(Path::new(&path), &text).ok()?;
-    (experiment.one_d().is_some() && experiment.rows() == piece.total).then_some(experiment)
+    // An experiment file's (`kick sweep` and `kick sweep3d` name no file).
+    if Path::new(&path).extension().and_then(|e| e.to_str()) != Some("toml") {
+        let (seed, samples) = (read_u64_attr(&file, "seed")?, read_u64_attr(&file, "samples")?);
+        let sweep = (read_str_attr(&file, "level").as_deref() == Some("3d")).then(|| crate::sweep3d::sampled_sweep(&text, seed, samples))??;
+        return (sweep.rows() == piece.total).then(|| Box::new(sweep) as Box<dyn Level>);
+    }
+    let level: Box<dyn Level> = Box::new(crate::experiment::parse(Path::new(&path), &text).ok()?);
+    (level.rows() == piece.total).then_some(level)
 }
 
 fn varlen(text: &str) -> hdf5::Result<VarLenUnicode> {
@@ -456,7 +468,7 @@ struct Merger<'a> {
     out: &'a Path,
     pieces: &'a [Piece],
     total: u64,
-    experiment: Option<&'a Experiment>,
+    experiment: Option<&'a dyn Level>,
 }
 
 impl Merger<'_> {
@@ -519,11 +531,11 @@ impl Merger<'_> {
             }
             statuses.push((d.path.clone(), values));
         }
+        if let Some(level) = self.experiment {
+            self.check_parameters(piece, level, &from)?;
+        }
         for d in &piece.datasets {
             let source = from.dataset(&d.path).map_err(|e| part_error(&piece.path, format!("{}: {e}", d.path)))?;
-            if let (Some(experiment), Some(name)) = (self.experiment, d.path.strip_prefix("/parameters/")) {
-                self.check_parameter(piece, experiment, name, &source)?;
-            }
             let target = file.dataset(&d.path).map_err(self.err())?;
             match kind(&d.path) {
                 Some(Kind::PerRow) => {
@@ -543,28 +555,42 @@ impl Merger<'_> {
         self.histories(piece, &from, file)
     }
 
-    /// Parameter column `name` of a part: row by row the experiment's value
-    /// (as [`crate::run`] writes it: the scenario's, NaN where it is invalid).
-    fn check_parameter(&self, piece: &Piece, experiment: &Experiment, name: &str, data: &hdf5::Dataset) -> Result<(), ShardError> {
-        // `experiment_of` gives 1D experiments only.
-        let Some(kicks) = experiment.one_d() else { return Ok(()) };
-        let columns = crate::run::parameter_columns(kicks.scenarios.has_restitution());
-        let Some(j) = columns.iter().position(|c| c.name == name) else {
-            return Err(part_error(&piece.path, format!("/parameters/{name}: not a parameter of the experiment")));
-        };
-        let values = data.read_raw::<f64>().map_err(h5(&piece.path))?;
-        for (i, &value) in values.iter().enumerate() {
-            let row = piece.rows.start + i as u64;
-            let expected = match kicks.scenarios.scenario(row) {
-                Ok(s) if j < 8 => s.values()[j],
-                Ok(s) => s.restitution_target().unwrap_or(f64::NAN),
-                Err(_) => f64::NAN,
+    /// The part's parameter columns: row by row the values the level gives
+    /// (as the run writes them: NaN where a 1D scenario is invalid), read
+    /// a block of rows at a time, each row's values made once.
+    fn check_parameters(&self, piece: &Piece, level: &dyn Level, from: &File) -> Result<(), ShardError> {
+        let columns = level.parameter_columns();
+        let mut checked = Vec::new();
+        for d in &piece.datasets {
+            let Some(name) = d.path.strip_prefix("/parameters/") else { continue };
+            let Some(j) = columns.iter().position(|c| c.name == name) else {
+                return Err(part_error(&piece.path, format!("/parameters/{name}: not a parameter of the experiment")));
             };
-            if value.to_bits() != expected.to_bits() && !(value.is_nan() && expected.is_nan()) {
-                return Err(part_error(&piece.path, format!(
-                    "/parameters/{name}: {} at row {row}, where the experiment gives {}",
-                    kick_core::short(value), kick_core::short(expected)
-                )));
+            checked.push((name, j, from.dataset(&d.path).map_err(|e| part_error(&piece.path, format!("{}: {e}", d.path)))?));
+        }
+        let rows = (piece.rows.end - piece.rows.start) as usize;
+        let mut expected = vec![f64::NAN; columns.len()];
+        for start in (0..rows).step_by(CHUNK_ROWS) {
+            let end = (start + CHUNK_ROWS).min(rows);
+            let block = checked
+                .iter()
+                .map(|(_, _, d)| d.read_slice_1d::<f64, _>(start..end).map(|a| a.to_vec()))
+                .collect::<hdf5::Result<Vec<_>>>()
+                .map_err(h5(&piece.path))?;
+            for i in start..end {
+                let row = piece.rows.start + i as u64;
+                if !level.parameters_into(row, &mut expected) {
+                    return Ok(());
+                }
+                for ((name, j, _), values) in checked.iter().zip(&block) {
+                    let (value, expected) = (values[i - start], expected[*j]);
+                    if value.to_bits() != expected.to_bits() && !(value.is_nan() && expected.is_nan()) {
+                        return Err(part_error(&piece.path, format!(
+                            "/parameters/{name}: {} at row {row}, where the experiment gives {}",
+                            kick_core::short(value), kick_core::short(expected)
+                        )));
+                    }
+                }
             }
         }
         Ok(())
@@ -826,6 +852,60 @@ mod tests {
             let message = merge(&out, &[parts[0].clone(), bad.clone()]).err().unwrap_or_else(|| panic!("{what}: merged")).to_string();
             assert!(message.contains("bad.shard-1-of-2.h5") && message.contains(says), "{what}: {message}");
             assert!(!out.exists(), "{what}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// A 3D grid part and a `kick sweep3d` part with one parameter value
+    /// changed are refused by name (the experiment's grid, the sweep's seed
+    /// and held spec give every row's values); the untouched parts merge to
+    /// the whole, held values (a vector, an infinite friction, the law) read
+    /// back exactly.
+    #[test]
+    fn changed_3d_parameters_are_refused_and_untouched_parts_merge() {
+        let dir = scratch("3d-parameters");
+        let file = dir.join("g3.toml");
+        std::fs::write(&file, "[kick3d]\nfriction = 0.6\n[[sweep]]\nparameter = \"foot_speed\"\nvalues = [16.0, 22.0, 28.0]\n\
+                               [[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.04]\n").unwrap();
+        let grid: Vec<PathBuf> = ["0/2", "1/2"].iter().map(|s| run_file(&file, &dir.join("grid"), Some(s)).unwrap().summary.path).collect();
+        let mut fixed = kick_3d::KickSpec::default();
+        fixed.scenario.law = Some(kick_core::LawKind::HuntCrossley);
+        fixed.scenario.restitution = Some(0.7);
+        fixed.kick3d.friction = Some(f64::INFINITY);
+        fixed.kick3d.foot_half_extents = Some([0.03, 0.11, 0.05]);
+        fixed.kick3d.gravity = Some(true);
+        let sweep: Vec<PathBuf> = ["0/2", "1/2"]
+            .iter()
+            .map(|s| {
+                let settings = crate::sweep3d::Sweep3dSettings {
+                    samples: 6,
+                    seed: 5,
+                    out: dir.join("sweep/k.h5"),
+                    fixed,
+                    shard: Some(s.to_string()),
+                    threads: None,
+                    compress: Default::default(),
+                };
+                crate::sweep3d::sweep3d(&settings).unwrap().path
+            })
+            .collect();
+        for (parts, column, says) in [
+            (&grid, "offset", "/parameters/offset: 0.05 at row 3, where the experiment gives 0.04"),
+            (&sweep, "friction", "/parameters/friction: 0.05 at row 3, where the experiment gives inf"),
+            (&sweep, "foot_half_extents_y", "/parameters/foot_half_extents_y: 0.05 at row 3, where the experiment gives 0.11"),
+        ] {
+            let whole = dir.join("whole.h5");
+            merge(&whole, parts).unwrap();
+            std::fs::remove_file(&whole).unwrap();
+            let bad = dir.join("bad.shard-1-of-2.h5");
+            std::fs::copy(&parts[1], &bad).unwrap();
+            let f = hdf5::File::open_rw(&bad).unwrap();
+            f.dataset(&format!("parameters/{column}")).unwrap().write_slice(&[0.05], 0..1).unwrap();
+            drop(f);
+            let out = dir.join("merged.h5");
+            let message = merge(&out, &[parts[0].clone(), bad.clone()]).err().unwrap_or_else(|| panic!("{column}: merged")).to_string();
+            assert!(message.contains("bad.shard-1-of-2.h5") && message.contains(says), "{column}: {message}");
+            assert!(!out.exists(), "{column}");
         }
         let _ = std::fs::remove_dir_all(&dir);
     }

@@ -20,7 +20,9 @@
 //! `/outcomes/<name>` kick-3d's [`kick_3d::OBSERVABLES_3D`] of the set
 //! `auto-3d`, status codes of `kick_core::Status`; root attributes `level =
 //! "3d"`, `law` (the set's setting), `seed` and `samples` (the sweep's; `rows` is the file's),
-//! and a shard's attributes ([`crate::shard`]).
+//! and a shard's attributes ([`crate::shard`]). The provenance's experiment
+//! text ends with the held spec exactly (`# held:`, then `#   name = value`
+//! TOML lines), from which `kick merge` redraws every row's parameters.
 
 use crate::error::StoreError;
 use crate::h5::{write_str_attr, write_u64_attr, Compression, H5Error};
@@ -30,7 +32,7 @@ use crate::provenance::Provenance;
 use crate::run::{create_table, fill_table, finish_table, RunError};
 use crate::sweep::SweepTarget;
 use kick_3d::KickSpec;
-use kick_core::parameters::{self, Shape};
+use kick_core::parameters::{self, SetParameter, Shape};
 use kick_core::{Parameter, Status};
 pub use kick_study::level::sampled_3d::{solved_value, SampledKicks, SampledSweep3d};
 use kick_study::level::Level;
@@ -100,11 +102,12 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> 
         let _ = write!(given, " {} {v}", p.flag());
     }
     let text = format!(
-        "# kick sweep3d --samples {} --seed {} --law {}{given}\n# ranges (a parameter given is held):\n{}\n",
+        "# kick sweep3d --samples {} --seed {} --law {}{given}\n# ranges (a parameter given is held):\n{}\n{}",
         settings.samples,
         settings.seed,
         law.name(),
-        SampledKicks::ranges().lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n")
+        SampledKicks::ranges().lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n"),
+        held_text(&settings.fixed)
     );
     let provenance = Provenance::now(&target.name, &format!("kick sweep3d (seed {})", settings.seed), &text);
     let started = std::time::Instant::now();
@@ -119,6 +122,54 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> 
         path,
         not_separated,
     })
+}
+
+/// The first line of the held parameters in a sweep's provenance text.
+const HELD: &str = "# held:";
+
+/// The held spec, every given value exactly (TOML, `#   name = value`
+/// lines under [`HELD`]), so a merge can redraw the sweep's rows; nothing
+/// (and no check at the merge) should it not serialize.
+fn held_text(fixed: &KickSpec) -> String {
+    let table = || -> Option<String> {
+        let mut table = toml::Table::try_from(fixed.scenario).ok()?;
+        table.extend(toml::Table::try_from(fixed.kick3d).ok()?);
+        toml::to_string(&table).ok()
+    };
+    let Some(lines) = table() else { return String::new() };
+    let mut text = format!("{HELD}\n");
+    for line in lines.lines().filter(|l| !l.is_empty()) {
+        let _ = writeln!(text, "#   {line}");
+    }
+    text
+}
+
+/// The sampled sweep a part of `kick sweep3d` was cut from: its seed and
+/// samples (root attributes) and the held spec of its provenance `text`;
+/// None when the text has no held spec this version can read.
+pub(crate) fn sampled_sweep(text: &str, seed: u64, samples: u64) -> Option<SampledSweep3d> {
+    let held = text.split_once(&format!("\n{HELD}\n"))?.1;
+    let lines: Vec<&str> = held.lines().map(|l| l.strip_prefix("#   ")).collect::<Option<_>>()?;
+    let table: toml::Table = lines.join("\n").parse().ok()?;
+    let mut fixed = KickSpec::default();
+    for (name, value) in table {
+        let value = match value {
+            toml::Value::String(law) if name == "law" => {
+                fixed.scenario.law = Some(kick_core::LawKind::from_name(&law).ok()?);
+                continue;
+            }
+            toml::Value::Float(x) => parameters::Value::Number(x),
+            toml::Value::Integer(x) => parameters::Value::Number(x as f64),
+            toml::Value::Boolean(on) => parameters::Value::Switch(on),
+            toml::Value::Array(xs) => {
+                let xs: Vec<f64> = xs.iter().map(|x| x.as_float().or_else(|| x.as_integer().map(|i| i as f64))).collect::<Option<_>>()?;
+                parameters::Value::Vector(xs.try_into().ok()?)
+            }
+            _ => return None,
+        };
+        fixed.set_named(&name, value).ok()?;
+    }
+    Some(SampledSweep3d { kicks: SampledKicks { seed, fixed }, samples })
 }
 
 /// User plus system CPU time of this process so far, s (None where it cannot be asked).

@@ -17,6 +17,7 @@
 //! 1 numerical failure, 2 trapped, 3 refused.
 
 pub mod bounce;
+pub mod laws;
 pub mod leg;
 pub mod one_d;
 pub mod sampled_3d;
@@ -131,6 +132,14 @@ pub trait Level: Sync {
     /// function of `index`.
     fn solve_row(&self, index: u64, row: &mut Row);
 
+    /// The parameter values of row `index` as [`Level::solve_row`] writes
+    /// them, without solving it, where the level can give them cheaply
+    /// (`false`: it cannot). `kick merge` checks a part's parameter columns
+    /// against them.
+    fn parameters_into(&self, _index: u64, _parameters: &mut [f64]) -> bool {
+        false
+    }
+
     /// An empty row of this level's shape.
     fn empty_row(&self) -> Row {
         Row::shaped(self.parameter_columns().len(), &self.outcome_sets())
@@ -170,6 +179,9 @@ impl Level for crate::experiment::Experiment {
     }
     fn solve_row(&self, index: u64, row: &mut Row) {
         self.with_level(|l| l.solve_row(index, row))
+    }
+    fn parameters_into(&self, index: u64, parameters: &mut [f64]) -> bool {
+        self.with_level(|l| l.parameters_into(index, parameters))
     }
 }
 

@@ -22,7 +22,11 @@ bounce_many               many bounces from arrays (numpy broadcasting), in para
 aim                       the launch (or 3D kick) that clears the wall and hits a target in the goal
 kick.dask.simulate_many   ``simulate_many`` spread over a dask ``distributed`` cluster
 
-Bad input raises ``ValueError`` with the command line's message. A keyword
+Errors raise by what became of the call (``kick.STATUS``), with the command
+line's message: bad input (status 3, refused) ``ValueError``; a numerical
+limit (status 1: a step budget, a step too large, an integration failure)
+``kick.NumericalError``, a ``RuntimeError``, never a physical answer; a ball
+proven trapped (status 2) ``RuntimeError``. A keyword
 takes real numbers (Python or numpy ints and floats; bools for switches):
 a complex, datetime, string or object value is a ``TypeError`` and a masked
 element a ``ValueError``, each naming the keyword. Outputs too large to
@@ -45,6 +49,7 @@ from ._kick import (
     SOLVERS,
     SOLVERS_3D,
     STATUS,
+    NumericalError,
     __version__,
 )
 
@@ -61,6 +66,7 @@ __all__ = [
     "bounce",
     "bounce_many",
     "aim",
+    "NumericalError",
     "PARAMETERS",
     "BOUNCE_PARAMETERS",
     "STATUS",

@@ -41,52 +41,29 @@
 //! `maps/<source>/{x_factor, y_factor, chi_square}` (rows = grid points, x
 //! fastest; attributes x, y), for source `exit_speed` and `histories`.
 
-use kick_core::laws::{AnyLaw, LawKind};
-use kick_core::{ContactLaw, Parameter, OBSERVABLES};
+use kick_core::laws::LawKind;
+use kick_core::Parameter;
 use kick_identify::data::Observations;
 use kick_identify::fit::FitReport;
 use kick_identify::laws::{LawComparison, RESTITUTION_LAWS};
 use kick_identify::profile::{IdentifiabilityStudy, MisfitMap, Profile};
 use kick_identify::table2::Table2Fit;
 use kick_identify::FitParameter;
-use crate::h5::{read_history, H5Error};
-use crate::{Column, OutcomeSet, Provenance, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};
+use crate::h5::{read_history, Compression, H5Error};
+use crate::run::{create_table, fill_table, finish_table};
+use crate::{Column, Provenance, ResultFile, ResultWriter, SweepData};
+use indicatif::ProgressBar;
+use kick_study::level::laws::LawTable;
+use kick_study::level::Level;
 use std::path::{Path, PathBuf};
 
 fn text(e: H5Error) -> String {
     e.to_string()
 }
 
-/// Columns of a law's outcome set beyond the observables.
-fn law_columns(law: LawKind) -> Vec<Column> {
-    let mut columns: Vec<Column> = OBSERVABLES.iter().map(|(n, u)| Column::new(n, u)).collect();
-    columns.push(Column::new("onset_force", "N"));
-    match law {
-        LawKind::PowerLaw => {}
-        LawKind::KelvinVoigt => {
-            columns.push(Column::new("linear_stiffness", "N/m"));
-            columns.push(Column::new("linear_damping", "N s/m"));
-        }
-        _ => columns.push(Column::new("hysteresis", "s/m")),
-    }
-    columns
-}
-
-/// The values of [`law_columns`] for one run.
-fn law_values(parameters: &AnyLaw, outcome: &kick_core::Outcome, approach_speed: f64) -> Vec<f64> {
-    let mut values = outcome.observable_values().to_vec();
-    values.push(parameters.onset_force(approach_speed));
-    match parameters {
-        AnyLaw::PowerLaw(_) => {}
-        AnyLaw::KelvinVoigt(k) => values.extend([k.stiffness, k.damping]),
-        AnyLaw::Hysteresis(h) => values.push(h.hysteresis),
-        // Not in LawKind::ALL, so never among the compared laws' rows.
-        AnyLaw::Shell(_) => {}
-    }
-    values
-}
-
-/// Write `laws.h5` (module docs): the comparison rows and the restitution table.
+/// Write `laws.h5` (module docs): the comparison rows through the run loop
+/// ([`LawTable`]), their pulses beside them as histories, and the
+/// restitution table.
 pub fn write_laws(
     path: &Path,
     provenance: &Provenance,
@@ -95,35 +72,15 @@ pub fn write_laws(
     formula_targets: &[f64],
     formulas: &[Vec<f64>],
 ) -> Result<PathBuf, String> {
-    let mut parameters: Vec<Column> = Parameter::ALL.iter().map(|p| Column::new(p.name(), p.unit())).collect();
-    parameters.push(Column::new("target_restitution", "1"));
-    let sets: Vec<OutcomeSet> = LawKind::ALL
-        .iter()
-        .map(|&law| OutcomeSet {
-            solver: law.name().into(),
-            // Pulses sampled at most t_c/samples apart, t_c the undamped contact time.
-            settings: Setting::numbers([
-                ("relative_tolerance", 1e-12),
-                ("absolute_tolerance", 1e-12),
-                ("samples_per_contact_time", f64::from(samples)),
-            ]),
-            columns: law_columns(law),
-        })
-        .collect();
-    let mut writer = SweepWriter::create(path, provenance, &parameters, &sets, all.len() as u64).map_err(text)?;
+    let level = LawTable::new(all, samples).map_err(String::from)?;
+    let mut writer = create_table(&level, path, provenance, level.rows(), Compression::None).map_err(text)?;
     let names: Vec<String> = all.iter().map(|c| c.name.clone()).collect();
     crate::h5::write_strings(writer.file(), path, "scenario_names", &names).map_err(text)?;
-    for (row, c) in all.iter().enumerate() {
-        let mut values = c.scenario.values().to_vec();
-        values.push(c.restitution);
-        writer.push_parameters(&values).map_err(text)?;
-        for (set, run) in c.runs.iter().enumerate() {
-            if run.law != LawKind::ALL[set] {
-                return Err(format!("{}: laws out of order ({} at {set})", c.name, run.law.name()));
-            }
-            writer.push_outcome(set, Ok(&law_values(&run.parameters, &run.outcome, c.scenario.approach_speed()))).map_err(text)?;
-            let time: Vec<f64> = run.pulse.iter().map(|p| p.0).collect();
-            let force: Vec<f64> = run.pulse.iter().map(|p| p.1).collect();
+    let bar = ProgressBar::hidden();
+    fill_table(&level, 0..level.rows(), &mut writer, &bar).map_err(text)?;
+    for row in 0..all.len() {
+        for set in 0..LawKind::ALL.len() {
+            let (time, force) = level.pulse(row, set);
             writer
                 .write_history(set, row, &[(Column::new("time", "s"), &time), (Column::new("force", "N"), &force)])
                 .map_err(text)?;
@@ -138,7 +95,7 @@ pub fn write_laws(
         let column: Vec<f64> = formulas.iter().map(|row| row[k]).collect();
         crate::h5::write_column(&group, path, &Column::new(law.name(), "1"), &column).map_err(text)?;
     }
-    writer.finish().map_err(text)
+    finish_table(&level, writer, &bar).map(|summary| summary.path).map_err(|e| e.to_string())
 }
 
 /// `laws.h5` read back.

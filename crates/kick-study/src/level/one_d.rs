@@ -54,13 +54,7 @@ impl OneD<'_> {
     }
 
     fn put_parameters(&self, scenario: &Result<Scenario, KickError>, row: &mut Row) {
-        row.parameters.fill(f64::NAN);
-        if let Ok(s) = scenario {
-            row.parameters[..8].copy_from_slice(&s.values());
-            if let Some(slot) = row.parameters.get_mut(8) {
-                *slot = s.restitution_target().unwrap_or(f64::NAN);
-            }
-        }
+        put_parameters(scenario, &mut row.parameters);
     }
 
     /// Solver `k`'s outcome and, with `[flight]`, the flight after it.
@@ -75,6 +69,18 @@ impl OneD<'_> {
                 (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
             };
             row.put(self.kicks.solvers.len() + k, flown);
+        }
+    }
+}
+
+/// A scenario's parameter values (NaN where it is invalid): the eight, then
+/// the restitution target where the table has that column.
+fn put_parameters(scenario: &Result<Scenario, KickError>, parameters: &mut [f64]) {
+    parameters.fill(f64::NAN);
+    if let Ok(s) = scenario {
+        parameters[..8].copy_from_slice(&s.values());
+        if let Some(slot) = parameters.get_mut(8) {
+            *slot = s.restitution_target().unwrap_or(f64::NAN);
         }
     }
 }
@@ -106,6 +112,11 @@ impl Level for OneD<'_> {
             let outcome = scenario.clone().and_then(|s| solver.solve(&s));
             self.put_outcome(k, &scenario, &outcome, row);
         }
+    }
+
+    fn parameters_into(&self, index: u64, parameters: &mut [f64]) -> bool {
+        put_parameters(&self.kicks.scenarios.scenario(index), parameters);
+        true
     }
 }
 

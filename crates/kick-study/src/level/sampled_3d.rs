@@ -140,16 +140,27 @@ impl Level for SampledSweep3d {
     fn solve_row(&self, index: u64, row: &mut Row) {
         let spec = self.kicks.spec(index);
         let kick = spec.build_drawn();
-        let mut slot = 0;
-        for p in parameters::at_levels(KickSpec::ROW_LEVELS) {
-            let value = solved_value(p, &spec, kick.as_ref().ok());
-            let width = if p.shape == Shape::Vector3 { 3 } else { 1 };
-            row.parameters[slot..slot + width].copy_from_slice(&value[..width]);
-            slot += width;
-        }
+        put_parameters(&spec, kick.as_ref().ok(), &mut row.parameters);
         match kick.and_then(|k| Solver3d::Auto.solve(&k)) {
             Ok(o) => row.set(0, &o.observable_values()),
             Err(e) => row.fail(0, e.into()),
         }
+    }
+
+    fn parameters_into(&self, index: u64, parameters: &mut [f64]) -> bool {
+        let spec = self.kicks.spec(index);
+        put_parameters(&spec, spec.build_drawn().as_ref().ok(), parameters);
+        true
+    }
+}
+
+/// The values of [`parameter_columns`] of a kick as solved ([`solved_value`]).
+fn put_parameters(spec: &KickSpec, kick: Option<&Kick3d>, parameters: &mut [f64]) {
+    let mut slot = 0;
+    for p in parameters::at_levels(KickSpec::ROW_LEVELS) {
+        let value = solved_value(p, spec, kick);
+        let width = if p.shape == Shape::Vector3 { 3 } else { 1 };
+        parameters[slot..slot + width].copy_from_slice(&value[..width]);
+        slot += width;
     }
 }

@@ -61,4 +61,9 @@ impl Level for ThreeD<'_> {
             row.put(1, flown);
         }
     }
+
+    fn parameters_into(&self, index: u64, parameters: &mut [f64]) -> bool {
+        self.kicks.grid.coordinates_into(index, parameters);
+        true
+    }
 }
