@@ -790,12 +790,14 @@ mod tests {
         assert!(DAMPING.check(0.0).is_ok() && DAMPING.check(-1e-300).is_err());
         assert!(RESTITUTION.check(1.0).is_ok() && RESTITUTION.check(0.0).is_err());
         assert!(FRICTION.check(f64::INFINITY).is_ok() && FRICTION.check(f64::NAN).is_err());
+        assert!(TANGENTIAL_STIFFNESS.check(f64::INFINITY).is_ok() && TANGENTIAL_STIFFNESS.check(0.0).is_err());
         assert!(APPROACH_ANGLE.check(90.0).is_err() && APPROACH_ANGLE.check(-89.9).is_ok());
         for p in &PARAMETERS {
             if p.shape != Shape::Switch {
                 assert!(p.check(f64::NAN).is_err(), "{}", p.name);
             }
-            if p.name != "friction" {
+            // μ = ∞ never slips; k_t = ∞ is rigid grip, a constraint.
+            if p.name != "friction" && p.name != "tangential_stiffness" {
                 assert!(p.check(f64::INFINITY).is_err(), "{}", p.name);
             }
         }
