@@ -34,6 +34,9 @@ CASES_3D = [
     {"offset": 0.05, "approach_angle": 10.0, "friction": 0.5},
     {"offset": 0.03, "friction": math.inf, "foot_inertia": (0.01, 0.02, 0.02)},
     {"offset": 0.04, "law": "hunt-crossley-exact", "restitution": 0.6, "foot_half_extents": (0.03, 0.1, 0.04)},
+    # The shell ball's own keywords reach the 3D kick; rigid grip is a constraint.
+    {"offset": 0.05, "law": "shell", "inflation_pressure": 6.0e4, "shell_loss": 0.03},
+    {"offset": 0.05, "friction": 0.8, "tangential_stiffness": float("inf")},
 ]
 
 
@@ -117,7 +120,7 @@ def test_every_declared_keyword_is_accepted_with_its_default():
     """The keywords are exactly the CLI's flags; giving each its declared default changes nothing."""
     for function in ("simulate", "simulate3d"):
         base = getattr(kick, function)()
-        shell = getattr(kick, function)(law="shell") if function == "simulate" else None
+        shell = getattr(kick, function)(law="shell")
         for p in kick.keywords(function):
             if p["default"] is not None:
                 # The shell ball's keywords apply under law="shell" only.
