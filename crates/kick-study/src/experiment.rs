@@ -157,6 +157,10 @@ struct RawSpec<const NAMED: bool> {
     values: Vec<(&'static ParameterDef, Spanned<f64>)>,
 }
 
+/// The keys of `[base]` and `[[scenario]]`: the 1D scenario's and the shell
+/// ball's (which apply under `law = "shell"`).
+const TABLE_LEVELS: &[Level] = &[Level::Scenario, Level::Bounce];
+
 type RawBase = RawSpec<false>;
 type RawNamed = RawSpec<true>;
 
@@ -191,7 +195,7 @@ impl<'de, const NAMED: bool> Deserialize<'de> for RawSpec<NAMED> {
                         table.name = Some(map.next_value()?);
                         continue;
                     }
-                    match parameters::find_at(&[Level::Scenario], &key) {
+                    match parameters::find_at(TABLE_LEVELS, &key) {
                         Ok(parameter) => {
                             if table.value(parameter).is_some() {
                                 return Err(serde::de::Error::custom(format!("duplicate key `{key}`")));
@@ -199,7 +203,7 @@ impl<'de, const NAMED: bool> Deserialize<'de> for RawSpec<NAMED> {
                             table.values.push((parameter, map.next_value()?));
                         }
                         Err(_) => {
-                            let mut valid: Vec<&str> = parameters::at_level(Level::Scenario).map(|p| p.name).collect();
+                            let mut valid: Vec<&str> = parameters::at_levels(TABLE_LEVELS).map(|p| p.name).collect();
                             if NAMED {
                                 valid.insert(0, "name");
                             }
@@ -341,7 +345,7 @@ impl Scenarios {
                         values[slot] = value;
                     }
                 });
-                Scenario::from_values(values)?.with_law(base.law_kind(), base.restitution_target())
+                base.with_values(values)
             }
             Scenarios::Named { scenarios, .. } => Ok(scenarios[index as usize]),
             Scenarios::Sampled(sweep) => sweep.scenario(index),
@@ -648,6 +652,36 @@ type Located = Option<(std::ops::Range<usize>, String)>;
 
 /// Refuse a `damping` or `restitution` the law would ignore
 /// ([`kick_core::LawKind::check_given`]), at the key that gave it.
+/// The shell ball of a table (each key from the table, else `[base]`;
+/// `get` gives the value and its key): under law `shell` the ball it gives
+/// (declared defaults for the rest), under another law `None`, and a key
+/// given there is refused at its line.
+fn shell_ball<'a>(
+    at: &Locator,
+    law: kick_core::LawKind,
+    get: impl Fn(&'static ParameterDef) -> Option<(&'a Spanned<f64>, String)>,
+) -> Result<Option<kick_core::ShellBall>, ExperimentError> {
+    use kick_core::parameters::{SetParameter, Value};
+    let mut spec = kick_core::ScenarioSpec { law: Some(law), ..Default::default() };
+    let mut first: Located = None;
+    for p in &kick_core::shell::BALL_PARAMETERS {
+        if let Some((v, key)) = get(p) {
+            spec.set_parameter(p, Value::Number(*v.get_ref())).map_err(|e| at.error(v.span(), &key, e.to_string()))?;
+            first.get_or_insert((v.span(), key));
+        }
+    }
+    if law != kick_core::LawKind::Shell {
+        return match (first, spec.check_given()) {
+            (Some((span, key)), Err(e)) => Err(at.error(span, &key, e.to_string())),
+            _ => Ok(None),
+        };
+    }
+    spec.shell_ball().map(Some).map_err(|e| {
+        let (span, key) = first.unwrap_or((0..0, "law".into()));
+        at.error(span, &key, e.to_string())
+    })
+}
+
 fn law_settings_apply(at: &Locator, law: kick_core::LawKind, damping: Located, restitution: Located) -> Result<(), ExperimentError> {
     law.check_given(damping.is_some(), restitution.is_some()).map_err(|e| {
         let (span, key) = match &e {
@@ -823,5 +857,32 @@ mod tests {
         let e = load(&big).unwrap_err();
         assert!(e.message.contains("more than the 16777216 bytes"), "{e}");
         let _ = std::fs::remove_file(&big);
+    }
+
+    /// `law = "shell"` with the ball's keys in `[base]` and `[[scenario]]`:
+    /// every scenario solves with that ball (a swept grid keeps it, a named
+    /// scenario's own key wins), in 1D and 3D files; under another law a
+    /// ball key is refused at its line.
+    #[test]
+    fn the_shell_balls_keys_reach_every_scenario() {
+        let ball = |p, loss| kick_core::AnyLaw::Shell(kick_core::ShellBall::new(p, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, loss).unwrap());
+        let loss = kick_core::shell::SHELL_LOSS.default_number();
+        let grid = "law = \"shell\"\n[base]\ninflation_pressure = 6.0e4\n[[sweep]]\nparameter = \"foot_speed\"\nvalues = [18.0, 22.0]\n";
+        let e = parse(Path::new("g.toml"), grid).unwrap();
+        let kicks = e.one_d().unwrap();
+        for i in 0..2 {
+            assert_eq!(kicks.scenarios.scenario(i).unwrap().contact_law(), ball(6.0e4, loss), "row {i}");
+        }
+        let named = "law = \"shell\"\n[base]\nshell_loss = 0.03\n[[scenario]]\nname = \"soft\"\ninflation_pressure = 6.0e4\n[[scenario]]\nname = \"hard\"\n";
+        let kicks = parse(Path::new("n.toml"), named).unwrap();
+        let kicks = kicks.one_d().unwrap();
+        assert_eq!(kicks.scenarios.scenario(0).unwrap().contact_law(), ball(6.0e4, 0.03));
+        assert_eq!(kicks.scenarios.scenario(1).unwrap().contact_law(), ball(8.0e4, 0.03));
+        let three = "level = \"3d\"\nlaw = \"shell\"\n[base]\ninflation_pressure = 6.0e4\n[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.05]\n";
+        let e = parse(Path::new("t.toml"), three).unwrap();
+        assert_eq!(e.three_d().unwrap().scenario.contact_law(), ball(6.0e4, loss));
+        let refused = parse(Path::new("r.toml"), "[base]\nfoot_mass = 2.0\ninflation_pressure = 6.0e4\n").unwrap_err();
+        assert_eq!(refused.line, 3, "{refused}");
+        assert!(refused.to_string().contains("`base.inflation_pressure`: `inflation_pressure` does not apply to law `power-law`"), "{refused}");
     }
 }

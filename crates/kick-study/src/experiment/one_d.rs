@@ -72,7 +72,7 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
     let top_restitution = raw.restitution.as_ref();
     let law_span = top_restitution.map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
     let check_law = |damping, restitution| law_settings_apply(at, law, damping, restitution);
-    let with_law = |s: Scenario, table: &str, given: Option<&Spanned<f64>>, damping: Located| -> Result<Scenario, ExperimentError> {
+    let with_law = |s: Scenario, table: &str, given: Option<&Spanned<f64>>, damping: Located, ball: Option<kick_core::ShellBall>| -> Result<Scenario, ExperimentError> {
         let key = format!("{table}.restitution");
         if let (Some(_), Some(r)) = (top_restitution, given) {
             return Err(at.error(r.span(), &key, "`restitution` is also set at the top level; set it in one place"));
@@ -83,11 +83,16 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
             Some(r) if given.is_some() => (Some(*r.get_ref()), r.span(), key),
             other => (other.map(|r| *r.get_ref()), law_span.clone(), "law".to_string()),
         };
-        s.with_law(law, restitution).map_err(|e| at.error(span, &key, e.to_string()))
+        let s = s.with_law(law, restitution).map_err(|e| at.error(span, &key, e.to_string()))?;
+        Ok(ball.map_or(s, |ball| s.with_shell(ball)))
     };
+    let base_key = |p: &'static kick_core::parameters::ParameterDef| base_raw.value(p).map(|v| (v, format!("base.{}", p.name)));
     // The base scenario of a grid; named scenarios build their own over [base].
     let base_damping = || base_raw.get(Parameter::Damping).map(|d| (d.span(), "base.damping".to_string()));
-    let base = || with_law(build(at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution(), base_damping());
+    let base = || {
+        let ball = super::shell_ball(at, law, base_key)?;
+        with_law(build(at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution(), base_damping(), ball)
+    };
 
     let sources = [raw.sweep.is_some(), raw.scenario.is_some(), raw.table2.is_some()];
     if sources.iter().filter(|&&s| s).count() > 1 {
@@ -141,7 +146,8 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
             }
             let restitution = entry.restitution().or(base_raw.restitution());
             let damping = entry.get(Parameter::Damping).map(|d| (d.span(), format!("{key}.damping"))).or_else(base_damping);
-            let scenario = with_law(build(at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution, damping)?;
+            let ball = super::shell_ball(at, law, |p| entry.value(p).map(|v| (v, format!("{key}.{}", p.name))).or_else(|| base_key(p)))?;
+            let scenario = with_law(build(at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution, damping, ball)?;
             names.push(entry.name().get_ref().clone());
             scenarios.push(scenario);
         }

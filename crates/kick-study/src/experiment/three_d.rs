@@ -89,6 +89,8 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
     let scenario = scenario
         .with_law(law, restitution.map(|r| *r.get_ref()))
         .map_err(|e| at.error(law_span.clone(), "law", e.to_string()))?;
+    let ball = super::shell_ball(at, law, |p| base_raw.value(p).map(|v| (v, format!("base.{}", p.name))))?;
+    let scenario = ball.map_or(scenario, |ball| scenario.with_shell(ball));
     let kick3d = raw.kick3d.unwrap_or_default();
     // A problem of the fixed kick names its key in [kick3d] (or [base]).
     let locate = |e: &Kick3dError, fallback: &str| {
