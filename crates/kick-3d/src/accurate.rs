@@ -117,7 +117,12 @@ impl Switch {
                 Friction::Slip => Some(-1.0),
                 _ => None,
             },
-            Switch::Geometry => Some(if phase.geometry == Geometry::Face { 1.0 } else { -1.0 }),
+            Switch::Geometry => match phase.geometry {
+                Geometry::Face => Some(1.0),
+                Geometry::Border => Some(-1.0),
+                // A cap: one smooth surface.
+                Geometry::Curved => None,
+            },
             Switch::Clamp => system.clamps.then_some(if phase.clamped { -1.0 } else { 1.0 }),
         }
     }
@@ -257,7 +262,13 @@ impl Accurate3d {
         let clock = if singular { Clock::Onset } else { Clock::Time };
         let mut system = Relative::new(
             kick,
-            Phase { compressing: true, friction: Friction::Grip, geometry: Geometry::Face, clamped: false, clock: Clock::Time },
+            Phase {
+                compressing: true,
+                friction: Friction::Grip,
+                geometry: if kick.instep.is_some_and(|i| i.is_curved()) { Geometry::Curved } else { Geometry::Face },
+                clamped: false,
+                clock: Clock::Time,
+            },
         );
         let friction = if kick.friction == 0.0 {
             Friction::None
@@ -533,6 +544,12 @@ impl Accurate3d {
                     phase.friction = if phase.friction == Friction::Grip { Friction::Slip } else { Friction::Grip };
                 }
                 Switch::Geometry => {
+                    if system.patch.is_some() {
+                        return Err(Kick3dError::UnsupportedScene {
+                            path: "accurate",
+                            reason: "the patch contact left the instep's flat face (an edge under a patch is not modelled)",
+                        });
+                    }
                     phase.geometry = if phase.geometry == Geometry::Face { Geometry::Border } else { Geometry::Face };
                 }
                 Switch::Clamp => phase.clamped = !phase.clamped,

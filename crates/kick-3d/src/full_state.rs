@@ -399,6 +399,7 @@ impl FullState3d {
     }
 
     fn run(&self, kick: &Kick3d, mut recorder: Option<&mut Vec<EnergySample>>) -> Result<(Outcome3d, State), Kick3dError> {
+        kick.require_point_contact_box("full-state")?;
         if kick.ground {
             return Err(Kick3dError::UnsupportedScene {
                 path: "accurate",

@@ -73,6 +73,7 @@ impl Scene {
 
     /// Run the kick in a rapier world.
     pub fn solve(&self, kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
+        kick.require_point_contact_box("rapier")?;
         let dynamics = Dynamics::new(kick);
         let start = dynamics::initial_state(kick);
         let init = kick.initial_state();

@@ -8,3 +8,4 @@ mod box_accuracy;
 mod peaks;
 mod history;
 mod support;
+mod patch;
