@@ -396,7 +396,8 @@ impl Kick3d {
 
     /// The value of every declared parameter of the 1D and 3D levels this kick
     /// was built with, defaults filled in (in [`parameters::PARAMETERS`]
-    /// order; `restitution` only when the law takes one). Angles as declared
+    /// order; `restitution` only when the law takes one; the instep's
+    /// (Level::Instep) only when given). Angles as declared
     /// (degrees); the instep's size is its outer size, as given.
     pub fn parameter_values(&self) -> Vec<(&'static ParameterDef, Value)> {
         let mut values = Vec::new();
@@ -424,6 +425,15 @@ impl Kick3d {
                 },
             };
             values.push((def, value));
+        }
+        // The instep's settings only when given: a kick without them is the row above.
+        if let Some(instep) = &self.instep {
+            values.extend([
+                (&parameters::FACE_YAW, Value::Number(instep.yaw.to_degrees())),
+                (&parameters::FACE_PITCH, Value::Number(instep.pitch.to_degrees())),
+                (&parameters::INSTEP_RADIUS, Value::Number(instep.radius)),
+                (&parameters::PATCH_CONTACT, Value::Switch(instep.patch.is_some())),
+            ]);
         }
         values
     }
@@ -545,10 +555,12 @@ impl Kick3d {
     /// the face, the normal force then turns the foot and tilts the normal.)
     pub fn is_one_dimensional(&self) -> bool {
         let centred = match &self.instep {
-            // The normal through the foot's centre of mass too.
+            // The normal through the foot's centre of mass too; a patch on a
+            // cap damps each element at its own rate, which differs from δ̇
+            // off its axis (a flat face's patch is the 1D law exactly).
             Some(instep) => {
                 let r0 = crate::patch::first_touch(self, instep).centre;
-                r0.y == 0.0 && r0.z == 0.0
+                r0.y == 0.0 && r0.z == 0.0 && !(instep.is_curved() && instep.patch.is_some())
             }
             None => true,
         };

@@ -192,3 +192,44 @@ fn bad_instep_input_names_its_parameter() {
     let k = oblique(0.5, Some(0.15));
     assert!(kick_3d::FullState3d::default().solve(&k).unwrap_err().to_string().contains("accurate path only"));
 }
+
+/// A kick with an instep records its settings among its parameter values
+/// (result files' `/fixed`, histories), and they rebuild the same kick; a
+/// kick without one records none of them (its rows are unchanged).
+#[test]
+fn a_kick_with_an_instep_records_its_settings() {
+    use kick_core::parameters::SetParameter;
+    let instep_names = ["face_yaw", "face_pitch", "instep_radius", "patch_contact"];
+    let plain = Kick3d::new(shell(), &Kick3dSpec::default()).unwrap();
+    assert!(plain.parameter_values().iter().all(|(p, _)| !instep_names.contains(&p.name)));
+    let k = oblique(0.5, Some(0.15));
+    let mut spec = kick_3d::KickSpec::default();
+    spec.scenario.law = Some(LawKind::Shell);
+    let values = k.parameter_values();
+    assert_eq!(values.iter().filter(|(p, _)| instep_names.contains(&p.name)).count(), 4);
+    for (def, value) in values {
+        spec.set_parameter(def, value).unwrap();
+    }
+    // As sweeps rebuild rows: every 1D value drawn, the law's unused damping too.
+    assert_eq!(spec.build_drawn().unwrap(), k);
+}
+
+/// `auto` takes the 1D path only where it is exact: a central square kick
+/// with a flat patch (above: the 1D kick to MATCH_1D) or a cap's point
+/// contact (two spheres along their centres), not a cap's patch, whose
+/// elements off the axis compress faster than δ̇ along the cap's normals.
+#[test]
+fn auto_takes_the_1d_path_only_where_it_is_exact() {
+    let central = |radius: Option<f64>, patch| {
+        let spec = Kick3dSpec { instep_radius: radius, patch_contact: Some(patch), face_pitch_deg: Some(0.0), ..Kick3dSpec::default() };
+        Kick3d::new(shell(), &spec).unwrap()
+    };
+    let o1 = kick_core::Solver::solve(&kick_compliant::Accurate::default(), &shell()).unwrap();
+    for (k, one_d) in [(central(None, true), true), (central(Some(0.15), false), true), (central(Some(0.15), true), false)] {
+        assert_eq!(k.is_one_dimensional(), one_d);
+        let o = solve(&k);
+        let r = rel(o.launch_velocity[0], o1.v_ball_out);
+        println!("cap {:?} patch {}: v {} against 1D {}: {r:.1e}", k.instep.unwrap().radius, k.instep.unwrap().patch.is_some(), o.launch_velocity[0], o1.v_ball_out);
+        assert_eq!(r <= MATCH_1D, one_d);
+    }
+}
