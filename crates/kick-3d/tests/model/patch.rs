@@ -233,3 +233,23 @@ fn auto_takes_the_1d_path_only_where_it_is_exact() {
         assert_eq!(r <= MATCH_1D, one_d);
     }
 }
+
+/// The accurate path's promise holds on patch kicks: every observable it
+/// promises (launch velocity, spin, contact time, peak forces and their
+/// times, δ_max) within 1e-9 of the same path tightened to rtol 1e-15, on
+/// kicks where grip and slip switch (μ = 0.5, ∞) and without friction, flat
+/// face and cap. (Not independent: the full-state path has no patch; the
+/// patch's own error is the quadrature's, above.)
+#[test]
+fn patch_kicks_meet_the_accurate_paths_tolerance() {
+    let tight = Accurate3d::new(1e-15).unwrap();
+    for mu in [0.0, 0.5, f64::INFINITY] {
+        for radius in [None, Some(0.15)] {
+            let k = oblique(mu, radius);
+            let (o, reference) = (solve(&k), tight.solve(&k).unwrap());
+            let e = kick_3d::precision::Errors3d::of(&k, &o, &reference);
+            println!("μ {mu} cap {radius:?}: max error {:.1e} ({e:?}), slip {:.2e} of {:.2e} s", e.max(), o.slip_time, o.contact_time);
+            assert!(e.max() <= 1e-9, "{e:?}");
+        }
+    }
+}
