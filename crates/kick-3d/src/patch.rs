@@ -46,12 +46,15 @@
 //! here both follow from the shell law. Friction acts at the patch's
 //! centroid (lever R − δ on a flat face, not R).
 //!
-//! Quadrature: a fixed polar rule over the patch disc (radius a in the plane
-//! normal to n): Gauss–Legendre in s = ρ/a with weight s, and equally spaced
-//! angles. The nodes move smoothly with the state, so the right-hand side is
-//! smooth within a phase (the accurate path's events and tolerances hold).
-//! A central square kick on a flat face gives ḣ_i = δ̇ at every node and
-//! F = F_el(δ)(1 + χ δ̇): exactly the 1D kick. Error: see `Quadrature`.
+//! Integration over the patch: on a flat face in closed form (depth and
+//! rate are functions of ρ alone, the moment's integral is a polynomial in
+//! δ); on a cap exact in the angle and Gauss–Legendre in ρ² ([`Quadrature`]).
+//! Both are smooth in the state, so the right-hand side is smooth within a
+//! phase and the accurate path's events and 1e-9 hold (a test tightens it to
+//! 1e-15). A central square kick on a flat face gives ḣ = δ̇ everywhere and
+//! F = F_el(δ)(1 + χ δ̇): exactly the 1D kick. A unit test sums the elements
+//! of a 64 × 64 polar grid with the depth's rate by finite differences and
+//! finds the closed form and the rings.
 //!
 //! Energy: the elastic resultant is F_el(δ) n (the quadrature is symmetric),
 //! so the law's potential U(δ) holds; the loss integral is the exact balance
@@ -67,17 +70,18 @@ use serde::Serialize;
 /// Most Gauss–Legendre rings of a [`Quadrature`].
 pub const MAX_RINGS: usize = 64;
 
-/// The rule over the patch: exact in the angle, Gauss–Legendre in the radius.
+/// The rule over a cap's patch: exact in the angle, Gauss–Legendre in the
+/// radius. (The flat face needs none: closed form, see [`Patch::resultant`].)
 ///
 /// In the angle θ every element's depth h depends on the radius alone and
 /// its rate is affine in ρ⃗ · ṙ, so the sums over θ are closed forms
-/// (Σ ρ⃗ = 0, Σ ρ⃗ (ρ⃗ · ṙ) = N a² s² ṙ_⊥ / 2 over equally spaced angles):
-/// no angular nodes. In s = ρ/a the integrand is analytic on [0, 1] (its
-/// nearest singularity is at s = R/a > 1), where Gauss–Legendre converges
-/// geometrically. Error (measured, `tests/model/patch.rs`): the default 24
-/// rings' spin and launch velocity are within 1e-9 relative of 48 rings'
-/// on 5 cm offset kicks at μ = 0 and 0.5, flat face and cap (measured
-/// ≤ 1e-11; 12 rings were 2e-11 on the flat face but 5e-7 on a 15 cm cap).
+/// (Σ ρ⃗ = 0, Σ ρ⃗ (ρ⃗ · ṙ) = N ρ² ṙ_⊥ / 2 over equally spaced angles): no
+/// angular nodes. The integrands are analytic functions of t = (ρ/a)² on
+/// [0, 1] (s ds = dt/2), where Gauss–Legendre converges geometrically.
+/// Error (measured on 5 and 10 cm offset kicks on a 15 cm cap at μ = 0 and
+/// 0.5, spin against 48 rings): 8 rings ≤ 8e-7, 12 rings ≤ 7e-10, the
+/// default 16 rings ≤ 7e-13; `tests/model/patch.rs` holds 16 against 32
+/// within 1e-9.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub struct Quadrature {
     pub rings: usize,
@@ -85,7 +89,7 @@ pub struct Quadrature {
 
 impl Default for Quadrature {
     fn default() -> Self {
-        Quadrature { rings: 24 }
+        Quadrature { rings: 16 }
     }
 }
 
@@ -102,9 +106,9 @@ pub enum Surface {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Patch {
     rings: usize,
-    /// s_i in (0, 1).
+    /// t_i = s_i² in (0, 1): the integrands are functions of ρ² = a² t.
     radius: [f64; MAX_RINGS],
-    /// g_i s_i: Gauss weight times the area's s.
+    /// g_i / 2: s ds = dt / 2.
     weight: [f64; MAX_RINGS],
 }
 
@@ -137,12 +141,8 @@ impl Patch {
     /// `q.rings` clamped to 1..=MAX_RINGS.
     pub fn new(q: Quadrature) -> Patch {
         let rings = q.rings.clamp(1, MAX_RINGS);
-        let (s, g) = gauss_legendre(rings);
-        let mut weight = [0.0; MAX_RINGS];
-        for i in 0..rings {
-            weight[i] = g[i] * s[i];
-        }
-        Patch { rings, radius: s, weight }
+        let (t, g) = gauss_legendre(rings);
+        Patch { rings, radius: t, weight: g.map(|g| 0.5 * g) }
     }
 
     /// The normal force over the patch (body frame): its resultant on the
@@ -166,36 +166,25 @@ impl Patch {
             return point;
         }
         let r_t = r_dot - n * r_n;
+        if surface == Surface::Flat {
+            return flat(big_r, r, r_n, r_t, delta, n, elastic, slope);
+        }
         let flat_a2 = delta * (2.0 * big_r - delta);
         // Sums over the rings, each already summed over θ (per N spokes).
         let (mut total, mut sum_g, mut sum_gz, mut along, mut across) = (0.0, 0.0, 0.0, 0.0, 0.0);
         match surface {
-            Surface::Flat => {
-                let nu_q = -(big_r - delta);
-                for i in 0..self.rings {
-                    let s = self.radius[i];
-                    let gap = flat_a2 * (1.0 - s * s);
-                    let root = (nu_q * nu_q + gap).sqrt();
-                    let g = self.weight[i] * gap / (root - nu_q);
-                    total += g;
-                    // ḣ = −ṙ_n + ρ⃗·ṙ/S
-                    along += g * (elastic - slope * r_n);
-                    across += g * slope / root * flat_a2 * s * s * 0.5;
-                }
-                sum_g = total;
-                sum_gz = total * nu_q;
-            }
+            Surface::Flat => {}
             Surface::Sphere { radius: rf, .. } => {
                 let d = big_r + rf - delta;
                 let gap_f = flat_a2 / (2.0 * d); // r_f − x_f
                 let a2 = gap_f * (2.0 * rf - gap_f);
                 let x_f = rf - gap_f;
                 for i in 0..self.rings {
-                    let s = self.radius[i];
-                    let rho2 = a2 * s * s;
+                    let t = self.radius[i];
+                    let rho2 = a2 * t;
                     let z = (rf * rf - rho2).sqrt();
                     let nu_q = (rf * rf - d * z) / rf;
-                    let gap = a2 * (1.0 - s * s) * 2.0 * d / (x_f + z);
+                    let gap = a2 * (1.0 - t) * 2.0 * d / (x_f + z);
                     let root = (nu_q * nu_q + gap).sqrt();
                     let g = self.weight[i] * gap / (root - nu_q);
                     let k = 1.0 + nu_q / root;
@@ -215,7 +204,7 @@ impl Patch {
             return point;
         }
         let (force, moment, centroid) = match surface {
-            Surface::Flat => (n * (along / total), r_t.cross(n) * (across / total), r + n * (sum_gz / sum_g)),
+            Surface::Flat => unreachable!("the flat face is closed form"),
             Surface::Sphere { centre, radius: rf } => {
                 let d = big_r + rf - delta;
                 // lever q × ν = (d/r_f) ρ⃗ × n; Σ_θ ρ⃗ (B ρ⃗·ṙ) × n = B ρ² (ṙ_⊥ × n)/2.
@@ -224,6 +213,20 @@ impl Patch {
         };
         PatchForce { force, moment, centroid }
     }
+}
+
+/// The flat face in closed form: every element's normal is n and its
+/// depth h = √(R² − ρ²) − (R − δ) is a function of ρ alone, so with
+/// u = √(R² − ρ²): ∫ h ρ dρ = δ²(3R − δ)/6 and ∫ h ρ³/(2u) dρ = δ³(4R − δ)/24.
+/// The resultant is (F_el + slope δ̇) n (the 1D law: ḣ averages to δ̇), and
+/// its moment about the ball's centre slope · D₂ (ṙ_⊥ × n) with
+/// D₂ = δ(4R − δ)/(4(3R − δ)) (→ a²/(6R) for small δ: Cross's shift D is
+/// χ v_t D₂ for the shell law).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn flat(big_r: f64, r: Vec3, r_n: f64, r_t: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
+    let d2 = delta * (4.0 * big_r - delta) / (4.0 * (3.0 * big_r - delta));
+    PatchForce { force: n * (elastic - slope * r_n), moment: r_t.cross(n) * (slope * d2), centroid: r - n * (big_r - delta) }
 }
 
 /// The normal force over the patch, body frame.
@@ -344,6 +347,78 @@ pub fn instep(kick: &Kick3d, spec: &Kick3dSpec) -> Result<Option<Instep>, Kick3d
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The element sum written out independently: every element of a polar
+    /// grid (64 Gauss nodes in s = ρ/a with weight s, 64 angles) on the foot's
+    /// surface, its depth along ν by the plain formula ν·q + √((ν·q)² + R² − |q|²)
+    /// and its rate by a central difference of that depth as the ball centre
+    /// moves along ṙ. The closed form (flat) and the ring rule (cap) agree to
+    /// the difference's error.
+    fn brute(surface: Surface, big_r: f64, r: Vec3, r_dot: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
+        let depth = |x: Vec3, nu: Vec3, r: Vec3| {
+            let q = x - r;
+            let nq = nu.dot(q);
+            nq + (nq * nq + big_r * big_r - q.length_squared()).max(0.0).sqrt()
+        };
+        let a2 = match surface {
+            Surface::Flat => delta * (2.0 * big_r - delta),
+            Surface::Sphere { radius: rf, .. } => {
+                let d = big_r + rf - delta;
+                let xf = (d * d + rf * rf - big_r * big_r) / (2.0 * d);
+                rf * rf - xf * xf
+            }
+        };
+        let (s_nodes, g) = gauss_legendre(64);
+        let e1 = Vec3::Z.cross(n).normalize();
+        let e2 = n.cross(e1);
+        let eps = 1e-7;
+        let (mut total, mut force, mut moment) = (0.0, Vec3::ZERO, Vec3::ZERO);
+        for i in 0..64 {
+            for j in 0..64 {
+                let angle = std::f64::consts::TAU * (j as f64 + 0.5) / 64.0;
+                let rho = (e1 * angle.cos() + e2 * angle.sin()) * (a2.sqrt() * s_nodes[i]);
+                let (x, nu) = match surface {
+                    Surface::Flat => (r - n * (big_r - delta) + rho, n),
+                    Surface::Sphere { centre, radius: rf } => {
+                        let z = (rf * rf - rho.length_squared()).sqrt();
+                        (centre + n * z + rho, (n * z + rho) / rf)
+                    }
+                };
+                let h = depth(x, nu, r);
+                let rate = (depth(x, nu, r + r_dot * eps) - depth(x, nu, r - r_dot * eps)) / (2.0 * eps);
+                let w = g[i] * s_nodes[i] * h;
+                total += w * nu.dot(n);
+                let f = nu * (w * (elastic + slope * rate));
+                force += f;
+                moment += (x - r).cross(f);
+            }
+        }
+        PatchForce { force: force / total, moment: moment / total, centroid: Vec3::ZERO }
+    }
+
+    #[test]
+    fn closed_form_and_rings_are_the_element_sum() {
+        let (big_r, rf) = (0.11, 0.15);
+        for delta in [0.002, 0.02, 0.04] {
+            for r_dot in [Vec3::new(-12.0, 0.0, 0.0), Vec3::new(-10.0, 5.0, 2.0), Vec3::new(4.0, -6.0, 1.0)] {
+                let flat_r = Vec3::new(0.03 + big_r - delta, 0.01, -0.02);
+                let centre = Vec3::new(0.03 - rf, 0.0, 0.0);
+                let n = Vec3::new(0.99, 0.1, -0.05).normalize();
+                let cap_r = centre + n * (big_r + rf - delta);
+                let patch = Patch::new(Quadrature::default());
+                for (surface, r, n) in [(Surface::Flat, flat_r, Vec3::X), (Surface::Sphere { centre, radius: rf }, cap_r, n)] {
+                    let (elastic, slope) = (1500.0, 70.0);
+                    let got = patch.resultant(surface, big_r, r, r_dot, delta, n, elastic, slope);
+                    let want = brute(surface, big_r, r, r_dot, delta, n, elastic, slope);
+                    let scale = want.force.length();
+                    assert!((got.force - want.force).length() <= 1e-7 * scale, "{surface:?} δ={delta}: {:?} vs {:?}", got.force, want.force);
+                    // The moment against its own size (it is ∝ slope · δ · v_t).
+                    let m = 1e-6 * want.moment.length() + 1e-11 * scale * big_r;
+                    assert!((got.moment - want.moment).length() <= m, "{surface:?} δ={delta} {r_dot:?}: {:?} vs {:?}", got.moment, want.moment);
+                }
+            }
+        }
+    }
 
     /// Gauss–Legendre on (0, 1) integrates polynomials of degree 2n − 1 exactly.
     #[test]
