@@ -377,8 +377,9 @@ impl Relative {
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
         let r_dot = w - omega.cross(r);
         let rate = -n.dot(r_dot);
-        let (elastic, f0) = self.law.unclamped_force(delta, 0.0);
-        let slope = self.law.unclamped_force(delta, 1.0).1 - f0;
+        // The shell law (the patch's only law): F(δ, v) = F_el(δ)(1 + χ v), one evaluation.
+        let (elastic, f1) = self.law.unclamped_force(delta, 1.0);
+        let (f0, slope) = (elastic, f1 - elastic);
         let surface = match self.cap {
             Some((centre, radius)) => Surface::Sphere { centre, radius },
             None => Surface::Flat,

@@ -179,25 +179,30 @@ impl Patch {
                 let gap_f = flat_a2 / (2.0 * d); // r_f − x_f
                 let a2 = gap_f * (2.0 * rf - gap_f);
                 let x_f = rf - gap_f;
+                let inv_rf = 1.0 / rf;
+                let (mut rated, mut spread) = (0.0, 0.0);
                 for i in 0..self.rings {
                     let t = self.radius[i];
                     let rho2 = a2 * t;
                     let z = (rf * rf - rho2).sqrt();
-                    let nu_q = (rf * rf - d * z) / rf;
+                    let nu_q = (rf * rf - d * z) * inv_rf;
                     let gap = a2 * (1.0 - t) * 2.0 * d / (x_f + z);
                     let root = (nu_q * nu_q + gap).sqrt();
+                    let inv_root = 1.0 / root;
                     let g = self.weight[i] * gap / (root - nu_q);
-                    let k = 1.0 + nu_q / root;
-                    let a_rate = r_n * ((z - d) / root - z * k / rf);
-                    let b_rate = 1.0 / root - k / rf;
-                    let cos = z / rf; // ν · n
+                    let k = 1.0 + nu_q * inv_root;
+                    let cos = z * inv_rf; // ν · n
+                    let a_rate = r_n * ((z - d) * inv_root - cos * k);
+                    let b_rate = inv_root - k * inv_rf;
                     total += g * cos;
                     sum_g += g;
                     sum_gz += g * z;
-                    along += g * (elastic + slope * a_rate) * cos;
-                    // Σ_θ ν (B ρ⃗·ṙ) = B ρ² ṙ_⊥ / (2 r_f) per spoke.
-                    across += g * slope * b_rate * rho2 * 0.5 / rf;
+                    rated += g * a_rate * cos;
+                    spread += g * b_rate * rho2;
                 }
+                along = elastic * total + slope * rated;
+                // Σ_θ ν (B ρ⃗·ṙ) = B ρ² ṙ_⊥ / (2 r_f) per spoke.
+                across = slope * spread * 0.5 * inv_rf;
             }
         }
         if !(total > 0.0) {
