@@ -12,7 +12,9 @@
 //! the surface meets the ball (closed form: a plane, or two spheres). The
 //! knife edge of [`crate::model`] is one configuration: a flat face with
 //! ψ = asin(e/R), θ = 0 touches the ball at the pole, where the swing line
-//! meets it (the test `the_knife_edge_is_one_configuration`). A cap's
+//! meets it (the test `the_knife_edge_is_one_configuration`; at an approach
+//! angle α today's face centre is on the swing line through
+//! (0, e, R cos φ tan α) instead, so the two offsets differ there). A cap's
 //! contact with the ball is a sphere–sphere contact: normal along the line of
 //! centres, δ = R + r_i − |r − c_i|, smooth everywhere (no face/border switch).
 //!
@@ -329,7 +331,7 @@ pub fn instep(kick: &Kick3d, spec: &Kick3dSpec) -> Result<Option<Instep>, Kick3d
     if patch && !matches!(kick.base.contact_law(), AnyLaw::Shell(_)) {
         return Err(KickError::DoesNotApply {
             given: "patch_contact",
-            to: "this law".into(),
+            to: format!("law `{}`", kick.base.law_kind().name()),
             reason: "the patch spreads the shell ball's force (`--law shell`), whose loss acts per element at its own rate",
         }
         .into());

@@ -26,9 +26,9 @@ fn norm(v: [f64; 3]) -> f64 {
 /// asin(e/R) (in degrees, as a user types it) and no patch is today's kick,
 /// foot placed and turned by the new geometry, to 1e-12 (the degrees' round
 /// trip). With friction slipping and gripping, under two laws, and with a
-/// drive. (With an approach angle α the knife edge's face centre sits
-/// R cos φ tan α above the swing line through (0, e, 0), so there the two
-/// offsets differ by definition: the instep's is the distance itself.)
+/// drive. (At an approach angle α the knife edge's face centre is on the
+/// swing line through (0, e, R cos φ tan α), not (0, e, 0), so there the
+/// two offsets differ by definition: the instep's is the distance itself.)
 #[test]
 fn the_knife_edge_is_one_configuration() {
     for base in [Scenario::baseline(), shell(), shell().with(kick_core::Parameter::DriveForce, 500.0).unwrap()] {
