@@ -253,3 +253,25 @@ fn patch_kicks_meet_the_accurate_paths_tolerance() {
         }
     }
 }
+
+/// A face pitched up by θ with no friction pushes along its normal: a ball
+/// at rest leaves at elevation θ (a foot too heavy to turn keeps the face's
+/// normal), below its centre, so lofted; yaw likewise sends it at −ψ in azimuth.
+#[test]
+fn a_pitched_or_yawed_face_pushes_along_its_normal() {
+    for (yaw, pitch) in [(0.0, 15.0), (20.0, 0.0), (10.0, -8.0)] {
+        let spec = Kick3dSpec {
+            face_yaw_deg: Some(yaw),
+            face_pitch_deg: Some(pitch),
+            friction: Some(0.0),
+            foot_inertia: Some([1e9; 3]),
+            ..Kick3dSpec::default()
+        };
+        let k = Kick3d::new(shell(), &spec).unwrap();
+        let n = k.initial_normal();
+        let (p, y) = (f64::to_radians(pitch), f64::to_radians(yaw));
+        assert!((n - Vec3::new(p.cos() * y.cos(), -p.cos() * y.sin(), p.sin())).length() < 1e-15, "{n:?}");
+        let o = solve(&k);
+        assert!((o.launch_angle - pitch).abs() < 1e-6 && (o.launch_azimuth + yaw).abs() < 1e-6, "{yaw} {pitch}: {} {}", o.launch_angle, o.launch_azimuth);
+    }
+}
