@@ -9,11 +9,14 @@ use kick_3d::{Accurate3d, Kick3d, Kick3dSpec};
 use kick_core::{LawKind, Scenario};
 use parry3d_f64::math::Vec3;
 
+/// A row's name and its spec at (offset, μ).
+type Config = (&'static str, fn(f64, f64) -> Kick3dSpec);
+
 fn main() {
     let cap: f64 = std::env::args().nth(1).map(|a| a.parse().expect("cap radius, m")).unwrap_or(0.15);
     let base = Scenario::baseline().with_law(LawKind::Shell, None).expect("shell");
     let solver = Accurate3d::default();
-    let configs: [(&str, fn(f64, f64) -> Kick3dSpec); 4] = [
+    let configs: [Config; 4] = [
         ("point, knife edge", |e, mu| Kick3dSpec { offset: Some(e), friction: Some(mu), ..Kick3dSpec::default() }),
         ("patch, knife edge", |e, mu| Kick3dSpec { offset: Some(e), friction: Some(mu), patch_contact: Some(true), ..Kick3dSpec::default() }),
         ("point, cap, yaw 0", |e, mu| Kick3dSpec { offset: Some(e), friction: Some(mu), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() }),

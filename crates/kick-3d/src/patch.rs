@@ -361,6 +361,7 @@ mod tests {
     /// and its rate by a central difference of that depth as the ball centre
     /// moves along ṙ. The closed form (flat) and the ring rule (cap) agree to
     /// the difference's error.
+    #[allow(clippy::too_many_arguments)]
     fn brute(surface: Surface, big_r: f64, r: Vec3, r_dot: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
         let depth = |x: Vec3, nu: Vec3, r: Vec3| {
             let q = x - r;
