@@ -64,6 +64,27 @@ fn off_center_box(c: &mut Criterion) {
     group.finish();
 }
 
+/// The shell ball at 5 cm offset, μ = 0.5 (Table 1's foot, 22 m/s): the
+/// point contact against the patch on the knife-edge face and on a 15 cm
+/// cap (`kick_3d::patch`), one kick per iteration, one binary.
+fn patch_contact(c: &mut Criterion) {
+    let base = kick_core::Scenario::baseline().with_law(kick_core::LawKind::Shell, None).expect("shell");
+    let spec = kick_3d::Kick3dSpec { offset: Some(0.05), ..kick_3d::Kick3dSpec::default() };
+    let cases = [
+        ("shell point contact", spec),
+        ("shell patch, knife edge", kick_3d::Kick3dSpec { patch_contact: Some(true), ..spec }),
+        ("shell patch, 15 cm cap", kick_3d::Kick3dSpec { patch_contact: Some(true), instep_radius: Some(0.15), face_yaw_deg: Some(0.0), ..spec }),
+    ];
+    let mut group = c.benchmark_group("patch_contact_5cm");
+    group.throughput(Throughput::Elements(1));
+    let solver = Accurate3d::default();
+    for (name, spec) in cases {
+        let kick = kick_3d::Kick3d::new(base, &spec).expect("valid");
+        group.bench_function(BenchmarkId::from_parameter(name), |b| b.iter(|| black_box(solver.solve(black_box(&kick)).expect("solves"))));
+    }
+    group.finish();
+}
+
 /// One rapier scene step (`--solver rapier`): the baseline kick at the
 /// default dt (1e-6 s, about 5,300 steps), throughput in steps, so the
 /// scene's step budget (`kick_3d::scene::MAX_SCENE_STEPS`) can be stated in
@@ -81,5 +102,5 @@ fn rapier_step(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, off_center_box, rapier_step);
+criterion_group!(benches, off_center_box, patch_contact, rapier_step);
 criterion_main!(benches);

@@ -117,7 +117,12 @@ impl Switch {
                 Friction::Slip => Some(-1.0),
                 _ => None,
             },
-            Switch::Geometry => Some(if phase.geometry == Geometry::Face { 1.0 } else { -1.0 }),
+            Switch::Geometry => match phase.geometry {
+                Geometry::Face => Some(1.0),
+                Geometry::Border => Some(-1.0),
+                // A cap: one smooth surface.
+                Geometry::Curved => None,
+            },
             Switch::Clamp => system.clamps.then_some(if phase.clamped { -1.0 } else { 1.0 }),
         }
     }
@@ -250,6 +255,13 @@ impl Accurate3d {
                 reason: "a ground plane is a third body; use the rapier scene path",
             });
         }
+        if kick.rigid_grip() && kick.instep.is_some_and(|i| i.is_curved() || i.patch.is_some()) {
+            return Err(Kick3dError::UnsupportedScene {
+                path: "accurate",
+                reason: "rigid grip (tangential_stiffness = inf) holds a point contact on a flat face; \
+                         leave out instep_radius and patch_contact with it",
+            });
+        }
         if kick.rigid_grip() && kick.friction.is_finite() && kick.friction > 0.0 && kick.offset != 0.0 && kick.approach_angle != 0.0 {
             return Err(Kick3dError::UnsupportedScene {
                 path: "accurate",
@@ -267,7 +279,7 @@ impl Accurate3d {
             Phase {
                 compressing: true,
                 friction: Friction::Grip,
-                geometry: Geometry::Face,
+                geometry: if kick.instep.is_some_and(|i| i.is_curved()) { Geometry::Curved } else { Geometry::Face },
                 clamped: false,
                 clock: Clock::Time,
                 slip_direction: parry3d_f64::math::Vec3::ZERO,
@@ -574,6 +586,12 @@ impl Accurate3d {
                     });
                 }
                 Switch::Geometry => {
+                    if system.patch.is_some() {
+                        return Err(Kick3dError::UnsupportedScene {
+                            path: "accurate",
+                            reason: "the patch contact left the instep's flat face (an edge under a patch is not modelled)",
+                        });
+                    }
                     phase.geometry = if phase.geometry == Geometry::Face { Geometry::Border } else { Geometry::Face };
                 }
                 Switch::Clamp => phase.clamped = !phase.clamped,

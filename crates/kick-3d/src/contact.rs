@@ -42,6 +42,7 @@
 use crate::dynamics::geometry;
 use crate::model::Kick3d;
 use crate::outcome::EndState;
+use crate::patch::{Patch, PatchForce, Surface};
 use kick_core::{AnyLaw, ContactLaw};
 use nalgebra::SVector;
 use parry3d_f64::math::{Pose3, Rot3, Vec3};
@@ -111,6 +112,8 @@ pub enum Geometry {
     Face,
     /// An edge, corner or rounded border (parry's ball–box query).
     Border,
+    /// The cap of a curved instep ([`crate::patch`]): a sphere, smooth everywhere.
+    Curved,
 }
 
 /// The independent variable x of a phase.
@@ -158,6 +161,8 @@ pub struct Local {
     pub grip_margin: f64,
     pub damping_power: f64,
     pub friction_power: f64,
+    /// The normal force over the patch, when it is spread ([`crate::patch`]).
+    pub patch: Option<PatchForce>,
 }
 
 impl Local {
@@ -195,6 +200,10 @@ pub struct Relative {
     /// F_drive in the world frame.
     pub drive: Vec3,
     pub phase: Phase,
+    /// The curved instep's sphere (centre, radius), body frame.
+    pub cap: Option<(Vec3, f64)>,
+    /// The patch's quadrature, when the normal force is spread.
+    pub patch: Option<Patch>,
 }
 
 impl Relative {
@@ -210,7 +219,7 @@ impl Relative {
             foot_inertia: Vec3::new(ix, iy, iz),
             ball_inertia: kick.ball_inertia,
             ball_radius: kick.ball_radius,
-            touch: Vec3::new(kick.ball_radius + kick.face_distance(), 0.0, 0.0),
+            touch: kick.touch(),
             face: (hy, hz),
             cuboid: Cuboid::new(Vec3::new(hx, hy, hz)),
             border: kick.foot_shape.border_radius(),
@@ -221,6 +230,8 @@ impl Relative {
             rigid: kick.rigid_grip(),
             drive: kick.drive(),
             phase,
+            cap: kick.instep.filter(|i| i.is_curved()).map(|i| (Vec3::new(kick.face_distance() - i.radius, 0.0, 0.0), i.radius)),
+            patch: kick.instep.and_then(|i| i.patch).map(Patch::new),
         }
     }
 
@@ -276,7 +287,7 @@ impl Relative {
     pub fn local(&self, x: f64, y: &State) -> Local {
         match self.phase.geometry {
             Geometry::Face => self.local_on::<true>(x, y),
-            Geometry::Border => self.local_on::<false>(x, y),
+            Geometry::Border | Geometry::Curved => self.local_on::<false>(x, y),
         }
     }
 
@@ -286,6 +297,10 @@ impl Relative {
         let r = self.centre(y);
         let (delta, n) = if FACE {
             (-y[DISPLACEMENT], Vec3::X)
+        } else if let Some((centre, radius)) = self.cap {
+            let d = r - centre;
+            let length = d.length();
+            (self.ball_radius + radius - length, d / length)
         } else {
             let (delta, n, _) = geometry(&self.cuboid, self.ball_radius, self.border, &Pose3::IDENTITY, r);
             (delta, n)
@@ -294,6 +309,9 @@ impl Relative {
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
+        let (point, rate, sliding, normal_force, unclamped_force, damping_power, patch) = match &self.patch {
+            Some(patch) => self.patch_normal::<FACE>(patch, y, delta, n),
+            None => {
         let lever_ball = along::<FACE>(n, -self.ball_radius);
         let point = r + lever_ball;
         // Ball's material point minus the foot's, at p (ω_b × (−R n) = −R (ω_b × n)).
@@ -308,6 +326,9 @@ impl Relative {
             (elastic, force, force)
         };
         let damping_power = (normal_force - elastic) * rate;
+        (point, rate, sliding, normal_force, unclamped_force, damping_power, None)
+            }
+        };
 
         let xi = vec3(y, SPRING);
         let xi_t = tangential::<FACE>(n, xi);
@@ -363,7 +384,41 @@ impl Relative {
             grip_margin,
             damping_power,
             friction_power,
+            patch,
         }
+    }
+
+    /// The normal side of [`Relative::local_on`] with the force spread over
+    /// the patch ([`crate::patch`]): (point, δ̇, v_t, F_n, F_n unclamped, loss
+    /// power, the patch's force). Friction acts at the patch's centroid; the
+    /// loss is the exact balance of the element forces' power.
+    #[inline(always)]
+    #[allow(clippy::type_complexity)]
+    fn patch_normal<const FACE: bool>(&self, patch: &Patch, y: &State, delta: f64, n: Vec3) -> (Vec3, f64, Vec3, f64, f64, f64, Option<PatchForce>) {
+        let r = self.centre(y);
+        let w = vec3(y, RELATIVE_VELOCITY);
+        let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
+        let spin = vec3(y, BALL_ANGULAR_VELOCITY);
+        let r_dot = w - omega.cross(r);
+        let rate = -n.dot(r_dot);
+        // The shell law (the patch's only law): F(δ, v) = F_el(δ)(1 + χ v), one evaluation.
+        let (elastic, f1) = self.law.unclamped_force(delta, 1.0);
+        let (f0, slope) = (elastic, f1 - elastic);
+        let surface = match self.cap {
+            Some((centre, radius)) => Surface::Sphere { centre, radius },
+            None => Surface::Flat,
+        };
+        let mut p = patch.resultant(surface, self.ball_radius, r, r_dot, delta, n, f0, slope);
+        let unclamped_force = n.dot(p.force);
+        if self.phase.clamped {
+            p.force = Vec3::ZERO;
+            p.moment = Vec3::ZERO;
+        }
+        let point = p.centroid;
+        let v_rel = w + spin.cross(point - r) - omega.cross(point);
+        // Power of the element forces on the relative motion, less the elastic's.
+        let power = p.force.dot(w) + spin.dot(p.moment) - omega.dot(r.cross(p.force) + p.moment);
+        (point, rate, tangential::<FACE>(n, v_rel), n.dot(p.force), unclamped_force, -power - elastic * rate, Some(p))
     }
 
     /// dy/dx at (x, y).
@@ -371,15 +426,26 @@ impl Relative {
     pub fn derivative(&self, x: f64, y: &State) -> State {
         match self.phase.geometry {
             Geometry::Face => self.derivative_on::<true>(x, y),
-            Geometry::Border => self.derivative_on::<false>(x, y),
+            Geometry::Border | Geometry::Curved => self.derivative_on::<false>(x, y),
         }
     }
 
     #[inline(always)]
     fn derivative_on<const FACE: bool>(&self, x: f64, y: &State) -> State {
         let c = self.local_on::<FACE>(x, y);
-        let force = along::<FACE>(c.normal, c.normal_force) + c.tangential_force;
         let r = self.centre(y);
+        // The patch: the normal force's own resultant and moment, friction at the centroid.
+        let (force, torque, torque_ball) = match &c.patch {
+            None => {
+                let force = along::<FACE>(c.normal, c.normal_force) + c.tangential_force;
+                // (−R n) × F = R (F × n)
+                (force, c.point.cross(-force), cross_normal::<FACE>(force, c.normal) * self.ball_radius)
+            }
+            Some(p) => {
+                let t = c.tangential_force;
+                (p.force + t, -(r.cross(p.force) + p.moment) - c.point.cross(t), p.moment + (c.point - r).cross(t))
+            }
+        };
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
@@ -390,14 +456,11 @@ impl Relative {
             dw -= rotation(y).inverse() * self.drive / self.foot_mass;
         }
         put3(&mut dy, RELATIVE_VELOCITY, dw);
-        let torque = c.point.cross(-force);
         put3(&mut dy, FOOT_ANGULAR_VELOCITY, (torque - omega.cross(omega * self.foot_inertia)) / self.foot_inertia);
         // q̇ = ½ q ⊗ (0, Ω)
         let (qw, qv) = (y[FOOT_ROTATION], Vec3::new(y[FOOT_ROTATION + 1], y[FOOT_ROTATION + 2], y[FOOT_ROTATION + 3]));
         dy[FOOT_ROTATION] = -0.5 * qv.dot(omega);
         put3(&mut dy, FOOT_ROTATION + 1, (omega * qw + qv.cross(omega)) * 0.5);
-        // (−R n) × F = R (F × n)
-        let torque_ball = cross_normal::<FACE>(force, c.normal) * self.ball_radius;
         put3(&mut dy, BALL_ANGULAR_VELOCITY, torque_ball / self.ball_inertia - omega.cross(spin));
         put3(&mut dy, SPRING, c.spring_rate);
         dy[NORMAL_IMPULSE] = c.normal_force;

@@ -402,6 +402,7 @@ impl FullState3d {
         if kick.rigid_grip() {
             return Err(Kick3dError::UnsupportedScene { path: "full-state", reason: crate::model::RIGID_GRIP_PATHS });
         }
+        kick.require_point_contact_box("full-state")?;
         if kick.ground {
             return Err(Kick3dError::UnsupportedScene {
                 path: "accurate",

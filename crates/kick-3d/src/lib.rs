@@ -29,6 +29,7 @@ pub mod model;
 pub mod models;
 pub mod one_d;
 pub mod outcome;
+pub mod patch;
 pub mod precision;
 #[cfg(feature = "rapier")]
 pub mod scene;
@@ -39,7 +40,7 @@ pub use accurate::Accurate3d;
 pub use error::Kick3dError;
 pub use full_state::FullState3d;
 pub use history::{ContactState, Sample3d, HISTORY_COLUMNS_3D};
-pub use model::{FootShape, Kick3d, Kick3dSpec, KickSpec};
+pub use model::{FootShape, Instep, Kick3d, Kick3dSpec, KickSpec};
 pub use outcome::{EnergyPartition, Outcome3d, OBSERVABLES_3D};
 
 /// The rapier scene path's step when none is given, s (see [`scene`]).

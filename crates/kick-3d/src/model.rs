@@ -110,6 +110,16 @@ pub struct Kick3dSpec {
     pub gravity: Option<bool>,
     /// A ground plane under the ball (scene path only) [off]
     pub ground: Option<bool>,
+    /// ψ, degrees [asin(e/R): the knife edge] (Level::Instep, [`crate::patch`])
+    #[serde(rename = "face_yaw")]
+    pub face_yaw_deg: Option<f64>,
+    /// θ, degrees [0]
+    #[serde(rename = "face_pitch")]
+    pub face_pitch_deg: Option<f64>,
+    /// r_i, m [0: flat]
+    pub instep_radius: Option<f64>,
+    /// The normal force spread over the patch [off]
+    pub patch_contact: Option<bool>,
 }
 
 impl Kick3dSpec {
@@ -125,7 +135,7 @@ impl Kick3dSpec {
 }
 
 impl SetParameter for Kick3dSpec {
-    const LEVELS: &'static [Level] = &[Level::Kick3d];
+    const LEVELS: &'static [Level] = &[Level::Kick3d, Level::Instep];
 
     fn set_parameter(&mut self, parameter: &'static ParameterDef, value: Value) -> Result<(), ParameterError> {
         let number = || parameters::number(parameter, value).map(Some);
@@ -144,6 +154,10 @@ impl SetParameter for Kick3dSpec {
             "border_radius" => self.border_radius = number()?,
             "gravity" => self.gravity = switch()?,
             "ground" => self.ground = switch()?,
+            "face_yaw" => self.face_yaw_deg = number()?,
+            "face_pitch" => self.face_pitch_deg = number()?,
+            "instep_radius" => self.instep_radius = number()?,
+            "patch_contact" => self.patch_contact = switch()?,
             _ => return Err(parameters::unknown(Self::LEVELS, parameter.name)),
         }
         Ok(())
@@ -196,7 +210,7 @@ impl kick_core::parameters::SetLaw for KickSpec {
 impl SetParameter for KickSpec {
     /// The 1D scenario's parameters with the shell ball's (Level::Bounce, as
     /// in `kick simulate`), and the 3D ones.
-    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Bounce, Level::Kick3d];
+    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Bounce, Level::Kick3d, Level::Instep];
 
     fn set_parameter(&mut self, parameter: &'static ParameterDef, value: Value) -> Result<(), ParameterError> {
         match parameter.level {
@@ -233,6 +247,43 @@ pub struct Kick3d {
     pub tangential_damping: f64,
     pub gravity: bool,
     pub ground: bool,
+    /// The instep as a surface of its own ([`crate::patch`]); `None`: the
+    /// knife-edge face tilted by asin(e/R) and the point contact.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub instep: Option<Instep>,
+}
+
+/// The instep's surface, orientation and contact model, when given
+/// (`face_yaw`, `face_pitch`, `instep_radius`, `patch_contact`). The offset
+/// is then the distance of the ball's centre from the swing line through
+/// the instep's pole (the face's centre; the cap's apex), and the face
+/// normal at the pole is n_f = (cos θ cos ψ, −cos θ sin ψ, sin θ).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Instep {
+    /// r_i, m: the cap's radius of curvature; 0 for a flat face.
+    pub radius: f64,
+    /// ψ, radians.
+    pub yaw: f64,
+    /// θ, radians.
+    pub pitch: f64,
+    /// The patch's quadrature when the normal force is spread over it.
+    pub patch: Option<crate::patch::Quadrature>,
+}
+
+impl Instep {
+    pub fn is_curved(&self) -> bool {
+        self.radius > 0.0
+    }
+    /// n_f, the face normal at the pole (world frame, at first touch).
+    pub fn face_normal(&self) -> Vec3 {
+        let (sy, cy) = self.yaw.sin_cos();
+        let (sp, cp) = self.pitch.sin_cos();
+        Vec3::new(cp * cy, -cp * sy, sp)
+    }
+    /// World from body: the body's +x is n_f.
+    pub fn orientation(&self) -> Rot3 {
+        Rot3::from_rotation_z(-self.yaw) * Rot3::from_rotation_y(-self.pitch)
+    }
 }
 
 /// Initial rigid-body states of one kick, in the world frame.
@@ -332,7 +383,9 @@ impl Kick3d {
             tangential_damping,
             gravity: spec.gravity.unwrap_or(false),
             ground: spec.ground.unwrap_or(false),
+            instep: None,
         };
+        kick.instep = crate::patch::instep(&kick, spec)?;
         let v_n = kick.normal_approach_speed();
         // NaN-safe: anything not strictly positive refuses.
         if v_n.is_nan() || v_n <= 0.0 {
@@ -347,7 +400,8 @@ impl Kick3d {
 
     /// The value of every declared parameter of the 1D and 3D levels this kick
     /// was built with, defaults filled in (in [`parameters::PARAMETERS`]
-    /// order; `restitution` only when the law takes one). Angles as declared
+    /// order; `restitution` only when the law takes one; the instep's
+    /// (Level::Instep) only when given). Angles as declared
     /// (degrees); the instep's size is its outer size, as given.
     pub fn parameter_values(&self) -> Vec<(&'static ParameterDef, Value)> {
         let mut values = Vec::new();
@@ -375,6 +429,15 @@ impl Kick3d {
                 },
             };
             values.push((def, value));
+        }
+        // The instep's settings only when given: a kick without them is the row above.
+        if let Some(instep) = &self.instep {
+            values.extend([
+                (&parameters::FACE_YAW, Value::Number(instep.yaw.to_degrees())),
+                (&parameters::FACE_PITCH, Value::Number(instep.pitch.to_degrees())),
+                (&parameters::INSTEP_RADIUS, Value::Number(instep.radius)),
+                (&parameters::PATCH_CONTACT, Value::Switch(instep.patch.is_some())),
+            ]);
         }
         values
     }
@@ -411,8 +474,12 @@ impl Kick3d {
         }
     }
 
-    /// Face normal (foot → ball) at first touch, n0 = (cos φ, −sin φ, 0).
+    /// Face normal (foot → ball) at first touch, n0 = (cos φ, −sin φ, 0)
+    /// (with an [`Instep`], the normal where it touches the ball).
     pub fn initial_normal(&self) -> Vec3 {
+        if let Some(instep) = &self.instep {
+            return crate::patch::first_touch(self, instep).normal;
+        }
         let phi = self.obliquity();
         Vec3::new(phi.cos(), -phi.sin(), 0.0)
     }
@@ -438,6 +505,18 @@ impl Kick3d {
     /// Foot and ball at first touch (δ = 0), the foot's face tangent to the
     /// ball where the line of motion meets it.
     pub fn initial_state(&self) -> InitialState {
+        if let Some(instep) = &self.instep {
+            let touch = crate::patch::first_touch(self, instep);
+            let q = instep.orientation();
+            return InitialState {
+                foot_position: -(q * touch.centre),
+                foot_orientation: q,
+                foot_velocity: self.foot_direction() * self.base.foot_speed(),
+                ball_position: Vec3::ZERO,
+                ball_velocity: Vec3::X * self.base.ball_speed(),
+                normal: touch.normal,
+            };
+        }
         let n = self.initial_normal();
         let contact = -n * self.ball_radius;
         InitialState {
@@ -493,7 +572,38 @@ impl Kick3d {
     /// (Frictionless but oblique is not enough: the contact point slides along
     /// the face, the normal force then turns the foot and tilts the normal.)
     pub fn is_one_dimensional(&self) -> bool {
-        !self.gravity && self.initial_sliding_velocity().length() == 0.0
+        let centred = match &self.instep {
+            // The normal through the foot's centre of mass too; a patch on a
+            // cap damps each element at its own rate, which differs from δ̇
+            // off its axis (a flat face's patch is the 1D law exactly).
+            Some(instep) => {
+                let r0 = crate::patch::first_touch(self, instep).centre;
+                r0.y == 0.0 && r0.z == 0.0 && !(instep.is_curved() && instep.patch.is_some())
+            }
+            None => true,
+        };
+        centred && !self.gravity && self.initial_sliding_velocity().length() == 0.0
+    }
+
+    /// The ball centre from the foot's centre of mass at first touch, body
+    /// frame: (R + h_x, 0, 0) on the knife-edge face.
+    pub fn touch(&self) -> Vec3 {
+        match &self.instep {
+            Some(instep) => crate::patch::first_touch(self, instep).centre,
+            None => Vec3::new(self.ball_radius + self.face_distance(), 0.0, 0.0),
+        }
+    }
+
+    /// Refuse an instep surface or a patch on a path that models only the
+    /// box and the point contact (`full-state`, `rapier`).
+    pub fn require_point_contact_box(&self, path: &'static str) -> Result<(), Kick3dError> {
+        match &self.instep {
+            Some(i) if i.is_curved() || i.patch.is_some() => Err(Kick3dError::UnsupportedScene {
+                path,
+                reason: "a curved instep (`instep_radius`) or the patch contact (`patch_contact`) runs on the accurate path only",
+            }),
+            _ => Ok(()),
+        }
     }
 
     /// Time after which a contact still going is reported as no separation:
@@ -529,7 +639,7 @@ mod tests {
             let mut by_name = KickSpec::default();
             by_name.set_named(p.name, value).unwrap();
             assert_ne!(by_name, KickSpec::default(), "{}", p.name);
-            if p.level == Level::Kick3d {
+            if matches!(p.level, Level::Kick3d | Level::Instep) {
                 let from_toml: Kick3dSpec = toml::from_str(&format!("{} = {literal}", p.name)).unwrap();
                 assert_eq!(from_toml, by_name.kick3d, "{}", p.name);
             }

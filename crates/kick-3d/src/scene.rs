@@ -76,6 +76,7 @@ impl Scene {
         if kick.rigid_grip() {
             return Err(Kick3dError::UnsupportedScene { path: "rapier", reason: crate::model::RIGID_GRIP_PATHS });
         }
+        kick.require_point_contact_box("rapier")?;
         let dynamics = Dynamics::new(kick);
         let start = dynamics::initial_state(kick);
         let init = kick.initial_state();

@@ -94,6 +94,26 @@ impl<const THREE_D: bool> FlagSpec for FlightAfter<THREE_D> {
     }
 }
 
+/// `kick sweep3d`'s held parameters: the 1D and 3D kick's and `--law`, not
+/// the instep's (Level::Instep, kick-3d's `patch`): a sampled file's columns
+/// and provenance hold the row levels, so an instep setting would be lost
+/// from it (an experiment file keeps its text, and `/fixed` the kick's values).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SampledKick(pub KickSpec);
+
+impl FlagSpec for SampledKick {
+    const LAW: bool = true;
+    fn parameters() -> Vec<&'static ParameterDef> {
+        parameters::at_levels(KickSpec::LEVELS).filter(|p| p.level != kick_core::Level::Instep).collect()
+    }
+    fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
+        let _ = self.0.set_parameter(parameter, value);
+    }
+    fn set_law(&mut self, law: LawKind) {
+        SetLaw::set_law(&mut self.0, law);
+    }
+}
+
 /// `kick aim --from kick`: the 1D and 3D kick parameters and `--law`, but
 /// not those whose names the flight declares too (`ball_mass`,
 /// `ball_radius`, `gravity`: one flag per name; the kick keeps their defaults).
@@ -274,6 +294,21 @@ mod tests {
             } else {
                 assert!(parse::<ScenarioSpec>(&args).is_err(), "{} is not a 1D flag", p.name);
             }
+        }
+    }
+
+    /// `kick sweep3d` holds every 1D and 3D parameter but not the instep's
+    /// (its file would not record them), and refuses them as unknown flags.
+    #[test]
+    fn sweep3d_takes_no_instep_flags() {
+        for p in parameters::at_levels(KickSpec::LEVELS) {
+            let args: Vec<String> = match p.shape {
+                Shape::Scalar => vec![p.flag(), "0.25".into()],
+                Shape::Vector3 => vec![p.flag(), "0.25,0.5,0.75".into()],
+                Shape::Switch => vec![p.flag()],
+            };
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            assert_eq!(parse::<SampledKick>(&args).is_ok(), p.level != kick_core::Level::Instep, "{}", p.name);
         }
     }
 

@@ -514,7 +514,7 @@ struct Sweep3d {
     /// A 1D or 3D parameter given is held at that value instead of drawn;
     /// --law and --restitution set the normal contact law of every kick
     #[command(flatten)]
-    fixed: Flags<KickSpec>,
+    fixed: Flags<flags::SampledKick>,
 }
 
 #[derive(Args)]
@@ -714,7 +714,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         }
         Command::Sweep3d(a) => {
             let settings =
-                sweep3d::Sweep3dSettings { samples: a.samples, seed: a.seed, out: a.out, fixed: a.fixed.spec(), shard: a.shard, threads: a.threads, compress: compression(a.compress)? };
+                sweep3d::Sweep3dSettings { samples: a.samples, seed: a.seed, out: a.out, fixed: a.fixed.spec().0, shard: a.shard, threads: a.threads, compress: compression(a.compress)? };
             out.print(Format::Text, &sweep3d::sweep3d(&settings)?)
         }
         Command::Reproduce(a) => {

@@ -32,6 +32,10 @@ pub enum Level {
     Scenario,
     /// The off-center 3D kick (spin, friction), `kick simulate3d`.
     Kick3d,
+    /// The 3D kick's instep surface and contact model (kick-3d's `patch`):
+    /// settings of the 3D contact, like the shell ball's of its law; not
+    /// columns of result rows (their defaults are the rows' kicks).
+    Instep,
     /// The ball's flight after the kick (kick-flight's own list).
     Flight,
     /// The ball alone: the shell law's parameters (kick-core's `shell`) and
@@ -44,6 +48,7 @@ impl Level {
         match self {
             Level::Scenario => "1D scenario",
             Level::Kick3d => "3D kick",
+            Level::Instep => "3D instep",
             Level::Flight => "flight",
             Level::Bounce => "bounce",
         }
@@ -458,7 +463,7 @@ const fn scalar(
 }
 
 use DefaultValue::{Derived, Number, Unset};
-use Level::{Kick3d, Scenario};
+use Level::{Instep, Kick3d, Scenario};
 
 // The 1D scenario (Table 1's baseline as defaults). `Parameter::ALL` lists
 // the first eight in this order.
@@ -583,8 +588,38 @@ pub const GROUND_PLANE: ParameterDef = ParameterDef {
     doc: "A ground plane under the ball (rapier scene path)",
 };
 
+// The instep as a surface of its own (kick-3d's `patch` module): given,
+// they replace the knife-edge face tilted by asin(e/R); absent, the 3D kick
+// is exactly the one above.
+pub const FACE_YAW: ParameterDef = scalar(
+    "face_yaw", "ψ", "deg", Instep, Derived("asin(e/R): the face tangent to the ball where the swing line meets it (the knife edge)"),
+    Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"), None,
+    "Yaw of the instep's face normal from the foot's line of motion, about z (positive turns it as a positive offset's knife edge does)",
+);
+pub const FACE_PITCH: ParameterDef = scalar(
+    "face_pitch", "θ", "deg", Instep, Number(0.0),
+    Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"), None,
+    "Pitch of the instep's face normal above the horizontal (positive: the foot meets the ball below its centre)",
+);
+pub const INSTEP_RADIUS: ParameterDef = scalar(
+    "instep_radius", "r_i", "m", Instep, Number(0.0),
+    Valid::new(Bound::Closed(0.0), Bound::Unbounded, "finite and >= 0 (0: a flat face)"), None,
+    "Radius of curvature of the instep's contact surface, a sphere cap (0: flat); the offset is then the ball centre's distance from the swing line through the cap's pole",
+);
+pub const PATCH_CONTACT: ParameterDef = ParameterDef {
+    name: "patch_contact",
+    symbol: "patch",
+    unit: "",
+    level: Instep,
+    shape: Shape::Switch,
+    default: DefaultValue::Off,
+    valid: Valid::ANY,
+    sample: None,
+    doc: "Spread the shell ball's normal force over the contact patch, each element damped at its own rate (law shell)",
+};
+
 /// Every parameter of the 1D and 3D levels, each once, lower levels first.
-pub static PARAMETERS: [ParameterDef; 25] = [
+pub static PARAMETERS: [ParameterDef; 29] = [
     FOOT_MASS,
     BALL_MASS,
     FOOT_SPEED,
@@ -606,6 +641,10 @@ pub static PARAMETERS: [ParameterDef; 25] = [
     BORDER_RADIUS,
     GRAVITY_SWITCH,
     GROUND_PLANE,
+    FACE_YAW,
+    FACE_PITCH,
+    INSTEP_RADIUS,
+    PATCH_CONTACT,
     // Law `shell`'s ball (kick-core's shell.rs), taken by 1D kicks under it.
     crate::shell::INFLATION_PRESSURE,
     crate::shell::GAS_EXPONENT,

@@ -151,6 +151,16 @@ fn paths_without_the_constraint_refuse_it() {
     let turning = kick(rigid(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), friction: Some(0.5), ..Kick3dSpec::default() }));
     let e = Accurate3d::default().solve(&turning).unwrap_err();
     assert!(e.to_string().contains("approach_angle = 0"), "{e}");
+    // The patch or a curved instep: rigid grip holds a point contact on a flat face.
+    for spec in [
+        Kick3dSpec { patch_contact: Some(true), ..Kick3dSpec::default() },
+        Kick3dSpec { instep_radius: Some(0.15), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() },
+    ] {
+        let base = kick_core::Scenario::baseline().with_shell(kick_core::ShellBall::default_with_radius(0.11).unwrap());
+        let k = Kick3d::new(base, &rigid(Kick3dSpec { offset: Some(0.05), ..spec })).unwrap();
+        let e = Accurate3d::default().solve(&k).unwrap_err();
+        assert!(e.to_string().contains("leave out instep_radius and patch_contact"), "{e}");
+    }
     // A narrow instep face the ball rolls off.
     let off = kick(rigid(Kick3dSpec { offset: Some(0.08), foot_half_extents: Some([0.03, 0.01, 0.05]), ..Kick3dSpec::default() }));
     match Accurate3d::default().solve(&off) {

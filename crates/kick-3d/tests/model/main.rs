@@ -9,3 +9,4 @@ mod peaks;
 mod grip;
 mod history;
 mod support;
+mod patch;

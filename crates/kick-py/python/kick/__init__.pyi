@@ -9,9 +9,6 @@ from . import dask as dask
 __version__: str
 PARAMETERS: tuple[dict[str, Any], ...]
 STATUS: dict[int, str]
-
-class NumericalError(RuntimeError): ...
-
 OBSERVABLES: list[tuple[str, str]]
 HISTORY_COLUMNS: list[tuple[str, str]]
 HISTORY_COLUMNS_3D: list[tuple[str, str]]
@@ -68,6 +65,10 @@ def simulate3d(
     border_radius: float | None = ...,
     gravity: float | None = ...,
     ground: bool | None = ...,
+    face_yaw: float | None = ...,
+    face_pitch: float | None = ...,
+    instep_radius: float | None = ...,
+    patch_contact: bool | None = ...,
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
@@ -123,6 +124,10 @@ def simulate3d_many(
     border_radius: ArrayLike | None = ...,
     gravity: ArrayLike | None = ...,
     ground: ArrayLike | None = ...,
+    face_yaw: ArrayLike | None = ...,
+    face_pitch: ArrayLike | None = ...,
+    instep_radius: ArrayLike | None = ...,
+    patch_contact: ArrayLike | None = ...,
     inflation_pressure: ArrayLike | None = ...,
     gas_exponent: ArrayLike | None = ...,
     shell_stiffness: ArrayLike | None = ...,
@@ -180,6 +185,10 @@ def history3d(
     border_radius: float | None = ...,
     gravity: float | None = ...,
     ground: bool | None = ...,
+    face_yaw: float | None = ...,
+    face_pitch: float | None = ...,
+    instep_radius: float | None = ...,
+    patch_contact: bool | None = ...,
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
@@ -353,6 +362,10 @@ def aim(
     foot_half_extents: tuple[float, float, float] | Sequence[float] | None = ...,
     border_radius: float | None = ...,
     ground: bool | None = ...,
+    face_yaw: float | None = ...,
+    face_pitch: float | None = ...,
+    instep_radius: float | None = ...,
+    patch_contact: bool | None = ...,
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
