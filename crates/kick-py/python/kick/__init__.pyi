@@ -9,6 +9,9 @@ from . import dask as dask
 __version__: str
 PARAMETERS: tuple[dict[str, Any], ...]
 STATUS: dict[int, str]
+
+class NumericalError(RuntimeError): ...
+
 OBSERVABLES: list[tuple[str, str]]
 HISTORY_COLUMNS: list[tuple[str, str]]
 HISTORY_COLUMNS_3D: list[tuple[str, str]]
