@@ -518,7 +518,7 @@ fn is_three_d(at: &Locator, text: &str) -> Result<bool, ExperimentError> {
         },
         Ok(probe) => Ok(probe.kick3d.is_some()
             || probe.sweep.iter().flatten().any(|a| {
-                a.parameter.as_ref().and_then(|p| p.as_str()).and_then(parameters::find).is_some_and(|p| p.level == Level::Kick3d)
+                a.parameter.as_ref().and_then(|p| p.as_str()).and_then(parameters::find).is_some_and(|p| matches!(p.level, Level::Kick3d | Level::Instep))
             })),
         // The 1D reader names the problem.
         Err(_) => Ok(false),
@@ -884,5 +884,22 @@ mod tests {
         let refused = parse(Path::new("r.toml"), "[base]\nfoot_mass = 2.0\ninflation_pressure = 6.0e4\n").unwrap_err();
         assert_eq!(refused.line, 3, "{refused}");
         assert!(refused.to_string().contains("`base.inflation_pressure`: `inflation_pressure` does not apply to law `power-law`"), "{refused}");
+    }
+
+    /// The instep's parameters are 3D sweep axes (a file sweeping one is a
+    /// 3D file): every cell's kick is the one built by hand with that value.
+    #[test]
+    fn an_instep_parameter_is_a_3d_sweep_axis() {
+        use kick_core::parameters::{find, SetParameter, Value};
+        let text = "law = \"shell\"\n[kick3d]\noffset = 0.04\n[[sweep]]\nparameter = \"face_yaw\"\nvalues = [0.0, 10.0, 21.3]\n";
+        let e = parse(Path::new("yaw.toml"), text).unwrap();
+        let kicks = e.three_d().expect("a file sweeping face_yaw is 3D");
+        for (i, yaw) in [0.0, 10.0, 21.3].into_iter().enumerate() {
+            let mut spec = kick_3d::KickSpec::default();
+            spec.scenario.law = Some(kick_core::LawKind::Shell);
+            spec.set_parameter(find("offset").unwrap(), Value::Number(0.04)).unwrap();
+            spec.set_parameter(find("face_yaw").unwrap(), Value::Number(yaw)).unwrap();
+            assert_eq!(kicks.kick(i as u64).unwrap(), spec.build().unwrap(), "cell {i}");
+        }
     }
 }

@@ -19,7 +19,8 @@ use kick_core::{short, Parameter, Scenario};
 pub const MAX_CELLS_3D: u64 = 10_000_000;
 
 /// Parameter levels a 3D experiment takes.
-const LEVELS_3D: &[Level] = &[Level::Scenario, Level::Kick3d];
+/// The parameters a 3D file sweeps: the 1D scenario's, the 3D kick's and the instep's.
+const LEVELS_3D: &[Level] = &[Level::Scenario, Level::Kick3d, Level::Instep];
 
 /// The 3D part of an experiment: its solver and a grid of kicks, the base
 /// kick and every combination of the axes' values (cell order: the last
