@@ -114,27 +114,11 @@ pub struct Patch {
     weight: [f64; MAX_RINGS],
 }
 
-/// Gauss–Legendre nodes and weights on (0, 1), by Newton's method on P_n.
+/// Gauss–Legendre nodes and weights on (0, 1) (kick-core's rule).
 fn gauss_legendre(n: usize) -> ([f64; MAX_RINGS], [f64; MAX_RINGS]) {
     let (mut x, mut w) = ([0.0; MAX_RINGS], [0.0; MAX_RINGS]);
     for i in 0..n {
-        let mut t = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-        let mut derivative = 1.0;
-        for _ in 0..100 {
-            let (mut p0, mut p1) = (1.0, t);
-            for k in 2..=n {
-                let k = k as f64;
-                (p0, p1) = (p1, ((2.0 * k - 1.0) * t * p1 - (k - 1.0) * p0) / k);
-            }
-            derivative = n as f64 * (t * p1 - p0) / (t * t - 1.0);
-            let step = p1 / derivative;
-            t -= step;
-            if step.abs() < 1e-16 {
-                break;
-            }
-        }
-        x[i] = 0.5 * (1.0 - t);
-        w[i] = 1.0 / ((1.0 - t * t) * derivative * derivative);
+        (x[i], w[i]) = kick_core::special::gauss_legendre_node(n, i);
     }
     (x, w)
 }

@@ -272,16 +272,21 @@ mod tests {
         Flags::<S>::from_arg_matches(&matches)
     }
 
+    /// A parameter's flag with a value of its shape.
+    fn flag_args(p: &ParameterDef) -> Vec<String> {
+        match p.shape {
+            Shape::Scalar => vec![p.flag(), "0.25".into()],
+            Shape::Vector3 => vec![p.flag(), "0.25,0.5,0.75".into()],
+            Shape::Switch => vec![p.flag()],
+        }
+    }
+
     /// Every declared 1D and 3D parameter is a flag of `kick simulate3d`,
     /// every 1D one of `kick simulate`, and the value lands in the spec.
     #[test]
     fn every_declared_parameter_is_a_flag() {
         for p in parameters::at_levels(KickSpec::LEVELS) {
-            let args: Vec<String> = match p.shape {
-                Shape::Scalar => vec![p.flag(), "0.25".into()],
-                Shape::Vector3 => vec![p.flag(), "0.25,0.5,0.75".into()],
-                Shape::Switch => vec![p.flag()],
-            };
+            let args = flag_args(p);
             let args: Vec<&str> = args.iter().map(String::as_str).collect();
             let flags = parse::<KickSpec>(&args).unwrap_or_else(|e| panic!("{}: {e}", p.name));
             let mut expected = KickSpec::default();
@@ -302,11 +307,7 @@ mod tests {
     #[test]
     fn sweep3d_takes_no_instep_flags() {
         for p in parameters::at_levels(KickSpec::LEVELS) {
-            let args: Vec<String> = match p.shape {
-                Shape::Scalar => vec![p.flag(), "0.25".into()],
-                Shape::Vector3 => vec![p.flag(), "0.25,0.5,0.75".into()],
-                Shape::Switch => vec![p.flag()],
-            };
+            let args = flag_args(p);
             let args: Vec<&str> = args.iter().map(String::as_str).collect();
             assert_eq!(parse::<SampledKick>(&args).is_ok(), p.level != kick_core::Level::Instep, "{}", p.name);
         }

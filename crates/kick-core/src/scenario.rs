@@ -151,9 +151,9 @@ impl ScenarioSpec {
         let law = self.law.unwrap_or(LawKind::PowerLaw);
         law.check_given(self.damping.is_some(), self.restitution.is_some())?;
         if law != LawKind::Shell {
-            if let Some((name, _)) = self.ball_values().into_iter().find(|(_, v)| v.is_some()) {
+            if let Some((p, _)) = self.given_ball().next() {
                 return Err(KickError::DoesNotApply {
-                    given: name,
+                    given: p.name,
                     to: format!("law `{}`", law.name()),
                     reason: "it is a parameter of law shell (the pressurised ball)",
                 });
@@ -162,18 +162,9 @@ impl ScenarioSpec {
         Ok(())
     }
 
-    /// The shell ball's parameters as given, by declared name.
-    fn ball_values(&self) -> [(&'static str, Option<f64>); 4] {
-        [
-            (shell::INFLATION_PRESSURE.name, self.inflation_pressure),
-            (shell::GAS_EXPONENT.name, self.gas_exponent),
-            (shell::SHELL_STIFFNESS.name, self.shell_stiffness),
-            (shell::SHELL_LOSS.name, self.shell_loss),
-        ]
-    }
-
-    /// The shell ball's parameters given (for command lines a file records).
-    pub fn given_ball(&self) -> Vec<(&'static ParameterDef, f64)> {
+    /// The shell ball's parameters given, with their declarations (for the
+    /// law's check and for command lines a file records).
+    pub fn given_ball(&self) -> impl Iterator<Item = (&'static ParameterDef, f64)> {
         [
             (&shell::INFLATION_PRESSURE, self.inflation_pressure),
             (&shell::GAS_EXPONENT, self.gas_exponent),
@@ -182,7 +173,6 @@ impl ScenarioSpec {
         ]
         .into_iter()
         .filter_map(|(p, v)| v.map(|v| (p, v)))
-        .collect()
     }
 
     /// The ball of law `shell`: given values, declared defaults for the rest.

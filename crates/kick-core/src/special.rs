@@ -80,32 +80,35 @@ fn return_integrand(exponent: f64, margin: f64) -> impl Fn(f64, f64) -> f64 {
 const GAUSS_MARGIN: f64 = 0.5;
 const GAUSS_NODES: usize = 24;
 
+/// Node i and weight of the n-point Gauss–Legendre rule mapped to (0, 1):
+/// root i of P_n by Newton's method from the Chebyshev-like first guess,
+/// node (1 − x)/2, weight 1/((1 − x²) P_n'(x)²).
+pub fn gauss_legendre_node(n: usize, i: usize) -> (f64, f64) {
+    let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+    let mut derivative = 0.0;
+    for _ in 0..100 {
+        let (mut p0, mut p1) = (1.0, x);
+        for k in 2..=n {
+            let k = k as f64;
+            (p0, p1) = (p1, ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k);
+        }
+        derivative = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+        let step = p1 / derivative;
+        x -= step;
+        if step.abs() < 1e-16 {
+            break;
+        }
+    }
+    ((1.0 - x) / 2.0, 1.0 / ((1.0 - x * x) * derivative * derivative))
+}
+
 /// ∫₀¹ f by Gauss–Legendre with GAUSS_NODES nodes (computed once by Newton
 /// steps on the Legendre polynomial).
 fn gauss_legendre(f: impl Fn(f64) -> f64) -> f64 {
     static RULE: std::sync::OnceLock<[(f64, f64); GAUSS_NODES]> = std::sync::OnceLock::new();
     let rule = RULE.get_or_init(|| {
         let n = GAUSS_NODES;
-        std::array::from_fn(|i| {
-            // Root i of P_n on (−1, 1), from the Chebyshev-like first guess.
-            let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-            let mut derivative = 0.0;
-            for _ in 0..100 {
-                let (mut p0, mut p1) = (1.0, x);
-                for k in 2..=n {
-                    let k = k as f64;
-                    (p0, p1) = (p1, ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k);
-                }
-                derivative = n as f64 * (x * p1 - p0) / (x * x - 1.0);
-                let step = p1 / derivative;
-                x -= step;
-                if step.abs() < 1e-16 {
-                    break;
-                }
-            }
-            // Mapped to (0, 1): node (1 − x)/2, weight 1/((1 − x²) P_n'²).
-            ((1.0 - x) / 2.0, 1.0 / ((1.0 - x * x) * derivative * derivative))
-        })
+        std::array::from_fn(|i| gauss_legendre_node(n, i))
     });
     rule.iter().map(|&(node, weight)| weight * f(node)).sum()
 }
