@@ -408,7 +408,7 @@ impl Relative {
             Some((centre, radius)) => Surface::Sphere { centre, radius },
             None => Surface::Flat,
         };
-        let mut p = patch.resultant(surface, self.ball_radius, r, r_dot, delta, n, f0, slope);
+        let mut p = patch.resultant(surface, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope);
         let unclamped_force = n.dot(p.force);
         if self.phase.clamped {
             p.force = Vec3::ZERO;

@@ -37,16 +37,25 @@
 //! linear pressure field; only its shape is used, its total is the law's),
 //! and each element carries the law's loss with its own rate:
 //! f_i = w_i F_el(δ) (1 + χ ḣ_i), Σ w_i (ν_i · n) = 1, acting along the foot's
-//! normal ν_i at the element. ḣ_i is the rate of the depth at a point fixed
-//! on the foot (the undeformed sphere's overlap moves with its centre: ball
-//! spin does not change it), so under sliding the leading edge compresses
-//! faster than the trailing edge: the resultant shifts ahead of the centre
-//! by Cross's D ≈ χ v_t a²/(6 R) (paraboloid patch of radius a), and its
-//! line misses the ball's centre — spin without friction, in the sense of
-//! rolling resistance (it opposes the spin friction gives). Volumetric
-//! contact would need a volume stiffness, and Cross's D a fitted length;
-//! here both follow from the shell law. Friction acts at the patch's
-//! centroid (lever R − δ on a flat face, not R).
+//! normal ν_i at the element. ḣ_i is the ball material's approach to the foot
+//! at the element, −ν_i · (ṙ + Ω × q_i) (Ω the ball's angular velocity less
+//! the foot's): the relative normal velocity Hunt–Crossley and hydroelastic
+//! contact damp (Elandt et al. 2019). With it the loss is passive: the
+//! power it takes is slope Σ w_i ḣ_i² ≥ 0. (Until this change ḣ_i was the
+//! rate of the overlap's depth at a point fixed on the foot; that made
+//! sliding over a plane load its leading edge, turned the ball against
+//! friction's sense at μ = 0, and its power was no sum of squares.)
+//! What follows: sliding over a flat face compresses nothing unevenly
+//! (the moment is the rolling resistance −slope M₂ Ω_⊥ of a ball turning on
+//! it); sliding over a convex instep does — the cap's surface rises under
+//! the trailing side of the patch, whose material is pressed faster — so
+//! the resultant's line passes behind the ball's centre and the ball spins
+//! without friction, in the sense friction turns it: the wrap Asai et al.
+//! (2002) found in their finite-element kicks, here from the shell law's
+//! calibrated loss and the instep's curvature, with no constant of its own.
+//! Volumetric contact would need a volume stiffness, and Cross's offset D a
+//! fitted length. Friction acts at the patch's centroid (lever R − δ on a
+//! flat face, not R).
 //!
 //! Integration over the patch: on a flat face in closed form (depth and
 //! rate are functions of ρ alone, the moment's integral is a polynomial in
@@ -134,17 +143,20 @@ impl Patch {
     /// The normal force over the patch (body frame): its resultant on the
     /// ball, its moment about the ball's centre and the patch's centroid.
     /// `r` and `r_dot` are the ball centre and its rate in the foot's frame,
+    /// `turn` the ball's angular velocity less the foot's (Ω, foot frame),
     /// `delta` and `n` the compression and normal of the rigid geometry, and
     /// the law's unclamped force is `elastic + slope · rate` (affine in the rate).
     ///
     /// Element at radius ρ = a s, angle θ of the disc normal to n: the foot's
     /// surface point x, its normal ν, q = x − r; depth along ν to the
     /// undeformed ball h = (R² − |q|²)/(S − ν·q), S = √((ν·q)² + R² − |q|²)
-    /// (no cancellation at small δ); its rate at fixed x,
-    /// ḣ = −ν·ṙ − ((ν·q) ν·ṙ − q·ṙ)/S = A + B ρ⃗·ṙ.
+    /// (no cancellation at small δ); its rate is the ball material's approach
+    /// to the foot there, ḣ = −ν·(ṙ + Ω × q). On a cap (ν = (z n + ρ⃗)/r_f,
+    /// q × ν = (d/r_f) ρ⃗ × n) that is ḣ = −(z/r_f) ṙ_n − ρ⃗·V/r_f with
+    /// V = ṙ_t + d (n × Ω): the ball's velocity field at the cap's centre.
     #[allow(clippy::too_many_arguments)]
     #[inline]
-    pub fn resultant(&self, surface: Surface, ball_radius: f64, r: Vec3, r_dot: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
+    pub fn resultant(&self, surface: Surface, ball_radius: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
         let big_r = ball_radius;
         let r_n = n.dot(r_dot);
         let point = PatchForce { force: n * (elastic - slope * r_n), moment: Vec3::ZERO, centroid: r - n * big_r };
@@ -153,7 +165,7 @@ impl Patch {
         }
         let r_t = r_dot - n * r_n;
         if surface == Surface::Flat {
-            return flat(big_r, r, r_n, r_t, delta, n, elastic, slope);
+            return flat(big_r, r, r_n, turn, delta, n, elastic, slope);
         }
         let flat_a2 = delta * (2.0 * big_r - delta);
         // Sums over the rings, each already summed over θ (per N spokes).
@@ -174,21 +186,18 @@ impl Patch {
                     let nu_q = (rf * rf - d * z) * inv_rf;
                     let gap = a2 * (1.0 - t) * 2.0 * d / (x_f + z);
                     let root = (nu_q * nu_q + gap).sqrt();
-                    let inv_root = 1.0 / root;
                     let g = self.weight[i] * gap / (root - nu_q);
-                    let k = 1.0 + nu_q * inv_root;
                     let cos = z * inv_rf; // ν · n
-                    let a_rate = r_n * ((z - d) * inv_root - cos * k);
-                    let b_rate = inv_root - k * inv_rf;
                     total += g * cos;
                     sum_g += g;
                     sum_gz += g * z;
-                    rated += g * a_rate * cos;
-                    spread += g * b_rate * rho2;
+                    rated += g * cos * cos;
+                    spread += g * rho2;
                 }
-                along = elastic * total + slope * rated;
-                // Σ_θ ν (B ρ⃗·ṙ) = B ρ² ṙ_⊥ / (2 r_f) per spoke.
-                across = slope * spread * 0.5 * inv_rf;
+                // ḣ's part along n is −cos ṙ_n.
+                along = elastic * total - slope * r_n * rated;
+                // Σ_θ ν (−ρ⃗·V/r_f) = −ρ² V / (2 r_f²) per spoke.
+                across = -slope * spread * 0.5 * inv_rf * inv_rf;
             }
         }
         if !(total > 0.0) {
@@ -198,26 +207,29 @@ impl Patch {
             Surface::Flat => unreachable!("the flat face is closed form"),
             Surface::Sphere { centre, radius: rf } => {
                 let d = big_r + rf - delta;
-                // lever q × ν = (d/r_f) ρ⃗ × n; Σ_θ ρ⃗ (B ρ⃗·ṙ) × n = B ρ² (ṙ_⊥ × n)/2.
-                (n * (along / total) + r_t * (across / total), r_t.cross(n) * (across * d / total), centre + n * (sum_gz / sum_g))
+                let v = r_t + n.cross(turn) * d;
+                // lever q × ν = (d/r_f) ρ⃗ × n; Σ_θ (ρ⃗ × n)(ρ⃗·V) = ρ² (V × n)/2.
+                (n * (along / total) + v * (across / total), v.cross(n) * (across * d / total), centre + n * (sum_gz / sum_g))
             }
         };
         PatchForce { force, moment, centroid }
     }
 }
 
-/// The flat face in closed form: every element's normal is n and its
-/// depth h = √(R² − ρ²) − (R − δ) is a function of ρ alone, so with
-/// u = √(R² − ρ²): ∫ h ρ dρ = δ²(3R − δ)/6 and ∫ h ρ³/(2u) dρ = δ³(4R − δ)/24.
-/// The resultant is (F_el + slope δ̇) n (the 1D law: ḣ averages to δ̇), and
-/// its moment about the ball's centre slope · D₂ (ṙ_⊥ × n) with
-/// D₂ = δ(4R − δ)/(4(3R − δ)) (→ a²/(6R) for small δ: Cross's shift D is
-/// χ v_t D₂ for the shell law).
+/// The flat face in closed form: every element's normal is n, its depth
+/// h = √(R² − ρ²) − (R − δ) a function of ρ alone and its rate
+/// ḣ = −ṙ_n − ρ⃗·(n × Ω) (sliding over a plane compresses nothing), so
+/// ∫ h ρ dρ = δ²(3R − δ)/6 and ∫ h ρ³ dρ = δ³(20c² + 25cδ + 8δ²)/60,
+/// c = R − δ. The resultant is (F_el + slope δ̇) n (the 1D law: ḣ averages
+/// to δ̇), and its moment about the ball's centre −slope M₂ Ω_⊥ with
+/// M₂ = ∫ h ρ³/2 / ∫ h ρ = δ(20R² − 15Rδ + 3δ²)/(20(3R − δ)) (→ a²/6):
+/// the rolling resistance of a ball turning on the face.
 #[allow(clippy::too_many_arguments)]
 #[inline]
-fn flat(big_r: f64, r: Vec3, r_n: f64, r_t: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
-    let d2 = delta * (4.0 * big_r - delta) / (4.0 * (3.0 * big_r - delta));
-    PatchForce { force: n * (elastic - slope * r_n), moment: r_t.cross(n) * (slope * d2), centroid: r - n * (big_r - delta) }
+fn flat(big_r: f64, r: Vec3, r_n: f64, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
+    let m2 = delta * (20.0 * big_r * big_r - 15.0 * big_r * delta + 3.0 * delta * delta) / (20.0 * (3.0 * big_r - delta));
+    let turn_t = turn - n * n.dot(turn);
+    PatchForce { force: n * (elastic - slope * r_n), moment: turn_t * (-slope * m2), centroid: r - n * (big_r - delta) }
 }
 
 /// The normal force over the patch, body frame.
@@ -342,11 +354,12 @@ mod tests {
     /// The element sum written out independently: every element of a polar
     /// grid (64 Gauss nodes in s = ρ/a with weight s, 64 angles) on the foot's
     /// surface, its depth along ν by the plain formula ν·q + √((ν·q)² + R² − |q|²)
-    /// and its rate by a central difference of that depth as the ball centre
-    /// moves along ṙ. The closed form (flat) and the ring rule (cap) agree to
-    /// the difference's error.
+    /// and its rate by a central difference of the penetration into the foot
+    /// of the undeformed ball's point y = x − h ν as the ball moves rigidly
+    /// (ṙ, Ω). The closed form (flat) and the ring rule (cap) agree to the
+    /// difference's error.
     #[allow(clippy::too_many_arguments)]
-    fn brute(surface: Surface, big_r: f64, r: Vec3, r_dot: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
+    fn brute(surface: Surface, big_r: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> (PatchForce, f64) {
         let depth = |x: Vec3, nu: Vec3, r: Vec3| {
             let q = x - r;
             let nq = nu.dot(q);
@@ -364,7 +377,7 @@ mod tests {
         let e1 = Vec3::Z.cross(n).normalize();
         let e2 = n.cross(e1);
         let eps = 1e-7;
-        let (mut total, mut force, mut moment) = (0.0, Vec3::ZERO, Vec3::ZERO);
+        let (mut total, mut force, mut moment, mut loss) = (0.0, Vec3::ZERO, Vec3::ZERO, 0.0);
         for i in 0..64 {
             for j in 0..64 {
                 let angle = std::f64::consts::TAU * (j as f64 + 0.5) / 64.0;
@@ -377,22 +390,34 @@ mod tests {
                     }
                 };
                 let h = depth(x, nu, r);
-                let rate = (depth(x, nu, r + r_dot * eps) - depth(x, nu, r - r_dot * eps)) / (2.0 * eps);
+                let y = x - nu * h;
+                let moved = |t: f64| y + (r_dot + turn.cross(y - r)) * t;
+                let inside = |p: Vec3| match surface {
+                    Surface::Flat => n.dot(r - n * (big_r - delta) - p),
+                    Surface::Sphere { centre, radius: rf } => rf - (p - centre).length(),
+                };
+                let rate = (inside(moved(eps)) - inside(moved(-eps))) / (2.0 * eps);
                 let w = g[i] * s_nodes[i] * h;
                 total += w * nu.dot(n);
                 let f = nu * (w * (elastic + slope * rate));
                 force += f;
                 moment += (x - r).cross(f);
+                loss += w * slope * rate * rate;
             }
         }
-        PatchForce { force: force / total, moment: moment / total, centroid: Vec3::ZERO }
+        (PatchForce { force: force / total, moment: moment / total, centroid: Vec3::ZERO }, loss / total)
     }
 
     #[test]
     fn closed_form_and_rings_are_the_element_sum() {
         let (big_r, rf) = (0.11, 0.15);
         for delta in [0.002, 0.02, 0.04] {
-            for r_dot in [Vec3::new(-12.0, 0.0, 0.0), Vec3::new(-10.0, 5.0, 2.0), Vec3::new(4.0, -6.0, 1.0)] {
+            for (r_dot, turn) in [
+                (Vec3::new(-12.0, 0.0, 0.0), Vec3::ZERO),
+                (Vec3::new(-10.0, 5.0, 2.0), Vec3::ZERO),
+                (Vec3::new(4.0, -6.0, 1.0), Vec3::new(30.0, -50.0, 80.0)),
+                (Vec3::new(-8.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 60.0)),
+            ] {
                 let flat_r = Vec3::new(0.03 + big_r - delta, 0.01, -0.02);
                 let centre = Vec3::new(0.03 - rf, 0.0, 0.0);
                 let n = Vec3::new(0.99, 0.1, -0.05).normalize();
@@ -400,8 +425,8 @@ mod tests {
                 let patch = Patch::new(Quadrature::default());
                 for (surface, r, n) in [(Surface::Flat, flat_r, Vec3::X), (Surface::Sphere { centre, radius: rf }, cap_r, n)] {
                     let (elastic, slope) = (1500.0, 70.0);
-                    let got = patch.resultant(surface, big_r, r, r_dot, delta, n, elastic, slope);
-                    let want = brute(surface, big_r, r, r_dot, delta, n, elastic, slope);
+                    let got = patch.resultant(surface, big_r, r, r_dot, turn, delta, n, elastic, slope);
+                    let (want, _) = brute(surface, big_r, r, r_dot, turn, delta, n, elastic, slope);
                     let scale = want.force.length();
                     assert!((got.force - want.force).length() <= 1e-7 * scale, "{surface:?} δ={delta}: {:?} vs {:?}", got.force, want.force);
                     // The moment against its own size (it is ∝ slope · δ · v_t).
@@ -410,6 +435,47 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The loss is passive: the power the element forces take out of the
+    /// relative motion, less the elastic part, is slope Σ w ḣ² ≥ 0 (each
+    /// element's loss force times its own rate), summed independently on the
+    /// polar grid. A rate other than the material's (e.g. the depth's rate at
+    /// a point fixed on the foot) breaks the square.
+    #[test]
+    fn the_loss_takes_power_as_a_sum_of_squares() {
+        let (big_r, rf) = (0.11, 0.15);
+        let patch = Patch::new(Quadrature::default());
+        let centre = Vec3::new(0.03 - rf, 0.0, 0.0);
+        let n = Vec3::new(0.98, -0.15, 0.1).normalize();
+        for delta in [0.003, 0.03] {
+            for (r_dot, turn) in [
+                (Vec3::new(-9.0, 7.0, 0.0), Vec3::ZERO),
+                (Vec3::new(3.0, -8.0, 2.0), Vec3::new(-40.0, 10.0, 90.0)),
+                (Vec3::new(0.0, 0.0, 12.0), Vec3::new(0.0, 70.0, 0.0)),
+            ] {
+                let (flat_r, cap_r) = (Vec3::new(0.03 + big_r - delta, 0.01, -0.02), centre + n * (big_r + rf - delta));
+                for (surface, r, n) in [(Surface::Flat, flat_r, Vec3::X), (Surface::Sphere { centre, radius: rf }, cap_r, n)] {
+                    let (elastic, slope) = (1500.0, 70.0);
+                    let got = patch.resultant(surface, big_r, r, r_dot, turn, delta, n, elastic, slope);
+                    let taken = -(got.force.dot(r_dot) + got.moment.dot(turn) - elastic * n.dot(r_dot));
+                    let (_, want) = brute(surface, big_r, r, r_dot, turn, delta, n, elastic, slope);
+                    assert!(want > 0.0 && (taken - want).abs() <= 1e-6 * want, "{surface:?} δ={delta} {r_dot:?} {turn:?}: {taken} vs {want}");
+                }
+            }
+        }
+    }
+
+    /// Sliding over a plane compresses no part of the ball more than another:
+    /// no moment without a turn, on the flat face.
+    #[test]
+    fn sliding_over_a_plane_turns_nothing() {
+        let patch = Patch::new(Quadrature::default());
+        let (big_r, delta) = (0.11, 0.02);
+        let r = Vec3::new(0.03 + big_r - delta, 0.04, 0.0);
+        let p = patch.resultant(Surface::Flat, big_r, r, Vec3::new(-10.0, 8.0, -3.0), Vec3::ZERO, delta, Vec3::X, 1500.0, 70.0);
+        assert_eq!(p.moment, Vec3::ZERO);
+        assert_eq!(p.force, Vec3::X * (1500.0 + 70.0 * 10.0));
     }
 
     /// Gauss–Legendre on (0, 1) integrates polynomials of degree 2n − 1 exactly.
