@@ -69,17 +69,46 @@ pub struct SpinPoint {
 pub fn spin_point(base: &Scenario, offset: f64, friction: f64) -> Result<SpinPoint, Kick3dError> {
     let spec = Kick3dSpec { offset: Some(offset), friction: Some(friction), ..Kick3dSpec::default() };
     let kick = Kick3d::new(*base, &spec)?;
-    let o = Accurate3d::default().solve(&kick)?;
-    let [x, y, z] = o.spin;
-    Ok(SpinPoint {
-        offset,
-        friction,
-        spin: (x * x + y * y + z * z).sqrt(),
-        speed: o.speed,
-        normal_impulse: o.normal_impulse,
-        slip_time: o.slip_time,
-        contact_time: o.contact_time,
-    })
+    Ok(SpinPoint::of(offset, friction, &Accurate3d::default().solve(&kick)?))
+}
+
+impl SpinPoint {
+    fn of(offset: f64, friction: f64, o: &crate::Outcome3d) -> SpinPoint {
+        let [x, y, z] = o.spin;
+        SpinPoint {
+            offset,
+            friction,
+            spin: (x * x + y * y + z * z).sqrt(),
+            speed: o.speed,
+            normal_impulse: o.normal_impulse,
+            slip_time: o.slip_time,
+            contact_time: o.contact_time,
+        }
+    }
+}
+
+/// The instep radius of the patch kicks set beside Asai et al.: an
+/// assumption, of the order of the ball's radius (no published instep or
+/// boot-vamp curvature was found; see [`crate::patch`]).
+pub const ASSUMED_INSTEP_RADIUS: f64 = 0.15;
+
+/// One kick of the shell ball (`shell`, a scenario with law `shell`) on a
+/// convex instep of radius `instep_radius`, face square to the swing
+/// (yaw 0), the contact spread over its patch ([`crate::patch`]); the offset
+/// is the ball centre's distance from the swing line through the instep's
+/// apex, as Asai et al.'s foot-axis-to-ball-axis offset. Returns the spin
+/// vector (world frame, rad/s) with the point.
+pub fn patch_spin_point(shell: &Scenario, offset: f64, friction: f64, instep_radius: f64) -> Result<(SpinPoint, [f64; 3]), Kick3dError> {
+    let spec = Kick3dSpec {
+        offset: Some(offset),
+        friction: Some(friction),
+        face_yaw_deg: Some(0.0),
+        instep_radius: Some(instep_radius),
+        patch_contact: Some(true),
+        ..Kick3dSpec::default()
+    };
+    let o = Accurate3d::default().solve(&Kick3d::new(*shell, &spec)?)?;
+    Ok((SpinPoint::of(offset, friction, &o), o.spin))
 }
 
 /// The offsets of the sweep for a ball of radius `radius`.

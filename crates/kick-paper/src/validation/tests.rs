@@ -160,3 +160,39 @@ fn zero_friction_spin_is_zero_to_rounding() {
     assert!(page.contains("0 (< 1e-12)"));
     assert!(!page.contains("e-19") && !page.contains("e-14"));
 }
+
+/// The patch rows: the frictionless spin is a kick built here by hand (shell
+/// ball, cap, face square, patch) and turns as friction turns the ball; the
+/// friction gain is the largest of its differences over the sweep.
+#[test]
+fn patch_rows_are_the_kicks_they_name() {
+    let (v, _, _) = validation();
+    let row = |quantity: &str| {
+        v.curve_kicks.rows.iter().find(|r| r.model.contains("patch") && r.comparison.quantity == quantity).unwrap_or_else(|| panic!("no patch row {quantity}"))
+    };
+    let shell = Scenario::baseline().with_shell(ShellBall::default_with_radius(DEFAULT_BALL_RADIUS).unwrap());
+    let solve = |e: f64, mu: f64| {
+        let spec = kick_3d::Kick3dSpec {
+            offset: Some(e),
+            friction: Some(mu),
+            face_yaw_deg: Some(0.0),
+            instep_radius: Some(0.15),
+            patch_contact: Some(true),
+            ..kick_3d::Kick3dSpec::default()
+        };
+        kick_3d::Accurate3d::default().solve(&kick_3d::Kick3d::new(shell, &spec).unwrap()).unwrap().spin
+    };
+    let norm = |w: [f64; 3]| (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+    let (zero, rubbed) = (solve(PATCH_LARGEST_OFFSET, 0.0), solve(PATCH_LARGEST_OFFSET, 0.5));
+    let frictionless = row("spin without friction");
+    assert!((frictionless.comparison.model - norm(zero)).abs() <= 1e-12 * norm(zero), "{} vs {zero:?}", frictionless.comparison.model);
+    assert!(norm(zero) > 1.0 && zero.iter().zip(&rubbed).map(|(a, b)| a * b).sum::<f64>() > 0.0, "{zero:?} {rubbed:?}");
+    assert!(frictionless.comparison.note.contains("friction's sense (as friction's spin at mu = 0.5): true"));
+    let gain = row("spin added by friction 0 -> 1 (largest over offsets)").comparison.model;
+    let mut best = f64::NEG_INFINITY;
+    for i in 0..=PATCH_OFFSET_STEPS {
+        let e = PATCH_LARGEST_OFFSET * i as f64 / PATCH_OFFSET_STEPS as f64;
+        best = best.max(norm(solve(e, 1.0)) - norm(solve(e, 0.0)));
+    }
+    assert!((gain - best).abs() <= 1e-9 * best, "{gain} vs {best}");
+}
