@@ -603,7 +603,9 @@ pub const FACE_PITCH: ParameterDef = scalar(
 );
 pub const INSTEP_RADIUS: ParameterDef = scalar(
     "instep_radius", "r_i", "m", Instep, Number(0.0),
-    Valid::new(Bound::Closed(0.0), Bound::Unbounded, "finite and >= 0 (0: a flat face)"), None,
+    // Flatter caps lose their digits (d = R + r_i − δ against a² / 2d) and are
+    // the flat face to 1e-4 anyway (`a_flatter_cap_tends_to_the_flat_face`).
+    Valid::new(Bound::Closed(0.0), Bound::Closed(1000.0), "0 (a flat face) to 1000 m"), None,
     "Radius of curvature of the instep's contact surface, a sphere cap (0: flat); the offset is then the ball centre's distance from the swing line through the cap's pole",
 );
 pub const PATCH_CONTACT: ParameterDef = ParameterDef {
