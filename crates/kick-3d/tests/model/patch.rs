@@ -313,3 +313,26 @@ fn a_flatter_cap_tends_to_the_flat_face() {
     assert!(near <= 0.3 / 10.0 && far <= 0.3 / 1000.0, "{near:.2e} {far:.2e}");
     assert!((near / far - 100.0).abs() < 10.0, "first order in 1/r_i: {near:.2e} {far:.2e}");
 }
+
+/// Only the loss breaks the patch's symmetry: with the shell's loss off
+/// (χ = 0) the elastic resultant is F_el(δ) n along the line of centres, so
+/// a frictionless kick on the cap leaves the ball without spin (to the
+/// solver's 1e-9 of the lossy kick's spin).
+#[test]
+fn without_loss_the_patch_does_not_turn_the_ball() {
+    let lossy = solve(&oblique(0.0, Some(0.15)));
+    let ball = kick_core::ShellBall { shell_loss: 0.0, ..kick_core::ShellBall::default_with_radius(kick_core::DEFAULT_BALL_RADIUS).unwrap() };
+    let spec = Kick3dSpec {
+        offset: Some(0.05),
+        approach_angle_deg: Some(10.0),
+        friction: Some(0.0),
+        instep_radius: Some(0.15),
+        face_yaw_deg: Some(0.0),
+        patch_contact: Some(true),
+        ..Kick3dSpec::default()
+    };
+    let elastic = solve(&Kick3d::new(Scenario::baseline().with_shell(ball), &spec).unwrap());
+    println!("spin lossy {:?}, elastic {:?}", lossy.spin, elastic.spin);
+    assert!(norm(lossy.spin) > 1.0);
+    assert!(norm(elastic.spin) <= 1e-9 * norm(lossy.spin), "{:?}", elastic.spin);
+}
