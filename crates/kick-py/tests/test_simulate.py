@@ -37,6 +37,9 @@ CASES_3D = [
     # The shell ball's own keywords reach the 3D kick; rigid grip is a constraint.
     {"offset": 0.05, "law": "shell", "inflation_pressure": 6.0e4, "shell_loss": 0.03},
     {"offset": 0.05, "friction": 0.8, "tangential_stiffness": float("inf")},
+    # The instep's keywords: a face turned by yaw and pitch, a convex cap, the patch contact.
+    {"offset": 0.03, "face_yaw": 5.0, "face_pitch": -3.0},
+    {"offset": 0.05, "law": "shell", "face_yaw": 0.0, "instep_radius": 0.15, "patch_contact": True, "friction": 0.0},
 ]
 
 
@@ -65,6 +68,8 @@ ERRORS = [
     ("simulate", {"inflation_pressure": 7.0e4}),
     ("simulate", {"law": "shell", "damping": 100.0}),
     ("simulate", {"law": "shell", "restitution": 0.6}),
+    ("simulate3d", {"patch_contact": True}),
+    ("simulate3d", {"law": "shell", "instep_radius": 1.0e10, "face_yaw": 0.0}),
 ]
 
 
