@@ -121,8 +121,7 @@ pub struct SpinData {
     pub curves: Vec<Curve>,
 }
 
-fn solve(contact: &Contact, offset: f64, friction: f64) -> Result<kick_3d::Outcome3d, Kick3dError> {
-    let base = shell().map_err(|_| Kick3dError::InvalidParameter { name: "law", value: f64::NAN, requirement: "the shell law" })?;
+fn solve(base: Scenario, contact: &Contact, offset: f64, friction: f64) -> Result<kick_3d::Outcome3d, Kick3dError> {
     kick_3d::Accurate3d::default().solve(&Kick3d::new(base, &contact.spec(offset, friction))?)
 }
 
@@ -130,6 +129,7 @@ fn solve(contact: &Contact, offset: f64, friction: f64) -> Result<kick_3d::Outco
 /// left out of its curve with its reason. A numerical failure is an error.
 pub fn compute() -> Result<SpinData, String> {
     let offsets = offsets();
+    let base = shell()?;
     let mut curves = Vec::new();
     for (c, contact) in CONTACTS.iter().enumerate() {
         for &friction in &FRICTIONS {
@@ -145,7 +145,7 @@ pub fn compute() -> Result<SpinData, String> {
                 refused: Vec::new(),
             };
             for &e in &offsets {
-                match solve(contact, e, friction) {
+                match solve(base, contact, e, friction) {
                     Ok(o) => {
                         let [x, y, z] = o.spin;
                         curve.offset.push(e);
