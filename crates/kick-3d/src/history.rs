@@ -59,11 +59,19 @@ pub struct Sample3d {
     pub foot_angular_velocity: [f64; 3],
     /// δ, m.
     pub compression: f64,
-    /// F_n n on the ball, N.
+    /// The normal force on the ball, N: F_n n at a point contact; over a
+    /// patch ([`crate::patch`]) the resultant of the element forces (on a
+    /// cap not quite along n: each element pushes along its own normal).
     pub normal_force: [f64; 3],
     /// F_t on the ball, N.
     pub tangential_force: [f64; 3],
     pub contact_state: ContactState,
+    /// The normal force's moment about the ball's centre, N m: zero at a
+    /// point contact (its line passes through the centre), not over a patch.
+    pub normal_moment: [f64; 3],
+    /// Where the tangential force acts, from the ball's centre, m: −R n at a
+    /// point contact, the patch's centroid over a patch (friction's arm).
+    pub contact_arm: [f64; 3],
 }
 
 /// Names and units of a 3D history's columns, in [`Sample3d::values`] order:
@@ -125,6 +133,28 @@ impl Sample3d {
     }
 }
 
+/// The patch's columns ([`Sample3d::patch_values`] order), written after
+/// [`HISTORY_COLUMNS_3D`] for a kick whose normal force is spread over a
+/// patch: the ball's spin obeys I_b ω̇ = M + a × F_t with M the
+/// `normal_moment` and a the `contact_arm` (world frame).
+pub const PATCH_COLUMNS_3D: [(&str, &str); 6] = [
+    ("normal_moment_x", "N m"),
+    ("normal_moment_y", "N m"),
+    ("normal_moment_z", "N m"),
+    ("contact_arm_x", "m"),
+    ("contact_arm_y", "m"),
+    ("contact_arm_z", "m"),
+];
+
+impl Sample3d {
+    /// Values in [`PATCH_COLUMNS_3D`] order.
+    pub fn patch_values(&self) -> [f64; 6] {
+        let [mx, my, mz] = self.normal_moment;
+        let [ax, ay, az] = self.contact_arm;
+        [mx, my, mz, ax, ay, az]
+    }
+}
+
 /// The grid's samples are handed over by kick-compliant's sampler.
 pub type Sampler3d<'a> = kick_compliant::history::Sampler<'a, Sample3d>;
 
@@ -142,6 +172,11 @@ pub(crate) fn sample(kick: &Kick3d, system: &Relative, x: f64, y: &State, t: f64
         Friction::Grip => ContactState::Grip,
         Friction::Slip | Friction::None => ContactState::Slip,
     });
+    // The force on the ball as the right-hand side applies it (contact::Relative::derivative).
+    let (normal_force, normal_moment, arm) = match c.patch {
+        Some(p) => (p.force, p.moment, c.point - system.centre(y)),
+        None => (c.normal * c.normal_force, Vec3::ZERO, c.normal * -system.ball_radius),
+    };
     Sample3d {
         time: t,
         ball_position: array(e.ball_position),
@@ -151,9 +186,11 @@ pub(crate) fn sample(kick: &Kick3d, system: &Relative, x: f64, y: &State, t: f64
         foot_velocity: array(e.foot_velocity),
         foot_angular_velocity: array(e.foot_angular_velocity),
         compression: c.compression,
-        normal_force: array(q * (c.normal * c.normal_force)),
+        normal_force: array(q * normal_force),
         tangential_force: array(q * c.tangential_force),
         contact_state,
+        normal_moment: array(q * normal_moment),
+        contact_arm: array(q * arm),
     }
 }
 

@@ -39,7 +39,7 @@ pub mod validation;
 pub use accurate::Accurate3d;
 pub use error::Kick3dError;
 pub use full_state::FullState3d;
-pub use history::{ContactState, Sample3d, HISTORY_COLUMNS_3D};
+pub use history::{ContactState, Sample3d, HISTORY_COLUMNS_3D, PATCH_COLUMNS_3D};
 pub use model::{FootShape, Instep, Kick3d, Kick3dSpec, KickSpec};
 pub use outcome::{EnergyPartition, Outcome3d, OBSERVABLES_3D};
 

@@ -42,7 +42,7 @@ pub fn reproduce_force_history(out: &Path, figures: &Path) -> Result<(String, St
 
 /// Runs of equal `state` as (first time, last time) intervals, their ends
 /// halfway between the rows where the state changes.
-fn phases(time: &[f64], state: &[f64], code: f64) -> Vec<(f64, f64)> {
+pub(crate) fn phases(time: &[f64], state: &[f64], code: f64) -> Vec<(f64, f64)> {
     let mut out = Vec::new();
     let mut start = None;
     for i in 0..time.len() {

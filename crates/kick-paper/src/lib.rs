@@ -17,6 +17,7 @@ pub mod identify;
 pub mod leg;
 pub mod links;
 pub mod pages_3d;
+pub mod patch;
 pub mod report;
 pub mod reproduce;
 pub mod three_d;

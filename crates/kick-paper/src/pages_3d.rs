@@ -26,7 +26,7 @@ fn err(e: impl std::fmt::Display) -> String {
 }
 
 /// `x` to `digits` significant digits, as text.
-fn sig(x: f64, digits: usize) -> String {
+pub(crate) fn sig(x: f64, digits: usize) -> String {
     if !x.is_finite() {
         return "—".into();
     }
@@ -368,6 +368,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
         sig(o.spin_rpm, 3),
     );
 
+    w.push_str(&crate::patch::page_section(out, report_dir)?);
     let _ = writeln!(
         w,
         "## Against published curve-kick studies\n\n\

@@ -93,6 +93,9 @@ pub enum Call {
     Run3d { file: PathBuf, out: PathBuf, figures: PathBuf },
     /// One off-center kick's force history and its figure.
     ForceHistory { out: PathBuf, figures: PathBuf },
+    /// The contact patch: spin against offset beside Asai et al. and one
+    /// kick's patch over time, their files and figures (part of `kick reproduce` only).
+    Patch { out: PathBuf, figures: PathBuf },
     /// `kick leg --knee K --ankle A --sweep-out OUT`.
     Leg(crate::leg::LegSettings),
     /// `kick laws`.
@@ -129,12 +132,13 @@ pub struct Step {
 }
 
 /// The names of the steps, in the order they run.
-pub const STEP_NAMES: [&str; 17] = [
+pub const STEP_NAMES: [&str; 18] = [
     "experiments",
     "figures",
     "checks",
     "3d",
     "force-history",
+    "patch",
     "leg",
     "ball",
     "laws",
@@ -216,7 +220,7 @@ impl Call {
                 b.report.as_deref().map(|r| format!(" --report {}", d(r))).unwrap_or_default(),
                 b.solvers_report.as_deref().map(|r| format!(" --solvers-report {}", d(r))).unwrap_or_default()
             ),
-            Call::Figures { .. } | Call::Ball | Call::Pages | Call::Validation | Call::Pages3d | Call::Report => format!(
+            Call::Figures { .. } | Call::Patch { .. } | Call::Ball | Call::Pages | Call::Validation | Call::Pages3d | Call::Report => format!(
                 "kick reproduce --experiments {} --out {} --report {}{} --only {step}",
                 d(&args.experiments),
                 d(&args.out),
@@ -259,12 +263,13 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         ..kick_core::ScenarioSpec::default()
     };
     let synthesize = |name: &str, seed, truth, time_offset| Call::Synthesize { out: fits.clone(), name: name.into(), seed, times: 80, truth, time_offset };
-    let calls: [Vec<Call>; 17] = [
+    let calls: [Vec<Call>; 18] = [
         files.into_iter().map(|file| Call::Run { file, out: out.clone() }).collect(),
         vec![Call::Figures { out: out.clone(), figures: figures.clone() }],
         vec![Call::Checks],
         three_d.into_iter().map(|file| Call::Run3d { file, out: out.clone(), figures: figures.clone() }).collect(),
         vec![Call::ForceHistory { out: out.clone(), figures: figures.clone() }],
+        vec![Call::Patch { out: out.clone(), figures: figures.clone() }],
         vec![leg_call(args)],
         vec![Call::Ball],
         vec![Call::Laws(crate::identify::LawsSettings { scenarios: args.experiments.join("table2.toml"), out: Some(fits.clone()), samples: 200 })],
@@ -372,6 +377,11 @@ impl Call {
                 let (_, summary, drawn) = crate::force_history::reproduce_force_history(out, figures)?;
                 say(log, &summary);
                 say(log, &format!("figures: {} files in {}\n", drawn.len() - 1, figures.display()));
+            }
+            Call::Patch { out, figures } => {
+                let measurements = args.experiments.join("validation/measurements.toml");
+                let written = crate::patch::write(out, figures, &measurements, &self.command(args, "patch"))?;
+                say(log, &format!("the contact patch: {} files\n", written.len()));
             }
             Call::Leg(settings) => {
                 // The command goes into the files' provenance.

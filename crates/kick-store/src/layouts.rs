@@ -91,7 +91,8 @@ pub const HISTORY: Layout = Layout {
         ("/", "attributes", "provenance; `level` (`1d`, `3d`, `flight`); `solver` and `law` (1D, 3D) or `drag`, `lift` \
                              (flight); `samples` (rows); `samples_requested` or `interval` (s)"),
         ("/history/<name>", "f64[samples]", "one column each: kick_core::HISTORY_COLUMNS (1D), \
-                                             kick_3d::HISTORY_COLUMNS_3D (3D), the flight's FLIGHT_HISTORY_COLUMNS"),
+                                             kick_3d::HISTORY_COLUMNS_3D (3D; then kick_3d::PATCH_COLUMNS_3D when the \
+                                             normal force is spread over a patch), the flight's FLIGHT_HISTORY_COLUMNS"),
         ("/fixed/<name>", "f64[1 or 3]", "every parameter the run was solved with (defaults filled in; switches 0/1)"),
     ],
     changes: "",
@@ -150,8 +151,36 @@ pub const IDENTIFIABILITY: Layout = Layout {
     changes: "",
 };
 
+/// Spin against offset of one kick per contact model and friction, the
+/// points solved only (`kick reproduce`'s patch step).
+pub const PATCH_SPIN: Layout = Layout {
+    name: "patch-spin",
+    version: 1,
+    written_by: "`kick reproduce` (step `patch`, `kick_paper::patch`)",
+    summary: "Off-center 3D kicks of one ball and foot against the offset, one curve per contact model and friction \
+              coefficient; a kick the solver refuses is left out of its curve (no NaN), its offset and the reason kept.",
+    objects: &[
+        ("/", "attributes", "provenance; `description`; `law`; `solver`"),
+        ("/fixed/<name>", "f64[1 or 3]", "every parameter the contacts' kicks share, offset and friction aside (defaults filled in)"),
+        ("/grid/offset", "f64[n]", "the offsets asked for, m"),
+        ("/asai2002/friction_gain, peak_offset", "f64[1]", "what the figure is drawn beside: Asai et al.'s (2002) \
+                                                           largest spin gain from friction 0 → 1 (rad/s) and offset of \
+                                                           largest spin (m), from the measurement file (attribute \
+                                                           `source`: the file and keys)"),
+        ("/curves/<contact>/mu_<μ>", "group", "one curve: `<contact>` is `point` (the rigid sphere's point contact on \
+                                              the knife-edge face) or `patch_cap` (the patch on a cap); attribute \
+                                              `contact` (what it is, in words); datasets `friction` (1), `patch_contact` \
+                                              (0/1) and `instep_radius` (m, 0: flat) of one element"),
+        ("/curves/<contact>/mu_<μ>/offset, spin_z, spin, speed, launch_azimuth, contact_time", "f64[solved]", "the solved \
+              kicks: offset (m), the spin's vertical component and size (rad/s), ball speed (m/s), launch azimuth \
+              (deg), contact time (s)"),
+        ("/curves/<contact>/mu_<μ>/refused_offset, refused_reason", "f64[r], string[r]", "the offsets of the grid left out and why"),
+    ],
+    changes: "",
+};
+
 /// Every layout, in the order of the reference page.
-pub const LAYOUTS: [&Layout; 5] = [&SWEEP, &HISTORY, &FIT, &FIT_TABLE2, &IDENTIFIABILITY];
+pub const LAYOUTS: [&Layout; 6] = [&SWEEP, &HISTORY, &FIT, &FIT_TABLE2, &IDENTIFIABILITY, &PATCH_SPIN];
 
 /// The layout called `name`.
 pub fn find(name: &str) -> Option<&'static Layout> {

@@ -199,12 +199,18 @@ pub fn sampled3d(spec: &KickSpec, solver: &str, spacing: kick_core::Spacing) -> 
     Ok(accurate.solve_sampled(&kick, spacing, kick_core::MAX_HISTORY_SAMPLES)?)
 }
 
-/// Write the accurate path's history of `kick` into `request`'s file.
+/// Write the accurate path's history of `kick` into `request`'s file; a
+/// kick whose normal force is spread over a patch also gets
+/// [`kick_3d::PATCH_COLUMNS_3D`] (its moment and friction's arm).
 pub fn history3d(kick: &Kick3d, solver: &Solver3d, request: &HistoryRequest) -> Result<(Outcome3d, PathBuf), StudyError> {
     let accurate = history_solver(solver)?;
-    history::write(request, &kick_3d::HISTORY_COLUMNS_3D, &meta_3d(kick), |s: &kick_3d::Sample3d| s.values().to_vec(), |sink| {
-        accurate.solve_streamed(kick, request.spacing, sink)
-    })
+    let solve = |sink: &mut dyn FnMut(&kick_3d::Sample3d) -> std::ops::ControlFlow<()>| accurate.solve_streamed(kick, request.spacing, sink);
+    if kick.instep.is_some_and(|i| i.patch.is_some()) {
+        let columns: Vec<(&str, &str)> = kick_3d::HISTORY_COLUMNS_3D.iter().chain(&kick_3d::PATCH_COLUMNS_3D).copied().collect();
+        history::write(request, &columns, &meta_3d(kick), |s: &kick_3d::Sample3d| [&s.values()[..], &s.patch_values()].concat(), solve)
+    } else {
+        history::write(request, &kick_3d::HISTORY_COLUMNS_3D, &meta_3d(kick), |s: &kick_3d::Sample3d| s.values().to_vec(), solve)
+    }
 }
 
 /// The JSON object of one 3D run: the outcome (with `law`, the normal law's

@@ -99,6 +99,33 @@ fn simulate3d_writes_an_hdf5_history_with_units_and_parameters() {
     assert_eq!(file.values("fixed/foot_half_extents").unwrap().len(), 3);
 }
 
+/// A patch contact's history also has the patch's columns, with units: the
+/// normal force's moment about the ball's centre (not zero 5 cm off) and
+/// friction's arm, inside the ball. A point contact's history has neither.
+#[test]
+fn simulate3d_with_a_patch_writes_the_patch_columns() {
+    let dir = scratch("3d-patch");
+    let path = dir.join("p.h5");
+    let patch = ["--law", "shell", "--patch-contact", "--instep-radius", "0.15", "--face-yaw", "0"];
+    let mut args = vec!["simulate3d", "--offset", "0.05", "--friction", "0.5", "--format", "json", "--history", path.to_str().unwrap(), "--samples", "101"];
+    args.extend(patch);
+    json(&args);
+    let file = ResultFile::open(&path).unwrap();
+    for (name, unit) in kick_3d::HISTORY_COLUMNS_3D.iter().chain(&kick_3d::PATCH_COLUMNS_3D) {
+        let (column, values) = file.column(&format!("history/{name}")).unwrap();
+        assert_eq!((column.unit.as_str(), values.len()), (*unit, 101), "{name}");
+    }
+    let moment = file.values("history/normal_moment_z").unwrap();
+    assert!(moment.iter().any(|m| *m != 0.0), "{moment:?}");
+    let radius = file.values("fixed/ball_radius").unwrap()[0];
+    let arm: Vec<f64> = ["x", "y", "z"].iter().map(|c| file.values(&format!("history/contact_arm_{c}")).unwrap()[50]).collect();
+    let size = arm.iter().map(|a| a * a).sum::<f64>().sqrt();
+    assert!(size > 0.5 * radius && size < radius, "{size} against R = {radius}");
+    let point = dir.join("q.h5");
+    json(&["simulate3d", "--offset", "0.05", "--history", point.to_str().unwrap(), "--format", "json"]);
+    assert!(!ResultFile::open(&point).unwrap().exists("history/normal_moment_z"));
+}
+
 #[test]
 fn flight_writes_its_history() {
     let dir = scratch("flight");
