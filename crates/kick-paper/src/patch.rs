@@ -28,7 +28,7 @@ pub const HISTORY_FIGURE: &str = "3d_patch_history";
 /// The cap's radius of curvature, m: an assumption (no published instep
 /// curvature was found, `kick_3d::patch`), of the order of the ball's
 /// radius and at least the face's half-extents, as the instep requires.
-pub const CAP_RADIUS: f64 = 0.15;
+pub const CAP_RADIUS: f64 = kick_3d::validation::ASSUMED_INSTEP_RADIUS;
 /// Friction coefficients of the curves (Asai et al. compare 0 and 1).
 pub const FRICTIONS: [f64; 3] = [0.0, 0.5, 1.0];
 /// Offsets: 0 to 110 mm (the ball's radius) in 5 mm steps.
