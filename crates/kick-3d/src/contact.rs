@@ -404,11 +404,12 @@ impl Relative {
         // The shell law (the patch's only law): F(δ, v) = F_el(δ)(1 + χ v), one evaluation.
         let (elastic, f1) = self.law.unclamped_force(delta, 1.0);
         let (f0, slope) = (elastic, f1 - elastic);
-        let surface = match self.cap {
-            Some((centre, radius)) => Surface::Sphere { centre, radius },
-            None => Surface::Flat,
+        let mut p = match self.cap {
+            Some((centre, radius)) => patch.resultant(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope),
+            // The closed form, inlined here (no rule).
+            None if delta > 0.0 => crate::patch::flat(self.ball_radius, r, n.dot(r_dot), spin - omega, delta, n, f0, slope),
+            None => patch.resultant(Surface::Flat, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope),
         };
-        let mut p = patch.resultant(surface, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope);
         let unclamped_force = n.dot(p.force);
         if self.phase.clamped {
             p.force = Vec3::ZERO;
