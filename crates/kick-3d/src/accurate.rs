@@ -255,11 +255,13 @@ impl Accurate3d {
                 reason: "a ground plane is a third body; use the rapier scene path",
             });
         }
-        if kick.rigid_grip() && kick.instep.is_some_and(|i| i.is_curved() || i.patch.is_some()) {
+        // The grip constraint's kinematics are written for a flat face (n
+        // fixed on the foot): the point contact, or the patch's centroid there.
+        if kick.rigid_grip() && kick.instep.is_some_and(|i| i.is_curved()) {
             return Err(Kick3dError::UnsupportedScene {
                 path: "accurate",
-                reason: "rigid grip (tangential_stiffness = inf) holds a point contact on a flat face; \
-                         leave out instep_radius and patch_contact with it",
+                reason: "rigid grip (tangential_stiffness = inf) holds the contact on a flat face, where the normal \
+                         stays fixed on the foot; leave out instep_radius with it (patch_contact is supported)",
             });
         }
         if kick.rigid_grip() && kick.friction.is_finite() && kick.friction > 0.0 && kick.offset != 0.0 && kick.approach_angle != 0.0 {
@@ -283,6 +285,7 @@ impl Accurate3d {
                 clamped: false,
                 clock: Clock::Time,
                 slip_direction: parry3d_f64::math::Vec3::ZERO,
+                slip_start: 0.0,
             },
         );
         let mut y0 = y0;
@@ -575,6 +578,7 @@ impl Accurate3d {
                     if system.rigid && phase.friction == Friction::Grip {
                         // Sliding starts against the force that could no longer hold it.
                         phase.slip_direction = -c_end.tangential_force.normalize_or_zero();
+                        phase.slip_start = c_end.sliding_velocity.dot(phase.slip_direction).min(0.0) - 10.0 * absolute[contact::RELATIVE_VELOCITY];
                     }
                     phase.friction = if phase.friction == Friction::Grip { Friction::Slip } else { Friction::Grip };
                 }

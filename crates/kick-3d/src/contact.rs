@@ -141,6 +141,14 @@ pub struct Phase {
     /// Rigid grip only: the sliding direction (body frame, tangential) of a
     /// slip phase, fixed through it (exact while the kick stays in one plane).
     pub slip_direction: Vec3,
+    /// Rigid grip only: where a slip that began from grip ends, the sliding
+    /// along `slip_direction` (≤ 0). Such a slip starts from the grip's
+    /// residual sliding (at the tolerance) and grows quadratically from a
+    /// tangency, so measured from zero its end would be found in the residual's
+    /// rounding, and grip and slip would alternate there: the slip ends where
+    /// the sliding falls back below the residual less ten times the speed
+    /// tolerance (a shift of the reversal's time far below the tolerance's).
+    pub slip_start: f64,
 }
 
 /// The law at one state, body frame.
@@ -340,7 +348,10 @@ impl Relative {
         let rigid_force = match self.phase.friction {
             _ if !self.rigid => Vec3::ZERO,
             Friction::None => Vec3::ZERO,
-            Friction::Grip => self.grip_force::<FACE>(y, n, point, normal_force),
+            Friction::Grip => match &patch {
+                None => self.grip_force::<FACE>(y, n, point, normal_force),
+                Some(p) => self.patch_grip_force(y, p, delta, rate),
+            },
             Friction::Slip => -self.phase.slip_direction * cap,
         };
         let grip_margin = if self.friction == 0.0 {
@@ -350,7 +361,7 @@ impl Relative {
         } else if self.rigid {
             match self.phase.friction {
                 // The slip ends where the sliding reverses.
-                Friction::Slip => -sliding.dot(self.phase.slip_direction),
+                Friction::Slip => self.phase.slip_start - sliding.dot(self.phase.slip_direction),
                 _ => cap - rigid_force.length(),
             }
         } else {
@@ -497,11 +508,13 @@ impl Relative {
 
     /// K f: the rate of the contact point's relative velocity (ball's
     /// material point minus foot's) per unit force f on the ball at p, on the
-    /// face: f (1/m_b + 1/m_f) + (R²/I_b) f_t − p × I_f⁻¹ (p × f), the
-    /// inverse effective mass of the contact (symmetric, positive definite).
+    /// face: f (1/m_b + 1/m_f) + (L²/I_b) f_t − p × I_f⁻¹ (p × f), the
+    /// inverse effective mass of the contact (symmetric, positive definite),
+    /// L = |p − r| the ball's lever (R for the point contact, R − δ at the
+    /// patch's centroid).
     #[inline]
-    fn contact_compliance<const FACE: bool>(&self, n: Vec3, point: Vec3, f: Vec3) -> Vec3 {
-        let r2 = self.ball_radius * self.ball_radius;
+    fn contact_compliance<const FACE: bool>(&self, n: Vec3, point: Vec3, lever: f64, f: Vec3) -> Vec3 {
+        let r2 = lever * lever;
         f * self.inverse_reduced_mass + tangential::<FACE>(n, f) * (r2 / self.ball_inertia)
             - point.cross(point.cross(f) / self.foot_inertia)
     }
@@ -523,15 +536,46 @@ impl Relative {
         if self.drive != Vec3::ZERO {
             b -= rotation(y).inverse() * self.drive / self.foot_mass;
         }
-        let rhs = -(b + self.contact_compliance::<FACE>(n, point, along::<FACE>(n, normal_force)));
-        self.tangential_solve::<FACE>(n, point, rhs)
+        let rhs = -(b + self.contact_compliance::<FACE>(n, point, self.ball_radius, along::<FACE>(n, normal_force)));
+        self.tangential_solve::<FACE>(n, point, self.ball_radius, rhs)
+    }
+
+    /// Rigid grip under the patch (flat face, n = e_x): friction acts at the
+    /// centroid c = r − (R − δ) n, so the held velocity is the material
+    /// points' at c, v = w + ω_b × (c − r) − Ω × c, and c moves with the
+    /// ball and with δ: ċ = ṙ + δ̇ n. Differentiating along the body-frame
+    /// rates, dv/dt = K F_t + b with K at c with lever R − δ, and b holding
+    /// the patch's force and moment (known: functions of the state, not of
+    /// F_t), the frame's rotation and the centroid's motion:
+    /// b = F/m_r − Ω × w − F_drive/m_f + (M/I_b − Ω × ω_b) × (c − r)
+    /// + δ̇ ω_b × n + I_f⁻¹(r × F + M + Ω × I_f Ω) × c − Ω × (ṙ + δ̇ n).
+    #[inline]
+    fn patch_grip_force(&self, y: &State, p: &PatchForce, delta: f64, rate: f64) -> Vec3 {
+        let n = Vec3::X;
+        let r = self.centre(y);
+        let w = vec3(y, RELATIVE_VELOCITY);
+        let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
+        let spin = vec3(y, BALL_ANGULAR_VELOCITY);
+        let c = p.centroid;
+        let lever = self.ball_radius - delta.max(0.0);
+        let r_dot = w - omega.cross(r);
+        let foot_turn = (r.cross(p.force) + p.moment + omega.cross(omega * self.foot_inertia)) / self.foot_inertia;
+        let mut b = p.force * self.inverse_reduced_mass - omega.cross(w)
+            + (p.moment / self.ball_inertia - omega.cross(spin)).cross(c - r)
+            + spin.cross(n) * rate
+            + foot_turn.cross(c)
+            - omega.cross(r_dot + n * rate);
+        if self.drive != Vec3::ZERO {
+            b -= rotation(y).inverse() * self.drive / self.foot_mass;
+        }
+        self.tangential_solve::<true>(n, c, lever, -b)
     }
 
     /// The tangential f with (K f)_t = rhs_t (face: the y and z rows).
     #[inline]
-    fn tangential_solve<const FACE: bool>(&self, n: Vec3, point: Vec3, rhs: Vec3) -> Vec3 {
-        let ky = self.contact_compliance::<FACE>(n, point, Vec3::Y);
-        let kz = self.contact_compliance::<FACE>(n, point, Vec3::Z);
+    fn tangential_solve<const FACE: bool>(&self, n: Vec3, point: Vec3, lever: f64, rhs: Vec3) -> Vec3 {
+        let ky = self.contact_compliance::<FACE>(n, point, lever, Vec3::Y);
+        let kz = self.contact_compliance::<FACE>(n, point, lever, Vec3::Z);
         let det = ky.y * kz.z - kz.y * ky.z;
         Vec3::new(0.0, (rhs.y * kz.z - kz.y * rhs.z) / det, (ky.y * rhs.z - rhs.y * ky.z) / det)
     }
@@ -544,7 +588,8 @@ impl Relative {
     pub fn grip_impulse(&self, y: &State) -> State {
         let before = self.internal_energy(0.0, y);
         let c = self.local_on::<true>(0.0, y);
-        let j = self.tangential_solve::<true>(Vec3::X, c.point, -c.sliding_velocity);
+        // At touch δ = 0: the patch's centroid is the point contact's p, lever R.
+        let j = self.tangential_solve::<true>(Vec3::X, c.point, self.ball_radius, -c.sliding_velocity);
         let mut out = *y;
         put3(&mut out, RELATIVE_VELOCITY, vec3(y, RELATIVE_VELOCITY) + j * self.inverse_reduced_mass);
         put3(&mut out, FOOT_ANGULAR_VELOCITY, vec3(y, FOOT_ANGULAR_VELOCITY) + c.point.cross(-j) / self.foot_inertia);
