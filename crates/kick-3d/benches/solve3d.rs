@@ -81,6 +81,16 @@ fn patch_contact(c: &mut Criterion) {
             "shell patch, knife edge, rigid grip, mu inf",
             kick_3d::Kick3dSpec { patch_contact: Some(true), tangential_stiffness: Some(f64::INFINITY), friction: Some(f64::INFINITY), ..spec },
         ),
+        (
+            "shell patch, 15 cm cap, rigid grip",
+            kick_3d::Kick3dSpec {
+                patch_contact: Some(true),
+                instep_radius: Some(0.15),
+                face_yaw_deg: Some(0.0),
+                tangential_stiffness: Some(f64::INFINITY),
+                ..spec
+            },
+        ),
     ];
     let mut group = c.benchmark_group("patch_contact_5cm");
     group.throughput(Throughput::Elements(1));

@@ -255,13 +255,13 @@ impl Accurate3d {
                 reason: "a ground plane is a third body; use the rapier scene path",
             });
         }
-        // The grip constraint's kinematics are written for a flat face (n
-        // fixed on the foot): the point contact, or the patch's centroid there.
-        if kick.rigid_grip() && kick.instep.is_some_and(|i| i.is_curved()) {
+        // The grip constraint holds the point contact on a flat face (n fixed
+        // on the foot), or the patch's centroid on a flat face or a cap.
+        if kick.rigid_grip() && kick.instep.is_some_and(|i| i.is_curved() && i.patch.is_none()) {
             return Err(Kick3dError::UnsupportedScene {
                 path: "accurate",
-                reason: "rigid grip (tangential_stiffness = inf) holds the contact on a flat face, where the normal \
-                         stays fixed on the foot; leave out instep_radius with it (patch_contact is supported)",
+                reason: "rigid grip (tangential_stiffness = inf) on a curved instep (instep_radius) holds the patch's centroid: \
+                         give patch_contact with it (the point contact on a cap is not constrained)",
             });
         }
         if kick.rigid_grip() && kick.friction.is_finite() && kick.friction > 0.0 && kick.offset != 0.0 && kick.approach_angle != 0.0 {

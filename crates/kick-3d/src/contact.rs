@@ -350,9 +350,9 @@ impl Relative {
             Friction::None => Vec3::ZERO,
             Friction::Grip => match &patch {
                 None => self.grip_force::<FACE>(y, n, point, normal_force),
-                Some(p) => self.patch_grip_force(y, p, delta, rate),
+                Some(p) => self.patch_grip_force::<FACE>(y, p, n, delta, rate),
             },
-            Friction::Slip => -self.phase.slip_direction * cap,
+            Friction::Slip => -self.slip_direction::<FACE>(n) * cap,
         };
         let grip_margin = if self.friction == 0.0 {
             0.0
@@ -361,7 +361,7 @@ impl Relative {
         } else if self.rigid {
             match self.phase.friction {
                 // The slip ends where the sliding reverses.
-                Friction::Slip => self.phase.slip_start - sliding.dot(self.phase.slip_direction),
+                Friction::Slip => self.phase.slip_start - sliding.dot(self.slip_direction::<FACE>(n)),
                 _ => cap - rigid_force.length(),
             }
         } else {
@@ -540,44 +540,82 @@ impl Relative {
         self.tangential_solve::<FACE>(n, point, self.ball_radius, rhs)
     }
 
-    /// Rigid grip under the patch (flat face, n = e_x): friction acts at the
-    /// centroid c = r − (R − δ) n, so the held velocity is the material
-    /// points' at c, v = w + ω_b × (c − r) − Ω × c, and c moves with the
-    /// ball and with δ: ċ = ṙ + δ̇ n. Differentiating along the body-frame
-    /// rates, dv/dt = K F_t + b with K at c with lever R − δ, and b holding
-    /// the patch's force and moment (known: functions of the state, not of
-    /// F_t), the frame's rotation and the centroid's motion:
-    /// b = F/m_r − Ω × w − F_drive/m_f + (M/I_b − Ω × ω_b) × (c − r)
-    /// + δ̇ ω_b × n + I_f⁻¹(r × F + M + Ω × I_f Ω) × c − Ω × (ṙ + δ̇ n).
+    /// Rigid grip under the patch: friction acts at the centroid c, so the
+    /// held velocity is the material points' at c, v = w + ω_b × ℓ − Ω × c
+    /// with ℓ = c − r, and c moves with the ball and with δ. On the flat face
+    /// ℓ = −(R − δ) n, ℓ̇ = δ̇ n; on a cap c = C + ζ(δ) n, ℓ = −(d − ζ) n,
+    /// ℓ̇ = δ̇ (1 + ζ') n − (d − ζ) ṅ with ṅ = ṙ_t / d, and keeping v_t = 0
+    /// on the turning normal needs (v̇)_t = (v · n) ṅ. Differentiating along
+    /// the body-frame rates, v̇ = K F_t + b with K at c with lever |ℓ|, and b
+    /// holding the patch's force F and moment M (functions of the state, not
+    /// of F_t), the frame's rotation and the centroid's motion:
+    /// b = F/m_r − Ω × w − F_drive/m_f + (M/I_b − Ω × ω_b) × ℓ + ω_b × ℓ̇
+    /// + I_f⁻¹(r × F + M + Ω × I_f Ω) × c − Ω × (ṙ + ℓ̇).
     #[inline]
-    fn patch_grip_force(&self, y: &State, p: &PatchForce, delta: f64, rate: f64) -> Vec3 {
-        let n = Vec3::X;
+    fn patch_grip_force<const FACE: bool>(&self, y: &State, p: &PatchForce, n: Vec3, delta: f64, rate: f64) -> Vec3 {
         let r = self.centre(y);
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
         let c = p.centroid;
-        let lever = self.ball_radius - delta.max(0.0);
         let r_dot = w - omega.cross(r);
+        let (lever, lever_rate, normal_rate) = match (self.cap, &self.patch) {
+            (Some((centre, radius)), Some(patch)) if !FACE => {
+                let d = (r - centre).length();
+                let normal_rate = tangential::<false>(n, r_dot) / d;
+                // At touch (δ = 0, the first evaluation only) the limit, from a patch of 1e-12 R.
+                let (_, zeta_rate) = patch.cap_centroid_rate(self.ball_radius, radius, delta.max(1e-12 * self.ball_radius));
+                let lever = n.dot(r - c);
+                (lever, n * (rate * (1.0 + zeta_rate)) - normal_rate * lever, normal_rate)
+            }
+            _ => (self.ball_radius - delta.max(0.0), n * rate, Vec3::ZERO),
+        };
+        let arm = c - r;
         let foot_turn = (r.cross(p.force) + p.moment + omega.cross(omega * self.foot_inertia)) / self.foot_inertia;
         let mut b = p.force * self.inverse_reduced_mass - omega.cross(w)
-            + (p.moment / self.ball_inertia - omega.cross(spin)).cross(c - r)
-            + spin.cross(n) * rate
+            + (p.moment / self.ball_inertia - omega.cross(spin)).cross(arm)
+            + spin.cross(lever_rate)
             + foot_turn.cross(c)
-            - omega.cross(r_dot + n * rate);
+            - omega.cross(r_dot + lever_rate);
         if self.drive != Vec3::ZERO {
             b -= rotation(y).inverse() * self.drive / self.foot_mass;
         }
-        self.tangential_solve::<true>(n, c, lever, -b)
+        if !FACE {
+            let v = w + spin.cross(arm) - omega.cross(c);
+            b -= normal_rate * n.dot(v);
+        }
+        self.tangential_solve::<FACE>(n, c, lever, -b)
     }
 
-    /// The tangential f with (K f)_t = rhs_t (face: the y and z rows).
+    /// The tangential f with (K f)_t = rhs_t: on the face the y and z rows,
+    /// elsewhere the rows of a tangent basis.
     #[inline]
     fn tangential_solve<const FACE: bool>(&self, n: Vec3, point: Vec3, lever: f64, rhs: Vec3) -> Vec3 {
-        let ky = self.contact_compliance::<FACE>(n, point, lever, Vec3::Y);
-        let kz = self.contact_compliance::<FACE>(n, point, lever, Vec3::Z);
-        let det = ky.y * kz.z - kz.y * ky.z;
-        Vec3::new(0.0, (rhs.y * kz.z - kz.y * rhs.z) / det, (ky.y * rhs.z - rhs.y * ky.z) / det)
+        if FACE {
+            let ky = self.contact_compliance::<FACE>(n, point, lever, Vec3::Y);
+            let kz = self.contact_compliance::<FACE>(n, point, lever, Vec3::Z);
+            let det = ky.y * kz.z - kz.y * ky.z;
+            return Vec3::new(0.0, (rhs.y * kz.z - kz.y * rhs.z) / det, (ky.y * rhs.z - rhs.y * ky.z) / det);
+        }
+        let e1 = (if n.z.abs() < 0.9 { Vec3::Z } else { Vec3::Y }).cross(n).normalize();
+        let e2 = n.cross(e1);
+        let (k1, k2) = (self.contact_compliance::<false>(n, point, lever, e1), self.contact_compliance::<false>(n, point, lever, e2));
+        let (a11, a12, a21, a22) = (e1.dot(k1), e1.dot(k2), e2.dot(k1), e2.dot(k2));
+        let (b1, b2) = (e1.dot(rhs), e2.dot(rhs));
+        let det = a11 * a22 - a12 * a21;
+        e1 * ((b1 * a22 - a12 * b2) / det) + e2 * ((a11 * b2 - a21 * b1) / det)
+    }
+
+    /// A rigid slip's direction: fixed on the face; on a cap, the stored
+    /// direction brought into the turning tangent plane (exact for a kick in
+    /// one plane, where it is the plane's tangent).
+    #[inline(always)]
+    fn slip_direction<const FACE: bool>(&self, n: Vec3) -> Vec3 {
+        if FACE {
+            self.phase.slip_direction
+        } else {
+            tangential::<false>(n, self.phase.slip_direction).normalize_or_zero()
+        }
     }
 
     /// Rigid grip with μ = ∞: the tangential impulse J at first touch that
@@ -587,13 +625,21 @@ impl Relative {
     /// J and the foot −J at p. The energy it takes goes to the friction loss.
     pub fn grip_impulse(&self, y: &State) -> State {
         let before = self.internal_energy(0.0, y);
-        let c = self.local_on::<true>(0.0, y);
+        let c = self.local(0.0, y);
+        let n = c.normal;
         // At touch δ = 0: the patch's centroid is the point contact's p, lever R.
-        let j = self.tangential_solve::<true>(Vec3::X, c.point, self.ball_radius, -c.sliding_velocity);
+        let j = match self.phase.geometry {
+            Geometry::Face => self.tangential_solve::<true>(Vec3::X, c.point, self.ball_radius, -c.sliding_velocity),
+            _ => self.tangential_solve::<false>(n, c.point, self.ball_radius, -c.sliding_velocity),
+        };
         let mut out = *y;
         put3(&mut out, RELATIVE_VELOCITY, vec3(y, RELATIVE_VELOCITY) + j * self.inverse_reduced_mass);
         put3(&mut out, FOOT_ANGULAR_VELOCITY, vec3(y, FOOT_ANGULAR_VELOCITY) + c.point.cross(-j) / self.foot_inertia);
-        put3(&mut out, BALL_ANGULAR_VELOCITY, vec3(y, BALL_ANGULAR_VELOCITY) + cross_normal::<true>(j, Vec3::X) * (self.ball_radius / self.ball_inertia));
+        let spin_kick = match self.phase.geometry {
+            Geometry::Face => cross_normal::<true>(j, Vec3::X),
+            _ => j.cross(n),
+        };
+        put3(&mut out, BALL_ANGULAR_VELOCITY, vec3(y, BALL_ANGULAR_VELOCITY) + spin_kick * (self.ball_radius / self.ball_inertia));
         out[FRICTION_LOSS] += before - self.internal_energy(0.0, &out);
         out
     }

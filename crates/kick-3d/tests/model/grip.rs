@@ -22,6 +22,36 @@ fn patch_kick(spec: Kick3dSpec) -> Kick3d {
     Kick3d::new(shell(), &Kick3dSpec { patch_contact: Some(true), ..spec }).unwrap()
 }
 
+/// The same on a 15 cm cap square to the swing.
+fn cap_kick(spec: Kick3dSpec) -> Kick3d {
+    patch_kick(Kick3dSpec { instep_radius: Some(CAP), face_yaw_deg: Some(0.0), ..spec })
+}
+
+const CAP: f64 = 0.15;
+
+/// The cap patch's centroid height on the cap's axis (from its centre),
+/// independently: ∫ h z dt / ∫ h dt over t = ρ² (Simpson, 4000 intervals),
+/// h the depth along the cap's normal to the undeformed ball by the plain
+/// formula ν·q + √((ν·q)² + R² − |q|²).
+fn cap_centroid_height(big_r: f64, rf: f64, delta: f64) -> f64 {
+    let d = big_r + rf - delta;
+    let x_f = (d * d + rf * rf - big_r * big_r) / (2.0 * d);
+    let a2 = rf * rf - x_f * x_f;
+    let m = 4000;
+    let (mut top, mut bottom) = (0.0, 0.0);
+    for i in 0..=m {
+        let t = a2 * i as f64 / m as f64;
+        let z = (rf * rf - t).sqrt();
+        let nu_q = (rf * rf - d * z) / rf;
+        let q2 = rf * rf - 2.0 * d * z + d * d;
+        let h = nu_q + (nu_q * nu_q + big_r * big_r - q2).max(0.0).sqrt();
+        let w = if i == 0 || i == m { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+        top += w * h * z;
+        bottom += w * h;
+    }
+    top / bottom
+}
+
 /// Sliding velocity of the ball's material point over the foot's at the
 /// undeformed contact point, from both bodies at separation (world frame;
 /// the ball stays on the flat face in these kicks).
@@ -161,14 +191,12 @@ fn paths_without_the_constraint_refuse_it() {
     let turning = kick(rigid(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), friction: Some(0.5), ..Kick3dSpec::default() }));
     let e = Accurate3d::default().solve(&turning).unwrap_err();
     assert!(e.to_string().contains("approach_angle = 0"), "{e}");
-    // A curved instep, with or without the patch: rigid grip holds the
-    // contact on a flat face (the patch there is solved, below).
-    for patch in [None, Some(true)] {
-        let spec = Kick3dSpec { instep_radius: Some(0.15), face_yaw_deg: Some(0.0), patch_contact: patch, ..Kick3dSpec::default() };
-        let k = Kick3d::new(shell(), &rigid(Kick3dSpec { offset: Some(0.05), ..spec })).unwrap();
-        let e = Accurate3d::default().solve(&k).unwrap_err();
-        assert!(e.to_string().contains("leave out instep_radius"), "{e}");
-    }
+    // A curved instep without the patch: the point contact on a cap is not
+    // constrained (with the patch it is solved, below).
+    let spec = Kick3dSpec { instep_radius: Some(0.15), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() };
+    let k = Kick3d::new(shell(), &rigid(Kick3dSpec { offset: Some(0.05), ..spec })).unwrap();
+    let e = Accurate3d::default().solve(&k).unwrap_err();
+    assert!(e.to_string().contains("instep_radius") && e.to_string().contains("patch_contact"), "{e}");
     // A narrow instep face the ball rolls off.
     let off = kick(rigid(Kick3dSpec { offset: Some(0.08), foot_half_extents: Some([0.03, 0.01, 0.05]), ..Kick3dSpec::default() }));
     match Accurate3d::default().solve(&off) {
@@ -224,8 +252,9 @@ fn rigid_grip_holds_its_accuracy_through_the_switches() {
 #[test]
 fn nothing_slides_at_the_patch_centroid_while_gripping() {
     use kick_3d::history::ContactState;
-    for (friction, offset) in [(f64::INFINITY, 0.05), (f64::INFINITY, 0.08), (2.0, 0.05), (0.6, 0.03)] {
-        let k = patch_kick(rigid(Kick3dSpec { offset: Some(offset), friction: Some(friction), ..Kick3dSpec::default() }));
+    for (friction, offset, cap) in [(f64::INFINITY, 0.05, false), (f64::INFINITY, 0.08, false), (2.0, 0.05, false), (0.6, 0.03, false), (f64::INFINITY, 0.05, true), (0.6, 0.05, true)] {
+        let spec = rigid(Kick3dSpec { offset: Some(offset), friction: Some(friction), ..Kick3dSpec::default() });
+        let k = if cap { cap_kick(spec) } else { patch_kick(spec) };
         let v_n = k.normal_approach_speed();
         let (o, samples) = Accurate3d::default().solve_sampled(&k, kick_core::Spacing::Count(400), 400).unwrap();
         let (mut worst, mut gripping, mut moving) = (0.0_f64, 0, 0.0_f64);
@@ -236,7 +265,13 @@ fn nothing_slides_at_the_patch_centroid_while_gripping() {
             }
             let n = f_n.normalize();
             let (c_b, c_f) = (Vec3::from(s.ball_position), Vec3::from(s.foot_position));
-            let c = c_b - n * (k.ball_radius - s.compression);
+            // The centroid's lever: R − δ on the face, d − ζ on the cap.
+            let lever = if cap {
+                k.ball_radius + CAP - s.compression - cap_centroid_height(k.ball_radius, CAP, s.compression)
+            } else {
+                k.ball_radius - s.compression
+            };
+            let c = c_b - n * lever;
             let v = Vec3::from(s.ball_velocity) + Vec3::from(s.ball_angular_velocity).cross(c - c_b)
                 - Vec3::from(s.foot_velocity)
                 - Vec3::from(s.foot_angular_velocity).cross(c - c_f);
@@ -249,7 +284,7 @@ fn nothing_slides_at_the_patch_centroid_while_gripping() {
             moving = moving.max((v_p - n * v_p.dot(n)).length());
             gripping += 1;
         }
-        println!("patch, mu {friction}, e {offset}: slip {:.3e} of {:.3e} s; {gripping} grip samples, sliding at c at most {worst:.2e} m/s (at R: {moving:.2e})", o.slip_time, o.contact_time);
+        println!("patch, cap {cap}, mu {friction}, e {offset}: slip {:.3e} of {:.3e} s; {gripping} grip samples, sliding at c at most {worst:.2e} m/s (at R: {moving:.2e})", o.slip_time, o.contact_time);
         assert!(gripping > 100, "mu {friction}: {gripping}");
         assert!(worst <= 1e-9 * v_n, "mu {friction}, e {offset}: {worst:e}");
         assert!(moving > 1e-3 * v_n, "mu {friction}, e {offset}: {moving:e}");
@@ -264,13 +299,10 @@ fn nothing_slides_at_the_patch_centroid_while_gripping() {
 /// momentum and angular momentum are conserved.
 #[test]
 fn patch_grip_closes_energy_momentum_and_angular_momentum() {
+    for cap in [false, true] {
     for (friction, offset, approach) in [(f64::INFINITY, 0.05, 0.0), (0.8, 0.05, 0.0), (f64::INFINITY, 0.06, 12.0), (0.5, 0.0, 15.0)] {
-        let k = patch_kick(rigid(Kick3dSpec {
-            offset: Some(offset),
-            approach_angle_deg: Some(approach),
-            friction: Some(friction),
-            ..Kick3dSpec::default()
-        }));
+        let spec = rigid(Kick3dSpec { offset: Some(offset), approach_angle_deg: Some(approach), friction: Some(friction), ..Kick3dSpec::default() });
+        let k = if cap { cap_kick(spec) } else { patch_kick(spec) };
         let (o, e) = Accurate3d::default().solve_to_state(&k).unwrap();
         assert!(o.energy.relative_residual().abs() <= 1e-9, "mu {friction}: {:e}", o.energy.relative_residual());
         assert!(o.energy.friction_loss > 0.0);
@@ -288,8 +320,9 @@ fn patch_grip_closes_energy_momentum_and_angular_momentum() {
         let angular0 = s.foot_position.cross(s.foot_velocity * m_f) + s.ball_position.cross(s.ball_velocity * m_b);
         let scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
         let (dp, dl) = ((p1 - p0).length() / p0.length(), (angular - angular0).length() / scale);
-        println!("patch, mu {friction}, e {offset}, approach {approach}: residual {:.1e}, drift p {dp:.1e} L {dl:.1e}", o.energy.relative_residual());
+        println!("patch, cap {cap}, mu {friction}, e {offset}, approach {approach}: residual {:.1e}, drift p {dp:.1e} L {dl:.1e}", o.energy.relative_residual());
         assert!(dp <= 1e-12 && dl <= 1e-9, "mu {friction}: {dp:e} {dl:e}");
+    }
     }
 }
 
@@ -304,7 +337,8 @@ fn patch_grip_closes_energy_momentum_and_angular_momentum() {
 /// δ ∝ k_t^−½, where the rigid grip's impulse acts at δ = 0.
 #[test]
 fn a_stiff_spring_tends_to_rigid_grip_with_the_patch() {
-    for friction in [f64::INFINITY, 0.8] {
+    for (friction, cap) in [(f64::INFINITY, false), (0.8, false), (f64::INFINITY, true), (0.8, true)] {
+        let patch_kick = |spec| if cap { cap_kick(spec) } else { patch_kick(spec) };
         let base = Kick3dSpec { offset: Some(0.05), friction: Some(friction), ..Kick3dSpec::default() };
         let limit = Accurate3d::default().solve(&patch_kick(rigid(base))).unwrap();
         let k0 = patch_kick(base);
@@ -316,7 +350,7 @@ fn a_stiff_spring_tends_to_rigid_grip_with_the_patch() {
                 .solve(&patch_kick(Kick3dSpec { tangential_stiffness: Some(k_t), tangential_damping: Some(c_t), ..base }))
                 .unwrap();
             let distance = (spring.spin[2] - limit.spin[2]).abs() / limit.spin[2].abs();
-            println!("patch, mu {friction}, k_t {k_t:e}: spin {} vs rigid {}: {distance:.2e}; {} vs {} evaluations", spring.spin[2], limit.spin[2], spring.evaluations, limit.evaluations);
+            println!("patch, cap {cap}, mu {friction}, k_t {k_t:e}: spin {} vs rigid {}: {distance:.2e}; {} vs {} evaluations", spring.spin[2], limit.spin[2], spring.evaluations, limit.evaluations);
             let fall = if friction.is_finite() && k_t > 1e7 { 8.0 } else { 10f64.sqrt() };
             assert!(distance < previous / fall, "mu {friction}, k_t {k_t:e}: {distance:e} after {previous:e}");
             previous = distance;
@@ -333,19 +367,17 @@ fn a_stiff_spring_tends_to_rigid_grip_with_the_patch() {
 fn patch_grip_holds_its_accuracy_through_the_switches() {
     let tight = Accurate3d::new(kick_3d::accurate::DEFAULT_TOLERANCE / 30.0).unwrap();
     let mut worst = 0.0_f64;
+    for cap in [false, true] {
     for (friction, offset, approach) in [(f64::INFINITY, 0.05, 0.0), (0.6, 0.03, 0.0), (2.0, 0.07, 0.0), (0.4, 0.05, 0.0), (f64::INFINITY, 0.06, 15.0), (0.5, 0.0, 15.0)] {
-        let k = patch_kick(rigid(Kick3dSpec {
-            offset: Some(offset),
-            friction: Some(friction),
-            approach_angle_deg: Some(approach),
-            ..Kick3dSpec::default()
-        }));
+        let spec = rigid(Kick3dSpec { offset: Some(offset), friction: Some(friction), approach_angle_deg: Some(approach), ..Kick3dSpec::default() });
+        let k = if cap { cap_kick(spec) } else { patch_kick(spec) };
         let (a, b) = (Accurate3d::default().solve(&k).unwrap(), tight.solve(&k).unwrap());
         let e = kick_3d::precision::Errors3d::of(&k, &a, &b);
         let slip = (a.slip_time - b.slip_time).abs() / b.contact_time;
-        println!("patch, mu {friction}, e {offset}, approach {approach}: {:.1e} ({e:?}), slip {slip:.1e}: {:.3e} of {:.3e} s", e.max(), b.slip_time, b.contact_time);
-        assert!(e.max() <= 1e-9 && slip <= 1e-9, "mu {friction}, e {offset}: {e:?}, slip {slip:e}");
+        println!("patch, cap {cap}, mu {friction}, e {offset}, approach {approach}: {:.1e} ({e:?}), slip {slip:.1e}: {:.3e} of {:.3e} s", e.max(), b.slip_time, b.contact_time);
+        assert!(e.max() <= 1e-9 && slip <= 1e-9, "cap {cap}, mu {friction}, e {offset}: {e:?}, slip {slip:e}");
         worst = worst.max(e.max()).max(slip);
+    }
     }
     println!("worst {worst:.2e}");
 }
