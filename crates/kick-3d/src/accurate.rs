@@ -264,11 +264,16 @@ impl Accurate3d {
                          give patch_contact with it (the point contact on a cap is not constrained)",
             });
         }
-        if kick.rigid_grip() && kick.friction.is_finite() && kick.friction > 0.0 && kick.offset != 0.0 && kick.approach_angle != 0.0 {
+        // One plane: the foot's path (x–z at an approach angle), the offset (y)
+        // and the face's normal (x–y with a yaw, x–z with a pitch).
+        let (yaw, pitch) = kick.instep.map_or((kick.obliquity(), 0.0), |i| (i.yaw, i.pitch));
+        let planar = (kick.approach_angle == 0.0 && pitch == 0.0) || (kick.offset == 0.0 && yaw == 0.0);
+        if kick.rigid_grip() && kick.friction.is_finite() && kick.friction > 0.0 && !planar {
             return Err(Kick3dError::UnsupportedScene {
                 path: "accurate",
                 reason: "rigid grip (tangential_stiffness = inf) with a finite friction keeps each slip in one direction, \
-                         exact for a kick in one plane: give offset = 0 or approach_angle = 0 (or friction = inf)",
+                         exact for a kick in one plane: give approach_angle = 0 and face_pitch = 0, or offset = 0 and \
+                         face_yaw = 0 (or friction = inf)",
             });
         }
         let horizon = kick.contact_horizon()?;

@@ -98,7 +98,8 @@ pub enum Friction {
     /// μ = 0: no slider; the spring relaxes through its damper.
     None,
     /// The element carries k_t ξ + c_t v_t (always, for μ = ∞). With rigid
-    /// grip (k_t = ∞): the force that keeps the contact point from sliding.
+    /// grip (k_t = ∞): the force that keeps the contact point (the patch's
+    /// centroid, with the patch) from sliding.
     Grip,
     /// The element carries μ F_n along k_t ξ + c_t v_t. With rigid grip:
     /// μ F_n against [`Phase::slip_direction`].

@@ -55,7 +55,10 @@
 //! calibrated loss and the instep's curvature, with no constant of its own.
 //! Volumetric contact would need a volume stiffness, and Cross's offset D a
 //! fitted length. Friction acts at the patch's centroid (lever R − δ on a
-//! flat face, not R).
+//! flat face, not R). Rigid grip holds the material points at the centroid
+//! together; since the centroid moves with δ (and on a cap with the normal),
+//! its motion is in the constraint ([`Patch::cap_centroid_rate`],
+//! `Relative::patch_grip_force` in [`crate::contact`]).
 //!
 //! Integration over the patch: on a flat face in closed form (depth and
 //! rate are functions of ρ alone, the moment's integral is a polynomial in

@@ -191,6 +191,14 @@ fn paths_without_the_constraint_refuse_it() {
     let turning = kick(rigid(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), friction: Some(0.5), ..Kick3dSpec::default() }));
     let e = Accurate3d::default().solve(&turning).unwrap_err();
     assert!(e.to_string().contains("approach_angle = 0"), "{e}");
+    // So is a pitched face struck off its line (the normal leaves the kick's
+    // plane), on the flat face and under the patch alike.
+    for patch in [None, Some(true)] {
+        let spec = Kick3dSpec { offset: Some(0.05), face_pitch_deg: Some(10.0), friction: Some(0.5), patch_contact: patch, ..Kick3dSpec::default() };
+        let pitched = Kick3d::new(shell(), &rigid(spec)).unwrap();
+        let e = Accurate3d::default().solve(&pitched).unwrap_err();
+        assert!(e.to_string().contains("face_pitch = 0"), "{e}");
+    }
     // A curved instep without the patch: the point contact on a cap is not
     // constrained (with the patch it is solved, below).
     let spec = Kick3dSpec { instep_radius: Some(0.15), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() };
