@@ -190,6 +190,8 @@ pub struct Relative {
     /// 1/m_b + 1/m_f.
     inverse_reduced_mass: f64,
     pub foot_inertia: Vec3,
+    /// 1/I_f (products instead of quotients in the grip's off-face paths).
+    inverse_foot_inertia: Vec3,
     pub ball_inertia: f64,
     pub ball_radius: f64,
     /// r0 = (R + h_x outer, 0, 0): the ball centre at first touch.
@@ -226,6 +228,7 @@ impl Relative {
             ball_mass: m_b,
             inverse_reduced_mass: 1.0 / m_b + 1.0 / m_f,
             foot_inertia: Vec3::new(ix, iy, iz),
+            inverse_foot_inertia: Vec3::new(1.0 / ix, 1.0 / iy, 1.0 / iz),
             ball_inertia: kick.ball_inertia,
             ball_radius: kick.ball_radius,
             touch: kick.touch(),
@@ -318,7 +321,7 @@ impl Relative {
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
-        let (point, rate, sliding, normal_force, unclamped_force, damping_power, patch) = match &self.patch {
+        let (point, rate, sliding, normal_force, unclamped_force, damping_power, patch, zeta_rate) = match &self.patch {
             Some(patch) => self.patch_normal::<FACE>(patch, y, delta, n),
             None => {
         let lever_ball = along::<FACE>(n, -self.ball_radius);
@@ -335,7 +338,7 @@ impl Relative {
             (elastic, force, force)
         };
         let damping_power = (normal_force - elastic) * rate;
-        (point, rate, sliding, normal_force, unclamped_force, damping_power, None)
+        (point, rate, sliding, normal_force, unclamped_force, damping_power, None, 0.0)
             }
         };
 
@@ -351,7 +354,7 @@ impl Relative {
             Friction::None => Vec3::ZERO,
             Friction::Grip => match &patch {
                 None => self.grip_force::<FACE>(y, n, point, normal_force),
-                Some(p) => self.patch_grip_force::<FACE>(y, p, n, delta, rate),
+                Some(p) => self.patch_grip_force::<FACE>(y, p, n, delta, rate, zeta_rate),
             },
             Friction::Slip => -self.slip_direction::<FACE>(n) * cap,
         };
@@ -402,11 +405,12 @@ impl Relative {
 
     /// The normal side of [`Relative::local_on`] with the force spread over
     /// the patch ([`crate::patch`]): (point, δ̇, v_t, F_n, F_n unclamped, loss
-    /// power, the patch's force). Friction acts at the patch's centroid; the
-    /// loss is the exact balance of the element forces' power.
+    /// power, the patch's force, and on a cap while rigidly gripping the
+    /// centroid height's rate dζ/dδ). Friction acts at the patch's centroid;
+    /// the loss is the exact balance of the element forces' power.
     #[inline(always)]
     #[allow(clippy::type_complexity)]
-    fn patch_normal<const FACE: bool>(&self, patch: &Patch, y: &State, delta: f64, n: Vec3) -> (Vec3, f64, Vec3, f64, f64, f64, Option<PatchForce>) {
+    fn patch_normal<const FACE: bool>(&self, patch: &Patch, y: &State, delta: f64, n: Vec3) -> (Vec3, f64, Vec3, f64, f64, f64, Option<PatchForce>, f64) {
         let r = self.centre(y);
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
@@ -416,7 +420,13 @@ impl Relative {
         // The shell law (the patch's only law): F(δ, v) = F_el(δ)(1 + χ v), one evaluation.
         let (elastic, f1) = self.law.unclamped_force(delta, 1.0);
         let (f0, slope) = (elastic, f1 - elastic);
+        let mut zeta_rate = 0.0;
         let mut p = match self.cap {
+            Some((centre, radius)) if self.rigid && self.phase.friction == Friction::Grip => {
+                let p;
+                (p, zeta_rate) = patch.resultant_and_centroid_rate(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope);
+                p
+            }
             Some((centre, radius)) => patch.resultant(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope),
             // The closed form, inlined here (no rule).
             None if delta > 0.0 => crate::patch::flat(self.ball_radius, r, n.dot(r_dot), spin - omega, delta, n, f0, slope),
@@ -431,7 +441,7 @@ impl Relative {
         let v_rel = w + spin.cross(point - r) - omega.cross(point);
         // Power of the element forces on the relative motion, less the elastic's.
         let power = p.force.dot(w) + spin.dot(p.moment) - omega.dot(r.cross(p.force) + p.moment);
-        (point, rate, tangential::<FACE>(n, v_rel), n.dot(p.force), unclamped_force, -power - elastic * rate, Some(p))
+        (point, rate, tangential::<FACE>(n, v_rel), n.dot(p.force), unclamped_force, -power - elastic * rate, Some(p), zeta_rate)
     }
 
     /// dy/dx at (x, y).
@@ -516,8 +526,9 @@ impl Relative {
     #[inline]
     fn contact_compliance<const FACE: bool>(&self, n: Vec3, point: Vec3, lever: f64, f: Vec3) -> Vec3 {
         let r2 = lever * lever;
-        f * self.inverse_reduced_mass + tangential::<FACE>(n, f) * (r2 / self.ball_inertia)
-            - point.cross(point.cross(f) / self.foot_inertia)
+        // The face keeps its quotients (the point contact's kicks bit for bit).
+        let turn = if FACE { point.cross(f) / self.foot_inertia } else { point.cross(f) * self.inverse_foot_inertia };
+        f * self.inverse_reduced_mass + tangential::<FACE>(n, f) * (r2 / self.ball_inertia) - point.cross(turn)
     }
 
     /// Rigid grip: the tangential force on the ball that keeps the sliding
@@ -553,7 +564,8 @@ impl Relative {
     /// b = F/m_r − Ω × w − F_drive/m_f + (M/I_b − Ω × ω_b) × ℓ + ω_b × ℓ̇
     /// + I_f⁻¹(r × F + M + Ω × I_f Ω) × c − Ω × (ṙ + ℓ̇).
     #[inline]
-    fn patch_grip_force<const FACE: bool>(&self, y: &State, p: &PatchForce, n: Vec3, delta: f64, rate: f64) -> Vec3 {
+    #[allow(clippy::too_many_arguments)]
+    fn patch_grip_force<const FACE: bool>(&self, y: &State, p: &PatchForce, n: Vec3, delta: f64, rate: f64, zeta_rate: f64) -> Vec3 {
         let r = self.centre(y);
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
@@ -562,19 +574,25 @@ impl Relative {
         let r_dot = w - omega.cross(r);
         let (lever, lever_rate, normal_rate) = match (self.cap, &self.patch) {
             (Some((centre, radius)), Some(patch)) if !FACE => {
-                let d = (r - centre).length();
-                let normal_rate = tangential::<false>(n, r_dot) / d;
+                let d = self.ball_radius + radius - delta; // |r − C|
+                let normal_rate = tangential::<false>(n, r_dot) * (1.0 / d);
                 // At touch (δ = 0, the first evaluation only) the limit, from a patch of 1e-12 R.
-                let (_, zeta_rate) = patch.cap_centroid_rate(self.ball_radius, radius, delta.max(1e-12 * self.ball_radius));
+                let zeta_rate = if delta > 0.0 {
+                    zeta_rate
+                } else {
+                    let tiny = 1e-12 * self.ball_radius;
+                    let surface = Surface::Sphere { centre, radius };
+                    patch.resultant_and_centroid_rate(surface, self.ball_radius, centre + n * (d - tiny), Vec3::ZERO, Vec3::ZERO, tiny, n, 0.0, 0.0).1
+                };
                 let lever = n.dot(r - c);
                 (lever, n * (rate * (1.0 + zeta_rate)) - normal_rate * lever, normal_rate)
             }
             _ => (self.ball_radius - delta.max(0.0), n * rate, Vec3::ZERO),
         };
         let arm = c - r;
-        let foot_turn = (r.cross(p.force) + p.moment + omega.cross(omega * self.foot_inertia)) / self.foot_inertia;
+        let foot_turn = (r.cross(p.force) + p.moment + omega.cross(omega * self.foot_inertia)) * self.inverse_foot_inertia;
         let mut b = p.force * self.inverse_reduced_mass - omega.cross(w)
-            + (p.moment / self.ball_inertia - omega.cross(spin)).cross(arm)
+            + (p.moment * (1.0 / self.ball_inertia) - omega.cross(spin)).cross(arm)
             + spin.cross(lever_rate)
             + foot_turn.cross(c)
             - omega.cross(r_dot + lever_rate);

@@ -57,7 +57,7 @@
 //! fitted length. Friction acts at the patch's centroid (lever R − δ on a
 //! flat face, not R). Rigid grip holds the material points at the centroid
 //! together; since the centroid moves with δ (and on a cap with the normal),
-//! its motion is in the constraint ([`Patch::cap_centroid_rate`],
+//! its motion is in the constraint ([`Patch::resultant_and_centroid_rate`],
 //! `Relative::patch_grip_force` in [`crate::contact`]).
 //!
 //! Integration over the patch: on a flat face in closed form (depth and
@@ -184,16 +184,37 @@ impl Patch {
     #[allow(clippy::too_many_arguments)]
     #[inline]
     pub fn resultant(&self, surface: Surface, ball_radius: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
+        self.resultant_on::<false>(surface, ball_radius, r, r_dot, turn, delta, n, elastic, slope).0
+    }
+
+    /// [`Patch::resultant`] and, on a cap, the centroid height's rate dζ/dδ
+    /// (rigid grip's held point moves with δ; 0 on the flat face, where the
+    /// centroid's motion is δ̇ n), from the same rings: each ring's
+    /// derivative in δ beside its value, with ζ taken from the rim,
+    /// ζ = x_f + Σ g y / Σ g, y = z − x_f = (S − S₀)(S + S₀)/(κ²(z + x_f)),
+    /// so both terms of dζ/dδ stay accurate as δ → 0 (y and its mean are of
+    /// the patch's size, not r_f's). A unit test holds it to a five-point
+    /// difference of the centroid.
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    pub fn resultant_and_centroid_rate(&self, surface: Surface, ball_radius: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> (PatchForce, f64) {
+        self.resultant_on::<true>(surface, ball_radius, r, r_dot, turn, delta, n, elastic, slope)
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn resultant_on<const RATE: bool>(&self, surface: Surface, ball_radius: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> (PatchForce, f64) {
         let big_r = ball_radius;
         let r_n = n.dot(r_dot);
         let point = PatchForce { force: n * (elastic - slope * r_n), moment: Vec3::ZERO, centroid: r - n * big_r };
         if !(delta > 0.0) {
-            return point;
+            return (point, 0.0);
         }
         let r_t = r_dot - n * r_n;
         if surface == Surface::Flat {
-            return flat(big_r, r, r_n, turn, delta, n, elastic, slope);
+            return (flat(big_r, r, r_n, turn, delta, n, elastic, slope), 0.0);
         }
+        let mut zeta_rate = 0.0;
         let flat_a2 = delta * (2.0 * big_r - delta);
         // Sums over the rings, each already summed over θ (per N spokes).
         let (mut total, mut sum_g, mut sum_gz, mut along, mut across) = (0.0, 0.0, 0.0, 0.0, 0.0);
@@ -221,13 +242,52 @@ impl Patch {
                 // Each ring's weighted depth apart from the sums: no
                 // dependence between rings, so the square roots and
                 // divisions go two at a time (packed).
-                for (((z, g), &v), &w) in zs[..n].iter_mut().zip(&mut gs[..n]).zip(&self.node[..n]).zip(&self.weight[..n]) {
-                    let s = s0 + span * v;
-                    *z = (s * s + b2).sqrt() * inv_kappa;
-                    // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
-                    let h = span * v * (1.0 - (s + s0) / (kappa * (*z + x_f)));
-                    // z dz = S dS / κ².
-                    *g = w * h * s;
+                if !RATE {
+                    for (((z, g), &v), &w) in zs[..n].iter_mut().zip(&mut gs[..n]).zip(&self.node[..n]).zip(&self.weight[..n]) {
+                        let s = s0 + span * v;
+                        *z = (s * s + b2).sqrt() * inv_kappa;
+                        // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
+                        let h = span * v * (1.0 - (s + s0) / (kappa * (*z + x_f)));
+                        // z dz = S dS / κ².
+                        *g = w * h * s;
+                    }
+                } else {
+                    // The same with each quantity's δ-derivative (primed; d' = −1).
+                    let height_ = (2.0 * (big_r - delta) + 2.0 * height) / (2.0 * d);
+                    let x_f_ = -height_;
+                    let kappa_ = -inv_rf;
+                    let b2_ = -(d + big_r) - (rf - delta);
+                    let span_ = 1.0 + kappa_ * height + kappa * height_;
+                    let s0_ = -span_;
+                    let (kx, kx_) = (kappa * x_f, kappa_ * x_f + kappa * x_f_);
+                    let mut rows = [[0.0; 3]; MAX_RINGS];
+                    for ((((z, g), row), &v), &w) in zs[..n].iter_mut().zip(&mut gs[..n]).zip(&mut rows[..n]).zip(&self.node[..n]).zip(&self.weight[..n]) {
+                        let s = s0 + span * v;
+                        let s_ = s0_ + span_ * v;
+                        let root = (s * s + b2).sqrt(); // κ z
+                        let root_ = (s * s_ + 0.5 * b2_) / root;
+                        let inv_p = 1.0 / (root + kx); // 1/(κ (z + x_f))
+                        let ratio = (s + s0) * inv_p;
+                        let ratio_ = (s_ + s0_ - ratio * (root_ + kx_)) * inv_p;
+                        let h = span * v * (1.0 - ratio);
+                        let h_ = span_ * v * (1.0 - ratio) - span * v * ratio_;
+                        let y = span * v * ratio * inv_kappa;
+                        let y_ = (v * (span_ * ratio + span * ratio_) - y * kappa_) * inv_kappa;
+                        *z = root * inv_kappa;
+                        *g = w * h * s;
+                        *row = [w * (h_ * s + h * s_), y, y_];
+                    }
+                    let (mut sum_g, mut sum_gy) = (0.0, 0.0);
+                    for i in 0..n {
+                        sum_g += gs[i];
+                        sum_gy += gs[i] * rows[i][1];
+                    }
+                    let mean_y = sum_gy / sum_g;
+                    let mut spread = 0.0;
+                    for i in 0..n {
+                        spread += rows[i][0] * (rows[i][1] - mean_y) + gs[i] * rows[i][2];
+                    }
+                    zeta_rate = x_f_ + spread / sum_g;
                 }
                 let (mut sum_gzz, mut spread) = (0.0, 0.0);
                 for i in 0..n {
@@ -248,7 +308,7 @@ impl Patch {
             }
         }
         if !(total > 0.0) {
-            return point;
+            return (point, 0.0);
         }
         let (force, moment, centroid) = match surface {
             Surface::Flat => unreachable!("the flat face is closed form"),
@@ -259,90 +319,7 @@ impl Patch {
                 (n * (along / total) + v * (across / total), v.cross(n) * (across * d / total), centre + n * (sum_gz / sum_g))
             }
         };
-        PatchForce { force, moment, centroid }
-    }
-}
-
-impl Patch {
-    /// The cap patch's centroid height ζ on the cap's axis (the centroid is
-    /// C + ζ n, as in [`Patch::resultant`]) and its rate dζ/dδ, for rigid
-    /// grip, whose held point moves with δ. The same rings, differentiated
-    /// forward in δ (a value and its derivative through every operation),
-    /// with ζ taken from the rim, ζ = x_f + Σ g y / Σ g, y = z − x_f =
-    /// (S − S₀)(S + S₀)/(κ²(z + x_f)): both terms of dζ/dδ stay accurate as
-    /// δ → 0 (y and its mean are of the patch's size, not r_f's).
-    pub fn cap_centroid_rate(&self, ball_radius: f64, cap_radius: f64, delta: f64) -> (f64, f64) {
-        let (big_r, rf) = (Dual::constant(ball_radius), Dual::constant(cap_radius));
-        let delta = Dual { value: delta, rate: 1.0 };
-        let d = big_r + rf - delta;
-        let height = delta * (big_r * 2.0 - delta) / (d * 2.0);
-        let x_f = rf - height;
-        let kappa = d / rf;
-        let b2 = (rf - delta) * (d + big_r);
-        let span = delta + kappa * height;
-        let s0 = big_r - span;
-        let (mut sum_g, mut sum_gy) = (Dual::constant(0.0), Dual::constant(0.0));
-        for i in 0..self.rings {
-            let (v, w) = (self.node[i], self.weight[i]);
-            let s = s0 + span * v;
-            let z = (s * s + b2).sqrt() / kappa;
-            let h = span * v * (Dual::constant(1.0) - (s + s0) / (kappa * (z + x_f)));
-            let g = h * s * w;
-            let y = span * v * (s + s0) / (kappa * kappa * (z + x_f));
-            sum_g = sum_g + g;
-            sum_gy = sum_gy + g * y;
-        }
-        let zeta = x_f + sum_gy / sum_g;
-        (zeta.value, zeta.rate)
-    }
-}
-
-/// A value and its derivative (forward differentiation).
-#[derive(Debug, Clone, Copy)]
-struct Dual {
-    value: f64,
-    rate: f64,
-}
-
-impl Dual {
-    fn constant(value: f64) -> Dual {
-        Dual { value, rate: 0.0 }
-    }
-    fn sqrt(self) -> Dual {
-        let value = self.value.sqrt();
-        Dual { value, rate: 0.5 * self.rate / value }
-    }
-}
-
-impl std::ops::Add for Dual {
-    type Output = Dual;
-    fn add(self, o: Dual) -> Dual {
-        Dual { value: self.value + o.value, rate: self.rate + o.rate }
-    }
-}
-impl std::ops::Sub for Dual {
-    type Output = Dual;
-    fn sub(self, o: Dual) -> Dual {
-        Dual { value: self.value - o.value, rate: self.rate - o.rate }
-    }
-}
-impl std::ops::Mul for Dual {
-    type Output = Dual;
-    fn mul(self, o: Dual) -> Dual {
-        Dual { value: self.value * o.value, rate: self.rate * o.value + self.value * o.rate }
-    }
-}
-impl std::ops::Mul<f64> for Dual {
-    type Output = Dual;
-    fn mul(self, k: f64) -> Dual {
-        Dual { value: self.value * k, rate: self.rate * k }
-    }
-}
-impl std::ops::Div for Dual {
-    type Output = Dual;
-    fn div(self, o: Dual) -> Dual {
-        let value = self.value / o.value;
-        Dual { value, rate: (self.rate - value * o.rate) / o.value }
+        (PatchForce { force, moment, centroid }, zeta_rate)
     }
 }
 
@@ -624,7 +601,9 @@ mod tests {
             (p.centroid - centre).dot(n)
         };
         for delta in [3e-4, 0.003, 0.01, 0.03] {
-            let (z, rate) = patch.cap_centroid_rate(big_r, rf, delta);
+            let r = centre + n * (big_r + rf - delta);
+            let (p, rate) = patch.resultant_and_centroid_rate(Surface::Sphere { centre, radius: rf }, big_r, r, Vec3::ZERO, Vec3::ZERO, delta, n, 1000.0, 50.0);
+            let z = (p.centroid - centre).dot(n);
             let h = 1e-3 * delta;
             let fd = (8.0 * (zeta(delta + h) - zeta(delta - h)) - (zeta(delta + 2.0 * h) - zeta(delta - 2.0 * h))) / (12.0 * h);
             println!("δ {delta}: ζ {z} rate {rate} (difference {fd})");
