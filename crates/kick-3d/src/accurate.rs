@@ -255,15 +255,6 @@ impl Accurate3d {
                 reason: "a ground plane is a third body; use the rapier scene path",
             });
         }
-        // The grip constraint holds the point contact on a flat face (n fixed
-        // on the foot), or the patch's centroid on a flat face or a cap.
-        if kick.rigid_grip() && kick.instep.is_some_and(|i| i.is_curved() && i.patch.is_none()) {
-            return Err(Kick3dError::UnsupportedScene {
-                path: "accurate",
-                reason: "rigid grip (tangential_stiffness = inf) on a curved instep (instep_radius) holds the patch's centroid: \
-                         give patch_contact with it (the point contact on a cap is not constrained)",
-            });
-        }
         // One plane: the foot's path (x–z at an approach angle), the offset (y)
         // and the face's normal (x–y with a yaw, x–z with a pitch).
         let (yaw, pitch) = kick.instep.map_or((kick.obliquity(), 0.0), |i| (i.yaw, i.pitch));

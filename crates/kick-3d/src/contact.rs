@@ -353,6 +353,11 @@ impl Relative {
             _ if !self.rigid => Vec3::ZERO,
             Friction::None => Vec3::ZERO,
             Friction::Grip => match &patch {
+                // The point contact on a cap: p = C + (r_f − δ) n, the patch's formula with dζ/dδ = −1.
+                None if !FACE && self.cap.is_some() => {
+                    let p = PatchForce { force: n * normal_force, moment: Vec3::ZERO, centroid: point };
+                    self.patch_grip_force::<FACE>(y, &p, n, delta, rate, -1.0)
+                }
                 None => self.grip_force::<FACE>(y, n, point, normal_force),
                 Some(p) => self.patch_grip_force::<FACE>(y, p, n, delta, rate, zeta_rate),
             },
@@ -563,6 +568,8 @@ impl Relative {
     /// of F_t), the frame's rotation and the centroid's motion:
     /// b = F/m_r − Ω × w − F_drive/m_f + (M/I_b − Ω × ω_b) × ℓ + ω_b × ℓ̇
     /// + I_f⁻¹(r × F + M + Ω × I_f Ω) × c − Ω × (ṙ + ℓ̇).
+    /// The point contact on a cap is the case c = C + (r_f − δ) n, M = 0:
+    /// dζ/dδ = −1, lever R.
     #[inline]
     #[allow(clippy::too_many_arguments)]
     fn patch_grip_force<const FACE: bool>(&self, y: &State, p: &PatchForce, n: Vec3, delta: f64, rate: f64, zeta_rate: f64) -> Vec3 {
@@ -572,17 +579,18 @@ impl Relative {
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
         let c = p.centroid;
         let r_dot = w - omega.cross(r);
-        let (lever, lever_rate, normal_rate) = match (self.cap, &self.patch) {
-            (Some((centre, radius)), Some(patch)) if !FACE => {
+        let (lever, lever_rate, normal_rate) = match self.cap {
+            Some((centre, radius)) if !FACE => {
                 let d = self.ball_radius + radius - delta; // |r − C|
                 let normal_rate = tangential::<false>(n, r_dot) * (1.0 / d);
-                // At touch (δ = 0, the first evaluation only) the limit, from a patch of 1e-12 R.
-                let zeta_rate = if delta > 0.0 {
-                    zeta_rate
-                } else {
-                    let tiny = 1e-12 * self.ball_radius;
-                    let surface = Surface::Sphere { centre, radius };
-                    patch.resultant_and_centroid_rate(surface, self.ball_radius, centre + n * (d - tiny), Vec3::ZERO, Vec3::ZERO, tiny, n, 0.0, 0.0).1
+                // The patch at touch (δ = 0, the first evaluation only): the limit, from a patch of 1e-12 R.
+                let zeta_rate = match &self.patch {
+                    Some(patch) if !(delta > 0.0) => {
+                        let tiny = 1e-12 * self.ball_radius;
+                        let surface = Surface::Sphere { centre, radius };
+                        patch.resultant_and_centroid_rate(surface, self.ball_radius, centre + n * (d - tiny), Vec3::ZERO, Vec3::ZERO, tiny, n, 0.0, 0.0).1
+                    }
+                    _ => zeta_rate,
                 };
                 let lever = n.dot(r - c);
                 (lever, n * (rate * (1.0 + zeta_rate)) - normal_rate * lever, normal_rate)

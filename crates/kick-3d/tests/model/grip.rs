@@ -12,6 +12,15 @@ fn rigid(spec: Kick3dSpec) -> Kick3dSpec {
     Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..spec }
 }
 
+/// On a 15 cm cap square to the swing (point contact: sphere on sphere).
+fn on_cap(spec: Kick3dSpec, cap: bool) -> Kick3dSpec {
+    if cap {
+        Kick3dSpec { instep_radius: Some(CAP), face_yaw_deg: Some(0.0), ..spec }
+    } else {
+        spec
+    }
+}
+
 /// The shell ball (the patch's law).
 fn shell() -> kick_core::Scenario {
     kick_core::Scenario::baseline().with_shell(kick_core::ShellBall::default_with_radius(0.11).unwrap())
@@ -88,12 +97,13 @@ fn a_foot_that_cannot_turn_gives_the_gripping_limit() {
 /// While gripping, nothing slides: on every history sample of a grip phase
 /// the contact point's sliding velocity is zero to the solver's tolerance
 /// (1e-9 of the approach speed), for μ = ∞ (also at separation) and for a
-/// finite μ, which slips at touch, grips, and slips again as F_n → 0.
+/// finite μ, which slips at touch, grips, and slips again as F_n → 0; on
+/// the flat face and on a cap (where p = C + (r_f − δ) n turns with the normal).
 #[test]
 fn nothing_slides_while_gripping() {
     use kick_3d::history::ContactState;
-    for (friction, offset) in [(f64::INFINITY, 0.05), (f64::INFINITY, 0.08), (2.0, 0.05), (0.6, 0.03)] {
-        let k = kick(rigid(Kick3dSpec { offset: Some(offset), friction: Some(friction), ..Kick3dSpec::default() }));
+    for (friction, offset, cap) in [(f64::INFINITY, 0.05, false), (f64::INFINITY, 0.08, false), (2.0, 0.05, false), (0.6, 0.03, false), (f64::INFINITY, 0.05, true), (0.6, 0.05, true)] {
+        let k = kick(rigid(on_cap(Kick3dSpec { offset: Some(offset), friction: Some(friction), ..Kick3dSpec::default() }, cap)));
         let v_n = k.normal_approach_speed();
         let (o, samples) = Accurate3d::default().solve_sampled(&k, kick_core::Spacing::Count(400), 400).unwrap();
         let mut worst = 0.0_f64;
@@ -112,12 +122,12 @@ fn nothing_slides_while_gripping() {
             worst = worst.max((v - n * v.dot(n)).length());
             gripping += 1;
         }
-        println!("mu {friction}, e {offset}: slip {:.3e} of {:.3e} s; {gripping} grip samples, sliding at most {worst:.2e} m/s", o.slip_time, o.contact_time);
+        println!("cap {cap}, mu {friction}, e {offset}: slip {:.3e} of {:.3e} s; {gripping} grip samples, sliding at most {worst:.2e} m/s", o.slip_time, o.contact_time);
         assert!(gripping > 100, "mu {friction}: {gripping}");
         assert!(worst <= 1e-9 * v_n, "mu {friction}, e {offset}: {worst:e}");
         if friction.is_finite() {
             assert!(o.slip_time > 0.0, "a finite mu slips first: the foot slides over the ball at touch");
-        } else {
+        } else if !cap {
             let (_, end) = Accurate3d::default().solve_to_state(&k).unwrap();
             assert!(sliding_at(&k, &end).length() <= 1e-9 * v_n);
         }
@@ -128,8 +138,8 @@ fn nothing_slides_while_gripping() {
 /// pair's momentum and angular momentum are conserved (no drive, no gravity).
 #[test]
 fn energy_momentum_and_angular_momentum_close() {
-    for friction in [f64::INFINITY, 0.8] {
-        let k = kick(rigid(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(0.0), friction: Some(friction), ..Kick3dSpec::default() }));
+    for (friction, cap) in [(f64::INFINITY, false), (0.8, false), (f64::INFINITY, true), (0.8, true)] {
+        let k = kick(rigid(on_cap(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(0.0), friction: Some(friction), ..Kick3dSpec::default() }, cap)));
         let (o, e) = Accurate3d::default().solve_to_state(&k).unwrap();
         assert!(o.energy.relative_residual().abs() <= 1e-9, "mu {friction}: {:e}", o.energy.relative_residual());
         assert!(o.energy.friction_loss > 0.0);
@@ -151,10 +161,11 @@ fn energy_momentum_and_angular_momentum_close() {
 /// The stiff spring tends to rigid grip: at a fixed damping ratio (0.35)
 /// the spin's distance to the rigid kick falls about tenfold per decade of
 /// k_t, and at 1e9 N/m is below 1e-5 of it; the constraint costs a tenth of
-/// the evaluations.
+/// the evaluations. On the flat face and on a cap.
 #[test]
 fn a_stiff_spring_tends_to_rigid_grip() {
-    let base = Kick3dSpec { offset: Some(0.05), friction: Some(f64::INFINITY), ..Kick3dSpec::default() };
+    for cap in [false, true] {
+    let base = on_cap(Kick3dSpec { offset: Some(0.05), friction: Some(f64::INFINITY), ..Kick3dSpec::default() }, cap);
     let limit = Accurate3d::default().solve(&kick(rigid(base))).unwrap();
     let mass = kick_3d::checks::tangential_mass(&kick(base), kick(base).foot_inertia[2]);
     let mut previous = f64::INFINITY;
@@ -164,13 +175,14 @@ fn a_stiff_spring_tends_to_rigid_grip() {
             .solve(&kick(Kick3dSpec { tangential_stiffness: Some(k_t), tangential_damping: Some(c_t), ..base }))
             .unwrap();
         let distance = (spring.spin[2] - limit.spin[2]).abs() / limit.spin[2].abs();
-        println!("k_t {k_t:e}: spin {} vs rigid {}: {distance:.2e}; {} vs {} evaluations", spring.spin[2], limit.spin[2], spring.evaluations, limit.evaluations);
-        assert!(distance < previous / 5.0, "k_t {k_t:e}: {distance:e} after {previous:e}");
+        println!("cap {cap}, k_t {k_t:e}: spin {} vs rigid {}: {distance:.2e}; {} vs {} evaluations", spring.spin[2], limit.spin[2], spring.evaluations, limit.evaluations);
+        assert!(distance < previous / 5.0, "cap {cap}, k_t {k_t:e}: {distance:e} after {previous:e}");
         previous = distance;
         if k_t == 1e9 {
             assert!(distance < 1e-5, "{distance:e}");
             assert!(limit.evaluations * 5 < spring.evaluations, "{} vs {}", limit.evaluations, spring.evaluations);
         }
+    }
     }
 }
 
@@ -199,12 +211,6 @@ fn paths_without_the_constraint_refuse_it() {
         let e = Accurate3d::default().solve(&pitched).unwrap_err();
         assert!(e.to_string().contains("face_pitch = 0"), "{e}");
     }
-    // A curved instep without the patch: the point contact on a cap is not
-    // constrained (with the patch it is solved, below).
-    let spec = Kick3dSpec { instep_radius: Some(0.15), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() };
-    let k = Kick3d::new(shell(), &rigid(Kick3dSpec { offset: Some(0.05), ..spec })).unwrap();
-    let e = Accurate3d::default().solve(&k).unwrap_err();
-    assert!(e.to_string().contains("instep_radius") && e.to_string().contains("patch_contact"), "{e}");
     // A narrow instep face the ball rolls off.
     let off = kick(rigid(Kick3dSpec { offset: Some(0.08), foot_half_extents: Some([0.03, 0.01, 0.05]), ..Kick3dSpec::default() }));
     match Accurate3d::default().solve(&off) {
@@ -221,13 +227,20 @@ fn paths_without_the_constraint_refuse_it() {
 fn rigid_grip_holds_its_accuracy_through_the_switches() {
     let tight = Accurate3d::new(3e-15).unwrap();
     let mut worst = 0.0_f64;
-    for (friction, offset, approach) in [(f64::INFINITY, 0.05, 0.0), (0.6, 0.03, 0.0), (2.0, 0.07, 0.0), (0.4, 0.05, 0.0), (f64::INFINITY, 0.06, 15.0)] {
-        let k = kick(rigid(Kick3dSpec {
-            offset: Some(offset),
-            friction: Some(friction),
-            approach_angle_deg: Some(approach),
-            ..Kick3dSpec::default()
-        }));
+    for (friction, offset, approach, cap) in [
+        (f64::INFINITY, 0.05, 0.0, false),
+        (0.6, 0.03, 0.0, false),
+        (2.0, 0.07, 0.0, false),
+        (0.4, 0.05, 0.0, false),
+        (f64::INFINITY, 0.06, 15.0, false),
+        (f64::INFINITY, 0.05, 0.0, true),
+        (0.6, 0.05, 0.0, true),
+        (f64::INFINITY, 0.06, 15.0, true),
+    ] {
+        let k = kick(rigid(on_cap(
+            Kick3dSpec { offset: Some(offset), friction: Some(friction), approach_angle_deg: Some(approach), ..Kick3dSpec::default() },
+            cap,
+        )));
         let (a, b) = (Accurate3d::default().solve(&k).unwrap(), tight.solve(&k).unwrap());
         let rel = |x: f64, y: f64, scale: f64| (x - y).abs() / scale;
         let spin = b.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
@@ -241,7 +254,7 @@ fn rigid_grip_holds_its_accuracy_through_the_switches() {
             rel(a.max_compression, b.max_compression, b.max_compression),
         ];
         let e = errors.iter().copied().fold(0.0, f64::max);
-        println!("mu {friction}, e {offset}, approach {approach}: {errors:?}");
+        println!("cap {cap}, mu {friction}, e {offset}, approach {approach}: {errors:?}");
         assert!(e <= 1e-9, "mu {friction}, e {offset}: {errors:?}");
         worst = worst.max(e);
     }
