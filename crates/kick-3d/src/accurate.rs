@@ -381,6 +381,7 @@ impl Accurate3d {
             // The earliest switch that ends the phase in this step; switches
             // that do not change the right-hand side are marked on the way.
             let mut end: Option<(f64, Switch)> = None;
+            let mut marker: Option<f64> = None;
             let kinked = kick.law.damps_compression_only();
             // Landed on u = 0 (to rounding of the last step's end): separation.
             let landed = matches!(system.phase.clock, Clock::Release { start } if x1 >= start * (1.0 - 1e-14));
@@ -432,20 +433,29 @@ impl Accurate3d {
                     crossed_by,
                 );
                 if switch == Switch::CompressionRate && !kinked {
-                    // A marker only: the phase goes on with the other sign expected.
-                    if system.phase.compressing {
-                        let y = d.at(x);
-                        let delta = system.local(x, &y).compression;
-                        if delta > max_compression.0 {
-                            max_compression = (delta, system.time(x, &y));
-                        }
-                    }
-                    system = system.in_phase(Phase { compressing: !system.phase.compressing, ..system.phase });
+                    // A marker only, applied below unless a switch ends the phase before it.
+                    marker = Some(x);
                     continue;
                 }
                 if end.is_none_or(|(xe, _)| x < xe) {
                     end = Some((x, switch));
                 }
+            }
+
+            // δ̇ = 0 where the right-hand side does not change: the phase goes on
+            // with the other sign expected. Past a switch that ends the phase
+            // first, the phase's continuation is not the motion (there δ_max
+            // was read off it: 6.5e-8 of δ_max where a slip began within the
+            // step); the next phase finds it again.
+            if let Some(x) = marker.filter(|&x| end.is_none_or(|(xe, _)| x <= xe)) {
+                if system.phase.compressing {
+                    let y = dense.as_ref().map_or(y1, |d| d.at(x));
+                    let delta = system.local(x, &y).compression;
+                    if delta > max_compression.0 {
+                        max_compression = (delta, system.time(x, &y));
+                    }
+                }
+                system = system.in_phase(Phase { compressing: !system.phase.compressing, ..system.phase });
             }
 
             // The stretch's end: a switch, or the accepted point.
