@@ -37,7 +37,9 @@
 //! variable is u = δ^(1/p) instead of t ([`Clock`]): the force's δⁿ becomes
 //! u^(pn), smooth enough for the 8th-order steps, and t is integrated as a
 //! state (dt/du = p u^(p−1)/δ̇, δ̇ kept away from zero). Separation is then
-//! the known end u = 0, not an event.
+//! the known end u = 0, not an event. The shell law, smooth at touch
+//! (F ∝ δ), takes u only towards separation, where its force stops with a
+//! kink at δ = 0 that a step across it would straddle.
 
 use crate::dynamics::geometry;
 use crate::model::Kick3d;
