@@ -66,7 +66,8 @@ fn off_center_box(c: &mut Criterion) {
 
 /// The shell ball at 5 cm offset, μ = 0.5 (Table 1's foot, 22 m/s): the
 /// point contact against the patch on the knife-edge face and on a 15 cm
-/// cap (`kick_3d::patch`), one kick per iteration, one binary.
+/// cap (`kick_3d::patch`), and the patch with rigid grip, one kick per
+/// iteration, one binary.
 fn patch_contact(c: &mut Criterion) {
     let base = kick_core::Scenario::baseline().with_law(kick_core::LawKind::Shell, None).expect("shell");
     let spec = kick_3d::Kick3dSpec { offset: Some(0.05), ..kick_3d::Kick3dSpec::default() };
@@ -74,6 +75,22 @@ fn patch_contact(c: &mut Criterion) {
         ("shell point contact", spec),
         ("shell patch, knife edge", kick_3d::Kick3dSpec { patch_contact: Some(true), ..spec }),
         ("shell patch, 15 cm cap", kick_3d::Kick3dSpec { patch_contact: Some(true), instep_radius: Some(0.15), face_yaw_deg: Some(0.0), ..spec }),
+        // Rigid grip (k_t = ∞, a constraint) under the patch: μ = 0.5 slips, grips and slips; μ = ∞ grips throughout.
+        ("shell patch, knife edge, rigid grip", kick_3d::Kick3dSpec { patch_contact: Some(true), tangential_stiffness: Some(f64::INFINITY), ..spec }),
+        (
+            "shell patch, knife edge, rigid grip, mu inf",
+            kick_3d::Kick3dSpec { patch_contact: Some(true), tangential_stiffness: Some(f64::INFINITY), friction: Some(f64::INFINITY), ..spec },
+        ),
+        (
+            "shell patch, 15 cm cap, rigid grip",
+            kick_3d::Kick3dSpec {
+                patch_contact: Some(true),
+                instep_radius: Some(0.15),
+                face_yaw_deg: Some(0.0),
+                tangential_stiffness: Some(f64::INFINITY),
+                ..spec
+            },
+        ),
     ];
     let mut group = c.benchmark_group("patch_contact_5cm");
     group.throughput(Throughput::Elements(1));

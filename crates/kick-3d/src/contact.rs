@@ -37,7 +37,9 @@
 //! variable is u = δ^(1/p) instead of t ([`Clock`]): the force's δⁿ becomes
 //! u^(pn), smooth enough for the 8th-order steps, and t is integrated as a
 //! state (dt/du = p u^(p−1)/δ̇, δ̇ kept away from zero). Separation is then
-//! the known end u = 0, not an event.
+//! the known end u = 0, not an event. The shell law, smooth at touch
+//! (F ∝ δ), takes u only towards separation, where its force stops with a
+//! kink at δ = 0 that a step across it would straddle.
 
 use crate::dynamics::geometry;
 use crate::model::Kick3d;
@@ -98,7 +100,8 @@ pub enum Friction {
     /// μ = 0: no slider; the spring relaxes through its damper.
     None,
     /// The element carries k_t ξ + c_t v_t (always, for μ = ∞). With rigid
-    /// grip (k_t = ∞): the force that keeps the contact point from sliding.
+    /// grip (k_t = ∞): the force that keeps the contact point (the patch's
+    /// centroid, with the patch) from sliding.
     Grip,
     /// The element carries μ F_n along k_t ξ + c_t v_t. With rigid grip:
     /// μ F_n against [`Phase::slip_direction`].
@@ -141,6 +144,14 @@ pub struct Phase {
     /// Rigid grip only: the sliding direction (body frame, tangential) of a
     /// slip phase, fixed through it (exact while the kick stays in one plane).
     pub slip_direction: Vec3,
+    /// Rigid grip only: where a slip that began from grip ends, the sliding
+    /// along `slip_direction` (≤ 0). Such a slip starts from the grip's
+    /// residual sliding (at the tolerance) and grows quadratically from a
+    /// tangency, so measured from zero its end would be found in the residual's
+    /// rounding, and grip and slip would alternate there: the slip ends where
+    /// the sliding falls back below the residual less ten times the speed
+    /// tolerance (a shift of the reversal's time far below the tolerance's).
+    pub slip_start: f64,
 }
 
 /// The law at one state, body frame.
@@ -181,6 +192,8 @@ pub struct Relative {
     /// 1/m_b + 1/m_f.
     inverse_reduced_mass: f64,
     pub foot_inertia: Vec3,
+    /// 1/I_f (products instead of quotients in the grip's off-face paths).
+    inverse_foot_inertia: Vec3,
     pub ball_inertia: f64,
     pub ball_radius: f64,
     /// r0 = (R + h_x outer, 0, 0): the ball centre at first touch.
@@ -217,6 +230,7 @@ impl Relative {
             ball_mass: m_b,
             inverse_reduced_mass: 1.0 / m_b + 1.0 / m_f,
             foot_inertia: Vec3::new(ix, iy, iz),
+            inverse_foot_inertia: Vec3::new(1.0 / ix, 1.0 / iy, 1.0 / iz),
             ball_inertia: kick.ball_inertia,
             ball_radius: kick.ball_radius,
             touch: kick.touch(),
@@ -309,7 +323,7 @@ impl Relative {
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
-        let (point, rate, sliding, normal_force, unclamped_force, damping_power, patch) = match &self.patch {
+        let (point, rate, sliding, normal_force, unclamped_force, damping_power, patch, zeta_rate) = match &self.patch {
             Some(patch) => self.patch_normal::<FACE>(patch, y, delta, n),
             None => {
         let lever_ball = along::<FACE>(n, -self.ball_radius);
@@ -326,7 +340,7 @@ impl Relative {
             (elastic, force, force)
         };
         let damping_power = (normal_force - elastic) * rate;
-        (point, rate, sliding, normal_force, unclamped_force, damping_power, None)
+        (point, rate, sliding, normal_force, unclamped_force, damping_power, None, 0.0)
             }
         };
 
@@ -340,8 +354,16 @@ impl Relative {
         let rigid_force = match self.phase.friction {
             _ if !self.rigid => Vec3::ZERO,
             Friction::None => Vec3::ZERO,
-            Friction::Grip => self.grip_force::<FACE>(y, n, point, normal_force),
-            Friction::Slip => -self.phase.slip_direction * cap,
+            Friction::Grip => match &patch {
+                // The point contact on a cap: p = C + (r_f − δ) n, the patch's formula with dζ/dδ = −1.
+                None if !FACE && self.cap.is_some() => {
+                    let p = PatchForce { force: n * normal_force, moment: Vec3::ZERO, centroid: point };
+                    self.patch_grip_force::<FACE>(y, &p, n, delta, rate, -1.0)
+                }
+                None => self.grip_force::<FACE>(y, n, point, normal_force),
+                Some(p) => self.patch_grip_force::<FACE>(y, p, n, delta, rate, zeta_rate),
+            },
+            Friction::Slip => -self.slip_direction::<FACE>(n) * cap,
         };
         let grip_margin = if self.friction == 0.0 {
             0.0
@@ -350,7 +372,7 @@ impl Relative {
         } else if self.rigid {
             match self.phase.friction {
                 // The slip ends where the sliding reverses.
-                Friction::Slip => -sliding.dot(self.phase.slip_direction),
+                Friction::Slip => self.phase.slip_start - sliding.dot(self.slip_direction::<FACE>(n)),
                 _ => cap - rigid_force.length(),
             }
         } else {
@@ -390,11 +412,12 @@ impl Relative {
 
     /// The normal side of [`Relative::local_on`] with the force spread over
     /// the patch ([`crate::patch`]): (point, δ̇, v_t, F_n, F_n unclamped, loss
-    /// power, the patch's force). Friction acts at the patch's centroid; the
-    /// loss is the exact balance of the element forces' power.
+    /// power, the patch's force, and on a cap while rigidly gripping the
+    /// centroid height's rate dζ/dδ). Friction acts at the patch's centroid;
+    /// the loss is the exact balance of the element forces' power.
     #[inline(always)]
     #[allow(clippy::type_complexity)]
-    fn patch_normal<const FACE: bool>(&self, patch: &Patch, y: &State, delta: f64, n: Vec3) -> (Vec3, f64, Vec3, f64, f64, f64, Option<PatchForce>) {
+    fn patch_normal<const FACE: bool>(&self, patch: &Patch, y: &State, delta: f64, n: Vec3) -> (Vec3, f64, Vec3, f64, f64, f64, Option<PatchForce>, f64) {
         let r = self.centre(y);
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
@@ -404,11 +427,18 @@ impl Relative {
         // The shell law (the patch's only law): F(δ, v) = F_el(δ)(1 + χ v), one evaluation.
         let (elastic, f1) = self.law.unclamped_force(delta, 1.0);
         let (f0, slope) = (elastic, f1 - elastic);
-        let surface = match self.cap {
-            Some((centre, radius)) => Surface::Sphere { centre, radius },
-            None => Surface::Flat,
+        let mut zeta_rate = 0.0;
+        let mut p = match self.cap {
+            Some((centre, radius)) if self.rigid && self.phase.friction == Friction::Grip => {
+                let p;
+                (p, zeta_rate) = patch.resultant_and_centroid_rate(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope);
+                p
+            }
+            Some((centre, radius)) => patch.resultant(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope),
+            // The closed form, inlined here (no rule).
+            None if delta > 0.0 => crate::patch::flat(self.ball_radius, r, n.dot(r_dot), spin - omega, delta, n, f0, slope),
+            None => patch.resultant(Surface::Flat, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope),
         };
-        let mut p = patch.resultant(surface, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope);
         let unclamped_force = n.dot(p.force);
         if self.phase.clamped {
             p.force = Vec3::ZERO;
@@ -418,7 +448,7 @@ impl Relative {
         let v_rel = w + spin.cross(point - r) - omega.cross(point);
         // Power of the element forces on the relative motion, less the elastic's.
         let power = p.force.dot(w) + spin.dot(p.moment) - omega.dot(r.cross(p.force) + p.moment);
-        (point, rate, tangential::<FACE>(n, v_rel), n.dot(p.force), unclamped_force, -power - elastic * rate, Some(p))
+        (point, rate, tangential::<FACE>(n, v_rel), n.dot(p.force), unclamped_force, -power - elastic * rate, Some(p), zeta_rate)
     }
 
     /// dy/dx at (x, y).
@@ -496,13 +526,16 @@ impl Relative {
 
     /// K f: the rate of the contact point's relative velocity (ball's
     /// material point minus foot's) per unit force f on the ball at p, on the
-    /// face: f (1/m_b + 1/m_f) + (R²/I_b) f_t − p × I_f⁻¹ (p × f), the
-    /// inverse effective mass of the contact (symmetric, positive definite).
+    /// face: f (1/m_b + 1/m_f) + (L²/I_b) f_t − p × I_f⁻¹ (p × f), the
+    /// inverse effective mass of the contact (symmetric, positive definite),
+    /// L = |p − r| the ball's lever (R for the point contact, R − δ at the
+    /// patch's centroid).
     #[inline]
-    fn contact_compliance<const FACE: bool>(&self, n: Vec3, point: Vec3, f: Vec3) -> Vec3 {
-        let r2 = self.ball_radius * self.ball_radius;
-        f * self.inverse_reduced_mass + tangential::<FACE>(n, f) * (r2 / self.ball_inertia)
-            - point.cross(point.cross(f) / self.foot_inertia)
+    fn contact_compliance<const FACE: bool>(&self, n: Vec3, point: Vec3, lever: f64, f: Vec3) -> Vec3 {
+        let r2 = lever * lever;
+        // The face keeps its quotients (the point contact's kicks bit for bit).
+        let turn = if FACE { point.cross(f) / self.foot_inertia } else { point.cross(f) * self.inverse_foot_inertia };
+        f * self.inverse_reduced_mass + tangential::<FACE>(n, f) * (r2 / self.ball_inertia) - point.cross(turn)
     }
 
     /// Rigid grip: the tangential force on the ball that keeps the sliding
@@ -522,17 +555,96 @@ impl Relative {
         if self.drive != Vec3::ZERO {
             b -= rotation(y).inverse() * self.drive / self.foot_mass;
         }
-        let rhs = -(b + self.contact_compliance::<FACE>(n, point, along::<FACE>(n, normal_force)));
-        self.tangential_solve::<FACE>(n, point, rhs)
+        let rhs = -(b + self.contact_compliance::<FACE>(n, point, self.ball_radius, along::<FACE>(n, normal_force)));
+        self.tangential_solve::<FACE>(n, point, self.ball_radius, rhs)
     }
 
-    /// The tangential f with (K f)_t = rhs_t (face: the y and z rows).
+    /// Rigid grip under the patch: friction acts at the centroid c, so the
+    /// held velocity is the material points' at c, v = w + ω_b × ℓ − Ω × c
+    /// with ℓ = c − r, and c moves with the ball and with δ. On the flat face
+    /// ℓ = −(R − δ) n, ℓ̇ = δ̇ n; on a cap c = C + ζ(δ) n, ℓ = −(d − ζ) n,
+    /// ℓ̇ = δ̇ (1 + ζ') n − (d − ζ) ṅ with ṅ = ṙ_t / d, and keeping v_t = 0
+    /// on the turning normal needs (v̇)_t = (v · n) ṅ. Differentiating along
+    /// the body-frame rates, v̇ = K F_t + b with K at c with lever |ℓ|, and b
+    /// holding the patch's force F and moment M (functions of the state, not
+    /// of F_t), the frame's rotation and the centroid's motion:
+    /// b = F/m_r − Ω × w − F_drive/m_f + (M/I_b − Ω × ω_b) × ℓ + ω_b × ℓ̇
+    /// + I_f⁻¹(r × F + M + Ω × I_f Ω) × c − Ω × (ṙ + ℓ̇).
+    /// The point contact on a cap is the case c = C + (r_f − δ) n, M = 0:
+    /// dζ/dδ = −1, lever R.
     #[inline]
-    fn tangential_solve<const FACE: bool>(&self, n: Vec3, point: Vec3, rhs: Vec3) -> Vec3 {
-        let ky = self.contact_compliance::<FACE>(n, point, Vec3::Y);
-        let kz = self.contact_compliance::<FACE>(n, point, Vec3::Z);
-        let det = ky.y * kz.z - kz.y * ky.z;
-        Vec3::new(0.0, (rhs.y * kz.z - kz.y * rhs.z) / det, (ky.y * rhs.z - rhs.y * ky.z) / det)
+    #[allow(clippy::too_many_arguments)]
+    fn patch_grip_force<const FACE: bool>(&self, y: &State, p: &PatchForce, n: Vec3, delta: f64, rate: f64, zeta_rate: f64) -> Vec3 {
+        let r = self.centre(y);
+        let w = vec3(y, RELATIVE_VELOCITY);
+        let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
+        let spin = vec3(y, BALL_ANGULAR_VELOCITY);
+        let c = p.centroid;
+        let r_dot = w - omega.cross(r);
+        let (lever, lever_rate, normal_rate) = match self.cap {
+            Some((centre, radius)) if !FACE => {
+                let d = self.ball_radius + radius - delta; // |r − C|
+                let normal_rate = tangential::<false>(n, r_dot) * (1.0 / d);
+                // The patch at touch (δ = 0, the first evaluation only): the limit, from a patch of 1e-12 R.
+                let zeta_rate = match &self.patch {
+                    Some(patch) if !(delta > 0.0) => {
+                        let tiny = 1e-12 * self.ball_radius;
+                        let surface = Surface::Sphere { centre, radius };
+                        patch.resultant_and_centroid_rate(surface, self.ball_radius, centre + n * (d - tiny), Vec3::ZERO, Vec3::ZERO, tiny, n, 0.0, 0.0).1
+                    }
+                    _ => zeta_rate,
+                };
+                let lever = n.dot(r - c);
+                (lever, n * (rate * (1.0 + zeta_rate)) - normal_rate * lever, normal_rate)
+            }
+            _ => (self.ball_radius - delta.max(0.0), n * rate, Vec3::ZERO),
+        };
+        let arm = c - r;
+        let foot_turn = (r.cross(p.force) + p.moment + omega.cross(omega * self.foot_inertia)) * self.inverse_foot_inertia;
+        let mut b = p.force * self.inverse_reduced_mass - omega.cross(w)
+            + (p.moment * (1.0 / self.ball_inertia) - omega.cross(spin)).cross(arm)
+            + spin.cross(lever_rate)
+            + foot_turn.cross(c)
+            - omega.cross(r_dot + lever_rate);
+        if self.drive != Vec3::ZERO {
+            b -= rotation(y).inverse() * self.drive / self.foot_mass;
+        }
+        if !FACE {
+            let v = w + spin.cross(arm) - omega.cross(c);
+            b -= normal_rate * n.dot(v);
+        }
+        self.tangential_solve::<FACE>(n, c, lever, -b)
+    }
+
+    /// The tangential f with (K f)_t = rhs_t: on the face the y and z rows,
+    /// elsewhere the rows of a tangent basis.
+    #[inline]
+    fn tangential_solve<const FACE: bool>(&self, n: Vec3, point: Vec3, lever: f64, rhs: Vec3) -> Vec3 {
+        if FACE {
+            let ky = self.contact_compliance::<FACE>(n, point, lever, Vec3::Y);
+            let kz = self.contact_compliance::<FACE>(n, point, lever, Vec3::Z);
+            let det = ky.y * kz.z - kz.y * ky.z;
+            return Vec3::new(0.0, (rhs.y * kz.z - kz.y * rhs.z) / det, (ky.y * rhs.z - rhs.y * ky.z) / det);
+        }
+        let e1 = (if n.z.abs() < 0.9 { Vec3::Z } else { Vec3::Y }).cross(n).normalize();
+        let e2 = n.cross(e1);
+        let (k1, k2) = (self.contact_compliance::<false>(n, point, lever, e1), self.contact_compliance::<false>(n, point, lever, e2));
+        let (a11, a12, a21, a22) = (e1.dot(k1), e1.dot(k2), e2.dot(k1), e2.dot(k2));
+        let (b1, b2) = (e1.dot(rhs), e2.dot(rhs));
+        let det = a11 * a22 - a12 * a21;
+        e1 * ((b1 * a22 - a12 * b2) / det) + e2 * ((a11 * b2 - a21 * b1) / det)
+    }
+
+    /// A rigid slip's direction: fixed on the face; on a cap, the stored
+    /// direction brought into the turning tangent plane (exact for a kick in
+    /// one plane, where it is the plane's tangent).
+    #[inline(always)]
+    fn slip_direction<const FACE: bool>(&self, n: Vec3) -> Vec3 {
+        if FACE {
+            self.phase.slip_direction
+        } else {
+            tangential::<false>(n, self.phase.slip_direction).normalize_or_zero()
+        }
     }
 
     /// Rigid grip with μ = ∞: the tangential impulse J at first touch that
@@ -542,12 +654,21 @@ impl Relative {
     /// J and the foot −J at p. The energy it takes goes to the friction loss.
     pub fn grip_impulse(&self, y: &State) -> State {
         let before = self.internal_energy(0.0, y);
-        let c = self.local_on::<true>(0.0, y);
-        let j = self.tangential_solve::<true>(Vec3::X, c.point, -c.sliding_velocity);
+        let c = self.local(0.0, y);
+        let n = c.normal;
+        // At touch δ = 0: the patch's centroid is the point contact's p, lever R.
+        let j = match self.phase.geometry {
+            Geometry::Face => self.tangential_solve::<true>(Vec3::X, c.point, self.ball_radius, -c.sliding_velocity),
+            _ => self.tangential_solve::<false>(n, c.point, self.ball_radius, -c.sliding_velocity),
+        };
         let mut out = *y;
         put3(&mut out, RELATIVE_VELOCITY, vec3(y, RELATIVE_VELOCITY) + j * self.inverse_reduced_mass);
         put3(&mut out, FOOT_ANGULAR_VELOCITY, vec3(y, FOOT_ANGULAR_VELOCITY) + c.point.cross(-j) / self.foot_inertia);
-        put3(&mut out, BALL_ANGULAR_VELOCITY, vec3(y, BALL_ANGULAR_VELOCITY) + cross_normal::<true>(j, Vec3::X) * (self.ball_radius / self.ball_inertia));
+        let spin_kick = match self.phase.geometry {
+            Geometry::Face => cross_normal::<true>(j, Vec3::X),
+            _ => j.cross(n),
+        };
+        put3(&mut out, BALL_ANGULAR_VELOCITY, vec3(y, BALL_ANGULAR_VELOCITY) + spin_kick * (self.ball_radius / self.ball_inertia));
         out[FRICTION_LOSS] += before - self.internal_energy(0.0, &out);
         out
     }
