@@ -130,25 +130,41 @@ fn aim_seconds(repeats: usize) -> Result<(f64, f64), String> {
     Ok((median(&mut launch), median(&mut kick)))
 }
 
+/// How many forms [`kick_costs`] times.
+pub const KICK_FORMS: usize = 8;
+
 /// One off-center 3D kick (Table 1, 5 cm offset, `accurate`, one core) in
-/// four forms, µs per kick and evaluations, timed in alternation, medians:
-/// the default spring at μ = ∞, the stiff spring of the rigid-stick limit
-/// (k_t = 1e9 N/m, c_t = 1e4 N s/m), rigid grip as a constraint (k_t = ∞),
-/// and the shell ball at μ = 0.5.
-fn kick_costs(min_seconds: f64) -> Result<[(f64, u64); 4], String> {
+/// [`KICK_FORMS`] forms, µs per kick and evaluations, timed in alternation,
+/// medians: the default spring at μ = ∞, the stiff spring of the
+/// rigid-stick limit (k_t = 1e9 N/m, c_t = 1e4 N s/m), rigid grip as a
+/// constraint (k_t = ∞), the shell ball at μ = 0.5; then the shell ball's
+/// patch (issue 22's ≤ 100 µs at any μ): on the knife-edge face at μ = 0.5
+/// and in rigid grip at μ = ∞, and on a convex instep (the assumed cap,
+/// face square) likewise.
+fn kick_costs(min_seconds: f64) -> Result<[(f64, u64); KICK_FORMS], String> {
     use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
     let at = |scenario: kick_core::ScenarioSpec, kick3d: Kick3dSpec| KickSpec { scenario, kick3d }.build().map_err(|e| e.to_string());
     let spec = Kick3dSpec { offset: Some(0.05), friction: Some(f64::INFINITY), ..Kick3dSpec::default() };
     let shell = kick_core::ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() };
+    let cap = Kick3dSpec {
+        patch_contact: Some(true),
+        instep_radius: Some(kick_3d::validation::ASSUMED_INSTEP_RADIUS),
+        face_yaw_deg: Some(0.0),
+        ..spec
+    };
     let kicks = [
         at(Default::default(), spec)?,
         at(Default::default(), Kick3dSpec { tangential_stiffness: Some(1e9), tangential_damping: Some(1e4), ..spec })?,
         at(Default::default(), Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..spec })?,
         at(shell, Kick3dSpec { friction: Some(0.5), ..spec })?,
+        at(shell, Kick3dSpec { friction: Some(0.5), patch_contact: Some(true), ..spec })?,
+        at(shell, Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), patch_contact: Some(true), ..spec })?,
+        at(shell, Kick3dSpec { friction: Some(0.5), ..cap })?,
+        at(shell, Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..cap })?,
     ];
     let solver = Accurate3d::default();
-    let mut times: [Vec<f64>; 4] = Default::default();
-    let mut evaluations = [0u64; 4];
+    let mut times: [Vec<f64>; KICK_FORMS] = Default::default();
+    let mut evaluations = [0u64; KICK_FORMS];
     for _ in 0..5 {
         for (i, kick) in kicks.iter().enumerate() {
             let (mut runs, started) = (0u32, Instant::now());
@@ -159,8 +175,8 @@ fn kick_costs(min_seconds: f64) -> Result<[(f64, u64); 4], String> {
             times[i].push(started.elapsed().as_secs_f64() / f64::from(runs));
         }
     }
-    let mut out = [(0.0, 0); 4];
-    for i in 0..4 {
+    let mut out = [(0.0, 0); KICK_FORMS];
+    for i in 0..KICK_FORMS {
         out[i] = (median(&mut times[i]) * 1e6, evaluations[i]);
     }
     Ok(out)
@@ -356,8 +372,9 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let kicks = kick_costs(min_time / 30.0)?;
     let _ = writeln!(
         log,
-        "5 cm kick, one core: default spring {:.1} µs, stiff spring {:.1} µs, rigid grip {:.1} µs, shell ball {:.1} µs",
-        kicks[0].0, kicks[1].0, kicks[2].0, kicks[3].0
+        "5 cm kick, one core: default spring {:.1} µs, stiff spring {:.1} µs, rigid grip {:.1} µs, shell ball {:.1} µs; \
+         patch: knife edge {:.1} µs, rigid {:.1} µs; cap {:.1} µs, rigid {:.1} µs",
+        kicks[0].0, kicks[1].0, kicks[2].0, kicks[3].0, kicks[4].0, kicks[5].0, kicks[6].0, kicks[7].0
     );
     let other = Other { shell, paper_law, flight_rows, flights_1, flights_2, aim_launch: aim_launch_s, aim_kick: aim_kick_s, kicks };
 
@@ -467,7 +484,7 @@ struct Other {
     aim_launch: f64,
     aim_kick: f64,
     /// µs and evaluations per kick ([`kick_costs`]).
-    kicks: [(f64, u64); 4],
+    kicks: [(f64, u64); KICK_FORMS],
 }
 
 /// The machine a timing was taken on.
@@ -607,7 +624,10 @@ impl Measured<'_> {
              - One off-center kick (Table 1, 5 cm offset, `accurate`, one core, medians of 5 alternating \
              measurements), µs and right-hand-side evaluations: μ = ∞ with the default spring {:.1} µs ({}); the \
              rigid-stick limit as a stiff spring (k_t = 1e9 N/m, c_t = 1e4 N s/m) {:.1} µs ({}); rigid grip as a \
-             constraint (`--tangential-stiffness inf`) {:.1} µs ({}); the shell ball at μ = 0.5 {:.1} µs ({}).\n",
+             constraint (`--tangential-stiffness inf`) {:.1} µs ({}); the shell ball at μ = 0.5 {:.1} µs ({}). \
+             The shell ball's patch (`--patch-contact`): on the knife-edge face at μ = 0.5 {:.1} µs ({}), in rigid \
+             grip at μ = ∞ {:.1} µs ({}); on a convex instep (`--instep-radius {} --face-yaw 0`) at μ = 0.5 {:.1} µs \
+             ({}), in rigid grip at μ = ∞ {:.1} µs ({}).\n",
             machine.describe(),
             crate::provenance::utc_timestamp(std::time::SystemTime::now()),
             self.ratio,
@@ -641,6 +661,15 @@ impl Measured<'_> {
             self.other.kicks[2].1,
             self.other.kicks[3].0,
             self.other.kicks[3].1,
+            self.other.kicks[4].0,
+            self.other.kicks[4].1,
+            self.other.kicks[5].0,
+            self.other.kicks[5].1,
+            kick_3d::validation::ASSUMED_INSTEP_RADIUS,
+            self.other.kicks[6].0,
+            self.other.kicks[6].1,
+            self.other.kicks[7].0,
+            self.other.kicks[7].1,
         );
         format!(
             "{body}\n## Sweeps into result files\n\n\
