@@ -280,11 +280,13 @@ fn nothing_slides_at_the_patch_centroid_while_gripping() {
         let (o, samples) = Accurate3d::default().solve_sampled(&k, kick_core::Spacing::Count(400), 400).unwrap();
         let (mut worst, mut gripping, mut moving) = (0.0_f64, 0, 0.0_f64);
         for s in samples.iter().filter(|s| s.contact_state == ContactState::Grip) {
-            let f_n = Vec3::from(s.normal_force);
-            if f_n.length() == 0.0 {
+            if Vec3::from(s.normal_force).length() == 0.0 {
                 continue;
             }
-            let n = f_n.normalize();
+            // The contact normal: the centroid lies on it (the line of centres
+            // on the cap), so the recorded arm gives its direction; over a
+            // cap the normal force's resultant is not along it.
+            let n = -Vec3::from(s.contact_arm).normalize();
             let (c_b, c_f) = (Vec3::from(s.ball_position), Vec3::from(s.foot_position));
             // The centroid's lever: R − δ on the face, d − ζ on the cap.
             let lever = if cap {
