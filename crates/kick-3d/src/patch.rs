@@ -445,9 +445,14 @@ pub fn instep(kick: &Kick3d, spec: &Kick3dSpec) -> Result<Option<Instep>, Kick3d
     let n_body = instep.orientation().inverse() * touch.normal;
     let contact = touch.centre - n_body * kick.ball_radius;
     if contact.y.abs() > hy || contact.z.abs() > hz {
+        // Name what the user gave: the pitch when only it was set (the yaw is then asin(e/R)).
+        let (name, value) = match (spec.face_yaw_deg, spec.face_pitch_deg) {
+            (None, Some(p)) => ("face_pitch", p),
+            _ => ("face_yaw", yaw.to_degrees()),
+        };
         return Err(Kick3dError::InvalidParameter {
-            name: "face_yaw",
-            value: yaw.to_degrees(),
+            name,
+            value,
             requirement: "a face that meets the ball within its half-extents (check face_yaw, face_pitch and offset)",
         });
     }

@@ -194,6 +194,9 @@ fn bad_instep_input_names_its_parameter() {
     assert!(named(Kick3dSpec { instep_radius: Some(1e300), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() }, shell()).contains("instep_radius"));
     assert!(named(Kick3dSpec { instep_radius: Some(1e10), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() }, shell()).contains("instep_radius"));
     assert!(named(Kick3dSpec { offset: Some(0.1), face_yaw_deg: Some(-60.0), ..Kick3dSpec::default() }, shell()).contains("face_yaw"));
+    // Only the pitch given: the refusal names it, with the value given (not the yaw it derived).
+    let pitched = named(Kick3dSpec { offset: Some(0.05), face_pitch_deg: Some(89.0), ..Kick3dSpec::default() }, shell());
+    assert!(pitched.contains("face_pitch") && pitched.contains("= 89"), "{pitched}");
     let k = oblique(0.5, Some(0.15));
     assert!(kick_3d::FullState3d::default().solve(&k).unwrap_err().to_string().contains("accurate path only"));
 }
