@@ -153,9 +153,14 @@ impl ShellBall {
     }
 
     /// Gauge pressure P(δ) − p_atm = p0 + (p0 + p_atm)((V0/V)^γ − 1).
+    /// One `powf`: its rounding, ~1e-16 of P0 (V0/V)^γ, is ~1e-16 of the
+    /// gauge pressure too (≥ p0 > 0), so the force keeps its digits even where
+    /// (V0/V)^γ − 1 is tiny (expm1 ∘ log1p kept that increment's own digits,
+    /// at twice the cost: a quarter of a shell kick's time).
     pub fn gauge_pressure(&self, compression: f64) -> f64 {
         let absolute = self.pressure + self.atmospheric_pressure;
-        self.pressure + absolute * (self.gas_exponent * self.log_compression_ratio(compression)).exp_m1()
+        let v0 = self.volume();
+        self.pressure + absolute * ((v0 / (v0 - self.cap_volume(compression))).powf(self.gas_exponent) - 1.0)
     }
 
     /// dF/dδ at δ = 0: 2πR p0 + k_s (the gas is not yet compressed).
