@@ -30,9 +30,12 @@ const NEEDED_BY: &str = "the validation chapter (kick_paper::validation)";
 pub const FIFA_DROP_HEIGHT: f64 = 2.0;
 /// |ω| below this is printed as zero to rounding, rad/s.
 pub const ZERO_SPIN: f64 = 1e-12;
-/// The patch kicks' offsets: 0 to this, m (0.95 R), in this many steps.
-pub const PATCH_LARGEST_OFFSET: f64 = 0.1045;
-pub const PATCH_OFFSET_STEPS: usize = 19;
+
+/// The patch kicks' offsets: [`crate::patch`]'s grid inside the ball, so
+/// the validation page and paper/3d.md quote the same kicks.
+pub fn patch_offsets() -> Vec<f64> {
+    crate::patch::offsets().into_iter().filter(|&e| e < DEFAULT_BALL_RADIUS).collect()
+}
 
 /// One law the 1D kick is run with.
 #[derive(Debug, Clone, Copy)]
@@ -516,7 +519,7 @@ fn patch_rows(m: &Measurements) -> Result<Vec<Row>, String> {
         )
     };
     let kick = |e: f64, mu: f64, r_i: f64| patch_spin_point(&shell, e, mu, r_i).map_err(error);
-    let offsets: Vec<f64> = (0..=PATCH_OFFSET_STEPS).map(|i| PATCH_LARGEST_OFFSET * i as f64 / PATCH_OFFSET_STEPS as f64).collect();
+    let offsets = patch_offsets();
     let gain_at = |e: f64, r_i: f64| -> Result<f64, String> { Ok(kick(e, 1.0, r_i)?.0.spin - kick(e, 0.0, r_i)?.0.spin) };
     let mut gains = Vec::with_capacity(offsets.len());
     for &e in &offsets {
