@@ -628,7 +628,16 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
             Some((e0, s0)) => {
                 let sense_text = if s0 > 0.0 { "in" } else { "against" };
                 zeros.push(format!("the {} does, {sense_text} friction's sense", contact.label));
-                format!("at μ = 0 it spins, {sense_text} friction's sense, up to {} rad/s (at e = {} mm)", sig3(s0.abs()), short(e0 * 1e3))
+                // Why, said only where the data show it: the loss acts on the ball
+                // material's approach to the foot, which on a convex cap is faster
+                // on the trailing side of the sliding patch.
+                let why = if s0 > 0.0 && contact.instep_radius.is_some() {
+                    " (each element's loss acts on the ball material's approach to the foot; sliding over the convex cap \
+                     presses the trailing side of the patch faster, so the resultant passes behind the centre)"
+                } else {
+                    ""
+                };
+                format!("at μ = 0 it spins, {sense_text} friction's sense{why}, up to {} rad/s (at e = {} mm)", sig3(s0.abs()), short(e0 * 1e3))
             }
             None => "μ = 0 was not solved".into(),
         };
