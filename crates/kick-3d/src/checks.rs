@@ -22,6 +22,29 @@ pub const MATCH_1D: f64 = 1e-9;
 /// accumulated over ~1e4 steps.
 pub const ROUNDING: f64 = 1e-12;
 
+/// The pair's momentum and angular momentum about the origin (world frame)
+/// at `end`, and at first touch: with no drive and no gravity nothing
+/// outside the pair pushes or twists it, so the two agree.
+pub fn pair_momenta(kick: &Kick3d, end: &crate::outcome::EndState) -> [(Vec3, Vec3); 2] {
+    let (m_f, m_b) = (kick.base.effective_foot_mass(), kick.base.ball_mass());
+    let [ix, iy, iz] = kick.foot_inertia;
+    let q = end.foot_orientation;
+    let foot_spin = q * ((q.inverse() * end.foot_angular_velocity) * Vec3::new(ix, iy, iz));
+    let after = (
+        end.foot_velocity * m_f + end.ball_velocity * m_b,
+        end.foot_position.cross(end.foot_velocity * m_f)
+            + foot_spin
+            + end.ball_position.cross(end.ball_velocity * m_b)
+            + end.ball_angular_velocity * kick.ball_inertia,
+    );
+    let s = kick.initial_state();
+    let before = (
+        s.foot_velocity * m_f + s.ball_velocity * m_b,
+        s.foot_position.cross(s.foot_velocity * m_f) + s.ball_position.cross(s.ball_velocity * m_b),
+    );
+    [before, after]
+}
+
 /// An off-center kick: offset 5 cm, μ = 0.5, other values at their defaults.
 pub fn curve_kick() -> Result<Kick3d, Kick3dError> {
     try_kick(Kick3dSpec { offset: Some(0.05), ..Kick3dSpec::default() })

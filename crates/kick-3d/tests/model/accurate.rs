@@ -141,26 +141,11 @@ fn momentum_and_angular_momentum_of_the_pair_are_conserved() {
     // (The accurate path integrates the relative motion, so its momentum is
     // exact by construction; its angular momentum is not.)
     let k = kick(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), ..Kick3dSpec::default() });
-    let (m_f, m_b) = (k.base.effective_foot_mass(), k.base.ball_mass());
-    let [ix, iy, iz] = k.foot_inertia;
-    let total = |e: &kick_3d::outcome::EndState| {
-        let momentum = e.foot_velocity * m_f + e.ball_velocity * m_b;
-        let q = e.foot_orientation;
-        let foot_spin = q * ((q.inverse() * e.foot_angular_velocity) * parry3d_f64::math::Vec3::new(ix, iy, iz));
-        let angular = e.foot_position.cross(e.foot_velocity * m_f)
-            + foot_spin
-            + e.ball_position.cross(e.ball_velocity * m_b)
-            + e.ball_angular_velocity * k.ball_inertia;
-        (momentum, angular)
-    };
-    let s = k.initial_state();
-    let momentum0 = s.foot_velocity * m_f + s.ball_velocity * m_b;
-    let angular0 = s.foot_position.cross(s.foot_velocity * m_f) + s.ball_position.cross(s.ball_velocity * m_b);
     for (name, (o, end)) in [
         ("accurate", Accurate3d::default().solve_to_state(&k).unwrap()),
         ("full-state", FullState3d::default().solve_to_state(&k).unwrap()),
     ] {
-        let (p1, l1) = total(&end);
+        let [(momentum0, angular0), (p1, l1)] = kick_3d::checks::pair_momenta(&k, &end);
         let p_scale = momentum0.length();
         // Angular momentum scale: the ball's spin part, which the contact creates.
         let l_scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();

@@ -8,6 +8,16 @@ use kick_3d::outcome::EndState;
 use kick_3d::{Accurate3d, FullState3d, Kick3d, Kick3dError, Kick3dSpec, Solver3d};
 use parry3d_f64::math::Vec3;
 
+/// The tangential sliding of the ball's material point over the foot's at
+/// `point` (world frame), from one history sample; `n` the contact normal.
+fn sliding_in(s: &kick_3d::history::Sample3d, point: Vec3, n: Vec3) -> f64 {
+    let (c_b, c_f) = (Vec3::from(s.ball_position), Vec3::from(s.foot_position));
+    let v = Vec3::from(s.ball_velocity) + Vec3::from(s.ball_angular_velocity).cross(point - c_b)
+        - Vec3::from(s.foot_velocity)
+        - Vec3::from(s.foot_angular_velocity).cross(point - c_f);
+    (v - n * v.dot(n)).length()
+}
+
 fn rigid(spec: Kick3dSpec) -> Kick3dSpec {
     Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..spec }
 }
@@ -114,12 +124,7 @@ fn nothing_slides_while_gripping() {
                 continue;
             }
             let n = f_n.normalize();
-            let (c_b, c_f) = (Vec3::from(s.ball_position), Vec3::from(s.foot_position));
-            let p = c_b - n * k.ball_radius;
-            let v = Vec3::from(s.ball_velocity) + Vec3::from(s.ball_angular_velocity).cross(p - c_b)
-                - Vec3::from(s.foot_velocity)
-                - Vec3::from(s.foot_angular_velocity).cross(p - c_f);
-            worst = worst.max((v - n * v.dot(n)).length());
+            worst = worst.max(sliding_in(s, Vec3::from(s.ball_position) - n * k.ball_radius, n));
             gripping += 1;
         }
         println!("cap {cap}, mu {friction}, e {offset}: slip {:.3e} of {:.3e} s; {gripping} grip samples, sliding at most {worst:.2e} m/s", o.slip_time, o.contact_time);
@@ -143,16 +148,7 @@ fn energy_momentum_and_angular_momentum_close() {
         let (o, e) = Accurate3d::default().solve_to_state(&k).unwrap();
         assert!(o.energy.relative_residual().abs() <= 1e-9, "mu {friction}: {:e}", o.energy.relative_residual());
         assert!(o.energy.friction_loss > 0.0);
-        let (m_f, m_b) = (k.base.effective_foot_mass(), k.base.ball_mass());
-        let [ix, iy, iz] = k.foot_inertia;
-        let q = e.foot_orientation;
-        let foot_spin = q * ((q.inverse() * e.foot_angular_velocity) * Vec3::new(ix, iy, iz));
-        let angular = e.foot_position.cross(e.foot_velocity * m_f)
-            + foot_spin
-            + e.ball_position.cross(e.ball_velocity * m_b)
-            + e.ball_angular_velocity * k.ball_inertia;
-        let s = k.initial_state();
-        let angular0 = s.foot_position.cross(s.foot_velocity * m_f) + s.ball_position.cross(s.ball_velocity * m_b);
+        let [(_, angular0), (_, angular)] = kick_3d::checks::pair_momenta(&k, &e);
         let scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
         assert!((angular - angular0).length() <= 1e-9 * scale, "mu {friction}: {:e}", (angular - angular0).length() / scale);
     }
@@ -287,24 +283,16 @@ fn nothing_slides_at_the_patch_centroid_while_gripping() {
             // on the cap), so the recorded arm gives its direction; over a
             // cap the normal force's resultant is not along it.
             let n = -Vec3::from(s.contact_arm).normalize();
-            let (c_b, c_f) = (Vec3::from(s.ball_position), Vec3::from(s.foot_position));
+            let c_b = Vec3::from(s.ball_position);
             // The centroid's lever: R − δ on the face, d − ζ on the cap.
             let lever = if cap {
                 k.ball_radius + CAP - s.compression - cap_centroid_height(k.ball_radius, CAP, s.compression)
             } else {
                 k.ball_radius - s.compression
             };
-            let c = c_b - n * lever;
-            let v = Vec3::from(s.ball_velocity) + Vec3::from(s.ball_angular_velocity).cross(c - c_b)
-                - Vec3::from(s.foot_velocity)
-                - Vec3::from(s.foot_angular_velocity).cross(c - c_f);
-            worst = worst.max((v - n * v.dot(n)).length());
+            worst = worst.max(sliding_in(s, c_b - n * lever, n));
             // The undeformed contact point R below the centre does slide (δ ω_b): the test can tell them apart.
-            let p = c_b - n * k.ball_radius;
-            let v_p = Vec3::from(s.ball_velocity) + Vec3::from(s.ball_angular_velocity).cross(p - c_b)
-                - Vec3::from(s.foot_velocity)
-                - Vec3::from(s.foot_angular_velocity).cross(p - c_f);
-            moving = moving.max((v_p - n * v_p.dot(n)).length());
+            moving = moving.max(sliding_in(s, c_b - n * k.ball_radius, n));
             gripping += 1;
         }
         println!("patch, cap {cap}, mu {friction}, e {offset}: slip {:.3e} of {:.3e} s; {gripping} grip samples, sliding at c at most {worst:.2e} m/s (at R: {moving:.2e})", o.slip_time, o.contact_time);
@@ -329,18 +317,7 @@ fn patch_grip_closes_energy_momentum_and_angular_momentum() {
         let (o, e) = Accurate3d::default().solve_to_state(&k).unwrap();
         assert!(o.energy.relative_residual().abs() <= 1e-9, "mu {friction}: {:e}", o.energy.relative_residual());
         assert!(o.energy.friction_loss > 0.0);
-        let (m_f, m_b) = (k.base.effective_foot_mass(), k.base.ball_mass());
-        let [ix, iy, iz] = k.foot_inertia;
-        let q = e.foot_orientation;
-        let foot_spin = q * ((q.inverse() * e.foot_angular_velocity) * Vec3::new(ix, iy, iz));
-        let p1 = e.foot_velocity * m_f + e.ball_velocity * m_b;
-        let angular = e.foot_position.cross(e.foot_velocity * m_f)
-            + foot_spin
-            + e.ball_position.cross(e.ball_velocity * m_b)
-            + e.ball_angular_velocity * k.ball_inertia;
-        let s = k.initial_state();
-        let p0 = s.foot_velocity * m_f + s.ball_velocity * m_b;
-        let angular0 = s.foot_position.cross(s.foot_velocity * m_f) + s.ball_position.cross(s.ball_velocity * m_b);
+        let [(p0, angular0), (p1, angular)] = kick_3d::checks::pair_momenta(&k, &e);
         let scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
         let (dp, dl) = ((p1 - p0).length() / p0.length(), (angular - angular0).length() / scale);
         println!("patch, cap {cap}, mu {friction}, e {offset}, approach {approach}: residual {:.1e}, drift p {dp:.1e} L {dl:.1e}", o.energy.relative_residual());

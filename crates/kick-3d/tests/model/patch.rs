@@ -114,19 +114,8 @@ fn oblique(mu: f64, radius: Option<f64>) -> Kick3d {
 #[test]
 fn patch_kicks_conserve_momentum_and_angular_momentum() {
     for k in [oblique(0.0, None), oblique(0.5, None), oblique(0.0, Some(0.15)), oblique(0.5, Some(0.15))] {
-        let (m_f, m_b) = (k.base.effective_foot_mass(), k.base.ball_mass());
-        let [ix, iy, iz] = k.foot_inertia;
         let (o, e) = Accurate3d::default().solve_to_state(&k).unwrap();
-        let q = e.foot_orientation;
-        let foot_spin = q * ((q.inverse() * e.foot_angular_velocity) * Vec3::new(ix, iy, iz));
-        let p1 = e.foot_velocity * m_f + e.ball_velocity * m_b;
-        let l1 = e.foot_position.cross(e.foot_velocity * m_f)
-            + foot_spin
-            + e.ball_position.cross(e.ball_velocity * m_b)
-            + e.ball_angular_velocity * k.ball_inertia;
-        let s = k.initial_state();
-        let p0 = s.foot_velocity * m_f + s.ball_velocity * m_b;
-        let l0 = s.foot_position.cross(s.foot_velocity * m_f) + s.ball_position.cross(s.ball_velocity * m_b);
+        let [(p0, l0), (p1, l1)] = kick_3d::checks::pair_momenta(&k, &e);
         let l_scale = k.ball_inertia * norm(o.spin);
         let (dp, dl) = ((p1 - p0).length() / p0.length(), (l1 - l0).length() / l_scale);
         println!("μ {} cap {:?}: spin {:?}, drift p {dp:.1e} L {dl:.1e}", k.friction, k.instep.unwrap().radius, o.spin);
