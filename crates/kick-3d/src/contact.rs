@@ -569,9 +569,10 @@ impl Relative {
     /// holding the patch's force F and moment M (functions of the state, not
     /// of F_t), the frame's rotation and the centroid's motion:
     /// b = F/m_r − Ω × w − F_drive/m_f + (M/I_b − Ω × ω_b) × ℓ + ω_b × ℓ̇
-    /// + I_f⁻¹(r × F + M + Ω × I_f Ω) × c − Ω × (ṙ + ℓ̇).
-    /// The point contact on a cap is the case c = C + (r_f − δ) n, M = 0:
-    /// dζ/dδ = −1, lever R.
+    ///   + I_f⁻¹(r × F + M + Ω × I_f Ω) × c − Ω × (ṙ + ℓ̇).
+    ///
+    /// The point contact on a cap is the case c = C + (r_f − δ) n, M = 0
+    /// (dζ/dδ = −1, lever R).
     #[inline]
     #[allow(clippy::too_many_arguments)]
     fn patch_grip_force<const FACE: bool>(&self, y: &State, p: &PatchForce, n: Vec3, delta: f64, rate: f64, zeta_rate: f64) -> Vec3 {
