@@ -195,6 +195,8 @@ pub struct Relative {
     /// 1/I_f (products instead of quotients in the grip's off-face paths).
     inverse_foot_inertia: Vec3,
     pub ball_inertia: f64,
+    /// 1/I_b.
+    inverse_ball_inertia: f64,
     pub ball_radius: f64,
     /// r0 = (R + h_x outer, 0, 0): the ball centre at first touch.
     pub touch: Vec3,
@@ -212,6 +214,8 @@ pub struct Relative {
     pub rigid: bool,
     /// F_drive in the world frame.
     pub drive: Vec3,
+    /// F_drive/m_f.
+    foot_drive: Vec3,
     pub phase: Phase,
     /// The curved instep's sphere (centre, radius), body frame.
     pub cap: Option<(Vec3, f64)>,
@@ -232,6 +236,7 @@ impl Relative {
             foot_inertia: Vec3::new(ix, iy, iz),
             inverse_foot_inertia: Vec3::new(1.0 / ix, 1.0 / iy, 1.0 / iz),
             ball_inertia: kick.ball_inertia,
+            inverse_ball_inertia: 1.0 / kick.ball_inertia,
             ball_radius: kick.ball_radius,
             touch: kick.touch(),
             face: (hy, hz),
@@ -243,6 +248,7 @@ impl Relative {
             clamps: !kick.law().damps_compression_only(),
             rigid: kick.rigid_grip(),
             drive: kick.drive(),
+            foot_drive: kick.drive() / m_f,
             phase,
             cap: kick.instep.filter(|i| i.is_curved()).map(|i| (Vec3::new(kick.face_distance() - i.radius, 0.0, 0.0), i.radius)),
             patch: kick.instep.and_then(|i| i.patch).map(Patch::new),
@@ -314,7 +320,7 @@ impl Relative {
         } else if let Some((centre, radius)) = self.cap {
             let d = r - centre;
             let length = d.length();
-            (self.ball_radius + radius - length, d / length)
+            (self.ball_radius + radius - length, d * (1.0 / length))
         } else {
             let (delta, n, _) = geometry(&self.cuboid, self.ball_radius, self.border, &Pose3::IDENTITY, r);
             (delta, n)
@@ -483,15 +489,18 @@ impl Relative {
         put3(&mut dy, DISPLACEMENT, w - omega.cross(r));
         let mut dw = force * self.inverse_reduced_mass - omega.cross(w);
         if self.drive != Vec3::ZERO {
-            dw -= rotation(y).inverse() * self.drive / self.foot_mass;
+            dw -= if FACE { rotation(y).inverse() * self.drive / self.foot_mass } else { rotation(y).inverse() * self.foot_drive };
         }
         put3(&mut dy, RELATIVE_VELOCITY, dw);
-        put3(&mut dy, FOOT_ANGULAR_VELOCITY, (torque - omega.cross(omega * self.foot_inertia)) / self.foot_inertia);
+        // Off the face: products, not quotients (the divider is the right-hand side's bottleneck).
+        let foot_turn = torque - omega.cross(omega * self.foot_inertia);
+        put3(&mut dy, FOOT_ANGULAR_VELOCITY, if FACE { foot_turn / self.foot_inertia } else { foot_turn * self.inverse_foot_inertia });
         // q̇ = ½ q ⊗ (0, Ω)
         let (qw, qv) = (y[FOOT_ROTATION], Vec3::new(y[FOOT_ROTATION + 1], y[FOOT_ROTATION + 2], y[FOOT_ROTATION + 3]));
         dy[FOOT_ROTATION] = -0.5 * qv.dot(omega);
         put3(&mut dy, FOOT_ROTATION + 1, (omega * qw + qv.cross(omega)) * 0.5);
-        put3(&mut dy, BALL_ANGULAR_VELOCITY, torque_ball / self.ball_inertia - omega.cross(spin));
+        let ball_turn = if FACE { torque_ball / self.ball_inertia } else { torque_ball * self.inverse_ball_inertia };
+        put3(&mut dy, BALL_ANGULAR_VELOCITY, ball_turn - omega.cross(spin));
         put3(&mut dy, SPRING, c.spring_rate);
         dy[NORMAL_IMPULSE] = c.normal_force;
         dy[DAMPING_LOSS] = c.damping_power;

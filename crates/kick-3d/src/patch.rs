@@ -222,9 +222,6 @@ impl Patch {
             Surface::Flat => {}
             Surface::Sphere { radius: rf, .. } => {
                 let d = big_r + rf - delta;
-                // The patch's height on the cap's axis: z from x_f (its rim) to r_f (the pole).
-                let height = flat_a2 / (2.0 * d); // r_f − x_f
-                let x_f = rf - height;
                 let inv_rf = 1.0 / rf;
                 let kappa = d * inv_rf;
                 // The rings are spaced in S = √((ν·q)² + R² − |q|²), the half
@@ -234,24 +231,49 @@ impl Patch {
                 // from the patch, where in z or ρ² they sit at κz = B, about
                 // the patch's own height away.
                 let b2 = (rf - delta) * (d + big_r); // d² − R²
-                let span = delta + kappa * height; // R − S₀
+                // R − S₀ = δ + κ (r_f − x_f) = δ + a²/(2 r_f), a² = δ(2R − δ):
+                // d cancels, so the rings start without waiting for a division.
+                let span = delta + flat_a2 * (0.5 * inv_rf);
                 let s0 = big_r - span;
+                // κ x_f = r_f + S₀ (S₀² + B² = κ² x_f²): each ring's κ (z + x_f) from its own root.
+                let rim = rf + s0;
                 let inv_kappa = 1.0 / kappa;
                 let n = self.rings;
-                let (mut zs, mut gs) = ([0.0; MAX_RINGS], [0.0; MAX_RINGS]);
-                // Each ring's weighted depth apart from the sums: no
-                // dependence between rings, so the square roots and
-                // divisions go two at a time (packed).
+                let (mut sum_gzz, mut spread) = (0.0, 0.0);
+                // Σ g, Σ g z, Σ g z² and Σ g ρ² (ρ² = r_f² − z² = (R − S)(R + S)/κ²) of one ring.
+                let mut add = |g: f64, z: f64, i: usize| {
+                    sum_g += g;
+                    sum_gz += g * z;
+                    sum_gzz += g * z * z;
+                    let s = big_r - span * self.rest[i];
+                    spread += g * span * self.rest[i] * (big_r + s) * inv_kappa * inv_kappa;
+                };
                 if !RATE {
-                    for (((z, g), &v), &w) in zs[..n].iter_mut().zip(&mut gs[..n]).zip(&self.node[..n]).zip(&self.weight[..n]) {
-                        let s = s0 + span * v;
-                        *z = (s * s + b2).sqrt() * inv_kappa;
-                        // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
-                        let h = span * v * (1.0 - (s + s0) / (kappa * (*z + x_f)));
-                        // z dz = S dS / κ².
-                        *g = w * h * s;
+                    // Eight rings at a time into small arrays, then summed in
+                    // order: no dependence between rings, so their square
+                    // roots and divisions go two at a time (packed).
+                    const CHUNK: usize = 8;
+                    for start in (0..n).step_by(CHUNK) {
+                        let m = (n - start).min(CHUNK);
+                        let (mut zs, mut gs) = ([0.0; CHUNK], [0.0; CHUNK]);
+                        for (((z, g), &v), &w) in zs[..m].iter_mut().zip(&mut gs[..m]).zip(&self.node[start..start + m]).zip(&self.weight[start..start + m]) {
+                            let s = s0 + span * v;
+                            let root = (s * s + b2).sqrt(); // κ z
+                            // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
+                            let h = span * v * (1.0 - (s + s0) / (root + rim));
+                            *z = root * inv_kappa;
+                            // z dz = S dS / κ².
+                            *g = w * h * s;
+                        }
+                        for j in 0..m {
+                            add(gs[j], zs[j], start + j);
+                        }
                     }
                 } else {
+                    let (mut zs, mut gs) = ([0.0; MAX_RINGS], [0.0; MAX_RINGS]);
+                    // The patch's height on the cap's axis: z from x_f (its rim) to r_f (the pole).
+                    let height = flat_a2 / (2.0 * d); // r_f − x_f
+                    let x_f = rf - height;
                     // The same with each quantity's δ-derivative (primed; d' = −1).
                     let height_ = (2.0 * (big_r - delta) + 2.0 * height) / (2.0 * d);
                     let x_f_ = -height_;
@@ -288,16 +310,9 @@ impl Patch {
                         spread += rows[i][0] * (rows[i][1] - mean_y) + gs[i] * rows[i][2];
                     }
                     zeta_rate = x_f_ + spread / sum_g;
-                }
-                let (mut sum_gzz, mut spread) = (0.0, 0.0);
-                for i in 0..n {
-                    let (z, g) = (zs[i], gs[i]);
-                    sum_g += g;
-                    sum_gz += g * z;
-                    sum_gzz += g * z * z;
-                    // ρ² = r_f² − z² = (R − S)(R + S)/κ².
-                    let s = big_r - span * self.rest[i];
-                    spread += g * span * self.rest[i] * (big_r + s) * inv_kappa * inv_kappa;
+                    for i in 0..n {
+                        add(gs[i], zs[i], i);
+                    }
                 }
                 // ν · n = z/r_f; ḣ's part along n is −(z/r_f) ṙ_n.
                 total = sum_gz * inv_rf;
@@ -316,7 +331,8 @@ impl Patch {
                 let d = big_r + rf - delta;
                 let v = r_t + n.cross(turn) * d;
                 // lever q × ν = (d/r_f) ρ⃗ × n; Σ_θ (ρ⃗ × n)(ρ⃗·V) = ρ² (V × n)/2.
-                (n * (along / total) + v * (across / total), v.cross(n) * (across * d / total), centre + n * (sum_gz / sum_g))
+                let inv_total = 1.0 / total;
+                (n * (along * inv_total) + v * (across * inv_total), v.cross(n) * (across * d * inv_total), centre + n * (sum_gz / sum_g))
             }
         };
         (PatchForce { force, moment, centroid }, zeta_rate)
