@@ -203,6 +203,36 @@ const ONSET_SHARE: f64 = 0.03;
 const RELEASE_SHARE: f64 = 0.3;
 const CLOCK_RATE: f64 = 0.2;
 
+/// The system as the stepper sees it, keeping the law at its latest
+/// evaluation: an accepted step ends on the right-hand side at its end
+/// (DOP853's k13), so the law there is read back, not evaluated again.
+struct Remembering<'a> {
+    system: &'a Relative,
+    last: std::cell::Cell<Option<(f64, Local)>>,
+}
+
+impl<'a> Remembering<'a> {
+    fn new(system: &'a Relative) -> Self {
+        Remembering { system, last: std::cell::Cell::new(None) }
+    }
+    /// The law at (x, y): the latest evaluation's when it was at x (the step's end), else evaluated.
+    fn local_at(&self, x: f64, y: &State) -> Local {
+        match self.last.get() {
+            Some((at, c)) if at == x => c,
+            _ => self.system.local(x, y),
+        }
+    }
+}
+
+impl kick_core::dop853::System<DIM> for Remembering<'_> {
+    #[inline]
+    fn derivative(&self, x: f64, y: &State) -> State {
+        let (dy, c) = self.system.derivative_and_local(x, y);
+        self.last.set(Some((x, c)));
+        dy
+    }
+}
+
 /// The last accepted point or switch of the run and the watched rates there.
 #[derive(Debug, Clone, Copy)]
 struct Point {
@@ -374,7 +404,8 @@ impl Accurate3d {
             if let Clock::Release { start } = system.phase.clock {
                 stepper.set_max_step(start - stepper.time());
             }
-            stepper.step(&system).map_err(|e| {
+            let remembering = Remembering::new(&system);
+            stepper.step(&remembering).map_err(|e| {
                 let (time, reason) = match e {
                     StepFailure::StepSizeUnderflow { time } => (time, "step size underflow"),
                     StepFailure::Rejections { time } => (time, "too many rejected steps"),
@@ -383,7 +414,7 @@ impl Accurate3d {
             })?;
             let x1 = stepper.time();
             let y1 = *stepper.state();
-            let c1 = system.local(x1, &y1);
+            let c1 = remembering.local_at(x1, &y1);
             let dx = step_of(system.phase.clock);
             let rates_1 = rates(&system, x1, &y1, stepper.end_derivative(), dx);
             let mut dense: Option<Dense<DIM>> = None;
@@ -473,7 +504,8 @@ impl Accurate3d {
                 (Some((x, _)), Some(d)) => {
                     let y = d.at(x);
                     extra_evaluations += 1;
-                    (x, y, system.derivative(x, &y), system.local(x, &y))
+                    let (dy, c) = system.derivative_and_local(x, &y);
+                    (x, y, dy, c)
                 }
                 _ => (x1, y1, *stepper.end_derivative(), c1),
             };

@@ -460,6 +460,12 @@ impl Relative {
     /// dy/dx at (x, y).
     #[inline]
     pub fn derivative(&self, x: f64, y: &State) -> State {
+        self.derivative_and_local(x, y).0
+    }
+
+    /// dy/dx at (x, y) and the law there, from one evaluation.
+    #[inline]
+    pub fn derivative_and_local(&self, x: f64, y: &State) -> (State, Local) {
         match self.phase.geometry {
             Geometry::Face => self.derivative_on::<true>(x, y),
             Geometry::Border | Geometry::Curved => self.derivative_on::<false>(x, y),
@@ -467,7 +473,7 @@ impl Relative {
     }
 
     #[inline(always)]
-    fn derivative_on<const FACE: bool>(&self, x: f64, y: &State) -> State {
+    fn derivative_on<const FACE: bool>(&self, x: f64, y: &State) -> (State, Local) {
         let c = self.local_on::<FACE>(x, y);
         let r = self.centre(y);
         // The patch: the normal force's own resultant and moment, friction at the centroid.
@@ -506,10 +512,11 @@ impl Relative {
         dy[DAMPING_LOSS] = c.damping_power;
         dy[FRICTION_LOSS] = c.friction_power;
         dy[TIME] = 1.0;
-        match self.phase.clock {
+        let dy = match self.phase.clock {
             Clock::Time => dy,
             _ => dy * self.time_rate(x, c.compression_rate),
-        }
+        };
+        (dy, c)
     }
 
     /// dt/dx at (x, y).
