@@ -249,9 +249,10 @@ impl Patch {
                     spread += g * span * self.rest[i] * (big_r + s) * inv_kappa * inv_kappa;
                 };
                 if !RATE {
-                    // Eight rings at a time into small arrays, then summed in
-                    // order: no dependence between rings, so their square
-                    // roots and divisions go two at a time (packed).
+                    // Eight rings at a time into small arrays (not 64 slots
+                    // cleared per evaluation), then summed in order: no
+                    // dependence between rings, so their square roots and
+                    // divisions go two at a time (packed).
                     const CHUNK: usize = 8;
                     for start in (0..n).step_by(CHUNK) {
                         let m = (n - start).min(CHUNK);
