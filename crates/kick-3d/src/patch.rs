@@ -211,132 +211,123 @@ impl Patch {
             return (point, 0.0);
         }
         let r_t = r_dot - n * r_n;
-        if surface == Surface::Flat {
+        let Surface::Sphere { centre, radius: rf } = surface else {
             return (flat(big_r, r, r_n, turn, delta, n, elastic, slope), 0.0);
-        }
+        };
         let mut zeta_rate = 0.0;
         let flat_a2 = delta * (2.0 * big_r - delta);
         // Sums over the rings, each already summed over θ (per N spokes).
-        let (mut total, mut sum_g, mut sum_gz, mut along, mut across) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        match surface {
-            Surface::Flat => {}
-            Surface::Sphere { radius: rf, .. } => {
-                let d = big_r + rf - delta;
-                let inv_rf = 1.0 / rf;
-                let kappa = d * inv_rf;
-                // The rings are spaced in S = √((ν·q)² + R² − |q|²), the half
-                // chord of the ball along ν: S² = κ² z² − B² (ν runs through
-                // the cap's centre), S from S₀ at the rim to R at the pole.
-                // In S the integrands' nearest singularities are S = ±iB, far
-                // from the patch, where in z or ρ² they sit at κz = B, about
-                // the patch's own height away.
-                let b2 = (rf - delta) * (d + big_r); // d² − R²
-                // R − S₀ = δ + κ (r_f − x_f) = δ + a²/(2 r_f), a² = δ(2R − δ):
-                // d cancels, so the rings start without waiting for a division.
-                let span = delta + flat_a2 * (0.5 * inv_rf);
-                let s0 = big_r - span;
-                // κ x_f = r_f + S₀ (S₀² + B² = κ² x_f²): each ring's κ (z + x_f) from its own root.
-                let rim = rf + s0;
-                let inv_kappa = 1.0 / kappa;
-                let n = self.rings;
-                let (mut sum_gzz, mut spread) = (0.0, 0.0);
-                // Σ g, Σ g z, Σ g z² and Σ g ρ² (ρ² = r_f² − z² = (R − S)(R + S)/κ²) of one ring.
-                let mut add = |g: f64, z: f64, i: usize| {
-                    sum_g += g;
-                    sum_gz += g * z;
-                    sum_gzz += g * z * z;
-                    let s = big_r - span * self.rest[i];
-                    spread += g * span * self.rest[i] * (big_r + s) * inv_kappa * inv_kappa;
-                };
-                if !RATE {
-                    // Eight rings at a time into small arrays (not 64 slots
-                    // cleared per evaluation), then summed in order: no
-                    // dependence between rings, so their square roots and
-                    // divisions go two at a time (packed).
-                    const CHUNK: usize = 8;
-                    for start in (0..n).step_by(CHUNK) {
-                        let m = (n - start).min(CHUNK);
-                        let (mut zs, mut gs) = ([0.0; CHUNK], [0.0; CHUNK]);
-                        for (((z, g), &v), &w) in zs[..m].iter_mut().zip(&mut gs[..m]).zip(&self.node[start..start + m]).zip(&self.weight[start..start + m]) {
-                            let s = s0 + span * v;
-                            let root = (s * s + b2).sqrt(); // κ z
-                            // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
-                            let h = span * v * (1.0 - (s + s0) / (root + rim));
-                            *z = root * inv_kappa;
-                            // z dz = S dS / κ².
-                            *g = w * h * s;
-                        }
-                        for j in 0..m {
-                            add(gs[j], zs[j], start + j);
-                        }
-                    }
-                } else {
-                    let (mut zs, mut gs) = ([0.0; MAX_RINGS], [0.0; MAX_RINGS]);
-                    // The patch's height on the cap's axis: z from x_f (its rim) to r_f (the pole).
-                    let height = flat_a2 / (2.0 * d); // r_f − x_f
-                    let x_f = rf - height;
-                    // The same with each quantity's δ-derivative (primed; d' = −1).
-                    let height_ = (2.0 * (big_r - delta) + 2.0 * height) / (2.0 * d);
-                    let x_f_ = -height_;
-                    let kappa_ = -inv_rf;
-                    let b2_ = -(d + big_r) - (rf - delta);
-                    let span_ = 1.0 + kappa_ * height + kappa * height_;
-                    let s0_ = -span_;
-                    let (kx, kx_) = (kappa * x_f, kappa_ * x_f + kappa * x_f_);
-                    let mut rows = [[0.0; 3]; MAX_RINGS];
-                    for ((((z, g), row), &v), &w) in zs[..n].iter_mut().zip(&mut gs[..n]).zip(&mut rows[..n]).zip(&self.node[..n]).zip(&self.weight[..n]) {
+        let (mut sum_g, mut sum_gz) = (0.0, 0.0);
+        let d = big_r + rf - delta;
+        let inv_rf = 1.0 / rf;
+        let (total, along, across) = {
+            let kappa = d * inv_rf;
+            // The rings are spaced in S = √((ν·q)² + R² − |q|²), the half
+            // chord of the ball along ν: S² = κ² z² − B² (ν runs through
+            // the cap's centre), S from S₀ at the rim to R at the pole.
+            // In S the integrands' nearest singularities are S = ±iB, far
+            // from the patch, where in z or ρ² they sit at κz = B, about
+            // the patch's own height away.
+            let b2 = (rf - delta) * (d + big_r); // d² − R²
+            // R − S₀ = δ + κ (r_f − x_f) = δ + a²/(2 r_f), a² = δ(2R − δ):
+            // d cancels, so the rings start without waiting for a division.
+            let span = delta + flat_a2 * (0.5 * inv_rf);
+            let s0 = big_r - span;
+            // κ x_f = r_f + S₀ (S₀² + B² = κ² x_f²): each ring's κ (z + x_f) from its own root.
+            let rim = rf + s0;
+            let inv_kappa = 1.0 / kappa;
+            let n = self.rings;
+            let (mut sum_gzz, mut spread) = (0.0, 0.0);
+            // Σ g, Σ g z, Σ g z² and Σ g ρ² (ρ² = r_f² − z² = (R − S)(R + S)/κ²) of one ring.
+            let mut add = |g: f64, z: f64, i: usize| {
+                sum_g += g;
+                sum_gz += g * z;
+                sum_gzz += g * z * z;
+                let s = big_r - span * self.rest[i];
+                spread += g * span * self.rest[i] * (big_r + s) * inv_kappa * inv_kappa;
+            };
+            if !RATE {
+                // Eight rings at a time into small arrays (not 64 slots
+                // cleared per evaluation), then summed in order: no
+                // dependence between rings, so their square roots and
+                // divisions go two at a time (packed).
+                const CHUNK: usize = 8;
+                for start in (0..n).step_by(CHUNK) {
+                    let m = (n - start).min(CHUNK);
+                    let (mut zs, mut gs) = ([0.0; CHUNK], [0.0; CHUNK]);
+                    for (((z, g), &v), &w) in zs[..m].iter_mut().zip(&mut gs[..m]).zip(&self.node[start..start + m]).zip(&self.weight[start..start + m]) {
                         let s = s0 + span * v;
-                        let s_ = s0_ + span_ * v;
                         let root = (s * s + b2).sqrt(); // κ z
-                        let root_ = (s * s_ + 0.5 * b2_) / root;
-                        let inv_p = 1.0 / (root + kx); // 1/(κ (z + x_f))
-                        let ratio = (s + s0) * inv_p;
-                        let ratio_ = (s_ + s0_ - ratio * (root_ + kx_)) * inv_p;
-                        let h = span * v * (1.0 - ratio);
-                        let h_ = span_ * v * (1.0 - ratio) - span * v * ratio_;
-                        let y = span * v * ratio * inv_kappa;
-                        let y_ = (v * (span_ * ratio + span * ratio_) - y * kappa_) * inv_kappa;
+                        // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
+                        let h = span * v * (1.0 - (s + s0) / (root + rim));
                         *z = root * inv_kappa;
+                        // z dz = S dS / κ².
                         *g = w * h * s;
-                        *row = [w * (h_ * s + h * s_), y, y_];
                     }
-                    let (mut sum_g, mut sum_gy) = (0.0, 0.0);
-                    for i in 0..n {
-                        sum_g += gs[i];
-                        sum_gy += gs[i] * rows[i][1];
-                    }
-                    let mean_y = sum_gy / sum_g;
-                    let mut spread = 0.0;
-                    for i in 0..n {
-                        spread += rows[i][0] * (rows[i][1] - mean_y) + gs[i] * rows[i][2];
-                    }
-                    zeta_rate = x_f_ + spread / sum_g;
-                    for i in 0..n {
-                        add(gs[i], zs[i], i);
+                    for j in 0..m {
+                        add(gs[j], zs[j], start + j);
                     }
                 }
-                // ν · n = z/r_f; ḣ's part along n is −(z/r_f) ṙ_n.
-                total = sum_gz * inv_rf;
-                let rated = sum_gzz * inv_rf * inv_rf;
-                along = elastic * total - slope * r_n * rated;
-                // Σ_θ ν (−ρ⃗·V/r_f) = −ρ² V / (2 r_f²) per spoke.
-                across = -slope * spread * 0.5 * inv_rf * inv_rf;
+            } else {
+                let (mut zs, mut gs) = ([0.0; MAX_RINGS], [0.0; MAX_RINGS]);
+                // The patch's height on the cap's axis: z from x_f (its rim) to r_f (the pole).
+                let height = flat_a2 / (2.0 * d); // r_f − x_f
+                let x_f = rf - height;
+                // The same with each quantity's δ-derivative (primed; d' = −1).
+                let height_ = (2.0 * (big_r - delta) + 2.0 * height) / (2.0 * d);
+                let x_f_ = -height_;
+                let kappa_ = -inv_rf;
+                let b2_ = -(d + big_r) - (rf - delta);
+                let span_ = 1.0 + kappa_ * height + kappa * height_;
+                let s0_ = -span_;
+                let (kx, kx_) = (kappa * x_f, kappa_ * x_f + kappa * x_f_);
+                let mut rows = [[0.0; 3]; MAX_RINGS];
+                for ((((z, g), row), &v), &w) in zs[..n].iter_mut().zip(&mut gs[..n]).zip(&mut rows[..n]).zip(&self.node[..n]).zip(&self.weight[..n]) {
+                    let s = s0 + span * v;
+                    let s_ = s0_ + span_ * v;
+                    let root = (s * s + b2).sqrt(); // κ z
+                    let root_ = (s * s_ + 0.5 * b2_) / root;
+                    let inv_p = 1.0 / (root + kx); // 1/(κ (z + x_f))
+                    let ratio = (s + s0) * inv_p;
+                    let ratio_ = (s_ + s0_ - ratio * (root_ + kx_)) * inv_p;
+                    let h = span * v * (1.0 - ratio);
+                    let h_ = span_ * v * (1.0 - ratio) - span * v * ratio_;
+                    let y = span * v * ratio * inv_kappa;
+                    let y_ = (v * (span_ * ratio + span * ratio_) - y * kappa_) * inv_kappa;
+                    *z = root * inv_kappa;
+                    *g = w * h * s;
+                    *row = [w * (h_ * s + h * s_), y, y_];
+                }
+                let (mut sum_g, mut sum_gy) = (0.0, 0.0);
+                for i in 0..n {
+                    sum_g += gs[i];
+                    sum_gy += gs[i] * rows[i][1];
+                }
+                let mean_y = sum_gy / sum_g;
+                let mut spread = 0.0;
+                for i in 0..n {
+                    spread += rows[i][0] * (rows[i][1] - mean_y) + gs[i] * rows[i][2];
+                }
+                zeta_rate = x_f_ + spread / sum_g;
+                for i in 0..n {
+                    add(gs[i], zs[i], i);
+                }
             }
-        }
+            // ν · n = z/r_f; ḣ's part along n is −(z/r_f) ṙ_n.
+            let total = sum_gz * inv_rf;
+            let rated = sum_gzz * inv_rf * inv_rf;
+            // Σ_θ ν (−ρ⃗·V/r_f) = −ρ² V / (2 r_f²) per spoke.
+            (total, elastic * total - slope * r_n * rated, -slope * spread * 0.5 * inv_rf * inv_rf)
+        };
         if !(total > 0.0) {
             return (point, 0.0);
         }
-        let (force, moment, centroid) = match surface {
-            Surface::Flat => unreachable!("the flat face is closed form"),
-            Surface::Sphere { centre, radius: rf } => {
-                let d = big_r + rf - delta;
-                let v = r_t + n.cross(turn) * d;
-                // lever q × ν = (d/r_f) ρ⃗ × n; Σ_θ (ρ⃗ × n)(ρ⃗·V) = ρ² (V × n)/2.
-                let inv_total = 1.0 / total;
-                (n * (along * inv_total) + v * (across * inv_total), v.cross(n) * (across * d * inv_total), centre + n * (sum_gz / sum_g))
-            }
-        };
-        (PatchForce { force, moment, centroid }, zeta_rate)
+        let v = r_t + n.cross(turn) * d;
+        // lever q × ν = (d/r_f) ρ⃗ × n; Σ_θ (ρ⃗ × n)(ρ⃗·V) = ρ² (V × n)/2.
+        let inv_total = 1.0 / total;
+        let force = n * (along * inv_total) + v * (across * inv_total);
+        let moment = v.cross(n) * (across * d * inv_total);
+        (PatchForce { force, moment, centroid: centre + n * (sum_gz / sum_g) }, zeta_rate)
     }
 }
 
