@@ -42,6 +42,58 @@ use std::f64::consts::PI;
 /// Standard atmosphere at sea level, Pa (Law 2 states the pressure "at sea level").
 pub const SEA_LEVEL_PRESSURE: f64 = 101_325.0;
 
+/// Terms of [`AIR_SERIES`].
+const AIR_TERMS: usize = 24;
+/// Largest gas share c the series takes: there the terms after the 24th
+/// sum to below 1e-19 of the increment (a_k < 10, c²⁴ < 1.7e-20).
+const AIR_SERIES_LIMIT: f64 = 0.15;
+/// Where sixteen terms do: the 17th and all after it are below 4e-18 of
+/// the increment (a_k < 8, c¹⁶ < 2.9e-18).
+const SHORT_SERIES_LIMIT: f64 = 0.08;
+/// a_1..a_24 of (1 − c)^(−7/5) − 1 = Σ a_k c^k, a_k = a_{k−1}(γ + k − 1)/k.
+const AIR_SERIES: [f64; AIR_TERMS] = {
+    let mut terms = [0.0; AIR_TERMS];
+    let mut a = 1.0;
+    let mut k = 0;
+    while k < AIR_TERMS {
+        a = a * (1.4 + k as f64) / (k + 1) as f64;
+        terms[k] = a;
+        k += 1;
+    }
+    terms
+};
+
+/// (V0/V)^γ − 1 at c = (V0 − V)/V0, the share of the gas the cap takes
+/// (below 0.1 in a kick, 0.18 in a 30 m/s bounce):
+/// - γ = 7/5 (air, adiabatic; the default) and c ≤ 0.15: the binomial
+///   series in Estrin's scheme, a third of one `powf`'s latency (`powf`
+///   was a sixth of a 3D patch kick's time), with the increment's own
+///   digits (~1e-16 of itself) where c is tiny;
+/// - γ = 1 (isothermal): c/(1 − c);
+/// - otherwise one `powf`, whose rounding, ~1e-16 of (V0/V)^γ, is ~1e-16
+///   of the gauge pressure too (≥ p0 > 0).
+#[inline(always)]
+fn gas_increment(gamma: f64, c: f64) -> f64 {
+    if gamma == 1.4 && c <= AIR_SERIES_LIMIT {
+        let a = &AIR_SERIES;
+        let (c2, c4) = (c * c, c * c * c * c);
+        let c8 = c4 * c4;
+        let pair = |i: usize| a[i] + a[i + 1] * c;
+        let quad = |i: usize| pair(i) + pair(i + 2) * c2;
+        let oct = |i: usize| quad(i) + quad(i + 4) * c4;
+        // Below c = 0.08 (a kick's compressions) sixteen terms leave < 1e-18 of the increment.
+        if c <= SHORT_SERIES_LIMIT {
+            c * (oct(0) + oct(8) * c8)
+        } else {
+            c * (oct(0) + (oct(8) + oct(16) * c8) * c8)
+        }
+    } else if gamma == 1.0 {
+        c / (1.0 - c)
+    } else {
+        (1.0 / (1.0 - c)).powf(gamma) - 1.0
+    }
+}
+
 /// A pressurised ball's normal contact law (module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ShellBall {
@@ -152,20 +204,31 @@ impl ShellBall {
         -(-self.cap_volume(compression) / self.volume()).ln_1p()
     }
 
-    /// Gauge pressure P(δ) − p_atm = p0 + (p0 + p_atm)((V0/V)^γ − 1).
-    /// One `powf`: its rounding, ~1e-16 of P0 (V0/V)^γ, is ~1e-16 of the
-    /// gauge pressure too (≥ p0 > 0), so the force keeps its digits even where
-    /// (V0/V)^γ − 1 is tiny (expm1 ∘ log1p kept that increment's own digits,
-    /// at twice the cost: a quarter of a shell kick's time).
+    /// Gauge pressure P(δ) − p_atm = p0 + (p0 + p_atm)((V0/V)^γ − 1), the
+    /// increment from [`gas_increment`].
+    #[inline(always)]
     pub fn gauge_pressure(&self, compression: f64) -> f64 {
         let absolute = self.pressure + self.atmospheric_pressure;
-        let v0 = self.volume();
-        self.pressure + absolute * ((v0 / (v0 - self.cap_volume(compression))).powf(self.gas_exponent) - 1.0)
+        // c = (V0 − V)/V0 = δ²(3R − δ)/(4R³), one division.
+        let (d, r) = (compression.clamp(0.0, 2.0 * self.radius), self.radius);
+        // 1/(4R³) first: a division on R alone is off the path from δ.
+        let inverse = 1.0 / (4.0 * r * r * r);
+        self.pressure + absolute * gas_increment(self.gas_exponent, d * d * (3.0 * r - d) * inverse)
     }
 
     /// dF/dδ at δ = 0: 2πR p0 + k_s (the gas is not yet compressed).
     pub fn small_compression_stiffness(&self) -> f64 {
         2.0 * PI * self.radius * self.pressure + self.shell_stiffness
+    }
+
+    /// F_elastic at δ ≥ 0 (what a right-hand side needs: no gradient).
+    #[inline(always)]
+    fn elastic_value(&self, compression: f64) -> f64 {
+        if !(compression > 0.0) {
+            return 0.0;
+        }
+        let d = compression.min(2.0 * self.radius);
+        PI * d * (2.0 * self.radius - d) * self.gauge_pressure(d) + self.shell_stiffness * d
     }
 
     /// (F_elastic, dF_elastic/dδ) at δ ≥ 0.
@@ -188,8 +251,9 @@ impl ShellBall {
     }
 
     /// The elastic force F_gas + F_shell at compression δ (zero at δ ≤ 0).
+    #[inline(always)]
     pub fn elastic_force(&self, compression: f64) -> f64 {
-        self.elastic(compression).0
+        self.elastic_value(compression)
     }
 }
 
@@ -216,16 +280,16 @@ impl ContactLaw for ShellBall {
     }
     #[inline]
     fn contact_force(&self, compression: f64, compression_rate: f64) -> f64 {
-        (self.elastic(compression).0 * (1.0 + self.shell_loss * compression_rate)).max(0.0)
+        (self.elastic_value(compression) * (1.0 + self.shell_loss * compression_rate)).max(0.0)
     }
     #[inline]
     fn elastic_and_contact_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
-        let elastic = self.elastic(compression).0;
+        let elastic = self.elastic_value(compression);
         (elastic, (elastic * (1.0 + self.shell_loss * compression_rate)).max(0.0))
     }
     #[inline]
     fn unclamped_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
-        let elastic = self.elastic(compression).0;
+        let elastic = self.elastic_value(compression);
         (elastic, elastic * (1.0 + self.shell_loss * compression_rate))
     }
     fn force_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
@@ -318,6 +382,36 @@ mod tests {
             let u = b.potential(d);
             // Next order: γ P0 cap²/(2 V0), relative γ P0 cap/(2 p0 V0) < 1e-9 here.
             assert!((u / (8.0e4 * cap) - 1.0).abs() < 1e-9, "δ={d}: {u} vs {}", 8.0e4 * cap);
+        }
+    }
+
+    /// (V0/V)^γ − 1 against expm1(−γ ln(1 − c)) (a few ulp of the
+    /// increment itself): the series to 4e-16 of the increment over its
+    /// whole range, both sides of its sixteen-term limit and at its end,
+    /// where powf takes over; γ = 1 in closed form. (x^γ − 1, the form
+    /// before the series, keeps only ~1e-16/c of the increment.) Then the
+    /// gauge pressure with c = δ²(3R − δ)/(4R³) against p0 + P0 times the
+    /// reference.
+    #[test]
+    fn gas_increment_keeps_its_digits() {
+        let reference = |gamma: f64, c: f64| (-gamma * (-c).ln_1p()).exp_m1();
+        for gamma in [1.4, 1.0, 1.2, 5.0 / 3.0] {
+            let mut c = 1e-12;
+            while c < 0.3 {
+                for c in [c, SHORT_SERIES_LIMIT, SHORT_SERIES_LIMIT.next_up(), AIR_SERIES_LIMIT, AIR_SERIES_LIMIT.next_up()] {
+                    let (got, want) = (gas_increment(gamma, c), reference(gamma, c));
+                    // powf's own rounding is ~1e-16 of (V0/V)^γ, not of the increment.
+                    let bound = if gamma == 1.4 && c <= AIR_SERIES_LIMIT || gamma == 1.0 { 4e-16 * want } else { 4e-16 * (1.0 + want) };
+                    assert!((got - want).abs() <= bound, "γ {gamma}, c {c}: {got} vs {want}");
+                }
+                c *= 1.37;
+            }
+        }
+        let b = ShellBall::new(8.0e4, 0.11, 1.4, 0.0, 0.0).unwrap();
+        for d in [1e-6, 1e-4, 0.01, 0.03, 0.06, 0.1] {
+            let cap = PI * d * d * (3.0 * 0.11 - d) / 3.0;
+            let want = 8.0e4 + (8.0e4 + SEA_LEVEL_PRESSURE) * reference(1.4, cap / b.volume());
+            assert!((b.gauge_pressure(d) / want - 1.0).abs() < 1e-15, "δ {d}: {} vs {want}", b.gauge_pressure(d));
         }
     }
 
