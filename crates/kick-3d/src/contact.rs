@@ -431,8 +431,17 @@ impl Relative {
         let r_dot = w - omega.cross(r);
         let rate = -n.dot(r_dot);
         // The shell law (the patch's only law): F(δ, v) = F_el(δ)(1 + χ v), one evaluation.
-        let (elastic, f1) = self.law.unclamped_force(delta, 1.0);
-        let (f0, slope) = (elastic, f1 - elastic);
+        let (f0, slope) = match &self.law {
+            AnyLaw::Shell(ball) => {
+                let elastic = ball.elastic_force(delta);
+                (elastic, elastic * ball.shell_loss)
+            }
+            law => {
+                let (elastic, f1) = law.unclamped_force(delta, 1.0);
+                (elastic, f1 - elastic)
+            }
+        };
+        let elastic = f0;
         let mut zeta_rate = 0.0;
         let mut p = match self.cap {
             Some((centre, radius)) if self.rigid && self.phase.friction == Friction::Grip => {
@@ -589,7 +598,7 @@ impl Relative {
     ///
     /// The point contact on a cap is the case c = C + (r_f − δ) n, M = 0
     /// (dζ/dδ = −1, lever R).
-    #[inline]
+    #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn patch_grip_force<const FACE: bool>(&self, y: &State, p: &PatchForce, n: Vec3, delta: f64, rate: f64, zeta_rate: f64) -> Vec3 {
         let r = self.centre(y);
@@ -619,12 +628,12 @@ impl Relative {
         let arm = c - r;
         let foot_turn = (r.cross(p.force) + p.moment + omega.cross(omega * self.foot_inertia)) * self.inverse_foot_inertia;
         let mut b = p.force * self.inverse_reduced_mass - omega.cross(w)
-            + (p.moment * (1.0 / self.ball_inertia) - omega.cross(spin)).cross(arm)
+            + (p.moment * self.inverse_ball_inertia - omega.cross(spin)).cross(arm)
             + spin.cross(lever_rate)
             + foot_turn.cross(c)
             - omega.cross(r_dot + lever_rate);
         if self.drive != Vec3::ZERO {
-            b -= rotation(y).inverse() * self.drive / self.foot_mass;
+            b -= if FACE { rotation(y).inverse() * self.drive / self.foot_mass } else { rotation(y).inverse() * self.foot_drive };
         }
         if !FACE {
             let v = w + spin.cross(arm) - omega.cross(c);
@@ -635,7 +644,7 @@ impl Relative {
 
     /// The tangential f with (K f)_t = rhs_t: on the face the y and z rows,
     /// elsewhere the rows of a tangent basis.
-    #[inline]
+    #[inline(always)]
     fn tangential_solve<const FACE: bool>(&self, n: Vec3, point: Vec3, lever: f64, rhs: Vec3) -> Vec3 {
         if FACE {
             let ky = self.contact_compliance::<FACE>(n, point, lever, Vec3::Y);
@@ -643,13 +652,18 @@ impl Relative {
             let det = ky.y * kz.z - kz.y * ky.z;
             return Vec3::new(0.0, (rhs.y * kz.z - kz.y * rhs.z) / det, (ky.y * rhs.z - rhs.y * ky.z) / det);
         }
-        let e1 = (if n.z.abs() < 0.9 { Vec3::Z } else { Vec3::Y }).cross(n).normalize();
+        // A tangent basis of equal lengths L, not normalised: the rows e_i · (K f) = e_i · rhs
+        // are the unit basis's times L, and f = α e1 + β e2 the same force.
+        let e1 = (if n.z.abs() < 0.9 { Vec3::Z } else { Vec3::Y }).cross(n);
         let e2 = n.cross(e1);
-        let (k1, k2) = (self.contact_compliance::<false>(n, point, lever, e1), self.contact_compliance::<false>(n, point, lever, e2));
-        let (a11, a12, a21, a22) = (e1.dot(k1), e1.dot(k2), e2.dot(k1), e2.dot(k2));
+        // e_i · K e_j = (e_i · e_j)(1/m_r + L²/I_b) + (p × e_i) · I_f⁻¹ (p × e_j): symmetric.
+        let (u1, u2) = (point.cross(e1), point.cross(e2));
+        let (v1, v2) = (u1 * self.inverse_foot_inertia, u2 * self.inverse_foot_inertia);
+        let diagonal = (self.inverse_reduced_mass + lever * lever * self.inverse_ball_inertia) * e1.length_squared();
+        let (a11, a12, a22) = (diagonal + u1.dot(v1), u1.dot(v2), diagonal + u2.dot(v2));
         let (b1, b2) = (e1.dot(rhs), e2.dot(rhs));
-        let det = a11 * a22 - a12 * a21;
-        e1 * ((b1 * a22 - a12 * b2) / det) + e2 * ((a11 * b2 - a21 * b1) / det)
+        let inverse_det = 1.0 / (a11 * a22 - a12 * a12);
+        e1 * ((b1 * a22 - a12 * b2) * inverse_det) + e2 * ((a11 * b2 - a12 * b1) * inverse_det)
     }
 
     /// A rigid slip's direction: fixed on the face; on a cap, the stored

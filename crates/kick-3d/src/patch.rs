@@ -62,7 +62,7 @@
 //!
 //! Integration over the patch: on a flat face in closed form (depth and
 //! rate are functions of ρ alone, the moment's integral is a polynomial in
-//! δ); on a cap exact in the angle and 8-node Gauss–Legendre across the
+//! δ); on a cap exact in the angle and 6-node Gauss–Legendre across the
 //! rings in the ball's half chord, where the integrands are nearly
 //! polynomial ([`Quadrature`]).
 //! Both are smooth in the state, so the right-hand side is smooth within a
@@ -100,10 +100,12 @@ pub const MAX_RINGS: usize = 64;
 /// the rule converges about as fast as (width/4B)^(2n); in ρ² (16 rings
 /// until this change) a branch point sat at κz = B, about one patch height
 /// from the rim. Error of spin and launch velocity (5 and 10 cm offset
-/// kicks on a 15 cm cap, μ = 0 and 0.5, approach 0 and 10°, rtol 1e-14,
-/// against 40 rings): 4 rings ≤ 1.7e-8, 5 ≤ 2.5e-11, 6 ≤ 4.3e-13; the
-/// default 8 rings ≤ 3.4e-13 (the solver's floor); `tests/model/patch.rs`
-/// holds 8 against 16 within 1e-9.
+/// kicks on a 15 cm cap, μ = 0, 0.5 and ∞, approach 0 and 10°, rtol 1e-14,
+/// against 40 rings; in rigid grip μ = 0.5 and ∞): 4 rings ≤ 1.7e-8,
+/// 5 ≤ 2.5e-11, the default 6 ≤ 4.3e-13 (5.1e-14 in rigid grip), 8 ≤ 4.9e-15:
+/// six keep the rule's error below the solver's own at its default
+/// tolerance (~1e-11) at three quarters of eight's cost; `tests/model/patch.rs`
+/// holds 6 against 12 within 1e-9.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub struct Quadrature {
     pub rings: usize,
@@ -111,7 +113,7 @@ pub struct Quadrature {
 
 impl Default for Quadrature {
     fn default() -> Self {
-        Quadrature { rings: 8 }
+        Quadrature { rings: 6 }
     }
 }
 
@@ -189,12 +191,14 @@ impl Patch {
 
     /// [`Patch::resultant`] and, on a cap, the centroid height's rate dζ/dδ
     /// (rigid grip's held point moves with δ; 0 on the flat face, where the
-    /// centroid's motion is δ̇ n), from the same rings: each ring's
-    /// derivative in δ beside its value, with ζ taken from the rim,
-    /// ζ = x_f + Σ g y / Σ g, y = z − x_f = (S − S₀)(S + S₀)/(κ²(z + x_f)),
-    /// so both terms of dζ/dδ stay accurate as δ → 0 (y and its mean are of
-    /// the patch's size, not r_f's). A unit test holds it to a five-point
-    /// difference of the centroid.
+    /// centroid's motion is δ̇ n), from the same rings: the derivative of
+    /// the integrals at a fixed angle on the cap, where only the depth
+    /// moves with δ (the rim adds nothing: the depth is zero there), summed
+    /// against y − ȳ with y = z − x_f = (S − S₀)(S + S₀)/(κ²(z + x_f)) taken
+    /// from the rim, so it stays accurate as δ → 0 (y and its mean are of
+    /// the patch's size, not r_f's). The rule's error in it: 6 rings
+    /// against 40, ≤ 9e-14 up to δ = 3 cm, 2.3e-11 at 5 cm. A unit test holds
+    /// it to a five-point difference of the centroid.
     #[allow(clippy::too_many_arguments)]
     #[inline]
     pub fn resultant_and_centroid_rate(&self, surface: Surface, ball_radius: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> (PatchForce, f64) {
@@ -238,80 +242,60 @@ impl Patch {
             let inv_kappa = 1.0 / kappa;
             let n = self.rings;
             let (mut sum_gzz, mut spread) = (0.0, 0.0);
-            // Σ g, Σ g z, Σ g z² and Σ g ρ² (ρ² = r_f² − z² = (R − S)(R + S)/κ²) of one ring.
-            let mut add = |g: f64, z: f64, i: usize| {
-                sum_g += g;
-                sum_gz += g * z;
-                sum_gzz += g * z * z;
-                let s = big_r - span * self.rest[i];
-                spread += g * span * self.rest[i] * (big_r + s) * inv_kappa * inv_kappa;
-            };
-            if !RATE {
-                // Eight rings at a time into small arrays (not 64 slots
-                // cleared per evaluation), then summed in order: no
-                // dependence between rings, so their square roots and
-                // divisions go two at a time (packed).
-                const CHUNK: usize = 8;
-                for start in (0..n).step_by(CHUNK) {
-                    let m = (n - start).min(CHUNK);
-                    let (mut zs, mut gs) = ([0.0; CHUNK], [0.0; CHUNK]);
-                    for (((z, g), &v), &w) in zs[..m].iter_mut().zip(&mut gs[..m]).zip(&self.node[start..start + m]).zip(&self.weight[start..start + m]) {
-                        let s = s0 + span * v;
-                        let root = (s * s + b2).sqrt(); // κ z
-                        // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
-                        let h = span * v * (1.0 - (s + s0) / (root + rim));
-                        *z = root * inv_kappa;
-                        // z dz = S dS / κ².
-                        *g = w * h * s;
-                    }
-                    for j in 0..m {
-                        add(gs[j], zs[j], start + j);
-                    }
-                }
-            } else {
-                let (mut zs, mut gs) = ([0.0; MAX_RINGS], [0.0; MAX_RINGS]);
-                // The patch's height on the cap's axis: z from x_f (its rim) to r_f (the pole).
-                let height = flat_a2 / (2.0 * d); // r_f − x_f
-                let x_f = rf - height;
-                // The same with each quantity's δ-derivative (primed; d' = −1).
-                let height_ = (2.0 * (big_r - delta) + 2.0 * height) / (2.0 * d);
-                let x_f_ = -height_;
-                let kappa_ = -inv_rf;
-                let b2_ = -(d + big_r) - (rf - delta);
-                let span_ = 1.0 + kappa_ * height + kappa * height_;
-                let s0_ = -span_;
-                let (kx, kx_) = (kappa * x_f, kappa_ * x_f + kappa * x_f_);
-                let mut rows = [[0.0; 3]; MAX_RINGS];
-                for ((((z, g), row), &v), &w) in zs[..n].iter_mut().zip(&mut gs[..n]).zip(&mut rows[..n]).zip(&self.node[..n]).zip(&self.weight[..n]) {
+            // Rigid grip's dζ/dδ from the same rings, without
+            // differentiating the rule: at a fixed angle θ on the cap
+            // (z = r_f cos θ, ρ = r_f sin θ) the depth is
+            // h = r_f − d cos θ + S, S = √(R² − d² sin² θ), so
+            // ∂h/∂d = −z/r_f − d ρ²/(r_f² S), while the element's area
+            // does not move with d; h vanishes at the rim, so the moving
+            // rim adds nothing. With ζ = Σ g z / Σ g and dδ = −dd:
+            // dζ/dδ = Σ t (y − ȳ) / Σ g, t = w S (z/r_f + d ρ²/(r_f² S)),
+            // y = z − x_f taken from the rim (no cancellation against
+            // ζ ≈ r_f at a small patch). No division per ring.
+            let (mut sum_t, mut sum_ty, mut sum_gy) = (0.0, 0.0, 0.0);
+            // ρ² = r_f² − z² = (R − S)(R + S)/κ², R − S = span (1 − u) from the rule's other end.
+            let rho_scale = span * inv_kappa * inv_kappa;
+            // Eight rings at a time into small arrays (not 64 slots cleared
+            // per evaluation), then summed in order: no dependence between
+            // rings, so their square roots and divisions go two at a time (packed).
+            const CHUNK: usize = 8;
+            for start in (0..n).step_by(CHUNK) {
+                let m = (n - start).min(CHUNK);
+                let (node, weight, rest) = (&self.node[start..start + m], &self.weight[start..start + m], &self.rest[start..start + m]);
+                let (mut zs, mut gs, mut rhos, mut ys, mut ts) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
+                for j in 0..m {
+                    let (v, w) = (node[j], weight[j]);
                     let s = s0 + span * v;
-                    let s_ = s0_ + span_ * v;
                     let root = (s * s + b2).sqrt(); // κ z
-                    let root_ = (s * s_ + 0.5 * b2_) / root;
-                    let inv_p = 1.0 / (root + kx); // 1/(κ (z + x_f))
-                    let ratio = (s + s0) * inv_p;
-                    let ratio_ = (s_ + s0_ - ratio * (root_ + kx_)) * inv_p;
+                    // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
+                    let ratio = (s + s0) / (root + rim);
                     let h = span * v * (1.0 - ratio);
-                    let h_ = span_ * v * (1.0 - ratio) - span * v * ratio_;
-                    let y = span * v * ratio * inv_kappa;
-                    let y_ = (v * (span_ * ratio + span * ratio_) - y * kappa_) * inv_kappa;
-                    *z = root * inv_kappa;
-                    *g = w * h * s;
-                    *row = [w * (h_ * s + h * s_), y, y_];
+                    zs[j] = root * inv_kappa;
+                    // z dz = S dS / κ².
+                    gs[j] = w * h * s;
+                    rhos[j] = rest[j] * (2.0 * big_r - span * rest[j]) * rho_scale;
+                    if RATE {
+                        ys[j] = span * v * ratio * inv_kappa;
+                        ts[j] = w * (s * zs[j] + d * rhos[j] * inv_rf) * inv_rf;
+                    }
                 }
-                let (mut sum_g, mut sum_gy) = (0.0, 0.0);
-                for i in 0..n {
-                    sum_g += gs[i];
-                    sum_gy += gs[i] * rows[i][1];
+                // Σ g, Σ g z, Σ g z² and Σ g ρ²; for the rate Σ t, Σ t y and Σ g y.
+                for j in 0..m {
+                    let (g, z) = (gs[j], zs[j]);
+                    sum_g += g;
+                    sum_gz += g * z;
+                    sum_gzz += g * z * z;
+                    spread += g * rhos[j];
+                    if RATE {
+                        sum_t += ts[j];
+                        sum_ty += ts[j] * ys[j];
+                        sum_gy += g * ys[j];
+                    }
                 }
+            }
+            if RATE {
                 let mean_y = sum_gy / sum_g;
-                let mut spread = 0.0;
-                for i in 0..n {
-                    spread += rows[i][0] * (rows[i][1] - mean_y) + gs[i] * rows[i][2];
-                }
-                zeta_rate = x_f_ + spread / sum_g;
-                for i in 0..n {
-                    add(gs[i], zs[i], i);
-                }
+                zeta_rate = (sum_ty - mean_y * sum_t) / sum_g;
             }
             // ν · n = z/r_f; ḣ's part along n is −(z/r_f) ṙ_n.
             let total = sum_gz * inv_rf;
