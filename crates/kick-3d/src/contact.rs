@@ -654,8 +654,12 @@ impl Relative {
         }
         // A tangent basis of equal lengths L, not normalised: the rows e_i · (K f) = e_i · rhs
         // are the unit basis's times L, and f = α e1 + β e2 the same force.
-        let e1 = (if n.z.abs() < 0.9 { Vec3::Z } else { Vec3::Y }).cross(n);
-        let e2 = n.cross(e1);
+        // Z × n (or Y × n near the z axis), and n × e1, written out.
+        let (e1, e2) = if n.z.abs() < 0.9 {
+            (Vec3::new(-n.y, n.x, 0.0), Vec3::new(-n.z * n.x, -n.z * n.y, n.x * n.x + n.y * n.y))
+        } else {
+            (Vec3::new(n.z, 0.0, -n.x), Vec3::new(n.y * -n.x, n.z * n.z + n.x * n.x, -n.y * n.z))
+        };
         // e_i · K e_j = (e_i · e_j)(1/m_r + L²/I_b) + (p × e_i) · I_f⁻¹ (p × e_j): symmetric.
         let (u1, u2) = (point.cross(e1), point.cross(e2));
         let (v1, v2) = (u1 * self.inverse_foot_inertia, u2 * self.inverse_foot_inertia);
