@@ -172,6 +172,7 @@ fn rates(system: &Relative, x: f64, y: &State, dy: &State, dx: f64) -> Rates {
 /// difference is taken instead. Half the evaluations of [`rates`], which
 /// took a fifth of a kick's.
 #[inline]
+#[allow(clippy::too_many_arguments)]
 fn rates_after_step(system: &Relative, x: f64, y: &State, dy: &State, dx: f64, c: &Local, x0: f64, before: &Rates) -> Rates {
     let yb = y - dy * dx;
     let b = system.local(x - dx, &yb);
