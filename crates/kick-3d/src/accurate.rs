@@ -153,12 +153,18 @@ const FACE_RATE: usize = 3;
 fn rates(system: &Relative, x: f64, y: &State, dy: &State, dx: f64) -> Rates {
     let (ya, yb) = (y + dy * dx, y - dy * dx);
     let (a, b) = (system.local(x + dx, &ya), system.local(x - dx, &yb));
-    let (qa, qb) = (watched(&a), watched(&b));
+    difference(system, (&a, &ya), (&b, &yb), 2.0 * dx)
+}
+
+/// The watched quantities' difference from b to a over `span` of x.
+#[inline(always)]
+fn difference(system: &Relative, (a, ya): (&Local, &State), (b, yb): (&Local, &State), span: f64) -> Rates {
+    let (qa, qb) = (watched(a), watched(b));
     [
-        (qa[0] - qb[0]) / (2.0 * dx),
-        (qa[1] - qb[1]) / (2.0 * dx),
-        (a.grip_margin - b.grip_margin) / (2.0 * dx),
-        (system.face_margin(&ya) - system.face_margin(&yb)) / (2.0 * dx),
+        (qa[0] - qb[0]) / span,
+        (qa[1] - qb[1]) / span,
+        (a.grip_margin - b.grip_margin) / span,
+        (system.face_margin(ya) - system.face_margin(yb)) / span,
     ]
 }
 
@@ -175,14 +181,7 @@ fn rates(system: &Relative, x: f64, y: &State, dy: &State, dx: f64) -> Rates {
 #[allow(clippy::too_many_arguments)]
 fn rates_after_step(system: &Relative, x: f64, y: &State, dy: &State, dx: f64, c: &Local, x0: f64, before: &Rates) -> Rates {
     let yb = y - dy * dx;
-    let b = system.local(x - dx, &yb);
-    let (qa, qb) = (watched(c), watched(&b));
-    let behind = [
-        (qa[0] - qb[0]) / dx,
-        (qa[1] - qb[1]) / dx,
-        (c.grip_margin - b.grip_margin) / dx,
-        (system.face_margin(y) - system.face_margin(&yb)) / dx,
-    ];
+    let behind = difference(system, (c, y), (&system.local(x - dx, &yb), &yb), dx);
     let step = x - x0;
     let trusted = behind.iter().zip(before).all(|(&r, &r0)| {
         let window = 100.0 * ((r - r0) / step).abs() * dx;

@@ -430,8 +430,9 @@ impl Relative {
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
         let r_dot = w - omega.cross(r);
         let rate = -n.dot(r_dot);
-        // The shell law (the patch's only law): F(δ, v) = F_el(δ)(1 + χ v), one evaluation.
-        let (f0, slope) = match &self.law {
+        // The shell law (the patch's only law; others are refused when the kick
+        // is built): F(δ, v) = F_el(δ)(1 + χ v), one evaluation, slope χ F_el exactly.
+        let (elastic, slope) = match &self.law {
             AnyLaw::Shell(ball) => {
                 let elastic = ball.elastic_force(delta);
                 (elastic, elastic * ball.shell_loss)
@@ -441,18 +442,17 @@ impl Relative {
                 (elastic, f1 - elastic)
             }
         };
-        let elastic = f0;
         let mut zeta_rate = 0.0;
         let mut p = match self.cap {
             Some((centre, radius)) if self.rigid && self.phase.friction == Friction::Grip => {
                 let p;
-                (p, zeta_rate) = patch.resultant_and_centroid_rate(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope);
+                (p, zeta_rate) = patch.resultant_and_centroid_rate(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, elastic, slope);
                 p
             }
-            Some((centre, radius)) => patch.resultant(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope),
+            Some((centre, radius)) => patch.resultant(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, elastic, slope),
             // The closed form, inlined here (no rule).
-            None if delta > 0.0 => crate::patch::flat(self.ball_radius, r, n.dot(r_dot), spin - omega, delta, n, f0, slope),
-            None => patch.resultant(Surface::Flat, self.ball_radius, r, r_dot, spin - omega, delta, n, f0, slope),
+            None if delta > 0.0 => crate::patch::flat(self.ball_radius, r, n.dot(r_dot), spin - omega, delta, n, elastic, slope),
+            None => patch.resultant(Surface::Flat, self.ball_radius, r, r_dot, spin - omega, delta, n, elastic, slope),
         };
         let unclamped_force = n.dot(p.force);
         if self.phase.clamped {

@@ -512,6 +512,13 @@ mod tests {
         (PatchForce { force: force / total, moment: moment / total, centroid: Vec3::ZERO }, loss / total)
     }
 
+    /// Ball radius, cap radius, the cap's centre and a tilted normal: the
+    /// cap the unit tests press the ball onto.
+    fn tilted_cap() -> (f64, f64, Vec3, Vec3) {
+        let (big_r, rf) = (0.11, 0.15);
+        (big_r, rf, Vec3::new(0.03 - rf, 0.0, 0.0), Vec3::new(0.98, -0.15, 0.1).normalize())
+    }
+
     #[test]
     fn closed_form_and_rings_are_the_element_sum() {
         let (big_r, rf) = (0.11, 0.15);
@@ -548,10 +555,8 @@ mod tests {
     /// a point fixed on the foot) breaks the square.
     #[test]
     fn the_loss_takes_power_as_a_sum_of_squares() {
-        let (big_r, rf) = (0.11, 0.15);
+        let (big_r, rf, centre, n) = tilted_cap();
         let patch = Patch::new(Quadrature::default());
-        let centre = Vec3::new(0.03 - rf, 0.0, 0.0);
-        let n = Vec3::new(0.98, -0.15, 0.1).normalize();
         for delta in [0.003, 0.03] {
             for (r_dot, turn) in [
                 (Vec3::new(-9.0, 7.0, 0.0), Vec3::ZERO),
@@ -588,10 +593,8 @@ mod tests {
     /// the rate of a 40-ring rule, from a fraction of a millimetre to 3 cm.
     #[test]
     fn the_cap_centroid_rate_is_its_derivative() {
-        let (big_r, rf) = (0.11, 0.15);
+        let (big_r, rf, centre, n) = tilted_cap();
         let patch = Patch::new(Quadrature::default());
-        let centre = Vec3::new(0.03 - rf, 0.0, 0.0);
-        let n = Vec3::new(0.98, -0.15, 0.1).normalize();
         let zeta = |delta: f64| {
             let r = centre + n * (big_r + rf - delta);
             let p = patch.resultant(Surface::Sphere { centre, radius: rf }, big_r, r, Vec3::ZERO, Vec3::ZERO, delta, n, 1000.0, 50.0);

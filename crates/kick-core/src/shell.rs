@@ -240,14 +240,11 @@ impl ShellBall {
         let r = self.radius;
         let d = compression.min(2.0 * r);
         let area = PI * d * (2.0 * r - d);
-        let volume = self.gas_volume(d);
         let gauge = self.gauge_pressure(d);
-        let absolute = gauge + self.atmospheric_pressure;
         // dP/dδ = γ P A / V (dV/dδ = −A).
-        let d_pressure = self.gas_exponent * absolute * area / volume;
-        let force = gauge * area + self.shell_stiffness * d;
+        let d_pressure = self.gas_exponent * (gauge + self.atmospheric_pressure) * area / self.gas_volume(d);
         let gradient = d_pressure * area + gauge * 2.0 * PI * (r - d) + self.shell_stiffness;
-        (force, gradient)
+        (self.elastic_value(d), gradient)
     }
 
     /// The elastic force F_gas + F_shell at compression δ (zero at δ ≤ 0).
