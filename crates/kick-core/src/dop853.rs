@@ -367,7 +367,8 @@ pub struct Stepper<const N: usize> {
 }
 
 impl<const N: usize> Stepper<N> {
-    /// Start at (t, y). The first step is chosen as in Hairer's `hinit`.
+    /// Start at (t, y). The first step is chosen as in Hairer's `hinit`
+    /// (one more evaluation).
     pub fn new<S: System<N>>(
         system: &S,
         t: f64,
@@ -376,13 +377,29 @@ impl<const N: usize> Stepper<N> {
         absolute_tolerance: SVector<f64, N>,
         h_max: f64,
     ) -> Self {
+        let mut stepper = Stepper::starting_with(system, t, y, relative_tolerance, absolute_tolerance, h_max, h_max);
+        stepper.h = stepper.initial_step(system);
+        stepper
+    }
+
+    /// Start at (t, y) with a first step `h0` known to the caller (bounded
+    /// by `h_max`): one evaluation, none spent on `hinit`'s guess.
+    pub fn starting_with<S: System<N>>(
+        system: &S,
+        t: f64,
+        y: SVector<f64, N>,
+        relative_tolerance: f64,
+        absolute_tolerance: SVector<f64, N>,
+        h_max: f64,
+        h0: f64,
+    ) -> Self {
         let f0 = system.derivative(t, &y);
         let mut k = [SVector::<f64, N>::zeros(); 13];
         k[0] = f0;
-        let mut stepper = Stepper {
+        Stepper {
             t,
             y,
-            h: 0.0,
+            h: h0.min(h_max),
             h_max,
             relative_tolerance,
             absolute_tolerance,
@@ -394,9 +411,7 @@ impl<const N: usize> Stepper<N> {
             evaluations: 1,
             accepted: 0,
             rejected: 0,
-        };
-        stepper.h = stepper.initial_step(system);
-        stepper
+        }
     }
 
     fn scale(&self, i: usize, a: f64, b: f64) -> f64 {
@@ -654,6 +669,21 @@ mod tests {
             s.advance();
         }
         (s, worst_dense)
+    }
+
+    /// A first step the caller knows spares `hinit`'s evaluation, is the
+    /// step taken (bounded by h_max), and gives `new`'s run when it is
+    /// `new`'s step.
+    #[test]
+    fn a_known_first_step_spares_hinit() {
+        let (y0, atol) = (Vector2::new(1.0, 0.0), Vector2::repeat(1e-12));
+        let mut guessed = Stepper::new(&Oscillator, 0.0, y0, 1e-10, atol, 1.0);
+        let mut known = Stepper::starting_with(&Oscillator, 0.0, y0, 1e-10, atol, 1.0, guessed.next_step());
+        assert_eq!(known.evaluations + 1, guessed.evaluations);
+        guessed.step(&Oscillator).unwrap();
+        known.step(&Oscillator).unwrap();
+        assert_eq!((known.time(), known.state()), (guessed.time(), guessed.state()));
+        assert_eq!(Stepper::starting_with(&Oscillator, 0.0, y0, 1e-10, atol, 0.5, 2.0).next_step(), 0.5);
     }
 
     #[test]
