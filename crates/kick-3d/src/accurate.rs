@@ -726,7 +726,9 @@ impl Accurate3d {
                     if system.patch.is_some() {
                         return Err(Kick3dError::UnsupportedScene {
                             path: "accurate",
-                            reason: "the patch contact left the instep's flat face (an edge under a patch is not modelled)",
+                            reason: "the patch contact left the instep's flat face, and an edge under a patch is not modelled: a smaller \
+                                     offset, a convex instep (instep_radius: a cap over the whole face) or the point contact \
+                                     (patch_contact = false) keeps the kick on one surface",
                         });
                     }
                     phase.geometry = if phase.geometry == Geometry::Face { Geometry::Border } else { Geometry::Face };

@@ -188,6 +188,10 @@ fn bad_instep_input_names_its_parameter() {
     assert!(pitched.contains("face_pitch") && pitched.contains("= 89"), "{pitched}");
     let k = oblique(0.5, Some(0.15));
     assert!(kick_3d::FullState3d::default().solve(&k).unwrap_err().to_string().contains("accurate path only"));
+    // A patch that reaches the knife-edge face's edge is refused, naming what keeps it on one surface.
+    let edged = Kick3d::new(shell(), &Kick3dSpec { offset: Some(0.105), patch_contact: Some(true), ..Kick3dSpec::default() }).unwrap();
+    let refused = Accurate3d::default().solve(&edged).unwrap_err().to_string();
+    assert!(["offset", "instep_radius", "patch_contact"].iter().all(|key| refused.contains(key)), "{refused}");
 }
 
 /// A kick with an instep records its settings among its parameter values
