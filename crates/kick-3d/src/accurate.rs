@@ -362,6 +362,37 @@ impl Accurate3d {
     pub(crate) fn run<const SAMPLE: bool>(
         &self,
         kick: &Kick3d,
+        recorder: Option<&mut Vec<EnergySample>>,
+        sampler: Option<&mut Sampler3d>,
+    ) -> Result<(Outcome3d, EndState), Kick3dError> {
+        #[cfg(target_arch = "x86_64")]
+        if contact::avx2() {
+            // SAFETY: the CPU has AVX2 (`contact::avx2`).
+            return unsafe { self.run_avx2::<SAMPLE>(kick, recorder, sampler) };
+        }
+        self.run_on::<SAMPLE, false>(kick, recorder, sampler)
+    }
+
+    /// [`Accurate3d::run`] compiled for AVX2, the stepper inlined
+    /// ([`contact::avx2`]: the same results, bit for bit).
+    ///
+    /// # Safety
+    /// The CPU must have AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn run_avx2<const SAMPLE: bool>(
+        &self,
+        kick: &Kick3d,
+        recorder: Option<&mut Vec<EnergySample>>,
+        sampler: Option<&mut Sampler3d>,
+    ) -> Result<(Outcome3d, EndState), Kick3dError> {
+        self.run_on::<SAMPLE, true>(kick, recorder, sampler)
+    }
+
+    #[inline(always)]
+    fn run_on<const SAMPLE: bool, const AVX2: bool>(
+        &self,
+        kick: &Kick3d,
         mut recorder: Option<&mut Vec<EnergySample>>,
         mut sampler: Option<&mut Sampler3d>,
     ) -> Result<(Outcome3d, EndState), Kick3dError> {
@@ -409,7 +440,8 @@ impl Accurate3d {
                 slip_direction: parry3d_f64::math::Vec3::ZERO,
                 slip_start: 0.0,
             },
-        );
+        )
+        .on_avx2(AVX2);
         let mut y0 = y0;
         let sliding = system.local(0.0, &y0).sliding_velocity;
         let friction = if kick.friction == 0.0 {
@@ -768,6 +800,43 @@ mod tests {
         let mut y = contact::initial_state(&kick);
         y[contact::DISPLACEMENT] -= 0.01;
         (Relative::new(&kick, phase), y)
+    }
+
+    /// The AVX2 copy of the run ([`contact::avx2`]) gives the baseline
+    /// copy's outcome bit for bit: the rigid sphere under every law, and the
+    /// shell ball's point contact and patch on the flat face and on a cap,
+    /// gripping (spring and rigid) and slipping. (Skipped where the CPU has
+    /// no AVX2: there only the baseline runs.)
+    #[test]
+    fn the_avx2_copy_is_the_baseline_bit_for_bit() {
+        if !contact::avx2() {
+            return;
+        }
+        let mut kicks = Vec::new();
+        for law in kick_core::LawKind::ALL {
+            let sample = crate::models::OffCenterBox { seed: crate::models::BENCH_SEED, law };
+            kicks.extend((0..4).map(|i| sample.kick(i).expect("box kick")));
+        }
+        let shell = kick_core::Scenario::baseline().with_law(kick_core::LawKind::Shell, None).expect("shell");
+        let spec = crate::Kick3dSpec { offset: Some(0.05), ..Default::default() };
+        let cap = crate::Kick3dSpec { patch_contact: Some(true), instep_radius: Some(0.15), face_yaw_deg: Some(0.0), ..spec };
+        for s in [
+            spec,
+            crate::Kick3dSpec { patch_contact: Some(true), ..spec },
+            crate::Kick3dSpec { patch_contact: Some(true), tangential_stiffness: Some(f64::INFINITY), ..spec },
+            cap,
+            crate::Kick3dSpec { friction: Some(0.2), ..cap },
+            crate::Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), friction: Some(f64::INFINITY), ..cap },
+        ] {
+            kicks.push(Kick3d::new(shell, &s).expect("valid"));
+        }
+        let solver = Accurate3d::default();
+        for kick in &kicks {
+            let baseline = solver.run_on::<false, false>(kick, None, None).expect("solves");
+            // SAFETY: the CPU has AVX2 (checked above).
+            let wide = unsafe { solver.run_avx2::<false>(kick, None, None) }.expect("solves");
+            assert_eq!(format!("{wide:?}"), format!("{baseline:?}"));
+        }
     }
 
     /// A root's rate is the central rate, bit for bit, while its two sides

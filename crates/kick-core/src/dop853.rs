@@ -453,6 +453,7 @@ impl<const N: usize> Stepper<N> {
     }
 
     /// Take one accepted step (retrying rejected sizes).
+    #[inline(always)]
     pub fn step<S: System<N>>(&mut self, system: &S) -> Result<(), StepFailure> {
         let mut tries = 0;
         loop {
