@@ -131,7 +131,7 @@ fn aim_seconds(repeats: usize) -> Result<(f64, f64), String> {
 }
 
 /// How many forms [`kick_costs`] times.
-pub const KICK_FORMS: usize = 8;
+pub const KICK_FORMS: usize = 9;
 
 /// One off-center 3D kick (Table 1, 5 cm offset, `accurate`, one core) in
 /// [`KICK_FORMS`] forms, µs per kick and evaluations, timed in alternation,
@@ -140,7 +140,8 @@ pub const KICK_FORMS: usize = 8;
 /// constraint (k_t = ∞), the shell ball at μ = 0.5; then the shell ball's
 /// patch (issue 22's ≤ 100 µs at any μ): on the knife-edge face at μ = 0.5
 /// and in rigid grip at μ = ∞, and on a convex instep (the assumed cap,
-/// face square) likewise.
+/// face square) likewise; the last again on the baseline x86-64 copy
+/// (`Accurate3d::solve_baseline`: what a CPU without AVX2 runs).
 fn kick_costs(min_seconds: f64) -> Result<[(f64, u64); KICK_FORMS], String> {
     use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
     let at = |scenario: kick_core::ScenarioSpec, kick3d: Kick3dSpec| KickSpec { scenario, kick3d }.build().map_err(|e| e.to_string());
@@ -165,11 +166,13 @@ fn kick_costs(min_seconds: f64) -> Result<[(f64, u64); KICK_FORMS], String> {
     let solver = Accurate3d::default();
     let mut times: [Vec<f64>; KICK_FORMS] = Default::default();
     let mut evaluations = [0u64; KICK_FORMS];
+    let forms: Vec<(&kick_3d::Kick3d, bool)> = kicks.iter().map(|k| (k, false)).chain([(&kicks[7], true)]).collect();
     for _ in 0..5 {
-        for (i, kick) in kicks.iter().enumerate() {
+        for (i, &(kick, baseline)) in forms.iter().enumerate() {
             let (mut runs, started) = (0u32, Instant::now());
             while runs == 0 || started.elapsed().as_secs_f64() < min_seconds {
-                evaluations[i] = std::hint::black_box(solver.solve(kick).map_err(|e| e.to_string())?).evaluations;
+                let solved = if baseline { solver.solve_baseline(kick) } else { solver.solve(kick) };
+                evaluations[i] = std::hint::black_box(solved.map_err(|e| e.to_string())?).evaluations;
                 runs += 1;
             }
             times[i].push(started.elapsed().as_secs_f64() / f64::from(runs));
@@ -373,8 +376,8 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let _ = writeln!(
         log,
         "5 cm kick, one core: default spring {:.1} µs, stiff spring {:.1} µs, rigid grip {:.1} µs, shell ball {:.1} µs; \
-         patch: knife edge {:.1} µs, rigid {:.1} µs; cap {:.1} µs, rigid {:.1} µs",
-        kicks[0].0, kicks[1].0, kicks[2].0, kicks[3].0, kicks[4].0, kicks[5].0, kicks[6].0, kicks[7].0
+         patch: knife edge {:.1} µs, rigid {:.1} µs; cap {:.1} µs, rigid {:.1} µs (baseline copy {:.1} µs)",
+        kicks[0].0, kicks[1].0, kicks[2].0, kicks[3].0, kicks[4].0, kicks[5].0, kicks[6].0, kicks[7].0, kicks[8].0
     );
     let other = Other { shell, paper_law, flight_rows, flights_1, flights_2, aim_launch: aim_launch_s, aim_kick: aim_kick_s, kicks };
 
@@ -629,7 +632,8 @@ impl Measured<'_> {
              constraint (`--tangential-stiffness inf`) {}; the shell ball at μ = 0.5 {}. \
              The shell ball's patch (`--patch-contact`): on the knife-edge face at μ = 0.5 {}, in rigid \
              grip at μ = ∞ {}; on a convex instep (`--instep-radius {} --face-yaw 0`) at μ = 0.5 {}, \
-             in rigid grip at μ = ∞ {}.\n",
+             in rigid grip at μ = ∞ {}. These run the kick's AVX2 copy where the CPU has AVX2 (the results are \
+             the baseline copy's, bit for bit); the last on the baseline x86-64 copy: {}.\n",
             machine.describe(),
             crate::provenance::utc_timestamp(std::time::SystemTime::now()),
             self.ratio,
@@ -664,6 +668,7 @@ impl Measured<'_> {
             kick_3d::validation::ASSUMED_INSTEP_RADIUS,
             kick(6),
             kick(7),
+            kick(8),
         );
         format!(
             "{body}\n## Sweeps into result files\n\n\
