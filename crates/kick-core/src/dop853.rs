@@ -453,6 +453,8 @@ impl<const N: usize> Stepper<N> {
     }
 
     /// Take one accepted step (retrying rejected sizes).
+    // Inlined into its caller, so a caller compiled for wider registers
+    // (kick-3d's AVX2 run) compiles the step's stage sums with them too.
     #[inline(always)]
     pub fn step<S: System<N>>(&mut self, system: &S) -> Result<(), StepFailure> {
         let mut tries = 0;
