@@ -165,9 +165,15 @@ const FACE_RATE: usize = 3;
 /// [`Rates`] at (x, y) along the flow dy (central differences over ±dx).
 #[inline]
 fn rates(system: &Relative, x: f64, y: &State, dy: &State, dx: f64) -> Rates {
+    let (qa, qb) = sides(system, x, y, dy, dx);
+    std::array::from_fn(|i| (qa[i] - qb[i]) / (2.0 * dx))
+}
+
+/// The [`quantities`] at the two sides of a central difference, x ± dx along dy.
+#[inline(always)]
+fn sides(system: &Relative, x: f64, y: &State, dy: &State, dx: f64) -> (Rates, Rates) {
     let (ya, yb) = (y + dy * dx, y - dy * dx);
-    let (a, b) = (system.local(x + dx, &ya), system.local(x - dx, &yb));
-    difference(system, (&a, &ya), (&b, &yb), 2.0 * dx)
+    (quantities(system, &system.local(x + dx, &ya), &ya), quantities(system, &system.local(x - dx, &yb), &yb))
 }
 
 /// The watched quantities and the two margins, in [`Rates`]' order.
@@ -198,9 +204,8 @@ const ROUNDING: f64 = 4.0;
 /// test takes, so it stops no earlier than Brent would.)
 #[inline]
 fn rate_for_root(system: &Relative, x: f64, y: &State, dy: &State, dx: f64, i: usize) -> f64 {
-    let (ya, yb) = (y + dy * dx, y - dy * dx);
-    let qa = quantities(system, &system.local(x + dx, &ya), &ya)[i];
-    let qb = quantities(system, &system.local(x - dx, &yb), &yb)[i];
+    let (a, b) = sides(system, x, y, dy, dx);
+    let (qa, qb) = (a[i], b[i]);
     if (qa - qb).abs() <= ROUNDING * f64::EPSILON * qa.abs().max(qb.abs()) {
         0.0
     } else {
@@ -212,7 +217,7 @@ fn rate_for_root(system: &Relative, x: f64, y: &State, dy: &State, dx: f64, i: u
 /// evaluated: one more evaluation, behind it, and the one-sided difference.
 /// The run reads these rates only by sign (a maximum, or a margin's dip,
 /// between two accepted points; the roots themselves are located on
-/// [`rates`]). The one-sided error is about |Q''| dx/2; where a rate lies
+/// [`rate_for_root`]). The one-sided error is about |Q''| dx/2; where a rate lies
 /// within a hundred times that of zero (Q'' from the rates at the step's
 /// two ends, `before` at x0), its sign is not trusted and the central
 /// difference is taken instead. Half the evaluations of [`rates`], which
@@ -860,8 +865,8 @@ mod tests {
             let dx = 1e-6 * 0.5f64.powi(j);
             let central = rates(&system, 0.0, &y, &dy, dx);
             for i in 0..2 {
-                let (ya, yb) = (y + dy * dx, y - dy * dx);
-                let (qa, qb) = (watched(&system.local(dx, &ya))[i], watched(&system.local(-dx, &yb))[i]);
+                let (a, b) = sides(&system, 0.0, &y, &dy, dx);
+                let (qa, qb) = (a[i], b[i]);
                 let root_rate = rate_for_root(&system, 0.0, &y, &dy, dx, i);
                 if (qa - qb).abs() > ROUNDING * f64::EPSILON * qa.abs().max(qb.abs()) {
                     assert_eq!(root_rate.to_bits(), central[i].to_bits());
