@@ -74,12 +74,23 @@ fn patch_contact(c: &mut Criterion) {
     let cases = [
         ("shell point contact", spec),
         ("shell patch, knife edge", kick_3d::Kick3dSpec { patch_contact: Some(true), ..spec }),
-        ("shell patch, 15 cm cap", kick_3d::Kick3dSpec { patch_contact: Some(true), instep_radius: Some(0.15), face_yaw_deg: Some(0.0), ..spec }),
+        (
+            "shell patch, 15 cm cap",
+            kick_3d::Kick3dSpec { patch_contact: Some(true), instep_radius: Some(0.15), face_yaw_deg: Some(0.0), ..spec },
+        ),
         // Rigid grip (k_t = ∞, a constraint) under the patch: μ = 0.5 slips, grips and slips; μ = ∞ grips throughout.
-        ("shell patch, knife edge, rigid grip", kick_3d::Kick3dSpec { patch_contact: Some(true), tangential_stiffness: Some(f64::INFINITY), ..spec }),
+        (
+            "shell patch, knife edge, rigid grip",
+            kick_3d::Kick3dSpec { patch_contact: Some(true), tangential_stiffness: Some(f64::INFINITY), ..spec },
+        ),
         (
             "shell patch, knife edge, rigid grip, mu inf",
-            kick_3d::Kick3dSpec { patch_contact: Some(true), tangential_stiffness: Some(f64::INFINITY), friction: Some(f64::INFINITY), ..spec },
+            kick_3d::Kick3dSpec {
+                patch_contact: Some(true),
+                tangential_stiffness: Some(f64::INFINITY),
+                friction: Some(f64::INFINITY),
+                ..spec
+            },
         ),
         (
             "shell patch, 15 cm cap, rigid grip",

@@ -26,7 +26,14 @@ fn main() {
         let reference = precision::reference().solve(&kick).expect("reference solves");
         let e = Errors3d::of(&kick, &solved, &reference);
         if e.max() > 1e-9 {
-            println!("kick {i}: offset {:.4} approach {:.2} friction {:.3} foot {:.2}: max {:.2e}", kick.offset, kick.approach_angle.to_degrees(), kick.friction, kick.base.effective_foot_mass(), e.max());
+            println!(
+                "kick {i}: offset {:.4} approach {:.2} friction {:.3} foot {:.2}: max {:.2e}",
+                kick.offset,
+                kick.approach_angle.to_degrees(),
+                kick.friction,
+                kick.base.effective_foot_mass(),
+                e.max()
+            );
         }
         errors.push(e.values());
         evaluations.push(solved.evaluations);

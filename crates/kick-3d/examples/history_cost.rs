@@ -51,16 +51,24 @@ fn main() {
             black_box(solver.solve(black_box(&kick)).unwrap());
         }));
         interval.push(time(&|| {
-            black_box(solver.solve_streamed(black_box(&kick), spacing, &mut |s| {
-                black_box(s);
-                ControlFlow::Continue(())
-            }).unwrap());
+            black_box(
+                solver
+                    .solve_streamed(black_box(&kick), spacing, &mut |s| {
+                        black_box(s);
+                        ControlFlow::Continue(())
+                    })
+                    .unwrap(),
+            );
         }));
         count.push(time(&|| {
-            black_box(solver.solve_streamed(black_box(&kick), Spacing::Count(samples), &mut |s| {
-                black_box(s);
-                ControlFlow::Continue(())
-            }).unwrap());
+            black_box(
+                solver
+                    .solve_streamed(black_box(&kick), Spacing::Count(samples), &mut |s| {
+                        black_box(s);
+                        ControlFlow::Continue(())
+                    })
+                    .unwrap(),
+            );
         }));
         black_box(sum);
     }

@@ -18,7 +18,12 @@ fn main() {
     let solver = Accurate3d::default();
     let configs: [Config; 4] = [
         ("point, knife edge", |e, mu| Kick3dSpec { offset: Some(e), friction: Some(mu), ..Kick3dSpec::default() }),
-        ("patch, knife edge", |e, mu| Kick3dSpec { offset: Some(e), friction: Some(mu), patch_contact: Some(true), ..Kick3dSpec::default() }),
+        ("patch, knife edge", |e, mu| Kick3dSpec {
+            offset: Some(e),
+            friction: Some(mu),
+            patch_contact: Some(true),
+            ..Kick3dSpec::default()
+        }),
         ("point, cap, yaw 0", |e, mu| Kick3dSpec { offset: Some(e), friction: Some(mu), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() }),
         ("patch, cap, yaw 0", |e, mu| Kick3dSpec {
             offset: Some(e),

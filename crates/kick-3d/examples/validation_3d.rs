@@ -29,7 +29,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
     }
     for p in &kicks.largest {
-        println!("largest spin at mu {}: e = {:.2} mm, {:.2} rad/s ({:.2} rev/s), speed {:.2} m/s", p.friction, 1e3 * p.offset, p.spin, p.spin / std::f64::consts::TAU, p.speed);
+        println!(
+            "largest spin at mu {}: e = {:.2} mm, {:.2} rad/s ({:.2} rev/s), speed {:.2} m/s",
+            p.friction,
+            1e3 * p.offset,
+            p.spin,
+            p.spin / std::f64::consts::TAU,
+            p.speed
+        );
     }
     Ok(())
 }

@@ -334,11 +334,7 @@ struct Point {
 impl Accurate3d {
     pub fn new(relative_tolerance: f64) -> Result<Self, Kick3dError> {
         if !(relative_tolerance.is_finite() && relative_tolerance > 0.0 && relative_tolerance < 1e-3) {
-            return Err(Kick3dError::InvalidParameter {
-                name: "rtol",
-                value: relative_tolerance,
-                requirement: "in (0, 1e-3)",
-            });
+            return Err(Kick3dError::InvalidParameter { name: "rtol", value: relative_tolerance, requirement: "in (0, 1e-3)" });
         }
         Ok(Accurate3d { relative_tolerance })
     }
@@ -504,7 +500,8 @@ impl Accurate3d {
         // Units of u = δ^(1/p) and of the differences along x.
         let u_unit = length.powf(1.0 / f64::from(contact::CLOCK_POWER));
         let step_of = |clock: Clock| DIFFERENCE_STEP * if clock == Clock::Time { scales.time } else { u_unit };
-        let first_step = (rtol / DEFAULT_TOLERANCE).powf(1.0 / 8.0) * if singular { FIRST_STEP_ONSET * u_unit } else { FIRST_STEP_TIME * scales.time };
+        let first_step =
+            (rtol / DEFAULT_TOLERANCE).powf(1.0 / 8.0) * if singular { FIRST_STEP_ONSET * u_unit } else { FIRST_STEP_TIME * scales.time };
         let mut stepper = Stepper::starting_with(&system, 0.0, y0, rtol, absolute, if singular { u_unit } else { horizon }, first_step);
         let v_n = kick.normal_approach_speed();
 
@@ -698,7 +695,9 @@ impl Accurate3d {
                     // A change of clock needs no location: any accepted point serves.
                     let c = &c1;
                     let next = match phase.clock {
-                        Clock::Onset if c.compression >= ONSET_SHARE * length || c.compression_rate <= CLOCK_RATE * v_n => Some(Clock::Time),
+                        Clock::Onset if c.compression >= ONSET_SHARE * length || c.compression_rate <= CLOCK_RATE * v_n => {
+                            Some(Clock::Time)
+                        }
                         Clock::Release { .. } if c.compression_rate >= -CLOCK_RATE * v_n => Some(Clock::Time),
                         Clock::Time
                             if release
@@ -755,7 +754,8 @@ impl Accurate3d {
                     if system.rigid && phase.friction == Friction::Grip {
                         // Sliding starts against the force that could no longer hold it.
                         phase.slip_direction = -c_end.tangential_force.normalize_or_zero();
-                        phase.slip_start = c_end.sliding_velocity.dot(phase.slip_direction).min(0.0) - 10.0 * absolute[contact::RELATIVE_VELOCITY];
+                        phase.slip_start =
+                            c_end.sliding_velocity.dot(phase.slip_direction).min(0.0) - 10.0 * absolute[contact::RELATIVE_VELOCITY];
                     }
                     phase.friction = if phase.friction == Friction::Grip { Friction::Slip } else { Friction::Grip };
                 }
@@ -799,7 +799,8 @@ mod tests {
     /// The baseline kick 5 cm off centre, its ball pushed 1 cm into the
     /// face, on a sliding phase: a state with every watched rate nonzero.
     fn pressed() -> (Relative, State) {
-        let kick = Kick3d::new(kick_core::Scenario::baseline(), &crate::Kick3dSpec { offset: Some(0.05), ..Default::default() }).expect("valid");
+        let kick =
+            Kick3d::new(kick_core::Scenario::baseline(), &crate::Kick3dSpec { offset: Some(0.05), ..Default::default() }).expect("valid");
         let phase = Phase {
             compressing: true,
             friction: Friction::Slip,

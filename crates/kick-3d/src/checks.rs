@@ -71,8 +71,7 @@ pub fn kick(spec: Kick3dSpec) -> Kick3d {
 pub fn tangential_mass(kick: &Kick3d, foot_axis_inertia: f64) -> f64 {
     let h = kick.face_distance(); // foot centre of mass to the contact point
     let r = kick.ball_radius;
-    1.0 / (1.0 / kick.base.ball_mass() + r * r / kick.ball_inertia + 1.0 / kick.base.effective_foot_mass()
-        + h * h / foot_axis_inertia)
+    1.0 / (1.0 / kick.base.ball_mass() + r * r / kick.ball_inertia + 1.0 / kick.base.effective_foot_mass() + h * h / foot_axis_inertia)
 }
 
 /// Spin of the rigid gripping (rolling) limit: the contact point's sliding
@@ -131,7 +130,9 @@ fn central_matches_1d() -> Result<Vec<CheckRow>, Kick3dError> {
     let k = try_kick(Kick3dSpec { friction: Some(0.0), ..Kick3dSpec::default() })?;
     let one = Accurate::default().solve(&k.base)?;
     let three = solve(&k)?;
-    let rel = |name: &str, e: f64, a: f64| CheckRow::compare(format!("3d central frictionless = 1d: {name}"), "Eqs. 13-20", e, a, e.abs(), MATCH_1D);
+    let rel = |name: &str, e: f64, a: f64| {
+        CheckRow::compare(format!("3d central frictionless = 1d: {name}"), "Eqs. 13-20", e, a, e.abs(), MATCH_1D)
+    };
     Ok(vec![
         rel("ball exit speed", one.v_ball_out, three.launch_velocity[0]),
         rel("foot exit speed", one.v_foot_out, three.foot_velocity[0]),
@@ -157,7 +158,14 @@ fn angular_momentum() -> Result<Vec<CheckRow>, Kick3dError> {
     let scale = norm(o.angular_impulse);
     Ok((0..3)
         .map(|i| {
-            CheckRow::compare(format!("3d I_b omega_{} = (integral r x F dt)_{}", ["x", "y", "z"][i], ["x", "y", "z"][i]), "Eq. 61", o.angular_impulse[i], l[i], scale, ROUNDING)
+            CheckRow::compare(
+                format!("3d I_b omega_{} = (integral r x F dt)_{}", ["x", "y", "z"][i], ["x", "y", "z"][i]),
+                "Eq. 61",
+                o.angular_impulse[i],
+                l[i],
+                scale,
+                ROUNDING,
+            )
         })
         .collect())
 }
@@ -169,16 +177,26 @@ fn energy_closes() -> Result<Vec<CheckRow>, Kick3dError> {
     // Kinetic + elastic energy along the run (every accepted step and event) may only fall.
     let (_, samples) = Accurate3d::default().solve_recorded(&k)?;
     let rise = samples.windows(2).map(|w| w[1].1 - w[0].1).fold(0.0f64, f64::max);
-    let monotone = CheckRow::compare("3d passive contact: largest rise of kinetic + elastic energy (J)", "Eqs. 30-33", 0.0, rise, e.kinetic_initial, MATCH_1D);
-    // The losses are integrated from their own power densities: closure tests the solver (1e-9, its promise).
-    Ok(vec![monotone, CheckRow::compare(
-        "3d energy in = kinetic + spin + foot + elastic + damping + friction (J)",
+    let monotone = CheckRow::compare(
+        "3d passive contact: largest rise of kinetic + elastic energy (J)",
         "Eqs. 30-33",
-        e.kinetic_initial + e.drive_work + e.gravity_work,
-        e.ball_translation + e.ball_spin + e.foot + e.elastic_final + e.normal_damping_loss + e.friction_loss,
+        0.0,
+        rise,
         e.kinetic_initial,
         MATCH_1D,
-    )])
+    );
+    // The losses are integrated from their own power densities: closure tests the solver (1e-9, its promise).
+    Ok(vec![
+        monotone,
+        CheckRow::compare(
+            "3d energy in = kinetic + spin + foot + elastic + damping + friction (J)",
+            "Eqs. 30-33",
+            e.kinetic_initial + e.drive_work + e.gravity_work,
+            e.ball_translation + e.ball_spin + e.foot + e.elastic_final + e.normal_damping_loss + e.friction_loss,
+            e.kinetic_initial,
+            MATCH_1D,
+        ),
+    ])
 }
 
 fn mirror() -> Result<Vec<CheckRow>, Kick3dError> {
@@ -188,7 +206,9 @@ fn mirror() -> Result<Vec<CheckRow>, Kick3dError> {
     let scale = norm(a.spin);
     let expected = [-a.spin[0], a.spin[1], -a.spin[2]];
     Ok((0..3)
-        .map(|i| CheckRow::compare(format!("3d mirrored offset: spin_{}", ["x", "y", "z"][i]), "Eq. 61", expected[i], b.spin[i], scale, ROUNDING))
+        .map(|i| {
+            CheckRow::compare(format!("3d mirrored offset: spin_{}", ["x", "y", "z"][i]), "Eq. 61", expected[i], b.spin[i], scale, ROUNDING)
+        })
         .collect())
 }
 
@@ -212,12 +232,8 @@ fn friction_to_infinity() -> Result<Vec<CheckRow>, Kick3dError> {
     // A foot that does not turn keeps the normal fixed, so the tangential
     // motion is the linear oscillator m_t ẍ + c_t ẋ + k_t x = 0.
     let stiff_foot = 1e12;
-    let spec = Kick3dSpec {
-        offset: Some(0.05),
-        friction: Some(f64::INFINITY),
-        foot_inertia: Some([stiff_foot; 3]),
-        ..Kick3dSpec::default()
-    };
+    let spec =
+        Kick3dSpec { offset: Some(0.05), friction: Some(f64::INFINITY), foot_inertia: Some([stiff_foot; 3]), ..Kick3dSpec::default() };
     let k = try_kick(spec)?;
     let o = solve(&k)?;
     let m_t = tangential_mass(&k, stiff_foot);
@@ -234,9 +250,23 @@ fn friction_to_infinity() -> Result<Vec<CheckRow>, Kick3dError> {
     let o_constrained = solve(&constrained)?;
     let exact = gripping_limit_spin(&constrained, stiff_foot);
     Ok(vec![
-        CheckRow::compare("3d mu = inf, rigid grip (k_t = inf): spin_z = gripping limit", "Eq. 61", exact.z, o_constrained.spin[2], exact.z.abs(), MATCH_1D),
+        CheckRow::compare(
+            "3d mu = inf, rigid grip (k_t = inf): spin_z = gripping limit",
+            "Eq. 61",
+            exact.z,
+            o_constrained.spin[2],
+            exact.z.abs(),
+            MATCH_1D,
+        ),
         CheckRow::compare("3d mu = inf: |spin| = damped-oscillator closed form", "Eq. 61", expected, norm(o.spin), expected, MATCH_1D),
-        CheckRow::compare("3d mu = inf, k_t = 1e8, critical: spin_z = gripping limit", "Eq. 61", limit.z, o_rigid.spin[2], limit.z.abs(), MATCH_1D),
+        CheckRow::compare(
+            "3d mu = inf, k_t = 1e8, critical: spin_z = gripping limit",
+            "Eq. 61",
+            limit.z,
+            o_rigid.spin[2],
+            limit.z.abs(),
+            MATCH_1D,
+        ),
         CheckRow::compare("3d mu = inf: slip time", "-", 0.0, o.slip_time, o.contact_time, ROUNDING),
     ])
 }

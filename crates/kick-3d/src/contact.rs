@@ -352,21 +352,21 @@ impl Relative {
         let (point, rate, sliding, normal_force, unclamped_force, damping_power, patch, zeta_rate) = match &self.patch {
             Some(patch) => self.patch_normal::<FACE>(patch, y, delta, n),
             None => {
-        let lever_ball = along::<FACE>(n, -self.ball_radius);
-        let point = r + lever_ball;
-        // Ball's material point minus the foot's, at p (ω_b × (−R n) = −R (ω_b × n)).
-        let v_rel = w - cross_normal::<FACE>(spin, n) * self.ball_radius - omega.cross(point);
-        let rate = -dot_normal::<FACE>(n, v_rel);
-        let sliding = tangential::<FACE>(n, v_rel);
-        let (elastic, normal_force, unclamped_force) = if self.clamps {
-            let (elastic, raw) = self.law.unclamped_force(delta, rate);
-            (elastic, if self.phase.clamped { 0.0 } else { raw }, raw)
-        } else {
-            let (elastic, force) = self.law.branch_force(delta, rate, self.phase.compressing);
-            (elastic, force, force)
-        };
-        let damping_power = (normal_force - elastic) * rate;
-        (point, rate, sliding, normal_force, unclamped_force, damping_power, None, 0.0)
+                let lever_ball = along::<FACE>(n, -self.ball_radius);
+                let point = r + lever_ball;
+                // Ball's material point minus the foot's, at p (ω_b × (−R n) = −R (ω_b × n)).
+                let v_rel = w - cross_normal::<FACE>(spin, n) * self.ball_radius - omega.cross(point);
+                let rate = -dot_normal::<FACE>(n, v_rel);
+                let sliding = tangential::<FACE>(n, v_rel);
+                let (elastic, normal_force, unclamped_force) = if self.clamps {
+                    let (elastic, raw) = self.law.unclamped_force(delta, rate);
+                    (elastic, if self.phase.clamped { 0.0 } else { raw }, raw)
+                } else {
+                    let (elastic, force) = self.law.branch_force(delta, rate, self.phase.compressing);
+                    (elastic, force, force)
+                };
+                let damping_power = (normal_force - elastic) * rate;
+                (point, rate, sliding, normal_force, unclamped_force, damping_power, None, 0.0)
             }
         };
 
@@ -443,7 +443,13 @@ impl Relative {
     /// the loss is the exact balance of the element forces' power.
     #[inline(always)]
     #[allow(clippy::type_complexity)]
-    fn patch_normal<const FACE: bool>(&self, patch: &Patch, y: &State, delta: f64, n: Vec3) -> (Vec3, f64, Vec3, f64, f64, f64, Option<PatchForce>, f64) {
+    fn patch_normal<const FACE: bool>(
+        &self,
+        patch: &Patch,
+        y: &State,
+        delta: f64,
+        n: Vec3,
+    ) -> (Vec3, f64, Vec3, f64, f64, f64, Option<PatchForce>, f64) {
         let r = self.centre(y);
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
@@ -466,10 +472,22 @@ impl Relative {
         let mut p = match self.cap {
             Some((centre, radius)) if self.rigid && self.phase.friction == Friction::Grip => {
                 let p;
-                (p, zeta_rate) = patch.resultant_and_centroid_rate(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, elastic, slope);
+                (p, zeta_rate) = patch.resultant_and_centroid_rate(
+                    Surface::Sphere { centre, radius },
+                    self.ball_radius,
+                    r,
+                    r_dot,
+                    spin - omega,
+                    delta,
+                    n,
+                    elastic,
+                    slope,
+                );
                 p
             }
-            Some((centre, radius)) => patch.resultant(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, elastic, slope),
+            Some((centre, radius)) => {
+                patch.resultant(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, elastic, slope)
+            }
             // The closed form, inlined here (no rule).
             None if delta > 0.0 => crate::patch::flat(self.ball_radius, r, n.dot(r_dot), spin - omega, delta, n, elastic, slope),
             None => patch.resultant(Surface::Flat, self.ball_radius, r, r_dot, spin - omega, delta, n, elastic, slope),
@@ -624,7 +642,8 @@ impl Relative {
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
-        let mut b = -omega.cross(w) + omega.cross(spin).cross(n) * self.ball_radius
+        let mut b = -omega.cross(w)
+            + omega.cross(spin).cross(n) * self.ball_radius
             + (omega.cross(omega * self.foot_inertia) / self.foot_inertia).cross(point)
             - omega.cross(w - omega.cross(r));
         if self.drive != Vec3::ZERO {
@@ -666,7 +685,19 @@ impl Relative {
                     Some(patch) if !(delta > 0.0) => {
                         let tiny = 1e-12 * self.ball_radius;
                         let surface = Surface::Sphere { centre, radius };
-                        patch.resultant_and_centroid_rate(surface, self.ball_radius, centre + n * (d - tiny), Vec3::ZERO, Vec3::ZERO, tiny, n, 0.0, 0.0).1
+                        patch
+                            .resultant_and_centroid_rate(
+                                surface,
+                                self.ball_radius,
+                                centre + n * (d - tiny),
+                                Vec3::ZERO,
+                                Vec3::ZERO,
+                                tiny,
+                                n,
+                                0.0,
+                                0.0,
+                            )
+                            .1
                     }
                     _ => zeta_rate,
                 };

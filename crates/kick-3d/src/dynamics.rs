@@ -283,8 +283,7 @@ impl Dynamics {
     pub fn foot_energy(&self, y: &State) -> f64 {
         let q = rot(y, FOOT_ROTATION);
         let w_body = q.inverse() * vec3(y, FOOT_ANGULAR_VELOCITY);
-        0.5 * self.foot_mass * vec3(y, FOOT_VELOCITY).length_squared()
-            + 0.5 * w_body.dot(w_body * self.foot_inertia)
+        0.5 * self.foot_mass * vec3(y, FOOT_VELOCITY).length_squared() + 0.5 * w_body.dot(w_body * self.foot_inertia)
     }
     /// U(δ) + ½ k_t |ξ|².
     pub fn elastic_energy(&self, y: &State, compression: f64) -> f64 {
@@ -317,8 +316,7 @@ impl Dynamics {
     /// Kinetic plus elastic energy (what a passive contact can only lose).
     pub fn mechanical_energy(&self, y: &State) -> f64 {
         let c = self.contact(y);
-        self.ball_translation_energy(y) + self.ball_spin_energy(y) + self.foot_energy(y)
-            + self.elastic_energy(y, c.compression)
+        self.ball_translation_energy(y) + self.ball_spin_energy(y) + self.foot_energy(y) + self.elastic_energy(y, c.compression)
     }
 }
 

@@ -272,9 +272,7 @@ impl FullState3d {
             return Ok(dynamics.rk4_step(&y0, t1 - t0));
         }
         let mut stepper = self.integrator(Plain(dynamics), t0, t1, y0, t1 - t0, t1 - t0);
-        let stats = stepper
-            .integrate()
-            .map_err(|e| KickError::Integration { time: t0, reason: e.to_string() })?;
+        let stats = stepper.integrate().map_err(|e| KickError::Integration { time: t0, reason: e.to_string() })?;
         *evaluations += u64::from(stats.num_eval);
         stepper.y_out().last().copied().ok_or(KickError::Integration { time: t0, reason: "empty step".into() })
     }
@@ -304,9 +302,7 @@ impl FullState3d {
         };
         let system = PhaseSystem { dynamics, watch: &mut watch, recorder };
         let mut stepper = self.integrator(system, t, t_end, y, t_end - t, 0.0);
-        let stats = stepper
-            .integrate()
-            .map_err(|e| KickError::Integration { time: t, reason: e.to_string() })?;
+        let stats = stepper.integrate().map_err(|e| KickError::Integration { time: t, reason: e.to_string() })?;
         *evaluations += u64::from(stats.num_eval);
         drop(stepper);
         let phase_start = t;
@@ -367,7 +363,15 @@ impl FullState3d {
 
     /// The event's time in the step (t0, y0) → t1, and the state there on
     /// the far side of the crossing (so the next phase does not see it again).
-    fn locate(&self, dynamics: Dynamics, event: Event, t0: f64, y0: State, t1: f64, evaluations: &mut u64) -> Result<(f64, State), KickError> {
+    fn locate(
+        &self,
+        dynamics: Dynamics,
+        event: Event,
+        t0: f64,
+        y0: State,
+        t1: f64,
+        evaluations: &mut u64,
+    ) -> Result<(f64, State), KickError> {
         let before = event.value(&dynamics, &y0);
         let mut failure = None;
         let mut count = 0u64;
@@ -484,4 +488,3 @@ impl FullState3d {
         Ok((outcome, samples))
     }
 }
-

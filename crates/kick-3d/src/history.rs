@@ -226,9 +226,12 @@ impl Accurate3d {
         spacing: Spacing,
         sink: &mut dyn FnMut(&Sample3d) -> ControlFlow<()>,
     ) -> Result<(crate::Outcome3d, u64), Kick3dError> {
-        kick_compliant::history::stream_any(spacing, sink, |o: &crate::Outcome3d| o.contact_time, |sampler| {
-            Ok(self.run::<true>(kick, None, sampler)?.0)
-        })
+        kick_compliant::history::stream_any(
+            spacing,
+            sink,
+            |o: &crate::Outcome3d| o.contact_time,
+            |sampler| Ok(self.run::<true>(kick, None, sampler)?.0),
+        )
     }
 
     /// [`Self::solve_streamed`] collected, at most `limit` samples (a longer

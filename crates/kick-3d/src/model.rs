@@ -327,13 +327,9 @@ impl Kick3d {
         // The shell ball is this kick's ball: its patch and gas volume follow
         // `ball_radius` (the 1D scenario builds it at the default radius).
         let base = match base.contact_law() {
-            AnyLaw::Shell(ball) if ball.radius != radius => base.with_shell(kick_core::ShellBall::new(
-                ball.pressure,
-                radius,
-                ball.gas_exponent,
-                ball.shell_stiffness,
-                ball.shell_loss,
-            )?),
+            AnyLaw::Shell(ball) if ball.radius != radius => {
+                base.with_shell(kick_core::ShellBall::new(ball.pressure, radius, ball.gas_exponent, ball.shell_stiffness, ball.shell_loss)?)
+            }
             _ => base,
         };
         let m_b = base.ball_mass();
@@ -367,8 +363,7 @@ impl Kick3d {
         let friction = check(&p::FRICTION, spec.friction.unwrap_or(Self::DEFAULT_FRICTION))?;
         let tangential_stiffness =
             check(&p::TANGENTIAL_STIFFNESS, spec.tangential_stiffness.unwrap_or(Self::DEFAULT_TANGENTIAL_STIFFNESS))?;
-        let tangential_damping =
-            check(&p::TANGENTIAL_DAMPING, spec.tangential_damping.unwrap_or(Self::DEFAULT_TANGENTIAL_DAMPING))?;
+        let tangential_damping = check(&p::TANGENTIAL_DAMPING, spec.tangential_damping.unwrap_or(Self::DEFAULT_TANGENTIAL_DAMPING))?;
         let mut kick = Kick3d {
             base,
             law: base.contact_law(),

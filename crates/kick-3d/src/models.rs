@@ -87,14 +87,51 @@ pub fn named_kicks() -> Result<Vec<(&'static str, Kick3d)>, Kick3dError> {
         ("grip 7 cm mu inf", baseline, Kick3dSpec { offset: Some(0.07), friction: Some(f64::INFINITY), ..d }, LawKind::PowerLaw),
         ("slide 9 cm mu 0.2", baseline, Kick3dSpec { offset: Some(0.09), friction: Some(0.2), ..d }, LawKind::PowerLaw),
         ("frictionless 6 cm", baseline, Kick3dSpec { offset: Some(0.06), friction: Some(0.0), ..d }, LawKind::PowerLaw),
-        ("rounded 4 cm rising 20 deg", baseline, Kick3dSpec { offset: Some(0.04), approach_angle_deg: Some(20.0), foot_half_extents: Some(ROUNDED_OUTER), border_radius: Some(0.01), ..d }, LawKind::PowerLaw),
+        (
+            "rounded 4 cm rising 20 deg",
+            baseline,
+            Kick3dSpec {
+                offset: Some(0.04),
+                approach_angle_deg: Some(20.0),
+                foot_half_extents: Some(ROUNDED_OUTER),
+                border_radius: Some(0.01),
+                ..d
+            },
+            LawKind::PowerLaw,
+        ),
         ("over the sharp edge: soft ball 9 cm", soft, Kick3dSpec { offset: Some(0.09), friction: Some(0.2), ..d }, LawKind::PowerLaw),
-        ("onto the rounded border: soft ball rising 30 deg", soft, Kick3dSpec { approach_angle_deg: Some(30.0), friction: Some(0.05), foot_half_extents: Some(ROUNDED_OUTER), border_radius: Some(0.01), ..d }, LawKind::PowerLaw),
+        (
+            "onto the rounded border: soft ball rising 30 deg",
+            soft,
+            Kick3dSpec {
+                approach_angle_deg: Some(30.0),
+                friction: Some(0.05),
+                foot_half_extents: Some(ROUNDED_OUTER),
+                border_radius: Some(0.01),
+                ..d
+            },
+            LawKind::PowerLaw,
+        ),
         ("driven 800 N 5 cm", baseline.with(Parameter::DriveForce, 800.0)?, Kick3dSpec { offset: Some(0.05), ..d }, LawKind::PowerLaw),
-        ("incoming ball 8 m/s 4 cm", baseline.with(Parameter::BallSpeed, -8.0)?, Kick3dSpec { offset: Some(0.04), approach_angle_deg: Some(-10.0), ..d }, LawKind::PowerLaw),
+        (
+            "incoming ball 8 m/s 4 cm",
+            baseline.with(Parameter::BallSpeed, -8.0)?,
+            Kick3dSpec { offset: Some(0.04), approach_angle_deg: Some(-10.0), ..d },
+            LawKind::PowerLaw,
+        ),
         ("gravity 5 cm", baseline, Kick3dSpec { offset: Some(0.05), gravity: Some(true), ..d }, LawKind::PowerLaw),
-        ("lankarani-nikravesh 6 cm", baseline, Kick3dSpec { offset: Some(0.06), approach_angle_deg: Some(5.0), ..d }, LawKind::LankaraniNikravesh),
-        ("hunt-crossley-exact 3 cm mu 1", baseline, Kick3dSpec { offset: Some(0.03), friction: Some(1.0), ..d }, LawKind::HuntCrossleyExact),
+        (
+            "lankarani-nikravesh 6 cm",
+            baseline,
+            Kick3dSpec { offset: Some(0.06), approach_angle_deg: Some(5.0), ..d },
+            LawKind::LankaraniNikravesh,
+        ),
+        (
+            "hunt-crossley-exact 3 cm mu 1",
+            baseline,
+            Kick3dSpec { offset: Some(0.03), friction: Some(1.0), ..d },
+            LawKind::HuntCrossleyExact,
+        ),
         ("kelvin-voigt 3 cm", baseline, Kick3dSpec { offset: Some(0.03), ..d }, LawKind::KelvinVoigt),
     ];
     cases
@@ -113,7 +150,8 @@ pub fn peak_after_switch() -> Result<Vec<(&'static str, Kick3d)>, Kick3dError> {
     let case = |law: LawKind, offset: f64, approach: f64, friction: f64, foot_mass: f64| -> Result<Kick3d, Kick3dError> {
         let restitution = (law != LawKind::PowerLaw).then_some(BOX_RESTITUTION);
         let base = Scenario::baseline().with(Parameter::FootMass, foot_mass)?.with_law(law, restitution)?;
-        let spec = Kick3dSpec { offset: Some(offset), approach_angle_deg: Some(approach), friction: Some(friction), ..Kick3dSpec::default() };
+        let spec =
+            Kick3dSpec { offset: Some(offset), approach_angle_deg: Some(approach), friction: Some(friction), ..Kick3dSpec::default() };
         Kick3d::new(base, &spec)
     };
     Ok(vec![

@@ -39,8 +39,7 @@ impl EnergyPartition {
     /// Input − (kinetic + elastic + losses): zero up to the solver's error.
     pub fn residual(&self) -> f64 {
         self.kinetic_initial + self.drive_work + self.gravity_work
-            - (self.ball_translation + self.ball_spin + self.foot + self.elastic_final
-                + self.normal_damping_loss + self.friction_loss)
+            - (self.ball_translation + self.ball_spin + self.foot + self.elastic_final + self.normal_damping_loss + self.friction_loss)
     }
     pub fn relative_residual(&self) -> f64 {
         self.residual() / (self.kinetic_initial + self.drive_work.abs() + self.gravity_work.abs())
@@ -195,8 +194,7 @@ impl EndState {
     pub fn foot_energy(&self, kick: &Kick3d) -> f64 {
         let [ix, iy, iz] = kick.foot_inertia;
         let w = self.foot_orientation.inverse() * self.foot_angular_velocity;
-        0.5 * kick.base.effective_foot_mass() * self.foot_velocity.length_squared()
-            + 0.5 * w.dot(w * Vec3::new(ix, iy, iz))
+        0.5 * kick.base.effective_foot_mass() * self.foot_velocity.length_squared() + 0.5 * w.dot(w * Vec3::new(ix, iy, iz))
     }
 }
 
@@ -214,7 +212,13 @@ pub(crate) fn within_geometry(kick: &Kick3d, compression: f64, time: f64) -> Res
 }
 
 /// The summary at separation.
-pub(crate) fn assemble(kick: &Kick3d, end: &EndState, peaks: Peaks, evaluations: u64, solver: &'static str) -> Result<Outcome3d, Kick3dError> {
+pub(crate) fn assemble(
+    kick: &Kick3d,
+    end: &EndState,
+    peaks: Peaks,
+    evaluations: u64,
+    solver: &'static str,
+) -> Result<Outcome3d, Kick3dError> {
     within_geometry(kick, peaks.compression.0, peaks.compression.1)?;
     let r0 = -kick.initial_normal() * kick.ball_radius;
     let fixed = r0.cross(end.impulse);
@@ -318,13 +322,47 @@ impl Outcome3d {
         let [lx, ly, lz] = self.angular_impulse;
         let e = &self.energy;
         [
-            vx, vy, vz, wx, wy, wz, self.speed, self.spin_rpm, self.launch_angle, self.launch_azimuth,
-            fx, fy, fz, ox, oy, oz, jx, jy, jz, self.normal_impulse, lx, ly, lz,
-            self.contact_time, self.peak_normal_force, self.peak_normal_force_time,
-            self.peak_tangential_force, self.peak_tangential_force_time,
-            self.max_compression, self.max_compression_time, self.slip_time,
-            e.kinetic_initial, e.ball_translation, e.ball_spin, e.foot, e.elastic_final,
-            e.normal_damping_loss, e.friction_loss, e.drive_work, e.gravity_work, e.residual(),
+            vx,
+            vy,
+            vz,
+            wx,
+            wy,
+            wz,
+            self.speed,
+            self.spin_rpm,
+            self.launch_angle,
+            self.launch_azimuth,
+            fx,
+            fy,
+            fz,
+            ox,
+            oy,
+            oz,
+            jx,
+            jy,
+            jz,
+            self.normal_impulse,
+            lx,
+            ly,
+            lz,
+            self.contact_time,
+            self.peak_normal_force,
+            self.peak_normal_force_time,
+            self.peak_tangential_force,
+            self.peak_tangential_force_time,
+            self.max_compression,
+            self.max_compression_time,
+            self.slip_time,
+            e.kinetic_initial,
+            e.ball_translation,
+            e.ball_spin,
+            e.foot,
+            e.elastic_final,
+            e.normal_damping_loss,
+            e.friction_loss,
+            e.drive_work,
+            e.gravity_work,
+            e.residual(),
             self.evaluations as f64,
         ]
     }

@@ -185,7 +185,18 @@ impl Patch {
     /// V = ṙ_t + d (n × Ω): the ball's velocity field at the cap's centre.
     #[allow(clippy::too_many_arguments)]
     #[inline]
-    pub fn resultant(&self, surface: Surface, ball_radius: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
+    pub fn resultant(
+        &self,
+        surface: Surface,
+        ball_radius: f64,
+        r: Vec3,
+        r_dot: Vec3,
+        turn: Vec3,
+        delta: f64,
+        n: Vec3,
+        elastic: f64,
+        slope: f64,
+    ) -> PatchForce {
         self.resultant_on::<false>(surface, ball_radius, r, r_dot, turn, delta, n, elastic, slope).0
     }
 
@@ -201,13 +212,35 @@ impl Patch {
     /// it to a five-point difference of the centroid.
     #[allow(clippy::too_many_arguments)]
     #[inline]
-    pub fn resultant_and_centroid_rate(&self, surface: Surface, ball_radius: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> (PatchForce, f64) {
+    pub fn resultant_and_centroid_rate(
+        &self,
+        surface: Surface,
+        ball_radius: f64,
+        r: Vec3,
+        r_dot: Vec3,
+        turn: Vec3,
+        delta: f64,
+        n: Vec3,
+        elastic: f64,
+        slope: f64,
+    ) -> (PatchForce, f64) {
         self.resultant_on::<true>(surface, ball_radius, r, r_dot, turn, delta, n, elastic, slope)
     }
 
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn resultant_on<const RATE: bool>(&self, surface: Surface, ball_radius: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> (PatchForce, f64) {
+    fn resultant_on<const RATE: bool>(
+        &self,
+        surface: Surface,
+        ball_radius: f64,
+        r: Vec3,
+        r_dot: Vec3,
+        turn: Vec3,
+        delta: f64,
+        n: Vec3,
+        elastic: f64,
+        slope: f64,
+    ) -> (PatchForce, f64) {
         let big_r = ball_radius;
         let r_n = n.dot(r_dot);
         let point = PatchForce { force: n * (elastic - slope * r_n), moment: Vec3::ZERO, centroid: r - n * big_r };
@@ -233,8 +266,8 @@ impl Patch {
             // from the patch, where in z or ρ² they sit at κz = B, about
             // the patch's own height away.
             let b2 = (rf - delta) * (d + big_r); // d² − R²
-            // R − S₀ = δ + κ (r_f − x_f) = δ + a²/(2 r_f), a² = δ(2R − δ):
-            // d cancels, so the rings start without waiting for a division.
+                                                 // R − S₀ = δ + κ (r_f − x_f) = δ + a²/(2 r_f), a² = δ(2R − δ):
+                                                 // d cancels, so the rings start without waiting for a division.
             let span = delta + flat_a2 * (0.5 * inv_rf);
             let s0 = big_r - span;
             // κ x_f = r_f + S₀ (S₀² + B² = κ² x_f²): each ring's κ (z + x_f) from its own root.
@@ -267,7 +300,7 @@ impl Patch {
                     let (v, w) = (node[j], weight[j]);
                     let s = s0 + span * v;
                     let root = (s * s + b2).sqrt(); // κ z
-                    // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
+                                                    // h = r_f − κ z + S, written as (S − S₀)(1 − (S + S₀)/(κ (z + x_f))) (zero at the rim, no cancellation).
                     let ratio = (s + s0) / (root + rim);
                     let h = span * v * (1.0 - ratio);
                     zs[j] = root * inv_kappa;
@@ -463,7 +496,17 @@ mod tests {
     /// (ṙ, Ω). The closed form (flat) and the ring rule (cap) agree to the
     /// difference's error.
     #[allow(clippy::too_many_arguments)]
-    fn brute(surface: Surface, big_r: f64, r: Vec3, r_dot: Vec3, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> (PatchForce, f64) {
+    fn brute(
+        surface: Surface,
+        big_r: f64,
+        r: Vec3,
+        r_dot: Vec3,
+        turn: Vec3,
+        delta: f64,
+        n: Vec3,
+        elastic: f64,
+        slope: f64,
+    ) -> (PatchForce, f64) {
         let depth = |x: Vec3, nu: Vec3, r: Vec3| {
             let q = x - r;
             let nq = nu.dot(q);
@@ -539,10 +582,20 @@ mod tests {
                     let got = patch.resultant(surface, big_r, r, r_dot, turn, delta, n, elastic, slope);
                     let (want, _) = brute(surface, big_r, r, r_dot, turn, delta, n, elastic, slope);
                     let scale = want.force.length();
-                    assert!((got.force - want.force).length() <= 1e-7 * scale, "{surface:?} δ={delta}: {:?} vs {:?}", got.force, want.force);
+                    assert!(
+                        (got.force - want.force).length() <= 1e-7 * scale,
+                        "{surface:?} δ={delta}: {:?} vs {:?}",
+                        got.force,
+                        want.force
+                    );
                     // The moment against its own size (it is ∝ slope · δ · v_t).
                     let m = 1e-6 * want.moment.length() + 1e-11 * scale * big_r;
-                    assert!((got.moment - want.moment).length() <= m, "{surface:?} δ={delta} {r_dot:?}: {:?} vs {:?}", got.moment, want.moment);
+                    assert!(
+                        (got.moment - want.moment).length() <= m,
+                        "{surface:?} δ={delta} {r_dot:?}: {:?} vs {:?}",
+                        got.moment,
+                        want.moment
+                    );
                 }
             }
         }
@@ -569,7 +622,10 @@ mod tests {
                     let got = patch.resultant(surface, big_r, r, r_dot, turn, delta, n, elastic, slope);
                     let taken = -(got.force.dot(r_dot) + got.moment.dot(turn) - elastic * n.dot(r_dot));
                     let (_, want) = brute(surface, big_r, r, r_dot, turn, delta, n, elastic, slope);
-                    assert!(want > 0.0 && (taken - want).abs() <= 1e-6 * want, "{surface:?} δ={delta} {r_dot:?} {turn:?}: {taken} vs {want}");
+                    assert!(
+                        want > 0.0 && (taken - want).abs() <= 1e-6 * want,
+                        "{surface:?} δ={delta} {r_dot:?} {turn:?}: {taken} vs {want}"
+                    );
                 }
             }
         }
@@ -602,7 +658,17 @@ mod tests {
         };
         for delta in [3e-4, 0.003, 0.01, 0.03] {
             let r = centre + n * (big_r + rf - delta);
-            let (p, rate) = patch.resultant_and_centroid_rate(Surface::Sphere { centre, radius: rf }, big_r, r, Vec3::ZERO, Vec3::ZERO, delta, n, 1000.0, 50.0);
+            let (p, rate) = patch.resultant_and_centroid_rate(
+                Surface::Sphere { centre, radius: rf },
+                big_r,
+                r,
+                Vec3::ZERO,
+                Vec3::ZERO,
+                delta,
+                n,
+                1000.0,
+                50.0,
+            );
             let z = (p.centroid - centre).dot(n);
             let h = 1e-3 * delta;
             let fd = (8.0 * (zeta(delta + h) - zeta(delta - h)) - (zeta(delta + 2.0 * h) - zeta(delta - 2.0 * h))) / (12.0 * h);
@@ -610,7 +676,19 @@ mod tests {
             assert!((z - zeta(delta)).abs() <= 1e-15, "δ {delta}: {z} vs {}", zeta(delta));
             assert!((rate - fd).abs() <= 1e-8 * rate.abs(), "δ {delta}: {rate} vs {fd}");
             // The rule's own error in the rate: against 40 rings (measured ≤ 9e-14 to 3 cm).
-            let fine = Patch::new(Quadrature { rings: 40 }).resultant_and_centroid_rate(Surface::Sphere { centre, radius: rf }, big_r, r, Vec3::ZERO, Vec3::ZERO, delta, n, 1000.0, 50.0).1;
+            let fine = Patch::new(Quadrature { rings: 40 })
+                .resultant_and_centroid_rate(
+                    Surface::Sphere { centre, radius: rf },
+                    big_r,
+                    r,
+                    Vec3::ZERO,
+                    Vec3::ZERO,
+                    delta,
+                    n,
+                    1000.0,
+                    50.0,
+                )
+                .1;
             assert!((rate - fine).abs() <= 1e-12 * fine.abs(), "δ {delta}: {rate} vs {fine} (40 rings)");
         }
     }

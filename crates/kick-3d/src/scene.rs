@@ -20,10 +20,10 @@
 //! The path exists for
 //! scenes the accurate path cannot hold (ground, later a leg), not for precision.
 
-use crate::outcome::{self, Outcome3d, Peak, Peaks};
 use crate::dynamics::{self, Dynamics, State};
 use crate::error::Kick3dError;
 use crate::model::{FootShape, Kick3d};
+use crate::outcome::{self, Outcome3d, Peak, Peaks};
 use parry3d_f64::math::Vec3;
 use rapier3d_f64::prelude::*;
 
@@ -109,16 +109,21 @@ impl Scene {
             .additional_mass_properties(MassProperties::new(Vec3::ZERO, kick.base.ball_mass(), Vec3::splat(i_b)))
             .can_sleep(false);
         let ball = world.bodies.insert(ball_body);
-        let ball_collider = ColliderBuilder::ball(kick.ball_radius)
-            .density(0.0)
-            .solver_groups(InteractionGroups::new(BALL, Group::ALL.difference(FOOT), InteractionTestMode::And));
+        let ball_collider = ColliderBuilder::ball(kick.ball_radius).density(0.0).solver_groups(InteractionGroups::new(
+            BALL,
+            Group::ALL.difference(FOOT),
+            InteractionTestMode::And,
+        ));
         world.colliders.insert_with_parent(ball_collider, ball, &mut world.bodies);
 
         if kick.ground {
             // Ground top at z = −R: the ball rests on it at first touch.
             let ground = world.bodies.insert(RigidBodyBuilder::fixed().translation(Vec3::new(0.0, 0.0, -kick.ball_radius - 1.0)));
-            let slab = ColliderBuilder::cuboid(50.0, 50.0, 1.0)
-                .solver_groups(InteractionGroups::new(GROUND, Group::ALL, InteractionTestMode::And));
+            let slab = ColliderBuilder::cuboid(50.0, 50.0, 1.0).solver_groups(InteractionGroups::new(
+                GROUND,
+                Group::ALL,
+                InteractionTestMode::And,
+            ));
             world.colliders.insert_with_parent(slab, ground, &mut world.bodies);
         }
 
@@ -142,12 +147,7 @@ impl Scene {
             if step > 0 && c.compression <= 0.0 {
                 // Separated during the last step: interpolate δ linearly.
                 let t_sep = t - dt * c.compression / (c.compression - previous_delta);
-                let peaks = Peaks {
-                    normal: peak_normal,
-                    tangential: peak_tangential,
-                    compression: max_compression,
-                    slip_time,
-                };
+                let peaks = Peaks { normal: peak_normal, tangential: peak_tangential, compression: max_compression, slip_time };
                 let end = dynamics.end_state(kick, &y, t_sep);
                 let mut out = outcome::assemble(kick, &end, peaks, step, "rapier")?;
                 out.evaluations = step;

@@ -34,8 +34,8 @@
 
 use kick_compliant::{Accurate, Reduced};
 use kick_core::parameters::{Bound, DefaultValue, Level, ParameterDef, Shape, Valid, Value};
-use kick_core::shell::{ShellBall, GAS_EXPONENT, INFLATION_PRESSURE, SHELL_LOSS, SHELL_STIFFNESS};
 use kick_core::parameters::{DAMPING, EXPONENT, RESTITUTION, STIFFNESS};
+use kick_core::shell::{ShellBall, GAS_EXPONENT, INFLATION_PRESSURE, SHELL_LOSS, SHELL_STIFFNESS};
 use kick_core::{AnyLaw, ContactLaw, KickError, LawKind, Outcome, Scenario, DEFAULT_BALL_MASS, DEFAULT_BALL_RADIUS, GRAVITY};
 use serde::Serialize;
 
@@ -72,27 +72,116 @@ pub static BOUNCE_PARAMETERS: [ParameterDef; 18] = [
     DAMPING,
     EXPONENT,
     RESTITUTION,
-    bounce("speed", "V", "m/s", Scalar, Unset("required, unless drop_height gives it"), Open(0.0), Closed(1000.0),
-        "in (0, 1000] m/s; not with drop_height", "Impact speed of the ball's centre"),
-    bounce("angle", "θ", "deg", Scalar, Number(0.0), Closed(0.0), Open(90.0),
-        "in [0, 90) degrees from the plate's normal", "Angle of the incoming velocity from the plate's normal (0: square)"),
-    bounce("spin", "ω", "rad/s", Vector3, DefaultValue::Vector([0.0; 3]), Unbounded, Unbounded, "three finite numbers, rad/s",
-        "Spin before impact (x along the tangential velocity, z the plate's normal)"),
-    bounce("drop_height", "H", "m", Scalar, Unset("none"), Open(0.0), Unbounded,
+    bounce(
+        "speed",
+        "V",
+        "m/s",
+        Scalar,
+        Unset("required, unless drop_height gives it"),
+        Open(0.0),
+        Closed(1000.0),
+        "in (0, 1000] m/s; not with drop_height",
+        "Impact speed of the ball's centre",
+    ),
+    bounce(
+        "angle",
+        "θ",
+        "deg",
+        Scalar,
+        Number(0.0),
+        Closed(0.0),
+        Open(90.0),
+        "in [0, 90) degrees from the plate's normal",
+        "Angle of the incoming velocity from the plate's normal (0: square)",
+    ),
+    bounce(
+        "spin",
+        "ω",
+        "rad/s",
+        Vector3,
+        DefaultValue::Vector([0.0; 3]),
+        Unbounded,
+        Unbounded,
+        "three finite numbers, rad/s",
+        "Spin before impact (x along the tangential velocity, z the plate's normal)",
+    ),
+    bounce(
+        "drop_height",
+        "H",
+        "m",
+        Scalar,
+        Unset("none"),
+        Open(0.0),
+        Unbounded,
         "finite and > 0, m; not with speed or angle, and gravity > 0",
-        "Drop the ball from rest at height H (no drag): V = √(2 g H), square; reports rebound_height"),
-    bounce("ball_mass", "m", "kg", Scalar, Number(DEFAULT_BALL_MASS), Open(0.0), Unbounded, "finite and > 0, kg",
-        "Ball mass (Law 2: 0.41-0.45 kg)"),
-    bounce("ball_radius", "R", "m", Scalar, Number(DEFAULT_BALL_RADIUS), Open(0.0), Unbounded, "finite and > 0, m",
-        "Ball radius (Law 2: circumference 0.68-0.70 m)"),
-    bounce("ball_inertia", "I", "kg m^2", Scalar, Derived("2/3 m R^2, a thin shell"), Open(0.0), Unbounded,
-        "finite and > 0, at most 2/3 m R^2", "Ball moment of inertia about its centre"),
-    bounce("friction", "μ", "1", Scalar, Number(0.5), Closed(0.0), Closed(f64::INFINITY), ">= 0 (inf: never slips)",
-        "Coulomb friction between ball and plate (not calibrated: the 3D kick's default)"),
-    bounce("tangential_restitution", "e_t", "1", Scalar, Number(0.0), Closed(0.0), Closed(1.0), "in [0, 1]",
-        "Tangential restitution of a gripping ball, u⁺ = −e_t u⁻ (0: it leaves rolling)"),
-    bounce("gravity", "g", "m/s^2", Scalar, Number(GRAVITY), Closed(0.0), Unbounded, "finite and >= 0, m/s^2",
-        "Gravity along −z, during contact too (0: off)"),
+        "Drop the ball from rest at height H (no drag): V = √(2 g H), square; reports rebound_height",
+    ),
+    bounce(
+        "ball_mass",
+        "m",
+        "kg",
+        Scalar,
+        Number(DEFAULT_BALL_MASS),
+        Open(0.0),
+        Unbounded,
+        "finite and > 0, kg",
+        "Ball mass (Law 2: 0.41-0.45 kg)",
+    ),
+    bounce(
+        "ball_radius",
+        "R",
+        "m",
+        Scalar,
+        Number(DEFAULT_BALL_RADIUS),
+        Open(0.0),
+        Unbounded,
+        "finite and > 0, m",
+        "Ball radius (Law 2: circumference 0.68-0.70 m)",
+    ),
+    bounce(
+        "ball_inertia",
+        "I",
+        "kg m^2",
+        Scalar,
+        Derived("2/3 m R^2, a thin shell"),
+        Open(0.0),
+        Unbounded,
+        "finite and > 0, at most 2/3 m R^2",
+        "Ball moment of inertia about its centre",
+    ),
+    bounce(
+        "friction",
+        "μ",
+        "1",
+        Scalar,
+        Number(0.5),
+        Closed(0.0),
+        Closed(f64::INFINITY),
+        ">= 0 (inf: never slips)",
+        "Coulomb friction between ball and plate (not calibrated: the 3D kick's default)",
+    ),
+    bounce(
+        "tangential_restitution",
+        "e_t",
+        "1",
+        Scalar,
+        Number(0.0),
+        Closed(0.0),
+        Closed(1.0),
+        "in [0, 1]",
+        "Tangential restitution of a gripping ball, u⁺ = −e_t u⁻ (0: it leaves rolling)",
+    ),
+    bounce(
+        "gravity",
+        "g",
+        "m/s^2",
+        Scalar,
+        Number(GRAVITY),
+        Closed(0.0),
+        Unbounded,
+        "finite and >= 0, m/s^2",
+        "Gravity along −z, during contact too (0: off)",
+    ),
     INFLATION_PRESSURE,
     GAS_EXPONENT,
     SHELL_STIFFNESS,
@@ -121,8 +210,7 @@ pub enum LawChoice {
 }
 
 impl LawChoice {
-    pub const NAMES: &'static str =
-        "shell, power-law, hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt";
+    pub const NAMES: &'static str = "shell, power-law, hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt";
 
     pub fn from_name(name: &str) -> Result<LawChoice, kick_core::laws::LawError> {
         match name {
@@ -196,7 +284,7 @@ impl BounceSpec {
             (Some(_), Some(_)) => return Err(does_not_apply("speed", "drop_height", "the drop height sets the impact speed")),
             (None, None) => {
                 // NaN: no value was given (the message says what is needed).
-                return Err(KickError::InvalidParameter { name: "speed", value: f64::NAN, requirement: "given, or drop_height instead" })
+                return Err(KickError::InvalidParameter { name: "speed", value: f64::NAN, requirement: "given, or drop_height instead" });
             }
         };
         let spin = match self.given("spin") {
@@ -224,9 +312,7 @@ impl BounceSpec {
                 &[&STIFFNESS, &DAMPING, &EXPONENT, &RESTITUTION],
                 "it is a parameter of the kick family's laws (--law power-law, ...), not of the shell",
             ),
-            LawChoice::Kick(_) => {
-                (&[&INFLATION_PRESSURE, &GAS_EXPONENT, &SHELL_STIFFNESS, &SHELL_LOSS], "it is a parameter of law shell")
-            }
+            LawChoice::Kick(_) => (&[&INFLATION_PRESSURE, &GAS_EXPONENT, &SHELL_STIFFNESS, &SHELL_LOSS], "it is a parameter of law shell"),
         };
         if let Some(p) = others.iter().find(|p| self.given(p.name).is_some()) {
             return Err(KickError::DoesNotApply { given: p.name, to: format!("law `{}`", choice.name()), reason });
@@ -295,7 +381,13 @@ pub enum BallLaw {
     Shell(ShellBall),
     /// A law of the kick's family, built at the bounce's impact speed
     /// (`Scenario::with_law`: a target restitution is met at this speed).
-    Kick { kind: LawKind, stiffness: f64, damping: f64, exponent: f64, restitution: Option<f64> },
+    Kick {
+        kind: LawKind,
+        stiffness: f64,
+        damping: f64,
+        exponent: f64,
+        restitution: Option<f64>,
+    },
 }
 
 /// Whether the contact point stopped slipping (or reversed, e_t > 0).
@@ -501,11 +593,14 @@ impl BounceOutcome {
         s += &format!("max_compression   {} mm\n", kick_core::sig(self.max_compression * 1e3));
         s += &format!("exit_velocity     {} m/s\n", v(self.exit_velocity));
         s += &format!("exit_spin         {} rad/s\n", v(self.exit_spin));
-        s += &format!("tangential        {}\n", match self.tangential {
-            Tangential::NoSlip => "no slip",
-            Tangential::Grips => "grips",
-            Tangential::Slides => "slides",
-        });
+        s += &format!(
+            "tangential        {}\n",
+            match self.tangential {
+                Tangential::NoSlip => "no slip",
+                Tangential::Grips => "grips",
+                Tangential::Slides => "slides",
+            }
+        );
         if let Some(h) = self.rebound_height {
             s += &format!("rebound_height    {} m\n", kick_core::sig(h));
         }

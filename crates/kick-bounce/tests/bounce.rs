@@ -33,7 +33,8 @@ fn close(a: f64, b: f64, tol: f64, what: &str) {
 #[test]
 fn restitution_is_the_exact_hysteresis_relation() {
     for (v, chi, k_s, gamma) in [(6.26, 0.0466, 0.0, 1.4), (20.0, 0.0466, 0.0, 1.4), (3.0, 0.1, 5.0e3, 1.0), (35.0, 0.01, 2.0e4, 1.4)] {
-        let b = built(&[("speed", n(v)), ("gravity", n(0.0)), ("shell_loss", n(chi)), ("shell_stiffness", n(k_s)), ("gas_exponent", n(gamma))]);
+        let b =
+            built(&[("speed", n(v)), ("gravity", n(0.0)), ("shell_loss", n(chi)), ("shell_stiffness", n(k_s)), ("gas_exponent", n(gamma))]);
         let o = solve(&b, NormalSolver::default()).unwrap();
         close(o.restitution, exact_restitution(chi * v), 1e-9, &format!("V={v} χ={chi}"));
     }
@@ -65,7 +66,13 @@ fn lossless_bounce_conserves_energy() {
 #[test]
 fn slow_impact_is_the_pressure_spring() {
     let v = 1e-3;
-    let b = built(&[("speed", n(v)), ("gravity", n(0.0)), ("shell_loss", n(0.0)), ("inflation_pressure", n(6.0e4)), ("shell_stiffness", n(1.0e4))]);
+    let b = built(&[
+        ("speed", n(v)),
+        ("gravity", n(0.0)),
+        ("shell_loss", n(0.0)),
+        ("inflation_pressure", n(6.0e4)),
+        ("shell_stiffness", n(1.0e4)),
+    ]);
     let k = 2.0 * std::f64::consts::PI * b.radius * 6.0e4 + 1.0e4;
     let o = solve(&b, NormalSolver::default()).unwrap();
     close(o.contact_time, std::f64::consts::PI * (b.mass / k).sqrt(), 1e-4, "t_c");
@@ -83,7 +90,13 @@ fn tightened_independent_solve_agrees() {
         &[("drop_height", n(2.0))],
         &[("speed", n(20.0))],
         &[("speed", n(35.0)), ("inflation_pressure", n(1.1e5))],
-        &[("speed", n(12.0)), ("gas_exponent", n(1.0)), ("shell_stiffness", n(1.0e4)), ("angle", n(40.0)), ("spin", Value::Vector([0.0, 30.0, 5.0]))],
+        &[
+            ("speed", n(12.0)),
+            ("gas_exponent", n(1.0)),
+            ("shell_stiffness", n(1.0e4)),
+            ("angle", n(40.0)),
+            ("spin", Value::Vector([0.0, 30.0, 5.0])),
+        ],
         &[("speed", n(3.0)), ("shell_loss", n(0.2))],
     ];
     for values in cases {
@@ -141,7 +154,8 @@ fn tangential_impulse_closed_forms() {
     close(o.exit_velocity[0], 0.6 * v * s, 1e-14, "rolling v_x");
     close(o.exit_spin[1], o.exit_velocity[0] / b.radius, 1e-14, "rolling ω_y");
     // e_t = 1 with full grip: the slip reverses, u⁺ = −u⁻.
-    let o = run(&spec(&[("speed", n(v)), ("angle", n(theta)), ("friction", n(f64::INFINITY)), ("tangential_restitution", n(1.0))])).unwrap();
+    let o =
+        run(&spec(&[("speed", n(v)), ("angle", n(theta)), ("friction", n(f64::INFINITY)), ("tangential_restitution", n(1.0))])).unwrap();
     close(o.exit_velocity[0] - b.radius * o.exit_spin[1], -v * s, 1e-14, "reversed slip");
     // Sliding throughout: |Δv_t| = μ J_n/m, and J_n = m (1 + e) V cos θ without gravity.
     let o = run(&spec(&[("speed", n(v)), ("angle", n(theta)), ("friction", n(0.1)), ("gravity", n(0.0))])).unwrap();

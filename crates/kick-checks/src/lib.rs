@@ -12,13 +12,9 @@
 //! less accurate or deliberately wrong one can be shown to fail the checks.
 
 use kick_compliant::Accurate;
-use kick_core::{
-    roots, ContactLaw, ExitModel, KickError, Outcome, Parameter, Scenario, Solver,
-};
+use kick_core::{roots, ContactLaw, ExitModel, KickError, Outcome, Parameter, Scenario, Solver};
 use kick_impulse::ImpulseModel;
-use kick_restitution::{
-    inelastic_exit, moving_wall_ball_speed, vanishing_foot_ball_speed, RestitutionModel,
-};
+use kick_restitution::{inelastic_exit, moving_wall_ball_speed, vanishing_foot_ball_speed, RestitutionModel};
 
 pub use kick_core::check::CheckRow;
 
@@ -60,10 +56,7 @@ pub fn run_with(solver: &dyn Solver) -> Vec<CheckRow> {
 }
 
 fn scenario(changes: &[(Parameter, f64)]) -> Scenario {
-    changes
-        .iter()
-        .try_fold(Scenario::baseline(), |s, &(p, v)| s.with(p, v))
-        .expect("the checks' own scenarios are valid")
+    changes.iter().try_fold(Scenario::baseline(), |s, &(p, v)| s.with(p, v)).expect("the checks' own scenarios are valid")
 }
 
 /// Scenarios of the impulse and restitution checks: the baseline and one
@@ -97,10 +90,7 @@ pub fn impulse_model(solver: &dyn Solver) -> Vec<CheckRow> {
                 continue;
             }
         };
-        let model = ImpulseModel {
-            impulse: outcome.impulse,
-            drive_impulse: s.drive_force() * outcome.contact_time,
-        };
+        let model = ImpulseModel { impulse: outcome.impulse, drive_impulse: s.drive_force() * outcome.contact_time };
         match model.exit_velocities(&s) {
             Ok(exit) => {
                 let v0 = s.approach_speed();
@@ -338,7 +328,15 @@ pub fn stiff_limit(solver: &dyn Solver) -> Vec<CheckRow> {
     let e = STIFF_RESTITUTION;
     let zeta = match roots::brent(|z| linear_restitution(z) - e, 1e-9, 1.0 - 1e-9, 1e-15, 200) {
         Some(root) => root.x,
-        None => return vec![broken("stiff limit: zeta for e", eq, e, 0.0, &KickError::Integration { time: 0.0, reason: "no damping ratio gives this e".into() })],
+        None => {
+            return vec![broken(
+                "stiff limit: zeta for e",
+                eq,
+                e,
+                0.0,
+                &KickError::Integration { time: 0.0, reason: "no damping ratio gives this e".into() },
+            )]
+        }
     };
     let linear = scenario(&[(Parameter::Exponent, 1.0)]);
     let mu = linear.reduced_mass();
@@ -347,9 +345,7 @@ pub fn stiff_limit(solver: &dyn Solver) -> Vec<CheckRow> {
     let mut rows = Vec::new();
     for k in STIFFNESSES {
         let label = format!("k = {k:.0e}, e = {e}");
-        let s = linear
-            .with(Parameter::Stiffness, k)
-            .and_then(|s| s.with(Parameter::Damping, 2.0 * zeta * (k * mu).sqrt()));
+        let s = linear.with(Parameter::Stiffness, k).and_then(|s| s.with(Parameter::Damping, 2.0 * zeta * (k * mu).sqrt()));
         let outcome = s.and_then(|s| solver.solve(&s));
         match outcome {
             Ok(o) => {
@@ -358,9 +354,30 @@ pub fn stiff_limit(solver: &dyn Solver) -> Vec<CheckRow> {
                 // Numerics note: t_c = t₁ + π/(2ω0), t₁ = atan2(ω_d, ζω0)/ω_d.
                 let contact = omega_d.atan2(zeta * omega0) / omega_d + std::f64::consts::FRAC_PI_2 / omega0;
                 let compression = e * v0 / omega0;
-                rows.push(CheckRow::compare(format!("stiff limit impulse = (1+e) mu V0: {label}"), eq, restitution_impulse, o.impulse, restitution_impulse, SOLVER_ACCURACY));
-                rows.push(CheckRow::compare(format!("stiff limit contact time ~ k^-1/2 (s): {label}"), eq, contact, o.contact_time, contact, SOLVER_ACCURACY));
-                rows.push(CheckRow::compare(format!("stiff limit max compression ~ k^-1/2 (m): {label}"), eq, compression, o.max_compression, compression, SOLVER_ACCURACY));
+                rows.push(CheckRow::compare(
+                    format!("stiff limit impulse = (1+e) mu V0: {label}"),
+                    eq,
+                    restitution_impulse,
+                    o.impulse,
+                    restitution_impulse,
+                    SOLVER_ACCURACY,
+                ));
+                rows.push(CheckRow::compare(
+                    format!("stiff limit contact time ~ k^-1/2 (s): {label}"),
+                    eq,
+                    contact,
+                    o.contact_time,
+                    contact,
+                    SOLVER_ACCURACY,
+                ));
+                rows.push(CheckRow::compare(
+                    format!("stiff limit max compression ~ k^-1/2 (m): {label}"),
+                    eq,
+                    compression,
+                    o.max_compression,
+                    compression,
+                    SOLVER_ACCURACY,
+                ));
             }
             Err(err) => rows.push(broken(label, eq, restitution_impulse, SOLVER_ACCURACY, &err)),
         }

@@ -10,7 +10,12 @@ fn print(rows: &[CheckRow]) {
         eprintln!(
             "{:<5} {:<90} {:<10} exp {:>+.12e} act {:>+.12e} err {:.3e} tol {:.3e}",
             if r.passed { "PASS" } else { "FAIL" },
-            r.name, r.equation, r.expected, r.actual, r.error, r.tolerance
+            r.name,
+            r.equation,
+            r.expected,
+            r.actual,
+            r.error,
+            r.tolerance
         );
     }
 }

@@ -179,11 +179,7 @@ fn parameter_arg(p: &'static ParameterDef, requires: Option<&'static str>) -> Ar
         }
     };
     match p.shape {
-        Shape::Scalar => arg
-            .value_name(p.symbol)
-            .value_parser(number)
-            .allow_hyphen_values(true)
-            .action(ArgAction::Set),
+        Shape::Scalar => arg.value_name(p.symbol).value_parser(number).allow_hyphen_values(true).action(ArgAction::Set),
         Shape::Vector3 => arg
             .value_name(format!("{0}x,{0}y,{0}z", p.symbol))
             .value_parser(number)
@@ -361,7 +357,8 @@ mod tests {
         let flags = parse::<ScenarioSpec>(&["--ball-speed", "-6", "--foot-speed", "0"]).unwrap();
         assert_eq!((flags.spec().ball_speed, flags.spec().foot_speed), (Some(-6.0), Some(0.0)));
         for args in [["--ball-speed", "-inf"], ["--ball-speed", "nan"], ["--spin", "-inf,0,0"]] {
-            let error = if args[0] == "--spin" { parse::<FlightSpec>(&args).unwrap_err() } else { parse::<ScenarioSpec>(&args).unwrap_err() };
+            let error =
+                if args[0] == "--spin" { parse::<FlightSpec>(&args).unwrap_err() } else { parse::<ScenarioSpec>(&args).unwrap_err() };
             let text = error.to_string();
             assert!(text.contains(args[0]) && text.contains("finite"), "{args:?}: {text}");
         }

@@ -7,7 +7,7 @@ mod output;
 mod reference;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
-use flags::{FlightAfter1d, FlightAfter3d, Flags};
+use flags::{Flags, FlightAfter1d, FlightAfter3d};
 use kick_3d::{KickSpec, Solver3d};
 use kick_compliant::SolverChoice;
 use kick_core::ScenarioSpec;

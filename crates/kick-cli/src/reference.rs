@@ -27,7 +27,9 @@ fn cell(text: &str) -> String {
 /// How a flag is written: `--name VALUE`, `-s, --name`, or a positional `FILE`.
 fn written(arg: &Arg) -> String {
     let value = || {
-        arg.get_value_names().map(|names| names.iter().map(|n| format!("<{n}>")).collect::<Vec<_>>().join(" ")).unwrap_or_else(|| format!("<{}>", arg.get_id().as_str().to_uppercase()))
+        arg.get_value_names()
+            .map(|names| names.iter().map(|n| format!("<{n}>")).collect::<Vec<_>>().join(" "))
+            .unwrap_or_else(|| format!("<{}>", arg.get_id().as_str().to_uppercase()))
     };
     let takes_value = arg.get_num_args().is_some_and(|n| n.takes_values());
     match arg.get_long() {
@@ -52,12 +54,14 @@ fn command_section(page: &mut String, command: &Command, path: &str) {
     let mut usage = command.clone().bin_name(path).render_usage().to_string();
     usage = usage.trim_start_matches("Usage: ").trim_end().to_string();
     let _ = writeln!(page, "    {usage}\n");
-    let args: Vec<&Arg> = command.get_arguments().filter(|a| !a.is_hide_set() && !matches!(a.get_id().as_str(), "help" | "version")).collect();
+    let args: Vec<&Arg> =
+        command.get_arguments().filter(|a| !a.is_hide_set() && !matches!(a.get_id().as_str(), "help" | "version")).collect();
     if !args.is_empty() {
         let _ = writeln!(page, "| flag | help | default |\n| --- | --- | --- |");
         for arg in args {
             let mut help = arg.get_long_help().or(arg.get_help()).map(|h| h.to_string()).unwrap_or_default();
-            let values: Vec<String> = arg.get_possible_values().iter().filter(|v| !v.is_hide_set()).map(|v| v.get_name().to_string()).collect();
+            let values: Vec<String> =
+                arg.get_possible_values().iter().filter(|v| !v.is_hide_set()).map(|v| v.get_name().to_string()).collect();
             if !values.is_empty() && !help.contains(&values.join(" | ")) {
                 let _ = write!(help, " (one of: {})", values.join(", "));
             }
@@ -93,7 +97,13 @@ pub fn cli(mut command: Command) -> String {
     );
     let subcommands: Vec<&Command> = command.get_subcommands().filter(|s| !s.is_hide_set() && s.get_name() != "help").collect();
     for sub in &subcommands {
-        let _ = writeln!(page, "- [`kick {}`](#kick-{}): {}", sub.get_name(), sub.get_name(), cell(&sub.get_about().map(|a| a.to_string()).unwrap_or_default()));
+        let _ = writeln!(
+            page,
+            "- [`kick {}`](#kick-{}): {}",
+            sub.get_name(),
+            sub.get_name(),
+            cell(&sub.get_about().map(|a| a.to_string()).unwrap_or_default())
+        );
     }
     page.push('\n');
     for sub in subcommands {

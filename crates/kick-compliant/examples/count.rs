@@ -8,5 +8,9 @@ fn main() {
     let solver = precision::solver(&args[1], args[2].parse().unwrap()).unwrap();
     let n: usize = args[3].parse().unwrap();
     let scenarios: Vec<_> = models::table2().into_iter().map(|(_, s)| s).collect();
-    for _ in 0..n { for s in &scenarios { std::hint::black_box(solver.solve(s).unwrap()); } }
+    for _ in 0..n {
+        for s in &scenarios {
+            std::hint::black_box(solver.solve(s).unwrap());
+        }
+    }
 }

@@ -13,8 +13,8 @@ use crate::events::{Engine, Method, Recorder, StopAt};
 use crate::history::{self, Sampler};
 use crate::ode::{self, Branch, ContactOde, Extremes, State};
 use crate::stability;
-use kick_core::{SolverPath, 
-    AnyLaw, ContactLaw, ContactPhase, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing, StopReason,
+use kick_core::{
+    AnyLaw, ContactLaw, ContactPhase, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, SolverPath, Spacing, StopReason,
     Streamed,
 };
 use std::ops::ControlFlow;
@@ -39,10 +39,7 @@ impl Accurate {
         Ok(accurate)
     }
     pub fn method(&self) -> Method {
-        Method::Dop853 {
-            relative_tolerance: self.relative_tolerance,
-            absolute_tolerance: self.absolute_tolerance,
-        }
+        Method::Dop853 { relative_tolerance: self.relative_tolerance, absolute_tolerance: self.absolute_tolerance }
     }
     /// Solve the scenario's masses and speeds with any contact law in place
     /// of the scenario's own (Eq. 20).
@@ -106,12 +103,7 @@ impl FullState {
         FullState { method: Method::Rk4 { step }, path: SolverPath::Rk4Events }
     }
 
-    fn run<L: ContactLaw + Copy>(
-        &self,
-        scenario: &Scenario,
-        law: L,
-        sampler: Option<&mut Sampler>,
-    ) -> Result<Outcome, KickError> {
+    fn run<L: ContactLaw + Copy>(&self, scenario: &Scenario, law: L, sampler: Option<&mut Sampler>) -> Result<Outcome, KickError> {
         let system = ContactOde::new(scenario, law, Branch::InContact);
         let mut engine = Engine::new(self.method, system, scenario)?;
         let y0 = ode::initial_state(scenario);
@@ -129,15 +121,8 @@ impl FullState {
             max_compression: end.max_compression,
             max_compression_time: end.max_compression_time,
         };
-        let outcome = ode::outcome(
-            scenario,
-            &system,
-            &end.state,
-            extremes,
-            StopReason::Separated { t: end.time },
-            engine.evaluations,
-            self.path,
-        )?;
+        let outcome =
+            ode::outcome(scenario, &system, &end.state, extremes, StopReason::Separated { t: end.time }, engine.evaluations, self.path)?;
         if let Some(step) = self.method.fixed_step() {
             stability::check_energy(scenario, &law, &outcome.energy, step, outcome.contact_time)?;
         }

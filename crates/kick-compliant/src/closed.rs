@@ -8,9 +8,7 @@
 //! - [`undamped_return`]: the undamped restitution phase of any run of the
 //!   paper's law, from δ_max, with or without a constant drive.
 
-use kick_core::{SolverPath, 
-    roots, special, ContactLaw, EnergyBudget, KickError, Outcome, Scenario, StopReason,
-};
+use kick_core::{roots, special, ContactLaw, EnergyBudget, KickError, Outcome, Scenario, SolverPath, StopReason};
 
 /// The end of compression, from which a passive run returns without loss.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -80,8 +78,7 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
     let v_foot_out = v_cm - scenario.ball_mass() / total * exit_relative_speed;
     // At δ = 0 the foot is where the centre of mass is.
     let foot_position = scenario.centre_of_mass_speed() * contact_time + 0.5 * drive * contact_time * contact_time / total;
-    let kinetic_final = 0.5 * scenario.effective_foot_mass() * v_foot_out.powi(2)
-        + 0.5 * scenario.ball_mass() * v_ball_out.powi(2);
+    let kinetic_final = 0.5 * scenario.effective_foot_mass() * v_foot_out.powi(2) + 0.5 * scenario.ball_mass() * v_ball_out.powi(2);
     let (peak_force, peak_force_time) = if stored > 0.0 && law.elastic_force(end.max_compression) > end.peak_force {
         (law.elastic_force(end.max_compression), end.max_compression_time)
     } else {
@@ -138,7 +135,10 @@ pub fn released_energy(scenario: &Scenario, end: &CompressionEnd) -> (f64, f64) 
 
 /// c = 0 and no drive: the whole contact in closed form (Eqs. 33–34).
 pub fn elastic(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
-    if scenario.law_kind() != kick_core::LawKind::PowerLaw || scenario.get(kick_core::Parameter::Damping) != 0.0 || scenario.drive_force() != 0.0 {
+    if scenario.law_kind() != kick_core::LawKind::PowerLaw
+        || scenario.get(kick_core::Parameter::Damping) != 0.0
+        || scenario.drive_force() != 0.0
+    {
         return None;
     }
     let max_compression = scenario.elastic_max_compression();
@@ -146,13 +146,7 @@ pub fn elastic(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
     let force = scenario.paper_law().elastic_force(max_compression);
     Some(undamped_return(
         scenario,
-        CompressionEnd {
-            max_compression,
-            max_compression_time: half,
-            dissipated: 0.0,
-            peak_force: force,
-            peak_force_time: half,
-        },
+        CompressionEnd { max_compression, max_compression_time: half, dissipated: 0.0, peak_force: force, peak_force_time: half },
     ))
 }
 
@@ -167,11 +161,7 @@ enum LinearCompression {
 impl LinearCompression {
     fn new(v0: f64, omega0: f64, zeta: f64) -> Self {
         if zeta < 1.0 {
-            LinearCompression::Under {
-                v0,
-                decay: zeta * omega0,
-                omega_d: omega0 * (1.0 - zeta * zeta).sqrt(),
-            }
+            LinearCompression::Under { v0, decay: zeta * omega0, omega_d: omega0 * (1.0 - zeta * zeta).sqrt() }
         } else if zeta == 1.0 {
             LinearCompression::Critical { v0, omega0 }
         } else {
@@ -211,7 +201,10 @@ impl LinearCompression {
 
 /// n = 1, compression-only damping, no drive: closed form for any ζ.
 pub fn linear(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
-    if scenario.law_kind() != kick_core::LawKind::PowerLaw || scenario.get(kick_core::Parameter::Exponent) != 1.0 || scenario.drive_force() != 0.0 {
+    if scenario.law_kind() != kick_core::LawKind::PowerLaw
+        || scenario.get(kick_core::Parameter::Exponent) != 1.0
+        || scenario.drive_force() != 0.0
+    {
         return None;
     }
     let law = scenario.paper_law();
@@ -240,16 +233,7 @@ pub fn linear(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
         (onset, 0.0)
     };
     let dissipated = scenario.relative_kinetic_energy() - law.potential(max_compression);
-    Some(undamped_return(
-        scenario,
-        CompressionEnd {
-            max_compression,
-            max_compression_time: t1,
-            dissipated,
-            peak_force,
-            peak_force_time,
-        },
-    ))
+    Some(undamped_return(scenario, CompressionEnd { max_compression, max_compression_time: t1, dissipated, peak_force, peak_force_time }))
 }
 
 /// The closed forms as a solver: exact, or an error naming why none applies.
@@ -260,8 +244,7 @@ impl ClosedForm {
     pub fn applies(scenario: &Scenario) -> bool {
         scenario.law_kind() == kick_core::LawKind::PowerLaw
             && scenario.drive_force() == 0.0
-            && (scenario.get(kick_core::Parameter::Damping) == 0.0
-                || scenario.get(kick_core::Parameter::Exponent) == 1.0)
+            && (scenario.get(kick_core::Parameter::Damping) == 0.0 || scenario.get(kick_core::Parameter::Exponent) == 1.0)
     }
 }
 

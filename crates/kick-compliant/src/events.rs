@@ -96,13 +96,7 @@ impl Scales {
     }
 
     pub fn with(length: f64, speed: f64, reduced_mass: f64) -> Scales {
-        Scales {
-            length,
-            speed,
-            time: length / speed,
-            momentum: reduced_mass * speed,
-            energy: reduced_mass * speed * speed,
-        }
+        Scales { length, speed, time: length / speed, momentum: reduced_mass * speed, energy: reduced_mass * speed * speed }
     }
 }
 
@@ -246,10 +240,7 @@ impl<S: ContactSystem<N>, const N: usize> Scaled<S, N> {
     }
     #[inline]
     fn derivative(&self, tau: f64, y: &SVector<f64, N>) -> SVector<f64, N> {
-        self.system
-            .derivative(tau * self.time, &self.unscale(y))
-            .component_div(&self.units)
-            * self.time
+        self.system.derivative(tau * self.time, &self.unscale(y)).component_div(&self.units) * self.time
     }
 }
 
@@ -303,16 +294,8 @@ impl<S: ContactSystem<N>, const N: usize> System<f64, SVector<f64, N>> for Watch
             }
         }
         if Event::ForcePeak.crossed(self.previous_force_rate, force_rate) {
-            let located = locate(
-                self.method,
-                self.scaled,
-                self.evaluations,
-                Event::ForcePeak,
-                self.previous_tau,
-                self.previous_state,
-                tau,
-                *y,
-            );
+            let located =
+                locate(self.method, self.scaled, self.evaluations, Event::ForcePeak, self.previous_tau, self.previous_state, tau, *y);
             match located {
                 Ok((tau_peak, y_peak)) => {
                     let force = system.force(&self.scaled.unscale(&y_peak));
@@ -380,8 +363,22 @@ fn integrate<F: System<f64, SVector<f64, N>>, const N: usize>(
     macro_rules! adaptive {
         ($solver:ident, $r:expr, $a:expr, $fac_min:expr, $fac_max:expr) => {{
             let mut stepper = $solver::from_param(
-                system, tau0, tau1, 0.0, y0, $r, $a, 0.9, 0.0, $fac_min, $fac_max, max_step,
-                first_step, MAX_STEPS_PER_PHASE, u32::MAX, OutputType::Sparse,
+                system,
+                tau0,
+                tau1,
+                0.0,
+                y0,
+                $r,
+                $a,
+                0.9,
+                0.0,
+                $fac_min,
+                $fac_max,
+                max_step,
+                first_step,
+                MAX_STEPS_PER_PHASE,
+                u32::MAX,
+                OutputType::Sparse,
             );
             let stats = stepper.integrate().map_err(|e| solver_error(e, time_unit))?;
             *evaluations += u64::from(stats.num_eval);
@@ -418,10 +415,7 @@ struct LastSteps<const N: usize> {
 impl<const N: usize> LastSteps<N> {
     fn of(x: &[f64], y: &[SVector<f64, N>]) -> Self {
         let n = x.len().min(y.len());
-        LastSteps {
-            last: (n >= 1).then(|| (x[n - 1], y[n - 1])),
-            before_last: (n >= 2).then(|| (x[n - 2], y[n - 2])),
-        }
+        LastSteps { last: (n >= 1).then(|| (x[n - 1], y[n - 1])), before_last: (n >= 2).then(|| (x[n - 2], y[n - 2])) }
     }
 }
 
@@ -486,8 +480,7 @@ fn locate<S: ContactSystem<N>, const N: usize>(
     let (r_a, r_b) = (rate(&y_a), rate(&y_b));
     let cubic = |s: f64| {
         let (s2, s3) = (s * s, s * s * s);
-        (2.0 * s3 - 3.0 * s2 + 1.0) * g_a + (s3 - 2.0 * s2 + s) * h * r_a
-            + (-2.0 * s3 + 3.0 * s2) * g_b + (s3 - s2) * h * r_b
+        (2.0 * s3 - 3.0 * s2 + 1.0) * g_a + (s3 - 2.0 * s2 + s) * h * r_a + (-2.0 * s3 + 3.0 * s2) * g_b + (s3 - s2) * h * r_b
     };
     let guess = roots::brent(cubic, 0.0, 1.0, 1e-15, 100).map_or(g_a / (g_a - g_b), |r| r.x);
     let (mut low, mut high, mut y_high) = (tau_a, tau_b, y_b);
@@ -526,7 +519,6 @@ fn locate<S: ContactSystem<N>, const N: usize>(
     Ok((high, y_high))
 }
 
-
 /// The engine for one scenario.
 pub struct Engine<S, const N: usize> {
     method: Method,
@@ -559,13 +551,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
     pub fn new(method: Method, system: S, scenario: &Scenario) -> Result<Self, KickError> {
         method.validate()?;
         let scales = Scales::of(scenario);
-        Ok(Engine {
-            method,
-            system,
-            scaled: Scaled { system, units: system.units(&scales), time: scales.time },
-            scales,
-            evaluations: 0,
-        })
+        Ok(Engine { method, system, scaled: Scaled { system, units: system.units(&scales), time: scales.time }, scales, evaluations: 0 })
     }
 
     fn locate(
@@ -632,9 +618,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             Method::Rk4 { step } => step / self.scaled.time,
             _ => first_step.min(max_step),
         };
-        let steps = integrate(
-            self.method, watcher, tau, tau_end, y, max_step, first_step, self.scaled.time, &mut self.evaluations,
-        );
+        let steps = integrate(self.method, watcher, tau, tau_end, y, max_step, first_step, self.scaled.time, &mut self.evaluations);
         self.evaluations += peak_evaluations;
         if let Some(error) = failure {
             return Err(error);
@@ -645,11 +629,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
             end.last_step = tau_b - tau_a;
             let system = self.scaled.system;
             let (before, after) = (self.scaled.unscale(&y_a), self.scaled.unscale(&y_b));
-            if let Some(&event) = phase
-                .events()
-                .iter()
-                .find(|e| e.crossed(e.value(&system, &before), e.value(&system, &after)))
-            {
+            if let Some(&event) = phase.events().iter().find(|e| e.crossed(e.value(&system, &before), e.value(&system, &after))) {
                 let (mut tau_event, mut state) = self.locate(event, tau_a, y_a, tau_b, y_b)?;
                 let mut event = event;
                 // δ is least where δ̇ turns positive: if it is not above zero
@@ -799,10 +779,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         if let Some(step) = self.method.fixed_step() {
             crate::stability::check_energy(scenario, law, &system.budget(scenario, t, &state), step, t)?;
         }
-        Err(KickError::NoSeparation {
-            time: t,
-            reason: format!("more than {MAX_PHASES} compression/restitution phases"),
-        })
+        Err(KickError::NoSeparation { time: t, reason: format!("more than {MAX_PHASES} compression/restitution phases") })
     }
 
     fn rescale(&mut self, scales: Scales) {
@@ -833,12 +810,7 @@ pub fn proves_trapped(deficit: f64, scale: f64) -> bool {
 /// the return from δ_max conserves ½ μ δ̇² + U(δ) − (μ/m_f) F_drive δ. The
 /// ball reaches δ = 0 only if U(δ_max) ≥ (μ/m_f) F_drive δ_max; otherwise it
 /// turns back before release, and later compressions only lose energy.
-fn check_release<L: ContactLaw>(
-    scenario: &Scenario,
-    law: &L,
-    max_compression: f64,
-    t: f64,
-) -> Result<(), KickError> {
+fn check_release<L: ContactLaw>(scenario: &Scenario, law: &L, max_compression: f64, t: f64) -> Result<(), KickError> {
     let drive = scenario.drive_force();
     if drive <= 0.0 || !law.damps_compression_only() {
         return Ok(());
@@ -910,7 +882,12 @@ mod trap_tests {
             match solver.solve(&grazing) {
                 Ok(o) => {
                     assert!((relative_energy(&o) - 0.5 * mu * 1e-12).abs() < 1e-9 * energy_scale, "{name}: {o:?}");
-                    assert!((v_cm(&o) - v_cm(&reference)).abs() < 1e-6 * scale, "{name}: {} {} {o:?} {reference:?}", v_cm(&o), v_cm(&reference));
+                    assert!(
+                        (v_cm(&o) - v_cm(&reference)).abs() < 1e-6 * scale,
+                        "{name}: {} {} {o:?} {reference:?}",
+                        v_cm(&o),
+                        v_cm(&reference)
+                    );
                 }
                 Err(e) => assert!(!matches!(e, KickError::Trapped { .. }), "{name}: {e}"),
             }

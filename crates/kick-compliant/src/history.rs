@@ -34,12 +34,7 @@ impl<'a, S> Sampler<'a, S> {
 
     /// Make and hand over every grid sample up to `end` (`inclusive`) or
     /// before it, not yet handed over; `make(t, evaluations)` makes one.
-    pub fn fill<E>(
-        &mut self,
-        end: f64,
-        inclusive: bool,
-        mut make: impl FnMut(f64, &mut u64) -> Result<S, E>,
-    ) -> Result<(), E> {
+    pub fn fill<E>(&mut self, end: f64, inclusive: bool, mut make: impl FnMut(f64, &mut u64) -> Result<S, E>) -> Result<(), E> {
         while self.due(end, inclusive) {
             let sample = make(self.grid.time(self.next), &mut self.evaluations)?;
             self.next += 1;

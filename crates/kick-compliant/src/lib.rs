@@ -53,9 +53,8 @@ pub enum SolverChoice {
 }
 
 impl SolverChoice {
-    pub const NAMES: [&'static str; 10] = [
-        "auto", "seed-rk4", "accurate", "dop853", "dopri5", "rk4-events", "reduced", "reduced-return", "closed-form", "series",
-    ];
+    pub const NAMES: [&'static str; 10] =
+        ["auto", "seed-rk4", "accurate", "dop853", "dopri5", "rk4-events", "reduced", "reduced-return", "closed-form", "series"];
 
     /// Look a solver up by its `--solver` name at default settings; `step` is
     /// the fixed step of `seed-rk4` and `rk4-events`.

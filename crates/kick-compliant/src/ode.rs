@@ -203,12 +203,7 @@ pub struct Extremes {
 
 impl Extremes {
     pub fn new(initial_force: f64) -> Self {
-        Extremes {
-            peak_force: initial_force,
-            peak_force_time: 0.0,
-            max_compression: 0.0,
-            max_compression_time: 0.0,
-        }
+        Extremes { peak_force: initial_force, peak_force_time: 0.0, max_compression: 0.0, max_compression_time: 0.0 }
     }
     #[inline]
     pub fn observe(&mut self, t: f64, force: f64, compression: f64) {

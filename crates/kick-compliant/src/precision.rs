@@ -46,7 +46,11 @@ pub fn max_relative_error(outcome: &Outcome, reference: &Outcome) -> f64 {
     let separation = (reference.v_ball_out - reference.v_foot_out).abs();
     let velocity = |a: f64, b: f64| {
         let by = b.abs().max(separation);
-        if by == 0.0 { a.abs() } else { (a - b).abs() / by }
+        if by == 0.0 {
+            a.abs()
+        } else {
+            (a - b).abs() / by
+        }
     };
     [
         velocity(outcome.v_ball_out, reference.v_ball_out),

@@ -14,12 +14,12 @@
 use crate::closed::{undamped_return, CompressionEnd};
 use crate::events::{ContactSystem, Engine, Method, Recorder, Scales, StopAt};
 use crate::history::{self, Sampler};
-use kick_core::{SolverPath, 
-    AnyLaw, ContactLaw, ContactPhase, EnergyBudget, KickError, LawKind, Outcome, RecordingSolver, Sample, Scenario, Solver,
+use kick_core::{
+    AnyLaw, ContactLaw, ContactPhase, EnergyBudget, KickError, LawKind, Outcome, RecordingSolver, Sample, Scenario, Solver, SolverPath,
     Spacing, StopReason, Streamed,
 };
-use std::ops::ControlFlow;
 use nalgebra::SVector;
+use std::ops::ControlFlow;
 
 /// (δ, δ̇, D).
 pub type RelativeState = SVector<f64, 3>;
@@ -144,8 +144,7 @@ fn sample<L: ContactLaw>(scenario: &Scenario, law: &L, t: f64, y: &RelativeState
         ball_velocity: r.ball_velocity,
         compression: y[0].max(0.0),
         force: law.contact_force(y[0], y[1]),
-        kinetic: 0.5 * scenario.effective_foot_mass() * r.foot_velocity.powi(2)
-            + 0.5 * scenario.ball_mass() * r.ball_velocity.powi(2),
+        kinetic: 0.5 * scenario.effective_foot_mass() * r.foot_velocity.powi(2) + 0.5 * scenario.ball_mass() * r.ball_velocity.powi(2),
         elastic: law.potential(y[0]),
         dissipated: y[2],
         drive_work: r.drive_work,

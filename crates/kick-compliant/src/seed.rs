@@ -29,8 +29,8 @@
 use crate::history::{self, Sampler};
 use crate::ode::{self, Branch, ContactOde, Extremes, State};
 use crate::stability;
-use kick_core::{SolverPath, 
-    AnyLaw, ContactPhase, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing, StopReason, Streamed,
+use kick_core::{
+    AnyLaw, ContactPhase, KickError, Outcome, RecordingSolver, Sample, Scenario, Solver, SolverPath, Spacing, StopReason, Streamed,
 };
 use std::ops::ControlFlow;
 
@@ -40,7 +40,6 @@ pub struct SeedRk4 {
     /// Δt in s (Table 1: 5 µs).
     pub step: f64,
 }
-
 
 impl Default for SeedRk4 {
     fn default() -> Self {
@@ -53,11 +52,7 @@ impl SeedRk4 {
         if step.is_finite() && step > 0.0 {
             Ok(SeedRk4 { step })
         } else {
-            Err(KickError::InvalidParameter {
-                name: "dt",
-                value: step,
-                requirement: "finite and > 0",
-            })
+            Err(KickError::InvalidParameter { name: "dt", value: step, requirement: "finite and > 0" })
         }
     }
 

@@ -560,7 +560,10 @@ fn compress(s: &Scaled, tolerance: f64) -> Result<Result<ScaledCompression, f64>
         }
         let h = step.step(tolerance);
         if !(h.is_finite() && h > 0.0) {
-            return Err(KickError::Integration { time: tau, reason: format!("series step {} at scaled time {}", kick_core::short(h), kick_core::short(tau)) });
+            return Err(KickError::Integration {
+                time: tau,
+                reason: format!("series step {} at scaled time {}", kick_core::short(h), kick_core::short(tau)),
+            });
         }
         let segment = TaylorSegment::new(s, tau, step);
         let start = (v, segment.force_rate[0]);
@@ -577,10 +580,7 @@ fn compress(s: &Scaled, tolerance: f64) -> Result<Result<ScaledCompression, f64>
         (x, _, v) = segment.step.state(h);
         tau += h;
     }
-    Err(KickError::Integration {
-        time: tau,
-        reason: format!("compression not over after {MAX_STEPS} series steps"),
-    })
+    Err(KickError::Integration { time: tau, reason: format!("compression not over after {MAX_STEPS} series steps") })
 }
 
 /// The `series` solver: the paper's law with any drive.

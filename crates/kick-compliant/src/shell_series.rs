@@ -36,8 +36,8 @@
 //! loss off (`tests/solvers/shell_series.rs`).
 
 use crate::events::proves_trapped;
-use crate::reduced::{reconstruct, RelativeOde, RelativeState};
 use crate::events::ContactSystem;
+use crate::reduced::{reconstruct, RelativeOde, RelativeState};
 use kick_core::{roots, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath, StopReason};
 
 /// Order K of the Taylor steps (δ to t^K).

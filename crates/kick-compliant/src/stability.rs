@@ -147,13 +147,7 @@ pub fn relative_energy_residual<L: ContactLaw>(scenario: &Scenario, law: &L, bud
 
 /// Refuse a fixed-step run whose energy budget does not close (module docs);
 /// `time` is where the budget was taken.
-pub fn check_energy<L: ContactLaw>(
-    scenario: &Scenario,
-    law: &L,
-    budget: &EnergyBudget,
-    step: f64,
-    time: f64,
-) -> Result<(), KickError> {
+pub fn check_energy<L: ContactLaw>(scenario: &Scenario, law: &L, budget: &EnergyBudget, step: f64, time: f64) -> Result<(), KickError> {
     let relative = relative_energy_residual(scenario, law, budget);
     if relative <= ENERGY_RESIDUAL_BOUND {
         return Ok(());

@@ -100,13 +100,7 @@ pub fn columns(outcome: &Outcome) -> [f64; 5] {
 }
 
 pub fn printed_columns(row: &PrintedRow) -> [f64; 5] {
-    [
-        row.v_ball_out,
-        row.speed_ratio,
-        row.peak_force,
-        row.contact_time_ms,
-        row.max_compression_mm,
-    ]
+    [row.v_ball_out, row.speed_ratio, row.peak_force, row.contact_time_ms, row.max_compression_mm]
 }
 
 /// True when every column prints as the paper printed it.
@@ -115,9 +109,7 @@ pub fn matches_printed(outcome: &Outcome, row: &PrintedRow) -> bool {
         .iter()
         .zip(printed_columns(row))
         .zip(TABLE2_DECIMALS)
-        .all(|((&value, printed), decimals)| {
-            format!("{value:.*}", decimals as usize) == format!("{printed:.*}", decimals as usize)
-        })
+        .all(|((&value, printed), decimals)| format!("{value:.*}", decimals as usize) == format!("{printed:.*}", decimals as usize))
 }
 
 /// Fit all rows with the seed method at the paper's step.
@@ -136,19 +128,12 @@ pub fn fit() -> Result<Table2File, KickError> {
                         .unwrap_or(f64::NAN)
                 };
                 let root = roots::brent(solve, low, high, 1e-12 * high.abs().max(low.abs()), 200)
-                    .ok_or(KickError::Integration {
-                        time: 0.0,
-                        reason: format!("no root for `{}` in [{low}, {high}]", printed.name),
-                    })?
+                    .ok_or(KickError::Integration { time: 0.0, reason: format!("no root for `{}` in [{low}, {high}]", printed.name) })?
                     .x;
                 let adopted = (1..=6)
                     .map(|digits| round_significant(root, digits))
                     .find(|&x| {
-                        Scenario::baseline()
-                            .with(p, x)
-                            .and_then(|s| seed.solve(&s))
-                            .map(|o| matches_printed(&o, printed))
-                            .unwrap_or(false)
+                        Scenario::baseline().with(p, x).and_then(|s| seed.solve(&s)).map(|o| matches_printed(&o, printed)).unwrap_or(false)
                     })
                     .unwrap_or(root);
                 (Some(root), Some(adopted))
@@ -163,13 +148,7 @@ pub fn fit() -> Result<Table2File, KickError> {
         for ((r, c), p) in residuals.iter_mut().zip(columns(&outcome)).zip(printed_columns(printed)) {
             *r = c - p;
         }
-        rows.push(Table2Row {
-            name: printed.name.to_string(),
-            parameter,
-            value,
-            root,
-            residuals,
-        });
+        rows.push(Table2Row { name: printed.name.to_string(), parameter, value, root, residuals });
     }
     Ok(Table2File {
         name: "table2".into(),

@@ -19,14 +19,7 @@ pub struct CheckRow {
 
 impl CheckRow {
     /// Compare with a relative error |actual − expected| / scale.
-    pub fn compare(
-        name: impl Into<String>,
-        equation: &str,
-        expected: f64,
-        actual: f64,
-        scale: f64,
-        tolerance: f64,
-    ) -> CheckRow {
+    pub fn compare(name: impl Into<String>, equation: &str, expected: f64, actual: f64, scale: f64, tolerance: f64) -> CheckRow {
         let error = (actual - expected).abs() / scale;
         CheckRow {
             name: name.into(),

@@ -10,11 +10,7 @@ use thiserror::Error;
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum KickError {
     #[error("invalid parameter `{name}` = {}: must be {requirement}", short(*.value))]
-    InvalidParameter {
-        name: &'static str,
-        value: f64,
-        requirement: &'static str,
-    },
+    InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
     #[error(
         "no contact: the foot ({} m/s) is not faster than the ball ({} m/s), \
          so they never touch",
@@ -156,11 +152,7 @@ impl Status {
 
 impl KickError {
     pub(crate) fn invalid(name: &'static str, value: f64, requirement: &'static str) -> Self {
-        KickError::InvalidParameter {
-            name,
-            value,
-            requirement,
-        }
+        KickError::InvalidParameter { name, value, requirement }
     }
 
     pub fn status(&self) -> Status {

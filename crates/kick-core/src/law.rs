@@ -34,9 +34,8 @@ pub trait ContactLaw {
         let d_delta = (self.contact_force(compression + hd, compression_rate)
             - self.contact_force((compression - hd).max(0.0), compression_rate))
             / (compression + hd - (compression - hd).max(0.0));
-        let d_rate = (self.contact_force(compression, compression_rate + hr)
-            - self.contact_force(compression, compression_rate - hr))
-            / (2.0 * hr);
+        let d_rate =
+            (self.contact_force(compression, compression_rate + hr) - self.contact_force(compression, compression_rate - hr)) / (2.0 * hr);
         (d_delta, d_rate)
     }
     /// (F, ∂F/∂δ, ∂F/∂δ̇) on the contact branch in one call.

@@ -106,13 +106,7 @@ pub struct HysteresisContact {
 
 impl HysteresisContact {
     /// χ from `model` for restitution `e` ∈ (0, 1] at impact speed `v0` > 0.
-    pub fn new(
-        model: HysteresisModel,
-        stiffness: f64,
-        exponent: f64,
-        e: f64,
-        v0: f64,
-    ) -> Result<Self, KickError> {
+    pub fn new(model: HysteresisModel, stiffness: f64, exponent: f64, e: f64, v0: f64) -> Result<Self, KickError> {
         check_positive("stiffness", stiffness)?;
         check_positive("exponent", exponent)?;
         check_positive("impact_speed", v0)?;
@@ -436,13 +430,7 @@ pub enum AnyLaw {
 impl AnyLaw {
     pub fn new(kind: LawKind, p: &LawParameters) -> Result<AnyLaw, LawError> {
         let hysteresis = |model| -> Result<AnyLaw, LawError> {
-            Ok(AnyLaw::Hysteresis(HysteresisContact::new(
-                model,
-                p.stiffness,
-                p.exponent,
-                p.restitution,
-                p.impact_speed,
-            )?))
+            Ok(AnyLaw::Hysteresis(HysteresisContact::new(model, p.stiffness, p.exponent, p.restitution, p.impact_speed)?))
         };
         match kind {
             LawKind::PowerLaw => {
@@ -451,21 +439,15 @@ impl AnyLaw {
                 if !(p.damping.is_finite() && p.damping >= 0.0) {
                     return Err(KickError::invalid("damping", p.damping, "finite and >= 0").into());
                 }
-                Ok(AnyLaw::PowerLaw(PowerLawContact {
-                    stiffness: p.stiffness,
-                    damping: p.damping,
-                    exponent: p.exponent,
-                }))
+                Ok(AnyLaw::PowerLaw(PowerLawContact { stiffness: p.stiffness, damping: p.damping, exponent: p.exponent }))
             }
             LawKind::HuntCrossley => hysteresis(HysteresisModel::HuntCrossley),
             LawKind::LankaraniNikravesh => hysteresis(HysteresisModel::LankaraniNikravesh),
             LawKind::Flores => hysteresis(HysteresisModel::Flores),
             LawKind::HuntCrossleyExact => hysteresis(HysteresisModel::Exact),
-            LawKind::KelvinVoigt => Ok(AnyLaw::KelvinVoigt(KelvinVoigt::from_restitution(
-                p.linear_stiffness,
-                p.reduced_mass,
-                p.restitution,
-            )?)),
+            LawKind::KelvinVoigt => {
+                Ok(AnyLaw::KelvinVoigt(KelvinVoigt::from_restitution(p.linear_stiffness, p.reduced_mass, p.restitution)?))
+            }
             LawKind::Shell => p.shell.map(AnyLaw::Shell).ok_or_else(|| {
                 KickError::InvalidParameter { name: "law", value: f64::NAN, requirement: "law `shell` needs the ball (ShellBall)" }.into()
             }),
@@ -669,7 +651,13 @@ mod tests {
             let h = d / m as f64;
             let mut sum = 0.0;
             for i in 0..=m {
-                let w = if i == 0 || i == m { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+                let w = if i == 0 || i == m {
+                    1.0
+                } else if i % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
                 sum += w * law.force(i as f64 * h, 0.0);
             }
             let integral = sum * h / 3.0;

@@ -4,9 +4,9 @@
 //! Equation numbers refer to "The Millisecond Physics of a Soccer Kick"
 //! (`shared/paper/millisecond-physics-of-a-soccer-kick.md`).
 
-pub mod error;
 pub mod check;
 pub mod dop853;
+pub mod error;
 pub mod input;
 pub mod law;
 pub mod laws;
@@ -14,8 +14,8 @@ pub mod measurements;
 pub mod models;
 pub mod number;
 pub mod outcome;
-pub mod parameters;
 pub mod paper;
+pub mod parameters;
 pub mod roots;
 pub mod scenario;
 pub mod shell;
@@ -23,10 +23,9 @@ pub mod special;
 pub mod threads;
 
 pub use error::{KickError, Status};
-pub use number::{short, sig};
-use std::ops::ControlFlow;
 pub use law::{ContactLaw, PowerLawContact};
 pub use laws::{AnyLaw, LawKind};
+pub use number::{short, sig};
 pub use outcome::{
     ContactPhase, EnergyBudget, ExitVelocities, Grid, History, Outcome, Sample, SolverPath, Spacing, StopReason, HISTORY_COLUMNS,
     MAX_HISTORY_SAMPLES, OBSERVABLES,
@@ -34,6 +33,7 @@ pub use outcome::{
 pub use parameters::{Level, ParameterDef, SetLaw, SetParameter, Value, PARAMETERS};
 pub use scenario::{Parameter, Scenario, ScenarioSpec};
 pub use shell::ShellBall;
+use std::ops::ControlFlow;
 
 /// Standard gravity of every model level that has gravity (kick-3d's scene,
 /// kick-flight), m/s².

@@ -57,7 +57,11 @@ impl Checked {
 
     /// The less checked of two (the first on a tie).
     pub fn weaker(a: &Checked, b: &Checked) -> Checked {
-        if b.rank() < a.rank() { b.clone() } else { a.clone() }
+        if b.rank() < a.rank() {
+            b.clone()
+        } else {
+            a.clone()
+        }
     }
 
     fn parse(s: &str) -> Option<Checked> {
@@ -292,8 +296,7 @@ impl Measurements {
     /// Read and check [`MEASUREMENTS_FILE`] or another file of that form.
     pub fn load(path: &Path) -> Result<Measurements, MeasurementError> {
         let file = path.display().to_string();
-        let text =
-            std::fs::read_to_string(path).map_err(|e| MeasurementError::Read { file: file.clone(), message: e.to_string() })?;
+        let text = std::fs::read_to_string(path).map_err(|e| MeasurementError::Read { file: file.clone(), message: e.to_string() })?;
         Measurements::parse(&text, &file)
     }
 
@@ -302,13 +305,8 @@ impl Measurements {
     /// finite numbers, low ≤ high, a recognised check status, and every
     /// source a citation (authors, title, container, and a year or why not).
     pub fn parse(text: &str, file: &str) -> Result<Measurements, MeasurementError> {
-        let raw: RawFile =
-            toml::from_str(text).map_err(|e| MeasurementError::Read { file: file.to_string(), message: e.to_string() })?;
-        let invalid = |key: &str, message: String| MeasurementError::Invalid {
-            file: file.to_string(),
-            key: key.to_string(),
-            message,
-        };
+        let raw: RawFile = toml::from_str(text).map_err(|e| MeasurementError::Read { file: file.to_string(), message: e.to_string() })?;
+        let invalid = |key: &str, message: String| MeasurementError::Invalid { file: file.to_string(), key: key.to_string(), message };
         let mut source_keys = BTreeSet::new();
         for s in &raw.source {
             if !source_keys.insert(s.key.as_str()) {
@@ -408,7 +406,14 @@ impl Measurements {
             what: "a claim in words only",
             needed_by,
         })?;
-        Ok(Measured { key: m.key.clone(), low: Some(low), high: Some(high), unit: m.unit.si(), source: m.source.clone(), checked: m.checked.clone() })
+        Ok(Measured {
+            key: m.key.clone(),
+            low: Some(low),
+            high: Some(high),
+            unit: m.unit.si(),
+            source: m.source.clone(),
+            checked: m.checked.clone(),
+        })
     }
 
     /// A measurement that is a claim in words (any number it has is ignored).

@@ -3,10 +3,7 @@
 use crate::{Parameter, Scenario};
 
 fn baseline_with(changes: &[(Parameter, f64)]) -> Scenario {
-    changes
-        .iter()
-        .try_fold(Scenario::baseline(), |s, &(p, v)| s.with(p, v))
-        .expect("test models are valid scenarios")
+    changes.iter().try_fold(Scenario::baseline(), |s, &(p, v)| s.with(p, v)).expect("test models are valid scenarios")
 }
 
 /// c = 0, no drive: the whole contact has a closed form (energy integral).
@@ -14,9 +11,33 @@ pub fn elastic() -> Vec<(&'static str, Scenario)> {
     vec![
         ("elastic n=1.35", baseline_with(&[(Parameter::Damping, 0.0)])),
         ("elastic n=1", baseline_with(&[(Parameter::Damping, 0.0), (Parameter::Exponent, 1.0), (Parameter::Stiffness, 1.0e5)])),
-        ("elastic n=1.5 moving ball", baseline_with(&[(Parameter::Damping, 0.0), (Parameter::Exponent, 1.5), (Parameter::Stiffness, 2.0e6), (Parameter::BallSpeed, -6.0)])),
-        ("elastic n=2 heavy foot", baseline_with(&[(Parameter::Damping, 0.0), (Parameter::Exponent, 2.0), (Parameter::Stiffness, 1.0e7), (Parameter::FootMass, 20.0)])),
-        ("elastic n=3 light foot", baseline_with(&[(Parameter::Damping, 0.0), (Parameter::Exponent, 3.0), (Parameter::Stiffness, 1.0e9), (Parameter::FootMass, 0.5)])),
+        (
+            "elastic n=1.5 moving ball",
+            baseline_with(&[
+                (Parameter::Damping, 0.0),
+                (Parameter::Exponent, 1.5),
+                (Parameter::Stiffness, 2.0e6),
+                (Parameter::BallSpeed, -6.0),
+            ]),
+        ),
+        (
+            "elastic n=2 heavy foot",
+            baseline_with(&[
+                (Parameter::Damping, 0.0),
+                (Parameter::Exponent, 2.0),
+                (Parameter::Stiffness, 1.0e7),
+                (Parameter::FootMass, 20.0),
+            ]),
+        ),
+        (
+            "elastic n=3 light foot",
+            baseline_with(&[
+                (Parameter::Damping, 0.0),
+                (Parameter::Exponent, 3.0),
+                (Parameter::Stiffness, 1.0e9),
+                (Parameter::FootMass, 0.5),
+            ]),
+        ),
     ]
 }
 
@@ -28,10 +49,21 @@ pub fn linear() -> Vec<(&'static str, Scenario)> {
     vec![
         ("linear zeta=0.05", baseline_with(&[base[0], base[1], (Parameter::Damping, 0.05 * critical)])),
         ("linear zeta=0.3", baseline_with(&[base[0], base[1], (Parameter::Damping, 0.3 * critical)])),
-        ("linear zeta=0.9 moving ball", baseline_with(&[base[0], base[1], (Parameter::Damping, 0.9 * critical), (Parameter::BallSpeed, 5.0)])),
+        (
+            "linear zeta=0.9 moving ball",
+            baseline_with(&[base[0], base[1], (Parameter::Damping, 0.9 * critical), (Parameter::BallSpeed, 5.0)]),
+        ),
         ("linear zeta=1", baseline_with(&[base[0], base[1], (Parameter::Damping, critical)])),
         ("linear zeta=3", baseline_with(&[base[0], base[1], (Parameter::Damping, 3.0 * critical)])),
-        ("linear zeta=0.2 stiff heavy", baseline_with(&[base[0], (Parameter::Stiffness, 1.0e8), (Parameter::FootMass, 50.0), (Parameter::Damping, 0.2 * 2.0 * (1.0e8_f64 * (50.0 * 0.43 / 50.43)).sqrt())])),
+        (
+            "linear zeta=0.2 stiff heavy",
+            baseline_with(&[
+                base[0],
+                (Parameter::Stiffness, 1.0e8),
+                (Parameter::FootMass, 50.0),
+                (Parameter::Damping, 0.2 * 2.0 * (1.0e8_f64 * (50.0 * 0.43 / 50.43)).sqrt()),
+            ]),
+        ),
     ]
 }
 

@@ -32,8 +32,7 @@ pub struct EnergyBudget {
 impl EnergyBudget {
     /// (K⁻ + W) − (K⁺ + U⁺ + D): zero up to the solver's error.
     pub fn residual(&self) -> f64 {
-        (self.kinetic_initial + self.drive_work)
-            - (self.kinetic_final + self.elastic_final + self.dissipated)
+        (self.kinetic_initial + self.drive_work) - (self.kinetic_final + self.elastic_final + self.dissipated)
     }
     /// Residual relative to the energy that went through the contact.
     pub fn relative_residual(&self) -> f64 {
@@ -57,9 +56,7 @@ pub enum StopReason {
 impl StopReason {
     pub fn time(&self) -> f64 {
         match *self {
-            StopReason::Separated { t }
-            | StopReason::StepCondition { t }
-            | StopReason::ClosedForm { t } => t,
+            StopReason::Separated { t } | StopReason::StepCondition { t } | StopReason::ClosedForm { t } => t,
         }
     }
 }
@@ -139,10 +136,7 @@ impl Outcome {
         (v_foot_in != 0.0).then(|| v_ball_out / v_foot_in)
     }
     pub fn exit(&self) -> ExitVelocities {
-        ExitVelocities {
-            foot: self.v_foot_out,
-            ball: self.v_ball_out,
-        }
+        ExitVelocities { foot: self.v_foot_out, ball: self.v_ball_out }
     }
 }
 

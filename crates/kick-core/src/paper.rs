@@ -36,14 +36,7 @@ const fn row(
     contact_time_ms: f64,
     max_compression_mm: f64,
 ) -> PrintedRow {
-    PrintedRow {
-        name,
-        v_ball_out,
-        speed_ratio,
-        peak_force,
-        contact_time_ms,
-        max_compression_mm,
-    }
+    PrintedRow { name, v_ball_out, speed_ratio, peak_force, contact_time_ms, max_compression_mm }
 }
 
 /// Decimal places printed per column: v_b⁺, ratio, peak force, contact (ms), compression (mm).

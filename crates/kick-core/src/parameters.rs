@@ -151,7 +151,6 @@ impl DefaultValue {
     }
 }
 
-
 /// Spacing of a sampling range.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -468,74 +467,141 @@ use Level::{Instep, Kick3d, Scenario};
 // The 1D scenario (Table 1's baseline as defaults). `Parameter::ALL` lists
 // the first eight in this order.
 pub const FOOT_MASS: ParameterDef = scalar(
-    "foot_mass", "m_f", "kg", Scenario, Number(3.0), Valid::POSITIVE, SampleRange::log(0.5, 15.0),
+    "foot_mass",
+    "m_f",
+    "kg",
+    Scenario,
+    Number(3.0),
+    Valid::POSITIVE,
+    SampleRange::log(0.5, 15.0),
     "Effective foot mass (Eqs. 11-12)",
 );
 pub const BALL_MASS: ParameterDef = scalar(
-    "ball_mass", "m_b", "kg", Scenario, Number(crate::DEFAULT_BALL_MASS), Valid::POSITIVE, SampleRange::linear(0.41, 0.45),
+    "ball_mass",
+    "m_b",
+    "kg",
+    Scenario,
+    Number(crate::DEFAULT_BALL_MASS),
+    Valid::POSITIVE,
+    SampleRange::linear(0.41, 0.45),
     "Ball mass (size-5 ball: 0.41-0.45 kg)",
 );
 pub const FOOT_SPEED: ParameterDef = scalar(
-    "foot_speed", "v_f⁻", "m/s", Scenario, Number(22.0), Valid::FINITE, SampleRange::linear(12.0, 35.0),
+    "foot_speed",
+    "v_f⁻",
+    "m/s",
+    Scenario,
+    Number(22.0),
+    Valid::FINITE,
+    SampleRange::linear(12.0, 35.0),
     "Foot speed before contact",
 );
 pub const BALL_SPEED: ParameterDef = scalar(
-    "ball_speed", "v_b⁻", "m/s", Scenario, Number(0.0), Valid::FINITE, SampleRange::linear(-10.0, 10.0),
+    "ball_speed",
+    "v_b⁻",
+    "m/s",
+    Scenario,
+    Number(0.0),
+    Valid::FINITE,
+    SampleRange::linear(-10.0, 10.0),
     "Ball speed before contact (3D: the ball moves along x, the foot's horizontal line of motion, whatever the approach angle)",
 );
-pub const STIFFNESS: ParameterDef = scalar(
-    "stiffness", "k", "N/m^n", Scenario, Number(4.2e5), Valid::POSITIVE, SampleRange::log(1e4, 1e7),
-    "Contact stiffness (Eq. 20)",
-);
+pub const STIFFNESS: ParameterDef =
+    scalar("stiffness", "k", "N/m^n", Scenario, Number(4.2e5), Valid::POSITIVE, SampleRange::log(1e4, 1e7), "Contact stiffness (Eq. 20)");
 pub const DAMPING: ParameterDef = scalar(
-    "damping", "c", "N s/m", Scenario, Number(120.0), Valid::NON_NEGATIVE, SampleRange::linear(0.0, 600.0),
+    "damping",
+    "c",
+    "N s/m",
+    Scenario,
+    Number(120.0),
+    Valid::NON_NEGATIVE,
+    SampleRange::linear(0.0, 600.0),
     "Contact damping, while compressing (Eq. 20)",
 );
-pub const EXPONENT: ParameterDef = scalar(
-    "exponent", "n", "1", Scenario, Number(1.35), Valid::POSITIVE, SampleRange::linear(1.0, 2.0),
-    "Contact exponent (Eq. 20)",
-);
+pub const EXPONENT: ParameterDef =
+    scalar("exponent", "n", "1", Scenario, Number(1.35), Valid::POSITIVE, SampleRange::linear(1.0, 2.0), "Contact exponent (Eq. 20)");
 pub const DRIVE_FORCE: ParameterDef = scalar(
-    "drive_force", "F_drive", "N", Scenario, Number(0.0), Valid::FINITE,
+    "drive_force",
+    "F_drive",
+    "N",
+    Scenario,
+    Number(0.0),
+    Valid::FINITE,
     Some(SampleRange { spacing: Spacing::Linear, from: 0.0, to: 1000.0, zero_probability: 0.5 }),
     "Drive force on the foot along its velocity during contact",
 );
 pub const RESTITUTION: ParameterDef = scalar(
-    "restitution", "e", "1", Scenario, Unset("none; needed by every law but the paper's"),
-    Valid::new(Bound::Open(0.0), Bound::Closed(1.0), "in (0, 1]"), None,
+    "restitution",
+    "e",
+    "1",
+    Scenario,
+    Unset("none; needed by every law but the paper's"),
+    Valid::new(Bound::Open(0.0), Bound::Closed(1.0), "in (0, 1]"),
+    None,
     "Target restitution of the contact laws other than the paper's (their damping follows from it)",
 );
 
 // The off-center 3D kick (kick-3d; defaults are assumptions stated there).
 pub const OFFSET: ParameterDef = scalar(
-    "offset", "e", "m", Kick3d, Number(0.0), Valid::FINITE, SampleRange::linear(0.0, 0.09),
+    "offset",
+    "e",
+    "m",
+    Kick3d,
+    Number(0.0),
+    Valid::FINITE,
+    SampleRange::linear(0.0, 0.09),
     "Lateral offset of the foot's line of motion from the ball centre (|e| < R)",
 );
 pub const APPROACH_ANGLE: ParameterDef = scalar(
-    "approach_angle", "α", "deg", Kick3d, Number(0.0),
-    Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"), SampleRange::linear(0.0, 40.0),
+    "approach_angle",
+    "α",
+    "deg",
+    Kick3d,
+    Number(0.0),
+    Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"),
+    SampleRange::linear(0.0, 40.0),
     "Elevation of the foot's velocity above the horizontal",
 );
 pub const FRICTION: ParameterDef = scalar(
-    "friction", "μ", "1", Kick3d, Number(0.5),
-    Valid::new(Bound::Closed(0.0), Bound::Closed(f64::INFINITY), ">= 0 (inf: never slips)"), SampleRange::linear(0.0, 2.0),
+    "friction",
+    "μ",
+    "1",
+    Kick3d,
+    Number(0.5),
+    Valid::new(Bound::Closed(0.0), Bound::Closed(f64::INFINITY), ">= 0 (inf: never slips)"),
+    SampleRange::linear(0.0, 2.0),
     "Coulomb friction coefficient (inf: never slips)",
 );
-pub const BALL_RADIUS: ParameterDef = scalar(
-    "ball_radius", "R", "m", Kick3d, Number(crate::DEFAULT_BALL_RADIUS), Valid::POSITIVE, None,
-    "Ball radius",
-);
+pub const BALL_RADIUS: ParameterDef =
+    scalar("ball_radius", "R", "m", Kick3d, Number(crate::DEFAULT_BALL_RADIUS), Valid::POSITIVE, None, "Ball radius");
 pub const BALL_INERTIA: ParameterDef = scalar(
-    "ball_inertia", "I_b", "kg m^2", Kick3d, Derived("2/3 m_b R^2, a thin shell"), Valid::POSITIVE, None,
+    "ball_inertia",
+    "I_b",
+    "kg m^2",
+    Kick3d,
+    Derived("2/3 m_b R^2, a thin shell"),
+    Valid::POSITIVE,
+    None,
     "Ball moment of inertia (at most 2/3 m_b R^2, a thin shell)",
 );
 pub const TANGENTIAL_STIFFNESS: ParameterDef = scalar(
-    "tangential_stiffness", "k_t", "N/m", Kick3d, Number(1.0e5),
-    Valid::new(Bound::Open(0.0), Bound::Closed(f64::INFINITY), "> 0 (inf: rigid grip, solved as a constraint)"), SampleRange::log(1e4, 1e6),
+    "tangential_stiffness",
+    "k_t",
+    "N/m",
+    Kick3d,
+    Number(1.0e5),
+    Valid::new(Bound::Open(0.0), Bound::Closed(f64::INFINITY), "> 0 (inf: rigid grip, solved as a constraint)"),
+    SampleRange::log(1e4, 1e6),
     "Tangential stiffness of the contact (Cundall-Strack spring; inf: rigid grip, a constraint with no spring)",
 );
 pub const TANGENTIAL_DAMPING: ParameterDef = scalar(
-    "tangential_damping", "c_t", "N s/m", Kick3d, Number(100.0), Valid::POSITIVE, SampleRange::log(10.0, 1000.0),
+    "tangential_damping",
+    "c_t",
+    "N s/m",
+    Kick3d,
+    Number(100.0),
+    Valid::POSITIVE,
+    SampleRange::log(10.0, 1000.0),
     "Tangential damping of the contact",
 );
 pub const FOOT_INERTIA: ParameterDef = ParameterDef {
@@ -561,8 +627,13 @@ pub const FOOT_HALF_EXTENTS: ParameterDef = ParameterDef {
     doc: "Outer half-extents of the instep box, hx,hy,hz (hx along the face normal)",
 };
 pub const BORDER_RADIUS: ParameterDef = scalar(
-    "border_radius", "r_b", "m", Kick3d, Number(0.0),
-    Valid::new(Bound::Closed(0.0), Bound::Unbounded, "finite, >= 0 and below the smallest foot half-extent"), None,
+    "border_radius",
+    "r_b",
+    "m",
+    Kick3d,
+    Number(0.0),
+    Valid::new(Bound::Closed(0.0), Bound::Unbounded, "finite, >= 0 and below the smallest foot half-extent"),
+    None,
     "Round the instep box's edges with this radius, inside its outer size (0: plain box)",
 );
 pub const GRAVITY_SWITCH: ParameterDef = ParameterDef {
@@ -592,13 +663,23 @@ pub const GROUND_PLANE: ParameterDef = ParameterDef {
 // they replace the knife-edge face tilted by asin(e/R); absent, the 3D kick
 // is exactly the one above.
 pub const FACE_YAW: ParameterDef = scalar(
-    "face_yaw", "ψ", "deg", Instep, Derived("asin(e/R): the face tangent to the ball where the swing line meets it (the knife edge)"),
-    Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"), None,
+    "face_yaw",
+    "ψ",
+    "deg",
+    Instep,
+    Derived("asin(e/R): the face tangent to the ball where the swing line meets it (the knife edge)"),
+    Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"),
+    None,
     "Yaw of the instep's face normal from the foot's line of motion, about z (positive turns it as a positive offset's knife edge does)",
 );
 pub const FACE_PITCH: ParameterDef = scalar(
-    "face_pitch", "θ", "deg", Instep, Number(0.0),
-    Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"), None,
+    "face_pitch",
+    "θ",
+    "deg",
+    Instep,
+    Number(0.0),
+    Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"),
+    None,
     "Pitch of the instep's face normal above the horizontal (positive: the foot meets the ball below its centre)",
 );
 pub const INSTEP_RADIUS: ParameterDef = scalar(

@@ -296,8 +296,7 @@ impl Scenario {
 
     /// Validate values given in [`Parameter::ALL`] order.
     pub fn from_values(values: [f64; 8]) -> Result<Scenario, KickError> {
-        let [foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, drive_force] =
-            values;
+        let [foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, drive_force] = values;
         let check = |p: Parameter, v: f64| p.def().check(v);
         let scenario = Scenario {
             foot_mass: check(Parameter::FootMass, foot_mass)?,
@@ -315,10 +314,7 @@ impl Scenario {
         // relative speed must be representable next to the absolute speeds.
         let approach = foot_speed - ball_speed;
         if !(approach > 0.0) || !approach.is_finite() {
-            return Err(KickError::NoContact {
-                foot_speed,
-                ball_speed,
-            });
+            return Err(KickError::NoContact { foot_speed, ball_speed });
         }
         scenario.check_scales()?;
         Ok(scenario)
@@ -503,11 +499,7 @@ impl Scenario {
     /// law is in use: for the paper's own closed forms and series. The law
     /// the solvers integrate is [`Scenario::contact_law`].
     pub fn paper_law(&self) -> PowerLawContact {
-        PowerLawContact {
-            stiffness: self.stiffness,
-            damping: self.damping,
-            exponent: self.exponent,
-        }
+        PowerLawContact { stiffness: self.stiffness, damping: self.damping, exponent: self.exponent }
     }
     pub fn total_mass(&self) -> f64 {
         self.foot_mass + self.ball_mass
@@ -539,11 +531,7 @@ impl Scenario {
     /// Contact time of the undamped, undriven contact: twice the Beta-function
     /// return time (see `special::return_time`).
     pub fn elastic_contact_time(&self) -> f64 {
-        2.0 * crate::special::return_time(
-            self.elastic_max_compression(),
-            self.approach_speed(),
-            self.exponent,
-        )
+        2.0 * crate::special::return_time(self.elastic_max_compression(), self.approach_speed(), self.exponent)
     }
     /// Time after which a contact that has not ended is reported as
     /// [`KickError::NoSeparation`]: `CONTACT_HORIZON_FACTOR` times the undamped,

@@ -142,10 +142,7 @@ fn tanh_sinh_nodes() -> &'static [(TanhSinhNode, TanhSinhNode)] {
                 // The node at +t and its mirror at −t: z(−t) = 1 − z(t).
                 let (small, large) = (1.0 / (1.0 + u.exp()), 1.0 / (1.0 + (-u).exp()));
                 let weight = std::f64::consts::PI * cosh * small * large;
-                (
-                    TanhSinhNode { z: large, complement: small, weight },
-                    TanhSinhNode { z: small, complement: large, weight },
-                )
+                (TanhSinhNode { z: large, complement: small, weight }, TanhSinhNode { z: small, complement: large, weight })
             })
             .collect()
     })
@@ -219,7 +216,11 @@ mod tests {
         let lower = |w: f64| {
             // 4w³/√q with q/w⁴ = (1 − β)/w⁴ + β − yⁿ; the integrand vanishes at w = 0.
             let y = w.powi(4);
-            if w == 0.0 { 0.0 } else { 4.0 * w / ((1.0 - beta) / y + beta - y.powf(exponent)).sqrt() }
+            if w == 0.0 {
+                0.0
+            } else {
+                4.0 * w / ((1.0 - beta) / y + beta - y.powf(exponent)).sqrt()
+            }
         };
         let split = 0.5f64;
         simpson(&upper, 0.0, (1.0 - split).powf(0.25), 1e-14, 30) + simpson(&lower, 0.0, split.powf(0.25), 1e-14, 30)

@@ -21,9 +21,7 @@ fn flights(c: &mut Criterion) {
     let mut group = c.benchmark_group("flight");
     group.bench_function("free_kick", |b| b.iter(|| black_box(solve(black_box(&free_kick)).expect("lands"))));
     group.bench_function("plain_25ms_20deg", |b| b.iter(|| black_box(solve(black_box(&plain)).expect("lands"))));
-    group.bench_function("free_kick_constant_coefficients", |b| {
-        b.iter(|| black_box(solve(black_box(&constant)).expect("lands")))
-    });
+    group.bench_function("free_kick_constant_coefficients", |b| b.iter(|| black_box(solve(black_box(&constant)).expect("lands"))));
     group.bench_function("free_kick_history_100", |b| {
         b.iter(|| black_box(history(black_box(&free_kick), Sampling::Samples(100)).expect("lands")))
     });
@@ -50,9 +48,7 @@ fn aims(c: &mut Criterion) {
     });
     let held = kick_flight::FlightSpec { speed: Some(27.0), launch_angle: Some(18.0), ..kick_flight::FlightSpec::default() };
     group.bench_function("launch_azimuth_and_sidespin", |b| {
-        b.iter(|| {
-            black_box(aim_launch([25.0, 3.0, 1.9], Wall::default(), &[LaunchFree::Azimuth, LaunchFree::SpinZ], &held).expect("aims"))
-        })
+        b.iter(|| black_box(aim_launch([25.0, 3.0, 1.9], Wall::default(), &[LaunchFree::Azimuth, LaunchFree::SpinZ], &held).expect("aims")))
     });
     group.finish();
 }

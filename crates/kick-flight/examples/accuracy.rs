@@ -38,7 +38,7 @@ fn main() {
         evaluations += a.evaluations;
         let rel = |x: f64, y: f64| ((x - y) / y).abs();
         // The flight's size: its range, or its apex height for a steep kick that lands near its start.
-    let size = b.landing_point[0].hypot(b.landing_point[1]).max(b.apex_height);
+        let size = b.landing_point[0].hypot(b.landing_point[1]).max(b.apex_height);
         let mut d = ((a.landing_point[0] - b.landing_point[0]).hypot(a.landing_point[1] - b.landing_point[1]) / size)
             .max(rel(a.flight_time, b.flight_time))
             .max(rel(a.apex_height, b.apex_height));
@@ -56,6 +56,10 @@ fn main() {
             worst_case = format!("{spec:?}");
         }
     }
-    println!("{count} kicks: worst relative difference {worst:.2e}; mean {:.1} steps, {:.1} evaluations", steps as f64 / count as f64, evaluations as f64 / count as f64);
+    println!(
+        "{count} kicks: worst relative difference {worst:.2e}; mean {:.1} steps, {:.1} evaluations",
+        steps as f64 / count as f64,
+        evaluations as f64 / count as f64
+    );
     println!("worst: {worst_case}");
 }

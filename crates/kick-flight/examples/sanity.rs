@@ -34,10 +34,9 @@ fn main() {
                 None => format!("lands short at x = {:.2} m, y = {:.2} m", b.landing_point[0], b.landing_point[1]),
             };
             match a.crossing {
-                Some(c) => println!(
-                    "{speed:9.1}  {revs:10.0}  {s0:.3}  {:12.2}  {:8.2}  {:.3}    [{other}]",
-                    c.lateral_offset, c.height, c.time
-                ),
+                Some(c) => {
+                    println!("{speed:9.1}  {revs:10.0}  {s0:.3}  {:12.2}  {:8.2}  {:.3}    [{other}]", c.lateral_offset, c.height, c.time)
+                }
                 None => println!("{speed:9.1}  {revs:10.0}  {s0:.3}  lands short at x = {:.2} m    [{other}]", a.landing_point[0]),
             }
         }

@@ -18,7 +18,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let kicks = free_kicks(&m, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE)?;
     println!(
         "\nfree kicks at {} deg, crossing x = {} m (launch: {} [{}], {} [{}])",
-        kicks.launch_angle, kicks.distance, kicks.launch_speed.key, kicks.launch_speed.checked, kicks.launch_spin.key, kicks.launch_spin.checked
+        kicks.launch_angle,
+        kicks.distance,
+        kicks.launch_speed.key,
+        kicks.launch_speed.checked,
+        kicks.launch_spin.key,
+        kicks.launch_spin.checked
     );
     println!("speed_m/s spin_rev/s lateral_m circle_estimate_m height_m time_s");
     for k in &kicks.kicks {

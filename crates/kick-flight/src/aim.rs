@@ -101,7 +101,11 @@ impl Scene {
             return Err(AimError::Invalid { name: "target", values: target.to_vec(), requirement: "three finite numbers X,Y,Z, m" });
         }
         if !(x > 0.0) {
-            return Err(AimError::Invalid { name: "target", values: target.to_vec(), requirement: "a goal plane X > 0 m in front of the ball" });
+            return Err(AimError::Invalid {
+                name: "target",
+                values: target.to_vec(),
+                requirement: "a goal plane X > 0 m in front of the ball",
+            });
         }
         let (half, top) = (0.5 * GOAL_WIDTH - radius, GOAL_HEIGHT - radius);
         if !(y.abs() <= half && z >= radius && z <= top) {
@@ -346,11 +350,8 @@ pub fn aim_with(scene: &Scene, free: &[Free], restarts: &[Vec<f64>], launch: &La
         tried += 1;
         let u0 = DVector::from_iterator(free.len(), free.iter().zip(start).map(|(f, &v)| to_u(f, v.clamp(f.low, f.high))));
         let problem = Problem { scene, free, launch, u: u0, evaluations: RefCell::new(0), failure: RefCell::new(None) };
-        let lm = LevenbergMarquardt::new()
-            .with_ftol(1e-15)
-            .with_xtol(1e-15)
-            .with_gtol(0.0)
-            .with_patience(MAX_EVALUATIONS / (free.len() + 1));
+        let lm =
+            LevenbergMarquardt::new().with_ftol(1e-15).with_xtol(1e-15).with_gtol(0.0).with_patience(MAX_EVALUATIONS / (free.len() + 1));
         let (solved, _report) = lm.minimize(problem);
         evaluations += *solved.evaluations.borrow();
         let values = solved.values(&solved.u);
@@ -457,10 +458,10 @@ impl LaunchFree {
     }
 
     pub fn from_name(name: &str) -> Result<LaunchFree, AimError> {
-        LaunchFree::ALL.into_iter().find(|p| p.name() == name).ok_or_else(|| AimError::UnknownFree {
-            name: name.to_string(),
-            expected: LaunchFree::ALL.map(|p| p.name()).join(", "),
-        })
+        LaunchFree::ALL
+            .into_iter()
+            .find(|p| p.name() == name)
+            .ok_or_else(|| AimError::UnknownFree { name: name.to_string(), expected: LaunchFree::ALL.map(|p| p.name()).join(", ") })
     }
 }
 
@@ -513,7 +514,11 @@ pub fn aim_launch(target: [f64; 3], wall: Wall, free: &[LaunchFree], fixed: &cra
         let (low, high) = p.range();
         let start = given(p).unwrap_or_else(|| default_start(p));
         if !(start >= low && start <= high) {
-            return Err(AimError::Invalid { name: p.name(), values: vec![start], requirement: "within the free parameter's range (the solve's start)" });
+            return Err(AimError::Invalid {
+                name: p.name(),
+                values: vec![start],
+                requirement: "within the free parameter's range (the solve's start)",
+            });
         }
         parameters.push(Free { name: p.name(), unit: p.unit(), low, high, start });
     }

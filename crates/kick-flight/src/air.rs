@@ -68,12 +68,7 @@ impl Air {
 
     /// From what the user gave: `density` (kg/m³) alone, or any of
     /// `temperature` (°C), `pressure` (Pa), `altitude` (m).
-    pub fn new(
-        density: Option<f64>,
-        temperature: Option<f64>,
-        pressure: Option<f64>,
-        altitude: Option<f64>,
-    ) -> Result<Air, FlightError> {
+    pub fn new(density: Option<f64>, temperature: Option<f64>, pressure: Option<f64>, altitude: Option<f64>) -> Result<Air, FlightError> {
         if let Some(rho) = density {
             for (name, given) in [("temperature", temperature), ("pressure", pressure), ("altitude", altitude)] {
                 if given.is_some() {

@@ -60,9 +60,11 @@ pub mod validation;
 
 pub use aim::{aim_launch, aim_with, AimError, AimSolution, LaunchFree, Scene, Wall};
 pub use air::Air;
-pub use many::{flight_many, Column};
 pub use coefficients::{DragModel, LiftModel};
-pub use solve::{history, outcome_columns, solve, Aerodynamics, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling, OUTCOME_COLUMNS};
+pub use many::{flight_many, Column};
+pub use solve::{
+    history, outcome_columns, solve, Aerodynamics, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling, OUTCOME_COLUMNS,
+};
 pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 
 use kick_core::short;

@@ -73,9 +73,7 @@ impl FlightError {
     pub fn status(&self) -> kick_core::Status {
         use kick_core::Status;
         match self {
-            FlightError::NoLanding { .. } | FlightError::Integration { .. } | FlightError::NonFinite { .. } => {
-                Status::NumericalFailure
-            }
+            FlightError::NoLanding { .. } | FlightError::Integration { .. } | FlightError::NonFinite { .. } => Status::NumericalFailure,
             FlightError::InvalidParameter { .. }
             | FlightError::Missing { .. }
             | FlightError::WrongLength { .. }
@@ -124,10 +122,7 @@ mod tests {
     fn bad_calls_are_refused() {
         let base = FlightSpec::from_exit_speed(25.0, 20.0);
         let short = [Column { parameter: FlightParameter::Spin, values: &[1.0, 2.0, 3.0, 4.0] }];
-        assert_eq!(
-            flight_many(&base, &short, 2, None),
-            Err(FlightError::WrongLength { name: "spin", expected: 6, found: 4 })
-        );
+        assert_eq!(flight_many(&base, &short, 2, None), Err(FlightError::WrongLength { name: "spin", expected: 6, found: 4 }));
         assert!(matches!(flight_many(&base, &[], 1, Some(0)), Err(FlightError::InvalidParameter { name: "threads", .. })));
         // The workspace's one bound (kick_core::threads), as `--threads` and Python's `threads=`.
         let max = kick_core::threads::max_threads();

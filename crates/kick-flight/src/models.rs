@@ -14,11 +14,7 @@ pub fn plain_kick() -> Flight {
 /// A typical direct free kick: 27 m/s at 16° elevation with 9 rev/s of
 /// sidespin (ω_z > 0 curves it toward +y), crossing the wall plane.
 pub fn free_kick() -> Flight {
-    build(FlightSpec {
-        spin: Some([0.0, 0.0, 9.0 * TAU]),
-        distance: Some(WALL_DISTANCE),
-        ..FlightSpec::from_exit_speed(27.0, 16.0)
-    })
+    build(FlightSpec { spin: Some([0.0, 0.0, 9.0 * TAU]), distance: Some(WALL_DISTANCE), ..FlightSpec::from_exit_speed(27.0, 16.0) })
 }
 
 /// `rows` free kicks for [`crate::flight_many`]: the base (18° elevation,

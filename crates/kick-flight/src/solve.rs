@@ -333,13 +333,7 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
                 let t_cross = locate(|t| dense.component(X, t) - d, t0, t1);
                 if t_land.is_none_or(|t| t_cross <= t) {
                     let s = dense.at(t_cross);
-                    crossing = Some(Crossing {
-                        distance: d,
-                        time: t_cross,
-                        height: s[Z],
-                        lateral_offset: s[Y],
-                        velocity: vector(&s, 3),
-                    });
+                    crossing = Some(Crossing { distance: d, time: t_cross, height: s[Z], lateral_offset: s[Y], velocity: vector(&s, 3) });
                 }
             }
             if let Some(callback) = on_step.as_deref_mut() {
@@ -396,11 +390,7 @@ pub fn history(flight: &Flight, sampling: Sampling) -> Result<FlightHistory, Fli
     let times: Vec<f64> = match sampling {
         Sampling::Samples(n) => {
             if n < 2 {
-                return Err(FlightError::InvalidParameter {
-                    name: "samples",
-                    value: n as f64,
-                    requirement: ">= 2 (both ends)",
-                });
+                return Err(FlightError::InvalidParameter { name: "samples", value: n as f64, requirement: ">= 2 (both ends)" });
             }
             if n > MAX_SAMPLES {
                 return Err(FlightError::TooManySamples { name: "samples", requested: n as f64, limit: MAX_SAMPLES });
@@ -471,11 +461,7 @@ mod tests {
 
     #[test]
     fn interval_history_and_vacuum_positions() {
-        let spec = FlightSpec {
-            drag_coefficient: Some(0.0),
-            lift_coefficient: Some(0.0),
-            ..FlightSpec::from_exit_speed(20.0, 40.0)
-        };
+        let spec = FlightSpec { drag_coefficient: Some(0.0), lift_coefficient: Some(0.0), ..FlightSpec::from_exit_speed(20.0, 40.0) };
         let flight = spec.build().unwrap();
         let h = history(&flight, Sampling::Interval(0.1)).unwrap();
         let t_end = h.outcome.flight_time;
@@ -493,26 +479,11 @@ mod tests {
     #[test]
     fn bad_sampling_is_refused_by_name() {
         let flight = models::plain_kick();
-        assert!(matches!(
-            history(&flight, Sampling::Samples(1)),
-            Err(FlightError::InvalidParameter { name: "samples", .. })
-        ));
-        assert!(matches!(
-            history(&flight, Sampling::Interval(0.0)),
-            Err(FlightError::InvalidParameter { name: "interval", .. })
-        ));
-        assert!(matches!(
-            history(&flight, Sampling::Interval(f64::NAN)),
-            Err(FlightError::InvalidParameter { name: "interval", .. })
-        ));
-        assert!(matches!(
-            history(&flight, Sampling::Interval(1e-9)),
-            Err(FlightError::TooManySamples { name: "interval", .. })
-        ));
-        assert!(matches!(
-            history(&flight, Sampling::Samples(MAX_SAMPLES + 1)),
-            Err(FlightError::TooManySamples { name: "samples", .. })
-        ));
+        assert!(matches!(history(&flight, Sampling::Samples(1)), Err(FlightError::InvalidParameter { name: "samples", .. })));
+        assert!(matches!(history(&flight, Sampling::Interval(0.0)), Err(FlightError::InvalidParameter { name: "interval", .. })));
+        assert!(matches!(history(&flight, Sampling::Interval(f64::NAN)), Err(FlightError::InvalidParameter { name: "interval", .. })));
+        assert!(matches!(history(&flight, Sampling::Interval(1e-9)), Err(FlightError::TooManySamples { name: "interval", .. })));
+        assert!(matches!(history(&flight, Sampling::Samples(MAX_SAMPLES + 1)), Err(FlightError::TooManySamples { name: "samples", .. })));
     }
 
     /// Lift from the spin across the flight direction only: with ω = (a, b, 0)

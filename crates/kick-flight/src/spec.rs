@@ -74,50 +74,175 @@ use DefaultValue::{Derived, Number, Unset};
 /// between parameters are in the requirement text.
 pub static FLIGHT_PARAMETERS: [ParameterDef; 17] = [
     flight("speed", "|v0|", "m/s", Unset("required"), Open(0.0), Unbounded, "finite and > 0, m/s", "Launch speed of the ball"),
-    flight("launch_angle", "θ", "deg", Unset("required"), Open(0.0), Closed(90.0), "in (0, 90] degrees (the ball starts on the ground)",
-        "Elevation of the launch velocity above the ground"),
-    flight("azimuth", "ψ", "deg", Number(0.0), Closed(-180.0), Closed(180.0), "in [-180, 180] degrees",
-        "Horizontal direction of launch from the x axis, positive toward +y"),
+    flight(
+        "launch_angle",
+        "θ",
+        "deg",
+        Unset("required"),
+        Open(0.0),
+        Closed(90.0),
+        "in (0, 90] degrees (the ball starts on the ground)",
+        "Elevation of the launch velocity above the ground",
+    ),
+    flight(
+        "azimuth",
+        "ψ",
+        "deg",
+        Number(0.0),
+        Closed(-180.0),
+        Closed(180.0),
+        "in [-180, 180] degrees",
+        "Horizontal direction of launch from the x axis, positive toward +y",
+    ),
     ParameterDef {
         shape: Shape::Vector3,
-        ..flight("launch_velocity", "v0", "m/s", Unset("none: speed, launch_angle and azimuth give it"), Unbounded, Unbounded,
+        ..flight(
+            "launch_velocity",
+            "v0",
+            "m/s",
+            Unset("none: speed, launch_angle and azimuth give it"),
+            Unbounded,
+            Unbounded,
             "three finite numbers with a vertical component > 0, m/s; not with speed, launch_angle or azimuth",
-            "Launch velocity as a vector, world frame, instead of speed and angles")
+            "Launch velocity as a vector, world frame, instead of speed and angles",
+        )
     },
     ParameterDef {
         shape: Shape::Vector3,
         default: DefaultValue::Vector([0.0; 3]),
-        ..flight("spin", "ω", "rad/s", Number(0.0), Unbounded, Unbounded, "three finite numbers, rad/s",
+        ..flight(
+            "spin",
+            "ω",
+            "rad/s",
+            Number(0.0),
+            Unbounded,
+            Unbounded,
+            "three finite numbers, rad/s",
             "Spin vector at launch, world frame (x along the kick, z up): for a kick along +x, \
-             ω_z > 0 curves the ball toward +y and ω_y < 0 (backspin) lifts it")
+             ω_z > 0 curves the ball toward +y and ω_y < 0 (backspin) lifts it",
+        )
     },
-    flight("ball_mass", "m", "kg", Number(DEFAULT_BALL_MASS), Open(0.0), Unbounded, "finite and > 0, kg",
-        "Ball mass (Law 2: 0.41-0.45 kg)"),
-    flight("ball_radius", "R", "m", Number(DEFAULT_BALL_RADIUS), Open(0.0), Unbounded, "finite and > 0, m",
-        "Ball radius (Law 2: circumference 0.68-0.70 m)"),
-    flight("gravity", "g", "m/s^2", Number(GRAVITY), Open(0.0), Unbounded, "finite and > 0, m/s^2 (the ball must come down)",
-        "Gravitational acceleration"),
-    flight("air_density", "ρ", "kg/m^3", Number(SEA_LEVEL_DENSITY), Open(0.0), Unbounded,
-        "> 0; not with temperature, pressure or altitude", "Air density (viscosity then at 15 °C)"),
-    flight("temperature", "T", "°C", Derived("standard atmosphere at the altitude (15 at sea level)"), Open(-273.15), Unbounded,
-        "> -273.15", "Air temperature, for density (ideal gas) and viscosity (Sutherland)"),
-    flight("pressure", "p", "Pa", Derived("standard atmosphere at the altitude (101325 at sea level)"), Open(0.0), Unbounded,
-        "> 0", "Air pressure"),
-    flight("altitude", "h", "m", Number(0.0), Closed(-500.0), Closed(11000.0),
+    flight(
+        "ball_mass",
+        "m",
+        "kg",
+        Number(DEFAULT_BALL_MASS),
+        Open(0.0),
+        Unbounded,
+        "finite and > 0, kg",
+        "Ball mass (Law 2: 0.41-0.45 kg)",
+    ),
+    flight(
+        "ball_radius",
+        "R",
+        "m",
+        Number(DEFAULT_BALL_RADIUS),
+        Open(0.0),
+        Unbounded,
+        "finite and > 0, m",
+        "Ball radius (Law 2: circumference 0.68-0.70 m)",
+    ),
+    flight(
+        "gravity",
+        "g",
+        "m/s^2",
+        Number(GRAVITY),
+        Open(0.0),
+        Unbounded,
+        "finite and > 0, m/s^2 (the ball must come down)",
+        "Gravitational acceleration",
+    ),
+    flight(
+        "air_density",
+        "ρ",
+        "kg/m^3",
+        Number(SEA_LEVEL_DENSITY),
+        Open(0.0),
+        Unbounded,
+        "> 0; not with temperature, pressure or altitude",
+        "Air density (viscosity then at 15 °C)",
+    ),
+    flight(
+        "temperature",
+        "T",
+        "°C",
+        Derived("standard atmosphere at the altitude (15 at sea level)"),
+        Open(-273.15),
+        Unbounded,
+        "> -273.15",
+        "Air temperature, for density (ideal gas) and viscosity (Sutherland)",
+    ),
+    flight(
+        "pressure",
+        "p",
+        "Pa",
+        Derived("standard atmosphere at the altitude (101325 at sea level)"),
+        Open(0.0),
+        Unbounded,
+        "> 0",
+        "Air pressure",
+    ),
+    flight(
+        "altitude",
+        "h",
+        "m",
+        Number(0.0),
+        Closed(-500.0),
+        Closed(11000.0),
         "[-500, 11000]; not with both temperature and pressure",
-        "Geopotential altitude: standard-atmosphere temperature and pressure where not given"),
-    flight("drag_coefficient", "C_D", "1", Derived("Goff & Carré (2010) drag crisis in Re (Eq. 3), with spin above it (Eq. 4)"), Closed(0.0), Unbounded,
-        "finite and >= 0", "A constant drag coefficient instead of the drag-crisis model"),
-    flight("ball_panels", "N_p", "1", Number(BallConstruction::DEFAULT_PANELS as f64), Closed(6.0), Closed(32.0),
+        "Geopotential altitude: standard-atmosphere temperature and pressure where not given",
+    ),
+    flight(
+        "drag_coefficient",
+        "C_D",
+        "1",
+        Derived("Goff & Carré (2010) drag crisis in Re (Eq. 3), with spin above it (Eq. 4)"),
+        Closed(0.0),
+        Unbounded,
+        "finite and >= 0",
+        "A constant drag coefficient instead of the drag-crisis model",
+    ),
+    flight(
+        "ball_panels",
+        "N_p",
+        "1",
+        Number(BallConstruction::DEFAULT_PANELS as f64),
+        Closed(6.0),
+        Closed(32.0),
         PANELS_REQUIREMENT,
         "Panel count of the ball: moves the drag crisis to its published critical Re (Asai & Hong 2021: 32, 14, 8, 6); \
-         not with drag_coefficient"),
-    flight("lift_coefficient", "C_L", "1", Derived("saturating fit in S to published soccer-ball data"), Closed(0.0), Unbounded,
-        "finite and >= 0", "A constant lift coefficient instead of the C_L(S) model"),
-    flight("spin_decay", "k_M", "1", Number(0.0), Closed(0.0), Unbounded, "finite and >= 0",
-        "Slope of the aerodynamic moment coefficient C_M = k_M S; torque -(1/2) ρ A R² k_M |v| ω"),
-    flight("distance", "d", "m", Unset("none"), Open(0.0), Unbounded, "finite and > 0, m",
-        "Report where the ball crosses the vertical plane x = d (wall at 9.15 m, goal line)"),
+         not with drag_coefficient",
+    ),
+    flight(
+        "lift_coefficient",
+        "C_L",
+        "1",
+        Derived("saturating fit in S to published soccer-ball data"),
+        Closed(0.0),
+        Unbounded,
+        "finite and >= 0",
+        "A constant lift coefficient instead of the C_L(S) model",
+    ),
+    flight(
+        "spin_decay",
+        "k_M",
+        "1",
+        Number(0.0),
+        Closed(0.0),
+        Unbounded,
+        "finite and >= 0",
+        "Slope of the aerodynamic moment coefficient C_M = k_M S; torque -(1/2) ρ A R² k_M |v| ω",
+    ),
+    flight(
+        "distance",
+        "d",
+        "m",
+        Unset("none"),
+        Open(0.0),
+        Unbounded,
+        "finite and > 0, m",
+        "Report where the ball crosses the vertical plane x = d (wall at 9.15 m, goal line)",
+    ),
 ];
 
 impl FlightParameter {
@@ -287,7 +412,8 @@ impl FlightSpec {
     /// Fill defaults and validate.
     pub fn build(&self) -> Result<Flight, FlightError> {
         if let Some(velocity) = self.launch_velocity {
-            let angles = [("speed", self.speed.is_some()), ("launch_angle", self.launch_angle.is_some()), ("azimuth", self.azimuth.is_some())];
+            let angles =
+                [("speed", self.speed.is_some()), ("launch_angle", self.launch_angle.is_some()), ("azimuth", self.azimuth.is_some())];
             if let Some((name, _)) = angles.iter().find(|(_, set)| *set) {
                 return Err(FlightError::Conflict { first: "launch_velocity", second: name });
             }
@@ -296,12 +422,7 @@ impl FlightSpec {
         let speed = self.speed.ok_or(FlightError::Missing { name: "speed" })?;
         let speed = check("speed", speed, speed > 0.0, "finite and > 0, m/s")?;
         let angle = self.launch_angle.ok_or(FlightError::Missing { name: "launch_angle" })?;
-        let angle = check(
-            "launch_angle",
-            angle,
-            angle > 0.0 && angle <= 90.0,
-            "in (0, 90] degrees (the ball starts on the ground)",
-        )?;
+        let angle = check("launch_angle", angle, angle > 0.0 && angle <= 90.0, "in (0, 90] degrees (the ball starts on the ground)")?;
         let azimuth = self.azimuth.unwrap_or(0.0);
         let azimuth = check("azimuth", azimuth, azimuth.abs() <= 180.0, "in [-180, 180] degrees")?;
         let (theta, psi) = (angle.to_radians(), azimuth.to_radians());
@@ -398,12 +519,8 @@ impl Flight {
 
     /// The same flight solved at another relative tolerance, in (0, 1e-3].
     pub fn with_relative_tolerance(mut self, relative_tolerance: f64) -> Result<Flight, FlightError> {
-        self.relative_tolerance = check(
-            "relative_tolerance",
-            relative_tolerance,
-            relative_tolerance > 0.0 && relative_tolerance <= 1e-3,
-            "in (0, 1e-3]",
-        )?;
+        self.relative_tolerance =
+            check("relative_tolerance", relative_tolerance, relative_tolerance > 0.0 && relative_tolerance <= 1e-3, "in (0, 1e-3]")?;
         Ok(self)
     }
 
@@ -568,10 +685,7 @@ mod tests {
     #[test]
     fn spin_takes_three_numbers() {
         let mut s = FlightSpec::default();
-        assert_eq!(
-            s.set(FlightParameter::Spin, &[1.0, 2.0]),
-            Err(FlightError::WrongLength { name: "spin", expected: 3, found: 2 })
-        );
+        assert_eq!(s.set(FlightParameter::Spin, &[1.0, 2.0]), Err(FlightError::WrongLength { name: "spin", expected: 3, found: 2 }));
         assert!(s.set(FlightParameter::Spin, &[1.0, 2.0, 3.0]).is_ok());
         assert_eq!(s.spin, Some([1.0, 2.0, 3.0]));
         assert!(matches!(FlightParameter::from_name("spinn"), Err(FlightError::UnknownParameter { .. })));

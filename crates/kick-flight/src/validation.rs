@@ -103,12 +103,7 @@ pub fn drag_crisis_comparisons(m: &Measurements) -> Result<Vec<Comparison>, Flig
             "one curve for every ball: the model has no panel dependence",
         ));
     }
-    rows.push(Comparison::new(
-        "Reynolds number of the drag transition",
-        get(keys::TRANSITION_RE)?,
-        model.midpoint,
-        "logistic centre",
-    ));
+    rows.push(Comparison::new("Reynolds number of the drag transition", get(keys::TRANSITION_RE)?, model.midpoint, "logistic centre"));
     rows.push(Comparison::new(
         "speed of the drag transition (R = 0.11 m, standard sea-level air)",
         get(keys::TRANSITION_SPEED)?,
@@ -190,12 +185,8 @@ pub fn free_kicks(m: &Measurements, launch_angle: f64, distance: f64) -> Result<
 /// One free kick: `speed` m/s at `launch_angle` degrees with sidespin `spin`
 /// rad/s about the vertical, its crossing of x = `distance`.
 pub fn free_kick(speed: f64, spin: f64, launch_angle: f64, distance: f64) -> Result<FreeKickDeflection, FlightValidationError> {
-    let flight = FlightSpec {
-        spin: Some([0.0, 0.0, spin]),
-        distance: Some(distance),
-        ..FlightSpec::from_exit_speed(speed, launch_angle)
-    }
-    .build()?;
+    let flight = FlightSpec { spin: Some([0.0, 0.0, spin]), distance: Some(distance), ..FlightSpec::from_exit_speed(speed, launch_angle) }
+        .build()?;
     let crossing = solve(&flight)?.crossing.ok_or(FlightValidationError::NoCrossing { speed, spin, distance })?;
     let theta = launch_angle.to_radians();
     let k = flight.air().density * std::f64::consts::PI * flight.ball_radius().powi(2) / (2.0 * flight.ball_mass());

@@ -50,13 +50,8 @@ pub enum Observable {
 }
 
 impl Observable {
-    pub const ALL: [Observable; 5] = [
-        Observable::VBallOut,
-        Observable::VFootOut,
-        Observable::ContactTime,
-        Observable::PeakForce,
-        Observable::MaxCompression,
-    ];
+    pub const ALL: [Observable; 5] =
+        [Observable::VBallOut, Observable::VFootOut, Observable::ContactTime, Observable::PeakForce, Observable::MaxCompression];
     pub const NAMES: &'static str = "v_ball_out, v_foot_out, contact_time, peak_force, max_compression";
 
     pub fn name(self) -> &'static str {
@@ -80,9 +75,10 @@ impl Observable {
     }
 
     pub fn from_name(name: &str) -> Result<Observable, IdentifyError> {
-        Observable::ALL.into_iter().find(|o| o.name() == name).ok_or_else(|| {
-            IdentifyError::UnknownObservable { name: name.to_string(), expected: Observable::NAMES }
-        })
+        Observable::ALL
+            .into_iter()
+            .find(|o| o.name() == name)
+            .ok_or_else(|| IdentifyError::UnknownObservable { name: name.to_string(), expected: Observable::NAMES })
     }
 
     pub fn value(self, outcome: &Outcome) -> f64 {
@@ -120,8 +116,7 @@ pub enum Channel {
 }
 
 impl Channel {
-    pub const ALL: [Channel; 4] =
-        [Channel::Force, Channel::Compression, Channel::FootVelocity, Channel::BallVelocity];
+    pub const ALL: [Channel; 4] = [Channel::Force, Channel::Compression, Channel::FootVelocity, Channel::BallVelocity];
     pub const NAMES: &'static str = "force, compression, foot_velocity, ball_velocity";
 
     pub fn name(self) -> &'static str {
@@ -143,9 +138,10 @@ impl Channel {
     }
 
     pub fn from_name(name: &str) -> Result<Channel, IdentifyError> {
-        Channel::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| {
-            IdentifyError::UnknownChannel { name: name.to_string(), expected: Channel::NAMES }
-        })
+        Channel::ALL
+            .into_iter()
+            .find(|c| c.name() == name)
+            .ok_or_else(|| IdentifyError::UnknownChannel { name: name.to_string(), expected: Channel::NAMES })
     }
 }
 
@@ -166,13 +162,8 @@ impl HistoryData {
     /// [`MAX_HISTORY_ROWS`] data rows).
     pub fn parse_csv(text: &str, source_name: &str) -> Result<HistoryData, IdentifyError> {
         let err = |line: usize, message: String| IdentifyError::data(format!("{source_name}:{line}"), message);
-        let mut lines = text
-            .lines()
-            .enumerate()
-            .map(|(i, l)| (i + 1, l.trim()))
-            .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-        let (header_line, header) =
-            lines.next().ok_or_else(|| IdentifyError::data(source_name, "empty file: expected a header line"))?;
+        let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l.trim())).filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+        let (header_line, header) = lines.next().ok_or_else(|| IdentifyError::data(source_name, "empty file: expected a header line"))?;
         let names: Vec<&str> = header.split(',').map(str::trim).collect();
         if names.first() != Some(&"time") {
             // The found text is not quoted: the file may be any file.
@@ -200,9 +191,7 @@ impl HistoryData {
             }
             let mut values = Vec::with_capacity(fields.len());
             for (field, name) in fields.iter().zip(&names) {
-                let v: f64 = field
-                    .parse()
-                    .map_err(|_| err(number, format!("column `{name}`: `{field}` is not a number")))?;
+                let v: f64 = field.parse().map_err(|_| err(number, format!("column `{name}`: `{field}` is not a number")))?;
                 if !v.is_finite() {
                     return Err(err(number, format!("column `{name}`: {v} is not finite")));
                 }
@@ -302,12 +291,7 @@ impl WeightedHistory {
                         format!("`{}` = {}: must be finite and > 0", channel.name(), kick_core::short(s)),
                     ))
                 }
-                None => {
-                    return Err(IdentifyError::data(
-                        "history sigma",
-                        format!("no sigma for channel `{}`", channel.name()),
-                    ))
-                }
+                None => return Err(IdentifyError::data("history sigma", format!("no sigma for channel `{}`", channel.name()))),
             }
         }
         for channel in sigma.keys() {
@@ -372,7 +356,10 @@ impl Observations {
                 return Err(IdentifyError::data(s.observable.name(), format!("value {} is not finite", s.value)));
             }
             if !(s.sigma.is_finite() && s.sigma > 0.0) {
-                return Err(IdentifyError::data(s.observable.name(), format!("sigma {}: must be finite and > 0", kick_core::short(s.sigma))));
+                return Err(IdentifyError::data(
+                    s.observable.name(),
+                    format!("sigma {}: must be finite and > 0", kick_core::short(s.sigma)),
+                ));
             }
         }
         Ok(())
@@ -430,7 +417,10 @@ impl FitSpec {
             None => None,
         };
         let spec = self.scenario.with_law_keys(law, self.restitution).map_err(|key| {
-            IdentifyError::data(source_name, format!("`{key}` is set both at the top level and in [scenario]; set it once, at the top level"))
+            IdentifyError::data(
+                source_name,
+                format!("`{key}` is set both at the top level and in [scenario]; set it once, at the top level"),
+            )
         })?;
         let scenario = spec.build().map_err(|e| IdentifyError::data(source_name, e.to_string()))?;
         ModelPoint::new(scenario, self.time_offset.unwrap_or(0.0))
@@ -467,7 +457,8 @@ impl FitSpec {
             Some(h) => {
                 let file = path.parent().unwrap_or(Path::new(".")).join(&h.file);
                 let file_name = file.display().to_string();
-                let csv = kick_core::input::read_text(&file, kick_core::input::MAX_DATA_BYTES).map_err(|e| IdentifyError::data(&file_name, e))?;
+                let csv =
+                    kick_core::input::read_text(&file, kick_core::input::MAX_DATA_BYTES).map_err(|e| IdentifyError::data(&file_name, e))?;
                 let data = HistoryData::parse_csv(&csv, &file_name)?;
                 let mut sigma = BTreeMap::new();
                 for (k, v) in &h.sigma {
@@ -511,17 +502,14 @@ mod tests {
         let h = HistoryData::parse_csv("time,force\n0,1\n", "k").unwrap();
         assert!(WeightedHistory::new(h.clone(), BTreeMap::new()).is_err());
         assert!(WeightedHistory::new(h.clone(), BTreeMap::from([(Channel::Force, -1.0)])).is_err());
-        assert!(WeightedHistory::new(
-            h.clone(),
-            BTreeMap::from([(Channel::Force, 1.0), (Channel::Compression, 1.0)])
-        )
-        .is_err());
+        assert!(WeightedHistory::new(h.clone(), BTreeMap::from([(Channel::Force, 1.0), (Channel::Compression, 1.0)])).is_err());
         assert!(WeightedHistory::new(h, BTreeMap::from([(Channel::Force, 1.0)])).is_ok());
     }
 
     #[test]
     fn spec_parses_toml_and_json() {
-        let toml = "free = [\"stiffness\"]\n[scenario]\nstiffness = 3e5\n[[scalar]]\nobservable = \"v_ball_out\"\nvalue = 31.98\nsigma = 0.005\n";
+        let toml =
+            "free = [\"stiffness\"]\n[scenario]\nstiffness = 3e5\n[[scalar]]\nobservable = \"v_ball_out\"\nvalue = 31.98\nsigma = 0.005\n";
         let spec = FitSpec::parse(toml, "a.toml").unwrap();
         assert_eq!(spec.scenario.stiffness, Some(3e5));
         assert_eq!(spec.scalar[0].observable, Observable::VBallOut);

@@ -209,11 +209,7 @@ impl FitReport {
         let sigma: Option<Vec<f64>> = self.estimates.iter().map(|e| e.standard_uncertainty).collect();
         let sigma = sigma?;
         Some(
-            correlation
-                .iter()
-                .enumerate()
-                .map(|(i, row)| row.iter().enumerate().map(|(j, r)| r * sigma[i] * sigma[j]).collect())
-                .collect(),
+            correlation.iter().enumerate().map(|(i, row)| row.iter().enumerate().map(|(j, r)| r * sigma[i] * sigma[j]).collect()).collect(),
         )
     }
 }
@@ -383,12 +379,16 @@ pub fn minimise(problem: &FitProblem, options: &FitOptions) -> Result<FitReport,
     fit_checked(problem, options, false, &|| false)
 }
 
-fn fit_checked(problem: &FitProblem, options: &FitOptions, determined: bool, cancel: &dyn Fn() -> bool) -> Result<FitReport, IdentifyError> {
+fn fit_checked(
+    problem: &FitProblem,
+    options: &FitOptions,
+    determined: bool,
+    cancel: &dyn Fn() -> bool,
+) -> Result<FitReport, IdentifyError> {
     let mut best = fit_from(problem, options, determined, cancel)?;
-    let (Some(index), Some(history)) = (
-        problem.free.iter().position(|&p| p == FitParameter::TimeOffset),
-        problem.observations.history.as_ref(),
-    ) else {
+    let (Some(index), Some(history)) =
+        (problem.free.iter().position(|&p| p == FitParameter::TimeOffset), problem.observations.history.as_ref())
+    else {
         return Ok(best);
     };
     let times = &history.data.times;
@@ -563,24 +563,15 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
             })
         })
         .collect::<Result<Vec<_>, IdentifyError>>()?;
-    let correlation = covariance.as_ref().map(|c| {
-        (0..n)
-            .map(|i| (0..n).map(|j| c[(i, j)] / (c[(i, i)] * c[(j, j)]).sqrt()).collect())
-            .collect()
-    });
+    let correlation =
+        covariance.as_ref().map(|c| (0..n).map(|i| (0..n).map(|j| c[(i, j)] / (c[(i, i)] * c[(j, j)]).sqrt()).collect()).collect());
     let residuals = labels
         .into_iter()
         .enumerate()
         .map(|(i, label)| {
             let observed = solved.observed[i];
             let sigma = solved.sigma[i];
-            Residual {
-                label,
-                observed,
-                predicted: observed + residual_vector[i] * sigma,
-                sigma,
-                weighted: residual_vector[i],
-            }
+            Residual { label, observed, predicted: observed + residual_vector[i] * sigma, sigma, weighted: residual_vector[i] }
         })
         .collect();
     let report = FitReport {

@@ -55,11 +55,6 @@ pub const RESTITUTION_LAWS: [LawKind; 5] =
 pub fn restitution_table(scenario: &Scenario, targets: &[f64], solver: &Accurate) -> Result<Vec<Vec<f64>>, KickError> {
     targets
         .iter()
-        .map(|&e| {
-            RESTITUTION_LAWS
-                .iter()
-                .map(|&kind| Ok(solver.solve(&scenario.with_law(kind, Some(e))?)?.restitution))
-                .collect()
-        })
+        .map(|&e| RESTITUTION_LAWS.iter().map(|&kind| Ok(solver.solve(&scenario.with_law(kind, Some(e))?)?.restitution)).collect())
         .collect()
 }

@@ -16,11 +16,7 @@ pub const RECORD_FRACTION: f64 = 1.0 / 400.0;
 /// Model predictions at the observations, in the order of
 /// [`Observations`]: scalars first, then each history channel over all
 /// times, a history sample at data time t read at model time t − t0.
-pub fn predict(
-    solver: &Accurate,
-    point: &ModelPoint,
-    observations: &Observations,
-) -> Result<Vec<f64>, IdentifyError> {
+pub fn predict(solver: &Accurate, point: &ModelPoint, observations: &Observations) -> Result<Vec<f64>, IdentifyError> {
     let scenario = &point.scenario;
     let mut out = Vec::with_capacity(observations.len());
     match &observations.history {
@@ -98,11 +94,7 @@ impl Trajectory {
         let (a, b) = (&self.samples[i], &self.samples[i + 1]);
         let h = b.time - a.time;
         let u = (t - a.time) / h;
-        let (mf, mb, fd) = (
-            self.scenario.effective_foot_mass(),
-            self.scenario.ball_mass(),
-            self.scenario.drive_force(),
-        );
+        let (mf, mb, fd) = (self.scenario.effective_foot_mass(), self.scenario.ball_mass(), self.scenario.drive_force());
         let acc_f = |s: &Sample| (fd - s.force) / mf; // Eq. 13
         let acc_b = |s: &Sample| s.force / mb; // Eq. 14
         [

@@ -239,11 +239,7 @@ impl ModelPoint {
             }
             _ => return None,
         };
-        Some(IdentifyError::NotApplicable {
-            parameter: parameter.name(),
-            context: format!("to contact law `{}`", context.name()),
-            reason,
-        })
+        Some(IdentifyError::NotApplicable { parameter: parameter.name(), context: format!("to contact law `{}`", context.name()), reason })
     }
 }
 

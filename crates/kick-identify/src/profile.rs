@@ -153,8 +153,7 @@ pub fn identifiability_study(
     let channels = Channel::ALL;
     let sigma = synthetic::lab_sigma(&channels);
     let point = ModelPoint::from(*truth);
-    let histories =
-        synthetic::history(&options.solver, &point, synthetic::time_grid(truth, times, 1.2), &sigma, seed)?;
+    let histories = synthetic::history(&options.solver, &point, synthetic::time_grid(truth, times, 1.2), &sigma, seed)?;
     let factors = log_factors(spread, profile_points);
     let map_factors = log_factors(spread, map_points);
     let pair = (Parameter::Stiffness.into(), Parameter::Damping.into());

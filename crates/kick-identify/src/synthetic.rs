@@ -87,12 +87,7 @@ pub fn history(
 
 /// Scalar observables of `truth`, each plus N(0, sigma²) noise from `seed`
 /// (seed `None`: exact values).
-pub fn scalars(
-    solver: &Accurate,
-    truth: &Scenario,
-    sigma: &[(Observable, f64)],
-    seed: Option<u64>,
-) -> Result<Observations, IdentifyError> {
+pub fn scalars(solver: &Accurate, truth: &Scenario, sigma: &[(Observable, f64)], seed: Option<u64>) -> Result<Observations, IdentifyError> {
     let outcome = kick_core::Solver::solve(solver, truth)?;
     let mut noise = seed.map(Gaussian::new);
     let scalars = sigma

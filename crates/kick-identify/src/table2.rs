@@ -100,11 +100,8 @@ pub fn fit_row_to(index: usize, observations: Observations, options: &FitOptions
     match parameter {
         None => {
             let outcome = kick_core::Solver::solve(&options.solver, &Scenario::baseline())?;
-            let residuals = observations
-                .scalars
-                .iter()
-                .map(|s| (s.observable, (s.observable.value(&outcome) - s.value) / s.sigma))
-                .collect();
+            let residuals =
+                observations.scalars.iter().map(|s| (s.observable, (s.observable.value(&outcome) - s.value) / s.sigma)).collect();
             Ok(Table2Fit { name: row.name.into(), parameter: None, report: None, baseline_residuals: Some(residuals) })
         }
         Some(p) => {

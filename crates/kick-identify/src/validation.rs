@@ -190,21 +190,15 @@ pub fn with_ball_speed(scenario: &Scenario, ball_speed: f64) -> Result<Scenario,
         Err(_) => f64::NAN,
     };
     let guess = scenario.foot_speed() * ball_speed / base;
-    let root = kick_core::roots::brent(exit, 0.5 * guess, 2.0 * guess, 1e-12 * guess, 200).ok_or(
-        IdentifyError::NonFinite {
-            quantity: "foot speed",
-            reason: format!("no foot speed in [{:.3}, {:.3}] m/s sends the ball off at {ball_speed} m/s", 0.5 * guess, 2.0 * guess),
-        },
-    )?;
+    let root = kick_core::roots::brent(exit, 0.5 * guess, 2.0 * guess, 1e-12 * guess, 200).ok_or(IdentifyError::NonFinite {
+        quantity: "foot speed",
+        reason: format!("no foot speed in [{:.3}, {:.3}] m/s sends the ball off at {ball_speed} m/s", 0.5 * guess, 2.0 * guess),
+    })?;
     Ok(scenario.with(Parameter::FootSpeed, root.x)?)
 }
 
 fn invalid(m: &Measurements, key: &str, message: &str) -> ValidationError {
-    ValidationError::Measurements(MeasurementError::Invalid {
-        file: m.file.clone(),
-        key: key.to_string(),
-        message: message.to_string(),
-    })
+    ValidationError::Measurements(MeasurementError::Invalid { file: m.file.clone(), key: key.to_string(), message: message.to_string() })
 }
 
 /// The midpoint ± half-width of [low, high] as one observation.
@@ -282,11 +276,7 @@ impl Implied {
 
 /// Least squares of `free` to `targets` from `start` (its law and fixed
 /// values kept), with uncertainties from the stated σ.
-pub fn implied_parameters(
-    targets: &Observations,
-    start: ModelPoint,
-    free: &[FitParameter],
-) -> Result<Implied, ValidationError> {
+pub fn implied_parameters(targets: &Observations, start: ModelPoint, free: &[FitParameter]) -> Result<Implied, ValidationError> {
     let problem = FitProblem { start, free: free.to_vec(), observations: targets.clone() };
     let report = fit(&problem, &FitOptions::default())?;
     let (sigma, correlation) = stated_covariance(&report)?;
@@ -329,8 +319,7 @@ fn stated_covariance(report: &FitReport) -> Result<(Vec<f64>, Vec<Vec<f64>>), Va
     })?;
     let sigma_theta: Vec<f64> = (0..n).map(|i| cov[(i, i)].sqrt()).collect();
     let sigma = report.estimates.iter().zip(&sigma_theta).map(|(e, s)| e.coordinate.slope(e.value).abs() * s).collect();
-    let correlation =
-        (0..n).map(|i| (0..n).map(|k| cov[(i, k)] / (sigma_theta[i] * sigma_theta[k])).collect()).collect();
+    let correlation = (0..n).map(|i| (0..n).map(|k| cov[(i, k)] / (sigma_theta[i] * sigma_theta[k])).collect()).collect();
     Ok((sigma, correlation))
 }
 

@@ -16,10 +16,7 @@ pub struct ImpulseModel {
 
 impl ImpulseModel {
     pub fn passive(impulse: f64) -> Self {
-        ImpulseModel {
-            impulse,
-            drive_impulse: 0.0,
-        }
+        ImpulseModel { impulse, drive_impulse: 0.0 }
     }
 }
 
@@ -29,12 +26,8 @@ impl ExitModel for ImpulseModel {
         finite("drive impulse", self.drive_impulse, 0.0)?;
         // Eq. 2 for the ball; Newton's third law (Eq. 13 integrated) for the foot.
         let ball = scenario.ball_speed() + self.impulse / scenario.ball_mass();
-        let foot = scenario.foot_speed()
-            + (self.drive_impulse - self.impulse) / scenario.effective_foot_mass();
-        Ok(ExitVelocities {
-            foot: finite("foot exit velocity", foot, 0.0)?,
-            ball: finite("ball exit velocity", ball, 0.0)?,
-        })
+        let foot = scenario.foot_speed() + (self.drive_impulse - self.impulse) / scenario.effective_foot_mass();
+        Ok(ExitVelocities { foot: finite("foot exit velocity", foot, 0.0)?, ball: finite("ball exit velocity", ball, 0.0)? })
     }
 }
 

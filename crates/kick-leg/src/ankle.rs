@@ -57,11 +57,8 @@ impl AnkleMobilities {
         let (chain, x) = leg.chain(pose, impact, leg.knee_locked, true)?;
         let n = impact.direction.normalize();
         let g = chain.point_jacobian(chain.bodies.len() - 1, &x).transpose() * n;
-        let inverse = chain
-            .mass_matrix()
-            .cholesky()
-            .ok_or_else(|| LegError::Degenerate("mass matrix not positive definite".into()))?
-            .inverse();
+        let inverse =
+            chain.mass_matrix().cholesky().ok_or_else(|| LegError::Degenerate("mass matrix not positive definite".into()))?.inverse();
         let a = inverse.nrows() - 1; // the ankle is the last joint
         let w = &inverse * &g;
         Ok(AnkleMobilities { free: g.dot(&w), ankle: inverse[(a, a)], coupling: w[a] })
@@ -164,11 +161,7 @@ pub fn coupled_ankle_contact(
 ) -> Result<CoupledContact, LegError> {
     crate::check_range("ankle_stiffness", stiffness, 0.0, f64::MAX, "N m/rad")?;
     if steps < 100 {
-        return Err(LegError::InvalidInput {
-            name: "steps",
-            value: f64::from(steps),
-            requirement: "at least 100 per contact".into(),
-        });
+        return Err(LegError::InvalidInput { name: "steps", value: f64::from(steps), requirement: "at least 100 per contact".into() });
     }
     let mobilities = AnkleMobilities::of(leg, pose, impact)?;
     let system = Reduced {
@@ -192,8 +185,7 @@ pub fn coupled_ankle_contact(
     let free = base.with(Parameter::FootMass, 1.0 / mobilities.free)?;
     let deepest = kick_compliant::stability::reference_compression(&free, &law);
     let (_, contact_stiffness, contact_damping) = law.force_and_gradient(deepest, base.approach_speed());
-    let fastest = (contact_stiffness * contact_mobility + stiffness * mobilities.ankle).sqrt()
-        + contact_damping * contact_mobility;
+    let fastest = (contact_stiffness * contact_mobility + stiffness * mobilities.ankle).sqrt() + contact_damping * contact_mobility;
     let h = (estimate / f64::from(steps)).min(ANKLE_MODE_STEP / fastest);
     // Before contact the leg swings with a still ankle (ω_a = 0, θ = 0); the
     // equations are linear in the leg, so only the response to F matters.
@@ -256,18 +248,10 @@ pub struct ElasticAnkle {
 /// Elastic ankle of stiffness κ: run the coupled leg–ball contact, then find
 /// by Brent's method the m_f that gives the 1D model the same exit speed.
 /// v_b⁺ rises monotonically with m_f (Section 14.1), so the root is unique.
-pub fn elastic_ankle(
-    leg: &Leg,
-    pose: &Pose,
-    impact: &Impact,
-    stiffness: f64,
-    base: &Scenario,
-) -> Result<ElasticAnkle, LegError> {
+pub fn elastic_ankle(leg: &Leg, pose: &Pose, impact: &Impact, stiffness: f64, base: &Scenario) -> Result<ElasticAnkle, LegError> {
     let coupled = coupled_ankle_contact(leg, pose, impact, stiffness, base, ELASTIC_STEPS)?;
     let limits = leg.effective_mass(pose, impact, AnkleJoint::Free)?;
-    let interpolated = |contact_time| {
-        leg.effective_mass(pose, impact, AnkleJoint::Elastic { stiffness, contact_time })
-    };
+    let interpolated = |contact_time| leg.effective_mass(pose, impact, AnkleJoint::Elastic { stiffness, contact_time });
     if coupled.locked_limit {
         let equivalent_mass = limits.locked_ankle;
         let outcome = exit_outcome(equivalent_mass, base)?;

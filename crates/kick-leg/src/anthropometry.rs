@@ -123,8 +123,7 @@ impl Anthropometry {
 
     /// The reference subject of the table (73 kg, 1.741 m).
     pub fn reference() -> Anthropometry {
-        let [thigh, shank, foot] =
-            DE_LEVA_MALE.map(|row| Segment::from_row(&row, DE_LEVA_BODY_MASS, DE_LEVA_STATURE));
+        let [thigh, shank, foot] = DE_LEVA_MALE.map(|row| Segment::from_row(&row, DE_LEVA_BODY_MASS, DE_LEVA_STATURE));
         Anthropometry { thigh, shank, foot }
     }
 

@@ -108,11 +108,10 @@ impl Chain {
         }
         // Jᵀ n: generalized force of a unit impulse along n at x.
         let jtn: DVector<f64> = self.point_jacobian(last, x).transpose() * n;
-        let cholesky = self.mass_matrix().cholesky().ok_or_else(|| {
-            LegError::Degenerate(
-                "the generalized mass matrix is not positive definite (a joint moves no mass)".into(),
-            )
-        })?;
+        let cholesky = self
+            .mass_matrix()
+            .cholesky()
+            .ok_or_else(|| LegError::Degenerate("the generalized mass matrix is not positive definite (a joint moves no mass)".into()))?;
         let y = cholesky.solve(&jtn);
         Ok(jtn.dot(&y))
     }

@@ -43,11 +43,7 @@ use thiserror::Error;
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum LegError {
     #[error("invalid leg input `{name}` = {}: must be {requirement}", kick_core::short(*.value))]
-    InvalidInput {
-        name: &'static str,
-        value: f64,
-        requirement: String,
-    },
+    InvalidInput { name: &'static str, value: f64, requirement: String },
     #[error("degenerate leg configuration: {0}")]
     Degenerate(String),
     #[error(transparent)]
@@ -129,13 +125,7 @@ impl Default for Pose {
     /// Near ball contact in an instep kick: thigh a little forward of
     /// vertical, knee extending, ankle strongly plantarflexed.
     fn default() -> Self {
-        Pose {
-            hip_flexion: 10.0,
-            knee_flexion: 30.0,
-            plantarflexion: 60.0,
-            hip_abduction: 0.0,
-            hip_rotation: 0.0,
-        }
+        Pose { hip_flexion: 10.0, knee_flexion: 30.0, plantarflexion: 60.0, hip_abduction: 0.0, hip_rotation: 0.0 }
     }
 }
 
@@ -155,11 +145,7 @@ pub struct Impact {
 impl Default for Impact {
     /// The instep, about two thirds down the foot, driven horizontally forward.
     fn default() -> Self {
-        Impact {
-            contact_fraction: 0.65,
-            lateral_offset: 0.0,
-            direction: Vector3::x(),
-        }
+        Impact { contact_fraction: 0.65, lateral_offset: 0.0, direction: Vector3::x() }
     }
 }
 
@@ -227,11 +213,7 @@ impl Leg {
         check_range("lateral_offset", impact.lateral_offset, -0.1, 0.1, "m")?;
         let norm = impact.direction.norm();
         if !(norm.is_finite() && norm > 0.0) {
-            return Err(LegError::InvalidInput {
-                name: "direction",
-                value: norm,
-                requirement: "a finite, non-zero vector".into(),
-            });
+            return Err(LegError::InvalidInput { name: "direction", value: norm, requirement: "a finite, non-zero vector".into() });
         }
         if self.variant == Variant::Planar {
             // The planar leg lives in the sagittal plane; out-of-plane input
@@ -267,25 +249,14 @@ impl Leg {
         let hip = Vector3::zeros();
         let knee = hip + s.thigh.length * long_axis(&thigh);
         let ankle = knee + s.shank.length * long_axis(&shank);
-        Geometry {
-            hip,
-            knee,
-            ankle,
-            frames: [thigh, shank, foot],
-        }
+        Geometry { hip, knee, ankle, frames: [thigh, shank, foot] }
     }
 
     /// The chain at `pose`: bodies thigh, shank, foot (or thigh and a rigid
     /// shank+foot when the ankle is locked), joints per variant and hip
     /// support, and the contact point. `knee_locked` merges thigh and shank
     /// too (used to compare with a single rigid body).
-    pub fn chain(
-        &self,
-        pose: &Pose,
-        impact: &Impact,
-        knee_locked: bool,
-        ankle_free: bool,
-    ) -> Result<(Chain, Vector3<f64>), LegError> {
+    pub fn chain(&self, pose: &Pose, impact: &Impact, knee_locked: bool, ankle_free: bool) -> Result<(Chain, Vector3<f64>), LegError> {
         self.validate(pose, impact)?;
         let g = self.geometry(pose);
         let s = &self.segments;
@@ -296,23 +267,14 @@ impl Leg {
                 let frame = &g.frames[i];
                 let seg = &segments[i];
                 // Body frame: x anteroposterior, y along the segment, z mediolateral.
-                let local = Matrix3::from_diagonal(&Vector3::new(
-                    seg.inertia_abduction,
-                    seg.inertia_long,
-                    seg.inertia_flexion,
-                ));
+                let local = Matrix3::from_diagonal(&Vector3::new(seg.inertia_abduction, seg.inertia_long, seg.inertia_flexion));
                 let r = frame.matrix();
-                Body {
-                    mass: seg.mass,
-                    centre: origins[i] + seg.centre * long_axis(frame),
-                    inertia: r * local * r.transpose(),
-                }
+                Body { mass: seg.mass, centre: origins[i] + seg.centre * long_axis(frame), inertia: r * local * r.transpose() }
             })
             .collect();
         let foot_frame = &g.frames[2];
-        let contact = g.ankle
-            + impact.contact_fraction * s.foot.length * long_axis(foot_frame)
-            + impact.lateral_offset * (foot_frame * Vector3::z());
+        let contact =
+            g.ankle + impact.contact_fraction * s.foot.length * long_axis(foot_frame) + impact.lateral_offset * (foot_frame * Vector3::z());
 
         let mut joints = Vec::new();
         if self.hip == HipSupport::Free {
@@ -320,10 +282,7 @@ impl Leg {
                 Variant::Planar => &[Vector3::x(), Vector3::y()],
                 Variant::Spatial => &[Vector3::x(), Vector3::y(), Vector3::z()],
             };
-            joints.extend(axes.iter().map(|&direction| Joint {
-                motion: Motion::Prismatic { direction },
-                first_body: 0,
-            }));
+            joints.extend(axes.iter().map(|&direction| Joint { motion: Motion::Prismatic { direction }, first_body: 0 }));
         }
         // A ball joint's angular velocities span R³ whatever its angles, so
         // the world axes serve (Eq. 11 is invariant to the parametrisation).
@@ -331,21 +290,12 @@ impl Leg {
             Variant::Planar => &[Vector3::z()],
             Variant::Spatial => &[Vector3::x(), Vector3::y(), Vector3::z()],
         };
-        joints.extend(hip_axes.iter().map(|&axis| Joint {
-            motion: Motion::Revolute { axis, point: g.hip },
-            first_body: 0,
-        }));
+        joints.extend(hip_axes.iter().map(|&axis| Joint { motion: Motion::Revolute { axis, point: g.hip }, first_body: 0 }));
         if !knee_locked {
-            joints.push(Joint {
-                motion: Motion::Revolute { axis: g.frames[0] * Vector3::z(), point: g.knee },
-                first_body: 1,
-            });
+            joints.push(Joint { motion: Motion::Revolute { axis: g.frames[0] * Vector3::z(), point: g.knee }, first_body: 1 });
         }
         if ankle_free {
-            joints.push(Joint {
-                motion: Motion::Revolute { axis: g.frames[1] * Vector3::z(), point: g.ankle },
-                first_body: 2,
-            });
+            joints.push(Joint { motion: Motion::Revolute { axis: g.frames[1] * Vector3::z(), point: g.ankle }, first_body: 2 });
         }
         Ok((Chain { bodies, joints }, contact))
     }
@@ -380,10 +330,7 @@ impl Leg {
         let free = free_chain.effective_mass(&x, &n)?;
         let m = free_chain.mass_matrix();
         let a = m.nrows() - 1; // the ankle is the last joint
-        let inverse = m
-            .cholesky()
-            .ok_or_else(|| LegError::Degenerate("mass matrix not positive definite".into()))?
-            .inverse();
+        let inverse = m.cholesky().ok_or_else(|| LegError::Degenerate("mass matrix not positive definite".into()))?.inverse();
         let ankle_inertia = 1.0 / inverse[(a, a)];
         let locked_share = match ankle {
             AnkleJoint::Locked => 1.0,
@@ -396,13 +343,7 @@ impl Leg {
             }
         };
         let mobility = locked_share / locked + (1.0 - locked_share) / free;
-        Ok(LegEffectiveMass {
-            effective_mass: 1.0 / mobility,
-            locked_ankle: locked,
-            free_ankle: free,
-            locked_share,
-            ankle_inertia,
-        })
+        Ok(LegEffectiveMass { effective_mass: 1.0 / mobility, locked_ankle: locked, free_ankle: free, locked_share, ankle_inertia })
     }
 }
 
@@ -437,8 +378,5 @@ pub fn effective_mass_grid(
 /// Ball exit speed v_b⁺ of the 1D model for each effective foot mass: rows
 /// (m_f, v_b⁺). For the figure "exit speed vs effective mass" (Section 14.1).
 pub fn exit_speed_curve(masses: &[f64], base: &Scenario) -> Result<Vec<(f64, f64)>, LegError> {
-    masses
-        .iter()
-        .map(|&m| Ok((m, exit_outcome(m, base)?.v_ball_out)))
-        .collect()
+    masses.iter().map(|&m| Ok((m, exit_outcome(m, base)?.v_ball_out))).collect()
 }

@@ -58,7 +58,13 @@ pub fn write(out: &Path, figures: &Path, page: &Path, command: &str) -> Result<V
 fn columns(data: &SweepData) -> Result<[&[f64]; 5], String> {
     let set = data.set("bounce").map_err(|e| e.to_string())?;
     let column = |name: &str| set.column(name).ok_or_else(|| format!("{}: no column {name}", data.path.display()));
-    Ok([data.parameter("speed").map_err(|e| e.to_string())?, column("restitution")?, column("contact_time")?, column("peak_force")?, column("max_compression")?])
+    Ok([
+        data.parameter("speed").map_err(|e| e.to_string())?,
+        column("restitution")?,
+        column("contact_time")?,
+        column("peak_force")?,
+        column("max_compression")?,
+    ])
 }
 
 /// Restitution, contact time and compression against impact speed, from the
@@ -99,7 +105,12 @@ fn draw(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, String> {
     let panels = [
         panel("Restitution", "e", vec![Series::line("shell ball, 0.8 bar", color(0), v, e), fifa], SeriesLabelPosition::LowerLeft),
         panel("Contact time", "t_c (ms)", vec![Series::line("shell ball, 0.8 bar", color(0), v, &ms)], SeriesLabelPosition::LowerLeft),
-        panel("Maximum compression", "δ_max (mm)", vec![Series::line("shell ball, 0.8 bar", color(0), v, &mm), dowell], SeriesLabelPosition::UpperLeft),
+        panel(
+            "Maximum compression",
+            "δ_max (mm)",
+            vec![Series::line("shell ball, 0.8 bar", color(0), v, &mm), dowell],
+            SeriesLabelPosition::UpperLeft,
+        ),
     ];
     save_grid(figures, FIGURE, "The ball alone: square impacts on a rigid plate", (1, 3), &panels).map_err(|e| e.to_string())
 }
@@ -115,7 +126,16 @@ fn page_text(data: &SweepData, file: &str, figure: &str, command: &str) -> Resul
     let mut rows = String::new();
     for speed in [2.0, 6.0, 10.0, 19.0, 30.0] {
         let i = nearest(v, speed);
-        let _ = writeln!(rows, "| {} | {} | {} | {} | {} | {} |", sig(v[i]), sig(e[i]), sig(1e3 * t[i]), sig(f[i]), sig(1e3 * d[i]), sig(1e3 * d[i] / v[i]));
+        let _ = writeln!(
+            rows,
+            "| {} | {} | {} | {} | {} | {} |",
+            sig(v[i]),
+            sig(e[i]),
+            sig(1e3 * t[i]),
+            sig(f[i]),
+            sig(1e3 * d[i]),
+            sig(1e3 * d[i] / v[i])
+        );
     }
     let first = e.iter().copied().fold(f64::NAN, f64::max);
     let last = e[e.len() - 1];

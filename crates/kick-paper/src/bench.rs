@@ -42,7 +42,14 @@ pub struct BenchSettings {
 
 impl Default for BenchSettings {
     fn default() -> Self {
-        BenchSettings { out: PathBuf::from("results"), min_time: 0.3, sweep_samples: 200_000, quick: false, report: None, solvers_report: None }
+        BenchSettings {
+            out: PathBuf::from("results"),
+            min_time: 0.3,
+            sweep_samples: 200_000,
+            quick: false,
+            report: None,
+            solvers_report: None,
+        }
     }
 }
 
@@ -71,21 +78,14 @@ impl Printable for BenchReport {
     }
 }
 
-const COLUMNS: [(&str, &str); 3] = [
-    ("max_error", "1"),
-    ("seconds_per_scenario", "s"),
-    ("evaluations_per_scenario", "1"),
-];
+const COLUMNS: [(&str, &str); 3] = [("max_error", "1"), ("seconds_per_scenario", "s"), ("evaluations_per_scenario", "1")];
 
 /// Scenarios per second of `solver` on the sweep, on a pool of `threads`.
 fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) -> Result<f64, String> {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| e.to_string())?;
     let started = Instant::now();
     let solved = pool.install(|| {
-        (0..sweep.samples)
-            .into_par_iter()
-            .map(|i| sweep.scenario(i).and_then(|s| solver.solve(&s)).is_ok() as u64)
-            .sum::<u64>()
+        (0..sweep.samples).into_par_iter().map(|i| sweep.scenario(i).and_then(|s| solver.solve(&s)).is_ok() as u64).sum::<u64>()
     });
     std::hint::black_box(solved);
     Ok(sweep.samples as f64 / started.elapsed().as_secs_f64())
@@ -280,9 +280,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let mut ladder = precision::ladder();
     let min_time = if args.quick { 0.02 } else { args.min_time };
     if args.quick {
-        ladder.retain(|(name, setting)| {
-            matches!((*name, *setting), ("seed-rk4", s) if s == 5e-6) || *setting == 1e-12 || *setting == 1e-8
-        });
+        ladder.retain(|(name, setting)| matches!((*name, *setting), ("seed-rk4", s) if s == 5e-6) || *setting == 1e-12 || *setting == 1e-8);
     }
     let mut points: Vec<PrecisionPoint> = Vec::new();
     for (name, setting) in ladder {
@@ -307,7 +305,8 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let (mut seed, mut auto) = (None, None);
     for _ in 0..5 {
         let s = precision::measure("seed-rk4", 5e-6, &seed_rk4, &cases, min_time).map_err(|e| e.to_string())?;
-        let a = precision::measure("auto", kick_compliant::series::DEFAULT_TOLERANCE, &default_auto, &cases, min_time).map_err(|e| e.to_string())?;
+        let a = precision::measure("auto", kick_compliant::series::DEFAULT_TOLERANCE, &default_auto, &cases, min_time)
+            .map_err(|e| e.to_string())?;
         ratios.push(s.seconds_per_scenario / a.seconds_per_scenario);
         (seed, auto) = (Some(s), Some(a));
     }
@@ -317,7 +316,11 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let _ = writeln!(
         log,
         "\nauto (default) vs seed-rk4 at 5 µs: error {:.2e} vs {:.2e}; cost ratio {:.1}x (median of 5 alternating runs; {:.1}-{:.1}x)",
-        auto.max_error, seed.max_error, ratio, ratios[0], ratios[ratios.len() - 1]
+        auto.max_error,
+        seed.max_error,
+        ratio,
+        ratios[0],
+        ratios[ratios.len() - 1]
     );
     let sweep = SampledSweep::new(if args.quick { 2_000 } else { args.sweep_samples }, 1);
     // 1 and 2 threads in alternation, three times; the medians (shared machine).
@@ -333,7 +336,12 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         log,
         "sweep of {} sampled scenarios (auto, summary only): {:.0}/s on 1 thread, {:.0}/s on 2 threads, speed-up {:.2}x \
          (medians of 3 alternating runs; 2 threads {:.0}-{:.0}/s)",
-        sweep.samples, one, two, two / one, twos[0], twos[2]
+        sweep.samples,
+        one,
+        two,
+        two / one,
+        twos[0],
+        twos[2]
     );
     let kicks = if args.quick { 20 } else { 200 };
     let cost = kick_3d::precision::cost_ratio(kicks, kick_3d::models::BENCH_SEED, min_time / 30.0).map_err(|e| e.to_string())?;
@@ -409,9 +417,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let mut writer = SweepWriter::create(&path, &provenance, &parameters, &[set], points.len() as u64).map_err(|e| e.to_string())?;
     for p in &points {
         writer.push_parameters(&[p.setting]).map_err(|e| e.to_string())?;
-        writer
-            .push_outcome(0, Ok(&[p.max_error, p.seconds_per_scenario, p.evaluations_per_scenario]))
-            .map_err(|e| e.to_string())?;
+        writer.push_outcome(0, Ok(&[p.max_error, p.seconds_per_scenario, p.evaluations_per_scenario])).map_err(|e| e.to_string())?;
     }
     let names: Vec<String> = points.iter().map(|p| p.solver.to_string()).collect();
     write_strings(writer.file(), &path, "scenario_names", &names).map_err(|e| e.to_string())?;
@@ -435,7 +441,19 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let path = writer.finish().map_err(|e| e.to_string())?;
     let mut written = vec![path.clone()];
     written.extend(draw(&path, &args.out.join("figures"))?);
-    let measured = Measured { points: &points, seed: &seed, auto: &auto, ratio, ratios: &ratios, one, two, samples: sweep.samples, cost: &cost, files: &files, other: &other };
+    let measured = Measured {
+        points: &points,
+        seed: &seed,
+        auto: &auto,
+        ratio,
+        ratios: &ratios,
+        one,
+        two,
+        samples: sweep.samples,
+        cost: &cost,
+        files: &files,
+        other: &other,
+    };
     if let Some(report) = &args.report {
         let report_dir = report.parent().unwrap_or(std::path::Path::new(""));
         let figure = crate::links::relative(report_dir, &args.out.join("figures/work_precision.png"));
@@ -504,10 +522,7 @@ impl Machine {
         let cpu = std::fs::read_to_string("/proc/cpuinfo")
             .ok()
             .and_then(|text| {
-                text.lines()
-                    .find(|l| l.starts_with("model name"))
-                    .and_then(|l| l.split_once(':'))
-                    .map(|(_, v)| v.trim().to_string())
+                text.lines().find(|l| l.starts_with("model name")).and_then(|l| l.split_once(':')).map(|(_, v)| v.trim().to_string())
             })
             .unwrap_or_else(|| "unknown".into());
         let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
@@ -527,7 +542,9 @@ impl Measured<'_> {
             rows.push_str(&format!("| {} | {:.2e} | {:.2e} | {:.0} |\n", p.solver, p.setting, p.max_error, p.evaluations_per_scenario));
         }
         let timing = timing
-            .map(|t| format!("Times, cost ratios, sweep throughput and the work–precision figure depend on the machine: see [timing]({t}).\n\n"))
+            .map(|t| {
+                format!("Times, cost ratios, sweep throughput and the work–precision figure depend on the machine: see [timing]({t}).\n\n")
+            })
             .unwrap_or_default();
         format!(
             "# Solvers of the 1D model\n\n\
@@ -574,24 +591,16 @@ impl Measured<'_> {
     fn timing_markdown(&self, figure: &str, data: &str, command: &str, machine: &Machine) -> String {
         let mut rows = String::new();
         for p in self.points {
-            rows.push_str(&format!(
-                "| {} | {:.2e} | {:.2e} | {:.2} |\n",
-                p.solver,
-                p.setting,
-                p.max_error,
-                p.seconds_per_scenario * 1e6
-            ));
+            rows.push_str(&format!("| {} | {:.2e} | {:.2e} | {:.2} |\n", p.solver, p.setting, p.max_error, p.seconds_per_scenario * 1e6));
         }
         let mut files = String::new();
         for run in self.files {
             // Its plain twin: the same command without --compress.
             let plain = self.files.iter().find(|p| !p.command.contains("--compress") && run.command.starts_with(&p.command));
             let size = match plain {
-                Some(p) if p.command != run.command => format!(
-                    "{} ({:+.0}%)",
-                    kick_core::sig(run.bytes as f64 / 1e6),
-                    100.0 * (run.bytes as f64 / p.bytes as f64 - 1.0)
-                ),
+                Some(p) if p.command != run.command => {
+                    format!("{} ({:+.0}%)", kick_core::sig(run.bytes as f64 / 1e6), 100.0 * (run.bytes as f64 / p.bytes as f64 - 1.0))
+                }
                 _ => kick_core::sig(run.bytes as f64 / 1e6).to_string(),
             };
             files.push_str(&format!(

@@ -34,10 +34,8 @@ fn register_font() -> Result<(), FigureError> {
     static ONCE: Once = Once::new();
     let mut result = Ok(());
     ONCE.call_once(|| {
-        result = plotters::style::register_font(FAMILY, FontStyle::Normal, FONT).map_err(|_| FigureError::Draw {
-            figure: "-".into(),
-            message: "bundled font DejaVuSans.ttf is invalid".into(),
-        });
+        result = plotters::style::register_font(FAMILY, FontStyle::Normal, FONT)
+            .map_err(|_| FigureError::Draw { figure: "-".into(), message: "bundled font DejaVuSans.ttf is invalid".into() });
     });
     result
 }
@@ -248,13 +246,11 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
     const SHADE: f64 = 0.2;
     for s in panel.series.iter().filter(|s| !s.shade.is_empty()) {
         let fill = s.color.mix(SHADE).filled();
-        let anno = chart
-            .draw_series(s.shade.iter().map(|&(a, b)| Rectangle::new([(tx(a), y0), (tx(b), y1)], fill)))
-            .map_err(|e| e.to_string())?;
+        let anno =
+            chart.draw_series(s.shade.iter().map(|&(a, b)| Rectangle::new([(tx(a), y0), (tx(b), y1)], fill))).map_err(|e| e.to_string())?;
         if !s.label.is_empty() {
             let color = s.color;
-            anno.label(s.label.as_str())
-                .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], color.mix(SHADE).filled()));
+            anno.label(s.label.as_str()).legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], color.mix(SHADE).filled()));
         }
     }
     for s in panel.series.iter().filter(|s| s.shade.is_empty()) {
@@ -262,9 +258,7 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         let style = s.color.stroke_width(2);
         let color = s.color;
         let anno = if s.dashed {
-            chart
-                .draw_series(DashedLineSeries::new(points.clone(), 9, 6, style))
-                .map_err(|e| e.to_string())?
+            chart.draw_series(DashedLineSeries::new(points.clone(), 9, 6, style)).map_err(|e| e.to_string())?
         } else {
             chart.draw_series(LineSeries::new(points.clone(), style)).map_err(|e| e.to_string())?
         };
@@ -279,9 +273,7 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
             });
         }
         if s.markers {
-            chart
-                .draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
-                .map_err(|e| e.to_string())?;
+            chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled()))).map_err(|e| e.to_string())?;
         }
     }
     if panel.series.iter().filter(|s| !s.label.is_empty()).count() > 1 {
@@ -341,10 +333,7 @@ fn scaled(values: &[f64], factor: f64) -> Vec<f64> {
 
 fn outcome<'a>(data: &'a SweepData, solver: &str, name: &str) -> Result<&'a [f64], FigureError> {
     let set = data.set(solver)?;
-    set.column(name).ok_or_else(|| FigureError::Draw {
-        figure: data.path.display().to_string(),
-        message: format!("no outcome `{name}`"),
-    })
+    set.column(name).ok_or_else(|| FigureError::Draw { figure: data.path.display().to_string(), message: format!("no outcome `{name}`") })
 }
 
 /// Figure 1: the baseline time history.
@@ -626,15 +615,9 @@ pub fn luminance(c: RGBColor) -> f64 {
     (0.299 * c.0 as f64 + 0.587 * c.1 as f64 + 0.114 * c.2 as f64) / 255.0
 }
 
-fn draw_bars<DB: DrawingBackend>(
-    root: DrawingArea<DB, Shift>,
-    names: &[String],
-    groups: &[(String, Vec<f64>)],
-) -> Result<(), String> {
+fn draw_bars<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, names: &[String], groups: &[(String, Vec<f64>)]) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
-    let root = root
-        .titled("Figure 7: ball exit speed of the Table 2 scenarios", (FAMILY, 26))
-        .map_err(|e| e.to_string())?;
+    let root = root.titled("Figure 7: ball exit speed of the Table 2 scenarios", (FAMILY, 26)).map_err(|e| e.to_string())?;
     let n = names.len();
     let max = groups.iter().flat_map(|g| g.1.iter().copied()).filter(|v| v.is_finite()).fold(0.0, f64::max);
     let mut chart = ChartBuilder::on(&root)
@@ -681,9 +664,7 @@ fn draw_bars<DB: DrawingBackend>(
                     + Rectangle::new([(0, -6), (16, 6)], c.filled())
                     + Rectangle::new([(0, -6), (16, 6)], BLACK.stroke_width(1))
             });
-        chart
-            .draw_series(finite().map(corners).map(|r| Rectangle::new(r, BLACK.stroke_width(1))))
-            .map_err(|e| e.to_string())?;
+        chart.draw_series(finite().map(corners).map(|r| Rectangle::new(r, BLACK.stroke_width(1)))).map_err(|e| e.to_string())?;
     }
     chart
         .configure_series_labels()

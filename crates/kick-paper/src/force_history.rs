@@ -2,8 +2,8 @@
 //! written by kick-store's history writer, then drawn from that file.
 
 use kick_core::Spacing;
-use kick_store::history::HistoryRequest;
 use kick_store::h5::H5Error;
+use kick_store::history::HistoryRequest;
 use kick_store::ResultFile;
 use plotters::style::RGBColor;
 use std::path::{Path, PathBuf};
@@ -142,5 +142,4 @@ mod tests {
         // Each end of a slip phase is placed within half a step of the switch.
         assert!((shaded - outcome.slip_time).abs() <= slipping.len() as f64 * step, "{shaded} vs {}", outcome.slip_time);
     }
-
 }

@@ -24,11 +24,11 @@
 
 use crate::figures::{color, save_grid, FigureError, Panel, Series};
 use crate::h5::{write_grid, write_str_attr, Column, H5Error, SweepData};
-use crate::run::{create_table, fill_table};
-use kick_study::level::Level;
 use crate::provenance::Provenance;
+use crate::run::{create_table, fill_table};
 use kick_3d::Kick3d;
 use kick_flight::{history, Sampling};
+use kick_study::level::Level;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::path::{Path, PathBuf};
 
@@ -55,7 +55,6 @@ fn columns(list: &[(&str, &str)]) -> Vec<Column> {
     list.iter().map(|(n, u)| Column::new(n, u)).collect()
 }
 
-
 /// Solve the grid and write `out/flight/free_kick.h5`.
 pub fn write(out: &Path) -> Result<PathBuf, String> {
     let dir = out.join("flight");
@@ -71,7 +70,8 @@ pub fn write(out: &Path) -> Result<PathBuf, String> {
     let file = writer.file().clone();
     let h5 = |e: H5Error| e.to_string();
     let parameters = FreeKicks.parameter_columns();
-    write_str_attr(&file, &path, "description", "Free kicks: the 3D kick (contact below and beside the centre) chained into the flight").map_err(h5)?;
+    write_str_attr(&file, &path, "description", "Free kicks: the 3D kick (contact below and beside the centre) chained into the flight")
+        .map_err(h5)?;
     write_grid(&file, &path, &[(parameters[0].clone(), &LATERAL_OFFSETS[..]), (parameters[1].clone(), &FRICTIONS[..])]).map_err(h5)?;
     fill_table(&FreeKicks, 0..rows.len() as u64, &mut writer, &indicatif::ProgressBar::hidden()).map_err(h5)?;
     for (row, &(e, mu)) in rows.iter().enumerate() {
@@ -112,9 +112,8 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     let launch = data.set("launch")?;
     let offsets = data.parameter("lateral_offset")?.to_vec();
     let frictions = data.parameter("friction")?.to_vec();
-    let label = |row: usize| {
-        format!("e = {} cm, μ = {}", kick_core::short(offsets[row] * 100.0), crate::three_d::value_label(frictions[row]))
-    };
+    let label =
+        |row: usize| format!("e = {} cm, μ = {}", kick_core::short(offsets[row] * 100.0), crate::three_d::value_label(frictions[row]));
     // Trajectories: every row with a stored history.
     let mut top = Vec::new();
     let mut side = Vec::new();
@@ -161,7 +160,13 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
         side,
     );
     side_panel.legend = SeriesLabelPosition::UpperLeft;
-    let mut written = save_grid(dir, "flight_free_kick", &format!("Free kicks from the 3D kick through the flight (shown to x = {SHOWN_TO} m)"), (2, 1), &[top_panel, side_panel])?;
+    let mut written = save_grid(
+        dir,
+        "flight_free_kick",
+        &format!("Free kicks from the 3D kick through the flight (shown to x = {SHOWN_TO} m)"),
+        (2, 1),
+        &[top_panel, side_panel],
+    )?;
 
     // Against the lateral offset, one curve per friction.
     let column = |set: &crate::h5::SetData, name: &str| set.column(name).map(<[f64]>::to_vec).ok_or_else(|| missing(name));
@@ -189,7 +194,12 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     };
     let x_label = "lateral offset e (cm)";
     let panels = vec![
-        Panel::new(&format!("curve at {GOAL_DISTANCE} m: lateral position minus the launch line's"), x_label, "deflection (m)", per_friction(&curve)),
+        Panel::new(
+            &format!("curve at {GOAL_DISTANCE} m: lateral position minus the launch line's"),
+            x_label,
+            "deflection (m)",
+            per_friction(&curve),
+        ),
         Panel::new(&format!("lateral position at {GOAL_DISTANCE} m"), x_label, "y (m)", per_friction(&y_goal)),
         Panel::new(&format!("height at the wall ({WALL_DISTANCE} m)"), x_label, "height of the centre (m)", per_friction(&h_wall)),
         Panel::new(&format!("height at the goal line ({GOAL_DISTANCE} m)"), x_label, "height of the centre (m)", per_friction(&h_goal)),

@@ -183,15 +183,31 @@ impl Printable for LegReport {
         let (hip, knee, variant) = self.labels();
         let (s, mass, outcome) = (&self.settings, &self.mass, &self.outcome);
         let mut w = String::new();
-        let _ = writeln!(w, "leg: de Leva (1996) male, {} kg, {} m, {hip} hip, {knee} knee, {} ankle ({variant})", sig(s.body_mass), sig(s.height), self.ankle);
+        let _ = writeln!(
+            w,
+            "leg: de Leva (1996) male, {} kg, {} m, {hip} hip, {knee} knee, {} ankle ({variant})",
+            sig(s.body_mass),
+            sig(s.height),
+            self.ankle
+        );
         let _ = writeln!(w, "{:<20} {:>12} kg", "effective_mass", sig(mass.effective_mass));
         let _ = writeln!(w, "{:<20} {:>12} kg", "locked_ankle", sig(mass.locked_ankle));
         let _ = writeln!(w, "{:<20} {:>12} kg", "free_ankle", sig(mass.free_ankle));
         let _ = writeln!(w, "{:<20} {:>12}", "locked_share", sig(mass.locked_share));
         let _ = writeln!(w, "{:<20} {:>12} kg", "leg_mass", sig(self.leg_mass));
         if let Some(e) = &self.elastic {
-            let _ = writeln!(w, "{:<20} {:>12} kg (series-spring interpolation, for comparison)", "interpolated_mass", sig(e.interpolated.effective_mass));
-            let _ = writeln!(w, "{:<20} {:>12} rad (coupled leg-ball run, frozen geometry)", "max_ankle_deflection", sig(e.coupled.max_ankle_deflection));
+            let _ = writeln!(
+                w,
+                "{:<20} {:>12} kg (series-spring interpolation, for comparison)",
+                "interpolated_mass",
+                sig(e.interpolated.effective_mass)
+            );
+            let _ = writeln!(
+                w,
+                "{:<20} {:>12} rad (coupled leg-ball run, frozen geometry)",
+                "max_ankle_deflection",
+                sig(e.coupled.max_ankle_deflection)
+            );
             let _ = writeln!(w, "{:<20} {:>12} s (coupled leg-ball run)", "coupled_contact_time", sig(e.coupled.contact_time));
         }
         let _ = writeln!(w, "1D contact with m_f = effective_mass (Table 1 otherwise, accurate solver):");
@@ -248,8 +264,8 @@ fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<
             legend: SeriesLabelPosition::UpperRight,
         });
     }
-    let mut written = save_grid(out, "leg_effective_mass", "Articulated leg (de Leva 1996 segments)", (1, 2), &panels)
-        .map_err(|e| e.to_string())?;
+    let mut written =
+        save_grid(out, "leg_effective_mass", "Articulated leg (de Leva 1996 segments)", (1, 2), &panels).map_err(|e| e.to_string())?;
     let speeds = SweepData::read(&results.join("leg_exit_speed.h5")).map_err(|e| e.to_string())?;
     let foot_mass = speeds.parameter("foot_mass").map_err(|e| e.to_string())?;
     let set = speeds.set("accurate").map_err(|e| e.to_string())?;

@@ -75,10 +75,7 @@ impl Grid2 {
     fn at(&self, c: usize, x: f64, name: &str) -> Result<(f64, f64), String> {
         let column = self.column(name)?;
         let rows = &self.curves[c].1;
-        let row = *rows
-            .iter()
-            .min_by(|&&a, &&b| (self.x()[a] - x).abs().total_cmp(&(self.x()[b] - x).abs()))
-            .ok_or("empty curve")?;
+        let row = *rows.iter().min_by(|&&a, &&b| (self.x()[a] - x).abs().total_cmp(&(self.x()[b] - x).abs())).ok_or("empty curve")?;
         Ok((self.x()[row], column[row]))
     }
     fn last(&self, c: usize, name: &str) -> Result<(f64, f64), String> {
@@ -161,7 +158,16 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     let worst = numbers_3d::box_errors(ACCURACY_KICKS)?;
     let gap = numbers_3d::central_gap()?;
     let scene = scene_errors()?;
-    let names = ["launch velocity", "spin", "contact time", "peak normal force", "its time", "peak tangential force", "its time", "max compression"];
+    let names = [
+        "launch velocity",
+        "spin",
+        "contact time",
+        "peak normal force",
+        "its time",
+        "peak tangential force",
+        "its time",
+        "max compression",
+    ];
     let listed: Vec<String> = names.iter().zip(worst).map(|(n, e)| format!("{n} {:.1e}", e)).collect();
     let _ = writeln!(w, "## Paths and their accuracy\n");
     let _ = writeln!(
@@ -315,7 +321,11 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     );
 
     // The one-axis files.
-    for (name, what) in [("3d_friction", "friction at a 5 cm offset"), ("3d_approach_angle", "approach angle, central, μ = 0.5"), ("3d_offset", "offset at μ = 0.5")] {
+    for (name, what) in [
+        ("3d_friction", "friction at a 5 cm offset"),
+        ("3d_approach_angle", "approach angle, central, μ = 0.5"),
+        ("3d_offset", "offset at μ = 0.5"),
+    ] {
         let path = out.join(format!("{name}.h5"));
         if !path.exists() {
             continue;
@@ -415,7 +425,8 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
     let col = |s: &crate::h5::SetData, name: &str| s.column(name).map(<[f64]>::to_vec).ok_or_else(|| format!("{file}: no {name}"));
     let offsets = data.parameter("lateral_offset").map_err(err)?.to_vec();
     let frictions = data.parameter("friction").map_err(err)?.to_vec();
-    let (speed, rev, elev, az) = (col(launch, "speed")?, col(launch, "spin_rev_per_s")?, col(launch, "launch_angle")?, col(launch, "launch_azimuth")?);
+    let (speed, rev, elev, az) =
+        (col(launch, "speed")?, col(launch, "spin_rev_per_s")?, col(launch, "launch_angle")?, col(launch, "launch_azimuth")?);
     let (vx, vy) = (col(launch, "launch_velocity_x")?, col(launch, "launch_velocity_y")?);
     let (gy, gh, gc) = (col(goal, "crossing_lateral_offset")?, col(goal, "crossing_height")?, col(goal, "crossed")?);
     let (wh, wc) = (col(wall, "crossing_height")?, col(wall, "crossed")?);
@@ -497,7 +508,8 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
     let (cmin, cmax) = same_offset.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &r| (a.min(curve(r)), b.max(curve(r))));
     let last_offset = reach.iter().map(|&r| offsets[r]).fold(0.0, f64::max);
     let half_row = |e: f64| (0..data.rows()).find(|&r| offsets[r] == e && frictions[r] == 0.5).unwrap_or(0);
-    let wall_last = (0..data.rows()).filter(|&r| frictions[r] == 0.5 && wc[r] == 1.0).max_by(|&a, &b| offsets[a].total_cmp(&offsets[b])).unwrap_or(0);
+    let wall_last =
+        (0..data.rows()).filter(|&r| frictions[r] == 0.5 && wc[r] == 1.0).max_by(|&a, &b| offsets[a].total_cmp(&offsets[b])).unwrap_or(0);
     let _ = writeln!(
         w,
         "\nWhat the figures show. Spin bends the path toward the side the offset sends the ball (Magnus lift \
@@ -583,7 +595,10 @@ pub fn aim_section(aims: &[kick_study::aim::AimReport], fig: &str) -> String {
         free_kick::AIM_SPIN[2],
     );
     let _ = writeln!(w, "![aimed free kicks from above and from the side]({fig}/flight_aim.png)\n");
-    let _ = writeln!(w, "| aimed | parameter | value | range | ∂y/∂p (m per unit) | ∂z/∂p (m per unit) |\n| --- | --- | --- | --- | --- | --- |");
+    let _ = writeln!(
+        w,
+        "| aimed | parameter | value | range | ∂y/∂p (m per unit) | ∂z/∂p (m per unit) |\n| --- | --- | --- | --- | --- | --- |"
+    );
     for report in aims {
         let from = match report.from {
             kick_study::aim::AimFrom::Launch => "launch",

@@ -85,7 +85,9 @@ impl Contact {
                 short(r)
             ),
             (true, None) => "normal force spread over the patch on the flat knife-edge face".into(),
-            (false, _) => "point contact (rigid sphere: the normal force through the centre), flat face tilted by asin(e/R) (knife edge)".into(),
+            (false, _) => {
+                "point contact (rigid sphere: the normal force through the centre), flat face tilted by asin(e/R) (knife edge)".into()
+            }
         }
     }
 }
@@ -371,7 +373,10 @@ pub fn draw_spin(data: &SpinData, asai: &AsaiClaims, figures: &Path) -> Result<V
         })
         .collect();
     let span = [0.0, data.offsets.last().copied().unwrap_or(0.0) * 1e3];
-    gain.push(Series::line(&format!("Asai et al. (2002): at most {} rad/s", short(asai.friction_gain)), black, &span, &[asai.friction_gain; 2]).with_markers());
+    gain.push(
+        Series::line(&format!("Asai et al. (2002): at most {} rad/s", short(asai.friction_gain)), black, &span, &[asai.friction_gain; 2])
+            .with_markers(),
+    );
     let panel = |title: &str, y_label: &str, series: Vec<Series>, legend| Panel { legend, ..Panel::new(title, x_label, y_label, series) };
     let panels = [
         panel(
@@ -380,8 +385,18 @@ pub fn draw_spin(data: &SpinData, asai: &AsaiClaims, figures: &Path) -> Result<V
             spin,
             SeriesLabelPosition::UpperLeft,
         ),
-        panel("Sidespin added by friction, μ = 0 → 1, at each offset", "sidespin at μ = 1 less at μ = 0 (rad/s)", gain, SeriesLabelPosition::UpperLeft),
-        panel("Ball speed (curves as in the first panel)", "speed |v| (m/s)", per_curve(&|k| k.speed.clone(), false), SeriesLabelPosition::LowerLeft),
+        panel(
+            "Sidespin added by friction, μ = 0 → 1, at each offset",
+            "sidespin at μ = 1 less at μ = 0 (rad/s)",
+            gain,
+            SeriesLabelPosition::UpperLeft,
+        ),
+        panel(
+            "Ball speed (curves as in the first panel)",
+            "speed |v| (m/s)",
+            per_curve(&|k| k.speed.clone(), false),
+            SeriesLabelPosition::LowerLeft,
+        ),
         panel(
             "Launch azimuth (curves as in the first panel)",
             "azimuth from the foot's path (deg)",
@@ -435,7 +450,9 @@ pub struct PatchHistory {
 pub fn read_history(path: &Path, sense: f64) -> Result<PatchHistory, String> {
     let f = ResultFile::open(path).map_err(h5)?;
     let v = |name: &str| f.values(&format!("history/{name}")).map_err(h5);
-    let vector = |name: &str| -> Result<[Vec<f64>; 3], String> { Ok([v(&format!("{name}_x"))?, v(&format!("{name}_y"))?, v(&format!("{name}_z"))?]) };
+    let vector = |name: &str| -> Result<[Vec<f64>; 3], String> {
+        Ok([v(&format!("{name}_x"))?, v(&format!("{name}_y"))?, v(&format!("{name}_z"))?])
+    };
     let time = v("time")?;
     let [fx, fy, fz] = vector("normal_force")?;
     let [_, _, mz] = vector("normal_moment")?;
@@ -478,7 +495,12 @@ pub fn draw_history(h: &PatchHistory, figures: &Path) -> Result<Vec<PathBuf>, Fi
     let flat: Vec<f64> = h.compression_mm.iter().map(|d| h.radius_mm - d).collect();
     let x_label = "time t (ms)";
     let panels = [
-        Panel::new("Normal force over the patch: its resultant", x_label, "|F| (kN)", with(shades(), vec![Series::line("|F|", color(0), t, &h.force_kn)])),
+        Panel::new(
+            "Normal force over the patch: its resultant",
+            x_label,
+            "|F| (kN)",
+            with(shades(), vec![Series::line("|F|", color(0), t, &h.force_kn)]),
+        ),
         Panel {
             legend: SeriesLabelPosition::LowerRight,
             ..Panel::new(
@@ -608,7 +630,13 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
                     None => String::new(),
                 }
             ));
-            peaks.push(format!("{} mm for the {} at μ = {}{}", short(e * 1e3), contact.label, short(mu), if e == last { " (the end of the range)" } else { "" }));
+            peaks.push(format!(
+                "{} mm for the {} at μ = {}{}",
+                short(e * 1e3),
+                contact.label,
+                short(mu),
+                if e == last { " (the end of the range)" } else { "" }
+            ));
         }
         let (e, g) = friction_gain(&data, c);
         let most = (0..g.len()).max_by(|&a, &b| g[a].total_cmp(&g[b]));
@@ -637,7 +665,11 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
                 } else {
                     ""
                 };
-                format!("at μ = 0 it spins, {sense_text} friction's sense{why}, up to {} rad/s (at e = {} mm)", sig3(s0.abs()), short(e0 * 1e3))
+                format!(
+                    "at μ = 0 it spins, {sense_text} friction's sense{why}, up to {} rad/s (at e = {} mm)",
+                    sig3(s0.abs()),
+                    short(e0 * 1e3)
+                )
             }
             None => "μ = 0 was not solved".into(),
         };
@@ -646,7 +678,10 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
         let curves: Vec<&Curve> = data.curves.iter().filter(|k| k.contact == c).collect();
         let left = |k: &Curve| k.refused.iter().map(|(e, _)| short(e * 1e3).to_string()).collect::<Vec<_>>().join(", ");
         if curves.iter().any(|k| !k.refused.is_empty()) {
-            if curves.iter().all(|k| left(k) == left(curves[0]) && k.refused.first().map(|r| &r.1) == curves[0].refused.first().map(|r| &r.1)) {
+            if curves
+                .iter()
+                .all(|k| left(k) == left(curves[0]) && k.refused.first().map(|r| &r.1) == curves[0].refused.first().map(|r| &r.1))
+            {
                 parts.push(format!("e = {} mm left out at every μ ({})", left(curves[0]), curves[0].refused[0].1));
             } else {
                 for k in curves.iter().filter(|k| !k.refused.is_empty()) {
@@ -680,7 +715,9 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
     // Where the lever changes sign (rows with a force on both sides).
     let turns: Vec<f64> = lever
         .windows(2)
-        .filter(|p| p[1] == p[0] + 1 && h.lever_mm[p[0]] != 0.0 && h.lever_mm[p[0]].signum() != h.lever_mm[p[1]].signum() && h.lever_mm[p[1]] != 0.0)
+        .filter(|p| {
+            p[1] == p[0] + 1 && h.lever_mm[p[0]] != 0.0 && h.lever_mm[p[0]].signum() != h.lever_mm[p[1]].signum() && h.lever_mm[p[1]] != 0.0
+        })
         .map(|p| 0.5 * (h.time_ms[p[0]] + h.time_ms[p[1]]))
         .collect();
     let arm_min = (0..n).min_by(|&a, &b| h.arm_mm[a].total_cmp(&h.arm_mm[b])).ok_or("empty history")?;
@@ -699,12 +736,7 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
             sig3(h.lever_mm[highest]),
             sig3(h.time_ms[highest]),
         ),
-        many => format!(
-            "changes sign {} times, between {} and {} mm",
-            many.len(),
-            sig3(h.lever_mm[lowest]),
-            sig3(h.lever_mm[highest])
-        ),
+        many => format!("changes sign {} times, between {} and {} mm", many.len(), sig3(h.lever_mm[lowest]), sig3(h.lever_mm[highest])),
     };
     let _ = writeln!(w, "## One off-center kick's patch over time\n");
     let _ = writeln!(
@@ -770,7 +802,14 @@ mod tests {
         let names: Vec<String> = written.iter().map(|p| p.file_name().unwrap().to_string_lossy().into_owned()).collect();
         assert_eq!(
             names,
-            ["3d_patch_spin.h5", "3d_patch_spin.png", "3d_patch_spin.svg", "3d_patch_history.h5", "3d_patch_history.png", "3d_patch_history.svg"]
+            [
+                "3d_patch_spin.h5",
+                "3d_patch_spin.png",
+                "3d_patch_spin.svg",
+                "3d_patch_history.h5",
+                "3d_patch_history.png",
+                "3d_patch_history.svg"
+            ]
         );
         let data = read_spin(&dir.join(SPIN_FILE)).unwrap();
         assert_eq!(data.curves.len(), CONTACTS.len() * FRICTIONS.len());

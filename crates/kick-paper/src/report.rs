@@ -79,22 +79,35 @@ pub fn render(results: &Path, figures: &str, checks: Option<&[CheckLine]>) -> Re
          which `kick reproduce` writes from the experiment files in `experiments/`. \
          The figures are drawn from the same files.\n"
     );
-    let _ = writeln!(w, "Solvers: `{}` is the paper's fixed-step RK4 (Δt = {} µs, Section 12); `accurate` is adaptive Dop853 with located events{}.\n",
-        seed.solver, dt * 1e6,
-        match accurate_settings { Some((Some(r), Some(a))) => format!(" (relative tolerance {r:e}, absolute {a:e})"), _ => String::new() });
+    let _ = writeln!(
+        w,
+        "Solvers: `{}` is the paper's fixed-step RK4 (Δt = {} µs, Section 12); `accurate` is adaptive Dop853 with located events{}.\n",
+        seed.solver,
+        dt * 1e6,
+        match accurate_settings {
+            Some((Some(r), Some(a))) => format!(" (relative tolerance {r:e}, absolute {a:e})"),
+            _ => String::new(),
+        }
+    );
 
     // Table 2.
     let _ = writeln!(w, "## Table 2 side by side\n");
-    let _ = writeln!(w, "Each cell: paper / {} / accurate. The scenarios are `experiments/table2.toml` \
-        (parameters identified from the printed numbers by `kick fit table2`).\n", seed.solver);
-    let _ = writeln!(w, "| Scenario | v_b⁺ (m/s) | Ratio | Peak force (N) | Contact (ms) | Compression (mm) | {} prints as the paper |", seed.solver);
+    let _ = writeln!(
+        w,
+        "Each cell: paper / {} / accurate. The scenarios are `experiments/table2.toml` \
+        (parameters identified from the printed numbers by `kick fit table2`).\n",
+        seed.solver
+    );
+    let _ = writeln!(
+        w,
+        "| Scenario | v_b⁺ (m/s) | Ratio | Peak force (N) | Contact (ms) | Compression (mm) | {} prints as the paper |",
+        seed.solver
+    );
     let _ = writeln!(w, "| --- | --- | --- | --- | --- | --- | --- |");
     let mut rows = Vec::new();
     for (i, name) in names.iter().enumerate() {
-        let printed = TABLE2
-            .iter()
-            .find(|r| r.name == name)
-            .ok_or_else(|| content(format!("row `{name}` is not in the paper's Table 2")))?;
+        let printed =
+            TABLE2.iter().find(|r| r.name == name).ok_or_else(|| content(format!("row `{name}` is not in the paper's Table 2")))?;
         let paper = [printed.v_ball_out, printed.speed_ratio, printed.peak_force, printed.contact_time_ms, printed.max_compression_mm];
         let s = table2_columns(seed, i)?;
         let a = table2_columns(accurate, i)?;
@@ -153,7 +166,11 @@ pub fn render(results: &Path, figures: &str, checks: Option<&[CheckLine]>) -> Re
          The paper's printed digits are reproduced by {} in {} of {} rows.\n",
         rel(0),
         rel(2),
-        rows.iter().enumerate().filter(|(i, _)| peak_time[*i] != 0.0).map(|(_, (_, _, s, a))| ((s[2] - a[2]) / a[2]).abs()).fold(0.0, f64::max),
+        rows.iter()
+            .enumerate()
+            .filter(|(i, _)| peak_time[*i] != 0.0)
+            .map(|(_, (_, _, s, a))| ((s[2] - a[2]) / a[2]).abs())
+            .fold(0.0, f64::max),
         rel(4),
         seed.solver,
         rows.iter().filter(|(_, p, s, _)| (0..5).all(|c| prints_as(s[c], p[c], TABLE2_DECIMALS[c]))).count(),
@@ -193,19 +210,17 @@ pub fn render(results: &Path, figures: &str, checks: Option<&[CheckLine]>) -> Re
             let _ = writeln!(w);
         }
     }
-    let _ = writeln!(w, "## Files\n\nResult files (HDF5, layouts in [reference/files.md](reference/files.md)): {}.\n",
-        list_h5(results).iter().map(|n| format!("`results/{n}`")).collect::<Vec<_>>().join(", "));
+    let _ = writeln!(
+        w,
+        "## Files\n\nResult files (HDF5, layouts in [reference/files.md](reference/files.md)): {}.\n",
+        list_h5(results).iter().map(|n| format!("`results/{n}`")).collect::<Vec<_>>().join(", ")
+    );
     Ok(md)
 }
 
 fn list_h5(results: &Path) -> Vec<String> {
     let mut names: Vec<String> = std::fs::read_dir(results)
-        .map(|d| {
-            d.filter_map(|e| e.ok())
-                .filter_map(|e| e.file_name().into_string().ok())
-                .filter(|n| n.ends_with(".h5"))
-                .collect()
-        })
+        .map(|d| d.filter_map(|e| e.ok()).filter_map(|e| e.file_name().into_string().ok()).filter(|n| n.ends_with(".h5")).collect())
         .unwrap_or_default();
     names.sort();
     names
@@ -220,72 +235,107 @@ fn figure_captions(results: &Path) -> Result<Vec<(u32, String)>, ReportError> {
     let mut out = Vec::new();
     let f1 = SweepData::read(&results.join("figure1.h5"))?;
     let s = first_solver(&f1)?;
-    out.push((1, format!(
-        "Baseline time history ({}): contact force, foot and ball velocities, compression and energies. \
+    out.push((
+        1,
+        format!(
+            "Baseline time history ({}): contact force, foot and ball velocities, compression and energies. \
          Peak force {:.0} N at {:.3} ms, maximum compression {:.2} mm at {:.3} ms, contact time {:.3} ms, \
          exit speeds v_b⁺ = {:.3} m/s and v_f⁺ = {:.3} m/s. The velocity curves cross at maximum compression (δ̇ = 0); \
          the force has a kink there because the paper's law (Eq. 20) damps only while δ̇ > 0. \
          The dashed K + U + D stays at the initial kinetic energy (energy budget, Eqs. 30–33).",
-        s.solver,
-        col(s, "peak_force")?[0], col(s, "peak_force_time")?[0] * 1e3,
-        col(s, "max_compression")?[0] * 1e3, col(s, "max_compression_time")?[0] * 1e3,
-        col(s, "contact_time")?[0] * 1e3, col(s, "v_ball_out")?[0], col(s, "v_foot_out")?[0]
-    )));
+            s.solver,
+            col(s, "peak_force")?[0],
+            col(s, "peak_force_time")?[0] * 1e3,
+            col(s, "max_compression")?[0] * 1e3,
+            col(s, "max_compression_time")?[0] * 1e3,
+            col(s, "contact_time")?[0] * 1e3,
+            col(s, "v_ball_out")?[0],
+            col(s, "v_foot_out")?[0]
+        ),
+    ));
     let f2 = SweepData::read(&results.join("figure2.h5"))?;
     let s = first_solver(&f2)?;
     let mf = f2.parameter("foot_mass")?;
     let ratio = col(s, "speed_ratio")?;
     let last = mf.len() - 1;
-    out.push((2, format!(
-        "Speed ratio v_b⁺/v_f⁻ against effective foot mass m_f from {} to {} kg ({} points): it rises from {:.3} to {:.3} \
+    out.push((
+        2,
+        format!(
+            "Speed ratio v_b⁺/v_f⁻ against effective foot mass m_f from {} to {} kg ({} points): it rises from {:.3} to {:.3} \
          and flattens as the foot becomes a moving wall; the dashed curve is Eq. 38 with e = 1 (at most 2).",
-        mf[0], mf[last], mf.len(), ratio[0], ratio[last]
-    )));
+            mf[0],
+            mf[last],
+            mf.len(),
+            ratio[0],
+            ratio[last]
+        ),
+    ));
     let f3 = SweepData::read(&results.join("figure3.h5"))?;
     let s = first_solver(&f3)?;
     let k = f3.parameter("stiffness")?;
     let (pf, tc, vb) = (col(s, "peak_force")?, col(s, "contact_time")?, col(s, "v_ball_out")?);
     let l = k.len() - 1;
-    out.push((3, format!(
-        "Stiffness sweep, k from {:.2e} to {:.2e} N/m^n: peak force {:.0} → {:.0} N (×{:.1}), contact time {:.2} → {:.2} ms, \
+    out.push((
+        3,
+        format!(
+            "Stiffness sweep, k from {:.2e} to {:.2e} N/m^n: peak force {:.0} → {:.0} N (×{:.1}), contact time {:.2} → {:.2} ms, \
          but exit speed only {:.2} → {:.2} m/s: momentum follows the area under the force pulse, not its height.",
-        k[0], k[l], pf[0], pf[l], pf[l] / pf[0], tc[0] * 1e3, tc[l] * 1e3, vb[0], vb[l]
-    )));
+            k[0],
+            k[l],
+            pf[0],
+            pf[l],
+            pf[l] / pf[0],
+            tc[0] * 1e3,
+            tc[l] * 1e3,
+            vb[0],
+            vb[l]
+        ),
+    ));
     let f4 = SweepData::read(&results.join("figure4.h5"))?;
     let s = first_solver(&f4)?;
     let c = f4.parameter("damping")?;
     let (pf, vb, e) = (col(s, "peak_force")?, col(s, "v_ball_out")?, col(s, "restitution")?);
     let l = c.len() - 1;
-    out.push((4, format!(
-        "Damping sweep, c from {} to {} N s/m: exit speed falls from {:.2} to {:.2} m/s and restitution from {:.4} to {:.3}, \
+    out.push((
+        4,
+        format!(
+            "Damping sweep, c from {} to {} N s/m: exit speed falls from {:.2} to {:.2} m/s and restitution from {:.4} to {:.3}, \
          while the peak force rises from {:.0} to {:.0} N: at high damping it is the onset jump c·V0 (dashed).",
-        c[0], c[l], vb[0], vb[l], e[0], e[l], pf[0], pf[l]
-    )));
+            c[0], c[l], vb[0], vb[l], e[0], e[l], pf[0], pf[l]
+        ),
+    ));
     let f5 = SweepData::read(&results.join("figure5.h5"))?;
     let s = first_solver(&f5)?;
     let f = f5.parameter("drive_force")?;
     let vb = col(s, "v_ball_out")?;
     let l = f.len() - 1;
-    out.push((5, format!(
-        "Drive force during contact from {} to {} N: the ball's exit speed changes from {:.2} to {:.2} m/s \
+    out.push((
+        5,
+        format!(
+            "Drive force during contact from {} to {} N: the ball's exit speed changes from {:.2} to {:.2} m/s \
          ({:+.2} m/s); the contact lasts a few ms, so the drive impulse F·t_c is small (Eq. 55).",
-        f[0], f[l], vb[0], vb[l], vb[l] - vb[0]
-    )));
+            f[0],
+            f[l],
+            vb[0],
+            vb[l],
+            vb[l] - vb[0]
+        ),
+    ));
     let f6 = SweepData::read(&results.join("figure6.h5"))?;
     let s = first_solver(&f6)?;
     let v0 = f6.parameter("ball_speed")?;
     let (vb, pf) = (col(s, "v_ball_out")?, col(s, "peak_force")?);
     let l = v0.len() - 1;
-    out.push((6, format!(
-        "Final against initial ball velocity at v_f⁻ = 22 m/s, v_b⁻ from {} to {} m/s: v_b⁺ goes from {:.2} to {:.2} m/s and the \
+    out.push((
+        6,
+        format!(
+            "Final against initial ball velocity at v_f⁻ = 22 m/s, v_b⁻ from {} to {} m/s: v_b⁺ goes from {:.2} to {:.2} m/s and the \
          peak force from {:.0} to {:.0} N, following the relative kinetic energy ½μ(v_f⁻ − v_b⁻)² (Eq. 56).",
-        v0[0], v0[l], vb[0], vb[l], pf[0], pf[l]
-    )));
+            v0[0], v0[l], vb[0], vb[l], pf[0], pf[l]
+        ),
+    ));
     let f7 = SweepData::read(&results.join("figure7.h5"))?;
     let solvers: Vec<&str> = f7.sets.iter().map(|s| s.solver.as_str()).collect();
-    out.push((7, format!(
-        "Ball exit speed of the eight Table 2 scenarios: the paper's printed values next to {}.",
-        solvers.join(" and ")
-    )));
+    out.push((7, format!("Ball exit speed of the eight Table 2 scenarios: the paper's printed values next to {}.", solvers.join(" and "))));
     Ok(out)
 }

@@ -2,10 +2,10 @@
 //! the reproduction report.
 
 use crate::identify::report::{LAWS, SYNTHETIC_FIT, SYNTHETIC_LAW_FIT, TABLE2_FIT};
+use crate::links::relative;
 use crate::printable::Printable;
 use crate::report::CheckLine;
 use std::io::Write;
-use crate::links::relative;
 use std::path::{Path, PathBuf};
 
 /// Where `kick reproduce` reads and writes.
@@ -157,7 +157,11 @@ pub const STEP_NAMES: [&str; 18] = [
 /// both of which read back to the same `f64`.
 fn number(x: f64) -> String {
     let (plain, scientific) = (format!("{x}"), format!("{x:e}"));
-    if scientific.len() < plain.len() { scientific } else { plain }
+    if scientific.len() < plain.len() {
+        scientific
+    } else {
+        plain
+    }
 }
 
 /// The 1D scenario's flags as `kick fit synthesize` (and `simulate`) take them.
@@ -187,7 +191,12 @@ impl Call {
             Call::Checks => "kick check".into(),
             Call::ForceHistory { out, .. } => crate::force_history::force_history_command(out),
             Call::Leg(leg) => {
-                format!("kick leg --knee {} --ankle {} --sweep-out {}", number(leg.knee), number(leg.ankle), leg.sweep_out.as_deref().map(d).unwrap_or_default())
+                format!(
+                    "kick leg --knee {} --ankle {} --sweep-out {}",
+                    number(leg.knee),
+                    number(leg.ankle),
+                    leg.sweep_out.as_deref().map(d).unwrap_or_default()
+                )
             }
             Call::Laws(laws) => format!(
                 "kick laws --scenarios {} --samples {}{}",
@@ -220,13 +229,15 @@ impl Call {
                 b.report.as_deref().map(|r| format!(" --report {}", d(r))).unwrap_or_default(),
                 b.solvers_report.as_deref().map(|r| format!(" --solvers-report {}", d(r))).unwrap_or_default()
             ),
-            Call::Figures { .. } | Call::Patch { .. } | Call::Ball | Call::Pages | Call::Validation | Call::Pages3d | Call::Report => format!(
-                "kick reproduce --experiments {} --out {} --report {}{} --only {step}",
-                d(&args.experiments),
-                d(&args.out),
-                d(&args.report),
-                if args.quick_bench { " --quick-bench" } else { "" }
-            ),
+            Call::Figures { .. } | Call::Patch { .. } | Call::Ball | Call::Pages | Call::Validation | Call::Pages3d | Call::Report => {
+                format!(
+                    "kick reproduce --experiments {} --out {} --report {}{} --only {step}",
+                    d(&args.experiments),
+                    d(&args.out),
+                    d(&args.report),
+                    if args.quick_bench { " --quick-bench" } else { "" }
+                )
+            }
         }
     }
 }
@@ -262,7 +273,14 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         restitution: Some(0.66),
         ..kick_core::ScenarioSpec::default()
     };
-    let synthesize = |name: &str, seed, truth, time_offset| Call::Synthesize { out: fits.clone(), name: name.into(), seed, times: 80, truth, time_offset };
+    let synthesize = |name: &str, seed, truth, time_offset| Call::Synthesize {
+        out: fits.clone(),
+        name: name.into(),
+        seed,
+        times: 80,
+        truth,
+        time_offset,
+    };
     let calls: [Vec<Call>; 18] = [
         files.into_iter().map(|file| Call::Run { file, out: out.clone() }).collect(),
         vec![Call::Figures { out: out.clone(), figures: figures.clone() }],
@@ -272,7 +290,11 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         vec![Call::Patch { out: out.clone(), figures: figures.clone() }],
         vec![leg_call(args)],
         vec![Call::Ball],
-        vec![Call::Laws(crate::identify::LawsSettings { scenarios: args.experiments.join("table2.toml"), out: Some(fits.clone()), samples: 200 })],
+        vec![Call::Laws(crate::identify::LawsSettings {
+            scenarios: args.experiments.join("table2.toml"),
+            out: Some(fits.clone()),
+            samples: 200,
+        })],
         vec![Call::Profile(crate::identify::ProfileSettings { out: Some(fits.clone()), spread: 1.5, points: 9, map_points: 21, seed: 5 })],
         // Synthetic data (the paper's law; Hunt-Crossley with a late first touch), fitted back.
         vec![synthesize("synthetic", 1, kick_core::ScenarioSpec::default(), 0.0), synthesize(law_name, 2, hunt_crossley, 2.5e-4)],
@@ -404,7 +426,8 @@ impl Call {
                 say(log, &bench.text());
             }
             Call::Ball => {
-                let written = crate::ball::write(&args.out, &args.out.join("figures"), &report_dir.join("ball.md"), &self.command(args, "ball"))?;
+                let written =
+                    crate::ball::write(&args.out, &args.out.join("figures"), &report_dir.join("ball.md"), &self.command(args, "ball"))?;
                 say(log, &format!("the ball alone: {} files\n", written.len()));
             }
             Call::Pages => {
@@ -454,8 +477,8 @@ impl Call {
                     state.checks = Some(crate::checks::run_all().rows);
                 }
                 let checks = state.checks.as_deref();
-                let mut text =
-                    crate::report::render(&args.out, &relative(&report_dir, &args.out.join("figures")), checks).map_err(|e| e.to_string())?;
+                let mut text = crate::report::render(&args.out, &relative(&report_dir, &args.out.join("figures")), checks)
+                    .map_err(|e| e.to_string())?;
                 // Point the report at the sections written beside it.
                 let sections = [
                     ("solvers.md", "Solvers of the 1D model: precision, trust regions"),
@@ -524,10 +547,7 @@ impl Printable for CheckReport {
             files.dedup();
             files.len()
         };
-        text.push_str(&format!(
-            "{} files compared (timing outputs left out), {files} differ\n",
-            self.compared
-        ));
+        text.push_str(&format!("{} files compared (timing outputs left out), {files} differ\n", self.compared));
         text
     }
 }

@@ -61,7 +61,9 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     let (axis, x) = &data.parameters[0];
     let set = &data.sets[0];
     let column = |name: &str| {
-        set.column(name).map(<[f64]>::to_vec).ok_or_else(|| FigureError::Draw { figure: h5.display().to_string(), message: format!("no column {name}") })
+        set.column(name)
+            .map(<[f64]>::to_vec)
+            .ok_or_else(|| FigureError::Draw { figure: h5.display().to_string(), message: format!("no column {name}") })
     };
     let curves = curves(&data);
     let pick = |v: &[f64], rows: &[usize]| -> Vec<f64> { rows.iter().map(|&r| v[r]).collect() };
@@ -103,4 +105,3 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     }
     Ok(written)
 }
-

@@ -193,7 +193,12 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
             None => "a rigid sphere on a rigid instep through Table 1's stiff power law; a real ball wraps around the instep and its shell bends, which is softer and lasts longer",
             Some(_) => "the pressurised ball flattens on a flat, rigid instep (pressure times patch area); the foot's soft tissue and a curved instep, not modelled, lengthen a real contact",
         };
-        rows.push(row(Role::Prediction, &s, table1, Comparison::new("contact time", get("contact_time_instep")?, base.contact_time, short_contact)));
+        rows.push(row(
+            Role::Prediction,
+            &s,
+            table1,
+            Comparison::new("contact time", get("contact_time_instep")?, base.contact_time, short_contact),
+        ));
         let effective = get("contact_time_instep")?
             .scaled_by(&get("effective_contact_fraction")?)
             .ok_or("effective_contact_fraction must be a fraction >= 0")?;
@@ -223,9 +228,10 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
             ),
         ));
         // The mechanical kicking limb: a nearly rigid foot, like the model's, at its two measured foot speeds.
-        for (v, time_key, travel_key) in
-            [(limb_slow, "contact_time_limb_slow", "contact_distance_limb_slow"), (limb_fast, "contact_time_limb_fast", "contact_distance_limb_fast")]
-        {
+        for (v, time_key, travel_key) in [
+            (limb_slow, "contact_time_limb_slow", "contact_distance_limb_slow"),
+            (limb_fast, "contact_time_limb_fast", "contact_distance_limb_fast"),
+        ] {
             let c = s.with(Parameter::FootSpeed, v).map_err(error)?;
             let k = run(&c)?;
             let why = " (the limb's measured foot speed)";
@@ -244,12 +250,7 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
                     ),
                 ),
             ));
-            rows.push(row(
-                Role::Prediction,
-                &c,
-                why,
-                Comparison::new("contact time, mechanical limb", get(time_key)?, k.contact_time, af),
-            ));
+            rows.push(row(Role::Prediction, &c, why, Comparison::new("contact time, mechanical limb", get(time_key)?, k.contact_time, af)));
             rows.push(row(
                 Role::Prediction,
                 &c,
@@ -305,12 +306,7 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
             ("peak_force_instep_asai2002", "from 4500 Hz video and a finite-element simulation, not a force measurement"),
             ("peak_force_shinkai2009", "from the motion of the ball's centre of gravity in ultra-high-speed video"),
         ] {
-            rows.push(row(
-                Role::Prediction,
-                &nunome,
-                &nunome_why,
-                Comparison::new("peak force", get(key)?, nunome_model.peak_force, what),
-            ));
+            rows.push(row(Role::Prediction, &nunome, &nunome_why, Comparison::new("peak force", get(key)?, nunome_model.peak_force, what)));
         }
         for key in ["ball_speed_max_instep", "ball_speed_instep_nunome2002"] {
             rows.push(
@@ -318,12 +314,7 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
                     Role::Prediction,
                     &s,
                     " (Table 1's)",
-                    Comparison::new(
-                        "ball speed after contact",
-                        get(key)?,
-                        base.ball_speed,
-                        "set by m_f, v_f and the restitution",
-                    ),
+                    Comparison::new("ball speed after contact", get(key)?, base.ball_speed, "set by m_f, v_f and the restitution"),
                 )
                 .not_counted("no foot speed was measured with these ball speeds: the model's follows the assumed 22 m/s"),
             );
@@ -360,7 +351,8 @@ fn identify(m: &Measurements) -> Result<Vec<Identified>, String> {
         1e3 * target
     );
     let mut out = Vec::new();
-    for (name, s) in [("paper's law, c = 120 N s/m", base), (&*format!("Hunt-Crossley (exact), e = {}", short(restitution)), hunt_crossley)] {
+    for (name, s) in [("paper's law, c = 120 N s/m", base), (&*format!("Hunt-Crossley (exact), e = {}", short(restitution)), hunt_crossley)]
+    {
         let contact = |ln_k: f64| -> f64 {
             let run = || -> Result<f64, String> {
                 let c = s.with(Parameter::Stiffness, ln_k.exp()).map_err(error)?;
@@ -397,7 +389,10 @@ fn identify(m: &Measurements) -> Result<Vec<Identified>, String> {
 /// The offset at which the μ = `friction` ball of `curve` leaves at `speed`
 /// (speed falls with the offset up to the largest spin).
 fn offset_at_speed(base: &Scenario, curve: &[SpinPoint], speed: f64) -> Result<SpinPoint, String> {
-    let i = curve.windows(2).position(|w| w[0].speed >= speed && w[1].speed < speed).ok_or(format!("no offset sends the ball off at {speed} m/s"))?;
+    let i = curve
+        .windows(2)
+        .position(|w| w[0].speed >= speed && w[1].speed < speed)
+        .ok_or(format!("no offset sends the ball off at {speed} m/s"))?;
     let mu = curve[i].friction;
     let f = |e: f64| spin_point(base, e, mu).map_or(f64::NAN, |p| p.speed - speed);
     let root = kick_core::roots::brent(f, curve[i].offset, curve[i + 1].offset, 1e-12, 200).ok_or("offset search failed")?;
@@ -407,7 +402,8 @@ fn offset_at_speed(base: &Scenario, curve: &[SpinPoint], speed: f64) -> Result<S
 /// The offset–friction sweep of Table 1's kick beside Asai et al. (2002) and the measured swerve and free kicks.
 fn curve_kicks(m: &Measurements) -> Result<CurveKicks, String> {
     let base = Scenario::baseline();
-    let curves: Vec<Vec<SpinPoint>> = [0.0, REFERENCE_FRICTION, 1.0].iter().map(|&mu| spin_curve(&base, mu)).collect::<Result<_, _>>().map_err(error)?;
+    let curves: Vec<Vec<SpinPoint>> =
+        [0.0, REFERENCE_FRICTION, 1.0].iter().map(|&mu| spin_curve(&base, mu)).collect::<Result<_, _>>().map_err(error)?;
     let largest = vec![largest_spin(&base, &curves[1]).map_err(error)?, largest_spin(&base, &curves[2]).map_err(error)?];
     let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error);
     let swerve = get("ball_speed_swerve_instep")?.midpoint().ok_or("no swerve speed")?;
@@ -423,21 +419,32 @@ fn curve_kicks(m: &Measurements) -> Result<CurveKicks, String> {
             p.speed
         )
     };
-    let offset_caveat = "Asai et al.'s offset (foot axis to ball axis, on a deforming ball) is not the model's (a knife-edge normal tilted by asin(e/R))";
+    let offset_caveat =
+        "Asai et al.'s offset (foot axis to ball axis, on a deforming ball) is not the model's (a knife-edge normal tilted by asin(e/R))";
     let mut rows = vec![
         Row::new(
             m,
             Role::Prediction,
             model,
             cond(&at_free, &format!(" (chosen so the ball leaves at {free} m/s, the middle of the measured launch speeds)")),
-            Comparison::new("spin of a free kick", get("free_kick_spin")?, at_free.spin, "spin from friction alone (the normal passes through the centre)"),
+            Comparison::new(
+                "spin of a free kick",
+                get("free_kick_spin")?,
+                at_free.spin,
+                "spin from friction alone (the normal passes through the centre)",
+            ),
         ),
         Row::new(
             m,
             Role::Prediction,
             model,
             cond(&at_swerve, &format!(" (chosen so the ball leaves at the swerve kicks' {swerve} m/s)")),
-            Comparison::new("spin of a swerve kick", get("spin_max_professional")?, at_swerve.spin, "the measured number is the largest recorded, not a mean"),
+            Comparison::new(
+                "spin of a swerve kick",
+                get("spin_max_professional")?,
+                at_swerve.spin,
+                "the measured number is the largest recorded, not a mean",
+            ),
         ),
     ];
     let mut gain_at = |p: &SpinPoint, why: &str| -> Result<(), String> {
@@ -480,7 +487,10 @@ fn curve_kicks(m: &Measurements) -> Result<CurveKicks, String> {
                 format!("offset of largest spin, mu = {}", short(p.friction)),
                 get("spin_peak_offset_asai2002")?,
                 p.offset,
-                format!("beyond it the tilted normal lets the foot glance off; the ball leaves at {:.1} m/s there; {offset_caveat}", p.speed),
+                format!(
+                    "beyond it the tilted normal lets the foot glance off; the ball leaves at {:.1} m/s there; {offset_caveat}",
+                    p.speed
+                ),
             ),
         ));
     }
@@ -798,7 +808,16 @@ impl Validation {
         let _ = writeln!(w, "| law | parameter | estimate | unit | targets | note |");
         let _ = writeln!(w, "|---|---|---|---|---|---|");
         for i in &self.implied {
-            let _ = writeln!(w, "| {} | {} | {} | {} | {} | {} |", i.law, i.parameter, estimate_cell(i.value, i.sigma), i.unit, i.targets, i.note);
+            let _ = writeln!(
+                w,
+                "| {} | {} | {} | {} | {} | {} |",
+                i.law,
+                i.parameter,
+                estimate_cell(i.value, i.sigma),
+                i.unit,
+                i.targets,
+                i.note
+            );
         }
         let ck = &self.curve_kicks;
         let _ = writeln!(w, "\n## Curve kicks: spin against offset and friction\n");

@@ -1,19 +1,19 @@
 //! `fit`: the identification of `kick fit data` (crate kick-identify) from
 //! arrays instead of a specification file and a CSV file.
 
+use crate::params::{names, optional_number, real_number, real_vector};
 use crate::{guard, library_error, value_error};
 use kick_core::parameters::{self, SetParameter};
 use kick_core::ScenarioSpec;
 use kick_identify::data::{Channel, HistoryData, WeightedHistory};
 use kick_identify::fit::{fit_with_cancel, FitOptions, FitProblem};
-use std::sync::atomic::Ordering;
 use kick_identify::{FitSpec, Observations};
 use numpy::{PyArray1, PyArray2};
-use pyo3::prelude::*;
-use crate::params::{names, optional_number, real_number, real_vector};
 use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::collections::BTreeMap;
+use std::sync::atomic::Ordering;
 
 /// Where a refusal says the data came from.
 const SOURCE: &str = "fit data";
@@ -67,7 +67,8 @@ pub fn fit<'py>(
             Ok(given) => given
                 .iter()
                 .map(|(k, v)| {
-                    let name: String = k.extract().map_err(|_| PyTypeError::new_err(format!("`sigma`'s keys are channel names, got {k}")))?;
+                    let name: String =
+                        k.extract().map_err(|_| PyTypeError::new_err(format!("`sigma`'s keys are channel names, got {k}")))?;
                     Ok((Channel::from_name(&name).map_err(value_error)?, real_number(&format!("sigma[{name:?}]"), &v)?))
                 })
                 .collect::<PyResult<_>>()?,
@@ -75,7 +76,10 @@ pub fn fit<'py>(
                 let s = real_number("sigma", sigma).map_err(|e| {
                     let got = sigma.get_type().name().map(|n| n.to_string()).unwrap_or_default();
                     if e.is_instance_of::<PyTypeError>(py) {
-                        PyTypeError::new_err(format!("`sigma` takes a number or a dict {{channel: number}}, got {got} {}", sigma.repr().map(|r| r.to_string()).unwrap_or_default()))
+                        PyTypeError::new_err(format!(
+                            "`sigma` takes a number or a dict {{channel: number}}, got {got} {}",
+                            sigma.repr().map(|r| r.to_string()).unwrap_or_default()
+                        ))
                     } else {
                         e
                     }
@@ -85,24 +89,14 @@ pub fn fit<'py>(
         };
         let observations = Observations::history(WeightedHistory::new(data, sigma).map_err(value_error)?);
         let scenario = crate::params::scenario_spec(Some(&known), crate::law(law)?)?;
-        let spec = FitSpec {
-            free,
-            law: None,
-            restitution: None,
-            time_offset,
-            scenario,
-            scalar: Vec::new(),
-            history: None,
-            truth: None,
-        };
+        let spec = FitSpec { free, law: None, restitution: None, time_offset, scenario, scalar: Vec::new(), history: None, truth: None };
         let start = spec.start(SOURCE).map_err(value_error)?;
         let free = spec.free_parameters().map_err(value_error)?;
         let problem = FitProblem { start, free, observations };
         // Ctrl-C stops the optimiser at its next model evaluation (KeyboardInterrupt).
-        let report = crate::interruptible(py, |cancel| {
-            fit_with_cancel(&problem, &FitOptions::default(), &|| cancel.load(Ordering::Relaxed))
-        })?
-        .map_err(library_error)?;
+        let report =
+            crate::interruptible(py, |cancel| fit_with_cancel(&problem, &FitOptions::default(), &|| cancel.load(Ordering::Relaxed)))?
+                .map_err(library_error)?;
 
         let out = PyDict::new(py);
         let names: Vec<&str> = report.estimates.iter().map(|e| e.parameter.name()).collect();

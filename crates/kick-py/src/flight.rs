@@ -68,10 +68,7 @@ pub fn flight_many<'py>(
             let mut shape: Vec<usize> = array.getattr("shape")?.extract()?;
             if p.components() == 3 {
                 if shape.last() != Some(&3) {
-                    return Err(value_error(format!(
-                        "`{}` takes three numbers (x, y, z) on its last axis, got shape {shape:?}",
-                        p.name()
-                    )));
+                    return Err(value_error(format!("`{}` takes three numbers (x, y, z) on its last axis, got shape {shape:?}", p.name())));
                 }
                 shape.pop();
             }
@@ -93,11 +90,8 @@ pub fn flight_many<'py>(
             let values: Vec<f64> = numpy.getattr("ravel")?.call1((full,))?.extract()?;
             flat.push((*p, values));
         }
-        let columns: Vec<kick_flight::Column> =
-            flat.iter().map(|(p, v)| kick_flight::Column { parameter: *p, values: v }).collect();
-        let results = py
-            .detach(|| kick_flight::flight_many(&FlightSpec::default(), &columns, rows, threads))
-            .map_err(library_error)?;
+        let columns: Vec<kick_flight::Column> = flat.iter().map(|(p, v)| kick_flight::Column { parameter: *p, values: v }).collect();
+        let results = py.detach(|| kick_flight::flight_many(&FlightSpec::default(), &columns, rows, threads)).map_err(library_error)?;
         many_outputs(py, &shape, &results)
     })
 }

@@ -20,8 +20,8 @@ mod params;
 use kick_compliant::SolverChoice;
 use kick_core::{LawKind, RecordingSolver, Spacing, Status, HISTORY_COLUMNS, MAX_HISTORY_SAMPLES};
 use numpy::PyArray1;
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::create_exception;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::fmt::Display;
@@ -187,8 +187,7 @@ fn history<'py>(
         let spec = params::scenario_spec(params, crate::law(law)?)?;
         let scenario = spec.build().map_err(value_error)?;
         let solver = solver_1d(solver, params::optional_number("dt", dt)?)?;
-        let (_, history) =
-            py.detach(|| solver.solve_sampled(&scenario, spacing, MAX_HISTORY_SAMPLES)).map_err(library_error)?;
+        let (_, history) = py.detach(|| solver.solve_sampled(&scenario, spacing, MAX_HISTORY_SAMPLES)).map_err(library_error)?;
         let out = PyDict::new(py);
         for (k, (name, _)) in HISTORY_COLUMNS.iter().enumerate() {
             let column: Vec<f64> = history.samples.iter().map(|s| s.values()[k]).collect();

@@ -417,18 +417,12 @@ pub(crate) fn run_many<'py, M: Model>(
     let base_ref = &base;
     let solve = |cancel: &AtomicBool| {
         in_pool(threads, || {
-            chunks
-                .into_par_iter()
-                .flat_map_iter(|chunk| solve_chunk(model, base_ref, inputs_ref, shape_ref, chunk, cancel))
-                .collect()
+            chunks.into_par_iter().flat_map_iter(|chunk| solve_chunk(model, base_ref, inputs_ref, shape_ref, chunk, cancel)).collect()
         })
     };
     // One chunk is over in moments: no watching thread (it doubled a one-row call's 24 us).
-    let failures: Vec<(usize, String)> = if rows <= CHUNK {
-        py.detach(|| solve(&AtomicBool::new(false)))?
-    } else {
-        crate::interruptible(py, solve)??
-    };
+    let failures: Vec<(usize, String)> =
+        if rows <= CHUNK { py.detach(|| solve(&AtomicBool::new(false)))? } else { crate::interruptible(py, solve)?? };
     drop(output_guards);
     drop(status_guard);
     drop(evaluations_guard);

@@ -155,7 +155,9 @@ pub fn names(name: &str, value: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
     let refused = || PyTypeError::new_err(format!("`{name}` takes a list of names, got {}", described(value)));
     if value.is_instance_of::<PyString>() {
         let one: String = value.extract()?;
-        return Err(PyTypeError::new_err(format!("`{name}` takes a list of names, got str {one:?}: write {name}=[{one:?}]").replace('"', "'")));
+        return Err(PyTypeError::new_err(
+            format!("`{name}` takes a list of names, got str {one:?}: write {name}=[{one:?}]").replace('"', "'"),
+        ));
     }
     value.extract::<Vec<String>>().map_err(|_| refused())
 }

@@ -14,11 +14,7 @@ impl RestitutionModel {
         if (0.0..=1.0).contains(&restitution) {
             Ok(RestitutionModel { restitution })
         } else {
-            Err(KickError::InvalidParameter {
-                name: "restitution",
-                value: restitution,
-                requirement: "in [0, 1]",
-            })
+            Err(KickError::InvalidParameter { name: "restitution", value: restitution, requirement: "in [0, 1]" })
         }
     }
     pub fn restitution(&self) -> f64 {
@@ -36,10 +32,7 @@ impl ExitModel for RestitutionModel {
         let ball = (1.0 + e) * m_f / m * v_f + (m_b - e * m_f) / m * v_b;
         // Eq. 36 rearranged: v_f⁺ = v_b⁺ − e (v_f⁻ − v_b⁻)
         let foot = ball - e * (v_f - v_b);
-        Ok(ExitVelocities {
-            foot: finite("foot exit velocity", foot, 0.0)?,
-            ball: finite("ball exit velocity", ball, 0.0)?,
-        })
+        Ok(ExitVelocities { foot: finite("foot exit velocity", foot, 0.0)?, ball: finite("ball exit velocity", ball, 0.0)? })
     }
 }
 

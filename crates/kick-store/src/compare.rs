@@ -46,8 +46,15 @@ fn describe(a: &Value, b: &Value) -> Option<String> {
         (Value::Strings(a), Value::Strings(b)) => {
             let differing: Vec<usize> = (0..a.len()).filter(|&i| a[i] != b[i]).collect();
             differing.first().map(|&i| {
-                let short = |s: &str| if s.chars().count() > 60 { format!("{}…", s.chars().take(60).collect::<String>()) } else { s.to_string() };
-                format!("{} of {} strings differ; first at index {i}: committed {:?}, regenerated {:?}", differing.len(), a.len(), short(&a[i]), short(&b[i]))
+                let short =
+                    |s: &str| if s.chars().count() > 60 { format!("{}…", s.chars().take(60).collect::<String>()) } else { s.to_string() };
+                format!(
+                    "{} of {} strings differ; first at index {i}: committed {:?}, regenerated {:?}",
+                    differing.len(),
+                    a.len(),
+                    short(&a[i]),
+                    short(&b[i])
+                )
             })
         }
         (a, b) if a == b => None,

@@ -42,12 +42,12 @@
 //! object time stamps (on by default for every group and dataset) are off,
 //! so the same run writes the same bytes.
 
+use crate::layouts::Layout;
 use crate::output::{OutputError, Staged};
 use crate::provenance::Provenance;
 use hdf5::types::VarLenUnicode;
-use kick_core::Status;
-use crate::layouts::Layout;
 use hdf5::{Dataset, File, Group};
+use kick_core::Status;
 use std::path::{Path, PathBuf};
 
 /// Rows per HDF5 chunk and per flush.
@@ -75,40 +75,23 @@ fn layout(path: &Path, message: impl Into<String>) -> H5Error {
 
 fn varlen(path: &Path, text: &str) -> Result<VarLenUnicode, H5Error> {
     // HDF5 strings end at the first NUL.
-    text.replace('\0', " ")
-        .parse::<VarLenUnicode>()
-        .map_err(|e| layout(path, format!("cannot store text: {e}")))
+    text.replace('\0', " ").parse::<VarLenUnicode>().map_err(|e| layout(path, format!("cannot store text: {e}")))
 }
 
 /// Write a scalar string attribute.
 pub fn write_str_attr(location: &hdf5::Location, path: &Path, name: &str, value: &str) -> Result<(), H5Error> {
     let value = varlen(path, value)?;
-    location
-        .new_attr::<VarLenUnicode>()
-        .shape(())
-        .create(name)
-        .and_then(|a| a.write_scalar(&value))
-        .map_err(h5err(path))
+    location.new_attr::<VarLenUnicode>().shape(()).create(name).and_then(|a| a.write_scalar(&value)).map_err(h5err(path))
 }
 
 /// Write a scalar f64 attribute.
 pub fn write_f64_attr(location: &hdf5::Location, path: &Path, name: &str, value: f64) -> Result<(), H5Error> {
-    location
-        .new_attr::<f64>()
-        .shape(())
-        .create(name)
-        .and_then(|a| a.write_scalar(&value))
-        .map_err(h5err(path))
+    location.new_attr::<f64>().shape(()).create(name).and_then(|a| a.write_scalar(&value)).map_err(h5err(path))
 }
 
 /// Write a scalar u64 attribute.
 pub fn write_u64_attr(location: &hdf5::Location, path: &Path, name: &str, value: u64) -> Result<(), H5Error> {
-    location
-        .new_attr::<u64>()
-        .shape(())
-        .create(name)
-        .and_then(|a| a.write_scalar(&value))
-        .map_err(h5err(path))
+    location.new_attr::<u64>().shape(()).create(name).and_then(|a| a.write_scalar(&value)).map_err(h5err(path))
 }
 
 /// Read a scalar string attribute.
@@ -137,12 +120,7 @@ pub fn new_group(parent: &Group, name: &str) -> hdf5::Result<Group> {
 fn group_at(root: &Group, relative: &str, path: &Path) -> Result<Group, H5Error> {
     let mut group = root.clone();
     for part in relative.split('/').filter(|p| !p.is_empty()) {
-        group = if group.link_exists(part) {
-            group.group(part)
-        } else {
-            new_group(&group, part)
-        }
-        .map_err(h5err(path))?;
+        group = if group.link_exists(part) { group.group(part) } else { new_group(&group, part) }.map_err(h5err(path))?;
     }
     Ok(group)
 }
@@ -205,23 +183,13 @@ fn extendable_with<T: hdf5::H5Type>(
 
 /// Write a complete 1D f64 dataset with its unit.
 pub fn write_column(group: &Group, path: &Path, column: &Column, values: &[f64]) -> Result<(), H5Error> {
-    let dataset = group
-        .new_dataset_builder()
-        .obj_track_times(false)
-        .with_data(values)
-        .create(column.name.as_str())
-        .map_err(h5err(path))?;
+    let dataset = group.new_dataset_builder().obj_track_times(false).with_data(values).create(column.name.as_str()).map_err(h5err(path))?;
     write_str_attr(&dataset, path, "units", &column.unit)
 }
 
 /// Write a complete 1D u64 dataset (row indices) with its unit.
 pub fn write_indices(group: &Group, path: &Path, name: &str, unit: &str, values: &[u64]) -> Result<(), H5Error> {
-    let dataset = group
-        .new_dataset_builder()
-        .obj_track_times(false)
-        .with_data(values)
-        .create(name)
-        .map_err(h5err(path))?;
+    let dataset = group.new_dataset_builder().obj_track_times(false).with_data(values).create(name).map_err(h5err(path))?;
     write_str_attr(&dataset, path, "units", unit)
 }
 
@@ -237,11 +205,7 @@ pub fn write_grid(file: &File, path: &Path, axes: &[(Column, &[f64])]) -> Result
     let names: Vec<String> = axes.iter().map(|(c, _)| c.name.clone()).collect();
     write_strings(&group, path, "axes", &names)?;
     let shape: Vec<u64> = axes.iter().map(|(_, v)| v.len() as u64).collect();
-    file.new_attr::<u64>()
-        .shape(shape.len())
-        .create("grid_shape")
-        .and_then(|a| a.write(&shape))
-        .map_err(h5err(path))
+    file.new_attr::<u64>().shape(shape.len()).create("grid_shape").and_then(|a| a.write(&shape)).map_err(h5err(path))
 }
 
 /// Read the root attribute `grid_shape` (see [`write_grid`]); `None` for a file without one.
@@ -252,12 +216,7 @@ pub fn read_grid_shape(file: &File) -> Option<Vec<u64>> {
 /// Write a complete 1D string dataset.
 pub fn write_strings(group: &Group, path: &Path, name: &str, values: &[String]) -> Result<(), H5Error> {
     let values = values.iter().map(|v| varlen(path, v)).collect::<Result<Vec<_>, _>>()?;
-    let dataset = group
-        .new_dataset_builder()
-        .obj_track_times(false)
-        .with_data(values.as_slice())
-        .create(name)
-        .map_err(h5err(path))?;
+    let dataset = group.new_dataset_builder().obj_track_times(false).with_data(values.as_slice()).create(name).map_err(h5err(path))?;
     write_str_attr(&dataset, path, "units", "")
 }
 
@@ -401,10 +360,7 @@ impl SweepWriter {
         write_set_attrs(&file, path, &sets[0])?;
 
         let group = new_group(&file, "parameters").map_err(h5err(path))?;
-        let parameter_datasets = parameters
-            .iter()
-            .map(|c| column(&group, c))
-            .collect::<Result<Vec<_>, _>>()?;
+        let parameter_datasets = parameters.iter().map(|c| column(&group, c)).collect::<Result<Vec<_>, _>>()?;
         let mut set_writers = Vec::new();
         for (i, set) in sets.iter().enumerate() {
             let base = if i == 0 {
@@ -415,11 +371,7 @@ impl SweepWriter {
                 g
             };
             let outcomes = new_group(&base, "outcomes").map_err(h5err(path))?;
-            let columns = set
-                .columns
-                .iter()
-                .map(|c| column(&outcomes, c))
-                .collect::<Result<Vec<_>, _>>()?;
+            let columns = set.columns.iter().map(|c| column(&outcomes, c)).collect::<Result<Vec<_>, _>>()?;
             let status = extendable_with::<u8>(&outcomes, "status", "1", chunk, compression, path)?;
             write_str_attr(&status, path, "meaning", &status_meaning())?;
             let failures = new_group(&base, "failures").map_err(h5err(path))?;
@@ -463,11 +415,10 @@ impl SweepWriter {
     /// Start a row with its parameter values (in the order given to `create`).
     pub fn push_parameters(&mut self, values: &[f64]) -> Result<(), H5Error> {
         if values.len() != self.parameters.len() {
-            return Err(layout(&self.path, format!(
-                "row has {} parameter values, the file {} columns",
-                values.len(),
-                self.parameters.len()
-            )));
+            return Err(layout(
+                &self.path,
+                format!("row has {} parameter values, the file {} columns", values.len(), self.parameters.len()),
+            ));
         }
         if self.parameter_buffer.first().map_or(0, Vec::len) >= CHUNK_ROWS {
             self.flush()?;
@@ -492,11 +443,10 @@ impl SweepWriter {
         match outcome {
             Ok(values) => {
                 if values.len() != writer.columns.len() {
-                    return Err(layout(path, format!(
-                        "row has {} outcome values, set {set} has {} columns",
-                        values.len(),
-                        writer.columns.len()
-                    )));
+                    return Err(layout(
+                        path,
+                        format!("row has {} outcome values, set {set} has {} columns", values.len(), writer.columns.len()),
+                    ));
                 }
                 for (buffer, &v) in writer.buffer.iter_mut().zip(values) {
                     buffer.push(v);
@@ -532,10 +482,7 @@ impl SweepWriter {
         let path = self.path.clone();
         for (i, set) in self.sets.iter().enumerate() {
             if set.status_buffer.len() != pending {
-                return Err(layout(&path, format!(
-                    "outcome set {i} has {} of {pending} pending rows",
-                    set.status_buffer.len()
-                )));
+                return Err(layout(&path, format!("outcome set {i} has {} of {pending} pending rows", set.status_buffer.len())));
             }
         }
         let (start, end) = (self.rows_written, self.rows_written + pending);
@@ -591,7 +538,8 @@ impl SweepWriter {
         let path = self.path.clone();
         let writer = self.sets.get(set).ok_or_else(|| layout(&path, format!("no outcome set {set}")))?;
         let name = format!("histories/{row:06}");
-        let new = !writer.group.link_exists("histories") || !writer.group.group("histories").is_ok_and(|g| g.link_exists(&format!("{row:06}")));
+        let new =
+            !writer.group.link_exists("histories") || !writer.group.group("histories").is_ok_and(|g| g.link_exists(&format!("{row:06}")));
         let group = group_at(&writer.group, &name, &path)?;
         if new {
             write_u64_attr(&group, &path, "row", row as u64)?;
@@ -736,8 +684,7 @@ impl ResultFile {
     /// The dataset at `path` with its unit; a dataset without one is a layout error.
     pub fn column(&self, path: &str) -> Result<(Column, Vec<f64>), H5Error> {
         let dataset = self.file.dataset(path).map_err(|e| layout(&self.path, format!("{path}: {e}")))?;
-        let unit =
-            read_str_attr(&dataset, "units").ok_or_else(|| layout(&self.path, format!("dataset {path} has no units attribute")))?;
+        let unit = read_str_attr(&dataset, "units").ok_or_else(|| layout(&self.path, format!("dataset {path} has no units attribute")))?;
         let values = dataset.read_raw::<f64>().map_err(h5err(&self.path))?;
         let name = path.rsplit('/').next().unwrap_or(path).to_string();
         Ok((Column { name, unit }, values))
@@ -775,11 +722,8 @@ impl ResultFile {
     }
 
     pub fn strings(&self, path: &str) -> Result<Vec<String>, H5Error> {
-        let raw = self
-            .file
-            .dataset(path)
-            .and_then(|d| d.read_raw::<VarLenUnicode>())
-            .map_err(|e| layout(&self.path, format!("{path}: {e}")))?;
+        let raw =
+            self.file.dataset(path).and_then(|d| d.read_raw::<VarLenUnicode>()).map_err(|e| layout(&self.path, format!("{path}: {e}")))?;
         Ok(raw.iter().map(|s| s.as_str().to_string()).collect())
     }
 
@@ -857,8 +801,7 @@ fn read_columns(group: &Group, path: &Path, skip: &[&str]) -> Result<Vec<(Column
             continue;
         }
         let dataset = group.dataset(&name).map_err(h5err(path))?;
-        let unit = read_str_attr(&dataset, "units")
-            .ok_or_else(|| layout(path, format!("dataset {name} has no units attribute")))?;
+        let unit = read_str_attr(&dataset, "units").ok_or_else(|| layout(path, format!("dataset {name} has no units attribute")))?;
         let values = dataset.read_raw::<f64>().map_err(h5err(path))?;
         out.push((Column { name, unit }, values));
     }
@@ -871,10 +814,7 @@ impl SweepData {
         let file = File::open(path).map_err(h5err(path))?;
         let parameters = read_columns(&file.group("parameters").map_err(h5err(path))?, path, &[])?;
         let names = if file.link_exists("scenario_names") {
-            let raw = file
-                .dataset("scenario_names")
-                .and_then(|d| d.read_raw::<VarLenUnicode>())
-                .map_err(h5err(path))?;
+            let raw = file.dataset("scenario_names").and_then(|d| d.read_raw::<VarLenUnicode>()).map_err(h5err(path))?;
             Some(raw.iter().map(|s| s.as_str().to_string()).collect())
         } else {
             None
@@ -891,10 +831,7 @@ impl SweepData {
         let mut sets = Vec::new();
         for (name, group) in groups {
             let outcomes = group.group("outcomes").map_err(h5err(path))?;
-            let status = outcomes
-                .dataset("status")
-                .and_then(|d| d.read_raw::<u8>())
-                .map_err(h5err(path))?;
+            let status = outcomes.dataset("status").and_then(|d| d.read_raw::<u8>()).map_err(h5err(path))?;
             sets.push(SetData {
                 solver: read_str_attr(&group, "solver").unwrap_or_default(),
                 group: name,
@@ -926,10 +863,7 @@ impl SweepData {
 
     /// The outcome set of a solver.
     pub fn set(&self, solver: &str) -> Result<&SetData, H5Error> {
-        self.sets
-            .iter()
-            .find(|s| s.solver == solver)
-            .ok_or_else(|| layout(&self.path, format!("no outcomes of solver `{solver}`")))
+        self.sets.iter().find(|s| s.solver == solver).ok_or_else(|| layout(&self.path, format!("no outcomes of solver `{solver}`")))
     }
 
     pub fn rows(&self) -> usize {
@@ -953,11 +887,7 @@ impl SetData {
 pub fn read_history(path: &Path, group: &str, row: usize) -> Result<Vec<(Column, Vec<f64>)>, H5Error> {
     disable_file_locking();
     let file = File::open(path).map_err(h5err(path))?;
-    let name = if group.is_empty() {
-        format!("histories/{row:06}")
-    } else {
-        format!("{group}/histories/{row:06}")
-    };
+    let name = if group.is_empty() { format!("histories/{row:06}") } else { format!("{group}/histories/{row:06}") };
     let g = file.group(&name).map_err(h5err(path))?;
     read_columns(&g, path, &[])
 }

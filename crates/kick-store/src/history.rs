@@ -27,11 +27,11 @@
 
 use crate::error::StoreError;
 use crate::h5::{self, Column, H5Error, ResultWriter, CHUNK_ROWS};
-pub use kick_study::history::*;
 use crate::output::{OutputError, Staged};
 use crate::provenance::Provenance;
 use hdf5::Dataset;
 use kick_core::Spacing;
+pub use kick_study::history::*;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::ops::ControlFlow;
@@ -86,7 +86,8 @@ impl HistoryWriter {
                 for (name, unit, values) in &meta.fixed {
                     writer.column("fixed", &Column::new(name, unit), values).map_err(h5)?;
                 }
-                let group = h5::new_group(&file, "history").map_err(|e| h5(H5Error::Hdf5 { path: path.clone(), message: e.to_string() }))?;
+                let group =
+                    h5::new_group(&file, "history").map_err(|e| h5(H5Error::Hdf5 { path: path.clone(), message: e.to_string() }))?;
                 let datasets = columns
                     .iter()
                     .map(|(n, u)| h5::extendable::<f64>(&group, n, u, CHUNK_ROWS, &path))
@@ -142,9 +143,10 @@ impl HistoryWriter {
             for (dataset, column) in datasets.iter().zip(buffer.iter_mut()) {
                 let start = dataset.size();
                 let end = start + column.len();
-                dataset.resize(end).and_then(|()| dataset.write_slice(column.as_slice(), start..end)).map_err(|e| {
-                    h5(H5Error::Hdf5 { path: self.path.clone(), message: e.to_string() })
-                })?;
+                dataset
+                    .resize(end)
+                    .and_then(|()| dataset.write_slice(column.as_slice(), start..end))
+                    .map_err(|e| h5(H5Error::Hdf5 { path: self.path.clone(), message: e.to_string() }))?;
                 column.clear();
             }
         }
@@ -388,7 +390,8 @@ mod tests {
             assert!(e.to_string().contains("1 of 2 rows"), "{e}");
             assert_eq!(std::fs::read(&path).unwrap(), b"old");
         }
-        let mut names: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        let mut names: Vec<String> =
+            std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
         names.sort();
         assert_eq!(names, ["h.csv", "h.h5"]);
     }

@@ -53,27 +53,51 @@ pub const SWEEP: Layout = Layout {
               every per-row dataset 1-D of length `rows` (attribute `rows`), rows in input order (grids in C order, the \
               last axis fastest).",
     objects: &[
-        ("/", "attributes", "provenance; `description`; the first set's `solver` and its settings as typed attributes \
+        (
+            "/",
+            "attributes",
+            "provenance; `description`; the first set's `solver` and its settings as typed attributes \
                              (step, tolerances, `law`, ...); `rows`; `grid_shape` (u64[axes], grids); `level` (`3d` for \
                              3D files); `seed`, `samples` (`kick sweep3d`); `history_interval` (history runs); a shard's \
-                             `shard_*` attributes"),
-        ("/parameters/<name>", "f64[rows]", "each parameter of the row: the 1D model's eight (and `restitution` under a \
+                             `shard_*` attributes",
+        ),
+        (
+            "/parameters/<name>",
+            "f64[rows]",
+            "each parameter of the row: the 1D model's eight (and `restitution` under a \
                                              law that takes one), a 3D grid's axes, every declared 1D and 3D parameter of \
-                                             `kick sweep3d` (vectors as `_x/_y/_z`, switches 0/1)"),
-        ("/outcomes/<name>", "f64[rows]", "the first set's outcome columns, NaN where its status is not 0: the 1D \
+                                             `kick sweep3d` (vectors as `_x/_y/_z`, switches 0/1)",
+        ),
+        (
+            "/outcomes/<name>",
+            "f64[rows]",
+            "the first set's outcome columns, NaN where its status is not 0: the 1D \
                                            model's `kick_core::OBSERVABLES`, the 3D model's `kick_3d::OBSERVABLES_3D`, a \
-                                           flight's `kick_flight::OUTCOME_COLUMNS`"),
+                                           flight's `kick_flight::OUTCOME_COLUMNS`",
+        ),
         ("/outcomes/status", "u8[rows]", "kick_core::Status code of each row in the first set"),
         ("/failures/index, /failures/message", "u64[f], string[f]", "row and message of every row whose status is not 0"),
-        ("/histories/<row:06>/<column>", "f64[samples]", "time histories of a row (history runs; attribute `row`), the \
-                                                           columns of the history layout"),
-        ("/solvers/<set>/...", "groups", "`outcomes/`, `failures/`, `histories/` of every further set, with its own \
-                                          `solver` and settings attributes; a flight after solver S is the set `S+flight`"),
+        (
+            "/histories/<row:06>/<column>",
+            "f64[samples]",
+            "time histories of a row (history runs; attribute `row`), the \
+                                                           columns of the history layout",
+        ),
+        (
+            "/solvers/<set>/...",
+            "groups",
+            "`outcomes/`, `failures/`, `histories/` of every further set, with its own \
+                                          `solver` and settings attributes; a flight after solver S is the set `S+flight`",
+        ),
         ("/scenario_names", "string[rows]", "named scenarios (Table 2 rows)"),
         ("/paper/<column>", "f64[rows]", "Table 2 as printed, when every row is one of its rows"),
-        ("/grid/<axis>, /grid/axes", "f64[n], string[axes]", "grid experiments: each axis's values with units, and the \
+        (
+            "/grid/<axis>, /grid/axes",
+            "f64[n], string[axes]",
+            "grid experiments: each axis's values with units, and the \
                                                               axes in order; f[\"outcomes/X\"][:].reshape(f.attrs[\"grid_shape\"]) \
-                                                              is the grid"),
+                                                              is the grid",
+        ),
         ("/fixed/<name>", "f64[1 or 3]", "3D grids: every parameter not swept, as the kick was built"),
     ],
     changes: "2: status codes are kick_core::Status in every table (1D failures were 1 whatever their cause); \
@@ -88,11 +112,19 @@ pub const HISTORY: Layout = Layout {
     written_by: "`kick simulate`, `kick simulate3d`, `kick flight` with `--history FILE.h5`; `kick_store::history`",
     summary: "Rows uniform in time from first touch (launch, for a flight), then the separation (landing) row.",
     objects: &[
-        ("/", "attributes", "provenance; `level` (`1d`, `3d`, `flight`); `solver` and `law` (1D, 3D) or `drag`, `lift` \
-                             (flight); `samples` (rows); `samples_requested` or `interval` (s)"),
-        ("/history/<name>", "f64[samples]", "one column each: kick_core::HISTORY_COLUMNS (1D), \
+        (
+            "/",
+            "attributes",
+            "provenance; `level` (`1d`, `3d`, `flight`); `solver` and `law` (1D, 3D) or `drag`, `lift` \
+                             (flight); `samples` (rows); `samples_requested` or `interval` (s)",
+        ),
+        (
+            "/history/<name>",
+            "f64[samples]",
+            "one column each: kick_core::HISTORY_COLUMNS (1D), \
                                              kick_3d::HISTORY_COLUMNS_3D (3D; then kick_3d::PATCH_COLUMNS_3D when the \
-                                             normal force is spread over a patch), the flight's FLIGHT_HISTORY_COLUMNS"),
+                                             normal force is spread over a patch), the flight's FLIGHT_HISTORY_COLUMNS",
+        ),
         ("/fixed/<name>", "f64[1 or 3]", "every parameter the run was solved with (defaults filled in; switches 0/1)"),
     ],
     changes: "",
@@ -106,14 +138,30 @@ pub const FIT: Layout = Layout {
     summary: "The estimates of one identification from a measured history, with what they rest on.",
     objects: &[
         ("/", "attributes", "provenance"),
-        ("/fit", "scalars, strings", "a fit report: law, termination, converged, chi_square, degrees_of_freedom, \
-                                      residual_variance, evaluations, parameters (the free ones, in order)"),
-        ("/fit/estimates/<parameter>/...", "scalars", "each estimate with its start, truth (synthetic data) and \
-                                                       standard error"),
-        ("/fit/correlation/<parameter>, /fit/singular_values", "f64[free]", "the correlation matrix by column and the \
-                                                                            singular values of the weighted Jacobian"),
-        ("/fit/residuals/<observable or channel>/...", "f64[samples]", "the data fitted and the weighted residuals at \
-                                                                        the estimates (histories: time s and each channel)"),
+        (
+            "/fit",
+            "scalars, strings",
+            "a fit report: law, termination, converged, chi_square, degrees_of_freedom, \
+                                      residual_variance, evaluations, parameters (the free ones, in order)",
+        ),
+        (
+            "/fit/estimates/<parameter>/...",
+            "scalars",
+            "each estimate with its start, truth (synthetic data) and \
+                                                       standard error",
+        ),
+        (
+            "/fit/correlation/<parameter>, /fit/singular_values",
+            "f64[free]",
+            "the correlation matrix by column and the \
+                                                                            singular values of the weighted Jacobian",
+        ),
+        (
+            "/fit/residuals/<observable or channel>/...",
+            "f64[samples]",
+            "the data fitted and the weighted residuals at \
+                                                                        the estimates (histories: time s and each channel)",
+        ),
     ],
     changes: "",
 };
@@ -126,8 +174,12 @@ pub const FIT_TABLE2: Layout = Layout {
     summary: "Each free parameter of Table 2 identified from the paper's rounded outputs, beside the unrounded ones.",
     objects: &[
         ("/", "attributes", "provenance"),
-        ("/rows/<NN>", "strings, scalars", "one group per Table 2 row: name, parameter (the one identified), \
-                                            file_value, seed_fit_value"),
+        (
+            "/rows/<NN>",
+            "strings, scalars",
+            "one group per Table 2 row: name, parameter (the one identified), \
+                                            file_value, seed_fit_value",
+        ),
         ("/rows/<NN>/fit/...", "group", "the row's fit report, as `/fit` of the `kick-fit` layout"),
     ],
     changes: "",
@@ -141,12 +193,24 @@ pub const IDENTIFIABILITY: Layout = Layout {
     summary: "Whether a history identifies the parameters: profiles of the misfit along each parameter and maps over pairs.",
     objects: &[
         ("/", "attributes", "provenance"),
-        ("/settings, /truth, /history_sigma", "scalars, strings", "the study: seed, history_times, exit_speed_sigma, \
-                                                                  law; the true parameters; the noise of each channel"),
-        ("/profiles/<source>/<parameter>/...", "f64[points]", "source `exit_speed` or `histories`: truth, factor, \
-                                                              value, chi_square, and the other parameters' factors (`others/`)"),
-        ("/maps/<source>/...", "f64[points]", "x and y (parameter names), x_factor, y_factor, chi_square over a grid of \
-                                              the two"),
+        (
+            "/settings, /truth, /history_sigma",
+            "scalars, strings",
+            "the study: seed, history_times, exit_speed_sigma, \
+                                                                  law; the true parameters; the noise of each channel",
+        ),
+        (
+            "/profiles/<source>/<parameter>/...",
+            "f64[points]",
+            "source `exit_speed` or `histories`: truth, factor, \
+                                                              value, chi_square, and the other parameters' factors (`others/`)",
+        ),
+        (
+            "/maps/<source>/...",
+            "f64[points]",
+            "x and y (parameter names), x_factor, y_factor, chi_square over a grid of \
+                                              the two",
+        ),
     ],
     changes: "",
 };
@@ -163,17 +227,29 @@ pub const PATCH_SPIN: Layout = Layout {
         ("/", "attributes", "provenance; `description`; `law`; `solver`"),
         ("/fixed/<name>", "f64[1 or 3]", "every parameter the contacts' kicks share, offset and friction aside (defaults filled in)"),
         ("/grid/offset", "f64[n]", "the offsets asked for, m"),
-        ("/asai2002/friction_gain, peak_offset", "f64[1]", "what the figure is drawn beside: Asai et al.'s (2002) \
+        (
+            "/asai2002/friction_gain, peak_offset",
+            "f64[1]",
+            "what the figure is drawn beside: Asai et al.'s (2002) \
                                                            largest spin gain from friction 0 → 1 (rad/s) and offset of \
                                                            largest spin (m), from the measurement file (attribute \
-                                                           `source`: the file and keys)"),
-        ("/curves/<contact>/mu_<μ>", "group", "one curve: `<contact>` is `point` (the rigid sphere's point contact on \
+                                                           `source`: the file and keys)",
+        ),
+        (
+            "/curves/<contact>/mu_<μ>",
+            "group",
+            "one curve: `<contact>` is `point` (the rigid sphere's point contact on \
                                               the knife-edge face) or `patch_cap` (the patch on a cap); attribute \
                                               `contact` (what it is, in words); datasets `friction` (1), `patch_contact` \
-                                              (0/1) and `instep_radius` (m, 0: flat) of one element"),
-        ("/curves/<contact>/mu_<μ>/offset, spin_z, spin, speed, launch_azimuth, contact_time", "f64[solved]", "the solved \
+                                              (0/1) and `instep_radius` (m, 0: flat) of one element",
+        ),
+        (
+            "/curves/<contact>/mu_<μ>/offset, spin_z, spin, speed, launch_azimuth, contact_time",
+            "f64[solved]",
+            "the solved \
               kicks: offset (m), the spin's vertical component and size (rad/s), ball speed (m/s), launch azimuth \
-              (deg), contact time (s)"),
+              (deg), contact time (s)",
+        ),
         ("/curves/<contact>/mu_<μ>/refused_offset, refused_reason", "f64[r], string[r]", "the offsets of the grid left out and why"),
     ],
     changes: "",
@@ -201,10 +277,7 @@ pub fn markdown() -> String {
     for rule in [
         "every dataset has a `units` attribute (SI; `1` dimensionless, empty for text);",
         "a vector quantity is three 1-D columns `NAME_x`, `NAME_y`, `NAME_z`;",
-        &format!(
-            "a status is a `u8` of `kick_core::Status` codes ({}) with a `meaning` attribute;",
-            crate::h5::status_meaning()
-        ),
+        &format!("a status is a `u8` of `kick_core::Status` codes ({}) with a `meaning` attribute;", crate::h5::status_meaning()),
         "the root carries the provenance: tool, tool_version, git_commit and git_dirty (absent outside a checkout), \
          experiment, experiment_file, experiment_text;",
         "no time stamps: the same run writes the same bytes; a file is written whole or not at all \

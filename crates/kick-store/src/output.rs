@@ -213,7 +213,8 @@ fn open_lock_file(path: &Path) -> Result<File, OutputError> {
     if !kind.is_file() {
         return Err(refused("a directory or special file"));
     }
-    let file = options.open(path).map_err(|e| if e.raw_os_error() == Some(libc::ELOOP) { refused("a symbolic link") } else { io(path)(e) })?;
+    let file =
+        options.open(path).map_err(|e| if e.raw_os_error() == Some(libc::ELOOP) { refused("a symbolic link") } else { io(path)(e) })?;
     let metadata = file.metadata().map_err(io(path))?;
     if !metadata.is_file() {
         return Err(refused("a directory or special file"));
@@ -290,7 +291,10 @@ impl Staged {
         std::fs::create_dir_all(&directory).map_err(io(&directory))?;
         // Checked now, not found at the rename after all the work.
         if std::fs::symlink_metadata(target).is_ok_and(|m| m.is_dir()) {
-            return Err(OutputError::Io { path: target.to_path_buf(), message: "it is a directory; give a file name or another directory".into() });
+            return Err(OutputError::Io {
+                path: target.to_path_buf(),
+                message: "it is a directory; give a file name or another directory".into(),
+            });
         }
         let lock = Lock::acquire(target)?;
         let (stem, ext) = split_name(target);
@@ -367,9 +371,7 @@ fn remove_stale_temporaries(directory: &Path, stem: &str, ext: &str) {
 /// Write `bytes` as the whole of `target`, or leave it as it was.
 pub fn write(target: impl AsRef<Path>, bytes: impl AsRef<[u8]>) -> Result<PathBuf, OutputError> {
     let staged = Staged::begin(target.as_ref())?;
-    File::create(staged.temporary())
-        .and_then(|mut f| f.write_all(bytes.as_ref()))
-        .map_err(io(staged.target()))?;
+    File::create(staged.temporary()).and_then(|mut f| f.write_all(bytes.as_ref())).map_err(io(staged.target()))?;
     staged.commit()
 }
 
@@ -385,8 +387,7 @@ mod tests {
     }
 
     fn names(dir: &Path) -> Vec<String> {
-        let mut v: Vec<String> =
-            std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        let mut v: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
         v.sort();
         v
     }

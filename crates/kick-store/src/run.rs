@@ -105,13 +105,7 @@ fn stream_row(level: OneD, row: u64, interval: f64, to_writer: &SyncSender<Messa
 /// solved (claimed before any later row), so nothing waits in a circle, and
 /// memory is a few blocks per worker whatever the histories' lengths. The
 /// file's content does not depend on the number of threads.
-fn write_histories(
-    level: OneD,
-    part: &Range<u64>,
-    writer: &mut SweepWriter,
-    interval: f64,
-    bar: &ProgressBar,
-) -> Result<(), RunError> {
+fn write_histories(level: OneD, part: &Range<u64>, writer: &mut SweepWriter, interval: f64, bar: &ProgressBar) -> Result<(), RunError> {
     let rows = (part.end - part.start) as usize;
     let solvers = level.kicks.solvers.len();
     let threads = rayon::current_num_threads().clamp(1, rows.max(1));

@@ -34,13 +34,16 @@
 
 use crate::error::StoreError;
 use crate::experiment::Experiment;
-use kick_study::level::Level;
-use crate::h5::{close_file, create_staged, disable_file_locking, new_group, read_str_attr, read_u64_attr, write_str_attr, write_u64_attr, H5Error, CHUNK_ROWS};
+use crate::h5::{
+    close_file, create_staged, disable_file_locking, new_group, read_str_attr, read_u64_attr, write_str_attr, write_u64_attr, H5Error,
+    CHUNK_ROWS,
+};
 use crate::output::OutputError;
-pub use kick_study::shard::{fingerprint, Shard};
 use crate::run::{run_part, Part, RunError, RunReport};
 use hdf5::types::{FloatSize, IntSize, TypeDescriptor, VarLenUnicode};
 use hdf5::{File, Group, Location};
+use kick_study::level::Level;
+pub use kick_study::shard::{fingerprint, Shard};
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
@@ -209,7 +212,9 @@ impl Meta {
         }
         let len = self.len;
         match kind {
-            Kind::PerRow if is_failure(&self.path) && len > rows => Err(format!("{len} failures in a part of {rows} rows (a corrupt file)")),
+            Kind::PerRow if is_failure(&self.path) && len > rows => {
+                Err(format!("{len} failures in a part of {rows} rows (a corrupt file)"))
+            }
             Kind::PerRow if !is_failure(&self.path) && len != rows => {
                 Err(format!("{len} entries in a part of {rows} rows (a truncated or corrupt file)"))
             }
@@ -231,27 +236,26 @@ impl Piece {
         let total = number("experiment_rows")?;
         let fingerprint = read_str_attr(&file, "experiment_fingerprint")
             .ok_or_else(|| part_error(path, "not a shard file (no root attribute `experiment_fingerprint`)"))?;
-        if total > crate::experiment::MAX_SCENARIOS
-            || shard.count == 0
-            || shard.index >= shard.count
-            || shard.rows(total) != rows
-        {
-            return Err(part_error(path, format!(
-                "shard {}/{} of {total} rows cannot hold rows {}..{}",
-                shard.index, shard.count, rows.start, rows.end
-            )));
+        if total > crate::experiment::MAX_SCENARIOS || shard.count == 0 || shard.index >= shard.count || shard.rows(total) != rows {
+            return Err(part_error(
+                path,
+                format!("shard {}/{} of {total} rows cannot hold rows {}..{}", shard.index, shard.count, rows.start, rows.end),
+            ));
         }
         // Only the table layout this merge knows, at its version.
         let table = &crate::layouts::SWEEP;
         let (layout, version) = (read_str_attr(&file, "layout"), read_u64_attr(&file, "layout_version"));
         if layout.as_deref() != Some(table.name) || version != Some(table.version) {
-            return Err(part_error(path, format!(
-                "layout {} version {}, not `{}` version {} (written by another version of kick: rerun the shard)",
-                layout.as_deref().unwrap_or("(none)"),
-                version.map_or("(none)".into(), |v| v.to_string()),
-                table.name,
-                table.version
-            )));
+            return Err(part_error(
+                path,
+                format!(
+                    "layout {} version {}, not `{}` version {} (written by another version of kick: rerun the shard)",
+                    layout.as_deref().unwrap_or("(none)"),
+                    version.map_or("(none)".into(), |v| v.to_string()),
+                    table.name,
+                    table.version
+                ),
+            ));
         }
         if read_u64_attr(&file, "rows") != Some(rows.end - rows.start) {
             return Err(part_error(path, "its `rows` attribute disagrees with its row range (an incomplete file?)"));
@@ -319,10 +323,9 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
         if got != expected {
             let differs = expected.iter().zip(&got).find(|(a, b)| a != b).map(|(a, b)| (a.clone(), b.clone()));
             let message = match differs {
-                Some((a, b)) if a.0 == b.0 => format!(
-                    "{}: {} [{}] here, {} [{}] in {}",
-                    a.0, type_name(&b.1), b.2, type_name(&a.1), a.2, first.path.display()
-                ),
+                Some((a, b)) if a.0 == b.0 => {
+                    format!("{}: {} [{}] here, {} [{}] in {}", a.0, type_name(&b.1), b.2, type_name(&a.1), a.2, first.path.display())
+                }
                 _ => format!("its datasets are not those of {}", first.path.display()),
             };
             return Err(part_error(&piece.path, message));
@@ -396,7 +399,8 @@ fn experiment_of(piece: &Piece) -> Option<Box<dyn Level>> {
     // An experiment file's (`kick sweep` and `kick sweep3d` name no file).
     if Path::new(&path).extension().and_then(|e| e.to_str()) != Some("toml") {
         let (seed, samples) = (read_u64_attr(&file, "seed")?, read_u64_attr(&file, "samples")?);
-        let sweep = (read_str_attr(&file, "level").as_deref() == Some("3d")).then(|| crate::sweep3d::sampled_sweep(&text, seed, samples))??;
+        let sweep =
+            (read_str_attr(&file, "level").as_deref() == Some("3d")).then(|| crate::sweep3d::sampled_sweep(&text, seed, samples))??;
         return (sweep.rows() == piece.total).then(|| Box::new(sweep) as Box<dyn Level>);
     }
     let level: Box<dyn Level> = Box::new(crate::experiment::parse(Path::new(&path), &text).ok()?);
@@ -433,7 +437,9 @@ fn read_attr(location: &Location, name: &str) -> hdf5::Result<Value> {
     if !attr.is_scalar() {
         return match descriptor {
             TypeDescriptor::Unsigned(IntSize::U8) if attr.size() <= MAX_ATTRIBUTE_LIST => Ok(Value::U64s(attr.read_raw()?)),
-            other => Err(format!("attribute `{name}`: a list of {} {}, not one of the result layout", attr.size(), type_name(&other)).as_str().into()),
+            other => Err(format!("attribute `{name}`: a list of {} {}, not one of the result layout", attr.size(), type_name(&other))
+                .as_str()
+                .into()),
         };
     }
     Ok(match descriptor {
@@ -522,12 +528,19 @@ impl Merger<'_> {
         // Status codes first: they say which outcomes must be numbers.
         let mut statuses: Vec<(String, Vec<u8>)> = Vec::new();
         for d in piece.datasets.iter().filter(|d| d.path.ends_with("/outcomes/status")) {
-            let values = from.dataset(&d.path).and_then(|s| s.read_raw::<u8>()).map_err(|e| part_error(&piece.path, format!("{}: {e}", d.path)))?;
+            let values =
+                from.dataset(&d.path).and_then(|s| s.read_raw::<u8>()).map_err(|e| part_error(&piece.path, format!("{}: {e}", d.path)))?;
             if let Some(i) = values.iter().position(|&c| usize::from(c) >= kick_core::Status::ALL.len()) {
-                return Err(part_error(&piece.path, format!(
-                    "{}: status {} at row {}, not one of the codes 0..{}",
-                    d.path, values[i], piece.rows.start + i as u64, kick_core::Status::ALL.len() - 1
-                )));
+                return Err(part_error(
+                    &piece.path,
+                    format!(
+                        "{}: status {} at row {}, not one of the codes 0..{}",
+                        d.path,
+                        values[i],
+                        piece.rows.start + i as u64,
+                        kick_core::Status::ALL.len() - 1
+                    ),
+                ));
             }
             statuses.push((d.path.clone(), values));
         }
@@ -547,7 +560,12 @@ impl Merger<'_> {
                 }
                 _ => {
                     if !same_content(&source, &target).map_err(h5(&piece.path))? {
-                        return Err(ShardError::Merge(format!("{} differs between {} and {}", d.path, self.pieces[0].path.display(), piece.path.display())));
+                        return Err(ShardError::Merge(format!(
+                            "{} differs between {} and {}",
+                            d.path,
+                            self.pieces[0].path.display(),
+                            piece.path.display()
+                        )));
                     }
                 }
             }
@@ -585,10 +603,14 @@ impl Merger<'_> {
                 for ((name, j, _), values) in checked.iter().zip(&block) {
                     let (value, expected) = (values[i - start], expected[*j]);
                     if value.to_bits() != expected.to_bits() && !(value.is_nan() && expected.is_nan()) {
-                        return Err(part_error(&piece.path, format!(
-                            "/parameters/{name}: {} at row {row}, where the experiment gives {}",
-                            kick_core::short(value), kick_core::short(expected)
-                        )));
+                        return Err(part_error(
+                            &piece.path,
+                            format!(
+                                "/parameters/{name}: {} at row {row}, where the experiment gives {}",
+                                kick_core::short(value),
+                                kick_core::short(expected)
+                            ),
+                        ));
                     }
                 }
             }
@@ -617,7 +639,8 @@ impl Merger<'_> {
                 write_u64_attr(&target, self.out, "row", row)?;
                 for column in history.member_names().map_err(h5(&piece.path))? {
                     let like = history.dataset(&column).map_err(h5(&piece.path))?;
-                    let created = self.create(&like, &target, &column, like.shape().first().copied().unwrap_or(0), like.chunk().map(|c| c[0]))?;
+                    let created =
+                        self.create(&like, &target, &column, like.shape().first().copied().unwrap_or(0), like.chunk().map(|c| c[0]))?;
                     self.append(piece, &like, &created, &format!("{base}/{name}/{column}"), 0, 0, None)?;
                 }
             }
@@ -865,8 +888,12 @@ mod tests {
     fn changed_3d_parameters_are_refused_and_untouched_parts_merge() {
         let dir = scratch("3d-parameters");
         let file = dir.join("g3.toml");
-        std::fs::write(&file, "[kick3d]\nfriction = 0.6\n[[sweep]]\nparameter = \"foot_speed\"\nvalues = [16.0, 22.0, 28.0]\n\
-                               [[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.04]\n").unwrap();
+        std::fs::write(
+            &file,
+            "[kick3d]\nfriction = 0.6\n[[sweep]]\nparameter = \"foot_speed\"\nvalues = [16.0, 22.0, 28.0]\n\
+                               [[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.04]\n",
+        )
+        .unwrap();
         let grid: Vec<PathBuf> = ["0/2", "1/2"].iter().map(|s| run_file(&file, &dir.join("grid"), Some(s)).unwrap().summary.path).collect();
         let mut fixed = kick_3d::KickSpec::default();
         fixed.scenario.law = Some(kick_core::LawKind::HuntCrossley);

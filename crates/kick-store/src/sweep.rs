@@ -15,9 +15,9 @@ use crate::printable::Printable;
 use crate::sample::{ranges, SampledSweep};
 use crate::shard::Shard;
 use crate::{Experiment, Output, Scenarios};
-use kick_study::{Kicks, Kicks1d};
 use kick_compliant::{Auto, SolverChoice};
 use kick_core::{LawKind, Parameter, ScenarioSpec, SolverPath};
+use kick_study::{Kicks, Kicks1d};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -117,10 +117,8 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
     let sweep = SampledSweep { samples: settings.samples, seed: settings.seed, fixed: settings.fixed };
     sweep.scenario(0)?;
     // The provenance keeps what made the file: the command and the ranges.
-    let mut fixed: String = Parameter::ALL
-        .iter()
-        .filter_map(|&p| settings.fixed.get(p).map(|v| format!(" {} {v}", p.def().flag())))
-        .collect();
+    let mut fixed: String =
+        Parameter::ALL.iter().filter_map(|&p| settings.fixed.get(p).map(|v| format!(" {} {v}", p.def().flag()))).collect();
     if let Some(e) = settings.fixed.restitution {
         fixed.push_str(&format!(" --restitution {e}"));
     }

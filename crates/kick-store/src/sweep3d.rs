@@ -77,7 +77,13 @@ pub struct Sweep3dReport {
 pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> {
     let target = SweepTarget::check(settings.samples, &settings.out, settings.shard.as_deref(), settings.threads)?;
     let rows = target.rows.end - target.rows.start;
-    limits::check_rows("--samples", settings.samples, rows, SampledSweep3d { kicks: SampledKicks { seed: settings.seed, fixed: settings.fixed }, samples: settings.samples }.bytes_per_row(), &target.directory)?;
+    limits::check_rows(
+        "--samples",
+        settings.samples,
+        rows,
+        SampledSweep3d { kicks: SampledKicks { seed: settings.seed, fixed: settings.fixed }, samples: settings.samples }.bytes_per_row(),
+        &target.directory,
+    )?;
     let kicks = SampledKicks { seed: settings.seed, fixed: settings.fixed };
     // A held value the model refuses is refused before the run, and so is a
     // held damping or restitution the law would ignore (the drawn damping is
@@ -210,7 +216,9 @@ fn write(
             _ => vec![p.name.to_string()],
         };
         for name in names {
-            let d = file.dataset(&format!("parameters/{name}")).map_err(|e| H5Error::Hdf5 { path: out.to_path_buf(), message: e.to_string() })?;
+            let d = file
+                .dataset(&format!("parameters/{name}"))
+                .map_err(|e| H5Error::Hdf5 { path: out.to_path_buf(), message: e.to_string() })?;
             write_str_attr(&d, out, "symbol", p.symbol)?;
             write_str_attr(&d, out, "description", p.doc)?;
         }

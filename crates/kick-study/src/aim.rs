@@ -38,7 +38,9 @@ impl AimFrom {
         match name {
             "launch" => Ok(AimFrom::Launch),
             "kick" => Ok(AimFrom::Kick),
-            _ => Err(StudyError::Flag { flag: "from", message: format!("unknown `from` = `{name}`: expected launch or kick (flag --from)") }),
+            _ => {
+                Err(StudyError::Flag { flag: "from", message: format!("unknown `from` = `{name}`: expected launch or kick (flag --from)") })
+            }
         }
     }
 }
@@ -88,10 +90,10 @@ impl KickFree {
     }
 
     pub fn from_name(name: &str) -> Result<KickFree, AimError> {
-        KickFree::ALL.into_iter().find(|p| p.name() == name).ok_or_else(|| AimError::UnknownFree {
-            name: name.to_string(),
-            expected: KickFree::ALL.map(|p| p.name()).join(", "),
-        })
+        KickFree::ALL
+            .into_iter()
+            .find(|p| p.name() == name)
+            .ok_or_else(|| AimError::UnknownFree { name: name.to_string(), expected: KickFree::ALL.map(|p| p.name()).join(", ") })
     }
 }
 
@@ -190,7 +192,11 @@ fn aim_kick(target: [f64; 3], wall: Wall, request: &AimRequest) -> Result<AimRep
         });
     }
     if let Some(d) = request.flight.distance {
-        return Err(aim_error(AimError::Invalid { name: "distance", values: vec![d], requirement: "left out: the target's X is the goal plane" }));
+        return Err(aim_error(AimError::Invalid {
+            name: "distance",
+            values: vec![d],
+            requirement: "left out: the target's X is the goal plane",
+        }));
     }
     let k = &request.kick.kick3d;
     for (name, given) in [
@@ -292,18 +298,15 @@ impl Printable for AimReport {
         let [x, y, z] = s.scene.target;
         let wall = s.scene.wall;
         let _ = writeln!(w, "{:<18} x = {} m: y = {} m, z = {} m (the ball's centre)", "target", sig(x), sig(y), sig(z));
+        let _ = writeln!(w, "{:<18} x = {} m, top {} m, |y| <= {} m", "wall", sig(wall.distance), sig(wall.height), sig(wall.half_width));
         let _ = writeln!(
             w,
-            "{:<18} x = {} m, top {} m, |y| <= {} m",
-            "wall",
-            sig(wall.distance),
-            sig(wall.height),
-            sig(wall.half_width)
+            "solved for the {} (range; d(y, z at the goal)/d parameter):",
+            match self.from {
+                AimFrom::Launch => "launch",
+                AimFrom::Kick => "kick",
+            }
         );
-        let _ = writeln!(w, "solved for the {} (range; d(y, z at the goal)/d parameter):", match self.from {
-            AimFrom::Launch => "launch",
-            AimFrom::Kick => "kick",
-        });
         for p in &s.parameters {
             let _ = writeln!(
                 w,
@@ -319,7 +322,14 @@ impl Printable for AimReport {
             );
         }
         if let Some(k) = &self.kick {
-            let _ = writeln!(w, "{:<18} {} m (lateral kick), contact {} s, spin {} rev/s", "kick", sig(k.offset), sig(k.contact_time), sig(k.spin_rev_per_s));
+            let _ = writeln!(
+                w,
+                "{:<18} {} m (lateral kick), contact {} s, spin {} rev/s",
+                "kick",
+                sig(k.offset),
+                sig(k.contact_time),
+                sig(k.spin_rev_per_s)
+            );
         }
         let _ = writeln!(w, "{:<18} {} m/s", "launch_velocity", vector(&s.launch_velocity));
         let _ = writeln!(w, "{:<18} {} rad/s", "spin", vector(&s.spin));

@@ -30,7 +30,11 @@ pub fn run_all() -> CheckTable {
 impl Printable for CheckTable {
     fn text(&self) -> String {
         let mut w = String::new();
-        let _ = writeln!(w, "{:<6} {:<10} {:>12} {:>12} {:>12} {:>12}  check", "result", "equation", "expected", "actual", "error", "tolerance");
+        let _ = writeln!(
+            w,
+            "{:<6} {:<10} {:>12} {:>12} {:>12} {:>12}  check",
+            "result", "equation", "expected", "actual", "error", "tolerance"
+        );
         for r in &self.rows {
             let _ = writeln!(
                 w,

@@ -4,10 +4,10 @@
 
 use crate::level::Failure;
 use crate::limits::LimitError;
+use kick_3d::Kick3dError;
 use kick_core::parameters::ParameterError;
 use kick_core::{KickError, Status};
 use kick_flight::FlightError;
-use kick_3d::Kick3dError;
 use std::path::PathBuf;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

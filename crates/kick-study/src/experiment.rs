@@ -402,7 +402,15 @@ pub fn log_range(from: f64, to: f64, count: usize) -> Vec<f64> {
     linear_range(a, b, count)
         .into_iter()
         .enumerate()
-        .map(|(i, x)| if i == 0 { from } else if i + 1 == count { to } else { x.exp() })
+        .map(|(i, x)| {
+            if i == 0 {
+                from
+            } else if i + 1 == count {
+                to
+            } else {
+                x.exp()
+            }
+        })
         .collect()
 }
 
@@ -417,13 +425,7 @@ impl Locator<'_> {
         let before = &self.text[..start];
         let line = before.matches('\n').count() + 1;
         let column = before.chars().rev().take_while(|&c| c != '\n').count() + 1;
-        ExperimentError {
-            file: self.file.to_string(),
-            line,
-            column,
-            key: key.to_string(),
-            message: message.into(),
-        }
+        ExperimentError { file: self.file.to_string(), line, column, key: key.to_string(), message: message.into() }
     }
 
     /// A toml error, with the key under its span when the span covers a bare key.
@@ -518,7 +520,11 @@ fn is_three_d(at: &Locator, text: &str) -> Result<bool, ExperimentError> {
         },
         Ok(probe) => Ok(probe.kick3d.is_some()
             || probe.sweep.iter().flatten().any(|a| {
-                a.parameter.as_ref().and_then(|p| p.as_str()).and_then(parameters::find).is_some_and(|p| matches!(p.level, Level::Kick3d | Level::Instep))
+                a.parameter
+                    .as_ref()
+                    .and_then(|p| p.as_str())
+                    .and_then(parameters::find)
+                    .is_some_and(|p| matches!(p.level, Level::Kick3d | Level::Instep))
             })),
         // The 1D reader names the problem.
         Err(_) => Ok(false),
@@ -636,13 +642,13 @@ fn axis_values(at: &Locator, axis: &RawAxis, key: &str) -> Result<(Vec<f64>, Spa
         return Err(at.error(range.span(), key, "`from` and `to` must be finite"));
     }
     if is_log && !(r.from > 0.0 && r.to > 0.0) {
-        return Err(at.error(range.span(), key, format!("a log range needs from > 0 and to > 0, got {} and {}", short(r.from), short(r.to))));
+        return Err(at.error(
+            range.span(),
+            key,
+            format!("a log range needs from > 0 and to > 0, got {} and {}", short(r.from), short(r.to)),
+        ));
     }
-    let values = if is_log {
-        log_range(r.from, r.to, count as usize)
-    } else {
-        linear_range(r.from, r.to, count as usize)
-    };
+    let values = if is_log { log_range(r.from, r.to, count as usize) } else { linear_range(r.from, r.to, count as usize) };
     let spans = vec![range.span(); values.len()];
     Ok((values, range.span(), spans))
 }
@@ -695,11 +701,7 @@ fn law_settings_apply(at: &Locator, law: kick_core::LawKind, damping: Located, r
 
 /// Build a scenario from optional spanned values, naming the key of the first
 /// invalid one.
-fn build<'a>(
-    at: &Locator,
-    get: impl Fn(Parameter) -> Option<&'a Spanned<f64>>,
-    table: &str,
-) -> Result<Scenario, ExperimentError> {
+fn build<'a>(at: &Locator, get: impl Fn(Parameter) -> Option<&'a Spanned<f64>>, table: &str) -> Result<Scenario, ExperimentError> {
     let mut values = Scenario::BASELINE.values();
     for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
         if let Some(v) = get(p) {
@@ -709,11 +711,9 @@ fn build<'a>(
     Scenario::from_values(values).map_err(|e| {
         let blamed = match &e {
             KickError::InvalidParameter { name, .. } => Parameter::from_name(name),
-            KickError::NoContact { .. } => Some(if get(Parameter::BallSpeed).is_some() {
-                Parameter::BallSpeed
-            } else {
-                Parameter::FootSpeed
-            }),
+            KickError::NoContact { .. } => {
+                Some(if get(Parameter::BallSpeed).is_some() { Parameter::BallSpeed } else { Parameter::FootSpeed })
+            }
             _ => None,
         };
         let span = blamed.and_then(&get).map(|v| v.span()).unwrap_or(0..0);
@@ -780,11 +780,17 @@ mod tests {
     fn a_key_of_the_other_level_is_refused_with_this_levels_keys() {
         let e = parse_text("level = \"3d\"\n[output]\nmode = \"summary\"\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (2, "output"), "{e}");
-        assert_eq!(e.message, "unknown field `output`, expected one of `level`, `name`, `description`, `solver`, `law`, \
-                               `restitution`, `base`, `kick3d`, `sweep`, `flight`, `compress`");
+        assert_eq!(
+            e.message,
+            "unknown field `output`, expected one of `level`, `name`, `description`, `solver`, `law`, \
+                               `restitution`, `base`, `kick3d`, `sweep`, `flight`, `compress`"
+        );
         let e = parse_text("level = \"1d\"\n[kick3d]\noffset = 0.01\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (2, "kick3d"), "{e}");
-        assert!(e.message.starts_with("unknown field `kick3d`, expected one of `level`, `name`, `description`, `solver`, `solvers`, `dt`"), "{e}");
+        assert!(
+            e.message.starts_with("unknown field `kick3d`, expected one of `level`, `name`, `description`, `solver`, `solvers`, `dt`"),
+            "{e}"
+        );
         // A 1D axis is one of the eight 1D parameters.
         let e = parse_text("[[sweep]]\nparameter = \"restitution\"\nvalues = [0.5]\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (2, "parameter"), "{e}");
@@ -865,7 +871,8 @@ mod tests {
     /// ball key is refused at its line.
     #[test]
     fn the_shell_balls_keys_reach_every_scenario() {
-        let ball = |p, loss| kick_core::AnyLaw::Shell(kick_core::ShellBall::new(p, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, loss).unwrap());
+        let ball =
+            |p, loss| kick_core::AnyLaw::Shell(kick_core::ShellBall::new(p, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, loss).unwrap());
         let loss = kick_core::shell::SHELL_LOSS.default_number();
         let grid = "law = \"shell\"\n[base]\ninflation_pressure = 6.0e4\n[[sweep]]\nparameter = \"foot_speed\"\nvalues = [18.0, 22.0]\n";
         let e = parse(Path::new("g.toml"), grid).unwrap();
@@ -883,7 +890,10 @@ mod tests {
         assert_eq!(e.three_d().unwrap().scenario.contact_law(), ball(6.0e4, loss));
         let refused = parse(Path::new("r.toml"), "[base]\nfoot_mass = 2.0\ninflation_pressure = 6.0e4\n").unwrap_err();
         assert_eq!(refused.line, 3, "{refused}");
-        assert!(refused.to_string().contains("`base.inflation_pressure`: `inflation_pressure` does not apply to law `power-law`"), "{refused}");
+        assert!(
+            refused.to_string().contains("`base.inflation_pressure`: `inflation_pressure` does not apply to law `power-law`"),
+            "{refused}"
+        );
     }
 
     /// The instep's parameters are 3D sweep axes (a file sweeping one is a

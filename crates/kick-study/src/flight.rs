@@ -3,8 +3,8 @@
 //! and text forms, and the chaining of a kick's launch into it.
 
 use crate::error::StudyError;
-use crate::level::Failure;
 use crate::history::{flight_values as sample_values, HistoryMeta, HistoryRequest, FLIGHT_HISTORY_COLUMNS};
+use crate::level::Failure;
 use crate::printable::Printable;
 use kick_3d::{Kick3d, Outcome3d};
 use kick_core::number::{sig, vector};
@@ -61,9 +61,7 @@ pub struct FlightRun {
 /// The flag of the flight parameter `error` names, if it names one.
 pub fn flight_flag(error: &FlightError) -> Option<String> {
     let name = match error {
-        FlightError::InvalidParameter { name, .. } | FlightError::Missing { name } | FlightError::WrongLength { name, .. } => {
-            Some(*name)
-        }
+        FlightError::InvalidParameter { name, .. } | FlightError::Missing { name } | FlightError::WrongLength { name, .. } => Some(*name),
         FlightError::Conflict { second, .. } => Some(*second),
         _ => None,
     };
@@ -130,21 +128,27 @@ pub fn flight_report(spec: &FlightSpec, history: Option<&HistoryRequest>) -> Res
         Spacing::Count(n) => Sampling::Samples(n),
         Spacing::Interval(dt) => Sampling::Interval(dt),
     };
-    let (outcome, path) = crate::history::write(request, &FLIGHT_HISTORY_COLUMNS, &meta_flight(&f), |s| sample_values(s).to_vec(), |sink| {
-        let h = kick_flight::history(&f, sampling).map_err(|e| match e {
-            // The spacing's own flags, not flight parameters.
-            FlightError::TooManySamples { name, .. } | FlightError::InvalidParameter { name: name @ ("samples" | "interval"), .. } => {
-                StudyError::Flight { source: e, flag: Some(format!("--{name}")) }
+    let (outcome, path) = crate::history::write(
+        request,
+        &FLIGHT_HISTORY_COLUMNS,
+        &meta_flight(&f),
+        |s| sample_values(s).to_vec(),
+        |sink| {
+            let h = kick_flight::history(&f, sampling).map_err(|e| match e {
+                // The spacing's own flags, not flight parameters.
+                FlightError::TooManySamples { name, .. } | FlightError::InvalidParameter { name: name @ ("samples" | "interval"), .. } => {
+                    StudyError::Flight { source: e, flag: Some(format!("--{name}")) }
+                }
+                e => StudyError::from(e),
+            })?;
+            for s in &h.samples {
+                if sink(s).is_break() {
+                    break;
+                }
             }
-            e => StudyError::from(e),
-        })?;
-        for s in &h.samples {
-            if sink(s).is_break() {
-                break;
-            }
-        }
-        Ok::<_, StudyError>((h.outcome, h.samples.len() as u64))
-    })?;
+            Ok::<_, StudyError>((h.outcome, h.samples.len() as u64))
+        },
+    )?;
     Ok(FlightReport { run: FlightRun { flight: f, outcome }, written: vec![path] })
 }
 
@@ -258,7 +262,11 @@ impl Printable for FlightRun {
                 let _ = writeln!(
                     w,
                     "{:<24} x = {} m at {} s: height {} m, lateral offset {} m",
-                    "crossing", sig(c.distance), sig(c.time), sig(c.height), sig(c.lateral_offset)
+                    "crossing",
+                    sig(c.distance),
+                    sig(c.time),
+                    sig(c.height),
+                    sig(c.lateral_offset)
                 );
             }
             None => {

@@ -7,10 +7,10 @@
 //! launch velocity and spin are the lateral kick's, rotated by β about x
 //! ([`roll`]). kick-paper writes the file and figures.
 
-use kick_3d::{Accurate3d, Kick3d, KickSpec, Outcome3d};
-use kick_core::parameters::{SetParameter, Value};
 use crate::columns::{Column, OutcomeSet, Setting};
 use crate::level::{Failure, Level, Row};
+use kick_3d::{Accurate3d, Kick3d, KickSpec, Outcome3d};
+use kick_core::parameters::{SetParameter, Value};
 use kick_flight::{Flight, FlightSpec};
 
 /// Depth of the contact below the ball's centre, h, m.

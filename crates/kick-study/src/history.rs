@@ -202,4 +202,3 @@ where
     }
     Ok((outcome, writer.finish().map_err(StudyError::Sink)?))
 }
-

@@ -60,10 +60,7 @@ pub fn use_threads(requested: Option<usize>, name: &str) -> Result<(), LimitErro
     if n > max_threads() {
         return Err(LimitError::TooManyThreads { name: name.into(), requested: n, max: max_threads(), cores: cores() });
     }
-    rayon::ThreadPoolBuilder::new()
-        .num_threads(n)
-        .build_global()
-        .map_err(|e| LimitError::Threads { threads: n, message: e.to_string() })
+    rayon::ThreadPoolBuilder::new().num_threads(n).build_global().map_err(|e| LimitError::Threads { threads: n, message: e.to_string() })
 }
 
 /// Use `threads` rayon workers for the rest of the process (if given).

@@ -16,9 +16,10 @@ pub trait Printable: Serialize {
 
 /// Pretty JSON of a result.
 pub fn json<T: Serialize + ?Sized>(value: &T) -> Result<String, crate::error::StudyError> {
-    serde_json::to_string_pretty(value).map(|mut s| {
-        s.push('\n');
-        s
-    })
-    .map_err(|e| crate::error::StudyError::Json(format!("cannot write JSON: {e}")))
+    serde_json::to_string_pretty(value)
+        .map(|mut s| {
+            s.push('\n');
+            s
+        })
+        .map_err(|e| crate::error::StudyError::Json(format!("cannot write JSON: {e}")))
 }

@@ -25,9 +25,7 @@ impl Shard {
     pub fn parse(given: &str, flag: &str) -> Result<Shard, ShardFlagError> {
         let error = |message: String| ShardFlagError { flag: flag.into(), given: given.into(), message };
         let (i, n) = given.split_once('/').ok_or_else(|| error("expected I/N, e.g. 0/4 (shards numbered from 0)".into()))?;
-        let number = |s: &str, what: &str| {
-            s.trim().parse::<u64>().map_err(|_| error(format!("{what} `{s}` is not a whole number >= 0")))
-        };
+        let number = |s: &str, what: &str| s.trim().parse::<u64>().map_err(|_| error(format!("{what} `{s}` is not a whole number >= 0")));
         let (index, count) = (number(i, "shard index")?, number(n, "shard count")?);
         if count == 0 {
             return Err(error("the shard count must be at least 1".into()));

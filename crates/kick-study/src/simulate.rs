@@ -5,11 +5,11 @@ use crate::error::StudyError;
 use crate::flight::{self, FlightRun};
 use crate::history::{self, HistoryMeta, HistoryRequest};
 use crate::printable::Printable;
-use kick_flight::FlightSpec;
 use kick_3d::{Kick3d, KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
 use kick_core::number::{sig, vector};
 use kick_core::{KickError, Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, HISTORY_COLUMNS, OBSERVABLES};
+use kick_flight::FlightSpec;
 use serde::ser::{Serialize, Serializer};
 use serde_json::{Map, Value};
 use std::fmt::Write as _;
@@ -60,10 +60,16 @@ pub fn simulate(
     let (outcome, written) = match history {
         Some(request) => {
             let meta = meta_1d(&scenario, choice.name());
-            let (outcome, path) = history::write(request, &HISTORY_COLUMNS, &meta, |s: &kick_core::Sample| s.values().to_vec(), |sink| {
-                let streamed = choice.solve_streamed(&scenario, request.spacing, sink)?;
-                Ok::<_, KickError>((streamed.outcome, streamed.samples))
-            })?;
+            let (outcome, path) = history::write(
+                request,
+                &HISTORY_COLUMNS,
+                &meta,
+                |s: &kick_core::Sample| s.values().to_vec(),
+                |sink| {
+                    let streamed = choice.solve_streamed(&scenario, request.spacing, sink)?;
+                    Ok::<_, KickError>((streamed.outcome, streamed.samples))
+                },
+            )?;
             (outcome, vec![path])
         }
         None => (choice.solve(&scenario)?, Vec::new()),
@@ -204,7 +210,8 @@ pub fn sampled3d(spec: &KickSpec, solver: &str, spacing: kick_core::Spacing) -> 
 /// [`kick_3d::PATCH_COLUMNS_3D`] (its moment and friction's arm).
 pub fn history3d(kick: &Kick3d, solver: &Solver3d, request: &HistoryRequest) -> Result<(Outcome3d, PathBuf), StudyError> {
     let accurate = history_solver(solver)?;
-    let solve = |sink: &mut dyn FnMut(&kick_3d::Sample3d) -> std::ops::ControlFlow<()>| accurate.solve_streamed(kick, request.spacing, sink);
+    let solve =
+        |sink: &mut dyn FnMut(&kick_3d::Sample3d) -> std::ops::ControlFlow<()>| accurate.solve_streamed(kick, request.spacing, sink);
     if kick.instep.is_some_and(|i| i.patch.is_some()) {
         let columns: Vec<(&str, &str)> = kick_3d::HISTORY_COLUMNS_3D.iter().chain(&kick_3d::PATCH_COLUMNS_3D).copied().collect();
         history::write(request, &columns, &meta_3d(kick), |s: &kick_3d::Sample3d| [&s.values()[..], &s.patch_values()].concat(), solve)

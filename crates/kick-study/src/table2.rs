@@ -107,15 +107,30 @@ impl Printable for Table2Comparison {
                 (Some(p), Some(v)) => format!("{p} = {}", sig(v)),
                 _ => "baseline".into(),
             };
-            let _ = writeln!(w, "{} ({changed}); seed-rk4 prints as the paper: {}", row.name, if row.seed_matches_printed { "yes" } else { "NO" });
-            let _ = writeln!(w, "  {:<20} {:>10} {:>12} {:>12} {:>12} {:>12}", "column", "paper", "seed-rk4", "accurate", "seed/paper-1", "acc/seed-1");
+            let _ = writeln!(
+                w,
+                "{} ({changed}); seed-rk4 prints as the paper: {}",
+                row.name,
+                if row.seed_matches_printed { "yes" } else { "NO" }
+            );
+            let _ = writeln!(
+                w,
+                "  {:<20} {:>10} {:>12} {:>12} {:>12} {:>12}",
+                "column", "paper", "seed-rk4", "accurate", "seed/paper-1", "acc/seed-1"
+            );
             for (column, decimals) in COLUMNS.iter().zip(TABLE2_DECIMALS) {
                 let c = &row.columns[column];
                 let _ = writeln!(
                     w,
                     // The paper's column as printed (its digits are the data); ours in the one text form.
                     "  {:<20} {:>10.*} {:>12} {:>12} {:>12} {:>12}",
-                    column, decimals as usize, c.paper, sig(c.seed_rk4), sig(c.accurate), sig(c.seed_vs_paper), sig(c.accurate_vs_seed)
+                    column,
+                    decimals as usize,
+                    c.paper,
+                    sig(c.seed_rk4),
+                    sig(c.accurate),
+                    sig(c.seed_vs_paper),
+                    sig(c.accurate_vs_seed)
                 );
             }
         }

@@ -172,7 +172,9 @@ fn grip_approaches_the_closed_form_as_friction_grows() {
 
 #[test]
 fn spin_grows_and_speed_falls_with_offset() {
-    let points = kick_3d::sweep::sweep(&Scenario::baseline(), &Kick3dSpec::default(), kick_3d::sweep::Axis::Offset, &[0.0, 0.02, 0.04, 0.06, 0.08]).unwrap();
+    let points =
+        kick_3d::sweep::sweep(&Scenario::baseline(), &Kick3dSpec::default(), kick_3d::sweep::Axis::Offset, &[0.0, 0.02, 0.04, 0.06, 0.08])
+            .unwrap();
     assert_eq!(points[0].spin_rpm, 0.0);
     assert!(points.windows(2).all(|w| w[1].spin_rpm > w[0].spin_rpm && w[1].speed < w[0].speed), "{points:?}");
 }
@@ -183,13 +185,28 @@ fn bad_input_is_a_typed_error() {
     let e = |s: Kick3dSpec| Kick3d::new(b, &s).unwrap_err();
     assert!(matches!(e(Kick3dSpec { offset: Some(0.11), ..Default::default() }), Kick3dError::OffsetOutsideBall { .. }));
     assert!(matches!(e(Kick3dSpec { offset: Some(f64::NAN), ..Default::default() }), Kick3dError::OffsetOutsideBall { .. }));
-    assert!(matches!(e(Kick3dSpec { ball_inertia: Some(0.01), ..Default::default() }), Kick3dError::InvalidParameter { name: "ball_inertia", .. }));
+    assert!(matches!(
+        e(Kick3dSpec { ball_inertia: Some(0.01), ..Default::default() }),
+        Kick3dError::InvalidParameter { name: "ball_inertia", .. }
+    ));
     assert!(matches!(e(Kick3dSpec { friction: Some(-0.1), ..Default::default() }), Kick3dError::InvalidParameter { name: "friction", .. }));
-    assert!(matches!(e(Kick3dSpec { friction: Some(f64::NAN), ..Default::default() }), Kick3dError::InvalidParameter { name: "friction", .. }));
-    assert!(matches!(e(Kick3dSpec { approach_angle_deg: Some(90.0), ..Default::default() }), Kick3dError::InvalidParameter { name: "approach_angle", .. }));
-    assert!(matches!(e(Kick3dSpec { ball_radius: Some(-1.0), ..Default::default() }), Kick3dError::InvalidParameter { name: "ball_radius", .. }));
+    assert!(matches!(
+        e(Kick3dSpec { friction: Some(f64::NAN), ..Default::default() }),
+        Kick3dError::InvalidParameter { name: "friction", .. }
+    ));
+    assert!(matches!(
+        e(Kick3dSpec { approach_angle_deg: Some(90.0), ..Default::default() }),
+        Kick3dError::InvalidParameter { name: "approach_angle", .. }
+    ));
+    assert!(matches!(
+        e(Kick3dSpec { ball_radius: Some(-1.0), ..Default::default() }),
+        Kick3dError::InvalidParameter { name: "ball_radius", .. }
+    ));
     assert!(matches!(e(Kick3dSpec { tangential_damping: Some(0.0), ..Default::default() }), Kick3dError::InvalidParameter { .. }));
-    assert!(matches!(e(Kick3dSpec { foot_inertia: Some([1.0, 0.0, 1.0]), ..Default::default() }), Kick3dError::InvalidParameter { name: "foot_inertia", .. }));
+    assert!(matches!(
+        e(Kick3dSpec { foot_inertia: Some([1.0, 0.0, 1.0]), ..Default::default() }),
+        Kick3dError::InvalidParameter { name: "foot_inertia", .. }
+    ));
     // The foot rises so steeply that it no longer closes on the ball.
     let slow = b.with(Parameter::BallSpeed, 15.0).unwrap();
     let err = Kick3d::new(slow, &Kick3dSpec { approach_angle_deg: Some(60.0), ..Default::default() }).unwrap_err();
@@ -221,7 +238,8 @@ fn approach_angle_sweep_solves_and_spin_grows() {
     // Regression: phases that start exactly on a grip/slip switch (16° and 28°
     // once looped until MAX_PHASES).
     let values = kick_3d::sweep::linspace(0.0, 40.0, 21);
-    let points = kick_3d::sweep::sweep(&Scenario::baseline(), &Kick3dSpec::default(), kick_3d::sweep::Axis::ApproachAngle, &values).unwrap();
+    let points =
+        kick_3d::sweep::sweep(&Scenario::baseline(), &Kick3dSpec::default(), kick_3d::sweep::Axis::ApproachAngle, &values).unwrap();
     assert!(points.windows(2).all(|w| w[1].spin_rpm > w[0].spin_rpm), "{points:?}");
 }
 
@@ -266,7 +284,8 @@ fn contact_stays_on_the_face_in_the_swept_range() {
 fn a_receding_ball_is_kicked_off_center() {
     let (v_f, v_b, alpha_deg, offset) = (13.110409335310111, 9.494053779742554, -4.195003546071373, 0.08153194285731201);
     let base = Scenario::baseline().with(Parameter::FootSpeed, v_f).unwrap().with(Parameter::BallSpeed, v_b).unwrap();
-    let spec = Kick3dSpec { offset: Some(offset), approach_angle_deg: Some(alpha_deg), friction: Some(4.22403017833182), ..Kick3dSpec::default() };
+    let spec =
+        Kick3dSpec { offset: Some(offset), approach_angle_deg: Some(alpha_deg), friction: Some(4.22403017833182), ..Kick3dSpec::default() };
     let k = Kick3d::new(base, &spec).expect("in contact: the foot closes along the normal");
     let cos_phi = (1.0 - (offset / k.ball_radius).powi(2)).sqrt();
     let alpha = alpha_deg.to_radians();
@@ -329,7 +348,9 @@ fn the_shell_ball_given_by_name_is_the_ball_of_the_3d_kick() {
     use kick_core::parameters::{find, SetParameter, Value};
     let mut spec = kick_3d::KickSpec::default();
     spec.scenario.law = Some(LawKind::Shell);
-    for (name, value) in [("inflation_pressure", 6.0e4), ("shell_stiffness", 2.0e3), ("shell_loss", 0.03), ("ball_radius", 0.105), ("friction", 0.0)] {
+    for (name, value) in
+        [("inflation_pressure", 6.0e4), ("shell_stiffness", 2.0e3), ("shell_loss", 0.03), ("ball_radius", 0.105), ("friction", 0.0)]
+    {
         spec.set_parameter(find(name).unwrap(), Value::Number(value)).unwrap();
     }
     let ball = kick_core::ShellBall::new(6.0e4, 0.105, 1.4, 2.0e3, 0.03).unwrap();
@@ -385,7 +406,10 @@ fn shell_kicks_meet_the_tolerance_as_it_tightens() {
             let e = kick_3d::precision::Errors3d::of(&k, &o, &r);
             let slip = (o.slip_time - r.slip_time).abs() / r.contact_time;
             worst = worst.max(e.max()).max(slip);
-            assert!(e.max() <= 1e-9 && slip <= 1e-9, "e {offset}, mu {friction}, patch {patch}, cap {cap}, rtol {rtol:e}: {e:?}, slip {slip:e}");
+            assert!(
+                e.max() <= 1e-9 && slip <= 1e-9,
+                "e {offset}, mu {friction}, patch {patch}, cap {cap}, rtol {rtol:e}: {e:?}, slip {slip:e}"
+            );
         }
     }
     println!("worst {worst:.2e}");

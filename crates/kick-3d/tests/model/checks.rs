@@ -5,7 +5,15 @@
 fn every_check_passes() {
     let rows = kick_3d::checks::checks();
     for r in &rows {
-        println!("{:<70} expected {:>+.12e} actual {:>+.12e} error {:.2e} tol {:.0e} {}", r.name, r.expected, r.actual, r.error, r.tolerance, if r.passed { "ok" } else { "FAIL" });
+        println!(
+            "{:<70} expected {:>+.12e} actual {:>+.12e} error {:.2e} tol {:.0e} {}",
+            r.name,
+            r.expected,
+            r.actual,
+            r.error,
+            r.tolerance,
+            if r.passed { "ok" } else { "FAIL" }
+        );
     }
     assert!(rows.len() >= 17);
     let failed: Vec<_> = rows.iter().filter(|r| !r.passed).map(|r| r.name.clone()).collect();

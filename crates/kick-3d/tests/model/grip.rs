@@ -64,7 +64,13 @@ fn cap_centroid_height(big_r: f64, rf: f64, delta: f64) -> f64 {
         let nu_q = (rf * rf - d * z) / rf;
         let q2 = rf * rf - 2.0 * d * z + d * d;
         let h = nu_q + (nu_q * nu_q + big_r * big_r - q2).max(0.0).sqrt();
-        let w = if i == 0 || i == m { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+        let w = if i == 0 || i == m {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
         top += w * h * z;
         bottom += w * h;
     }
@@ -112,7 +118,14 @@ fn a_foot_that_cannot_turn_gives_the_gripping_limit() {
 #[test]
 fn nothing_slides_while_gripping() {
     use kick_3d::history::ContactState;
-    for (friction, offset, cap) in [(f64::INFINITY, 0.05, false), (f64::INFINITY, 0.08, false), (2.0, 0.05, false), (0.6, 0.03, false), (f64::INFINITY, 0.05, true), (0.6, 0.05, true)] {
+    for (friction, offset, cap) in [
+        (f64::INFINITY, 0.05, false),
+        (f64::INFINITY, 0.08, false),
+        (2.0, 0.05, false),
+        (0.6, 0.03, false),
+        (f64::INFINITY, 0.05, true),
+        (0.6, 0.05, true),
+    ] {
         let k = kick(rigid(on_cap(Kick3dSpec { offset: Some(offset), friction: Some(friction), ..Kick3dSpec::default() }, cap)));
         let v_n = k.normal_approach_speed();
         let (o, samples) = Accurate3d::default().solve_sampled(&k, kick_core::Spacing::Count(400), 400).unwrap();
@@ -127,7 +140,10 @@ fn nothing_slides_while_gripping() {
             worst = worst.max(sliding_in(s, Vec3::from(s.ball_position) - n * k.ball_radius, n));
             gripping += 1;
         }
-        println!("cap {cap}, mu {friction}, e {offset}: slip {:.3e} of {:.3e} s; {gripping} grip samples, sliding at most {worst:.2e} m/s", o.slip_time, o.contact_time);
+        println!(
+            "cap {cap}, mu {friction}, e {offset}: slip {:.3e} of {:.3e} s; {gripping} grip samples, sliding at most {worst:.2e} m/s",
+            o.slip_time, o.contact_time
+        );
         assert!(gripping > 100, "mu {friction}: {gripping}");
         assert!(worst <= 1e-9 * v_n, "mu {friction}, e {offset}: {worst:e}");
         if friction.is_finite() {
@@ -144,7 +160,10 @@ fn nothing_slides_while_gripping() {
 #[test]
 fn energy_momentum_and_angular_momentum_close() {
     for (friction, cap) in [(f64::INFINITY, false), (0.8, false), (f64::INFINITY, true), (0.8, true)] {
-        let k = kick(rigid(on_cap(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(0.0), friction: Some(friction), ..Kick3dSpec::default() }, cap)));
+        let k = kick(rigid(on_cap(
+            Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(0.0), friction: Some(friction), ..Kick3dSpec::default() },
+            cap,
+        )));
         let (o, e) = Accurate3d::default().solve_to_state(&k).unwrap();
         assert!(o.energy.relative_residual().abs() <= 1e-9, "mu {friction}: {:e}", o.energy.relative_residual());
         assert!(o.energy.friction_loss > 0.0);
@@ -169,7 +188,10 @@ fn spring_to_grip(of: impl Fn(Kick3dSpec) -> Kick3d, base: Kick3dSpec, stiffness
                 .solve(&of(Kick3dSpec { tangential_stiffness: Some(k_t), tangential_damping: Some(c_t), ..base }))
                 .unwrap();
             let distance = (spring.spin[2] - limit.spin[2]).abs() / limit.spin[2].abs();
-            println!("k_t {k_t:e}: spin {} vs rigid {}: {distance:.2e}; {} vs {} evaluations", spring.spin[2], limit.spin[2], spring.evaluations, limit.evaluations);
+            println!(
+                "k_t {k_t:e}: spin {} vs rigid {}: {distance:.2e}; {} vs {} evaluations",
+                spring.spin[2], limit.spin[2], spring.evaluations, limit.evaluations
+            );
             (k_t, distance, spring.evaluations, limit.evaluations)
         })
         .collect()
@@ -209,13 +231,20 @@ fn paths_without_the_constraint_refuse_it() {
         assert!(matches!(e, Kick3dError::UnsupportedScene { path: "rapier", .. }), "{e}");
     }
     // A finite friction off the kick's plane: the slip would turn.
-    let turning = kick(rigid(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), friction: Some(0.5), ..Kick3dSpec::default() }));
+    let turning =
+        kick(rigid(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), friction: Some(0.5), ..Kick3dSpec::default() }));
     let e = Accurate3d::default().solve(&turning).unwrap_err();
     assert!(e.to_string().contains("approach_angle = 0"), "{e}");
     // So is a pitched face struck off its line (the normal leaves the kick's
     // plane), on the flat face and under the patch alike.
     for patch in [None, Some(true)] {
-        let spec = Kick3dSpec { offset: Some(0.05), face_pitch_deg: Some(10.0), friction: Some(0.5), patch_contact: patch, ..Kick3dSpec::default() };
+        let spec = Kick3dSpec {
+            offset: Some(0.05),
+            face_pitch_deg: Some(10.0),
+            friction: Some(0.5),
+            patch_contact: patch,
+            ..Kick3dSpec::default()
+        };
         let pitched = Kick3d::new(shell(), &rigid(spec)).unwrap();
         let e = Accurate3d::default().solve(&pitched).unwrap_err();
         assert!(e.to_string().contains("face_pitch = 0"), "{e}");
@@ -282,7 +311,14 @@ fn rigid_grip_holds_its_accuracy_through_the_switches() {
 #[test]
 fn nothing_slides_at_the_patch_centroid_while_gripping() {
     use kick_3d::history::ContactState;
-    for (friction, offset, cap) in [(f64::INFINITY, 0.05, false), (f64::INFINITY, 0.08, false), (2.0, 0.05, false), (0.6, 0.03, false), (f64::INFINITY, 0.05, true), (0.6, 0.05, true)] {
+    for (friction, offset, cap) in [
+        (f64::INFINITY, 0.05, false),
+        (f64::INFINITY, 0.08, false),
+        (2.0, 0.05, false),
+        (0.6, 0.03, false),
+        (f64::INFINITY, 0.05, true),
+        (0.6, 0.05, true),
+    ] {
         let spec = rigid(Kick3dSpec { offset: Some(offset), friction: Some(friction), ..Kick3dSpec::default() });
         let k = if cap { cap_kick(spec) } else { patch_kick(spec) };
         let v_n = k.normal_approach_speed();
@@ -324,18 +360,26 @@ fn nothing_slides_at_the_patch_centroid_while_gripping() {
 #[test]
 fn patch_grip_closes_energy_momentum_and_angular_momentum() {
     for cap in [false, true] {
-    for (friction, offset, approach) in [(f64::INFINITY, 0.05, 0.0), (0.8, 0.05, 0.0), (f64::INFINITY, 0.06, 12.0), (0.5, 0.0, 15.0)] {
-        let spec = rigid(Kick3dSpec { offset: Some(offset), approach_angle_deg: Some(approach), friction: Some(friction), ..Kick3dSpec::default() });
-        let k = if cap { cap_kick(spec) } else { patch_kick(spec) };
-        let (o, e) = Accurate3d::default().solve_to_state(&k).unwrap();
-        assert!(o.energy.relative_residual().abs() <= 1e-9, "mu {friction}: {:e}", o.energy.relative_residual());
-        assert!(o.energy.friction_loss > 0.0);
-        let [(p0, angular0), (p1, angular)] = kick_3d::checks::pair_momenta(&k, &e);
-        let scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
-        let (dp, dl) = ((p1 - p0).length() / p0.length(), (angular - angular0).length() / scale);
-        println!("patch, cap {cap}, mu {friction}, e {offset}, approach {approach}: residual {:.1e}, drift p {dp:.1e} L {dl:.1e}", o.energy.relative_residual());
-        assert!(dp <= 1e-12 && dl <= 1e-9, "mu {friction}: {dp:e} {dl:e}");
-    }
+        for (friction, offset, approach) in [(f64::INFINITY, 0.05, 0.0), (0.8, 0.05, 0.0), (f64::INFINITY, 0.06, 12.0), (0.5, 0.0, 15.0)] {
+            let spec = rigid(Kick3dSpec {
+                offset: Some(offset),
+                approach_angle_deg: Some(approach),
+                friction: Some(friction),
+                ..Kick3dSpec::default()
+            });
+            let k = if cap { cap_kick(spec) } else { patch_kick(spec) };
+            let (o, e) = Accurate3d::default().solve_to_state(&k).unwrap();
+            assert!(o.energy.relative_residual().abs() <= 1e-9, "mu {friction}: {:e}", o.energy.relative_residual());
+            assert!(o.energy.friction_loss > 0.0);
+            let [(p0, angular0), (p1, angular)] = kick_3d::checks::pair_momenta(&k, &e);
+            let scale = k.ball_inertia * o.spin.iter().map(|w| w * w).sum::<f64>().sqrt();
+            let (dp, dl) = ((p1 - p0).length() / p0.length(), (angular - angular0).length() / scale);
+            println!(
+                "patch, cap {cap}, mu {friction}, e {offset}, approach {approach}: residual {:.1e}, drift p {dp:.1e} L {dl:.1e}",
+                o.energy.relative_residual()
+            );
+            assert!(dp <= 1e-12 && dl <= 1e-9, "mu {friction}: {dp:e} {dl:e}");
+        }
     }
 }
 
@@ -372,16 +416,33 @@ fn patch_grip_holds_its_accuracy_through_the_switches() {
     let tight = Accurate3d::new(kick_3d::accurate::DEFAULT_TOLERANCE / 30.0).unwrap();
     let mut worst = 0.0_f64;
     for cap in [false, true] {
-    for (friction, offset, approach) in [(f64::INFINITY, 0.05, 0.0), (0.6, 0.03, 0.0), (2.0, 0.07, 0.0), (0.4, 0.05, 0.0), (f64::INFINITY, 0.06, 15.0), (0.5, 0.0, 15.0)] {
-        let spec = rigid(Kick3dSpec { offset: Some(offset), friction: Some(friction), approach_angle_deg: Some(approach), ..Kick3dSpec::default() });
-        let k = if cap { cap_kick(spec) } else { patch_kick(spec) };
-        let (a, b) = (Accurate3d::default().solve(&k).unwrap(), tight.solve(&k).unwrap());
-        let e = kick_3d::precision::Errors3d::of(&k, &a, &b);
-        let slip = (a.slip_time - b.slip_time).abs() / b.contact_time;
-        println!("patch, cap {cap}, mu {friction}, e {offset}, approach {approach}: {:.1e} ({e:?}), slip {slip:.1e}: {:.3e} of {:.3e} s", e.max(), b.slip_time, b.contact_time);
-        assert!(e.max() <= 1e-9 && slip <= 1e-9, "cap {cap}, mu {friction}, e {offset}: {e:?}, slip {slip:e}");
-        worst = worst.max(e.max()).max(slip);
-    }
+        for (friction, offset, approach) in [
+            (f64::INFINITY, 0.05, 0.0),
+            (0.6, 0.03, 0.0),
+            (2.0, 0.07, 0.0),
+            (0.4, 0.05, 0.0),
+            (f64::INFINITY, 0.06, 15.0),
+            (0.5, 0.0, 15.0),
+        ] {
+            let spec = rigid(Kick3dSpec {
+                offset: Some(offset),
+                friction: Some(friction),
+                approach_angle_deg: Some(approach),
+                ..Kick3dSpec::default()
+            });
+            let k = if cap { cap_kick(spec) } else { patch_kick(spec) };
+            let (a, b) = (Accurate3d::default().solve(&k).unwrap(), tight.solve(&k).unwrap());
+            let e = kick_3d::precision::Errors3d::of(&k, &a, &b);
+            let slip = (a.slip_time - b.slip_time).abs() / b.contact_time;
+            println!(
+                "patch, cap {cap}, mu {friction}, e {offset}, approach {approach}: {:.1e} ({e:?}), slip {slip:.1e}: {:.3e} of {:.3e} s",
+                e.max(),
+                b.slip_time,
+                b.contact_time
+            );
+            assert!(e.max() <= 1e-9 && slip <= 1e-9, "cap {cap}, mu {friction}, e {offset}: {e:?}, slip {slip:e}");
+            worst = worst.max(e.max()).max(slip);
+        }
     }
     println!("worst {worst:.2e}");
 }

@@ -24,10 +24,11 @@ fn named(name: &str) -> Kick3d {
 
 /// Kicks with grip and slip phases, over an edge, on a rounded border, driven.
 fn cases() -> Vec<(String, Kick3d)> {
-    let mut cases: Vec<(String, Kick3d)> = ["curve 5 cm", "slide 9 cm mu 0.2", "rounded 4 cm rising 20 deg", "driven 800 N 5 cm", "gravity 5 cm"]
-        .iter()
-        .map(|n| (n.to_string(), named(n)))
-        .collect();
+    let mut cases: Vec<(String, Kick3d)> =
+        ["curve 5 cm", "slide 9 cm mu 0.2", "rounded 4 cm rising 20 deg", "driven 800 N 5 cm", "gravity 5 cm"]
+            .iter()
+            .map(|n| (n.to_string(), named(n)))
+            .collect();
     for (name, kick) in kick_3d::models::peak_after_switch().unwrap() {
         cases.push((name.to_string(), kick));
     }
@@ -77,10 +78,8 @@ fn samples_match_an_independent_fine_rk4_reference() {
         for (first, width) in groups {
             let size = |v: &[f64; 27]| v[first..first + width].iter().map(|x| x * x).sum::<f64>().sqrt();
             let scale = rows.iter().map(|(_, r)| size(r)).fold(0.0, f64::max);
-            let worst = rows
-                .iter()
-                .map(|(a, r)| (first..first + width).map(|i| (a[i] - r[i]).abs()).fold(0.0, f64::max))
-                .fold(0.0, f64::max);
+            let worst =
+                rows.iter().map(|(a, r)| (first..first + width).map(|i| (a[i] - r[i]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
             let column = HISTORY_COLUMNS_3D[first].0;
             println!("{name}: {column}: {:.2e} of {scale:.3e}", worst / scale);
             assert!(worst <= SAMPLE_TOLERANCE * scale, "{name}: {column} off by {:.3e} of its scale {scale:.3e}", worst / scale);
@@ -249,12 +248,17 @@ fn the_moment_channels_integrate_to_the_change_of_spin() {
         let (outcome, samples) = history(&kick, Spacing::Count(64001));
         let integral = moment_integral(&samples);
         let (first, last) = (samples[0], samples[samples.len() - 1]);
-        let change: Vec<f64> = (0..3).map(|i| kick.ball_inertia * (last.ball_angular_velocity[i] - first.ball_angular_velocity[i])).collect();
+        let change: Vec<f64> =
+            (0..3).map(|i| kick.ball_inertia * (last.ball_angular_velocity[i] - first.ball_angular_velocity[i])).collect();
         let scale = change.iter().map(|x| x * x).sum::<f64>().sqrt();
         assert!(scale > 0.01 * kick.ball_inertia * outcome.speed / kick.ball_radius, "{name}: the kick spins ({scale})");
         for i in 0..3 {
-            assert!((integral[i] - change[i]).abs() <= tolerance * scale, "{name}: component {i}: ∫τ dt = {} vs I_b Δω = {}", integral[i], change[i]);
+            assert!(
+                (integral[i] - change[i]).abs() <= tolerance * scale,
+                "{name}: component {i}: ∫τ dt = {} vs I_b Δω = {}",
+                integral[i],
+                change[i]
+            );
         }
     }
 }
-

@@ -42,9 +42,16 @@ fn the_knife_edge_is_one_configuration() {
             let speed = norm(a.launch_velocity);
             for i in 0..3 {
                 assert!((a.launch_velocity[i] - b.launch_velocity[i]).abs() <= 1e-12 * speed, "{offset} {alpha} {mu}: {a:?} {b:?}");
-                assert!((a.spin[i] - b.spin[i]).abs() <= 1e-12 * speed / today.ball_radius, "{offset} {alpha} {mu}: spin {:?} {:?}", a.spin, b.spin);
+                assert!(
+                    (a.spin[i] - b.spin[i]).abs() <= 1e-12 * speed / today.ball_radius,
+                    "{offset} {alpha} {mu}: spin {:?} {:?}",
+                    a.spin,
+                    b.spin
+                );
             }
-            for (x, y) in [(a.contact_time, b.contact_time), (a.peak_normal_force, b.peak_normal_force), (a.max_compression, b.max_compression)] {
+            for (x, y) in
+                [(a.contact_time, b.contact_time), (a.peak_normal_force, b.peak_normal_force), (a.max_compression, b.max_compression)]
+            {
                 assert!(rel(y, x) <= 1e-12, "{offset} {alpha} {mu}: {x} vs {y}");
             }
         }
@@ -180,8 +187,10 @@ fn bad_instep_input_names_its_parameter() {
     assert!(named(Kick3dSpec { instep_radius: Some(0.01), ..Kick3dSpec::default() }, shell()).contains("instep_radius"));
     assert!(named(Kick3dSpec { instep_radius: Some(-1.0), ..Kick3dSpec::default() }, shell()).contains("instep_radius"));
     // A cap too flat for its digits is refused by name (it was solved as a kick that never touched).
-    assert!(named(Kick3dSpec { instep_radius: Some(1e300), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() }, shell()).contains("instep_radius"));
-    assert!(named(Kick3dSpec { instep_radius: Some(1e10), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() }, shell()).contains("instep_radius"));
+    assert!(named(Kick3dSpec { instep_radius: Some(1e300), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() }, shell())
+        .contains("instep_radius"));
+    assert!(named(Kick3dSpec { instep_radius: Some(1e10), face_yaw_deg: Some(0.0), ..Kick3dSpec::default() }, shell())
+        .contains("instep_radius"));
     assert!(named(Kick3dSpec { offset: Some(0.1), face_yaw_deg: Some(-60.0), ..Kick3dSpec::default() }, shell()).contains("face_yaw"));
     // Only the pitch given: the refusal names it, with the value given (not the yaw it derived).
     let pitched = named(Kick3dSpec { offset: Some(0.05), face_pitch_deg: Some(89.0), ..Kick3dSpec::default() }, shell());
@@ -230,7 +239,13 @@ fn auto_takes_the_1d_path_only_where_it_is_exact() {
         assert_eq!(k.is_one_dimensional(), one_d);
         let o = solve(&k);
         let r = rel(o.launch_velocity[0], o1.v_ball_out);
-        println!("cap {:?} patch {}: v {} against 1D {}: {r:.1e}", k.instep.unwrap().radius, k.instep.unwrap().patch.is_some(), o.launch_velocity[0], o1.v_ball_out);
+        println!(
+            "cap {:?} patch {}: v {} against 1D {}: {r:.1e}",
+            k.instep.unwrap().radius,
+            k.instep.unwrap().patch.is_some(),
+            o.launch_velocity[0],
+            o1.v_ball_out
+        );
         assert_eq!(r <= MATCH_1D, one_d);
     }
 }
@@ -250,16 +265,31 @@ fn auto_takes_the_1d_path_only_where_it_is_exact() {
 fn patch_kicks_meet_the_accurate_paths_tolerance() {
     let tight = Accurate3d::new(1e-15).unwrap();
     let light = |mu: f64, radius: f64| {
-        let kick3d = Kick3dSpec { offset: Some(0.02), friction: Some(mu), instep_radius: Some(radius), face_yaw_deg: Some(0.0), patch_contact: Some(true), ..Kick3dSpec::default() };
+        let kick3d = Kick3dSpec {
+            offset: Some(0.02),
+            friction: Some(mu),
+            instep_radius: Some(radius),
+            face_yaw_deg: Some(0.0),
+            patch_contact: Some(true),
+            ..Kick3dSpec::default()
+        };
         let scenario = kick_core::ScenarioSpec { law: Some(LawKind::Shell), foot_mass: Some(1.0), ..Default::default() };
         kick_3d::KickSpec { scenario, kick3d }.build().unwrap()
     };
-    let mut kicks: Vec<Kick3d> = [0.0, 0.5, f64::INFINITY].into_iter().flat_map(|mu| [None, Some(0.15)].map(|radius| oblique(mu, radius))).collect();
+    let mut kicks: Vec<Kick3d> =
+        [0.0, 0.5, f64::INFINITY].into_iter().flat_map(|mu| [None, Some(0.15)].map(|radius| oblique(mu, radius))).collect();
     kicks.extend([light(f64::INFINITY, 0.12), light(1.0, 0.3)]);
     for k in &kicks {
         let (o, reference) = (solve(k), tight.solve(k).unwrap());
         let e = kick_3d::precision::Errors3d::of(k, &o, &reference);
-        println!("μ {} instep {:?}: max error {:.1e} ({e:?}), slip {:.2e} of {:.2e} s", k.friction, k.instep.map(|i| i.radius), e.max(), o.slip_time, o.contact_time);
+        println!(
+            "μ {} instep {:?}: max error {:.1e} ({e:?}), slip {:.2e} of {:.2e} s",
+            k.friction,
+            k.instep.map(|i| i.radius),
+            e.max(),
+            o.slip_time,
+            o.contact_time
+        );
         assert!(e.max() <= 1e-9, "{e:?}");
     }
 }
@@ -282,7 +312,12 @@ fn a_pitched_or_yawed_face_pushes_along_its_normal() {
         let (p, y) = (f64::to_radians(pitch), f64::to_radians(yaw));
         assert!((n - Vec3::new(p.cos() * y.cos(), -p.cos() * y.sin(), p.sin())).length() < 1e-15, "{n:?}");
         let o = solve(&k);
-        assert!((o.launch_angle - pitch).abs() < 1e-6 && (o.launch_azimuth + yaw).abs() < 1e-6, "{yaw} {pitch}: {} {}", o.launch_angle, o.launch_azimuth);
+        assert!(
+            (o.launch_angle - pitch).abs() < 1e-6 && (o.launch_azimuth + yaw).abs() < 1e-6,
+            "{yaw} {pitch}: {} {}",
+            o.launch_angle,
+            o.launch_azimuth
+        );
     }
 }
 
@@ -326,7 +361,8 @@ fn a_flatter_cap_tends_to_the_flat_face() {
 #[test]
 fn without_loss_the_patch_does_not_turn_the_ball() {
     let lossy = solve(&oblique(0.0, Some(0.15)));
-    let ball = kick_core::ShellBall { shell_loss: 0.0, ..kick_core::ShellBall::default_with_radius(kick_core::DEFAULT_BALL_RADIUS).unwrap() };
+    let ball =
+        kick_core::ShellBall { shell_loss: 0.0, ..kick_core::ShellBall::default_with_radius(kick_core::DEFAULT_BALL_RADIUS).unwrap() };
     let spec = Kick3dSpec {
         offset: Some(0.05),
         approach_angle_deg: Some(10.0),

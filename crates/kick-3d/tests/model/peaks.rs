@@ -2,9 +2,8 @@
 //! method (fixed-step RK4, every step sampled, see `support/fine_rk4.rs`),
 //! on kicks whose largest force comes just after a grip/slip switch.
 
-
-use kick_3d::{Accurate3d, FullState3d, Kick3d};
 use crate::support::fine_rk4;
+use kick_3d::{Accurate3d, FullState3d, Kick3d};
 
 /// The accurate path's promise on peaks and their times.
 const PEAK_TOLERANCE: f64 = 1e-9;

@@ -56,10 +56,12 @@ fn ground_and_gravity_live_in_the_scene() {
         Scene::new(step).unwrap().solve(&k).unwrap()
     };
     let (floor, free) = (with(true), with(false));
-    let accurate = Accurate3d::default()
-        .solve(&kick(Kick3dSpec { offset: Some(0.05), gravity: Some(true), ..Kick3dSpec::default() }))
-        .unwrap();
-    println!("vz: ground {:.6e}, free {:.6e}, accurate free {:.6e}; contact {:.6e}", floor.launch_velocity[2], free.launch_velocity[2], accurate.launch_velocity[2], accurate.contact_time);
+    let accurate =
+        Accurate3d::default().solve(&kick(Kick3dSpec { offset: Some(0.05), gravity: Some(true), ..Kick3dSpec::default() })).unwrap();
+    println!(
+        "vz: ground {:.6e}, free {:.6e}, accurate free {:.6e}; contact {:.6e}",
+        floor.launch_velocity[2], free.launch_velocity[2], accurate.launch_velocity[2], accurate.contact_time
+    );
     // In free fall both bodies fall together: v_z = −g t_c for the ball.
     let fall = -kick_3d::model::GRAVITY * accurate.contact_time;
     assert!((accurate.launch_velocity[2] - fall).abs() <= 1e-9 * accurate.speed);

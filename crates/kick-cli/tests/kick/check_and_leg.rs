@@ -1,7 +1,7 @@
 //! `kick check` and `kick leg`: exit codes, JSON keys, agreement with the libraries.
 
-use kick_leg::{AnkleJoint, Impact, Leg, Pose};
 use crate::kick;
+use kick_leg::{AnkleJoint, Impact, Leg, Pose};
 
 #[test]
 fn check_json_lists_every_row_and_exits_zero_when_all_pass() {

@@ -8,8 +8,15 @@ fn simulate_json_has_the_contract_keys_in_si_units() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     for key in [
-        "v_ball_out", "v_foot_out", "speed_ratio", "peak_force", "contact_time",
-        "max_compression", "impulse", "restitution", "energy_dissipated",
+        "v_ball_out",
+        "v_foot_out",
+        "speed_ratio",
+        "peak_force",
+        "contact_time",
+        "max_compression",
+        "impulse",
+        "restitution",
+        "energy_dissipated",
     ] {
         assert!(value[key].is_f64(), "missing {key}");
     }
@@ -90,12 +97,9 @@ fn simulate_takes_any_contact_law() {
 fn a_closed_stdout_ends_the_output_quietly() {
     use std::io::{BufRead, BufReader};
     use std::process::Stdio;
-    for (args, lines) in [
-        (&["check"][..], 0),
-        (&["check"][..], 1),
-        (&["simulate3d", "--format", "json"][..], 1),
-        (&["check", "--format", "json"][..], 0),
-    ] {
+    for (args, lines) in
+        [(&["check"][..], 0), (&["check"][..], 1), (&["simulate3d", "--format", "json"][..], 1), (&["check", "--format", "json"][..], 0)]
+    {
         let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kick"))
             .args(args)
             .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
@@ -204,10 +208,17 @@ fn reference_pages_are_current() {
     }
     // Flags with their help and defaults, parameter flags from the declared list.
     for parameter in kick_core::parameters::PARAMETERS.iter() {
-        assert!(cli.contains(&format!("`{} <", parameter.flag())) || cli.contains(&format!("`{}`", parameter.flag())), "{}", parameter.flag());
+        assert!(
+            cli.contains(&format!("`{} <", parameter.flag())) || cli.contains(&format!("`{}`", parameter.flag())),
+            "{}",
+            parameter.flag()
+        );
     }
     assert!(cli.contains("| `--samples <SAMPLES>` | Number of scenarios (required) |  |"), "kick sweep's --samples");
-    assert!(cli.contains("| `--out <OUT>` | Directory for the result files; figures go to OUT/figures | results |"), "kick reproduce's --out");
+    assert!(
+        cli.contains("| `--out <OUT>` | Directory for the result files; figures go to OUT/figures | results |"),
+        "kick reproduce's --out"
+    );
     assert!(cli.contains("`--only <STEP>`"), "kick reproduce's --only");
     let parameters = std::fs::read_to_string(root.join("paper/reference/parameters.md")).unwrap();
     for p in kick_core::parameters::PARAMETERS.iter().chain(kick_flight::FLIGHT_PARAMETERS.iter()) {

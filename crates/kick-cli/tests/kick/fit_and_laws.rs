@@ -53,8 +53,20 @@ fn synthesized_history_is_fitted_back_within_three_sigma() {
 fn synthesized_hunt_crossley_history_with_offset_is_fitted_back() {
     let dir = scratch("synth-hc");
     let out = kick(&[
-        "fit", "synthesize", "--out", dir.to_str().unwrap(), "--name", "hc", "--seed", "4", "--law", "hunt-crossley-exact",
-        "--restitution", "0.66", "--time-offset", "2e-4",
+        "fit",
+        "synthesize",
+        "--out",
+        dir.to_str().unwrap(),
+        "--name",
+        "hc",
+        "--seed",
+        "4",
+        "--law",
+        "hunt-crossley-exact",
+        "--restitution",
+        "0.66",
+        "--time-offset",
+        "2e-4",
     ]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let spec = dir.join("hc.toml");
@@ -112,10 +124,7 @@ fn laws_json_has_every_law_on_every_row() {
     for c in all {
         let runs = c["runs"].as_array().unwrap();
         let names: Vec<&str> = runs.iter().map(|r| r["law"].as_str().unwrap()).collect();
-        assert_eq!(
-            names,
-            ["power-law", "hunt-crossley", "lankarani-nikravesh", "flores", "hunt-crossley-exact", "kelvin-voigt"]
-        );
+        assert_eq!(names, ["power-law", "hunt-crossley", "lankarani-nikravesh", "flores", "hunt-crossley-exact", "kelvin-voigt"]);
         // χ from the exact relation reproduces the paper's law's restitution.
         let e = |i: usize| runs[i]["outcome"]["restitution"].as_f64().unwrap();
         assert!((e(4) - e(0)).abs() < 1e-8, "{}: {} vs {}", c["name"], e(4), e(0));

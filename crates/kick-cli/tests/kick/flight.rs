@@ -97,8 +97,25 @@ fn flight_json_reports_the_launch_aerodynamics() {
 fn flight_without_air_forces_is_the_parabola() {
     let (speed, angle, g, d, r) = (25.0_f64, 35.0_f64, 9.81, 30.0, 0.11);
     let v = json(&[
-        "flight", "--speed", "25", "--launch-angle", "35", "--azimuth", "0", "--ball-radius", "0.11", "--drag-coefficient", "0",
-        "--lift-coefficient", "0", "--spin", "0,0,40", "--distance", "30", "--format", "json",
+        "flight",
+        "--speed",
+        "25",
+        "--launch-angle",
+        "35",
+        "--azimuth",
+        "0",
+        "--ball-radius",
+        "0.11",
+        "--drag-coefficient",
+        "0",
+        "--lift-coefficient",
+        "0",
+        "--spin",
+        "0,0,40",
+        "--distance",
+        "30",
+        "--format",
+        "json",
     ]);
     let (s, c) = (angle.to_radians().sin(), angle.to_radians().cos());
     let time = 2.0 * speed * s / g;
@@ -111,9 +128,7 @@ fn flight_without_air_forces_is_the_parabola() {
     assert!(close(num(&v["crossing"]["height"]), r + speed * s * t - g * t * t / 2.0, 1e-9));
     // The vector form of the same launch gives the same flight.
     let launch = format!("{},0,{}", speed * c, speed * s);
-    let w = json(&[
-        "flight", "--launch-velocity", &launch, "--drag-coefficient", "0", "--lift-coefficient", "0", "--format", "json",
-    ]);
+    let w = json(&["flight", "--launch-velocity", &launch, "--drag-coefficient", "0", "--lift-coefficient", "0", "--format", "json"]);
     assert!(close(num(&w["flight_time"]), time, 1e-9));
 }
 
@@ -142,14 +157,22 @@ fn flight_bad_input_names_the_flag() {
 #[test]
 fn simulate3d_flight_is_kick_flight_of_its_launch() {
     let v = json(&[
-        "simulate3d", "--offset", "0.05", "--approach-angle", "40", "--friction", "0.6", "--flight", "--distance", "9.15",
-        "--format", "json",
+        "simulate3d",
+        "--offset",
+        "0.05",
+        "--approach-angle",
+        "40",
+        "--friction",
+        "0.6",
+        "--flight",
+        "--distance",
+        "9.15",
+        "--format",
+        "json",
     ]);
     let (launch, spin) = (vec_of(&v["launch_velocity"]), vec_of(&v["spin"]));
     let joined = |a: &[f64]| a.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(",");
-    let f = json(&[
-        "flight", "--launch-velocity", &joined(&launch), "--spin", &joined(&spin), "--distance", "9.15", "--format", "json",
-    ]);
+    let f = json(&["flight", "--launch-velocity", &joined(&launch), "--spin", &joined(&spin), "--distance", "9.15", "--format", "json"]);
     let flight = &v["flight"];
     assert!(spin[2].abs() > 10.0, "an off-center kick spins: {spin:?}");
     for key in ["flight_time", "apex_height"] {

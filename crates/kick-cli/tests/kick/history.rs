@@ -72,7 +72,17 @@ fn simulate3d_writes_an_hdf5_history_with_units_and_parameters() {
     let path = dir.join("h.h5");
     let dt = 1e-4;
     let summary = json(&[
-        "simulate3d", "--offset", "0.05", "--friction", "0.5", "--format", "json", "--history", path.to_str().unwrap(), "--interval", "1e-4",
+        "simulate3d",
+        "--offset",
+        "0.05",
+        "--friction",
+        "0.5",
+        "--format",
+        "json",
+        "--history",
+        path.to_str().unwrap(),
+        "--interval",
+        "1e-4",
     ]);
     let t_c = summary["contact_time"].as_f64().unwrap();
     let grid = (0u64..).take_while(|&k| k as f64 * dt < t_c).count();
@@ -88,7 +98,8 @@ fn simulate3d_writes_an_hdf5_history_with_units_and_parameters() {
     let time = file.values("history/time").unwrap();
     assert!(same(*time.last().unwrap(), t_c));
     assert_eq!(time[grid - 1], (grid - 1) as f64 * dt);
-    let launch: Vec<f64> = ["x", "y", "z"].iter().map(|c| *file.values(&format!("history/ball_velocity_{c}")).unwrap().last().unwrap()).collect();
+    let launch: Vec<f64> =
+        ["x", "y", "z"].iter().map(|c| *file.values(&format!("history/ball_velocity_{c}")).unwrap().last().unwrap()).collect();
     let expected: Vec<f64> = summary["launch_velocity"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
     assert!(launch.iter().zip(&expected).all(|(a, b)| same(*a, *b)), "{launch:?} vs {expected:?}");
     let state = file.values("history/contact_state").unwrap();
@@ -107,7 +118,19 @@ fn simulate3d_with_a_patch_writes_the_patch_columns() {
     let dir = scratch("3d-patch");
     let path = dir.join("p.h5");
     let patch = ["--law", "shell", "--patch-contact", "--instep-radius", "0.15", "--face-yaw", "0"];
-    let mut args = vec!["simulate3d", "--offset", "0.05", "--friction", "0.5", "--format", "json", "--history", path.to_str().unwrap(), "--samples", "101"];
+    let mut args = vec![
+        "simulate3d",
+        "--offset",
+        "0.05",
+        "--friction",
+        "0.5",
+        "--format",
+        "json",
+        "--history",
+        path.to_str().unwrap(),
+        "--samples",
+        "101",
+    ];
     args.extend(patch);
     json(&args);
     let file = ResultFile::open(&path).unwrap();
@@ -130,7 +153,19 @@ fn simulate3d_with_a_patch_writes_the_patch_columns() {
 fn flight_writes_its_history() {
     let dir = scratch("flight");
     let path = dir.join("f.hdf5");
-    let summary = json(&["flight", "--speed", "25", "--launch-angle", "20", "--format", "json", "--history", path.to_str().unwrap(), "--samples", "50"]);
+    let summary = json(&[
+        "flight",
+        "--speed",
+        "25",
+        "--launch-angle",
+        "20",
+        "--format",
+        "json",
+        "--history",
+        path.to_str().unwrap(),
+        "--samples",
+        "50",
+    ]);
     let file = ResultFile::open(&path).unwrap();
     let time = file.values("history/time").unwrap();
     assert_eq!(time.len(), 50);

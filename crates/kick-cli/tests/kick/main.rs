@@ -1,10 +1,10 @@
 //! The `kick` binary's contract, one test binary: names other tools read, exit codes, messages, files.
 
+mod aim;
 mod bounce;
 mod check_and_leg;
 mod cli;
 mod fit_and_laws;
-mod aim;
 mod flight;
 mod history;
 mod run_reproduce;

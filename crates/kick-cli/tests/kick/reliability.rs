@@ -162,11 +162,7 @@ fn sigkill_keeps_the_old_result_and_the_next_run_clears_what_it_left() {
 /// maxrss starts at this test process's own peak (the other tests' memory).
 fn output_and_peak_rss(command: &mut Command, dir: &Path) -> (std::process::ExitStatus, Vec<u8>, Vec<u8>, u64) {
     let (out, err) = (dir.join("stdout"), dir.join("stderr"));
-    let mut child = command
-        .stdout(std::fs::File::create(&out).unwrap())
-        .stderr(std::fs::File::create(&err).unwrap())
-        .spawn()
-        .unwrap();
+    let mut child = command.stdout(std::fs::File::create(&out).unwrap()).stderr(std::fs::File::create(&err).unwrap()).spawn().unwrap();
     let status_file = format!("/proc/{}/status", child.id());
     let mut peak = 0;
     let status = loop {
@@ -194,12 +190,12 @@ fn output_and_peak_rss(command: &mut Command, dir: &Path) -> (std::process::Exit
 fn long_histories_are_streamed_to_the_file() {
     let dir = scratch("history");
     let mut peak = 0;
-    for (command, interval, file, least_rows) in
-        [("simulate", "2e-8", "h1.csv", 260_000usize), ("simulate3d", "2e-8", "h3.csv", 260_000)]
-    {
+    for (command, interval, file, least_rows) in [("simulate", "2e-8", "h1.csv", 260_000usize), ("simulate3d", "2e-8", "h3.csv", 260_000)] {
         let path = dir.join(file);
-        let (status, stdout, stderr, rss) =
-            output_and_peak_rss(kick().args([command, "--history", path.to_str().unwrap(), "--interval", interval, "--format", "json"]), &dir);
+        let (status, stdout, stderr, rss) = output_and_peak_rss(
+            kick().args([command, "--history", path.to_str().unwrap(), "--interval", interval, "--format", "json"]),
+            &dir,
+        );
         assert!(status.success(), "{}", String::from_utf8_lossy(&stderr));
         peak = peak.max(rss);
         let summary: serde_json::Value = serde_json::from_slice(&stdout).expect("stdout is the JSON summary alone");

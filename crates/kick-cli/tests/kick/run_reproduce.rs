@@ -1,7 +1,7 @@
 //! `kick run` and `kick reproduce`: exit codes, located errors, files written.
 
-use std::path::PathBuf;
 use crate::kick;
+use std::path::PathBuf;
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("kick-cli-{}-{name}", std::process::id()));
@@ -56,7 +56,10 @@ fn reproduce_writes_results_figures_and_report() {
     let timing = std::fs::read_to_string(dir.join("paper/timing.md")).unwrap();
     assert!(timing.contains("µs per scenario") && timing.contains("cores available"), "{timing}");
     // The sweeps into files, plain and compressed, measured on the same page.
-    for command in ["`kick sweep --samples 2000 --seed 1 --threads 2 --out sweep.h5`", "`kick sweep3d --samples 200 --seed 1 --threads 2 --out sweep3d.h5 --compress 4`"] {
+    for command in [
+        "`kick sweep --samples 2000 --seed 1 --threads 2 --out sweep.h5`",
+        "`kick sweep3d --samples 200 --seed 1 --threads 2 --out sweep3d.h5 --compress 4`",
+    ] {
         assert!(timing.contains("## Sweeps into result files") && timing.contains(command), "{command}: {timing}");
     }
     let solvers = std::fs::read_to_string(dir.join("paper/solvers.md")).unwrap();
@@ -74,7 +77,11 @@ fn table2_works_outside_the_repository_from_the_built_in_file() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("31.98") && text.contains("3804"), "{text}");
     // `kick laws` reads the same scenarios, from anywhere.
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_kick")).args(["laws", "--samples", "20"]).current_dir(&dir).output().expect("kick runs");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_kick"))
+        .args(["laws", "--samples", "20"])
+        .current_dir(&dir)
+        .output()
+        .expect("kick runs");
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(String::from_utf8_lossy(&out.stdout).contains("Very soft ball"), "{}", String::from_utf8_lossy(&out.stdout));
     // A file on disk overrides the built-in one.

@@ -69,8 +69,12 @@ fn the_slurm_example_run_locally_equals_an_unsharded_run() {
 
     // One shard gone: the merge job fails naming it, and writes nothing.
     std::fs::remove_file(dir.join("shards/grid.shard-1-of-3.h5")).unwrap();
-    let again = kick(&["merge", dir.join("again.h5").to_str().unwrap(), dir.join("shards/grid.shard-0-of-3.h5").to_str().unwrap(),
-        dir.join("shards/grid.shard-2-of-3.h5").to_str().unwrap()]);
+    let again = kick(&[
+        "merge",
+        dir.join("again.h5").to_str().unwrap(),
+        dir.join("shards/grid.shard-0-of-3.h5").to_str().unwrap(),
+        dir.join("shards/grid.shard-2-of-3.h5").to_str().unwrap(),
+    ]);
     assert_eq!(again.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&again.stderr);
     assert!(stderr.contains("missing") && stderr.contains("grid.shard-1-of-3.h5 (rows 4..8)"), "{stderr}");
@@ -102,8 +106,10 @@ fn the_slurm_example_shards_a_sweep3d_locally() {
     let whole = dir.join("whole/spin.h5");
     let done = kick(&["sweep3d", "--samples", "30", "--seed", "2", "--out", whole.to_str().unwrap()]);
     assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
-    let (merged, whole) = (kick_store::ResultFile::open(&dir.join("shards/spin.h5")).unwrap(), kick_store::ResultFile::open(&whole).unwrap());
-    for dataset in ["parameters/offset", "parameters/foot_inertia_y", "outcomes/spin_z", "outcomes/speed", "outcomes/energy_friction_loss"] {
+    let (merged, whole) =
+        (kick_store::ResultFile::open(&dir.join("shards/spin.h5")).unwrap(), kick_store::ResultFile::open(&whole).unwrap());
+    for dataset in ["parameters/offset", "parameters/foot_inertia_y", "outcomes/spin_z", "outcomes/speed", "outcomes/energy_friction_loss"]
+    {
         let bits = |f: &kick_store::ResultFile| f.values(dataset).unwrap().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
         assert_eq!(bits(&merged), bits(&whole), "{dataset}");
     }
@@ -117,8 +123,12 @@ fn the_slurm_example_shards_a_sweep3d_locally() {
 fn a_3d_experiment_runs_in_shards_and_merges() {
     let dir = scratch("grid3d");
     let file = dir.join("spin.toml");
-    std::fs::write(&file, "[kick3d]\nfriction = 0.5\n[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.02, 0.04, 0.06, 0.08]\n\
-                          [[sweep]]\nparameter = \"approach_angle\"\nvalues = [-10.0, 10.0]\n").unwrap();
+    std::fs::write(
+        &file,
+        "[kick3d]\nfriction = 0.5\n[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.02, 0.04, 0.06, 0.08]\n\
+                          [[sweep]]\nparameter = \"approach_angle\"\nvalues = [-10.0, 10.0]\n",
+    )
+    .unwrap();
     let parts = dir.join("parts");
     let mut names = Vec::new();
     for given in ["0/2", "1/2"] {

@@ -13,7 +13,9 @@ fn simulate3d_json_has_the_contract_keys_and_matches_the_library() {
     let out = kick(&["simulate3d", "--offset", "0.05", "--approach-angle", "10", "--friction", "0.6", "--format", "json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    for key in ["speed", "spin_rpm", "launch_angle", "contact_time", "peak_normal_force", "peak_tangential_force", "max_compression", "slip_time"] {
+    for key in
+        ["speed", "spin_rpm", "launch_angle", "contact_time", "peak_normal_force", "peak_tangential_force", "max_compression", "slip_time"]
+    {
         assert!(v[key].is_f64(), "{key}");
     }
     let (launch, spin) = (vec3(&v["launch_velocity"]), vec3(&v["spin"]));
@@ -99,7 +101,11 @@ fn run3d_is_run_on_the_unified_format() {
     let dir = std::env::temp_dir().join(format!("kick3d-run3d-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("tiny.toml");
-    std::fs::write(&file, "name = \"3d_tiny\"\ndescription = \"tiny\"\n[[sweep]]\nparameter = \"offset\"\nlinear = { from = 0.0, to = 0.04, count = 3 }\n").unwrap();
+    std::fs::write(
+        &file,
+        "name = \"3d_tiny\"\ndescription = \"tiny\"\n[[sweep]]\nparameter = \"offset\"\nlinear = { from = 0.0, to = 0.04, count = 3 }\n",
+    )
+    .unwrap();
     let out = kick(&["run3d", file.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(dir.join("3d_tiny.h5").exists());

@@ -1,8 +1,8 @@
 //! The accurate solver against the closed forms, at the 1e-9 relative target.
 
+use crate::support::assert_close;
 use kick_compliant::{closed, Accurate};
 use kick_core::{models, special, ContactLaw, Outcome, Parameter, Scenario, Solver};
-use crate::support::assert_close;
 
 const TARGET: f64 = 1e-9;
 
@@ -47,11 +47,16 @@ fn linear_damped_contacts_match_the_oscillator() {
 fn eq43_contact_time_of_the_linear_spring() {
     for (k, m_f, v_b) in [(1.0e5, 3.0, 0.0), (3.0e6, 0.7, -4.0), (2.0e4, 40.0, 12.0)] {
         let scenario = Scenario::baseline()
-            .with(Parameter::Exponent, 1.0).unwrap()
-            .with(Parameter::Damping, 0.0).unwrap()
-            .with(Parameter::Stiffness, k).unwrap()
-            .with(Parameter::FootMass, m_f).unwrap()
-            .with(Parameter::BallSpeed, v_b).unwrap();
+            .with(Parameter::Exponent, 1.0)
+            .unwrap()
+            .with(Parameter::Damping, 0.0)
+            .unwrap()
+            .with(Parameter::Stiffness, k)
+            .unwrap()
+            .with(Parameter::FootMass, m_f)
+            .unwrap()
+            .with(Parameter::BallSpeed, v_b)
+            .unwrap();
         let expected = std::f64::consts::PI * (scenario.reduced_mass() / k).sqrt();
         let accurate = Accurate::default().solve(&scenario).unwrap();
         assert_close("Eq. 43", "contact_time", accurate.contact_time, expected, TARGET);
@@ -109,12 +114,8 @@ fn beta_return_time_matches_simpson_quadrature() {
 fn linear_peak_force_against_a_dense_scan_of_the_accurate_history() {
     for (case, scenario) in models::linear() {
         let exact = closed::linear(&scenario).unwrap().unwrap();
-        let (_, history) = kick_core::RecordingSolver::solve_recorded(
-            &Accurate::default(),
-            &scenario,
-            exact.contact_time / 4000.0,
-        )
-        .unwrap();
+        let (_, history) =
+            kick_core::RecordingSolver::solve_recorded(&Accurate::default(), &scenario, exact.contact_time / 4000.0).unwrap();
         let scanned = history.samples.iter().map(|s| s.force).fold(0.0, f64::max);
         let onset = scenario.paper_law().onset_force(scenario.approach_speed());
         // A scan can only undershoot the supremum, by at most the curvature term.

@@ -93,7 +93,11 @@ fn release_criterion_agrees_with_the_seed_method() {
     assert!(releases(low) && !releases(high));
     for _ in 0..40 {
         let mid = 0.5 * (low + high);
-        if releases(mid) { low = mid } else { high = mid }
+        if releases(mid) {
+            low = mid
+        } else {
+            high = mid
+        }
     }
     let seed = SeedRk4::new(2e-6).unwrap();
     let below = base.with(Parameter::DriveForce, 0.97 * low).unwrap();

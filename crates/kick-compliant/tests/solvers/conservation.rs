@@ -1,10 +1,10 @@
 //! Conservation laws and identities of the 1D model, for both solvers.
 
+use crate::support::assert_close;
 use kick_compliant::events::{Engine, StopAt};
 use kick_compliant::ode::{self, Branch, ContactOde};
 use kick_compliant::{Accurate, SeedRk4};
 use kick_core::{models, Parameter, RecordingSolver, Scenario, Solver};
-use crate::support::assert_close;
 
 fn passive_models() -> Vec<(&'static str, Scenario)> {
     let mut all = models::table2();

@@ -60,7 +60,9 @@ fn kelvin_voigt_agrees_between_solvers() {
     let scenario = Scenario::baseline().with_law(LawKind::KelvinVoigt, Some(0.6)).unwrap();
     let a = SolverChoice::from_name("accurate", 5e-6).unwrap().solve(&scenario).unwrap();
     let r = SolverChoice::from_name("reduced", 5e-6).unwrap().solve(&scenario).unwrap();
-    for (x, y) in [(a.v_ball_out, r.v_ball_out), (a.contact_time, r.contact_time), (a.peak_force, r.peak_force), (a.restitution, r.restitution)] {
+    for (x, y) in
+        [(a.v_ball_out, r.v_ball_out), (a.contact_time, r.contact_time), (a.peak_force, r.peak_force), (a.restitution, r.restitution)]
+    {
         assert!(((x - y) / y).abs() < 1e-9, "{x} vs {y}");
     }
 }

@@ -2,9 +2,7 @@
 //! nothing, how accurate the samples are, streaming and the collecting cap.
 
 use kick_compliant::{Accurate, SolverChoice};
-use kick_core::{
-    models, ContactPhase, KickError, LawKind, Outcome, Parameter, RecordingSolver, Sample, Scenario, Solver, Spacing,
-};
+use kick_core::{models, ContactPhase, KickError, LawKind, Outcome, Parameter, RecordingSolver, Sample, Scenario, Solver, Spacing};
 use std::ops::ControlFlow;
 
 /// Every solver by name, fixed-step ones at 1 µs.
@@ -172,7 +170,9 @@ fn phases_follow_the_maximum_compression() {
 /// jump F(0⁺) = c V0 in its first step, a documented first-order error.)
 #[test]
 fn samples_follow_the_linear_closed_form() {
-    for (case, s) in models::linear().into_iter().filter(|(_, s)| s.damping_ratio() < 1.0).chain(models::elastic().into_iter().take(2).skip(1)) {
+    for (case, s) in
+        models::linear().into_iter().filter(|(_, s)| s.damping_ratio() < 1.0).chain(models::elastic().into_iter().take(2).skip(1))
+    {
         let mu = s.reduced_mass();
         let v0 = s.approach_speed();
         let omega = (s.get(Parameter::Stiffness) / mu).sqrt();
@@ -199,9 +199,18 @@ fn samples_follow_the_linear_closed_form() {
             for sample in history.samples.iter().filter(|x| x.time < t_c) {
                 let (delta, delta_rate) = exact(sample.time);
                 let name = solver.name();
-                assert!((sample.compression - delta).abs() <= 1e-9 * delta_max, "{name} {case} t = {}: δ {} vs {delta}", sample.time, sample.compression);
+                assert!(
+                    (sample.compression - delta).abs() <= 1e-9 * delta_max,
+                    "{name} {case} t = {}: δ {} vs {delta}",
+                    sample.time,
+                    sample.compression
+                );
                 let measured_rate = sample.foot_velocity - sample.ball_velocity;
-                assert!((measured_rate - delta_rate).abs() <= 1e-9 * v0, "{name} {case} t = {}: δ̇ {measured_rate} vs {delta_rate}", sample.time);
+                assert!(
+                    (measured_rate - delta_rate).abs() <= 1e-9 * v0,
+                    "{name} {case} t = {}: δ̇ {measured_rate} vs {delta_rate}",
+                    sample.time
+                );
             }
         }
     }
@@ -217,7 +226,11 @@ fn a_stopped_sink_stops_sampling_only() {
         let streamed = solver
             .solve_streamed(&s, Spacing::Interval(1e-6), &mut |sample| {
                 taken.push(*sample);
-                if taken.len() < 10 { ControlFlow::Continue(()) } else { ControlFlow::Break(()) }
+                if taken.len() < 10 {
+                    ControlFlow::Continue(())
+                } else {
+                    ControlFlow::Break(())
+                }
             })
             .unwrap();
         assert_eq!(taken.len(), 10, "{}", solver.name());

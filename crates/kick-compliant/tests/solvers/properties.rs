@@ -6,9 +6,7 @@ use proptest::prelude::*;
 
 fn passive_scenario() -> impl Strategy<Value = Scenario> {
     (0.3f64..30.0, 0.3f64..0.6, 5.0f64..40.0, -15.0f64..4.0, 4.0f64..7.0, 0.0f64..2000.0, 1.0f64..2.0)
-        .prop_map(|(m_f, m_b, v_f, v_b, log_k, c, n)| {
-            Scenario::from_values([m_f, m_b, v_f, v_b, 10f64.powf(log_k), c, n, 0.0]).unwrap()
-        })
+        .prop_map(|(m_f, m_b, v_f, v_b, log_k, c, n)| Scenario::from_values([m_f, m_b, v_f, v_b, 10f64.powf(log_k), c, n, 0.0]).unwrap())
 }
 
 proptest! {

@@ -88,11 +88,8 @@ fn linear_law_under_a_drive_matches_its_closed_form() {
 
 #[test]
 fn error_falls_as_the_tolerance_tightens() {
-    let cases: Vec<(Scenario, Outcome)> = models::table2()
-        .into_iter()
-        .chain(models::driven())
-        .map(|(_, s)| (s, tight().solve(&s).unwrap()))
-        .collect();
+    let cases: Vec<(Scenario, Outcome)> =
+        models::table2().into_iter().chain(models::driven()).map(|(_, s)| (s, tight().solve(&s).unwrap())).collect();
     let worst = |tolerance: f64| {
         let solver = Series::with_tolerance(tolerance).unwrap();
         cases.iter().map(|(s, r)| max_relative_error(&solver.solve(s).unwrap(), r)).fold(0.0, f64::max)
@@ -114,7 +111,11 @@ fn a_trapping_drive_is_found_like_the_event_engine_finds_it() {
     assert!(!traps(low) && traps(high));
     for _ in 0..60 {
         let mid = 0.5 * (low + high);
-        if traps(mid) { high = mid } else { low = mid }
+        if traps(mid) {
+            high = mid
+        } else {
+            low = mid
+        }
     }
     for factor in [0.97, 0.999, 1.001, 1.03] {
         let s = base.with(kick_core::Parameter::DriveForce, factor * high).unwrap();
@@ -141,8 +142,17 @@ fn other_laws_are_refused() {
 /// of itself, 1e-12 of that speed.
 #[test]
 fn a_foot_that_nearly_stops_agrees_with_the_tight_reference() {
-    let s = Scenario::from_values([10f64.powf(-0.2058731517080331), 0.4332985480812531, 14.556390820802585, -8.695202710865459,
-        10f64.powf(6.057512091701089), 105.20922750836176, 1.2634029716703878, 902.9384438345662]).unwrap();
+    let s = Scenario::from_values([
+        10f64.powf(-0.2058731517080331),
+        0.4332985480812531,
+        14.556390820802585,
+        -8.695202710865459,
+        10f64.powf(6.057512091701089),
+        105.20922750836176,
+        1.2634029716703878,
+        902.9384438345662,
+    ])
+    .unwrap();
     let (reference, series) = (tight().solve(&s).unwrap(), Series::default().solve(&s).unwrap());
     assert!(reference.v_foot_out.abs() < 1e-2, "{}", reference.v_foot_out);
     let error = max_relative_error(&series, &reference);

@@ -66,10 +66,12 @@ fn the_stability_limit_is_sharp_on_a_linear_law() {
     let omega = (1e5 / s.reduced_mass()).sqrt();
     let limit = largest_stable_rk4_step(&s, &s.contact_law());
     assert!((limit * omega - 8f64.sqrt()).abs() < 1e-12, "{}", limit * omega);
-    for solver in [SolverChoice::SeedRk4(SeedRk4::new(1.01 * limit).unwrap()), SolverChoice::FullState(FullState::rk4_events(1.01 * limit))] {
+    for solver in [SolverChoice::SeedRk4(SeedRk4::new(1.01 * limit).unwrap()), SolverChoice::FullState(FullState::rk4_events(1.01 * limit))]
+    {
         assert!(matches!(solver.solve(&s), Err(KickError::StepTooLarge { .. })), "{}", solver.name());
     }
-    for solver in [SolverChoice::SeedRk4(SeedRk4::new(0.99 * limit).unwrap()), SolverChoice::FullState(FullState::rk4_events(0.99 * limit))] {
+    for solver in [SolverChoice::SeedRk4(SeedRk4::new(0.99 * limit).unwrap()), SolverChoice::FullState(FullState::rk4_events(0.99 * limit))]
+    {
         assert!(matches!(solver.solve(&s), Err(KickError::StepTooInaccurate { .. })), "{}", solver.name());
     }
 }
@@ -92,7 +94,11 @@ fn just_inside_the_accepted_step_still_works() {
         assert!(accepted(low).is_ok() && accepted(high).is_err());
         for _ in 0..40 {
             let mid = (low * high).sqrt();
-            if accepted(mid).is_ok() { low = mid } else { high = mid }
+            if accepted(mid).is_ok() {
+                low = mid
+            } else {
+                high = mid
+            }
         }
         let inside = accepted(0.99 * low).unwrap();
         assert!(exit_error(&inside, &exact, &s) <= ENERGY_RESIDUAL_BOUND, "{case}: {:e}", exit_error(&inside, &exact, &s));
@@ -116,7 +122,11 @@ fn every_answer_is_within_the_bound_or_a_step_too_large() {
                 match solver.solve(&s) {
                     Ok(o) if solver.name() == "rk4-events" => {
                         worst = worst.max(exit_error(&o, &exact, &s));
-                        assert!(exit_error(&o, &exact, &s) <= ENERGY_RESIDUAL_BOUND, "{case} dt = {dt:e}: {:e}", exit_error(&o, &exact, &s));
+                        assert!(
+                            exit_error(&o, &exact, &s) <= ENERGY_RESIDUAL_BOUND,
+                            "{case} dt = {dt:e}: {:e}",
+                            exit_error(&o, &exact, &s)
+                        );
                     }
                     // The seed's stop is quantised to its step (documented).
                     Ok(o) => assert!(relative_energy_residual(&s, &s.contact_law(), &o.energy) <= ENERGY_RESIDUAL_BOUND),

@@ -69,7 +69,11 @@ fn scene() -> impl Strategy<Value = Scene> {
 }
 
 fn relative(a: f64, b: f64) -> f64 {
-    if b == 0.0 { a.abs() } else { ((a - b) / b).abs() }
+    if b == 0.0 {
+        a.abs()
+    } else {
+        ((a - b) / b).abs()
+    }
 }
 
 /// Agreement of two outcomes: exit velocities relative to the approach
@@ -133,13 +137,22 @@ fn check_scene(scene: Scene) -> Result<(), TestCaseError> {
                 let p0 = s.effective_foot_mass() * s.foot_speed() + s.ball_mass() * s.ball_speed();
                 let p1 = s.effective_foot_mass() * o.v_foot_out + s.ball_mass() * o.v_ball_out;
                 let moved = s.reduced_mass() * approach + s.drive_force().abs() * o.contact_time;
-                prop_assert!((p1 - p0 - s.drive_force() * o.contact_time).abs() <= 1e-8 * moved.max(1e-300) + 1e-12 * p0.abs(),
-                    "{}: momentum {p0} -> {p1}", o.method);
+                prop_assert!(
+                    (p1 - p0 - s.drive_force() * o.contact_time).abs() <= 1e-8 * moved.max(1e-300) + 1e-12 * p0.abs(),
+                    "{}: momentum {p0} -> {p1}",
+                    o.method
+                );
                 // Energy identity relative to the energy the contact moves; the
                 // lab-frame kinetic energies add their own rounding, ~ε K⁻.
                 let budget = s.relative_kinetic_energy() + o.energy.drive_work.abs();
                 let rounding = 64.0 * f64::EPSILON * (s.initial_kinetic_energy() + o.energy.kinetic_final);
-                prop_assert!(o.energy.residual().abs() <= 1e-8 * budget + rounding, "{}: energy residual {:e} of {:e}", o.method, o.energy.residual(), budget);
+                prop_assert!(
+                    o.energy.residual().abs() <= 1e-8 * budget + rounding,
+                    "{}: energy residual {:e} of {:e}",
+                    o.method,
+                    o.energy.residual(),
+                    budget
+                );
                 if s.drive_force() == 0.0 {
                     prop_assert!(o.restitution <= 1.0 + 1e-8, "{}: e = {}", o.method, o.restitution);
                 }
@@ -152,7 +165,12 @@ fn check_scene(scene: Scene) -> Result<(), TestCaseError> {
             // ~U(δ_max) ≫ ½ μ V0², so its own error carries that ratio;
             // `series` takes its exit speed from ½ μ V0² − D instead.
             let ratio = drive_ratio(&s, r);
-            prop_assert!(disagreement(a, r, approach) <= 1e-8 * ratio, "auto ({}) vs reduced: {:e}", a.method, disagreement(a, r, approach));
+            prop_assert!(
+                disagreement(a, r, approach) <= 1e-8 * ratio,
+                "auto ({}) vs reduced: {:e}",
+                a.method,
+                disagreement(a, r, approach)
+            );
             prop_assert!(disagreement(p, r, approach) <= 1e-8 * ratio, "series vs reduced: {:e}", disagreement(p, r, approach));
             if s.get(kick_core::Parameter::Damping) == 0.0 {
                 // Nothing dissipates: ½ μ w² = ½ μ V0² whatever the drive did,
@@ -174,7 +192,9 @@ fn check_scene(scene: Scene) -> Result<(), TestCaseError> {
                 match result {
                     Err(e) => prop_assert!(acceptable(e), "unexpected error: {e}"),
                     Ok(o) if unresolvable => prop_assert!(o.contact_time.is_finite() && o.v_ball_out.is_finite()),
-                    Ok(o) => prop_assert!(false, "{} succeeded where another failed: {reduced:?} / {full:?} / {auto:?} / {series:?}", o.method),
+                    Ok(o) => {
+                        prop_assert!(false, "{} succeeded where another failed: {reduced:?} / {full:?} / {auto:?} / {series:?}", o.method)
+                    }
                 }
             }
         }
@@ -200,7 +220,15 @@ fn corners_of_the_stress_box() {
             for damping_ratio in [0.0, 50.0] {
                 for log_mass_ratio in [-3.0, 6.0] {
                     for log_approach_speed in [-3.0, 3.0] {
-                        let scene = Scene { log_stiffness, exponent, damping_ratio, log_mass_ratio, log_approach_speed, ball_speed: 20.0, drive: 0.0 };
+                        let scene = Scene {
+                            log_stiffness,
+                            exponent,
+                            damping_ratio,
+                            log_mass_ratio,
+                            log_approach_speed,
+                            ball_speed: 20.0,
+                            drive: 0.0,
+                        };
                         if let Err(e) = check_scene(scene) {
                             failures.push(format!("{scene:?}: {e}"));
                         }

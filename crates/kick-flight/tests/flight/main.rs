@@ -1,6 +1,6 @@
 //! kick-flight's tests, one binary (the allocation count keeps its own, for its global allocator).
 
+mod aim;
 mod closed_forms;
 mod robustness;
 mod validation;
-mod aim;

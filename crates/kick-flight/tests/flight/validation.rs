@@ -4,8 +4,7 @@
 use kick_core::measurements::{Measurements, MEASUREMENTS_FILE};
 use kick_flight::coefficients::DragCrisis;
 use kick_flight::validation::{
-    ball_comparisons, drag_crisis_comparisons, drag_crisis_model, free_kick, free_kicks, keys, FREE_KICK_DISTANCE,
-    FREE_KICK_ELEVATION,
+    ball_comparisons, drag_crisis_comparisons, drag_crisis_model, free_kick, free_kicks, keys, FREE_KICK_DISTANCE, FREE_KICK_ELEVATION,
 };
 use std::path::Path;
 

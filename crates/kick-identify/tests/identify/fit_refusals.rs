@@ -72,7 +72,13 @@ fn stop_reasons_print_as_words() {
         assert_eq!(stop.converged(), words.starts_with("converged"));
     }
     let truth = Accurate::default().solve(&Scenario::baseline().with(Parameter::Damping, 150.0).unwrap()).unwrap();
-    let p = problem(&[Parameter::Damping], vec![exit_speed(truth.v_ball_out, 0.01), ScalarObservation { observable: Observable::ContactTime, value: truth.contact_time, sigma: 1e-5 }]);
+    let p = problem(
+        &[Parameter::Damping],
+        vec![
+            exit_speed(truth.v_ball_out, 0.01),
+            ScalarObservation { observable: Observable::ContactTime, value: truth.contact_time, sigma: 1e-5 },
+        ],
+    );
     let report = fit(&p, &FitOptions::default()).unwrap();
     assert_eq!(report.termination, report.stop.to_string());
     assert!(report.termination.starts_with("converged: "), "{}", report.termination);
@@ -119,7 +125,8 @@ fn a_cancel_after_n_evaluations_stops_with_cancelled() {
     use kick_identify::fit::{fit_with_cancel, misfit};
     use std::cell::Cell;
     let solver = Accurate::default();
-    let truth = solver.solve(&Scenario::baseline().with(Parameter::FootMass, 1.5).unwrap().with(Parameter::Stiffness, 2e6).unwrap()).unwrap();
+    let truth =
+        solver.solve(&Scenario::baseline().with(Parameter::FootMass, 1.5).unwrap().with(Parameter::Stiffness, 2e6).unwrap()).unwrap();
     let observations = vec![
         exit_speed(truth.v_ball_out, 0.01),
         ScalarObservation { observable: Observable::ContactTime, value: truth.contact_time, sigma: 1e-6 },

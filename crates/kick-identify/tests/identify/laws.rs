@@ -3,9 +3,9 @@
 //! Kelvin–Voigt restitution against its exact closed form, and each law's
 //! simulated restitution against its target.
 
+use kick_compliant::Accurate;
 use kick_core::laws::{AnyLaw, HysteresisContact, HysteresisModel, KelvinVoigt, LawKind};
 use kick_core::{Parameter, Scenario};
-use kick_compliant::Accurate;
 use kick_identify::laws::compare;
 
 /// Small-damping energy balance: 1 − e² = ΔE/(½ μ V0²) = (4/3) χ V0 + O((χ V0)²)

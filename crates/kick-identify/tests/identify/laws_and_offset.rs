@@ -138,8 +138,7 @@ fn parameters_that_do_not_act_are_refused() {
     // e = 1 is a valid law (no damping) but the edge of the logit coordinate.
     let elastic = law(LawKind::HuntCrossleyExact, 1.0);
     let data = scalars(&options.solver, &elastic, &[(Observable::VBallOut, 0.01)], None).unwrap();
-    let e = fit(&FitProblem { start: elastic.into(), free: vec![FitParameter::Restitution], observations: data }, &options)
-        .unwrap_err();
+    let e = fit(&FitProblem { start: elastic.into(), free: vec![FitParameter::Restitution], observations: data }, &options).unwrap_err();
     assert!(matches!(e, IdentifyError::StartOutOfRange { name: "restitution", value, .. } if value == 1.0), "{e}");
 }
 
@@ -164,10 +163,7 @@ fn specification_keys_round_trip() {
     // The law's χ is Lankarani–Nikravesh's formula at the baseline's V0 = 22 m/s.
     let expected = law(LawKind::LankaraniNikravesh, 0.7).with(Parameter::Stiffness, 3e5).unwrap();
     assert_eq!(start.scenario.contact_law(), expected.contact_law());
-    assert_eq!(
-        spec.free_parameters().unwrap(),
-        vec![Parameter::Stiffness.into(), FitParameter::Restitution, FitParameter::TimeOffset]
-    );
+    assert_eq!(spec.free_parameters().unwrap(), vec![Parameter::Stiffness.into(), FitParameter::Restitution, FitParameter::TimeOffset]);
 
     let twice = text.replace("[scenario]\n", "[scenario]\nlaw = \"flores\"\n");
     let e = FitSpec::parse(&twice, "d.toml").unwrap().start("d.toml").unwrap_err();

@@ -5,8 +5,7 @@ use kick_core::measurements::{Measurements, MEASUREMENTS_FILE};
 use kick_core::{LawKind, Parameter, Scenario};
 use kick_identify::data::{Observable, Observations, ScalarObservation};
 use kick_identify::validation::{
-    contact_comparisons, contact_model, contact_targets, implied_parameter_study, implied_parameters, keys,
-    ValidationError,
+    contact_comparisons, contact_model, contact_targets, implied_parameter_study, implied_parameters, keys, ValidationError,
 };
 use kick_identify::FitParameter;
 use std::path::Path;
@@ -127,11 +126,7 @@ fn stated_sigma_matches_the_chi_square_profile() {
     let best = implied_parameters(&targets, start.into(), &[K, MF]).unwrap();
     let k = best.estimate(K).unwrap();
     let mf = best.estimate(MF).unwrap();
-    let held = start
-        .with(Parameter::Stiffness, k.value * (k.sigma / k.value).exp())
-        .unwrap()
-        .with(Parameter::FootMass, mf.value)
-        .unwrap();
+    let held = start.with(Parameter::Stiffness, k.value * (k.sigma / k.value).exp()).unwrap().with(Parameter::FootMass, mf.value).unwrap();
     let profile = implied_parameters(&targets, held.into(), &[MF]).unwrap();
     let rise = profile.chi_square - best.chi_square;
     assert!((0.8..1.2).contains(&rise), "Δχ² = {rise}");

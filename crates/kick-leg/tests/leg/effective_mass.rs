@@ -18,11 +18,7 @@ fn rel(a: f64, b: f64) -> f64 {
 fn rod(mass: f64, length: f64) -> Body {
     // Uniform thin rod along +x from the origin: I_cm = m L²/12 about y and z.
     let i = mass * length * length / 12.0;
-    Body {
-        mass,
-        centre: Vector3::new(length / 2.0, 0.0, 0.0),
-        inertia: Matrix3::from_diagonal(&Vector3::new(1e-3 * i, i, i)),
-    }
+    Body { mass, centre: Vector3::new(length / 2.0, 0.0, 0.0), inertia: Matrix3::from_diagonal(&Vector3::new(1e-3 * i, i, i)) }
 }
 
 #[test]
@@ -30,10 +26,7 @@ fn single_segment_pinned_at_one_end() {
     let (m, l) = (4.0, 0.8);
     let chain = Chain {
         bodies: vec![rod(m, l)],
-        joints: vec![Joint {
-            motion: Motion::Revolute { axis: Vector3::z(), point: Vector3::zeros() },
-            first_body: 0,
-        }],
+        joints: vec![Joint { motion: Motion::Revolute { axis: Vector3::z(), point: Vector3::zeros() }, first_body: 0 }],
     };
     let pivot_inertia = m * l * l / 3.0; // I_cm + m (L/2)²
     for r in [0.2, 0.5, 0.8] {
@@ -67,8 +60,12 @@ fn free_rigid_body_planar_and_spatial() {
     let spatial = Chain {
         bodies: vec![body],
         joints: vec![
-            prismatic(Vector3::x()), prismatic(Vector3::y()), prismatic(Vector3::z()),
-            revolute(Vector3::x()), revolute(Vector3::y()), revolute(Vector3::z()),
+            prismatic(Vector3::x()),
+            prismatic(Vector3::y()),
+            prismatic(Vector3::z()),
+            revolute(Vector3::x()),
+            revolute(Vector3::y()),
+            revolute(Vector3::z()),
         ],
     };
     for n in [Vector3::x(), Vector3::new(0.3, -0.8, 0.52).normalize()] {
@@ -80,14 +77,8 @@ fn free_rigid_body_planar_and_spatial() {
     }
     // Planar (x, y, rotation about z through a point away from the body: the
     // pivot's position must not matter for a free body): 1/m + r⊥²/I_zz.
-    let mut planar = Chain {
-        bodies: vec![body],
-        joints: vec![prismatic(Vector3::x()), prismatic(Vector3::y())],
-    };
-    planar.joints.push(Joint {
-        motion: Motion::Revolute { axis: Vector3::z(), point: Vector3::new(-1.0, 2.0, 0.0) },
-        first_body: 0,
-    });
+    let mut planar = Chain { bodies: vec![body], joints: vec![prismatic(Vector3::x()), prismatic(Vector3::y())] };
+    planar.joints.push(Joint { motion: Motion::Revolute { axis: Vector3::z(), point: Vector3::new(-1.0, 2.0, 0.0) }, first_body: 0 });
     let n = Vector3::new(0.6, 0.8, 0.0);
     let r_perp = r.x * n.y - r.y * n.x;
     let expected = 1.0 / (1.0 / body.mass + r_perp * r_perp / body.inertia[(2, 2)]);
@@ -238,9 +229,7 @@ fn elastic_ankle_spans_free_to_locked_monotonically() {
     let leg = Leg::de_leva(75.0, 1.80).unwrap();
     let pose = Pose::default();
     let impact = Impact::default();
-    let at = |k: f64| {
-        leg.effective_mass(&pose, &impact, AnkleJoint::Elastic { stiffness: k, contact_time: 5e-3 }).unwrap()
-    };
+    let at = |k: f64| leg.effective_mass(&pose, &impact, AnkleJoint::Elastic { stiffness: k, contact_time: 5e-3 }).unwrap();
     let limits = at(0.0);
     assert_eq!(limits.effective_mass, limits.free_ankle);
     // κ = 1e12 N m/rad against an inertial stiffness I_a (π/t_c)² of order 1e3:

@@ -112,12 +112,20 @@ fn the_coupled_run_meets_the_locked_limit_at_the_switch() {
             let above = coupled_ankle_contact(&leg, &pose, &impact, switch, &base, ELASTIC_STEPS).unwrap();
             assert!(!below.locked_limit && above.locked_limit);
             let case = format!("knee {knee}, ankle {ankle}, κ = {switch:.3e}");
-            assert!((below.v_ball_out - above.v_ball_out).abs() < 1e-8 * above.v_ball_out, "{case}: {} vs {}", below.v_ball_out, above.v_ball_out);
+            assert!(
+                (below.v_ball_out - above.v_ball_out).abs() < 1e-8 * above.v_ball_out,
+                "{case}: {} vs {}",
+                below.v_ball_out,
+                above.v_ball_out
+            );
             assert!((below.v_contact_out - above.v_contact_out).abs() < 1e-8 * above.v_ball_out, "{case}");
             assert!((below.contact_time - above.contact_time).abs() < 1e-8 * above.contact_time, "{case}");
             // The quasi-static deflection is the coupled run's up to its
             // dynamic overshoot (at most 3x for a single-humped force).
-            assert!(below.max_ankle_deflection <= 3.0 * above.max_ankle_deflection && below.max_ankle_deflection >= above.max_ankle_deflection, "{case}");
+            assert!(
+                below.max_ankle_deflection <= 3.0 * above.max_ankle_deflection && below.max_ankle_deflection >= above.max_ankle_deflection,
+                "{case}"
+            );
         }
     }
 }

@@ -66,21 +66,15 @@ fn corner(position: &SeriesLabelPosition, size: (i32, i32), plot: (i32, i32)) ->
 pub fn covered(curves: &[Vec<(i32, i32)>], corner: (i32, i32), size: (i32, i32)) -> usize {
     let (x0, y0) = (corner.0 - CLEARANCE, corner.1 - CLEARANCE);
     let (x1, y1) = (corner.0 + size.0 + CLEARANCE, corner.1 + size.1 + CLEARANCE);
-    let inside =
-        |x: f64, y: f64| x >= x0 as f64 && x <= x1 as f64 && y >= y0 as f64 && y <= y1 as f64;
+    let inside = |x: f64, y: f64| x >= x0 as f64 && x <= x1 as f64 && y >= y0 as f64 && y <= y1 as f64;
     let mut count = 0;
     for curve in curves {
         if let [only] = curve.as_slice() {
             count += usize::from(inside(only.0 as f64, only.1 as f64));
         }
         for pair in curve.windows(2) {
-            let (a, b) = (
-                (pair[0].0 as f64, pair[0].1 as f64),
-                (pair[1].0 as f64, pair[1].1 as f64),
-            );
-            let steps = ((b.0 - a.0).abs().max((b.1 - a.1).abs()) / 2.0)
-                .ceil()
-                .clamp(1.0, 1e5) as usize;
+            let (a, b) = ((pair[0].0 as f64, pair[0].1 as f64), (pair[1].0 as f64, pair[1].1 as f64));
+            let steps = ((b.0 - a.0).abs().max((b.1 - a.1).abs()) / 2.0).ceil().clamp(1.0, 1e5) as usize;
             for k in 0..=steps {
                 let t = k as f64 / steps as f64;
                 count += usize::from(inside(a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)));
@@ -119,30 +113,16 @@ mod tests {
         // UpperLeft is free.
         let curves = vec![line((0, 399), (599, 0))];
         let size = (150, 60);
-        assert!(
-            covered(
-                &curves,
-                corner(&SeriesLabelPosition::UpperRight, size, plot),
-                size
-            ) > 0
-        );
-        assert_eq!(
-            free_position(&curves, size, plot, &SeriesLabelPosition::UpperRight),
-            Some((EDGE, EDGE))
-        );
+        assert!(covered(&curves, corner(&SeriesLabelPosition::UpperRight, size, plot), size) > 0);
+        assert_eq!(free_position(&curves, size, plot, &SeriesLabelPosition::UpperRight), Some((EDGE, EDGE)));
     }
 
     #[test]
     fn a_curve_everywhere_leaves_no_free_position() {
         let plot = (600, 400);
         // A zigzag every 20 px fills the plot.
-        let zigzag: Vec<(i32, i32)> = (0..=30)
-            .map(|k| (k * 20, if k % 2 == 0 { 0 } else { 399 }))
-            .collect();
-        assert_eq!(
-            free_position(&[zigzag], (150, 60), plot, &SeriesLabelPosition::UpperRight),
-            None
-        );
+        let zigzag: Vec<(i32, i32)> = (0..=30).map(|k| (k * 20, if k % 2 == 0 { 0 } else { 399 })).collect();
+        assert_eq!(free_position(&[zigzag], (150, 60), plot, &SeriesLabelPosition::UpperRight), None);
     }
 
     #[test]

@@ -11,9 +11,7 @@
 use ab_glyph::{Font, FontRef, ScaleFont};
 use plotters::prelude::*;
 use plotters_backend::text_anchor::{HPos, VPos};
-use plotters_backend::{
-    BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingErrorKind,
-};
+use plotters_backend::{BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingErrorKind};
 
 /// A bitmap backend whose text is drawn with correct glyph spacing.
 pub struct TextBackend<'a> {
@@ -26,14 +24,8 @@ type BitmapError<'a> = <BitMapBackend<'a> as DrawingBackend>::ErrorType;
 
 impl<'a> TextBackend<'a> {
     /// `font`: the one font of every figure (the styles' family names are not consulted).
-    pub fn new(
-        inner: BitMapBackend<'a>,
-        font: &'static [u8],
-    ) -> std::result::Result<Self, ab_glyph::InvalidFont> {
-        Ok(TextBackend {
-            inner,
-            font: FontRef::try_from_slice(font)?,
-        })
+    pub fn new(inner: BitMapBackend<'a>, font: &'static [u8]) -> std::result::Result<Self, ab_glyph::InvalidFont> {
+        Ok(TextBackend { inner, font: FontRef::try_from_slice(font)? })
     }
 }
 
@@ -78,19 +70,10 @@ impl<'a> DrawingBackend for TextBackend<'a> {
     fn present(&mut self) -> Result<(), Self::ErrorType> {
         self.inner.present()
     }
-    fn draw_pixel(
-        &mut self,
-        point: BackendCoord,
-        color: BackendColor,
-    ) -> Result<(), Self::ErrorType> {
+    fn draw_pixel(&mut self, point: BackendCoord, color: BackendColor) -> Result<(), Self::ErrorType> {
         self.inner.draw_pixel(point, color)
     }
-    fn draw_line<S: BackendStyle>(
-        &mut self,
-        from: BackendCoord,
-        to: BackendCoord,
-        style: &S,
-    ) -> Result<(), Self::ErrorType> {
+    fn draw_line<S: BackendStyle>(&mut self, from: BackendCoord, to: BackendCoord, style: &S) -> Result<(), Self::ErrorType> {
         self.inner.draw_line(from, to, style)
     }
     fn draw_rect<S: BackendStyle>(
@@ -102,53 +85,27 @@ impl<'a> DrawingBackend for TextBackend<'a> {
     ) -> Result<(), Self::ErrorType> {
         self.inner.draw_rect(upper_left, bottom_right, style, fill)
     }
-    fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
-        &mut self,
-        path: I,
-        style: &S,
-    ) -> Result<(), Self::ErrorType> {
+    fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(&mut self, path: I, style: &S) -> Result<(), Self::ErrorType> {
         self.inner.draw_path(path, style)
     }
-    fn draw_circle<S: BackendStyle>(
-        &mut self,
-        center: BackendCoord,
-        radius: u32,
-        style: &S,
-        fill: bool,
-    ) -> Result<(), Self::ErrorType> {
+    fn draw_circle<S: BackendStyle>(&mut self, center: BackendCoord, radius: u32, style: &S, fill: bool) -> Result<(), Self::ErrorType> {
         self.inner.draw_circle(center, radius, style, fill)
     }
-    fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
-        &mut self,
-        vert: I,
-        style: &S,
-    ) -> Result<(), Self::ErrorType> {
+    fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(&mut self, vert: I, style: &S) -> Result<(), Self::ErrorType> {
         self.inner.fill_polygon(vert, style)
     }
-    fn blit_bitmap(
-        &mut self,
-        pos: BackendCoord,
-        size: (u32, u32),
-        src: &[u8],
-    ) -> Result<(), Self::ErrorType> {
+    fn blit_bitmap(&mut self, pos: BackendCoord, size: (u32, u32), src: &[u8]) -> Result<(), Self::ErrorType> {
         self.inner.blit_bitmap(pos, size, src)
     }
 
     /// plotters' own anchoring and rotation (its default `draw_text`), with
     /// the glyphs from [`rasterize`].
-    fn draw_text<T: BackendTextStyle>(
-        &mut self,
-        text: &str,
-        style: &T,
-        pos: BackendCoord,
-    ) -> Result<(), Self::ErrorType> {
+    fn draw_text<T: BackendTextStyle>(&mut self, text: &str, style: &T, pos: BackendCoord) -> Result<(), Self::ErrorType> {
         let color = style.color();
         if color.alpha == 0.0 {
             return Ok(());
         }
-        let ((min_x, min_y), (max_x, max_y)) = style
-            .layout_box(text)
-            .map_err(|e| DrawingErrorKind::FontError(Box::new(e)))?;
+        let ((min_x, min_y), (max_x, max_y)) = style.layout_box(text).map_err(|e| DrawingErrorKind::FontError(Box::new(e)))?;
         let (width, height) = (max_x - min_x, max_y - min_y);
         let dx = match style.anchor().h_pos {
             HPos::Left => 0,
@@ -167,13 +124,7 @@ impl<'a> DrawingBackend for TextBackend<'a> {
             let (x, y) = (pos.0 + x, pos.1 + y);
             if x >= 0 && x < w as i32 && y >= 0 && y < h as i32 {
                 let alpha = color.alpha * f64::from(coverage.min(1.0));
-                self.inner.draw_pixel(
-                    (x, y),
-                    BackendColor {
-                        alpha,
-                        rgb: color.rgb,
-                    },
-                )?;
+                self.inner.draw_pixel((x, y), BackendColor { alpha, rgb: color.rgb })?;
             }
         }
         Ok(())
@@ -205,12 +156,7 @@ mod tests {
     /// of `word` in `pixels` and where the font's metrics put it: the sum of
     /// the advances before it plus its own left side bearing, both read from
     /// the font's unscaled tables.
-    fn worst_edge(
-        font: &FontRef<'static>,
-        size: f32,
-        word: &str,
-        pixels: &[(i32, i32, f32)],
-    ) -> f32 {
+    fn worst_edge(font: &FontRef<'static>, size: f32, word: &str, pixels: &[(i32, i32, f32)]) -> f32 {
         let runs = ink_runs(pixels);
         assert_eq!(runs.len(), word.chars().count(), "{runs:?}");
         let scale = font.as_scaled(size).h_scale_factor();
@@ -237,11 +183,8 @@ mod tests {
 
         crate::figures::register_font().unwrap();
         let mut theirs = Vec::new();
-        let desc = plotters::style::FontDesc::new(
-            plotters::style::FontFamily::Name(crate::figures::FAMILY),
-            size as f64,
-            FontStyle::Normal,
-        );
+        let desc =
+            plotters::style::FontDesc::new(plotters::style::FontFamily::Name(crate::figures::FAMILY), size as f64, FontStyle::Normal);
         desc.draw(word, (0, 0), |x, y, coverage| {
             if coverage > 0.0 {
                 theirs.push((x, y, coverage));
@@ -251,9 +194,6 @@ mod tests {
         .unwrap()
         .unwrap();
         let plotters_off = worst_edge(&font, size, word, &theirs);
-        assert!(
-            plotters_off > 2.0,
-            "plotters' own text is now {plotters_off} px off: drop TextBackend"
-        );
+        assert!(plotters_off > 2.0, "plotters' own text is now {plotters_off} px off: drop TextBackend");
     }
 }

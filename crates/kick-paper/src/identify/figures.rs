@@ -2,9 +2,9 @@
 //! plotting helpers from the HDF5 files those commands write (never from
 //! the data in memory).
 
+use crate::figures::{save_grid, Panel, Series, COLORS};
 use crate::identify::files::{read_identifiability, LawsData, SOURCES};
 use kick_core::laws::LawKind;
-use crate::figures::{save_grid, Panel, Series, COLORS};
 use plotters::prelude::SeriesLabelPosition;
 use std::path::{Path, PathBuf};
 

@@ -48,8 +48,7 @@ pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, String> {
     if !(3..=101).contains(&points) || !(3..=201).contains(&map_points) {
         return Err(format!("--points must be in 3..=101 and --map-points in 3..=201 (got {points}, {map_points})"));
     }
-    let study = identifiability_study(&Scenario::baseline(), spread, points, map_points, 80, seed, &FitOptions::default())
-        .map_err(text)?;
+    let study = identifiability_study(&Scenario::baseline(), spread, points, map_points, 80, seed, &FitOptions::default()).map_err(text)?;
     let mut written = Vec::new();
     if let Some(dir) = out {
         std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
@@ -102,8 +101,14 @@ fn write_table2(path: &Path, scenarios: &Path, fits: &[Table2Fit]) -> Result<Pat
         });
     }
     let text = crate::table2::read_text(scenarios)?;
-    let provenance = Provenance::now("table2_fit", &scenarios.display().to_string(), &format!("# kick fit table2 --out
-{text}"));
+    let provenance = Provenance::now(
+        "table2_fit",
+        &scenarios.display().to_string(),
+        &format!(
+            "# kick fit table2 --out
+{text}"
+        ),
+    );
     files::write_table2_fits(path, &provenance, fits, &observations, &file_values, &seed_fits)
 }
 
@@ -148,14 +153,25 @@ pub fn table2(write: Option<&Path>, out: Option<&Path>, scenarios: &Path) -> Res
 impl Printable for Table2Fits {
     fn text(&self) -> String {
         let mut w = String::new();
-        let _ = writeln!(w, "Table 2 by least squares (accurate; v_b+, peak force, contact time, compression; σ = half the last printed digit)");
-        let _ = writeln!(w, "{:<24} {:<12} {:>12} {:>14} {:<6} {:>8}  residuals/σ", "row", "parameter", "estimate", "standard error", "unit", "chi2");
+        let _ = writeln!(
+            w,
+            "Table 2 by least squares (accurate; v_b+, peak force, contact time, compression; σ = half the last printed digit)"
+        );
+        let _ = writeln!(
+            w,
+            "{:<24} {:<12} {:>12} {:>14} {:<6} {:>8}  residuals/σ",
+            "row", "parameter", "estimate", "standard error", "unit", "chi2"
+        );
         for f in &self.fits {
-            let (estimate, residuals): (Option<(&kick_identify::fit::Estimate, f64)>, Vec<String>) = match (&f.report, &f.baseline_residuals) {
-                (Some(r), _) => (r.estimates.first().map(|e| (e, r.chi_square)), r.residuals.iter().map(|x| format!("{} {}", x.label, sig(x.weighted))).collect()),
-                (None, Some(res)) => (None, res.iter().map(|(o, w)| format!("{} {}", o.name(), sig(*w))).collect()),
-                _ => continue,
-            };
+            let (estimate, residuals): (Option<(&kick_identify::fit::Estimate, f64)>, Vec<String>) =
+                match (&f.report, &f.baseline_residuals) {
+                    (Some(r), _) => (
+                        r.estimates.first().map(|e| (e, r.chi_square)),
+                        r.residuals.iter().map(|x| format!("{} {}", x.label, sig(x.weighted))).collect(),
+                    ),
+                    (None, Some(res)) => (None, res.iter().map(|(o, w)| format!("{} {}", o.name(), sig(*w))).collect()),
+                    _ => continue,
+                };
             let columns = match estimate {
                 Some((e, chi_square)) => format!(
                     "{:<12} {:>12} {:>14} {:<6} {:>8}",
@@ -238,7 +254,11 @@ impl Printable for DataFit {
 pub fn report_text(report: &FitReport, truth: &[(FitParameter, f64)]) -> String {
     let mut w = String::new();
     let _ = writeln!(w, "contact law: {}", report.law.name());
-    let _ = writeln!(w, "{:<14} {:>12} {:>14} {:<8} {:>12} {:>14}", "parameter", "estimate", "standard error", "unit", "start", "(est-truth)/σ");
+    let _ = writeln!(
+        w,
+        "{:<14} {:>12} {:>14} {:<8} {:>12} {:>14}",
+        "parameter", "estimate", "standard error", "unit", "start", "(est-truth)/σ"
+    );
     for e in &report.estimates {
         let pull = truth
             .iter()

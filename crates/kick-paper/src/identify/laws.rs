@@ -50,9 +50,7 @@ fn comparisons(args: &LawsSettings) -> Result<Vec<LawComparison>, String> {
     file.scenarios()
         .map_err(|e| e.to_string())?
         .iter()
-        .map(|(name, s)| {
-            compare(name, s, &solver, s.elastic_contact_time() / args.samples as f64).map_err(|e| format!("{name}: {e}"))
-        })
+        .map(|(name, s)| compare(name, s, &solver, s.elastic_contact_time() / args.samples as f64).map_err(|e| format!("{name}: {e}")))
         .collect()
 }
 
@@ -63,8 +61,12 @@ pub const FORMULA_TARGETS: [f64; 7] = [0.99, 0.95, 0.9, 0.8, 0.7, 0.5, 0.3];
 fn write(args: &LawsSettings, all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let scenarios = crate::table2::read_text(&args.scenarios)?;
-    let text = format!("# kick laws --scenarios {} --samples {}
-{scenarios}", args.scenarios.display(), args.samples);
+    let text = format!(
+        "# kick laws --scenarios {} --samples {}
+{scenarios}",
+        args.scenarios.display(),
+        args.samples
+    );
     let provenance = Provenance::now("laws", &args.scenarios.display().to_string(), &text);
     let formulas = restitution_table(&Scenario::baseline(), &FORMULA_TARGETS, &Accurate::default()).map_err(|e| e.to_string())?;
     let h5 = crate::identify::files::write_laws(&dir.join("laws.h5"), &provenance, all, args.samples, &FORMULA_TARGETS, &formulas)?;
@@ -78,7 +80,11 @@ impl Printable for LawsReport {
         let mut w = String::new();
         for c in &self.comparisons {
             let _ = writeln!(w, "{} (target e = paper's law's e = {})", c.name, sig(c.restitution));
-            let _ = writeln!(w, "  {:<20} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}", "law", "e", "v_b+ m/s", "F(0+) N", "peak N", "t_c ms", "δmax mm");
+            let _ = writeln!(
+                w,
+                "  {:<20} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}",
+                "law", "e", "v_b+ m/s", "F(0+) N", "peak N", "t_c ms", "δmax mm"
+            );
             for r in &c.runs {
                 let o = &r.outcome;
                 let _ = writeln!(

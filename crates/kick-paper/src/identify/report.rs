@@ -4,11 +4,9 @@
 //! prose around the numbers states what they show only through comparisons
 //! made here on the numbers read.
 
-use crate::identify::files::{
-    read_fit, read_identifiability, read_table2_fits, EstimateData, FitData, LawsData,
-};
-use kick_core::laws::LawKind;
+use crate::identify::files::{read_fit, read_identifiability, read_table2_fits, EstimateData, FitData, LawsData};
 use crate::ResultFile;
+use kick_core::laws::LawKind;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -125,9 +123,7 @@ pub fn laws(file: &Path, figures: &str) -> Result<String, String> {
         w.push('\n');
     }
     let formula = |law: LawKind| d.formulas.iter().find(|(l, _)| *l == law).map(|(_, v)| v.as_slice()).unwrap_or(&[]);
-    let misses = |law: LawKind| -> f64 {
-        formula(law).iter().zip(&d.formula_targets).map(|(e, t)| (e - t).abs()).fold(0.0, f64::max)
-    };
+    let misses = |law: LawKind| -> f64 { formula(law).iter().zip(&d.formula_targets).map(|(e, t)| (e - t).abs()).fold(0.0, f64::max) };
     let over = |law: LawKind| formula(law).iter().zip(&d.formula_targets).all(|(e, t)| e > t);
     let low = d.formula_targets.len().saturating_sub(1);
     let at_low = |law: LawKind| formula(law).get(low).copied().unwrap_or(f64::NAN);
@@ -257,7 +253,9 @@ to 1e-9 relative (exit speeds, contact time, peak force, compression, dissipated
 path converges to the accurate path at first order with Hunt–Crossley and Kelvin–Voigt.\n";
 
 fn estimate_table(w: &mut String, fit: &FitData) {
-    w.push_str("| parameter | truth | start | estimate | standard uncertainty | (estimate − truth)/σ |\n| --- | --- | --- | --- | --- | --- |\n");
+    w.push_str(
+        "| parameter | truth | start | estimate | standard uncertainty | (estimate − truth)/σ |\n| --- | --- | --- | --- | --- | --- |\n",
+    );
     for e in &fit.estimates {
         let EstimateData { name, unit, value, start, standard_uncertainty, truth } = e;
         let _ = writeln!(
@@ -353,7 +351,13 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, String> {
     );
     estimate_table(w, &synthetic);
     let corr = |a: &str, b: &str| synthetic.correlation(a, b).unwrap_or(f64::NAN);
-    let others = [corr("foot_mass", "stiffness"), corr("foot_mass", "damping"), corr("stiffness", "damping"), corr("damping", "exponent"), corr("foot_mass", "exponent")];
+    let others = [
+        corr("foot_mass", "stiffness"),
+        corr("foot_mass", "damping"),
+        corr("stiffness", "damping"),
+        corr("damping", "exponent"),
+        corr("foot_mass", "exponent"),
+    ];
     let (lo, hi) = others.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &c| (a.min(c.abs()), b.max(c.abs())));
     let _ = writeln!(
         w,
@@ -488,7 +492,8 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, String> {
             }
             _ => {
                 let residuals: Vec<String> = row.baseline_residuals.iter().map(|(o, r)| format!("{o} {}", signed(*r, 2))).collect();
-                let _ = writeln!(w, "| {} | (Table 1, nothing to fit) | weighted residuals: {} | | | | | |", row.name, residuals.join(", "));
+                let _ =
+                    writeln!(w, "| {} | (Table 1, nothing to fit) | weighted residuals: {} | | | | | |", row.name, residuals.join(", "));
             }
         }
     }

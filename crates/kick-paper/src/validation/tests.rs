@@ -168,7 +168,11 @@ fn zero_friction_spin_is_zero_to_rounding() {
 fn patch_rows_are_the_kicks_they_name() {
     let (v, _, _) = validation();
     let row = |quantity: &str| {
-        v.curve_kicks.rows.iter().find(|r| r.model.contains("patch") && r.comparison.quantity == quantity).unwrap_or_else(|| panic!("no patch row {quantity}"))
+        v.curve_kicks
+            .rows
+            .iter()
+            .find(|r| r.model.contains("patch") && r.comparison.quantity == quantity)
+            .unwrap_or_else(|| panic!("no patch row {quantity}"))
     };
     let shell = Scenario::baseline().with_shell(ShellBall::default_with_radius(DEFAULT_BALL_RADIUS).unwrap());
     let solve = |e: f64, mu: f64| {

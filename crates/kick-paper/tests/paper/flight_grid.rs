@@ -5,10 +5,10 @@ use kick_3d::{Accurate3d, KickSpec};
 use kick_core::parameters::{SetParameter, Value};
 use kick_core::{Parameter, Scenario, Solver};
 use kick_flight::FlightSpec;
-use kick_study::experiment::parse;
-use kick_study::flight::{after_1d, after_3d, flight_set_name};
 use kick_flight::OUTCOME_COLUMNS;
 use kick_store::h5::SweepData;
+use kick_study::experiment::parse;
+use kick_study::flight::{after_1d, after_3d, flight_set_name};
 use std::path::Path;
 
 fn scratch(name: &str) -> std::path::PathBuf {
@@ -167,10 +167,11 @@ fn free_kicks_and_the_generated_3d_and_flight_pages() {
     }
     let flight_page = std::fs::read_to_string(dir.join("paper").join("flight.md")).unwrap();
     assert!(flight_page.contains("## Aiming a free kick (`kick aim`)") && flight_page.contains("flight_aim.png"));
-    let figures: Vec<_> = ["flight_free_kick.png", "flight_deflection.png", "flight_aim.png", "3d_offset_friction.png", "3d_offset_friction_tradeoff.png"]
-        .iter()
-        .map(|f| dir.join("figures").join(f))
-        .collect();
+    let figures: Vec<_> =
+        ["flight_free_kick.png", "flight_deflection.png", "flight_aim.png", "3d_offset_friction.png", "3d_offset_friction_tradeoff.png"]
+            .iter()
+            .map(|f| dir.join("figures").join(f))
+            .collect();
     assert!(figures.iter().all(|f| f.exists()), "{figures:?}");
     for page in ["3d.md", "flight.md"] {
         let text = std::fs::read_to_string(dir.join("paper").join(page)).unwrap();

@@ -12,15 +12,15 @@ pub fn scratch(name: &str) -> PathBuf {
     dir
 }
 
+mod compress;
+mod flight_grid;
+mod histories;
+mod identify;
 mod law;
+mod reproduce_check;
 mod result_file;
 mod runner;
-mod histories;
-mod reproduce_check;
+mod settings;
 mod shard;
 mod sweep3d;
-mod flight_grid;
-mod settings;
 mod text;
-mod compress;
-mod identify;

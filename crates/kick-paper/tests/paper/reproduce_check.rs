@@ -1,7 +1,6 @@
 //! `kick reproduce --check` on a small experiment: a second run writes the
 //! same bytes, and a changed value, page or stale file is named.
 
-
 use kick_paper::reproduce::{check, list, reproduce, ReproduceSettings, Steps, STEP_NAMES};
 use std::path::{Path, PathBuf};
 

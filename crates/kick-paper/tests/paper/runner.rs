@@ -1,11 +1,11 @@
 //! The runner end to end: experiment files in, HDF5 files out, read back with
 //! the hdf5 crate and compared with solves that do not go through the runner.
 
+use crate::scratch;
 use kick_compliant::{closed, Accurate, SeedRk4};
 use kick_core::{Parameter, Scenario, Solver, OBSERVABLES};
-use kick_study::experiment::{self, linear_range, log_range};
 use kick_store::h5::{read_f64_attr, read_str_attr, CHUNK_ROWS};
-use crate::scratch;
+use kick_study::experiment::{self, linear_range, log_range};
 use std::path::{Path, PathBuf};
 
 fn write_experiment(dir: &Path, name: &str, text: &str) -> PathBuf {
@@ -98,9 +98,15 @@ fn result_file_reads_back_against_independent_solves() {
     let mut expected_rows = Vec::new();
     for &k in &stiffness {
         for c in [0.0, 120.0] {
-            expected_rows.push(Scenario::baseline().with(Parameter::FootMass, 2.5).unwrap()
-                .with(Parameter::Stiffness, k).unwrap()
-                .with(Parameter::Damping, c).unwrap());
+            expected_rows.push(
+                Scenario::baseline()
+                    .with(Parameter::FootMass, 2.5)
+                    .unwrap()
+                    .with(Parameter::Stiffness, k)
+                    .unwrap()
+                    .with(Parameter::Damping, c)
+                    .unwrap(),
+            );
         }
     }
     for p in Parameter::ALL {
@@ -169,7 +175,8 @@ log = {{ from = 0.5, to = 20.0, count = {rows} }}
         }
         if name.starts_with("/grid/") {
             // The axes' names and values (not one per row).
-            let text = |d: &hdf5::Dataset| d.read_raw::<hdf5::types::VarLenUnicode>().map(|v| v.iter().map(|s| s.to_string()).collect::<Vec<_>>());
+            let text =
+                |d: &hdf5::Dataset| d.read_raw::<hdf5::types::VarLenUnicode>().map(|v| v.iter().map(|s| s.to_string()).collect::<Vec<_>>());
             let bits = |d: &hdf5::Dataset| d.read_raw::<f64>().map(|v| v.iter().map(|f| f.to_bits()).collect::<Vec<_>>());
             match name.as_str() {
                 "/grid/axes" => assert_eq!(text(x).unwrap(), text(y).unwrap()),
@@ -210,9 +217,7 @@ values = [0.0, 1e6, 500.0]
     let index: Vec<u64> = file.dataset("failures/index").unwrap().read_raw().unwrap();
     assert_eq!(index, vec![1]);
     let messages: Vec<hdf5::types::VarLenUnicode> = file.dataset("failures/message").unwrap().read_raw().unwrap();
-    let direct = Accurate::default()
-        .solve(&Scenario::baseline().with(Parameter::DriveForce, 1e6).unwrap())
-        .unwrap_err();
+    let direct = Accurate::default().solve(&Scenario::baseline().with(Parameter::DriveForce, 1e6).unwrap()).unwrap_err();
     // The status is the solver's own (kick_core::Status), not a bare "failed".
     assert_eq!(status, vec![0, direct.status().code(), 0]);
     assert_ne!(direct.status(), kick_core::Status::Separated);
@@ -295,7 +300,9 @@ fn table2_file_runs_both_solvers_and_the_report_explains_the_onset_peak() {
     let dir = scratch("report");
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../experiments");
     let out = dir.join("results");
-    for name in ["table2", "figure1", "figure2", "figure3", "figure3_histories", "figure4", "figure4_histories", "figure5", "figure6", "figure7"] {
+    for name in
+        ["table2", "figure1", "figure2", "figure3", "figure3_histories", "figure4", "figure4_histories", "figure5", "figure6", "figure7"]
+    {
         let experiment = experiment::load(&root.join(format!("{name}.toml"))).expect(name);
         kick_store::run(&experiment, &out, false).expect(name);
     }
@@ -351,7 +358,8 @@ fn a_1d_grid_keeps_its_shape() {
     let path = run(&dir, "grid", GRID);
     let file = hdf5::File::open(&path).expect("open");
     assert_eq!(kick_store::h5::read_grid_shape(&file), Some(vec![3, 2]));
-    let axes: Vec<String> = file.dataset("grid/axes").unwrap().read_raw::<hdf5::types::VarLenUnicode>().unwrap().iter().map(|s| s.to_string()).collect();
+    let axes: Vec<String> =
+        file.dataset("grid/axes").unwrap().read_raw::<hdf5::types::VarLenUnicode>().unwrap().iter().map(|s| s.to_string()).collect();
     assert_eq!(axes, ["stiffness", "damping"]);
     let stiffness = log_range(2e5, 8e5, 3);
     assert_eq!(read(&file, "grid/stiffness"), stiffness);

@@ -64,7 +64,12 @@ fn experiment_keys_that_do_not_apply_name_their_line() {
         // (file, line, key, start of the message)
         ("name = \"e\"\nrestitution = 0.5\n", 2, "restitution", "`restitution` does not apply to law `power-law`"),
         ("name = \"e\"\n[base]\nrestitution = 0.5\n", 3, "base.restitution", "`restitution` does not apply"),
-        ("name = \"e\"\nlaw = \"flores\"\nrestitution = 0.5\n[base]\ndamping = 10.0\n", 5, "base.damping", "`damping` does not apply to law `flores`"),
+        (
+            "name = \"e\"\nlaw = \"flores\"\nrestitution = 0.5\n[base]\ndamping = 10.0\n",
+            5,
+            "base.damping",
+            "`damping` does not apply to law `flores`",
+        ),
         (
             "name = \"e\"\nlaw = \"flores\"\nrestitution = 0.5\n[[scenario]]\nname = \"a\"\ndamping = 10.0\n",
             6,
@@ -96,11 +101,7 @@ fn experiment_3d_keys_that_do_not_apply_name_their_line() {
     let cases = [
         ("level = \"3d\"\nname = \"e\"\nrestitution = 0.5\n", 3, "restitution"),
         ("level = \"3d\"\nname = \"e\"\nlaw = \"flores\"\nrestitution = 0.5\n[base]\ndamping = 10.0\n", 6, "base.damping"),
-        (
-            "level = \"3d\"\nname = \"e\"\n[[sweep]]\nparameter = \"restitution\"\nvalues = [0.5, 0.6]\n",
-            4,
-            "sweep.restitution",
-        ),
+        ("level = \"3d\"\nname = \"e\"\n[[sweep]]\nparameter = \"restitution\"\nvalues = [0.5, 0.6]\n", 4, "sweep.restitution"),
     ];
     for (text, line, key) in cases {
         let e = kick_study::experiment::parse(Path::new("e.toml"), text).unwrap_err();
@@ -148,7 +149,8 @@ fn a_sweep_records_the_shell_ball_it_solved_with() {
         let text = f.attr("experiment_text").unwrap().read_scalar::<hdf5::types::VarLenUnicode>().unwrap().to_string();
         assert!(text.lines().next().unwrap().ends_with("--law shell --inflation-pressure 60000"), "{text}");
     }
-    let ball = kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, kick_core::shell::SHELL_LOSS.default_number()).unwrap();
+    let ball =
+        kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, kick_core::shell::SHELL_LOSS.default_number()).unwrap();
     let data = SweepData::read(&one).unwrap();
     let column = |name: &str| data.parameters.iter().find(|(c, _)| c.name == name).map(|(_, v)| v[0]).unwrap();
     let values = kick_core::Parameter::ALL.map(|p| column(p.def().name));

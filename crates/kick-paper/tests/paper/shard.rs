@@ -1,13 +1,13 @@
 //! Sharded runs and their merge against the unsharded run, object by object.
 
+use crate::scratch;
 use hdf5::types::{FloatSize, IntSize, TypeDescriptor, VarLenUnicode};
 use kick_compliant::Accurate;
 use kick_core::Solver;
-use kick_study::experiment;
 use kick_store::h5::{read_str_attr, read_u64_attr};
 use kick_store::shard::{merge, run_shard, Shard};
+use kick_study::experiment;
 use std::collections::BTreeMap;
-use crate::scratch;
 use std::path::{Path, PathBuf};
 
 /// A dataset's or attribute's content, compared bit for bit.
@@ -111,7 +111,9 @@ fn three_shards_merged_equal_the_unsharded_run() {
     let (whole, parts) = whole_and_shards(&dir, "grid", GRID, 3);
     // Shard 1 of 3 of 18 rows: rows 6..12, with its own attributes and rows.
     let middle = hdf5::File::open(dir.join("parts/grid.shard-1-of-3.h5")).unwrap();
-    for (name, value) in [("shard_index", 1), ("shard_count", 3), ("shard_row_start", 6), ("shard_row_end", 12), ("experiment_rows", 18), ("rows", 6)] {
+    for (name, value) in
+        [("shard_index", 1), ("shard_count", 3), ("shard_row_start", 6), ("shard_row_end", 12), ("experiment_rows", 18), ("rows", 6)]
+    {
         assert_eq!(read_u64_attr(&middle, name), Some(value), "{name}");
     }
     let print = read_str_attr(&middle, "experiment_fingerprint").unwrap();
@@ -275,10 +277,8 @@ fn a_sweep_in_three_shards_merges_to_the_unsharded_sweep() {
     };
     let whole = sweep(&settings(dir.join("whole/s.h5"), None)).unwrap();
     assert_eq!(whole.path, dir.join("whole/s.h5"));
-    let parts: Vec<PathBuf> = ["1/3", "2/3", "0/3"]
-        .iter()
-        .map(|given| sweep(&settings(dir.join("parts/s.h5"), Some(given))).unwrap().path)
-        .collect();
+    let parts: Vec<PathBuf> =
+        ["1/3", "2/3", "0/3"].iter().map(|given| sweep(&settings(dir.join("parts/s.h5"), Some(given))).unwrap().path).collect();
     assert_eq!(parts[0], dir.join("parts/s.shard-1-of-3.h5"));
     // Shard 1 of 3 of 200 samples: samples 66..133, drawn from (seed, i).
     let middle = hdf5::File::open(&parts[0]).unwrap();
@@ -317,7 +317,10 @@ fn a_sweep3d_in_three_shards_merges_to_the_unsharded_sweep() {
     let part = hdf5::File::open(&parts[1]).unwrap();
     let whole_file = hdf5::File::open(&whole.path).unwrap();
     // Shard 2 of 3 of 40: samples 26..40.
-    assert_eq!((read_u64_attr(&part, "shard_row_start"), read_u64_attr(&part, "rows"), read_u64_attr(&part, "samples")), (Some(26), Some(14), Some(40)));
+    assert_eq!(
+        (read_u64_attr(&part, "shard_row_start"), read_u64_attr(&part, "rows"), read_u64_attr(&part, "samples")),
+        (Some(26), Some(14), Some(40))
+    );
     let spin: Vec<f64> = part.dataset("outcomes/spin_z").unwrap().read_raw().unwrap();
     let all: Vec<f64> = whole_file.dataset("outcomes/spin_z").unwrap().read_raw().unwrap();
     assert!(spin.iter().zip(&all[26..]).all(|(a, b)| a.to_bits() == b.to_bits()) && spin.len() == 14);

@@ -1,13 +1,13 @@
 //! `kick sweep3d` end to end: the file read back with the hdf5 crate, each
 //! row solved again from its stored parameters alone.
 
+use crate::scratch;
+use kick_3d::OBSERVABLES_3D;
 use kick_3d::{KickSpec, Solver3d};
 use kick_core::parameters::{self, Shape, Value};
 use kick_core::{LawKind, SetParameter, Status};
 use kick_store::h5::read_str_attr;
-use kick_3d::OBSERVABLES_3D;
 use kick_store::sweep3d::{sweep3d, SampledKicks, Sweep3dSettings};
-use crate::scratch;
 use std::path::Path;
 
 fn settings(samples: u64, seed: u64, out: &Path) -> Sweep3dSettings {
@@ -94,7 +94,10 @@ fn each_row_is_the_solve_of_its_stored_parameters() {
             assert!(same(column[i], o.observable_values()[k]), "row {i} {name}: {} vs {}", column[i], o.observable_values()[k]);
         }
         // The drawn kick is the stored one: the sampler's spec solves to the same row.
-        assert_eq!(Solver3d::Auto.solve(&SampledKicks { seed: 11, fixed: settings(1, 11, &out).fixed }.spec(i as u64).build().unwrap()).unwrap(), o);
+        assert_eq!(
+            Solver3d::Auto.solve(&SampledKicks { seed: 11, fixed: settings(1, 11, &out).fixed }.spec(i as u64).build().unwrap()).unwrap(),
+            o
+        );
     }
     println!("{refused} of 48 rows refused");
     assert!(refused * 8 < 48, "{refused} of 48 rows refused: the sampled box should mostly solve");

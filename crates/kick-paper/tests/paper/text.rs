@@ -58,7 +58,8 @@ fn leg_laws_and_table2_print_values_in_the_one_form() {
     assert_one_form(&leg.text());
     assert_printed(&leg.text(), "effective_mass", leg.mass.effective_mass);
     let default = Path::new(kick_study::table2::DEFAULT_PATH);
-    let laws = kick_paper::identify::laws(&kick_paper::identify::LawsSettings { scenarios: default.into(), out: None, samples: 20 }).unwrap();
+    let laws =
+        kick_paper::identify::laws(&kick_paper::identify::LawsSettings { scenarios: default.into(), out: None, samples: 20 }).unwrap();
     assert_one_form(&laws.text());
     // Table 2's paper column quotes the printed digits (`5.10`); the computed columns are ours.
     let table2 = kick_study::table2::compare(default).unwrap().text();

@@ -41,6 +41,10 @@
 //! `maps/<source>/{x_factor, y_factor, chi_square}` (rows = grid points, x
 //! fastest; attributes x, y), for source `exit_speed` and `histories`.
 
+use crate::h5::{read_history, Compression, H5Error};
+use crate::run::{create_table, fill_table, finish_table};
+use crate::{Column, Provenance, ResultFile, ResultWriter, SweepData};
+use indicatif::ProgressBar;
 use kick_core::laws::LawKind;
 use kick_core::Parameter;
 use kick_identify::data::Observations;
@@ -49,10 +53,6 @@ use kick_identify::laws::{LawComparison, RESTITUTION_LAWS};
 use kick_identify::profile::{IdentifiabilityStudy, MisfitMap, Profile};
 use kick_identify::table2::Table2Fit;
 use kick_identify::FitParameter;
-use crate::h5::{read_history, Compression, H5Error};
-use crate::run::{create_table, fill_table, finish_table};
-use crate::{Column, Provenance, ResultFile, ResultWriter, SweepData};
-use indicatif::ProgressBar;
 use kick_study::level::laws::LawTable;
 use kick_study::level::Level;
 use std::path::{Path, PathBuf};
@@ -81,15 +81,18 @@ pub fn write_laws(
     for row in 0..all.len() {
         for set in 0..LawKind::ALL.len() {
             let (time, force) = level.pulse(row, set);
-            writer
-                .write_history(set, row, &[(Column::new("time", "s"), &time), (Column::new("force", "N"), &force)])
-                .map_err(text)?;
+            writer.write_history(set, row, &[(Column::new("time", "s"), &time), (Column::new("force", "N"), &force)]).map_err(text)?;
         }
     }
     let w = writer.file();
     let group = crate::h5::new_group(w, "restitution_formulas").map_err(|e| format!("{}: {e}", path.display()))?;
-    crate::h5::write_str_attr(&group, path, "description", "restitution each law gives when asked for target_restitution (baseline masses, k, n, V0; accurate solver)")
-        .map_err(text)?;
+    crate::h5::write_str_attr(
+        &group,
+        path,
+        "description",
+        "restitution each law gives when asked for target_restitution (baseline masses, k, n, V0; accurate solver)",
+    )
+    .map_err(text)?;
     crate::h5::write_column(&group, path, &Column::new("target_restitution", "1"), formula_targets).map_err(text)?;
     for (k, law) in RESTITUTION_LAWS.iter().enumerate() {
         let column: Vec<f64> = formulas.iter().map(|row| row[k]).collect();
@@ -391,10 +394,8 @@ fn write_profiles(w: &ResultWriter, source: &str, profiles: &[Profile]) -> Resul
         let pg = format!("{g}/{}", p.parameter.name());
         write_scalar(w, &pg, "truth", p.parameter.unit(), p.truth)?;
         w.column(&pg, &Column::new("factor", "1"), &p.points.iter().map(|q| q.factor).collect::<Vec<_>>()).map_err(text)?;
-        w.column(&pg, &Column::new("value", p.parameter.unit()), &p.points.iter().map(|q| q.value).collect::<Vec<_>>())
-            .map_err(text)?;
-        w.column(&pg, &Column::new("chi_square", "1"), &p.points.iter().map(|q| q.chi_square).collect::<Vec<_>>())
-            .map_err(text)?;
+        w.column(&pg, &Column::new("value", p.parameter.unit()), &p.points.iter().map(|q| q.value).collect::<Vec<_>>()).map_err(text)?;
+        w.column(&pg, &Column::new("chi_square", "1"), &p.points.iter().map(|q| q.chi_square).collect::<Vec<_>>()).map_err(text)?;
         let others: Vec<FitParameter> = p.points.first().map(|q| q.others.iter().map(|o| o.0).collect()).unwrap_or_default();
         for (k, other) in others.iter().enumerate() {
             let factors: Vec<f64> = p.points.iter().map(|q| q.others.get(k).map_or(f64::NAN, |o| o.1)).collect();

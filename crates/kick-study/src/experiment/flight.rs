@@ -42,7 +42,12 @@ pub(super) fn key_span(text: &str, table: &str, key: &str) -> Option<std::ops::R
 }
 
 /// Check the `[flight]` table (`None`: no flight outcomes).
-pub(super) fn parse(at: &Locator, text: &str, raw: Option<&Spanned<FlightSpec>>, after: After) -> Result<Option<FlightSpec>, ExperimentError> {
+pub(super) fn parse(
+    at: &Locator,
+    text: &str,
+    raw: Option<&Spanned<FlightSpec>>,
+    after: After,
+) -> Result<Option<FlightSpec>, ExperimentError> {
     let Some(raw) = raw else { return Ok(None) };
     let spec = *raw.get_ref();
     let located = |name: &str, message: String| {

@@ -3,8 +3,8 @@
 //! `[[scenario]]` tables or a Table 2 file; summaries or histories.
 
 use super::{
-    axis_values, build, contact_law, law_settings_apply, Axis, Experiment, ExperimentError, Grid, Kicks, Kicks1d, Located, Locator,
-    Output, RawBase, RawExperiment, Scenarios, MAX_HISTORY_SAMPLES, MAX_HISTORY_SCENARIOS, MAX_SCENARIOS,
+    axis_values, build, contact_law, law_settings_apply, Axis, Experiment, ExperimentError, Grid, Kicks, Kicks1d, Located, Locator, Output,
+    RawBase, RawExperiment, Scenarios, MAX_HISTORY_SAMPLES, MAX_HISTORY_SCENARIOS, MAX_SCENARIOS,
 };
 use kick_compliant::table2::Table2File;
 use kick_compliant::SolverChoice;
@@ -58,10 +58,7 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
         if solver_names[..i].iter().any(|n| n.get_ref() == name.get_ref()) {
             return Err(at.error(name.span(), "solvers", format!("`{}` listed twice", name.get_ref())));
         }
-        solvers.push(
-            SolverChoice::from_name(name.get_ref(), dt)
-                .map_err(|e| at.error(name.span(), "solver", e.to_string()))?,
-        );
+        solvers.push(SolverChoice::from_name(name.get_ref(), dt).map_err(|e| at.error(name.span(), "solver", e.to_string()))?);
     }
 
     let no_base = RawBase::default();
@@ -72,7 +69,12 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
     let top_restitution = raw.restitution.as_ref();
     let law_span = top_restitution.map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
     let check_law = |damping, restitution| law_settings_apply(at, law, damping, restitution);
-    let with_law = |s: Scenario, table: &str, given: Option<&Spanned<f64>>, damping: Located, ball: Option<kick_core::ShellBall>| -> Result<Scenario, ExperimentError> {
+    let with_law = |s: Scenario,
+                    table: &str,
+                    given: Option<&Spanned<f64>>,
+                    damping: Located,
+                    ball: Option<kick_core::ShellBall>|
+     -> Result<Scenario, ExperimentError> {
         let key = format!("{table}.restitution");
         if let (Some(_), Some(r)) = (top_restitution, given) {
             return Err(at.error(r.span(), &key, "`restitution` is also set at the top level; set it in one place"));
@@ -147,7 +149,8 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
             let restitution = entry.restitution().or(base_raw.restitution());
             let damping = entry.get(Parameter::Damping).map(|d| (d.span(), format!("{key}.damping"))).or_else(base_damping);
             let ball = super::shell_ball(at, law, |p| entry.value(p).map(|v| (v, format!("{key}.{}", p.name))).or_else(|| base_key(p)))?;
-            let scenario = with_law(build(at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution, damping, ball)?;
+            let scenario =
+                with_law(build(at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution, damping, ball)?;
             names.push(entry.name().get_ref().clone());
             scenarios.push(scenario);
         }
@@ -159,11 +162,8 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
         let t2_path = path.parent().unwrap_or(Path::new(".")).join(t2.get_ref());
         let t2_text = kick_core::input::read_text(&t2_path, kick_core::input::MAX_TEXT_BYTES)
             .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
-        let file = Table2File::parse(&t2_text)
-            .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
-        let rows = file
-            .scenarios()
-            .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
+        let file = Table2File::parse(&t2_text).map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
+        let rows = file.scenarios().map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
         let (names, scenarios) = rows.into_iter().unzip();
         Scenarios::Named { names, scenarios }
     } else {
@@ -177,9 +177,7 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
             let mode_span = out.mode.as_ref().map(|m| m.span()).unwrap_or(0..0);
             match (mode, &out.interval) {
                 ("summary", None) => Output::Summary,
-                ("summary", Some(i)) => {
-                    return Err(at.error(i.span(), "output.interval", "only with mode = \"history\""))
-                }
+                ("summary", Some(i)) => return Err(at.error(i.span(), "output.interval", "only with mode = \"history\"")),
                 ("history", None) => {
                     return Err(at.error(mode_span, "output.interval", "mode = \"history\" needs a sampling interval (s)"))
                 }
@@ -189,26 +187,30 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
                         return Err(at.error(i.span(), "output.interval", format!("{} must be finite and > 0 (s)", short(v))));
                     }
                     if scenarios.len() > MAX_HISTORY_SCENARIOS {
-                        return Err(at.error(mode_span, "output.mode", format!(
-                            "histories of {} scenarios; at most {MAX_HISTORY_SCENARIOS} (use mode = \"summary\" for large sweeps)",
-                            scenarios.len()
-                        )));
+                        return Err(at.error(
+                            mode_span,
+                            "output.mode",
+                            format!(
+                                "histories of {} scenarios; at most {MAX_HISTORY_SCENARIOS} (use mode = \"summary\" for large sweeps)",
+                                scenarios.len()
+                            ),
+                        ));
                     }
                     for k in 0..scenarios.len() {
                         let horizon = scenarios.scenario(k).map(|s| s.contact_horizon()).unwrap_or(0.0);
                         // The horizon is 1000 elastic contact times; a history
                         // of a normal contact is ~1/1000 of this bound.
                         if horizon / v > MAX_HISTORY_SAMPLES * kick_core::scenario::CONTACT_HORIZON_FACTOR {
-                            return Err(at.error(i.span(), "output.interval", format!(
-                                "{v} s is too fine: more than {MAX_HISTORY_SAMPLES:e} samples per contact"
-                            )));
+                            return Err(at.error(
+                                i.span(),
+                                "output.interval",
+                                format!("{v} s is too fine: more than {MAX_HISTORY_SAMPLES:e} samples per contact"),
+                            ));
                         }
                     }
                     Output::History { interval: v }
                 }
-                (other, _) => {
-                    return Err(at.error(mode_span, "output.mode", format!("`{other}`: expected \"summary\" or \"history\"")))
-                }
+                (other, _) => return Err(at.error(mode_span, "output.mode", format!("`{other}`: expected \"summary\" or \"history\""))),
             }
         }
     };
@@ -220,8 +222,7 @@ pub(super) fn table2_experiment(path: &Path, text: &str, name: String, at: &Loca
     let file = Table2File::parse(text).map_err(|e| at.error(0..0, "row", e))?;
     let rows = file.scenarios().map_err(|e| at.error(0..0, "row", e.to_string()))?;
     // The file's own solver (the paper's method) first, then the accurate reference.
-    let mut solvers = vec![SolverChoice::from_name(&file.solver, file.dt)
-        .map_err(|e| at.error(0..0, "solver", e.to_string()))?];
+    let mut solvers = vec![SolverChoice::from_name(&file.solver, file.dt).map_err(|e| at.error(0..0, "solver", e.to_string()))?];
     if file.solver != "accurate" {
         solvers.push(SolverChoice::from_name("accurate", file.dt).map_err(|e| at.error(0..0, "solver", e.to_string()))?);
     }
@@ -237,4 +238,3 @@ pub(super) fn table2_experiment(path: &Path, text: &str, name: String, at: &Loca
         kicks: Kicks::OneD(Kicks1d { solvers, scenarios: Scenarios::Named { names, scenarios } }),
     })
 }
-

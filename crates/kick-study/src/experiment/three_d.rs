@@ -56,7 +56,9 @@ fn kick_at(mut scenario: Scenario, mut spec: Kick3dSpec, grid: &Grid, index: u64
                 // The target restitution, the one 1D parameter outside `Parameter`.
                 scenario = scenario.with_law(scenario.law_kind(), Some(value))?;
             }
-            None => spec.set_parameter(axis.parameter, Value::Number(value)).map_err(|e| Kick3dError::Experiment { reason: e.to_string() })?,
+            None => {
+                spec.set_parameter(axis.parameter, Value::Number(value)).map_err(|e| Kick3dError::Experiment { reason: e.to_string() })?
+            }
         }
     }
     Kick3d::new(scenario, &spec)
@@ -80,16 +82,17 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
     }
     let restitution = raw.restitution.as_ref().or(base_raw.restitution());
     // `damping` or `restitution` the law would ignore, given or swept: refused at its key.
-    let swept = |name: &str| raw.sweep.iter().flatten().find(|a| a.parameter.get_ref() == name).map(|a| (a.parameter.span(), format!("sweep.{name}")));
+    let swept = |name: &str| {
+        raw.sweep.iter().flatten().find(|a| a.parameter.get_ref() == name).map(|a| (a.parameter.span(), format!("sweep.{name}")))
+    };
     let damping = base_raw.get(Parameter::Damping).map(|d| (d.span(), "base.damping".to_string())).or_else(|| swept("damping"));
     let restitution_key = if raw.restitution.is_some() { "restitution" } else { "base.restitution" };
     let given_restitution = restitution.map(|r| (r.span(), restitution_key.to_string())).or_else(|| swept("restitution"));
     super::law_settings_apply(at, law, damping, given_restitution)?;
     let scenario = build(at, |p| base_raw.get(p), "base")?;
     let law_span = restitution.map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
-    let scenario = scenario
-        .with_law(law, restitution.map(|r| *r.get_ref()))
-        .map_err(|e| at.error(law_span.clone(), "law", e.to_string()))?;
+    let scenario =
+        scenario.with_law(law, restitution.map(|r| *r.get_ref())).map_err(|e| at.error(law_span.clone(), "law", e.to_string()))?;
     let ball = super::shell_ball(at, law, |p| base_raw.value(p).map(|v| (v, format!("base.{}", p.name))))?;
     let scenario = ball.map_or(scenario, |ball| scenario.with_shell(ball));
     let kick3d = raw.kick3d.unwrap_or_default();
@@ -114,7 +117,11 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
         let key = format!("sweep.{name}");
         let parameter = parameters::find_at(LEVELS_3D, name).map_err(|e| at.error(axis.parameter.span(), &key, e.to_string()))?;
         if parameter.shape != Shape::Scalar {
-            return Err(at.error(axis.parameter.span(), &key, format!("a sweep axis takes a number; `{name}` is {}", parameter.shape.describe())));
+            return Err(at.error(
+                axis.parameter.span(),
+                &key,
+                format!("a sweep axis takes a number; `{name}` is {}", parameter.shape.describe()),
+            ));
         }
         if axes.iter().any(|a| a.parameter.name == parameter.name) {
             return Err(at.error(axis.parameter.span(), &key, "parameter swept twice"));
@@ -149,8 +156,13 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
     // Combinations (an offset with a smaller ball) can still fail.
     for i in 0..kicks.grid.len() {
         if let Err(e) = kicks.kick(i) {
-            let at_cell: Vec<String> =
-                kicks.grid.axes.iter().zip(kicks.grid.coordinates(i)).map(|(a, v)| format!("{} = {}", a.parameter.name, short(v))).collect();
+            let at_cell: Vec<String> = kicks
+                .grid
+                .axes
+                .iter()
+                .zip(kicks.grid.coordinates(i))
+                .map(|(a, v)| format!("{} = {}", a.parameter.name, short(v)))
+                .collect();
             return Err(at.error(last_span, "sweep", format!("grid point {i} ({}): {e}", at_cell.join(", "))));
         }
     }

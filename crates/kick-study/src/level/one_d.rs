@@ -6,8 +6,8 @@ use super::{Failure, Level, Row};
 use crate::columns::{Column, OutcomeSet, Setting};
 use crate::experiment::Kicks1d;
 use kick_compliant::SolverChoice;
-use kick_flight::FlightSpec;
 use kick_core::{AnyLaw, KickError, Outcome, Parameter, Scenario, Solver, OBSERVABLES};
+use kick_flight::FlightSpec;
 
 /// Parameter columns of the 1D model: the eight [`Parameter`]s, and the
 /// target restitution when the law takes one (names and units as declared).
@@ -136,7 +136,8 @@ mod tests {
         let experiment = crate::experiment::parse(Path::new("chain.toml"), text).unwrap();
         assert!(experiment.one_d().is_some());
         let table = run_table(&experiment, 0..2);
-        let failed = kick_compliant::Accurate::default().solve(&Scenario::baseline().with(Parameter::DriveForce, 1e6).unwrap()).unwrap_err();
+        let failed =
+            kick_compliant::Accurate::default().solve(&Scenario::baseline().with(Parameter::DriveForce, 1e6).unwrap()).unwrap_err();
         assert_ne!(failed.status(), Status::Refused);
         assert_eq!(table.status[0], vec![0, failed.status().code()]);
         assert_eq!(table.status[1], vec![0, Status::Refused.code()]);

@@ -130,11 +130,7 @@ impl Level for SampledSweep3d {
         if let (kick_core::LawKind::Shell, Ok(ball)) = (law, self.kicks.fixed.scenario.shell_ball()) {
             settings.extend(crate::columns::ball_settings(kick_core::AnyLaw::Shell(ball)));
         }
-        vec![OutcomeSet {
-            solver: SOLVER.into(),
-            settings,
-            columns: OBSERVABLES_3D.iter().map(|(n, u)| Column::new(n, u)).collect(),
-        }]
+        vec![OutcomeSet { solver: SOLVER.into(), settings, columns: OBSERVABLES_3D.iter().map(|(n, u)| Column::new(n, u)).collect() }]
     }
 
     fn solve_row(&self, index: u64, row: &mut Row) {
