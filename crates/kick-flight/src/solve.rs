@@ -7,7 +7,9 @@ use kick_core::roots::brent;
 use nalgebra::{SVector, Vector3};
 use serde::Serialize;
 
-/// r, v, ω.
+/// r, v, ω; the third coordinate is the height above the landing height,
+/// h = z − R (integrated as such: near z = R a tiny flight's height is
+/// below the rounding of z, and its flight time came out halved).
 type State = SVector<f64, 9>;
 const X: usize = 0;
 const Y: usize = 1;
@@ -281,10 +283,9 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
     let radius = flight.ball_radius();
     let v0 = flight.launch_velocity();
     let w0 = flight.spin();
-    let y0 = State::from_column_slice(&[0.0, 0.0, radius, v0[0], v0[1], v0[2], w0[0], w0[1], w0[2]]);
-    // Units of the absolute tolerance: lengths in R (z never drops below it
-    // in flight, so heights are held relatively), speeds in |v0|, spins in
-    // |ω0| (|v0|/R without spin, which then stays zero).
+    let y0 = State::from_column_slice(&[0.0, 0.0, 0.0, v0[0], v0[1], v0[2], w0[0], w0[1], w0[2]]);
+    // Units of the absolute tolerance: lengths in R, speeds in |v0|, spins
+    // in |ω0| (|v0|/R without spin, which then stays zero).
     let speed = flight.speed();
     let length = radius;
     let spin = (w0[0] * w0[0] + w0[1] * w0[1] + w0[2] * w0[2]).sqrt();
@@ -306,8 +307,8 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
         let (t0, _, start) = stepper.last_step();
         let (start, end, t1) = (*start, *stepper.state(), stepper.time());
         let apex_here = start[VZ] > 0.0 && end[VZ] <= 0.0;
-        // At launch z = R exactly: the first step lands only past an apex.
-        let lands_here = end[Z] - radius <= 0.0 && (start[Z] - radius > 0.0 || apex_here);
+        // At launch h = 0 exactly: the first step lands only past an apex.
+        let lands_here = end[Z] <= 0.0 && (start[Z] > 0.0 || apex_here);
         let crosses_here = match (flight.distance(), crossing) {
             (Some(d), None) => start[X] < d && end[X] >= d,
             _ => false,
@@ -317,14 +318,14 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
             let mut t_apex = t0;
             if apex_here {
                 t_apex = locate(|t| dense.component(VZ, t), t0, t1);
-                let z = dense.component(Z, t_apex);
+                let z = radius + dense.component(Z, t_apex);
                 if apex.is_none_or(|(_, best)| z > best) {
                     apex = Some((t_apex, z));
                 }
             }
             let t_land = if lands_here {
-                let lo = if start[Z] - radius > 0.0 { t0 } else { t_apex };
-                Some(locate(|t| dense.component(Z, t) - radius, lo, t1))
+                let lo = if start[Z] > 0.0 { t0 } else { t_apex };
+                Some(locate(|t| dense.component(Z, t), lo, t1))
             } else {
                 None
             };
@@ -333,7 +334,8 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
                 let t_cross = locate(|t| dense.component(X, t) - d, t0, t1);
                 if t_land.is_none_or(|t| t_cross <= t) {
                     let s = dense.at(t_cross);
-                    crossing = Some(Crossing { distance: d, time: t_cross, height: s[Z], lateral_offset: s[Y], velocity: vector(&s, 3) });
+                    crossing =
+                        Some(Crossing { distance: d, time: t_cross, height: radius + s[Z], lateral_offset: s[Y], velocity: vector(&s, 3) });
                 }
             }
             if let Some(callback) = on_step.as_deref_mut() {
@@ -341,10 +343,10 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
             }
             if let Some(t) = t_land {
                 if t > horizon {
-                    return Err(FlightError::NoLanding { horizon, height: dense.component(Z, horizon) });
+                    return Err(FlightError::NoLanding { horizon, height: radius + dense.component(Z, horizon) });
                 }
                 let s = dense.at(t);
-                let (apex_time, apex_height) = apex.unwrap_or((t0, start[Z]));
+                let (apex_time, apex_height) = apex.unwrap_or((t0, radius + start[Z]));
                 let outcome = FlightOutcome {
                     flight_time: t,
                     landing_point: [s[X], s[Y]],
@@ -368,7 +370,7 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
         }
         stepper.advance();
         if t1 >= horizon {
-            return Err(FlightError::NoLanding { horizon, height: end[Z] });
+            return Err(FlightError::NoLanding { horizon, height: radius + end[Z] });
         }
         if stepper.accepted >= MAX_STEPS {
             return Err(FlightError::Integration { time: t1, reason: "more steps than kick_flight::MAX_STEPS" });
@@ -411,7 +413,8 @@ pub fn history(flight: &Flight, sampling: Sampling) -> Result<FlightHistory, Fli
         }
     };
     let v0 = flight.launch_velocity();
-    let start = FlightSample { time: 0.0, position: [0.0, 0.0, flight.ball_radius()], velocity: v0, spin: flight.spin() };
+    let radius = flight.ball_radius();
+    let start = FlightSample { time: 0.0, position: [0.0, 0.0, radius], velocity: v0, spin: flight.spin() };
     let mut samples = Vec::with_capacity(times.len());
     let mut next = 0;
     while next < times.len() && times[next] == 0.0 {
@@ -422,7 +425,8 @@ pub fn history(flight: &Flight, sampling: Sampling) -> Result<FlightHistory, Fli
         while next < times.len() && times[next] <= until {
             let t = times[next];
             let s = dense.at(t);
-            samples.push(FlightSample { time: t, position: vector(&s, 0), velocity: vector(&s, 3), spin: vector(&s, 6) });
+            let [x, y, h] = vector(&s, 0);
+            samples.push(FlightSample { time: t, position: [x, y, radius + h], velocity: vector(&s, 3), spin: vector(&s, 6) });
             next += 1;
         }
     };
@@ -473,6 +477,32 @@ mod tests {
             let (x, z) = (u * t, flight.ball_radius() + w * t - 0.5 * flight.gravity() * t * t);
             assert!((s.position[0] - x).abs() <= 1e-9 * 40.0, "x at {t}");
             assert!((s.position[2] - z).abs() <= 1e-9 * 40.0, "z at {t}");
+        }
+    }
+
+    /// Fault 6 of issue 33: in vacuum the flight time is 2 v sin θ / g and
+    /// the ball lands at −v sin θ, down to speeds whose height (2.5e-20 m at
+    /// 1e-9 m/s) is far below the rounding of z = R (1.4e-17 m): the height
+    /// is integrated as h = z − R. Before, every speed below 1e-8 m/s gave
+    /// half the flight time and a landing at v_z = 0.
+    #[test]
+    fn a_vacuum_flight_takes_its_closed_form_time_at_any_speed() {
+        for speed in [1e-9, 3e-9, 1e-8, 1e-6, 1e-3, 0.1, 5.0, 30.0] {
+            for angle in [45.0, 10.0, 80.0] {
+                let spec =
+                    FlightSpec { drag_coefficient: Some(0.0), lift_coefficient: Some(0.0), ..FlightSpec::from_exit_speed(speed, angle) };
+                let flight = spec.build().unwrap();
+                let vz = flight.launch_velocity()[2];
+                let g = flight.gravity();
+                let o = solve(&flight).unwrap();
+                let time = 2.0 * vz / g;
+                assert!((o.flight_time / time - 1.0).abs() < 1e-9, "{speed} m/s at {angle}°: {} s vs {time} s", o.flight_time);
+                assert!((o.landing_velocity[2] / -vz - 1.0).abs() < 1e-9, "{speed} m/s at {angle}°: v_z {}", o.landing_velocity[2]);
+                assert!((o.apex_time / (0.5 * time) - 1.0).abs() < 1e-9, "{speed} m/s at {angle}°: apex at {} s", o.apex_time);
+                let apex = vz * vz / (2.0 * g);
+                let radius = flight.ball_radius();
+                assert!((o.apex_height - radius - apex).abs() <= 1e-9 * apex + 2.0 * f64::EPSILON * radius, "{speed}: {}", o.apex_height);
+            }
         }
     }
 
