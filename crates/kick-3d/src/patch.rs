@@ -470,16 +470,29 @@ pub fn instep(kick: &Kick3d, spec: &Kick3dSpec) -> Result<Option<Instep>, Kick3d
     let n_body = instep.orientation().inverse() * touch.normal;
     let contact = touch.centre - n_body * kick.ball_radius;
     if contact.y.abs() > hy || contact.z.abs() > hz {
-        // Name what the user gave: the pitch when only it was set (the yaw is then asin(e/R)).
-        let (name, value) = match (spec.face_yaw_deg, spec.face_pitch_deg) {
-            (None, Some(p)) => ("face_pitch", p),
-            _ => ("face_yaw", yaw.to_degrees()),
+        // Name what the user gave that puts the contact off the face: on the
+        // axis it misses by most, the face's own angle when given, else the
+        // kick's (the approach angle up or down, the offset sideways; a
+        // derived yaw or pitch was never given).
+        let vertical = contact.z.abs() / hz >= contact.y.abs() / hy;
+        let (name, value, requirement) = match (vertical, spec.face_pitch_deg, spec.face_yaw_deg) {
+            (true, Some(pitch), _) => {
+                ("face_pitch", pitch, "a face that meets the ball within its half-height (check face_pitch and approach_angle)")
+            }
+            (true, None, _) => (
+                "approach_angle",
+                spec.approach_angle_deg.unwrap_or(kick.approach_angle.to_degrees()),
+                "an approach whose contact lies within the instep face's half-height (a rising foot meets the ball \
+                 below the face's centre: lower approach_angle, or pitch the face with face_pitch)",
+            ),
+            (false, _, Some(yaw)) => ("face_yaw", yaw, "a face that meets the ball within its half-width (check face_yaw and offset)"),
+            (false, _, None) => (
+                "offset",
+                spec.offset.unwrap_or(kick.offset),
+                "an offset whose contact lies within the instep face's half-width (lower the offset, or turn the face with face_yaw)",
+            ),
         };
-        return Err(Kick3dError::InvalidParameter {
-            name,
-            value,
-            requirement: "a face that meets the ball within its half-extents (check face_yaw, face_pitch and offset)",
-        });
+        return Err(Kick3dError::InvalidParameter { name, value, requirement });
     }
     Ok(Some(instep))
 }
@@ -691,6 +704,51 @@ mod tests {
                 .1;
             assert!((rate - fine).abs() <= 1e-12 * fine.abs(), "δ {delta}: {rate} vs {fine} (40 rings)");
         }
+    }
+
+    /// Fault 11 of issue 33 and its kind: a contact off the instep's face
+    /// is refused naming a parameter the user gave (before, `face_yaw = 0`,
+    /// derived, for `--approach-angle 30`). Over a grid of patch kicks,
+    /// given or not given face angles, every such refusal names one of the
+    /// given parameters, on the axis the contact misses by most.
+    #[test]
+    fn a_contact_off_the_face_names_what_the_user_gave() {
+        use kick_core::parameters::{SetLaw, SetParameter, Value};
+        let mut spec = crate::KickSpec::default();
+        spec.set_law(kick_core::LawKind::Shell);
+        spec.set_named("patch_contact", Value::Switch(true)).unwrap();
+        spec.set_named("approach_angle", Value::Number(30.0)).unwrap();
+        match spec.build() {
+            Err(Kick3dError::InvalidParameter { name: "approach_angle", value, requirement }) => {
+                assert_eq!(value, 30.0);
+                assert!(requirement.contains("face_pitch"), "{requirement}");
+            }
+            other => panic!("{other:?}"),
+        }
+        let mut refused = 0;
+        for offset in [None, Some(0.03), Some(0.08)] {
+            for angle in [None, Some(-35.0), Some(25.0)] {
+                for yaw in [None, Some(0.0), Some(30.0)] {
+                    for pitch in [None, Some(0.0), Some(-20.0)] {
+                        let mut spec = crate::KickSpec::default();
+                        spec.set_law(kick_core::LawKind::Shell);
+                        spec.set_named("patch_contact", Value::Switch(true)).unwrap();
+                        let mut given = vec![];
+                        for (name, value) in [("offset", offset), ("approach_angle", angle), ("face_yaw", yaw), ("face_pitch", pitch)] {
+                            if let Some(x) = value {
+                                spec.set_named(name, Value::Number(x)).unwrap();
+                                given.push(name);
+                            }
+                        }
+                        if let Err(Kick3dError::InvalidParameter { name, .. }) = spec.build() {
+                            refused += 1;
+                            assert!(given.contains(&name), "{given:?}: `{name}` named");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(refused > 0);
     }
 
     /// Gauss–Legendre on (0, 1) integrates polynomials of degree 2n − 1 exactly.
