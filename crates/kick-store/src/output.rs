@@ -90,22 +90,105 @@ pub fn install_signal_cleanup() -> Result<(), OutputError> {
 }
 
 /// Refuse, before any work, an output `out` (given as `flag`) that does not
-/// end in `.EXT` or is one of `inputs` (the same file, by device and inode:
-/// a second name or a link to an input counts), or a directory.
+/// end in `.EXT`, is a directory, or names one of `inputs` ([`check_paths`]).
 pub fn check_output(out: &Path, flag: &str, ext: &str, inputs: &[&Path]) -> Result<(), OutputError> {
-    let refused = |message: String| OutputError::Refused { flag: flag.to_string(), path: out.to_path_buf(), message };
     if out.extension().and_then(|e| e.to_str()) != Some(ext) {
-        return Err(refused(format!("an output file must end in `.{ext}` (this keeps an input from being replaced by mistake)")));
+        return Err(OutputError::Refused {
+            flag: flag.to_string(),
+            path: out.to_path_buf(),
+            message: format!("an output file must end in `.{ext}` (this keeps an input from being replaced by mistake)"),
+        });
     }
-    if std::fs::metadata(out).is_ok_and(|m| m.is_dir()) {
-        return Err(refused("is a directory; give a file name".into()));
-    }
-    for input in inputs {
-        if is_same_file(out, input) {
-            return Err(refused(format!("is the input {}; write elsewhere", input.display())));
+    check_paths(&[Target::File { flag, path: out }], inputs)
+}
+
+/// A path a command writes, with the flag (or key) that named it.
+#[derive(Debug, Clone, Copy)]
+pub enum Target<'a> {
+    /// One file.
+    File { flag: &'a str, path: &'a Path },
+    /// A folder the command owns: any file below it may be written (results
+    /// and figures of `kick reproduce`).
+    Folder { flag: &'a str, path: &'a Path },
+}
+
+/// The one check of every command that writes, made before any work: no
+/// file it writes is a file it reads, and no folder it writes into holds
+/// one. Paths are compared as they will resolve when written
+/// ([`resolve`]: `nodir/../a.h5` is `a.h5` once the writer has created
+/// `nodir`), and files also by device and inode (a second name or a hard
+/// link to an input counts). A file target that is a directory is refused too.
+pub fn check_paths(writes: &[Target], reads: &[&Path]) -> Result<(), OutputError> {
+    let reads: Vec<(&Path, PathBuf)> = reads.iter().map(|&r| (r, resolve(r))).collect();
+    for target in writes {
+        let (&Target::File { flag, path } | &Target::Folder { flag, path }) = target;
+        let refused = |message: String| OutputError::Refused { flag: flag.to_string(), path: path.to_path_buf(), message };
+        let resolved = resolve(path);
+        // Said when the path reads as something else than it will be.
+        let meaning = |input: &Path| {
+            let plain = input.is_absolute() == path.is_absolute() && input.components().eq(path.components());
+            if plain {
+                String::new()
+            } else {
+                format!(" (it resolves to {})", resolved.display())
+            }
+        };
+        match target {
+            Target::File { .. } => {
+                if std::fs::metadata(&resolved).is_ok_and(|m| m.is_dir()) {
+                    return Err(refused("it is a directory; give a file name".into()));
+                }
+                for (input, real) in &reads {
+                    if *real == resolved || is_same_file(&resolved, real) {
+                        return Err(refused(format!("is the input {}{}; write elsewhere", input.display(), meaning(input))));
+                    }
+                }
+            }
+            Target::Folder { .. } => {
+                for (input, real) in &reads {
+                    if real.starts_with(&resolved) {
+                        return Err(refused(format!(
+                            "holds the input {}{}, and this folder's files are written; give a folder of its own",
+                            input.display(),
+                            meaning(input)
+                        )));
+                    }
+                }
+            }
         }
     }
     Ok(())
+}
+
+/// What `path` will name once the directories a writer creates exist: its
+/// longest existing prefix resolved by the file system (links followed),
+/// the rest lexically, where `x/..` cancels because `x` will then be a
+/// directory (so `nodir/../a.h5` is `./a.h5`, though `nodir` does not
+/// exist yet). Absolute.
+pub fn resolve(path: &Path) -> PathBuf {
+    use std::path::Component;
+    let absolute = if path.is_absolute() { path.to_path_buf() } else { std::env::current_dir().unwrap_or_default().join(path) };
+    // `base` exists and is canonical; `tail` does not exist yet.
+    let mut base = PathBuf::new();
+    let mut tail: Vec<&std::ffi::OsStr> = Vec::new();
+    for component in absolute.components() {
+        match component {
+            Component::Prefix(_) | Component::RootDir => base.push(component.as_os_str()),
+            Component::CurDir => {}
+            Component::ParentDir => {
+                if tail.pop().is_none() {
+                    // The parent of a canonical path is its lexical parent.
+                    base.pop();
+                }
+            }
+            Component::Normal(name) => match std::fs::canonicalize(base.join(name)) {
+                Ok(real) if tail.is_empty() => base = real,
+                _ => tail.push(name),
+            },
+        }
+    }
+    base.extend(tail);
+    base
 }
 
 /// Whether two paths name one existing file.
@@ -268,6 +351,14 @@ fn same_file(_file: &File, path: &Path) -> bool {
     path.exists()
 }
 
+/// A fresh name of this process beside `target`: `NAME.<pid>-<n>.tmp.EXT`
+/// (what [`remove_stale_temporaries`] takes over once its writer is gone).
+fn temporary_name(target: &Path, stem: &str, ext: &str) -> PathBuf {
+    static SEQUENCE: AtomicU64 = AtomicU64::new(0);
+    let n = SEQUENCE.fetch_add(1, Ordering::Relaxed);
+    target.with_file_name(format!("{stem}.{}-{n}.tmp{ext}", std::process::id()))
+}
+
 /// A file being written: write [`Staged::temporary`], then [`Staged::commit`].
 /// Dropped without a commit, the temporary file is removed and the target
 /// left as it was.
@@ -283,7 +374,6 @@ impl Staged {
     /// Take the target's lock (creating its directory) and name a fresh
     /// temporary file beside it; refused if another writer holds the lock.
     pub fn begin(target: &Path) -> Result<Staged, OutputError> {
-        static SEQUENCE: AtomicU64 = AtomicU64::new(0);
         let directory = match target.parent() {
             Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
             _ => PathBuf::from("."),
@@ -306,8 +396,7 @@ impl Staged {
         options.write(true).create_new(true);
         no_follow(&mut options);
         for _ in 0..100 {
-            let n = SEQUENCE.fetch_add(1, Ordering::Relaxed);
-            let temporary = target.with_file_name(format!("{stem}.{}-{n}.tmp{ext}", std::process::id()));
+            let temporary = temporary_name(target, &stem, &ext);
             match options.open(&temporary) {
                 Ok(_) => {
                     register(&temporary);
@@ -356,6 +445,79 @@ impl Drop for Staged {
             unregister(&mut list, &self.temporary);
         }
     }
+}
+
+/// Commit files that belong together (a fit specification and its data, a
+/// figure's PNG and SVG) as one: every target gets its new content, or every
+/// target keeps what it had. Every temporary file is flushed first, so a
+/// full disk stops the set before any rename; the targets' old contents are
+/// kept under temporary names until every rename is done and put back if
+/// one fails. A signal sees all the renames or none (they run under the
+/// registry's lock); only a SIGKILL between them could split the set.
+pub fn commit_all(mut files: Vec<Staged>) -> Result<Vec<PathBuf>, OutputError> {
+    for s in &files {
+        File::open(&s.temporary).and_then(|f| f.sync_all()).map_err(io(&s.target))?;
+    }
+    let mut list = pending();
+    let mut backups: Vec<Option<PathBuf>> = Vec::with_capacity(files.len());
+    let restore = |backups: &mut Vec<Option<PathBuf>>, list: &mut Vec<PathBuf>, renamed: &[Staged]| {
+        for (s, backup) in renamed.iter().zip(backups.iter()) {
+            let _ = match backup {
+                Some(old) => std::fs::rename(old, &s.target),
+                None => std::fs::remove_file(&s.target),
+            };
+        }
+        for old in backups.drain(..).flatten() {
+            let _ = std::fs::remove_file(&old);
+            unregister(list, &old);
+        }
+    };
+    for s in &files {
+        let backup = match std::fs::symlink_metadata(&s.target) {
+            Ok(m) if m.is_file() => {
+                let (stem, ext) = split_name(&s.target);
+                let old = temporary_name(&s.target, &stem, &ext);
+                list.push(old.clone());
+                if let Err(e) = std::fs::hard_link(&s.target, &old).or_else(|_| std::fs::copy(&s.target, &old).map(drop)) {
+                    backups.push(Some(old));
+                    restore(&mut backups, &mut list, &[]);
+                    return Err(io(&s.target)(e));
+                }
+                Some(old)
+            }
+            _ => None,
+        };
+        backups.push(backup);
+    }
+    for i in 0..files.len() {
+        if let Err(e) = std::fs::rename(&files[i].temporary, &files[i].target) {
+            let target = files[i].target.clone();
+            restore(&mut backups, &mut list, &files[..i]);
+            return Err(io(&target)(e));
+        }
+    }
+    for s in files.iter_mut() {
+        unregister(&mut list, &s.temporary);
+        s.committed = true;
+    }
+    restore(&mut backups, &mut list, &[]);
+    drop(list);
+    for dir in files.iter().filter_map(|s| s.target.parent()).filter(|d| !d.as_os_str().is_empty()) {
+        let _ = File::open(dir).and_then(|d| d.sync_all());
+    }
+    Ok(files.iter().map(|s| s.target.clone()).collect())
+}
+
+/// Write each `(target, bytes)` as the whole of its target, all or none
+/// ([`commit_all`]): files that only make sense together.
+pub fn write_all(files: &[(&Path, &[u8])]) -> Result<Vec<PathBuf>, OutputError> {
+    let mut staged = Vec::with_capacity(files.len());
+    for &(target, bytes) in files {
+        let s = Staged::begin(target)?;
+        File::create(s.temporary()).and_then(|mut f| f.write_all(bytes)).map_err(io(s.target()))?;
+        staged.push(s);
+    }
+    commit_all(staged)
 }
 
 /// Temporary files of this target whose writer is gone (we hold the lock).
@@ -483,6 +645,90 @@ mod tests {
         assert_eq!(unsafe { libc::mkfifo(fifo.as_ptr(), 0o600) }, 0);
         let message = write(&fourth, b"new").expect_err("a FIFO lock must be refused").to_string();
         assert!(message.contains("fourth.h5.lock") && message.contains("special file"), "{message}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// Fault 1 of issue 33: `nodir/../a.h5` is `a.h5` once the writer has
+    /// created `nodir`; before, only existing paths were resolved, so an
+    /// input was replaced by a name through a missing directory.
+    #[test]
+    fn a_path_through_a_missing_directory_is_checked_as_it_will_resolve() {
+        let dir = scratch("resolve");
+        let input = dir.join("a.h5");
+        std::fs::write(&input, b"input").unwrap();
+        let sneaky = dir.join("nodir").join("..").join("a.h5");
+        assert_eq!(resolve(&sneaky), resolve(&input));
+        assert_eq!(resolve(&dir.join("x/y/../../a.h5")), resolve(&input));
+        assert_eq!(resolve(&dir.join("./nodir/b.h5")), resolve(&dir).join("nodir/b.h5"));
+        let message = check_output(&sneaky, "OUT", "h5", &[&input]).unwrap_err().to_string();
+        assert!(message.contains("is the input") && message.contains("resolves to"), "{message}");
+        assert!(!dir.join("nodir").exists(), "the check creates nothing");
+        // A relative path from elsewhere, a link and a hard link to the input.
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink(&input, dir.join("link.h5")).unwrap();
+            std::fs::hard_link(&input, dir.join("hard.h5")).unwrap();
+            for other in ["link.h5", "hard.h5"] {
+                assert!(check_output(&dir.join(other), "OUT", "h5", &[&input]).is_err(), "{other}");
+            }
+        }
+        // Another name beside it is fine.
+        check_output(&dir.join("nodir/../b.h5"), "OUT", "h5", &[&input]).unwrap();
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// A folder a command owns may not hold what it reads; a file target
+    /// may not be a directory.
+    #[test]
+    fn folders_written_may_not_hold_inputs() {
+        let dir = scratch("folder");
+        let inputs = dir.join("experiments");
+        std::fs::create_dir_all(&inputs).unwrap();
+        let file = inputs.join("figure1.toml");
+        std::fs::write(&file, b"x").unwrap();
+        let folder = |p: &Path| check_paths(&[Target::Folder { flag: "--out", path: p }], &[&file]);
+        let message = folder(&inputs).unwrap_err().to_string();
+        assert!(message.contains("`--out`") && message.contains("holds the input"), "{message}");
+        assert!(folder(&dir).is_err());
+        assert!(folder(&dir.join("gone/../experiments")).is_err());
+        folder(&dir.join("results")).unwrap();
+        let message = check_paths(&[Target::File { flag: "--report", path: &inputs }], &[]).unwrap_err().to_string();
+        assert!(message.contains("is a directory"), "{message}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// Fault 4 of issue 33: files that belong together are written whole or
+    /// not at all. A second target that cannot be written leaves the first
+    /// as it was (before, the first was already renamed into place).
+    #[test]
+    fn a_pair_is_written_whole_or_not_at_all() {
+        let dir = scratch("pair");
+        let (csv, toml) = (dir.join("s.csv"), dir.join("s.toml"));
+        write_all(&[(&csv, b"new csv"), (&toml, b"new toml")]).unwrap();
+        assert_eq!(std::fs::read(&csv).unwrap(), b"new csv");
+        // The second cannot begin (a directory in its place): nothing changes.
+        std::fs::remove_file(&toml).unwrap();
+        std::fs::create_dir(&toml).unwrap();
+        assert!(write_all(&[(&csv, b"newer csv"), (&toml, b"newer toml")]).is_err());
+        assert_eq!(std::fs::read(&csv).unwrap(), b"new csv");
+        std::fs::remove_dir(&toml).unwrap();
+        // The second rename fails after the first is done: the first is put back.
+        std::fs::write(&toml, b"old toml").unwrap();
+        let first = Staged::begin(&csv).unwrap();
+        std::fs::write(first.temporary(), b"lost csv").unwrap();
+        let second = Staged::begin(&toml).unwrap();
+        std::fs::write(second.temporary(), b"lost toml").unwrap();
+        std::fs::remove_file(&toml).unwrap();
+        std::fs::create_dir(&toml).unwrap();
+        std::fs::write(toml.join("keep"), b"x").unwrap();
+        assert!(commit_all(vec![first, second]).is_err());
+        assert_eq!(std::fs::read(&csv).unwrap(), b"new csv");
+        assert_eq!(names(&dir), ["s.csv", "s.toml"]);
+        // A new pair whose second fails leaves neither.
+        let (a, b) = (dir.join("n.csv"), dir.join("s.toml"));
+        assert!(write_all(&[(&a, b"a"), (&b, b"b")]).is_err());
+        assert!(!a.exists());
+        assert_eq!(names(&dir), ["s.csv", "s.toml"]);
         let _ = std::fs::remove_dir_all(&dir);
     }
 
