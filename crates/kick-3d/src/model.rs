@@ -529,6 +529,13 @@ impl Kick3d {
         self.law
     }
 
+    /// Whether `outcome`, a solve of this kick, stayed where its law holds
+    /// (`kick_core::validity`: the shell ball to R/2; past R every path
+    /// refuses the kick, `KickError::BeyondGeometry`).
+    pub fn check_validity(&self, outcome: &crate::Outcome3d) -> Result<(), kick_core::OutsideValidity> {
+        kick_core::validity::check(self.law.kind(), self.ball_radius, outcome.max_compression)
+    }
+
     /// Drive force on the foot, along its initial direction of motion.
     pub fn drive(&self) -> Vec3 {
         self.foot_direction() * self.base.drive_force()

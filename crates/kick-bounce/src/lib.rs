@@ -210,7 +210,8 @@ pub enum LawChoice {
 }
 
 impl LawChoice {
-    pub const NAMES: &'static str = "shell, power-law, hunt-crossley, lankarani-nikravesh, flores, hunt-crossley-exact, kelvin-voigt";
+    /// Every law by name: kick-core's one list (`LawKind::SELECTABLE`, the shell included).
+    pub const NAMES: &'static str = LawKind::NAMES;
 
     pub fn from_name(name: &str) -> Result<LawChoice, kick_core::laws::LawError> {
         match name {
@@ -426,6 +427,13 @@ pub struct BounceOutcome {
     pub rebound_height: Option<f64>,
     /// Right-hand-side evaluations of the normal phase.
     pub evaluations: u64,
+    /// `separated`, or `outside_validity` when δ_max passed the region where
+    /// the ball's law holds (`kick_core::validity`: the shell to R/2): the
+    /// numbers are kept, and flagged.
+    pub status: kick_core::Status,
+    /// Why, when outside.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outside_validity: Option<kick_core::OutsideValidity>,
 }
 
 /// The 1D normal contact: ball at V_n onto the plate, gravity as the drive
@@ -488,6 +496,18 @@ pub fn in_bounce_terms(b: &Bounce, e: KickError) -> KickError {
             Some(&own) => KickError::InvalidParameter { name: own, value, requirement },
             None => KickError::InvalidParameter { name, value, requirement },
         },
+        // The 1D proof speaks of the foot and its drive; here the ball's own
+        // weight holds it on the plate (physics: no rebound at this speed).
+        KickError::Trapped { time, .. } => KickError::Trapped {
+            time,
+            reason: format!(
+                "the ball never leaves the plate, no separation: its weight m g ({}) holds it there, and at the impact \
+                 speed of {} m/s ({}) the law stores too little energy to lift it off; the ball comes to rest on the plate",
+                ["ball_mass", "gravity"].join(", "),
+                kick_core::short(b.speed * b.angle.to_radians().cos()),
+                bounce_names(b, "foot_speed").join(", ")
+            ),
+        },
         other => other,
     }
 }
@@ -541,9 +561,10 @@ pub fn solve(b: &Bounce, solver: NormalSolver) -> Result<BounceOutcome, KickErro
     let normal_speed = b.speed * cos;
     let scenario = normal_scenario(b, normal_speed)?;
     let o = match b.law {
-        BallLaw::Shell(shell) => solver.solve(&scenario, shell)?,
-        BallLaw::Kick { .. } => solver.solve::<AnyLaw>(&scenario, scenario.contact_law())?,
-    };
+        BallLaw::Shell(shell) => solver.solve(&scenario, shell),
+        BallLaw::Kick { .. } => solver.solve::<AnyLaw>(&scenario, scenario.contact_law()),
+    }
+    .map_err(|e| in_bounce_terms(b, e))?;
     let j_n = o.impulse;
     let r = b.radius;
     let [wx, wy, wz] = b.spin;
@@ -565,6 +586,11 @@ pub fn solve(b: &Bounce, solver: NormalSolver) -> Result<BounceOutcome, KickErro
     // Δω = r × J_t / I with r = (0, 0, −R): (R J_y, −R J_x, 0)/I.
     let exit_spin = [wx + r * j_t[1] / b.inertia, wy - r * j_t[0] / b.inertia, wz];
     let rebound_height = b.drop_height.map(|_| v_z * v_z / (2.0 * b.gravity));
+    let kind = match b.law {
+        BallLaw::Shell(_) => LawKind::Shell,
+        BallLaw::Kick { kind, .. } => kind,
+    };
+    let outside_validity = kick_core::validity::check(kind, b.radius, o.max_compression).err();
     Ok(BounceOutcome {
         restitution: o.restitution,
         contact_time: o.contact_time,
@@ -579,6 +605,8 @@ pub fn solve(b: &Bounce, solver: NormalSolver) -> Result<BounceOutcome, KickErro
         tangential,
         rebound_height,
         evaluations: o.evaluations,
+        status: if outside_validity.is_some() { kick_core::Status::OutsideValidity } else { kick_core::Status::Separated },
+        outside_validity,
     })
 }
 
@@ -603,6 +631,9 @@ impl BounceOutcome {
         );
         if let Some(h) = self.rebound_height {
             s += &format!("rebound_height    {} m\n", kick_core::sig(h));
+        }
+        if let Some(outside) = &self.outside_validity {
+            s += &format!("status            {}: {outside}\n", self.status.name());
         }
         s
     }

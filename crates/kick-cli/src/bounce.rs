@@ -31,6 +31,9 @@ impl kick_study::Printable for Report {
     fn text(&self) -> String {
         self.0.text()
     }
+    fn outside_validity(&self) -> Option<String> {
+        self.0.outside_validity.as_ref().map(|o| o.to_string())
+    }
 }
 
 /// Bounce, with a refusal naming the flags the user gave (the library's
@@ -41,6 +44,11 @@ pub fn bounce(spec: &BounceSpec) -> Result<Report, String> {
             KickError::InvalidParameter { name, .. } => vec![*name],
             KickError::DoesNotApply { given, .. } => vec![*given],
             KickError::OutOfRange { parameters, .. } => parameters.split(", ").collect(),
+            // Resting on the plate: the impact speed given was too low to rebound.
+            KickError::Trapped { .. } => match spec.build() {
+                Ok(b) if b.drop_height.is_some() => vec!["drop_height"],
+                _ => vec!["speed"],
+            },
             _ => Vec::new(),
         };
         let flags: Vec<String> = names.iter().filter_map(|n| kick_bounce::parameter(n).ok()).map(|p| p.flag()).collect();

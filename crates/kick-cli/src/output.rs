@@ -36,7 +36,10 @@ impl Out {
         }
     }
 
-    /// `value` as text or JSON, then the files it wrote on stderr.
+    /// `value` as text or JSON, then the files it wrote on stderr. A result
+    /// outside its contact law's validity is printed whole (its status
+    /// says so) and then is an error: the command exits 1, as a fit that did
+    /// not converge does, so no script takes it for an ordinary result.
     pub fn print<T: Printable>(&mut self, format: Format, value: &T) -> CliResult {
         let text = match format {
             Format::Text => value.text(),
@@ -47,7 +50,10 @@ impl Out {
         for path in value.written() {
             note(&format!("wrote {}", path.display()));
         }
-        Ok(())
+        match value.outside_validity() {
+            Some(why) => Err(format!("the result above is {why}")),
+            None => Ok(()),
+        }
     }
 }
 

@@ -151,6 +151,28 @@ fn parameter_table(page: &mut String, list: &[ParameterDef]) {
 }
 
 /// `paper/reference/parameters.md` from the declared lists.
+/// Where each contact law holds (`kick_core::LawKind::validity`), and what
+/// a result outside it is.
+fn law_validity(page: &mut String) {
+    page.push_str(
+        "### Where each law holds
+
+         Each law holds up to a compression, a fraction of the ball's radius R (the shell ball's own; the 1D \
+         model's other laws take the default ball's 0.11 m). A contact that goes deeper is solved, but its \
+         numbers are the law's, not a ball's: its status is 4, `outside validity` (`kick_core::Status`). A row \
+         of a result file, a sweep or a `_many` function keeps its numbers with that status and the reason \
+         (`/failures`, `failure_message`); `kick simulate`, `simulate3d` and `bounce` print the result with its \
+         status and exit 1; Python's single calls return it with `status` and warn \
+         (`kick.OutsideValidityWarning`). kick-3d refuses a compression past R outright (status 3).\n\n\
+         | law | holds while | why | also assumes (not checked) |\n| --- | --- | --- | --- |\n",
+    );
+    for law in kick_core::LawKind::SELECTABLE {
+        let v = law.validity();
+        let _ = writeln!(page, "| `{}` | δ_max ≤ {} | {} | {} |", law.name(), v.limit, v.why, v.assumes);
+    }
+    page.push('\n');
+}
+
 pub fn parameters() -> String {
     let mut page = String::from(
         "# Declared parameters\n\n\
@@ -171,6 +193,7 @@ pub fn parameters() -> String {
          (`kick_core::LawKind`): {}.\n",
         kick_core::LawKind::NAMES
     );
+    law_validity(&mut page);
     page.push_str(
         "## The flight (`kick_flight::FLIGHT_PARAMETERS`)\n\n\
          The flight's parameters have a name space of their own (its `gravity` is g, the 3D kick's a switch).\n\n",

@@ -58,7 +58,7 @@ pub fn undamped_return(scenario: &Scenario, end: CompressionEnd) -> Result<Outco
             return Err(KickError::Trapped {
                 time: end.max_compression_time,
                 reason: format!(
-                    "at maximum compression U(δ_max) − (μ/m_f) F_drive δ_max = ½μV0² − D = {} J < 0, \
+                    "the ball never leaves the foot, no separation: at maximum compression U(δ_max) − (μ/m_f) F_drive δ_max = ½μV0² − D = {} J < 0, \
                      so the ball turns back before release",
                     kick_core::short(released)
                 ),

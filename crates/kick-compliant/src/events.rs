@@ -822,7 +822,7 @@ fn check_release<L: ContactLaw>(scenario: &Scenario, law: &L, max_compression: f
         return Err(KickError::Trapped {
             time: t,
             reason: format!(
-                "at maximum compression the stored energy U(δ_max) = {} J is below the \
+                "the ball never leaves the foot, no separation: at maximum compression the stored energy U(δ_max) = {} J is below the \
                  drive's share (μ/m_f) F_drive δ_max = {} J, so the ball turns back before release",
                 kick_core::short(stored),
                 kick_core::short(drive_share * max_compression)

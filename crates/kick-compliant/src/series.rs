@@ -640,17 +640,17 @@ impl Series {
             KickError::Integration { time: tau, reason } => KickError::Integration { time: tau * time, reason },
             e => e,
         };
-        let compression = match compress(&scaled, self.tolerance).map_err(in_seconds)? {
-            Ok(c) => c,
-            Err(tau) => {
-                return Err(KickError::Trapped {
+        let compression =
+            match compress(&scaled, self.tolerance).map_err(in_seconds)? {
+                Ok(c) => c,
+                Err(tau) => return Err(KickError::Trapped {
                     time: tau * time,
-                    reason: "while compressing, ½μδ̇² + U(δ) − (μ/m_f)F_drive δ fell below zero, \
+                    reason:
+                        "the ball never leaves the foot, no separation: while compressing, ½μδ̇² + U(δ) − (μ/m_f)F_drive δ fell below zero, \
                              so the ball cannot get back to δ = 0 (the drive keeps it pressed)"
-                        .into(),
-                })
-            }
-        };
+                            .into(),
+                }),
+            };
         let max_compression = compression.x_max * length;
         let stored = kick_core::ContactLaw::potential(&law, max_compression);
         let end = CompressionEnd {

@@ -199,7 +199,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, tolerance: f64) -> Result<Out
         if proves_trapped(-energy, stored.max(drive_share * delta)) {
             return Err(KickError::Trapped {
                 time: t,
-                reason: "½μδ̇² + U(δ) − (μ/m_f)F_drive δ fell below zero, so the ball cannot get back to δ = 0 \
+                reason: "the ball never leaves the foot, no separation: ½μδ̇² + U(δ) − (μ/m_f)F_drive δ fell below zero, so the ball cannot get back to δ = 0 \
                          (the drive keeps it pressed)"
                     .into(),
             });

@@ -18,9 +18,10 @@ pub enum KickError {
         short(*.ball_speed)
     )]
     NoContact { foot_speed: f64, ball_speed: f64 },
-    /// Proven: the ball never leaves the foot (a drive keeps it pressed).
-    /// `time` is where the proof was made.
-    #[error("trapped: the ball never leaves the foot, no separation ({reason}; proven at t = {} s)", short(*.time))]
+    /// Proven: the ball never leaves the foot (a drive keeps it pressed) or,
+    /// in a bounce, the plate (its weight holds it). `reason` says which
+    /// and why; `time` is where the proof was made.
+    #[error("trapped: {reason} (proven at t = {} s)", short(*.time))]
     Trapped { time: f64, reason: String },
     /// Still in contact when a solver's limit ran out (its time horizon, its
     /// step budget): a numerical limit, not a proof that the ball is trapped.
@@ -110,7 +111,7 @@ pub enum KickError {
 pub enum Status {
     /// The ball left the foot; there is an outcome.
     Separated,
-    /// Proven that the ball never leaves the foot: a physical outcome.
+    /// Proven that the ball never leaves the foot (or, bouncing, the plate): a physical outcome.
     Trapped,
     /// A numerical limit ended the run (step too large, integration
     /// failure, non-finite state, horizon or step budget reached without a
@@ -119,11 +120,16 @@ pub enum Status {
     /// The input or request was refused (invalid parameter, no contact,
     /// unknown or inapplicable solver, history beyond its limit).
     Refused,
+    /// Solved, but outside the region where the contact law holds
+    /// ([`crate::validity`]: the shell ball compressed past R/2, any other
+    /// law past R): the outcome's numbers are kept and flagged, never
+    /// reported as an ordinary result.
+    OutsideValidity,
 }
 
 impl Status {
     /// Every status, in code order.
-    pub const ALL: [Status; 4] = [Status::Separated, Status::NumericalFailure, Status::Trapped, Status::Refused];
+    pub const ALL: [Status; 5] = [Status::Separated, Status::NumericalFailure, Status::Trapped, Status::Refused, Status::OutsideValidity];
 
     pub fn of<T>(result: &Result<T, KickError>) -> Status {
         match result {
@@ -138,7 +144,13 @@ impl Status {
             Status::NumericalFailure => 1,
             Status::Trapped => 2,
             Status::Refused => 3,
+            Status::OutsideValidity => 4,
         }
+    }
+    /// Whether a row of this status keeps its outcome's numbers (separated,
+    /// or outside the law's validity); the others have none.
+    pub fn has_outcome(self) -> bool {
+        matches!(self, Status::Separated | Status::OutsideValidity)
     }
     pub fn name(self) -> &'static str {
         match self {
@@ -146,6 +158,7 @@ impl Status {
             Status::Trapped => "trapped",
             Status::NumericalFailure => "numerical failure",
             Status::Refused => "refused",
+            Status::OutsideValidity => "outside validity",
         }
     }
 }

@@ -21,6 +21,7 @@ pub mod scenario;
 pub mod shell;
 pub mod special;
 pub mod threads;
+pub mod validity;
 
 pub use error::{KickError, Status};
 pub use law::{ContactLaw, PowerLawContact};
@@ -34,6 +35,7 @@ pub use parameters::{Level, ParameterDef, SetLaw, SetParameter, Value, PARAMETER
 pub use scenario::{Parameter, Scenario, ScenarioSpec};
 pub use shell::ShellBall;
 use std::ops::ControlFlow;
+pub use validity::{OutsideValidity, Validity};
 
 /// Standard gravity of every model level that has gravity (kick-3d's scene,
 /// kick-flight), m/s².

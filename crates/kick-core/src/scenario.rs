@@ -450,6 +450,17 @@ impl Scenario {
         self.contact.kind()
     }
 
+    /// Whether `outcome`, a contact of this scenario, stayed where its law
+    /// holds ([`crate::validity`]); R is the shell ball's radius, else the
+    /// default ball's (the 1D model's own laws carry none).
+    pub fn check_validity(&self, outcome: &crate::Outcome) -> Result<(), crate::OutsideValidity> {
+        let radius = match self.contact {
+            AnyLaw::Shell(ball) => ball.radius,
+            _ => crate::DEFAULT_BALL_RADIUS,
+        };
+        crate::validity::check(self.law_kind(), radius, outcome.max_compression)
+    }
+
     /// Target restitution of a law other than the paper's.
     pub fn restitution_target(&self) -> Option<f64> {
         self.restitution_target

@@ -30,8 +30,11 @@
 //! flat patch is the pressure term above, and the shell's bending is the
 //! small correction k_s.
 //!
-//! Valid while the patch is small against the ball (δ ≲ R/2); the formulas
-//! stay finite and repulsive up to δ → 2R, where V → 0 and P → ∞.
+//! Valid while the patch is small against the ball, δ ≤ R/2 (`LawKind::validity`,
+//! [`crate::validity`]); the formulas stay finite and repulsive up to δ → 2R,
+//! where V → 0 and P → ∞, but a result past R/2 is flagged outside the
+//! law's validity (status 4) by every front end and file, never reported as
+//! a ball's.
 
 use crate::error::KickError;
 use crate::law::ContactLaw;

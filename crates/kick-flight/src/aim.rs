@@ -206,6 +206,9 @@ pub enum AimError {
         short(*miss), if *wall_clearance >= 0.0 { "cleared" } else { "hit" }, short(wall_clearance.abs())
     )]
     NoSolution { miss: f64, wall_clearance: f64, starts: usize },
+    /// The caller's cancel check said stop (Python's Ctrl-C).
+    #[error("cancelled by the caller")]
+    Cancelled,
 }
 
 /// What one trial launch gives: the flight, or an error that ends the start.
@@ -358,6 +361,8 @@ pub fn aim_with(scene: &Scene, free: &[Free], restarts: &[Vec<f64>], launch: &La
         let checked = launch(&values).and_then(|flight| Ok((trial(scene, &flight)?, flight)));
         let (t, flight) = match checked {
             Ok(found) => found,
+            // No further start once the caller asked to stop.
+            Err(AimError::Cancelled) => return Err(AimError::Cancelled),
             Err(e) => {
                 failure = Some(e);
                 continue;
@@ -478,6 +483,18 @@ pub fn check_unique<T: PartialEq + Copy>(free: &[T], name: impl Fn(T) -> &'stati
 /// otherwise speed 25 m/s, elevation 15°, azimuth toward the target, spin 0).
 /// `fixed` may not set `launch_velocity` or `distance` (the target sets the plane).
 pub fn aim_launch(target: [f64; 3], wall: Wall, free: &[LaunchFree], fixed: &crate::FlightSpec) -> Result<AimSolution, AimError> {
+    aim_launch_cancellable(target, wall, free, fixed, &|| false)
+}
+
+/// [`aim_launch`], asking `cancel` before every trial flight: once it says
+/// yes, the solve ends with [`AimError::Cancelled`] (Python's Ctrl-C).
+pub fn aim_launch_cancellable(
+    target: [f64; 3],
+    wall: Wall,
+    free: &[LaunchFree],
+    fixed: &crate::FlightSpec,
+    cancel: &dyn Fn() -> bool,
+) -> Result<AimSolution, AimError> {
     check_unique(free, LaunchFree::name)?;
     if let Some(v) = fixed.launch_velocity {
         return Err(AimError::Invalid {
@@ -538,6 +555,9 @@ pub fn aim_launch(target: [f64; 3], wall: Wall, free: &[LaunchFree], fixed: &cra
         .collect();
     let base = crate::FlightSpec { spin: Some(spin), ..*fixed };
     let launch = move |values: &[f64]| -> Result<Flight, AimError> {
+        if cancel() {
+            return Err(AimError::Cancelled);
+        }
         let mut spec = base;
         let mut w = spin;
         for (&p, &v) in free.iter().zip(values) {

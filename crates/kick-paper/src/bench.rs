@@ -276,6 +276,12 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
 /// sweep throughput (one run, one binary); write work_precision.h5, its
 /// figure and, if asked, the Markdown section. Progress lines go to `log`.
 pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, String> {
+    // Reads nothing: the files themselves are checked before the minutes of timing.
+    let data = args.out.join("work_precision.h5");
+    let mut targets = vec![crate::output::Target::File { flag: "--out", path: &data }];
+    targets.extend(args.report.as_deref().map(|path| crate::output::Target::File { flag: "--report", path }));
+    targets.extend(args.solvers_report.as_deref().map(|path| crate::output::Target::File { flag: "--solvers-report", path }));
+    crate::output::check_paths(&targets, &[]).map_err(|e| e.to_string())?;
     let cases = precision::cases().map_err(|e| e.to_string())?;
     let mut ladder = precision::ladder();
     let min_time = if args.quick { 0.02 } else { args.min_time };

@@ -316,7 +316,8 @@ pub fn save_grid(dir: &Path, name: &str, title: &str, layout: (usize, usize), pa
     let svg = Staged::begin(&dir.join(format!("{name}.svg")))?;
     draw_grid(png_backend(png.temporary())?.into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
     draw_grid(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
-    Ok(vec![png.commit()?, svg.commit()?])
+    // The two forms of one figure: both or neither.
+    Ok(crate::output::commit_all(vec![png, svg])?)
 }
 
 fn column<'a>(columns: &'a [(Column, Vec<f64>)], name: &str, path: &Path) -> Result<&'a [f64], FigureError> {
@@ -425,7 +426,9 @@ fn force_histories(path: &Path, parameter: &str, label: impl Fn(f64) -> String) 
     let values = data.parameter(parameter)?.to_vec();
     let mut series = Vec::new();
     for (row, v) in values.iter().enumerate() {
-        if data.sets[0].status.get(row) != Some(&0) {
+        // Rows with an outcome: separated, or outside the law's validity (numbers kept).
+        let has_outcome = |code: &u8| kick_core::Status::ALL.iter().any(|s| s.code() == *code && s.has_outcome());
+        if !data.sets[0].status.get(row).is_some_and(has_outcome) {
             continue;
         }
         let h = read_history(path, "", row)?;
@@ -694,7 +697,8 @@ pub fn figure7(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> 
     let svg = Staged::begin(&out.join("figure7.svg"))?;
     draw_bars(png_backend(png.temporary())?.into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
     draw_bars(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
-    Ok(vec![png.commit()?, svg.commit()?])
+    // The two forms of one figure: both or neither.
+    Ok(crate::output::commit_all(vec![png, svg])?)
 }
 
 /// A figure: its name and the function drawing it.

@@ -58,6 +58,33 @@ impl Default for ReproduceSettings {
     }
 }
 
+/// The pages written beside the report, with their titles in its list of sections.
+pub const SECTIONS: [(&str, &str); 9] = [
+    ("solvers.md", "Solvers of the 1D model: precision, trust regions"),
+    (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
+    ("3d.md", "Off-center 3D kicks: spin, friction, launch direction, the speed–spin trade-off"),
+    ("flight.md", "Ball flight: free kicks from the 3D kick, deflection at 25 m"),
+    ("ball.md", "The ball alone: restitution, contact time and compression against impact speed"),
+    ("leg.md", "Effective mass of the articulated leg"),
+    ("laws.md", "Contact laws compared"),
+    ("identification.md", "Parameter identification and identifiability"),
+    ("validation.md", "Validation: the model beside published measurements"),
+];
+
+/// Before any step: nothing the reproduction writes (the report and the
+/// pages beside it, anything in the results folder) is a file it reads
+/// (every file below the experiments folder), by `kick_store::output::check_paths`.
+pub fn check_paths(args: &ReproduceSettings) -> Result<(), String> {
+    let inputs: Vec<PathBuf> = crate::compare::files_below(&args.experiments, &[]).into_iter().map(|f| args.experiments.join(f)).collect();
+    let reads: Vec<&Path> = inputs.iter().map(PathBuf::as_path).collect();
+    crate::output::check_output(&args.report, "--report", "md", &reads).map_err(|e| e.to_string())?;
+    let report_dir = args.report.parent().unwrap_or(Path::new(""));
+    let pages: Vec<PathBuf> = SECTIONS.iter().map(|(page, _)| report_dir.join(page)).collect();
+    let mut writes: Vec<crate::output::Target> = pages.iter().map(|path| crate::output::Target::File { flag: "--report", path }).collect();
+    writes.push(crate::output::Target::Folder { flag: "--out", path: &args.out });
+    crate::output::check_paths(&writes, &reads).map_err(|e| e.to_string())
+}
+
 /// What a reproduction did.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct Reproduction {
@@ -480,18 +507,7 @@ impl Call {
                 let mut text = crate::report::render(&args.out, &relative(&report_dir, &args.out.join("figures")), checks)
                     .map_err(|e| e.to_string())?;
                 // Point the report at the sections written beside it.
-                let sections = [
-                    ("solvers.md", "Solvers of the 1D model: precision, trust regions"),
-                    (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
-                    ("3d.md", "Off-center 3D kicks: spin, friction, launch direction, the speed–spin trade-off"),
-                    ("flight.md", "Ball flight: free kicks from the 3D kick, deflection at 25 m"),
-                    ("ball.md", "The ball alone: restitution, contact time and compression against impact speed"),
-                    ("leg.md", "Effective mass of the articulated leg"),
-                    ("laws.md", "Contact laws compared"),
-                    ("identification.md", "Parameter identification and identifiability"),
-                    ("validation.md", "Validation: the model beside published measurements"),
-                ];
-                let present: Vec<String> = sections
+                let present: Vec<String> = SECTIONS
                     .iter()
                     .filter(|(file, _)| report_dir.join(file).exists())
                     .map(|(file, title)| format!("- [{title}]({file})"))
@@ -516,6 +532,7 @@ impl Call {
 /// `log` gets what each call reports, under the command line that makes
 /// the same files alone ([`Call::command`]).
 pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reproduction, String> {
+    check_paths(args)?;
     let mut state = State::default();
     for step in selected(args)? {
         for call in &step.calls {

@@ -66,7 +66,7 @@ pub(crate) fn library_error(e: impl WithStatus) -> PyErr {
     match e.status() {
         Status::Refused => PyValueError::new_err(e.to_string()),
         Status::NumericalFailure => NumericalError::new_err(e.to_string()),
-        Status::Separated | Status::Trapped => PyRuntimeError::new_err(e.to_string()),
+        Status::Separated | Status::Trapped | Status::OutsideValidity => PyRuntimeError::new_err(e.to_string()),
     }
 }
 

@@ -12,11 +12,12 @@
 //!                        git_dirty, experiment, experiment_file, experiment_text,
 //!                        solver, solver_settings, ...), layout, layout_version, rows
 //! /parameters/<name>     f64[rows], attribute units
-//! /outcomes/<name>       f64[rows] of the first solver (NaN where status != 0)
+//! /outcomes/<name>       f64[rows] of the first solver (NaN where the status has no
+//!                        outcome: 1, 2, 3)
 //! /outcomes/status       u8[rows]: kick_core::Status codes (0 separated, 1 numerical
-//!                        failure, 2 trapped, 3 refused)
-//! /failures/index        u64[f]: rows that failed
-//! /failures/message      string[f]: their error messages
+//!                        failure, 2 trapped, 3 refused, 4 outside validity)
+//! /failures/index        u64[f]: rows whose status is not 0
+//! /failures/message      string[f]: why (the error, or the validity the row left)
 //! /histories/<row>/<name>  time histories of that row (when recorded)
 //! /solvers/<solver>/...  outcomes, failures and histories of every further solver
 //! /scenario_names        string[rows] (named scenarios only)
@@ -65,8 +66,47 @@ pub enum H5Error {
     Output(#[from] OutputError),
 }
 
+impl H5Error {
+    /// An HDF5 error on the file `path`, its message in plain words ([`plain`]).
+    pub fn hdf5(path: &Path, error: &hdf5::Error) -> H5Error {
+        H5Error::Hdf5 { path: path.to_path_buf(), message: plain(&error.to_string()) }
+    }
+}
+
 fn h5err(path: &Path) -> impl Fn(hdf5::Error) -> H5Error + '_ {
-    move |e| H5Error::Hdf5 { path: path.to_path_buf(), message: e.to_string() }
+    move |e| H5Error::hdf5(path, &e)
+}
+
+/// HDF5's message in words for the user: a failed system call says what
+/// the system said (a full disk as such), never HDF5's internals (the
+/// function stack, buffer addresses, "bytes actually written =
+/// 18446744073709551615"); anything else loses the `H5X...(): ` prefixes.
+pub fn plain(message: &str) -> String {
+    let field = |name: &str| {
+        let start = message.find(name)? + name.len();
+        let rest = &message[start..];
+        Some(rest[..rest.find([',', '\n']).unwrap_or(rest.len())].trim().trim_matches('\'').to_string())
+    };
+    if let Some(errno) = field("errno = ").and_then(|e| e.parse::<i32>().ok()) {
+        let said = field("error message = ").unwrap_or_else(|| std::io::Error::from_raw_os_error(errno).to_string());
+        return match errno {
+            libc::ENOSPC | libc::EDQUOT => {
+                format!("the file system is full ({said}); the file was not written (free space or write elsewhere)")
+            }
+            libc::EFBIG => format!("the file would be larger than allowed ({said}); the file was not written"),
+            _ => said,
+        };
+    }
+    // "H5Fopen(): unable to open file: ..." -> "unable to open file: ...".
+    let mut text = message.trim();
+    while let Some((head, tail)) = text.split_once("(): ") {
+        if head.starts_with("H5") && !head.contains(' ') {
+            text = tail;
+        } else {
+            break;
+        }
+    }
+    text.to_string()
 }
 
 fn layout(path: &Path, message: impl Into<String>) -> H5Error {
@@ -233,7 +273,7 @@ struct SetWriter {
     failures_written: usize,
     failure_count: u64,
     /// Rows per status code.
-    counts: [u64; 4],
+    counts: [u64; Status::ALL.len()],
 }
 
 /// Turn HDF5's file locking off for this process, before the library reads
@@ -289,6 +329,7 @@ impl kick_study::level::RowSink for SweepWriter {
         for (set, values) in row.outcomes.iter().enumerate() {
             match &row.failures[set] {
                 None => self.push_outcome(set, Ok(values))?,
+                Some(f) if f.status.has_outcome() => self.push_flagged_outcome(set, values, f.status, &f.message)?,
                 Some(f) => self.push_outcome(set, Err((f.status, &f.message)))?,
             }
         }
@@ -388,7 +429,7 @@ impl SweepWriter {
                 failures: Vec::new(),
                 failures_written: 0,
                 failure_count: 0,
-                counts: [0; 4],
+                counts: [0; Status::ALL.len()],
             });
         }
         Ok(SweepWriter {
@@ -433,6 +474,20 @@ impl SweepWriter {
     /// of a failed solve with its status (stored as NaN values, the status
     /// code and the message).
     pub fn push_outcome(&mut self, set: usize, outcome: Result<&[f64], (Status, &str)>) -> Result<(), H5Error> {
+        match outcome {
+            Ok(values) => self.push(set, Some(values), Status::Separated, None),
+            Err((status, message)) => self.push(set, None, status, Some(message)),
+        }
+    }
+
+    /// The current row's outcome in set `set`, its values kept but flagged
+    /// with a status that keeps them (outside the law's validity) and why.
+    pub fn push_flagged_outcome(&mut self, set: usize, values: &[f64], status: Status, message: &str) -> Result<(), H5Error> {
+        self.push(set, Some(values), status, Some(message))
+    }
+
+    /// Values (or NaN), the status, and the message of a row whose status is not 0.
+    fn push(&mut self, set: usize, values: Option<&[f64]>, status: Status, message: Option<&str>) -> Result<(), H5Error> {
         let row = self.rows();
         // Split borrows: the path only for messages, no copy per row.
         let (path, sets) = (&self.path, &mut self.sets);
@@ -440,8 +495,8 @@ impl SweepWriter {
         if writer.status_buffer.len() + self.rows_written + 1 != row {
             return Err(layout(path, format!("outcome set {set} pushed out of step with the parameters at row {row}")));
         }
-        match outcome {
-            Ok(values) => {
+        match values {
+            Some(values) => {
                 if values.len() != writer.columns.len() {
                     return Err(layout(
                         path,
@@ -451,30 +506,35 @@ impl SweepWriter {
                 for (buffer, &v) in writer.buffer.iter_mut().zip(values) {
                     buffer.push(v);
                 }
-                writer.status_buffer.push(0);
-                writer.counts[0] += 1;
             }
-            Err((status, message)) => {
+            None => {
                 for buffer in writer.buffer.iter_mut() {
                     buffer.push(f64::NAN);
                 }
-                writer.status_buffer.push(status.code());
-                writer.counts[usize::from(status.code()).min(3)] += 1;
-                writer.failures.push(((row - 1) as u64, varlen(path, message)?));
                 writer.failure_count += 1;
             }
+        }
+        writer.status_buffer.push(status.code());
+        writer.counts[usize::from(status.code())] += 1;
+        if let Some(message) = message {
+            writer.failures.push(((row - 1) as u64, varlen(path, message)?));
         }
         Ok(())
     }
 
     /// Rows so far of set `set` per status code (`kick_core::Status`).
-    pub fn status_counts(&self, set: usize) -> [u64; 4] {
-        self.sets.get(set).map_or([0; 4], |s| s.counts)
+    pub fn status_counts(&self, set: usize) -> [u64; Status::ALL.len()] {
+        self.sets.get(set).map_or([0; Status::ALL.len()], |s| s.counts)
     }
 
-    /// Failed rows so far in each set.
+    /// Failed rows so far in each set: rows without values.
     pub fn failure_counts(&self) -> Vec<u64> {
         self.sets.iter().map(|s| s.failure_count).collect()
+    }
+
+    /// Rows so far in each set whose values are flagged outside their law's validity.
+    pub fn outside_validity_counts(&self) -> Vec<u64> {
+        self.sets.iter().map(|s| s.counts[usize::from(Status::OutsideValidity.code())]).collect()
     }
 
     fn flush(&mut self) -> Result<(), H5Error> {
@@ -890,4 +950,28 @@ pub fn read_history(path: &Path, group: &str, row: usize) -> Result<Vec<(Column,
     let name = if group.is_empty() { format!("histories/{row:06}") } else { format!("{group}/histories/{row:06}") };
     let g = file.group(&name).map_err(h5err(path))?;
     read_columns(&g, path, &[])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::plain;
+
+    /// HDF5's own messages of a full disk (captured from `kick sweep` on a
+    /// 256 kB tmpfs) and of a missing file, in plain words.
+    #[test]
+    fn hdf5_messages_are_said_plainly() {
+        let full = "H5C_dest(): disable slist on flush dest failure failed: file write failed: time = Fri Nov 27 07:33:49 2026\n, \
+                    filename = '/tmp/tiny/s1300.8957-0.tmp.h5', file descriptor = 6, errno = 28, error message = 'No space left \
+                    on device', buf = 0x557dcfe12668, total write size = 2160, bytes this sub-write = 2160, bytes actually written = \
+                    18446744073709551615, offset = 0";
+        assert_eq!(
+            plain(full),
+            "the file system is full (No space left on device); the file was not written (free space or write elsewhere)"
+        );
+        let missing = "H5Fopen(): unable to open file: unable to open file: name = 'e.h5', errno = 2, error message = 'No such file \
+                       or directory', flags = 0, o_flags = 0";
+        assert_eq!(plain(missing), "No such file or directory");
+        assert_eq!(plain("H5Fopen(): unable to open file: file signature not found"), "unable to open file: file signature not found");
+        assert_eq!(plain("H5Dwrite(): H5D__write(): can't write data"), "can't write data");
+    }
 }

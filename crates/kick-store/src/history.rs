@@ -86,8 +86,7 @@ impl HistoryWriter {
                 for (name, unit, values) in &meta.fixed {
                     writer.column("fixed", &Column::new(name, unit), values).map_err(h5)?;
                 }
-                let group =
-                    h5::new_group(&file, "history").map_err(|e| h5(H5Error::Hdf5 { path: path.clone(), message: e.to_string() }))?;
+                let group = h5::new_group(&file, "history").map_err(|e| h5(H5Error::hdf5(&path, &e)))?;
                 let datasets = columns
                     .iter()
                     .map(|(n, u)| h5::extendable::<f64>(&group, n, u, CHUNK_ROWS, &path))
@@ -146,7 +145,7 @@ impl HistoryWriter {
                 dataset
                     .resize(end)
                     .and_then(|()| dataset.write_slice(column.as_slice(), start..end))
-                    .map_err(|e| h5(H5Error::Hdf5 { path: self.path.clone(), message: e.to_string() }))?;
+                    .map_err(|e| h5(H5Error::hdf5(&self.path, &e)))?;
                 column.clear();
             }
         }
@@ -210,6 +209,8 @@ pub fn open(request: &HistoryRequest, columns: &[(&str, &str)], meta: &HistoryMe
 /// A request for a history file (`--history FILE [--samples N | --interval DT]`),
 /// written by [`HistoryWriter`].
 pub fn request(path: &Path, samples: Option<usize>, interval: Option<f64>) -> Result<HistoryRequest, StoreError> {
+    // The commands that take `--history` read no file: only the path itself is checked.
+    crate::output::check_paths(&[crate::output::Target::File { flag: "--history", path }], &[])?;
     Ok(HistoryRequest::new(path, samples, interval, open)?)
 }
 

@@ -9,7 +9,7 @@
 //! (SI; `1` dimensionless, empty for text); a vector quantity is three 1-D
 //! columns `NAME_x`, `NAME_y`, `NAME_z`; a status is a `u8` of
 //! `kick_core::Status` codes (0 separated, 1 numerical failure, 2 trapped,
-//! 3 refused) with a `meaning` attribute; the root carries the provenance
+//! 3 refused, 4 outside validity) with a `meaning` attribute; the root carries the provenance
 //! (tool, tool_version, git_commit, git_dirty, experiment, experiment_file,
 //! experiment_text); no time stamps, so the same run writes the same bytes.
 
@@ -45,7 +45,7 @@ impl Layout {
 /// A table of rows: one row per scenario, kick or cell.
 pub const SWEEP: Layout = Layout {
     name: "sweep",
-    version: 2,
+    version: 3,
     written_by: "`kick run` (1D and 3D experiments, shards), `kick sweep`, `kick sweep3d`, `kick merge`, `kick laws`, `kick leg`, \
                  `kick reproduce` (free kicks, bench points); `kick_store::h5::SweepWriter`, filled by the one run loop \
                  `kick_study::level::run_rows`",
@@ -71,12 +71,17 @@ pub const SWEEP: Layout = Layout {
         (
             "/outcomes/<name>",
             "f64[rows]",
-            "the first set's outcome columns, NaN where its status is not 0: the 1D \
+            "the first set's outcome columns, NaN where its status has no outcome (1, 2, 3; a row outside its \
+                                           law's validity, 4, keeps its numbers): the 1D \
                                            model's `kick_core::OBSERVABLES`, the 3D model's `kick_3d::OBSERVABLES_3D`, a \
                                            flight's `kick_flight::OUTCOME_COLUMNS`",
         ),
         ("/outcomes/status", "u8[rows]", "kick_core::Status code of each row in the first set"),
-        ("/failures/index, /failures/message", "u64[f], string[f]", "row and message of every row whose status is not 0"),
+        (
+            "/failures/index, /failures/message",
+            "u64[f], string[f]",
+            "row and message of every row whose status is not 0 (why it failed, or which validity it left)",
+        ),
         (
             "/histories/<row:06>/<column>",
             "f64[samples]",
@@ -100,7 +105,9 @@ pub const SWEEP: Layout = Layout {
         ),
         ("/fixed/<name>", "f64[1 or 3]", "3D grids: every parameter not swept, as the kick was built"),
     ],
-    changes: "2: status codes are kick_core::Status in every table (1D failures were 1 whatever their cause); \
+    changes: "3: status 4, outside validity: a row whose contact went past where its law holds (the shell ball past \
+              R/2, another law past R) keeps its numbers and says why under /failures (such rows had status 0). \
+              2: status codes are kick_core::Status in every table (1D failures were 1 whatever their cause); \
               `kick sweep3d` writes this layout (it had its own, `sweep3d`, with [rows, 3] vectors and an `energy` group); \
               the root attribute `layout`.",
 };

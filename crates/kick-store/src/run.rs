@@ -34,6 +34,9 @@ pub struct RunSummary {
     pub scenarios: u64,
     /// Failed scenarios per solver, in the experiment's solver order.
     pub failures: Vec<(String, u64)>,
+    /// Scenarios per solver whose numbers are kept but lie outside their
+    /// contact law's validity (status 4), in the same order.
+    pub outside_validity: Vec<(String, u64)>,
 }
 
 pub use kick_study::level::one_d::{outcome_columns, outcome_set, parameter_columns};
@@ -273,11 +276,12 @@ pub fn fill_table<L: Level + ?Sized>(level: &L, rows: Range<u64>, writer: &mut S
 /// Close the table and count each set's rows without values.
 pub fn finish_table<L: Level + ?Sized>(level: &L, writer: SweepWriter, bar: &ProgressBar) -> Result<RunSummary, RunError> {
     bar.finish_and_clear();
-    let names = level.outcome_sets().into_iter().map(|s| s.solver);
-    let failures = names.zip(writer.failure_counts()).collect();
+    let names: Vec<String> = level.outcome_sets().into_iter().map(|s| s.solver).collect();
+    let failures = names.iter().cloned().zip(writer.failure_counts()).collect();
+    let outside_validity = names.into_iter().zip(writer.outside_validity_counts()).collect();
     let scenarios = writer.rows() as u64;
     let path = writer.finish()?;
-    Ok(RunSummary { path, scenarios, failures })
+    Ok(RunSummary { path, scenarios, failures, outside_validity })
 }
 
 /// What `kick_store::shard::run_file` did: the file given, the result file and the counts.
@@ -290,7 +294,16 @@ pub struct RunReport {
 
 impl crate::Printable for RunReport {
     fn text(&self) -> String {
-        let failures: Vec<String> = self.summary.failures.iter().map(|(solver, n)| format!("{solver}: {n} failed")).collect();
+        let failures: Vec<String> = self
+            .summary
+            .failures
+            .iter()
+            .zip(&self.summary.outside_validity)
+            .map(|((solver, n), (_, outside))| match outside {
+                0 => format!("{solver}: {n} failed"),
+                _ => format!("{solver}: {n} failed, {outside} outside the law's validity"),
+            })
+            .collect();
         format!(
             "{}: {} scenarios -> {} ({}; {} s)\n",
             self.file.display(),

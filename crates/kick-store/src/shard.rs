@@ -94,6 +94,9 @@ pub fn run_shard(experiment: &Experiment, shard: Shard, out_dir: &Path, show_pro
 pub fn run_file(file: &Path, out: &Path, shard: Option<&str>) -> Result<RunReport, StoreError> {
     let shard = shard.map(|given| Shard::parse(given, "--shard")).transpose()?;
     let experiment = crate::experiment::load(file)?;
+    let target = out.join(shard.map_or_else(|| format!("{}.h5", experiment.name), |s| s.file_name(&experiment.name)));
+    let read: Vec<&Path> = experiment.read.iter().map(PathBuf::as_path).collect();
+    crate::output::check_output(&target, "--out", "h5", &read)?;
     let started = std::time::Instant::now();
     let summary = match shard {
         None => crate::run::run(&experiment, out, true)?,
@@ -148,7 +151,7 @@ fn part_error(path: &Path, message: impl Into<String>) -> ShardError {
 }
 
 fn h5(path: &Path) -> impl Fn(hdf5::Error) -> ShardError + '_ {
-    move |e| part_error(path, e.to_string())
+    move |e| part_error(path, crate::h5::plain(&e.to_string()))
 }
 
 /// A type of the result layout, by name (so a float32 column says so).
@@ -479,7 +482,7 @@ struct Merger<'a> {
 
 impl Merger<'_> {
     fn err(&self) -> impl Fn(hdf5::Error) -> ShardError + '_ {
-        move |e| ShardError::H5(H5Error::Hdf5 { path: self.out.to_path_buf(), message: e.to_string() })
+        move |e| ShardError::H5(H5Error::hdf5(self.out, &e))
     }
 
     /// Group `path` ("" the root) of the first part, into `to`: groups,
@@ -826,7 +829,7 @@ mod tests {
                 let d = f.new_dataset::<f64>().shape((6, 3)).create("parameters/stiffness").unwrap();
                 d.write_raw(&[1.0; 18]).unwrap();
             }),
-            ("older layout", "layout sweep version 1, not `sweep` version 2", |f| {
+            ("older layout", "layout sweep version 1, not `sweep` version 3", |f| {
                 f.delete_attr("layout_version").unwrap();
                 f.new_attr::<u64>().create("layout_version").unwrap().write_scalar(&1u64).unwrap();
             }),

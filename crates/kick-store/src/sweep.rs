@@ -84,6 +84,8 @@ impl SweepTarget {
             Some(shard) => (shard.rows(samples), directory.join(shard.file_name(&name))),
             None => (0..samples, out.to_path_buf()),
         };
+        // Reads nothing: the file itself must be one to write.
+        crate::output::check_paths(&[crate::output::Target::File { flag: "--out", path: &path }], &[])?;
         Ok(SweepTarget { name, directory, samples, shard, rows, path })
     }
 
@@ -139,6 +141,7 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
         name: name.clone(),
         description: format!("random sweep of {} scenarios around the baseline (seed {})", settings.samples, settings.seed),
         path: PathBuf::from(format!("kick sweep (seed {})", settings.seed)),
+        read: Vec::new(),
         text,
         output: Output::Summary,
         flight: None,

@@ -41,7 +41,7 @@ pub(crate) fn run_part(
     let coordinates: Vec<(Column, &[f64])> = axes.into_iter().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
     write_grid(&file, &path, &coordinates)?;
     // Every parameter not swept, as the first cell was built with it.
-    let fixed = new_group(&file, "fixed").map_err(|e| H5Error::Hdf5 { path: path.clone(), message: e.to_string() })?;
+    let fixed = new_group(&file, "fixed").map_err(|e| H5Error::hdf5(&path, &e))?;
     let first = kicks.kick(0).map_err(|e| H5Error::Layout { path: path.clone(), message: e.to_string() })?;
     for (def, value) in first.parameter_values() {
         if grid.axes.iter().any(|a| a.parameter.name == def.name) {

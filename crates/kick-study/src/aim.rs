@@ -18,7 +18,7 @@ use crate::free_kick::{self, VERTICAL_OFFSET};
 use crate::printable::Printable;
 use kick_3d::KickSpec;
 use kick_core::number::{sig, vector};
-use kick_flight::aim::{aim_launch, aim_with, check_unique, AimError, AimSolution, Free, LaunchFree, Scene, Wall};
+use kick_flight::aim::{aim_launch_cancellable, aim_with, check_unique, AimError, AimSolution, Free, LaunchFree, Scene, Wall};
 use kick_flight::{Flight, FlightError, FlightParameter, FlightSpec};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -153,6 +153,12 @@ pub fn aim_error(error: AimError) -> StudyError {
 
 /// `kick aim`: solve `request` (see the module docs and [`kick_flight::aim`]).
 pub fn aim(request: &AimRequest) -> Result<AimReport, StudyError> {
+    aim_cancellable(request, &|| false)
+}
+
+/// [`aim`], asking `cancel` before every trial kick and flight: once it
+/// says yes the solve ends at once (Python's Ctrl-C, `kick.aim`).
+pub fn aim_cancellable(request: &AimRequest, cancel: &dyn Fn() -> bool) -> Result<AimReport, StudyError> {
     let target = request.target.ok_or(StudyError::Flag { flag: "target", message: "`target` is required (flag --target X,Y,Z)".into() })?;
     let wall = match request.wall {
         None => Wall::default(),
@@ -168,14 +174,14 @@ pub fn aim(request: &AimRequest) -> Result<AimReport, StudyError> {
             if request.kick != KickSpec::default() {
                 return Err(StudyError::Flag { flag: "from", message: "kick parameters (and --law) apply only with --from kick".into() });
             }
-            let solution = aim_launch(target, wall, &free, &request.flight).map_err(aim_error)?;
+            let solution = aim_launch_cancellable(target, wall, &free, &request.flight, cancel).map_err(aim_error)?;
             Ok(AimReport { from, solution, kick: None })
         }
-        AimFrom::Kick => aim_kick(target, wall, request),
+        AimFrom::Kick => aim_kick(target, wall, request, cancel),
     }
 }
 
-fn aim_kick(target: [f64; 3], wall: Wall, request: &AimRequest) -> Result<AimReport, StudyError> {
+fn aim_kick(target: [f64; 3], wall: Wall, request: &AimRequest, cancel: &dyn Fn() -> bool) -> Result<AimReport, StudyError> {
     let free = match &request.free {
         None => KickFree::ALL.to_vec(),
         Some(names) => names.iter().map(|n| KickFree::from_name(n)).collect::<Result<Vec<_>, _>>().map_err(aim_error)?,
@@ -246,6 +252,9 @@ fn aim_kick(target: [f64; 3], wall: Wall, request: &AimRequest) -> Result<AimRep
     };
     // The kick at a trial (foot speed, e, h, ψ) and its launch.
     let kick_of = |values: &[f64]| -> Result<(f64, kick_3d::Outcome3d, [f64; 3], [f64; 3]), AimError> {
+        if cancel() {
+            return Err(AimError::Cancelled);
+        }
         let value = |p: KickFree| free.iter().position(|&q| q == p).map_or_else(|| start(p), |i| values[i]);
         let (e, h, heading) = (value(KickFree::LateralOffset), value(KickFree::ContactDepth), value(KickFree::Heading));
         let mut spec = request.kick;

@@ -273,6 +273,10 @@ pub struct Experiment {
     pub description: String,
     /// The file as given on the command line.
     pub path: PathBuf,
+    /// Every file read to make it: the file itself and a Table 2 file it
+    /// names (`table2 = ...`); none for a `kick sweep`. A command writing
+    /// its results checks them against these (kick-store's `check_paths`).
+    pub read: Vec<PathBuf>,
     /// The file's full text (stored in every result file).
     pub text: String,
     /// What to record per row (1D histories; a 3D experiment's is [`Output::Summary`]).
@@ -557,10 +561,12 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     };
     let flight = flight::parse(&at, text, raw.flight.as_ref(), after)?;
     let compress = compression(&at, raw.compress.as_ref())?;
+    let read = std::iter::once(path.to_path_buf()).chain(raw.table2.as_ref().map(|t2| one_d::table2_path(path, t2.get_ref()))).collect();
     Ok(Experiment {
         name,
         description: raw.description.unwrap_or_default(),
         path: path.to_path_buf(),
+        read,
         text: text.to_string(),
         output,
         flight,
@@ -578,7 +584,9 @@ fn compression(at: &Locator, given: Option<&Spanned<toml::Value>>) -> Result<cra
         toml::Value::Boolean(false) => Ok(Compression::None),
         toml::Value::Boolean(true) => Compression::deflate(None, "compress").map_err(|e| e.to_string()),
         toml::Value::Integer(level) => Compression::deflate(Some(*level), "compress").map_err(|e| e.to_string()),
-        other => Err(format!("compress = {other}: expected a deflate level 1 (fastest) to 9 (smallest), or true")),
+        // A float in short form (toml prints 1e-300 with every zero).
+        toml::Value::Float(x) => Err(format!("compress = {}: expected a deflate level 1 (fastest) to 9 (smallest), or true", short(*x))),
+        other => Err(format!("compress = {}: expected a deflate level 1 (fastest) to 9 (smallest), or true", other.type_str())),
     }
     .map_err(|message| at.error(given.span(), "compress", message))
 }
@@ -728,6 +736,49 @@ mod tests {
 
     fn parse_text(text: &str) -> Result<Experiment, ExperimentError> {
         parse(Path::new("x.toml"), text)
+    }
+
+    /// Fault 13 of issue 33 and its kind: a number a file gives, however
+    /// extreme, is quoted in every message in short form (kick-core's
+    /// `short`), never as the 300-digit decimal `{}` prints for 1e-300.
+    /// Every numeric key of either level, the flight's and the grid's.
+    #[test]
+    fn extreme_numbers_are_quoted_short_in_every_message() {
+        let longest_digits = |m: &str| m.split(|c: char| !c.is_ascii_digit()).map(str::len).max().unwrap_or(0);
+        let scalars = |level| parameters::PARAMETERS.iter().filter(move |p| p.level == level && p.shape == parameters::Shape::Scalar);
+        let mut files: Vec<String> = vec![
+            "dt = {v}\nsolver = \"seed-rk4\"\n".into(),
+            "law = \"hunt-crossley\"\nrestitution = {v}\n".into(),
+            "compress = {v}\n".into(),
+            "[output]\nmode = \"history\"\ninterval = {v}\n".into(),
+            "[[sweep]]\nparameter = \"stiffness\"\nlog = { from = {v}, to = 1e6, count = 3 }\n".into(),
+            "[[sweep]]\nparameter = \"foot_mass\"\nvalues = [{v}]\n".into(),
+            "[[sweep]]\nparameter = \"offset\"\nlinear = { from = 0.0, to = {v}, count = 2 }\n".into(),
+        ];
+        files.extend(scalars(Level::Scenario).map(|p| format!("[base]\n{} = {{v}}\n", p.name)));
+        files.extend(
+            scalars(Level::Kick3d).chain(scalars(Level::Instep)).map(|p| format!("level = \"3d\"\n[kick3d]\n{} = {{v}}\n", p.name)),
+        );
+        files.extend(
+            kick_flight::FLIGHT_PARAMETERS
+                .iter()
+                .filter(|p| p.shape == parameters::Shape::Scalar)
+                .map(|p| format!("[flight]\n{} = {{v}}\n", p.name)),
+        );
+        let mut refused = 0;
+        for template in &files {
+            for v in ["1e-300", "-1e-300", "1e300", "-1e300", "4.9e-324"] {
+                let text = template.replace("{v}", v);
+                if let Err(e) = parse_text(&text) {
+                    refused += 1;
+                    let message = e.to_string();
+                    assert!(longest_digits(&message) <= 17, "{text}: {message}");
+                }
+            }
+        }
+        assert!(refused > files.len(), "the extremes must be refused somewhere: {refused}");
+        let e = parse_text("[output]\nmode = \"history\"\ninterval = 1e-300\n").unwrap_err();
+        assert!(e.message.contains("1e-300 s is too fine"), "{e}");
     }
 
     /// A file name that is not UTF-8 is refused naming it (lossy), 1D and

@@ -14,7 +14,8 @@
 //! implementing the trait.
 //!
 //! Statuses are [`Status`] codes in every table: 0 separated (an outcome),
-//! 1 numerical failure, 2 trapped, 3 refused.
+//! 1 numerical failure, 2 trapped, 3 refused, 4 outside the contact law's
+//! validity (an outcome whose numbers are kept, flagged: [`Row::flag`]).
 
 pub mod bounce;
 pub mod laws;
@@ -50,6 +51,12 @@ impl Failure {
     }
 }
 
+impl From<kick_core::OutsideValidity> for Failure {
+    fn from(e: kick_core::OutsideValidity) -> Failure {
+        Failure::new(Status::OutsideValidity, e.to_string())
+    }
+}
+
 impl From<kick_core::KickError> for Failure {
     fn from(e: kick_core::KickError) -> Failure {
         Failure::new(e.status(), e.to_string())
@@ -76,7 +83,8 @@ pub struct Row {
     pub parameters: Vec<f64>,
     /// Per outcome set, its values in its column order (NaN where it failed).
     pub outcomes: Vec<Vec<f64>>,
-    /// Per outcome set, why it has no values.
+    /// Per outcome set, why it has no values, or (a status that keeps
+    /// them, [`Status::has_outcome`]) why its values are flagged.
     pub failures: Vec<Option<Failure>>,
 }
 
@@ -103,6 +111,24 @@ impl Row {
     pub fn fail(&mut self, set: usize, failure: Failure) {
         self.outcomes[set].fill(f64::NAN);
         self.failures[set] = Some(failure);
+    }
+
+    /// Flag set `set`'s values, kept as they are, with a status that keeps
+    /// them (outside the law's validity); another status fails the set.
+    pub fn flag(&mut self, set: usize, flag: Failure) {
+        if flag.status.has_outcome() {
+            self.failures[set] = Some(flag);
+        } else {
+            self.fail(set, flag);
+        }
+    }
+
+    /// Flag set `set` (a flight chained after a kick) as the kick before
+    /// it was flagged, when it has values.
+    pub fn flag_after(&mut self, set: usize, kick: &Failure) {
+        if self.failures[set].is_none() {
+            self.flag(set, Failure::new(kick.status, format!("the kick before this flight: {}", kick.message)));
+        }
     }
 
     /// Set `set`'s result: its values or its failure.

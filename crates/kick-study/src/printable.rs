@@ -12,6 +12,22 @@ pub trait Printable: Serialize {
     fn written(&self) -> &[PathBuf] {
         &[]
     }
+    /// Why the result, printed whole, lies outside its contact law's
+    /// validity (`kick_core::validity`); front ends make it visible (the
+    /// command line prints it and exits 1, Python warns).
+    fn outside_validity(&self) -> Option<String> {
+        None
+    }
+}
+
+/// The `status` of a single result in its JSON, and why when it is
+/// outside its law's validity (the numbers are the law's, not a ball's).
+pub fn insert_status(object: &mut serde_json::Map<String, serde_json::Value>, outside: Option<&kick_core::OutsideValidity>) {
+    let status = if outside.is_some() { kick_core::Status::OutsideValidity } else { kick_core::Status::Separated };
+    object.insert("status".into(), serde_json::to_value(status).unwrap_or_default());
+    if let Some(o) = outside {
+        object.insert("outside_validity".into(), serde_json::to_value(o).unwrap_or_default());
+    }
 }
 
 /// Pretty JSON of a result.

@@ -101,9 +101,17 @@ pub fn outcome_json(scenario: &Scenario, solver: &str, outcome: &Outcome) -> Map
     object
 }
 
+impl Simulation {
+    /// Why the contact lies outside its law's validity, if it does.
+    pub fn outside_validity(&self) -> Option<kick_core::OutsideValidity> {
+        self.scenario.check_validity(&self.outcome).err()
+    }
+}
+
 impl Serialize for Simulation {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let mut object = outcome_json(&self.scenario, self.solver, &self.outcome);
+        crate::printable::insert_status(&mut object, self.outside_validity().as_ref());
         if let Some(f) = &self.flight {
             object.insert("flight".into(), serde_json::to_value(f).map_err(serde::ser::Error::custom)?);
         }
@@ -121,6 +129,9 @@ impl Printable for Simulation {
             let _ = writeln!(w, "{name:<24} {value:>12} {unit}");
         }
         let _ = writeln!(w, "{:<24} {:>12} J", "energy_residual", sig(o.energy.residual()));
+        if let Some(outside) = self.outside_validity() {
+            let _ = writeln!(w, "{:<24} {outside}", "status: outside validity");
+        }
         if let Some(f) = &self.flight {
             let _ = write!(w, "\nflight:\n{}", f.text());
         }
@@ -128,6 +139,9 @@ impl Printable for Simulation {
     }
     fn written(&self) -> &[PathBuf] {
         &self.written
+    }
+    fn outside_validity(&self) -> Option<String> {
+        Simulation::outside_validity(self).map(|o| o.to_string())
     }
 }
 
@@ -220,8 +234,16 @@ pub fn history3d(kick: &Kick3d, solver: &Solver3d, request: &HistoryRequest) -> 
     }
 }
 
+impl Simulation3d {
+    /// Why the kick lies outside its normal law's validity, if it does.
+    pub fn outside_validity(&self) -> Option<kick_core::OutsideValidity> {
+        self.kick.check_validity(&self.outcome).err()
+    }
+}
+
 /// The JSON object of one 3D run: the outcome (with `law`, the normal law's
-/// name), the energy residual and `law_parameters` (the law as solved).
+/// name), the energy residual, `law_parameters` (the law as solved) and
+/// the `status` ([`crate::printable::insert_status`]).
 impl Serialize for Simulation3d {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let o = &self.outcome;
@@ -231,6 +253,7 @@ impl Serialize for Simulation3d {
         };
         m.insert("energy_residual".into(), o.energy.residual().into());
         m.insert("law_parameters".into(), serde_json::to_value(self.kick.law()).map_err(serde::ser::Error::custom)?);
+        crate::printable::insert_status(&mut m, self.outside_validity().as_ref());
         if let Some(f) = &self.flight {
             m.insert("flight".into(), serde_json::to_value(f).map_err(serde::ser::Error::custom)?);
         }
@@ -263,6 +286,9 @@ impl Printable for Simulation3d {
             let _ = writeln!(w, "{name:<24} {:>12} {unit}", sig(value));
         }
         let _ = writeln!(w, "{:<24} {:>12}", "evaluations", o.evaluations);
+        if let Some(outside) = self.outside_validity() {
+            let _ = writeln!(w, "{:<24} {outside}", "status: outside validity");
+        }
         if let Some(f) = &self.flight {
             let _ = write!(w, "\nflight:\n{}", f.text());
         }
@@ -270,6 +296,9 @@ impl Printable for Simulation3d {
     }
     fn written(&self) -> &[PathBuf] {
         &self.written
+    }
+    fn outside_validity(&self) -> Option<String> {
+        Simulation3d::outside_validity(self).map(|o| o.to_string())
     }
 }
 

@@ -108,3 +108,50 @@ fn bounce_out_of_range_names_its_own_flags() {
         assert!(err.contains(flag) && !err.contains("foot") && !err.contains("drive_force"), "{args:?}: {err}");
     }
 }
+
+/// Issue 33, fault 5: a result past its contact law's validity is printed
+/// whole with its status and ends in exit 1 with the reason, never as an
+/// ordinary result. `kick bounce --speed 100` compresses the shell ball
+/// 0.114 m, past R/2 (and past R); `kick simulate --law shell --foot-speed
+/// 1e4` 0.218 m. A bounce within it keeps status `separated` and exit 0.
+#[test]
+fn a_result_outside_its_law_is_flagged_and_exits_1() {
+    for args in [
+        &["bounce", "--speed", "100", "--format", "json"][..],
+        &["simulate", "--law", "shell", "--foot-speed", "1e4", "--format", "json"][..],
+        &["simulate", "--stiffness", "1e4", "--foot-speed", "100", "--format", "json"][..],
+        &["simulate3d", "--law", "shell", "--foot-speed", "60", "--format", "json"][..],
+    ] {
+        let out = kick(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(j["status"], "outside_validity", "{args:?}");
+        let limit = j["outside_validity"]["largest"].as_f64().unwrap();
+        assert!(j["max_compression"].as_f64().unwrap() > limit, "{args:?}");
+        assert!(stderr.contains("outside the validity of law") && stderr.contains("exceeds"), "{args:?}: {stderr}");
+    }
+    let out = kick(&["bounce", "--speed", "100"]);
+    assert!(String::from_utf8_lossy(&out.stdout).contains("status            outside validity"));
+    let j = json(&["bounce", "--speed", "20", "--format", "json"]);
+    assert_eq!(j["status"], "separated");
+    assert!(j.get("outside_validity").is_none());
+}
+
+/// Issue 33, fault 12: a ball too slow to rebound rests on the plate; the
+/// refusal speaks of the plate and the ball's weight, names the flag given,
+/// and never of a foot or a drive, which a bounce has not.
+#[test]
+fn a_ball_that_stays_on_the_plate_is_said_in_the_bounce_s_terms() {
+    for args in [&["bounce", "--speed", "0.01", "--law", "power-law"][..], &["bounce", "--drop-height", "1e-6", "--law", "power-law"][..]] {
+        let out = kick(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{stderr}");
+        assert!(stderr.contains("never leaves the plate") && stderr.contains("weight"), "{stderr}");
+        let flag = if args.contains(&"--speed") { "(flag --speed)" } else { "(flag --drop-height)" };
+        assert!(stderr.contains(flag), "{stderr}");
+        for word in ["foot", "drive", "F_drive"] {
+            assert!(!stderr.contains(word), "`{word}` in {stderr}");
+        }
+    }
+}

@@ -260,3 +260,29 @@ fn a_large_run_states_its_size_first() {
     assert!(names(&dir).is_empty(), "{:?}", names(&dir));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Fault 15 of issue 33: a write the system refuses part way (here a file
+/// size limit, `ulimit -f`, the way a full disk refuses) says what happened
+/// and which file, in words: no HDF5 function names, buffer addresses or
+/// "bytes actually written = 18446744073709551615". Nothing is left behind.
+#[cfg(unix)]
+#[test]
+fn a_write_the_system_refuses_says_what_and_which_file() {
+    let dir = scratch("limit");
+    let out = dir.join("s.h5");
+    // SIGXFSZ ignored, so the write fails with EFBIG instead of killing kick.
+    let script = format!("trap '' XFSZ; ulimit -f 64; exec \"$0\" sweep --samples 3000 --threads 1 --out '{}'", out.display());
+    let output = Command::new("sh")
+        .args(["-c", &script, env!("CARGO_BIN_EXE_kick")])
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
+        .output()
+        .unwrap();
+    let message = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{message}");
+    assert!(message.contains(&out.display().to_string()) && message.contains("File too large"), "{message}");
+    for internal in ["H5", "bytes actually written", "buf =", "file descriptor", "errno"] {
+        assert!(!message.contains(internal), "`{internal}` in {message}");
+    }
+    assert!(names(&dir).is_empty(), "{:?}", names(&dir));
+    let _ = std::fs::remove_dir_all(&dir);
+}

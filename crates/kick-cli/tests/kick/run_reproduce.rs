@@ -181,3 +181,54 @@ fn reproduce_only_runs_the_named_steps() {
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("--only"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issue 33, faults 2 and 3, and their kind: nothing a command writes may
+/// be a file it reads, checked before any work. `reproduce --report` onto an
+/// experiment file (it used to be replaced by the Markdown report, exit 0),
+/// a results folder holding the experiments, `fit table2 --write` onto the
+/// `--scenarios` file read for `--out`, and `run --out` through a missing
+/// directory onto its own experiment file.
+#[test]
+fn no_command_writes_over_what_it_reads() {
+    let dir = scratch("inputs");
+    let experiments = dir.join("experiments");
+    std::fs::create_dir_all(&experiments).unwrap();
+    let figure1 = experiments.join("figure1.toml");
+    let text = std::fs::read("experiments/figure1.toml").or_else(|_| std::fs::read("../../experiments/figure1.toml")).unwrap();
+    std::fs::write(&figure1, &text).unwrap();
+    let (e, r) = (experiments.to_str().unwrap(), dir.join("results"));
+    let refused = |args: &[&str], says: &str| {
+        let out = kick(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains(says), "{args:?}: {stderr}");
+    };
+    let f1 = figure1.to_str().unwrap();
+    refused(&["reproduce", "--experiments", e, "--out", r.to_str().unwrap(), "--only", "report", "--report", f1], "`--report`");
+    let md = experiments.join("report.md");
+    refused(
+        &["reproduce", "--experiments", e, "--out", dir.to_str().unwrap(), "--only", "report", "--report", md.to_str().unwrap()],
+        "holds the input",
+    );
+    refused(&["reproduce", "--experiments", e, "--out", e, "--only", "report", "--report", md.to_str().unwrap()], "`--out`");
+    assert_eq!(std::fs::read(&figure1).unwrap(), text, "an experiment file was written over");
+    assert!(!md.exists() && !r.exists());
+
+    let t = dir.join("t.toml");
+    let table2 = std::fs::read("experiments/table2.toml").or_else(|_| std::fs::read("../../experiments/table2.toml")).unwrap();
+    std::fs::write(&t, &table2).unwrap();
+    let fits = dir.join("fits.h5");
+    refused(
+        &["fit", "table2", "--scenarios", t.to_str().unwrap(), "--write", t.to_str().unwrap(), "--out", fits.to_str().unwrap()],
+        "`--write`",
+    );
+    assert_eq!(std::fs::read(&t).unwrap(), table2);
+    assert!(!fits.exists());
+
+    let own = dir.join("own.h5");
+    std::fs::write(&own, "[[sweep]]\nparameter = \"damping\"\nvalues = [0.0, 120.0]\n").unwrap();
+    let through = dir.join("nodir").join("..");
+    refused(&["run", own.to_str().unwrap(), "--out", through.to_str().unwrap()], "is the input");
+    assert!(!dir.join("nodir").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -151,7 +151,9 @@ fn a_3d_experiment_runs_in_shards_and_merges() {
 }
 
 /// An output that is one of the inputs, or not `.h5`, is refused naming the
-/// argument, and the input is left as it was (issue 21).
+/// argument, and the input is left as it was (issue 21); also when it names
+/// the input through a directory that does not exist yet (issue 33, fault 1:
+/// `nodir/../PART` was created and the part replaced), and nothing is created.
 #[test]
 fn merge_refuses_an_output_that_would_replace_an_input() {
     let dir = scratch("overwrite");
@@ -166,7 +168,10 @@ fn merge_refuses_an_output_that_would_replace_an_input() {
     }
     let before = std::fs::read(&names[0]).unwrap();
     let toml = std::fs::read(&file).unwrap();
-    for (out, says) in [(names[0].as_str(), "is the input"), (file.to_str().unwrap(), "must end in `.h5`")] {
+    let through = format!("{}/nodir/../grid.shard-0-of-2.h5", parts.display());
+    for (out, says) in
+        [(names[0].as_str(), "is the input"), (file.to_str().unwrap(), "must end in `.h5`"), (through.as_str(), "is the input")]
+    {
         let done = kick(&["merge", out, &names[0], &names[1]]);
         assert_eq!(done.status.code(), Some(1), "{out}");
         let stderr = String::from_utf8_lossy(&done.stderr);
@@ -174,6 +179,7 @@ fn merge_refuses_an_output_that_would_replace_an_input() {
     }
     assert_eq!(std::fs::read(&names[0]).unwrap(), before);
     assert_eq!(std::fs::read(&file).unwrap(), toml);
+    assert!(!parts.join("nodir").exists(), "the refusal created the missing directory");
     // A directory where the file goes is refused before any row is solved.
     std::fs::create_dir_all(dir.join("whole/grid.h5")).unwrap();
     let done = kick(&["run", file.to_str().unwrap(), "--out", dir.join("whole").to_str().unwrap()]);

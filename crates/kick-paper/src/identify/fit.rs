@@ -51,7 +51,10 @@ pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, String> {
     let study = identifiability_study(&Scenario::baseline(), spread, points, map_points, 80, seed, &FitOptions::default()).map_err(text)?;
     let mut written = Vec::new();
     if let Some(dir) = out {
-        std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        // Reads nothing: the files themselves are checked.
+        let files = ["identifiability.h5", "identifiability.png", "identifiability.svg"].map(|f| dir.join(f));
+        crate::output::check_paths(&files.each_ref().map(|path| crate::output::Target::File { flag: "--out", path }), &[])
+            .map_err(|e| e.to_string())?;
         let command = format!("kick fit profile --spread {spread} --points {points} --map-points {map_points} --seed {seed}");
         let provenance = Provenance::now("identifiability", "kick fit profile (command line)", &command);
         let h5 = files::write_identifiability(&dir.join("identifiability.h5"), &provenance, &study)?;
@@ -126,8 +129,13 @@ pub struct Table2Fits {
 /// file (Brent roots); `out`: the fits (HDF5) beside the values of the
 /// scenario file `scenarios`.
 pub fn table2(write: Option<&Path>, out: Option<&Path>, scenarios: &Path) -> Result<Table2Fits, String> {
+    // The scenario file is read only for --out.
+    let reads: Vec<&Path> = out.map(|_| scenarios).into_iter().collect();
+    if let Some(path) = write {
+        crate::output::check_output(path, "--write", "toml", &reads).map_err(|e| e.to_string())?;
+    }
     if let Some(path) = out {
-        let inputs: Vec<&Path> = std::iter::once(scenarios).chain(write).collect();
+        let inputs: Vec<&Path> = reads.iter().copied().chain(write).collect();
         crate::output::check_output(path, "--out", "h5", &inputs).map_err(|e| e.to_string())?;
     }
     let mut written = Vec::new();
@@ -324,6 +332,11 @@ pub fn synthesize(out: &Path, name: &str, seed: u64, times: usize, truth: &Scena
     if name.is_empty() || name.contains(['/', '\\']) {
         return Err(format!("--name must be a plain file stem (got `{name}`)"));
     }
+    let csv = out.join(format!("{name}.csv"));
+    let toml_path = out.join(format!("{name}.toml"));
+    // Reads nothing; the two files are checked before the work.
+    let targets = [&csv, &toml_path].map(|path| crate::output::Target::File { flag: "--out", path });
+    crate::output::check_paths(&targets, &[]).map_err(|e| e.to_string())?;
     let scenario = truth.build().map_err(|e| e.to_string())?;
     let truth = ModelPoint::new(scenario, time_offset).map_err(text)?;
     let options = FitOptions::default();
@@ -331,12 +344,10 @@ pub fn synthesize(out: &Path, name: &str, seed: u64, times: usize, truth: &Scena
     let grid = synthetic::time_grid(&scenario, times, 1.2);
     let data = synthetic::history(&options.solver, &truth, grid, &sigma, seed).map_err(text)?;
     let history = data.history.ok_or("no history produced")?;
-    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    let csv = out.join(format!("{name}.csv"));
-    crate::output::write(&csv, history.data.to_csv()).map_err(|e| e.to_string())?;
-    let toml_path = out.join(format!("{name}.toml"));
     let spec = synthetic_spec(&truth, &format!("{name}.csv"), &sigma, seed, &toml_path);
-    crate::output::write(&toml_path, spec).map_err(|e| e.to_string())?;
+    // The data and the specification that reads it: both or neither.
+    let data = history.data.to_csv();
+    crate::output::write_all(&[(&csv, data.as_bytes()), (&toml_path, spec.as_bytes())]).map_err(|e| e.to_string())?;
     Ok(Synthesized { csv, spec: toml_path })
 }
 

@@ -33,6 +33,11 @@ pub struct LawsReport {
 
 /// The contact laws on Table 2's scenarios; with `out`, laws.h5 and its figure.
 pub fn laws(settings: &LawsSettings) -> Result<LawsReport, String> {
+    if let Some(dir) = &settings.out {
+        let files = ["laws.h5", "laws.png", "laws.svg"].map(|f| dir.join(f));
+        let targets = files.each_ref().map(|path| crate::output::Target::File { flag: "--out", path });
+        crate::output::check_paths(&targets, &[&settings.scenarios]).map_err(|e| e.to_string())?;
+    }
     let comparisons = comparisons(settings)?;
     let written = match &settings.out {
         Some(dir) => write(settings, &comparisons, dir)?,

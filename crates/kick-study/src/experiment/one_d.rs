@@ -9,7 +9,7 @@ use super::{
 use kick_compliant::table2::Table2File;
 use kick_compliant::SolverChoice;
 use kick_core::{short, Parameter, Scenario};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use toml::Spanned;
 
 /// The parameters of a 1D grid's axes: the eight [`Parameter`]s.
@@ -159,7 +159,7 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
         }
         Scenarios::Named { names, scenarios }
     } else if let Some(t2) = &raw.table2 {
-        let t2_path = path.parent().unwrap_or(Path::new(".")).join(t2.get_ref());
+        let t2_path = table2_path(path, t2.get_ref());
         let t2_text = kick_core::input::read_text(&t2_path, kick_core::input::MAX_TEXT_BYTES)
             .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
         let file = Table2File::parse(&t2_text).map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
@@ -204,7 +204,7 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
                             return Err(at.error(
                                 i.span(),
                                 "output.interval",
-                                format!("{v} s is too fine: more than {MAX_HISTORY_SAMPLES:e} samples per contact"),
+                                format!("{} s is too fine: more than {MAX_HISTORY_SAMPLES:e} samples per contact", short(v)),
                             ));
                         }
                     }
@@ -216,6 +216,11 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
     };
 
     Ok((Kicks1d { solvers, scenarios }, output))
+}
+
+/// The Table 2 file `table2 = "NAME"` of the experiment file `path` names: beside it.
+pub(super) fn table2_path(path: &Path, name: &str) -> PathBuf {
+    path.parent().unwrap_or(Path::new(".")).join(name)
 }
 
 pub(super) fn table2_experiment(path: &Path, text: &str, name: String, at: &Locator) -> Result<Experiment, ExperimentError> {
@@ -231,6 +236,7 @@ pub(super) fn table2_experiment(path: &Path, text: &str, name: String, at: &Loca
         name: if file.name.is_empty() { name } else { file.name.clone() },
         description: file.description.clone(),
         path: path.to_path_buf(),
+        read: vec![path.to_path_buf()],
         text: text.to_string(),
         output: Output::Summary,
         flight: None,

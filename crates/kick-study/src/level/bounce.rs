@@ -60,7 +60,12 @@ impl Level for BounceSpeeds {
         let speed = self.speeds[index as usize];
         row.parameters[0] = speed;
         match kick_bounce::run(&self.at(speed)) {
-            Ok(o) => row.set(0, &[o.restitution, o.contact_time, o.peak_force, o.max_compression, o.normal_impulse]),
+            Ok(o) => {
+                row.set(0, &[o.restitution, o.contact_time, o.peak_force, o.max_compression, o.normal_impulse]);
+                if let Some(outside) = o.outside_validity {
+                    row.flag(0, outside.into());
+                }
+            }
             Err(e) => row.fail(0, Failure::from(e)),
         }
     }
@@ -87,7 +92,7 @@ mod tests {
                     for (column, x) in table.outcomes[0].iter().zip(expected) {
                         assert_eq!(column[i].to_bits(), x.to_bits(), "row {i}");
                     }
-                    assert_eq!(table.status[0][i], 0);
+                    assert_eq!(table.status[0][i], o.status.code());
                 }
                 Err(e) => {
                     assert_eq!(table.status[0][i], e.status().code(), "row {i}");

@@ -58,17 +58,30 @@ impl OneD<'_> {
     }
 
     /// Solver `k`'s outcome and, with `[flight]`, the flight after it.
+    /// A kick outside its law's validity keeps its numbers, flagged, and so
+    /// does the flight after it.
     fn put_outcome(&self, k: usize, scenario: &Result<Scenario, KickError>, outcome: &Result<Outcome, KickError>, row: &mut Row) {
+        let outside = match (scenario, outcome) {
+            (Ok(s), Ok(o)) => s.check_validity(o).err().map(Failure::from),
+            _ => None,
+        };
         match outcome {
             Ok(o) => row.set(k, &o.observable_values()),
             Err(e) => row.fail(k, e.clone().into()),
+        }
+        if let Some(flag) = &outside {
+            row.flag(k, flag.clone());
         }
         if let Some(rest) = self.flight {
             let flown = match (scenario, outcome) {
                 (Ok(s), Ok(o)) => crate::flight::after_1d(s, o, rest).map(|run| run.outcome.values()),
                 (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
             };
-            row.put(self.kicks.solvers.len() + k, flown);
+            let set = self.kicks.solvers.len() + k;
+            row.put(set, flown);
+            if let Some(flag) = &outside {
+                row.flag_after(set, flag);
+            }
         }
     }
 }

@@ -137,8 +137,14 @@ impl Level for SampledSweep3d {
         let spec = self.kicks.spec(index);
         let kick = spec.build_drawn();
         put_parameters(&spec, kick.as_ref().ok(), &mut row.parameters);
-        match kick.and_then(|k| Solver3d::Auto.solve(&k)) {
-            Ok(o) => row.set(0, &o.observable_values()),
+        match kick.and_then(|k| Solver3d::Auto.solve(&k).map(|o| (k, o))) {
+            Ok((k, o)) => {
+                row.set(0, &o.observable_values());
+                // Outside the law's validity: the numbers kept, flagged.
+                if let Err(outside) = k.check_validity(&o) {
+                    row.flag(0, outside.into());
+                }
+            }
             Err(e) => row.fail(0, e.into()),
         }
     }

@@ -53,12 +53,23 @@ impl Level for ThreeD<'_> {
             Ok(o) => row.set(0, &o.observable_values()),
             Err(e) => row.fail(0, e.clone().into()),
         }
+        // Outside the law's validity: the numbers kept, flagged, and the flight's too.
+        let outside = match (&kick, &outcome) {
+            (Ok(k), Ok(o)) => k.check_validity(o).err().map(Failure::from),
+            _ => None,
+        };
+        if let Some(flag) = &outside {
+            row.flag(0, flag.clone());
+        }
         if let Some(rest) = self.flight {
             let flown = match (&kick, &outcome) {
                 (Ok(k), Ok(o)) => crate::flight::after_3d(k, o, rest).map(|run| run.outcome.values()),
                 (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
             };
             row.put(1, flown);
+            if let Some(flag) = &outside {
+                row.flag_after(1, flag);
+            }
         }
     }
 
