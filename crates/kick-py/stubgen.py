@@ -78,6 +78,7 @@ def render() -> str:
         "STATUS: dict[int, str]",
         "",
         "class NumericalError(RuntimeError): ...",
+        "class OutsideValidityWarning(RuntimeWarning): ...",
         "",
         "OBSERVABLES: list[tuple[str, str]]",
         "HISTORY_COLUMNS: list[tuple[str, str]]",

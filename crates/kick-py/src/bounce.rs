@@ -3,7 +3,7 @@
 //! (`kick_bounce::BOUNCE_PARAMETERS`, named as the CLI's flags), one call to
 //! `kick_bounce::run`; `bounce_many` the same per row of arrays.
 
-use crate::many::{run_many, Model};
+use crate::many::{run_many, Model, Solved};
 use crate::{guard, library_error, value_error};
 use kick_bounce::{BounceOutcome, BounceSpec, LawChoice, Tangential};
 use kick_core::parameters::{ParameterDef, Value};
@@ -38,6 +38,7 @@ pub fn bounce<'py>(py: Python<'py>, law: &str, params: Option<&Bound<'py, PyDict
             }
         }
         let outcome = py.detach(|| kick_bounce::run(&spec)).map_err(library_error)?;
+        crate::warn_outside(py, outcome.outside_validity.as_ref().map(|o| o.to_string()))?;
         crate::convert::json_to_py(py, &serde_json::to_value(outcome).map_err(value_error)?)
     })
 }
@@ -93,11 +94,11 @@ impl Model for ModelBounce {
     fn columns(&self) -> &[(String, usize)] {
         &self.columns
     }
-    fn solve(&self, spec: &BounceSpec, row: &mut [f64]) -> Result<u64, (Status, String)> {
+    fn solve(&self, spec: &BounceSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
         let failed = |e: kick_core::KickError| (e.status(), e.to_string());
         let o = kick_bounce::run(spec).map_err(failed)?;
         row_values(&o, row);
-        Ok(o.evaluations)
+        Ok(Solved::new(o.evaluations, o.outside_validity))
     }
 }
 

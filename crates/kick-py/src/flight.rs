@@ -1,9 +1,13 @@
 //! `flight`: the ball's flight after the kick (crate kick-flight), keywords
 //! from its declared list (`kick_flight::spec::FLIGHT_PARAMETERS`).
 
+use crate::many::{run_many, Model, Solved};
 use crate::{guard, library_error, value_error};
-use kick_core::parameters;
+use kick_core::parameters::{self, ParameterDef, Value};
+use kick_core::Status;
 use kick_flight::spec::{FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
+use numpy::{PyArrayMethods, PyUntypedArrayMethods};
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -38,9 +42,11 @@ pub fn flight<'py>(py: Python<'py>, params: Option<&Bound<'py, PyDict>>) -> PyRe
 }
 
 /// Many flights: `flight`'s keywords, each a scalar or an array, broadcast
-/// by numpy's rules (a vector with a trailing axis of 3); the rows solved by
-/// `kick_flight::flight_many` with the GIL released. Per row a status code
-/// (`FlightError::status`), NaN outcomes and a message when it failed.
+/// by numpy's rules (a vector with a trailing axis of 3), through the
+/// `*_many` functions' one argument guard and runner ([`run_many`]): the
+/// rows solved in parallel with the GIL released, Ctrl-C heard. Per row a
+/// status code (`FlightError::status`), NaN outcomes and a message when it
+/// failed.
 #[pyfunction]
 #[pyo3(signature = (*, threads = None, **arrays))]
 pub fn flight_many<'py>(
@@ -49,113 +55,76 @@ pub fn flight_many<'py>(
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let threads = crate::params::threads(threads)?;
-        let numpy = py.import("numpy")?;
-        let float64 = numpy.getattr("float64")?;
-        let mut given: Vec<(FlightParameter, Bound<'py, PyAny>)> = Vec::new();
-        if let Some(arrays) = arrays {
-            for (key, value) in arrays.iter() {
-                let name: String = key.extract()?;
-                let parameter = flight_parameter(&name)?;
-                if !value.is_none() {
-                    given.push((parameter, numpy.getattr("asarray")?.call1((value, &float64))?));
-                }
-            }
-        }
-        // Row shapes: a vector's array has a trailing axis of 3.
-        let mut shapes = Vec::new();
-        for (p, array) in &given {
-            let mut shape: Vec<usize> = array.getattr("shape")?.extract()?;
-            if p.components() == 3 {
-                if shape.last() != Some(&3) {
-                    return Err(value_error(format!("`{}` takes three numbers (x, y, z) on its last axis, got shape {shape:?}", p.name())));
-                }
-                shape.pop();
-            }
-            shapes.push(pyo3::types::PyTuple::new(py, shape)?);
-        }
-        let shape: Vec<usize> = numpy
-            .getattr("broadcast_shapes")?
-            .call1(pyo3::types::PyTuple::new(py, &shapes)?)
-            .map_err(|e| value_error(format!("shape mismatch: the parameters cannot be broadcast to one shape ({e})")))?
-            .extract()?;
-        let rows: usize = shape.iter().product();
-        let mut flat: Vec<(FlightParameter, Vec<f64>)> = Vec::with_capacity(given.len());
-        for (p, array) in &given {
-            let mut target = shape.clone();
-            if p.components() == 3 {
-                target.push(3);
-            }
-            let full = numpy.getattr("broadcast_to")?.call1((array, pyo3::types::PyTuple::new(py, target)?))?;
-            let values: Vec<f64> = numpy.getattr("ravel")?.call1((full,))?.extract()?;
-            flat.push((*p, values));
-        }
-        let columns: Vec<kick_flight::Column> = flat.iter().map(|(p, v)| kick_flight::Column { parameter: *p, values: v }).collect();
-        let results = py.detach(|| kick_flight::flight_many(&FlightSpec::default(), &columns, rows, threads)).map_err(library_error)?;
-        many_outputs(py, &shape, &results)
+        let model = ModelFlight { columns: FLIGHT_COLUMNS.iter().map(|(n, w, _)| (n.to_string(), *w)).collect() };
+        run_many(py, &model, FlightSpec::default(), crate::params::threads(threads)?, arrays)
     })
 }
 
-/// The rows' results as a dict of arrays of the rows' shape (vectors with a
-/// trailing axis of 2 or 3).
-fn many_outputs<'py>(
-    py: Python<'py>,
-    shape: &[usize],
-    results: &[Result<kick_flight::FlightOutcome, kick_flight::FlightError>],
-) -> PyResult<Bound<'py, PyDict>> {
-    type Get = fn(&kick_flight::FlightOutcome) -> Vec<f64>;
-    let columns: [(&str, usize, Get); 16] = [
-        ("flight_time", 1, |o| vec![o.flight_time]),
-        ("landing_point", 2, |o| o.landing_point.to_vec()),
-        ("apex_height", 1, |o| vec![o.apex_height]),
-        ("apex_time", 1, |o| vec![o.apex_time]),
-        ("landing_velocity", 3, |o| o.landing_velocity.to_vec()),
-        ("landing_spin", 3, |o| o.landing_spin.to_vec()),
-        ("crossed", 1, |o| vec![if o.crossing.is_some() { 1.0 } else { 0.0 }]),
-        ("crossing_time", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.time])),
-        ("crossing_height", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.height])),
-        ("crossing_lateral_offset", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.lateral_offset])),
-        ("crossing_velocity", 3, |o| o.crossing.map_or(vec![f64::NAN; 3], |c| c.velocity.to_vec())),
-        ("launch_reynolds", 1, |o| vec![o.launch.reynolds]),
-        ("launch_spin_parameter", 1, |o| vec![o.launch.spin_parameter]),
-        ("launch_drag_coefficient", 1, |o| vec![o.launch.drag_coefficient]),
-        ("launch_lift_coefficient", 1, |o| vec![o.launch.lift_coefficient]),
-        ("steps", 1, |o| vec![o.steps as f64]),
-    ];
-    let out = PyDict::new(py);
-    let reshape = |values: Bound<'py, PyAny>, width: usize| -> PyResult<Bound<'py, PyAny>> {
-        let mut s = shape.to_vec();
-        if width > 1 {
-            s.push(width);
-        }
-        values.call_method1("reshape", (pyo3::types::PyTuple::new(py, s)?,))
-    };
-    for (name, width, get) in columns {
-        let mut values = Vec::with_capacity(results.len() * width);
-        for r in results {
-            match r {
-                Ok(o) => values.extend(get(o)),
-                Err(_) => values.extend(std::iter::repeat_n(f64::NAN, width)),
-            }
-        }
-        out.set_item(name, reshape(numpy::PyArray1::from_vec(py, values).into_any(), width)?)?;
-    }
-    let evaluations: Vec<u64> = results.iter().map(|r| r.as_ref().map_or(0, |o| o.evaluations)).collect();
-    out.set_item("evaluations", reshape(numpy::PyArray1::from_vec(py, evaluations).into_any(), 1)?)?;
-    let status: Vec<u8> = results.iter().map(|r| r.as_ref().map_or_else(|e| e.status().code(), |_| 0)).collect();
-    out.set_item("status", reshape(numpy::PyArray1::from_vec(py, status).into_any(), 1)?)?;
-    let failures: Vec<(i64, String)> =
-        results.iter().enumerate().filter_map(|(i, r)| r.as_ref().err().map(|e| (i as i64, e.to_string()))).collect();
-    out.set_item("failure_index", numpy::PyArray1::from_vec(py, failures.iter().map(|f| f.0).collect()))?;
-    out.set_item("failure_message", pyo3::types::PyList::new(py, failures.iter().map(|f| f.1.as_str()))?)?;
-    Ok(out)
+type Get = fn(&kick_flight::FlightOutcome) -> Vec<f64>;
+
+/// Output columns of `flight_many`: name, width (vectors with a trailing
+/// axis of 2 or 3) and the outcome's numbers.
+const FLIGHT_COLUMNS: [(&str, usize, Get); 16] = [
+    ("flight_time", 1, |o| vec![o.flight_time]),
+    ("landing_point", 2, |o| o.landing_point.to_vec()),
+    ("apex_height", 1, |o| vec![o.apex_height]),
+    ("apex_time", 1, |o| vec![o.apex_time]),
+    ("landing_velocity", 3, |o| o.landing_velocity.to_vec()),
+    ("landing_spin", 3, |o| o.landing_spin.to_vec()),
+    ("crossed", 1, |o| vec![if o.crossing.is_some() { 1.0 } else { 0.0 }]),
+    ("crossing_time", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.time])),
+    ("crossing_height", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.height])),
+    ("crossing_lateral_offset", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.lateral_offset])),
+    ("crossing_velocity", 3, |o| o.crossing.map_or(vec![f64::NAN; 3], |c| c.velocity.to_vec())),
+    ("launch_reynolds", 1, |o| vec![o.launch.reynolds]),
+    ("launch_spin_parameter", 1, |o| vec![o.launch.spin_parameter]),
+    ("launch_drag_coefficient", 1, |o| vec![o.launch.drag_coefficient]),
+    ("launch_lift_coefficient", 1, |o| vec![o.launch.lift_coefficient]),
+    ("steps", 1, |o| vec![o.steps as f64]),
+];
+
+/// `flight_many`'s rows: a flight spec per row through `kick_flight::solve`.
+struct ModelFlight {
+    columns: Vec<(String, usize)>,
 }
 
-/// Three numbers for `name`, or a ValueError naming it.
-fn three(name: &str, values: &[f64]) -> PyResult<[f64; 3]> {
-    match values {
-        &[x, y, z] => Ok([x, y, z]),
-        other => Err(value_error(format!("`{name}` takes three numbers, got {}", other.len()))),
+impl Model for ModelFlight {
+    type Spec = FlightSpec;
+    fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef> {
+        flight_parameter(name).map(FlightParameter::def)
+    }
+    fn set(&self, spec: &mut FlightSpec, parameter: &'static ParameterDef, value: Value) {
+        // A declared flight parameter of the shape its input was checked for: cannot fail.
+        if let Ok(p) = FlightParameter::from_name(parameter.name) {
+            let _ = spec.set(p, &value.numbers());
+        }
+    }
+    fn columns(&self) -> &[(String, usize)] {
+        &self.columns
+    }
+    fn solve(&self, spec: &FlightSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
+        let failed = |e: kick_flight::FlightError| (e.status(), e.to_string());
+        let o = kick_flight::solve(&spec.build().map_err(failed)?).map_err(failed)?;
+        let mut at = 0;
+        for (_, width, get) in &FLIGHT_COLUMNS {
+            row[at..at + width].copy_from_slice(&get(&o));
+            at += width;
+        }
+        Ok(Solved::new(o.evaluations, None))
+    }
+}
+
+/// Three real numbers for keyword `name`, through the one argument guard
+/// ([`crate::params::real_array`]: no bools, strings, complex or masked
+/// values), or an error naming it.
+fn three(name: &str, value: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
+    let takes = "three numbers (x, y, z)";
+    let (array, switches) = crate::params::real_array(name, takes, value)?;
+    let numbers: Vec<f64> = array.readonly().as_array().iter().copied().collect();
+    match (switches, array.ndim(), numbers.as_slice()) {
+        (false, 1, &[x, y, z]) => Ok([x, y, z]),
+        (true, ..) => Err(PyTypeError::new_err(format!("`{name}` takes {takes}, got {}", crate::params::described(value)))),
+        _ => Err(value_error(format!("`{name}` takes {takes}, got {}", crate::params::described(value)))),
     }
 }
 
@@ -163,22 +132,35 @@ fn three(name: &str, values: &[f64]) -> PyResult<[f64; 3]> {
 /// and crosses the goal plane at `target`; the other keywords are the
 /// declared flight parameters, fixed (or the starts of free launch
 /// parameters), and with `from_="kick"` the kick's (`simulate3d`'s keywords
-/// but those the flight declares too).
+/// but those the flight declares too) and its normal contact `law`
+/// (`kick aim --law`). `target` and `wall` go through the one argument
+/// guard (three real numbers, no bools); the solve hears Ctrl-C.
 #[pyfunction]
-#[pyo3(signature = (target, *, wall = None, from_ = None, free = None, **params))]
+#[pyo3(signature = (target, *, wall = None, from_ = None, free = None, law = None, **params))]
 pub fn aim<'py>(
     py: Python<'py>,
-    target: Vec<f64>,
-    wall: Option<Vec<f64>>,
+    target: &Bound<'py, PyAny>,
+    wall: Option<&Bound<'py, PyAny>>,
     from_: Option<String>,
-    free: Option<Vec<String>>,
+    free: Option<&Bound<'py, PyAny>>,
+    law: Option<&str>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    use kick_core::parameters::SetParameter;
+    use kick_core::parameters::{SetLaw, SetParameter};
     use kick_study::aim::{AimFrom, AimRequest};
     guard(|| {
+        let target = three("target", target)?;
+        let wall = wall.filter(|w| !w.is_none()).map(|w| three("wall", w)).transpose()?;
+        let free = free.filter(|f| !f.is_none()).map(|f| crate::params::names("free", f)).transpose()?;
         let mut flight = FlightSpec::default();
         let mut kick = kick_3d::KickSpec::default();
+        // As `kick aim --law`: the paper's law is the kick's default, so naming it changes nothing.
+        if let Some(name) = law {
+            let kind = crate::law(name)?;
+            if kind != kick_core::LawKind::PowerLaw {
+                kick.set_law(kind);
+            }
+        }
         if let Some(params) = params {
             for (key, value) in params.iter() {
                 let name: String = key.extract()?;
@@ -203,14 +185,17 @@ pub fn aim<'py>(
             }
         }
         let request = AimRequest {
-            target: Some(three("target", &target)?),
-            wall: wall.as_deref().map(|w| three("wall", w)).transpose()?,
+            target: Some(target),
+            wall,
             from: from_.as_deref().map(AimFrom::from_name).transpose().map_err(value_error)?,
             free,
             flight,
             kick,
         };
-        let report = py.detach(|| kick_study::aim::aim(&request)).map_err(library_error)?;
+        let report = crate::interruptible(py, |cancel| {
+            kick_study::aim::aim_cancellable(&request, &|| cancel.load(std::sync::atomic::Ordering::Relaxed))
+        })?
+        .map_err(library_error)?;
         crate::convert::json_to_py(py, &serde_json::to_value(report).map_err(value_error)?)
     })
 }

@@ -21,7 +21,7 @@ use kick_compliant::SolverChoice;
 use kick_core::{LawKind, RecordingSolver, Spacing, Status, HISTORY_COLUMNS, MAX_HISTORY_SAMPLES};
 use numpy::PyArray1;
 use pyo3::create_exception;
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyRuntimeError, PyRuntimeWarning, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::fmt::Display;
@@ -42,6 +42,29 @@ create_exception!(
     "A numerical limit ended the computation (step budget, step too large, integration failure, \
      non-finite state): no statement about the physics (status 1, `kick.STATUS`)."
 );
+
+create_exception!(
+    kick,
+    OutsideValidityWarning,
+    PyRuntimeWarning,
+    "A result outside the region where its contact law holds (status 4, `kick.STATUS`; \
+     `kick_core::validity`: the shell ball compressed past R/2, any other law past R). The \
+     numbers are returned, but they are the law's, not a ball's. Make it an error with \
+     `warnings.simplefilter(\"error\", kick.OutsideValidityWarning)`."
+);
+
+/// Warn (`OutsideValidityWarning`, at the caller's line) when a single
+/// result lies outside its contact law's validity.
+pub(crate) fn warn_outside(py: Python<'_>, outside: Option<String>) -> PyResult<()> {
+    match outside {
+        None => Ok(()),
+        Some(why) => {
+            let message = std::ffi::CString::new(why.replace('\0', " ")).unwrap_or_default();
+            // 2: the user's call, not the wrapper in kick/__init__.py.
+            PyErr::warn(py, &py.get_type::<OutsideValidityWarning>(), &message, 2)
+        }
+    }
+}
 
 /// A library error that says what became of the request (`kick_core::Status`).
 pub(crate) trait WithStatus: Display {
@@ -145,7 +168,8 @@ fn simulate<'py>(
     guard(|| {
         let dt = params::optional_number("dt", dt)?;
         let spec = params::scenario_spec(params, crate::law(law)?)?;
-        let object = bridge::simulate(&spec, solver, dt).map_err(library_error)?;
+        let (object, outside) = bridge::simulate(&spec, solver, dt).map_err(library_error)?;
+        warn_outside(py, outside)?;
         convert::json_to_py(py, &object)
     })
 }
@@ -163,7 +187,8 @@ fn simulate3d<'py>(
     guard(|| {
         let dt = params::optional_number("dt", dt)?;
         let spec = params::kick_spec(params, crate::law(law)?)?;
-        let object = bridge::simulate3d(&spec, solver, dt).map_err(library_error)?;
+        let (object, outside) = bridge::simulate3d(&spec, solver, dt).map_err(library_error)?;
+        warn_outside(py, outside)?;
         convert::json_to_py(py, &object)
     })
 }
@@ -187,7 +212,8 @@ fn history<'py>(
         let spec = params::scenario_spec(params, crate::law(law)?)?;
         let scenario = spec.build().map_err(value_error)?;
         let solver = solver_1d(solver, params::optional_number("dt", dt)?)?;
-        let (_, history) = py.detach(|| solver.solve_sampled(&scenario, spacing, MAX_HISTORY_SAMPLES)).map_err(library_error)?;
+        let (outcome, history) = py.detach(|| solver.solve_sampled(&scenario, spacing, MAX_HISTORY_SAMPLES)).map_err(library_error)?;
+        warn_outside(py, scenario.check_validity(&outcome).err().map(|o| o.to_string()))?;
         let out = PyDict::new(py);
         for (k, (name, _)) in HISTORY_COLUMNS.iter().enumerate() {
             let column: Vec<f64> = history.samples.iter().map(|s| s.values()[k]).collect();
@@ -222,7 +248,10 @@ fn history3d<'py>(
     guard(|| {
         let spacing = spacing(params::samples(samples)?, params::optional_number("interval", interval)?)?;
         let spec = params::kick_spec(params, crate::law(law)?)?;
-        let (_, history) = py.detach(|| kick_study::simulate::sampled3d(&spec, solver, spacing)).map_err(library_error)?;
+        let (outcome, history) = py.detach(|| kick_study::simulate::sampled3d(&spec, solver, spacing)).map_err(library_error)?;
+        // Built again (cheap, and it built above) for the law and radius of the verdict.
+        let kick = spec.build().map_err(library_error)?;
+        warn_outside(py, kick.check_validity(&outcome).err().map(|o| o.to_string()))?;
         let out = PyDict::new(py);
         for (k, (name, _)) in kick_3d::HISTORY_COLUMNS_3D.iter().enumerate() {
             let column: Vec<f64> = history.iter().map(|s| s.values()[k]).collect();
@@ -238,6 +267,7 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     // the import panics in rust-numpy.
     PyArray1::<f64>::zeros(m.py(), 0, false);
     m.add("NumericalError", m.py().get_type::<NumericalError>())?;
+    m.add("OutsideValidityWarning", m.py().get_type::<OutsideValidityWarning>())?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulate3d, m)?)?;
     m.add_function(wrap_pyfunction!(history, m)?)?;
@@ -262,7 +292,8 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CHANNELS", kick_identify::Channel::ALL.map(|c| (c.name(), c.unit())).to_vec())?;
     m.add("SOLVERS", SolverChoice::NAMES.to_vec())?;
     m.add("SOLVERS_3D", kick_3d::Solver3d::NAMES.to_vec())?;
-    m.add("LAWS", LawKind::ALL.map(LawKind::name).to_vec())?;
+    // Every law a `law` keyword takes, the shell included: the one list.
+    m.add("LAWS", LawKind::SELECTABLE.map(LawKind::name).to_vec())?;
     m.add("BOUNCE_COLUMNS", bounce::BOUNCE_COLUMNS.iter().map(|(n, _, u)| (*n, *u)).collect::<Vec<_>>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -1,8 +1,13 @@
-//! `simulate_many` and `simulate3d_many`: every parameter a scalar or an
-//! array, broadcast by numpy's rules; the rows solved in parallel (rayon)
-//! with the GIL released, straight into preallocated numpy arrays. A row
-//! that fails gets a status code (`kick_core::Status::code`), NaN outcomes
-//! and its message, not an exception.
+//! The `*_many` functions (`simulate_many`, `simulate3d_many`, and through
+//! the same [`run_many`] `bounce_many` and `flight_many`): every parameter a
+//! scalar or an array, each through the one argument guard
+//! ([`crate::params::real_array`]), broadcast by numpy's rules; the rows
+//! solved in parallel (rayon) with the GIL released, straight into
+//! preallocated numpy arrays, Ctrl-C heard by the one interruptible runner
+//! ([`crate::interruptible`]). A row that fails gets a status code
+//! (`kick_core::Status::code`), NaN outcomes and its message, not an
+//! exception; a row outside its contact law's validity keeps its numbers
+//! with status 4 and the message saying why.
 
 use crate::params::{described, real_array, MAX_AXES};
 use crate::{guard, library_error, value_error};
@@ -31,8 +36,22 @@ pub(crate) trait Model: Sync {
     /// Output columns: name and width (1, or 3 for a vector).
     fn columns(&self) -> &[(String, usize)];
     /// Solve one row into `row` (the columns' values, vectors expanded);
-    /// the evaluations spent, or the status and message of a failure.
-    fn solve(&self, spec: &Self::Spec, row: &mut [f64]) -> Result<u64, (Status, String)>;
+    /// the evaluations spent (and a flag on the kept numbers), or the
+    /// status and message of a failure.
+    fn solve(&self, spec: &Self::Spec, row: &mut [f64]) -> Result<Solved, (Status, String)>;
+}
+
+/// A row solved: its evaluations, and why its numbers lie outside their
+/// contact law's validity, if they do (status 4, the numbers kept).
+pub(crate) struct Solved {
+    pub evaluations: u64,
+    pub outside_validity: Option<String>,
+}
+
+impl Solved {
+    pub fn new(evaluations: u64, outside_validity: Option<kick_core::OutsideValidity>) -> Solved {
+        Solved { evaluations, outside_validity: outside_validity.map(|o| o.to_string()) }
+    }
 }
 
 struct Model1d {
@@ -66,13 +85,13 @@ impl Model for Model1d {
     fn columns(&self) -> &[(String, usize)] {
         &self.columns
     }
-    fn solve(&self, spec: &ScenarioSpec, row: &mut [f64]) -> Result<u64, (Status, String)> {
+    fn solve(&self, spec: &ScenarioSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
         let failed = |e: kick_core::KickError| (e.status(), e.to_string());
         let scenario = spec.build().map_err(failed)?;
         let outcome = self.solver.solve(&scenario).map_err(failed)?;
         row[..OBSERVABLES.len()].copy_from_slice(&outcome.observable_values());
         row[OBSERVABLES.len()] = outcome.energy.residual();
-        Ok(outcome.evaluations)
+        Ok(Solved::new(outcome.evaluations, scenario.check_validity(&outcome).err()))
     }
 }
 
@@ -122,7 +141,7 @@ impl Model for Model3d {
     fn columns(&self) -> &[(String, usize)] {
         &self.columns
     }
-    fn solve(&self, spec: &KickSpec, row: &mut [f64]) -> Result<u64, (Status, String)> {
+    fn solve(&self, spec: &KickSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
         let failed = |e: kick_3d::Kick3dError| (e.status(), e.to_string());
         let kick = spec.build().map_err(failed)?;
         let outcome = self.solver.solve(&kick).map_err(failed)?;
@@ -134,7 +153,7 @@ impl Model for Model3d {
             row[at..at + values.len()].copy_from_slice(values);
             at += values.len();
         }
-        Ok(outcome.evaluations)
+        Ok(Solved::new(outcome.evaluations, kick.check_validity(&outcome).err()))
     }
 }
 
@@ -245,9 +264,15 @@ fn solve_chunk<M: Model>(
             at += w;
         }
         match result {
-            Ok(n) => {
-                status[j] = Status::Separated.code();
+            Ok(Solved { evaluations: n, outside_validity }) => {
                 evaluations[j] = n;
+                status[j] = match outside_validity {
+                    None => Status::Separated.code(),
+                    Some(message) => {
+                        failures.push((start + j, message));
+                        Status::OutsideValidity.code()
+                    }
+                };
             }
             Err((s, message)) => {
                 status[j] = s.code();

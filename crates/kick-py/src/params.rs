@@ -56,6 +56,18 @@ pub fn real_array<'py>(name: &str, takes: &str, value: &Bound<'py, PyAny>) -> Py
     if !matches!(kind.as_str(), "b" | "i" | "u" | "f") {
         return Err(PyTypeError::new_err(format!("`{name}` takes {takes}, got {}", described(value))));
     }
+    // numpy reads a bool among numbers as 0 or 1 (`(True, 0, 1)` is an int
+    // array): in a list or tuple it is refused, as a lone bool is.
+    if !switches && !given.is_instance(&numpy.getattr("ndarray")?)? && !given.is_instance(&numpy.getattr("generic")?)? {
+        let objects = numpy.call_method1("asarray", (&given, numpy.getattr("object_")?))?.call_method0("ravel")?;
+        let numpy_bool = numpy.getattr("bool_")?;
+        for item in objects.try_iter()? {
+            let item = item?;
+            if item.is_instance_of::<PyBool>() || item.is_instance(&numpy_bool)? {
+                return Err(PyTypeError::new_err(format!("`{name}` takes {takes}, got {} (a bool among the numbers)", described(value))));
+            }
+        }
+    }
     let ndim: usize = array.getattr("ndim")?.extract()?;
     if ndim > MAX_AXES {
         return Err(PyValueError::new_err(format!("`{name}` has {ndim} axes: at most {MAX_AXES}")));

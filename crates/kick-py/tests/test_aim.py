@@ -46,3 +46,22 @@ def test_no_solution_and_bad_input_are_value_errors():
         kick.aim((25.0, 0.0, 1.0), sped=20.0)
     with pytest.raises(ValueError, match="--from"):
         kick.aim((25.0, 0.0, 1.0), from_="foot")
+
+
+def test_the_law_keyword_and_the_target_as_kick_aim_takes_them():
+    """Issue 33, faults 9 and 10: ``law`` is the kick's normal law as ``kick aim
+    --law`` takes it (it was refused as an unknown flight parameter), and
+    ``target`` goes through the one argument guard: ``True`` is not 1 m."""
+    shell = kick.aim([25.0, -2.0, 1.8], from_="kick", wall=(9.15, 1.9, 1.0), law="shell")
+    paper = kick.aim([25.0, -2.0, 1.8], from_="kick", wall=(9.15, 1.9, 1.0))
+    assert shell["miss"] <= 1e-6
+    assert shell["parameters"][0]["value"] != paper["parameters"][0]["value"]
+    with pytest.raises(ValueError, match="--from kick"):
+        kick.aim((25.0, 0.0, 1.5), law="shell")
+    with pytest.raises(ValueError, match="unknown contact law `hertz`"):
+        kick.aim((25.0, 0.0, 1.5), from_="kick", law="hertz")
+    for target in [(True, 0.0, 1.0), (25.0, False, 1.0), [25.0, 0.0, True]]:
+        with pytest.raises(TypeError, match=r"`target` takes three numbers \(x, y, z\), got .*bool"):
+            kick.aim(target)
+    with pytest.raises(TypeError, match=r"`wall` takes three numbers .*got .*str"):
+        kick.aim((25.0, 0.0, 1.5), wall="9.15,1.8,1")

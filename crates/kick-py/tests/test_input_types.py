@@ -2,6 +2,9 @@
 are taken; anything else is a TypeError (a masked value a ValueError) that
 names the keyword and the type it got, never a silent conversion."""
 
+import decimal
+import fractions
+
 import numpy as np
 import pytest
 
@@ -147,3 +150,63 @@ def test_numpy_integer_counts_are_taken():
         kick.flight_many(speed=[20.0, 25.0], launch_angle=20.0, threads=np.int64(1))["flight_time"],
         kick.flight_many(speed=[20.0, 25.0], launch_angle=20.0)["flight_time"],
     )
+
+
+# Issue 33, fault 7 and its kind: every entry point takes its values through
+# one guard. (What the user gave, as the message names its type.)
+NOT_A_NUMBER = [
+    (np.complex128(20.0 + 1.0j), "complex128"),
+    (np.datetime64("2020-01-01"), "datetime64"),
+    ("20", "str"),
+    (True, "bool"),
+    (decimal.Decimal("20"), "Decimal"),
+    (fractions.Fraction(20, 1), "Fraction"),
+    ([20.0, True], "bool"),
+]
+ENTRY_POINTS = {
+    "simulate": ("foot_speed", lambda v: kick.simulate(foot_speed=v)),
+    "simulate_many": ("foot_speed", lambda v: kick.simulate_many(foot_speed=v)),
+    "simulate3d": ("foot_speed", lambda v: kick.simulate3d(foot_speed=v)),
+    "simulate3d_many": ("foot_speed", lambda v: kick.simulate3d_many(foot_speed=v)),
+    "history": ("foot_speed", lambda v: kick.history(foot_speed=v, samples=10)),
+    "history3d": ("foot_speed", lambda v: kick.history3d(foot_speed=v, samples=10)),
+    "flight": ("speed", lambda v: kick.flight(speed=v, launch_angle=20.0)),
+    "flight_many": ("speed", lambda v: kick.flight_many(speed=v, launch_angle=20.0)),
+    "bounce": ("speed", lambda v: kick.bounce(speed=v)),
+    "bounce_many": ("speed", lambda v: kick.bounce_many(speed=v)),
+    "aim": ("speed", lambda v: kick.aim((25.0, 0.0, 1.5), speed=v)),
+    "aim.target": ("target", lambda v: kick.aim((25.0, v, 1.5))),
+}
+
+
+@pytest.mark.parametrize("entry", sorted(ENTRY_POINTS))
+@pytest.mark.parametrize("value,named", NOT_A_NUMBER, ids=[n for _, n in NOT_A_NUMBER])
+def test_every_entry_point_refuses_what_is_not_a_real_number(entry, value, named):
+    keyword, call = ENTRY_POINTS[entry]
+    if entry.endswith("_many") or entry == "aim.target" or not isinstance(value, list):
+        # A single call's keyword takes one number: a list is a shape error of its own.
+        with pytest.raises((TypeError, ValueError), match=rf"`{keyword}`") as error:
+            call(value)
+        if entry != "aim.target" and not isinstance(value, list):
+            assert named in str(error.value) or "switch" in str(error.value), str(error.value)
+
+
+@pytest.mark.parametrize("entry", ["simulate_many", "flight_many", "bounce_many"])
+def test_masked_rows_are_refused_in_every_many_function(entry):
+    keyword, call = ENTRY_POINTS[entry]
+    with pytest.raises(ValueError, match=rf"`{keyword}` has 1 masked value"):
+        call(np.ma.masked_array([20.0, 25.0], mask=[False, True]))
+
+
+def test_flight_many_rows_are_single_flights():
+    """flight_many through the *_many runner: every row the single call's."""
+    speeds = np.array([[20.0, 25.0], [30.0, 1e-9]])
+    out = kick.flight_many(speed=speeds, launch_angle=45.0, spin=[0.0, 0.0, 20.0], distance=9.15)
+    assert out["landing_point"].shape == (2, 2, 2) and out["crossing_velocity"].shape == (2, 2, 3)
+    for index in np.ndindex(2, 2):
+        one = kick.flight(speed=speeds[index], launch_angle=45.0, spin=(0.0, 0.0, 20.0), distance=9.15)
+        assert out["flight_time"][index] == one["flight_time"]
+        assert out["landing_velocity"][index].tolist() == one["landing_velocity"]
+        assert out["evaluations"][index] == one["evaluations"]
+    # Fault 6: 1e-9 m/s takes 2 v sin(45 deg) / g, not half of it.
+    assert abs(out["flight_time"][1, 1] / (2e-9 * np.sin(np.pi / 4) / 9.81) - 1.0) < 1e-6

@@ -19,9 +19,12 @@ CALLS = {
         "kick.fit(x['time'], x['force'][::-1].copy(), sigma=25.0, stiffness=3e5, foot_mass=2.0, "
         "free=['stiffness', 'damping', 'foot_mass', 'exponent', 'foot_speed', 'time_offset'])",
     ),
+    # Issue 33, fault 8: these two ignored Ctrl-C until they finished (46.5 s, 11.8 s).
+    "flight_many": ("np.linspace(20.0, 30.0, 5_000_000)", "kick.flight_many(speed=x, launch_angle=20.0, threads=1)"),
+    "aim": ("(25.0, -2.0, 1.8)", "[kick.aim(x, from_='kick', wall=(9.15, 1.9, 1.0), law=law) for _ in range(20) for law in ('power-law', 'shell')]"),
 }
 # Seconds between the start of a call and Ctrl-C (the fit is the shortest call).
-WAIT = {"fit": 0.3}
+WAIT = {"fit": 0.3, "aim": 0.3}
 
 
 @pytest.mark.skipif(sys.platform == "win32", reason="SIGINT to a child process")

@@ -14,7 +14,37 @@ OUTCOMES = [name for name, _ in kick.OBSERVABLES] + ["energy_residual"]
 
 
 def test_status_codes_are_the_library_ones():
-    assert kick.STATUS == {0: "separated", 1: "numerical failure", 2: "trapped", 3: "refused"}
+    assert kick.STATUS == {0: "separated", 1: "numerical failure", 2: "trapped", 3: "refused", 4: "outside validity"}
+
+
+def test_rows_outside_their_law_keep_their_numbers_with_status_4(kick_bin):
+    """Issue 33, fault 5: a row past its contact law's validity (the shell ball
+    past R/2, another law past R) keeps its numbers, status 4 and the reason,
+    in every _many function; a single call returns it with a warning."""
+    bounces = kick.bounce_many(speed=[20.0, 45.0, 100.0])
+    assert bounces["status"].tolist() == [0, 4, 4]
+    assert np.all(np.isfinite(bounces["max_compression"]))
+    assert bounces["max_compression"][1] > 0.055 and bounces["max_compression"][0] < 0.055
+    assert bounces["failure_index"].tolist() == [1, 2]
+    assert all("outside the validity of law `shell`" in m for m in bounces["failure_message"])
+    shell = kick.simulate_many(law="shell", foot_speed=[20.0, 1e4])
+    assert shell["status"].tolist() == [0, 4] and np.isfinite(shell["v_ball_out"][1])
+    paper = kick.simulate_many(stiffness=1e4, foot_speed=[20.0, 100.0])
+    assert paper["status"].tolist() == [0, 4]
+    kick3d = kick.simulate3d_many(law="shell", foot_speed=[20.0, 60.0])
+    assert kick3d["status"].tolist() == [0, 4] and np.isfinite(kick3d["speed"][1])
+    with pytest.warns(kick.OutsideValidityWarning, match=r"exceeds R/2"):
+        one = kick.bounce(speed=100.0)
+    assert one["status"] == "outside_validity" and one["outside_validity"]["limit"] == "R/2"
+    with pytest.warns(kick.OutsideValidityWarning):
+        one = kick.simulate(law="shell", foot_speed=1e4)
+    assert one["status"] == "outside_validity"
+    assert one["max_compression"] == shell["max_compression"][1]
+    with pytest.warns(kick.OutsideValidityWarning):
+        kick.simulate3d(law="shell", foot_speed=60.0)
+    with pytest.warns(kick.OutsideValidityWarning):
+        kick.history(law="shell", foot_speed=1e4, samples=20)
+    assert kick.bounce(speed=20.0)["status"] == "separated"
 
 
 def test_broadcasting_shapes():

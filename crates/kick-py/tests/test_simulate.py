@@ -160,3 +160,11 @@ def test_a_ball_hitting_a_resting_foot_has_no_speed_ratio():
     m_f, m_b = out["scenario"]["foot_mass"], out["scenario"]["ball_mass"]
     momentum = m_f * out["v_foot_out"] + m_b * out["v_ball_out"]
     assert abs(momentum - m_b * -6.0) <= 1e-9 * m_b * 6.0
+
+
+def test_every_law_is_listed_from_the_one_list():
+    """Issue 33, fault 14: kick.LAWS and every ``law`` help list the shell."""
+    assert kick.LAWS == ["power-law", "hunt-crossley", "lankarani-nikravesh", "flores", "hunt-crossley-exact", "kelvin-voigt", "shell"]
+    for f in (kick.simulate, kick.simulate_many, kick.simulate3d, kick.simulate3d_many, kick.history, kick.history3d, kick.aim):
+        law = f.__doc__[f.__doc__.index("law : str"):]
+        assert all(name in law for name in kick.LAWS), f.__name__

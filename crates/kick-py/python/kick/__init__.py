@@ -26,10 +26,16 @@ Errors raise by what became of the call (``kick.STATUS``), with the command
 line's message: bad input (status 3, refused) ``ValueError``; a numerical
 limit (status 1: a step budget, a step too large, an integration failure)
 ``kick.NumericalError``, a ``RuntimeError``, never a physical answer; a ball
-proven trapped (status 2) ``RuntimeError``. A keyword
+proven trapped (status 2) ``RuntimeError``. A result outside the region
+where its contact law holds (status 4: the shell ball compressed past R/2,
+another law past R) is returned with ``status`` ``"outside_validity"`` and
+why (``outside_validity``), and warns ``kick.OutsideValidityWarning``; in
+the ``_many`` functions its row keeps its numbers, status 4 and the
+message. A keyword
 takes real numbers (Python or numpy ints and floats; bools for switches):
-a complex, datetime, string or object value is a ``TypeError`` and a masked
-element a ``ValueError``, each naming the keyword. Outputs too large to
+a complex, datetime, string, bool (among numbers), Decimal, Fraction or
+other object value is a ``TypeError`` and a masked element a
+``ValueError``, each naming the keyword: one guard for every function. Outputs too large to
 allocate are a ``MemoryError`` before any row is solved. Ctrl-C stops a
 long call within moments (``KeyboardInterrupt``).
 """
@@ -50,6 +56,7 @@ from ._kick import (
     SOLVERS_3D,
     STATUS,
     NumericalError,
+    OutsideValidityWarning,
     __version__,
 )
 
@@ -67,6 +74,7 @@ __all__ = [
     "bounce_many",
     "aim",
     "NumericalError",
+    "OutsideValidityWarning",
     "PARAMETERS",
     "BOUNCE_PARAMETERS",
     "STATUS",
@@ -140,8 +148,11 @@ _SOLVER_DOC = f"""
 solver : str, default "auto"
     One of {", ".join(SOLVERS)} (as ``kick simulate --solver``).
 law : str, default "power-law"
-    Contact law: {", ".join(LAWS)}; the laws other than the paper's need ``restitution``
-    (and refuse ``damping``; the paper's refuses ``restitution``).
+    Contact law: {", ".join(LAWS)}. The paper's takes ``damping`` (and refuses
+    ``restitution``); shell takes its ball's own parameters (inflation_pressure,
+    gas_exponent, shell_stiffness, shell_loss) and refuses both; the others need
+    ``restitution`` (and refuse ``damping``). Each holds up to a compression
+    (shell R/2, the others R; ``kick reference parameters``): beyond, status 4.
 dt : float, optional
     Step of the fixed-step solvers (seed-rk4, rk4-events), s; default as the CLI's (5e-6 s);
     a ValueError with any other solver, which chooses its own steps.
@@ -166,10 +177,11 @@ solved in parallel in Rust with the GIL released.
 
 Returns a dict of arrays of shape S (vectors S + (3,)): every outcome below,
 ``evaluations`` (uint64), ``status`` (uint8: {_STATUS_DOC}; the codes of
-``kick_core::Status``), and for the rows that did not give an outcome (their
-outcomes NaN) ``failure_index`` (int64, flat C-order row indices) and
-``failure_message`` (list of str, the library's message). No exception for a
-failed row.
+``kick_core::Status``), and for the rows whose status is not 0
+``failure_index`` (int64, flat C-order row indices) and ``failure_message``
+(list of str, the library's message): rows that gave no outcome (their
+outcomes NaN), and rows outside their law's validity (status 4, their
+outcomes kept). No exception for a failed row.
 """
 
 
@@ -355,6 +367,7 @@ _declare(
         _inspect.Parameter("wall", _KW, default=None),
         _inspect.Parameter("from_", _KW, default="launch"),
         _inspect.Parameter("free", _KW, default=None),
+        _inspect.Parameter("law", _KW, default="power-law"),
     ],
     [],
     """Aim a free kick, as ``kick aim``: the launch (or the 3D kick) that clears
@@ -377,6 +390,9 @@ free : list of str, optional
     The free parameters; default speed, launch_angle, azimuth (launch) or
     all four (kick). The flight keywords below are fixed values, or the
     starts of free launch parameters.
+law : str, default "power-law"
+    With from_="kick": the kick's normal contact law (``kick aim --law``):
+    {laws}.
 
 Returns a dict: from, scene, parameters (list of dicts: name, unit, value,
 low, high, sensitivity = d(y, z at the goal)/d parameter), launch_velocity,
@@ -389,7 +405,7 @@ With ``from_="kick"`` the keywords of ``simulate3d`` that the flight does
 not declare too (foot_mass, foot_speed, friction, ...; not ball_mass,
 ball_radius, gravity) set the kick (Table 1's and kick-3d's defaults
 otherwise); ``foot_speed`` is the start when it is free.
-""",
+""".replace("{laws}", ", ".join(LAWS)),
 )
 _flight_names = {p["name"] for p in keywords("flight")}
 aim.__signature__ = aim.__signature__.replace(
@@ -427,7 +443,7 @@ _declare(
     [],
     [_threads],
     "Solve many flights, as ``flight`` does, from arrays "
-    "(``kick_flight::flight_many``).\n" + _MANY_DOC.replace("1 numerical failure, 2 trapped", "1 numerical failure")
+    "(``kick_flight::solve`` per row).\n" + _MANY_DOC.replace("1 numerical failure, 2 trapped", "1 numerical failure")
     .replace("0 separated", "0 landed"),
     "Outcomes\n--------\n" + _outputs_docs(_FLIGHT_MANY_OUTPUTS),
 )
