@@ -150,13 +150,11 @@ fn parameter_table(page: &mut String, list: &[ParameterDef]) {
     page.push('\n');
 }
 
-/// `paper/reference/parameters.md` from the declared lists.
 /// Where each contact law holds (`kick_core::LawKind::validity`), and what
 /// a result outside it is.
 fn law_validity(page: &mut String) {
     page.push_str(
-        "### Where each law holds
-
+        "### Where each law holds\n\n\
          Each law holds up to a compression, a fraction of the ball's radius R (the shell ball's own; the 1D \
          model's other laws take the default ball's 0.11 m). A contact that goes deeper is solved, but its \
          numbers are the law's, not a ball's: its status is 4, `outside validity` (`kick_core::Status`). A row \
@@ -173,6 +171,7 @@ fn law_validity(page: &mut String) {
     page.push('\n');
 }
 
+/// `paper/reference/parameters.md` from the declared lists.
 pub fn parameters() -> String {
     let mut page = String::from(
         "# Declared parameters\n\n\
