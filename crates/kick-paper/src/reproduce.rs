@@ -26,7 +26,7 @@ pub struct ReproduceSettings {
 /// The steps of a reproduction to run ([`STEP_NAMES`]).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub enum Steps {
-    /// Everything: the model page, experiments, figures, checks, pages, 3D, leg, laws, fits, bench.
+    /// Everything: experiments, figures, checks, pages, 3D, leg, laws, fits, bench, the model page.
     #[default]
     All,
     /// These steps only, in the order of [`STEP_NAMES`] (`kick reproduce --only`).
@@ -136,7 +136,6 @@ pub struct Step {
 
 /// The names of the steps, in the order they run.
 pub const STEP_NAMES: [&str; 19] = [
-    "model",
     "experiments",
     "figures",
     "checks",
@@ -154,6 +153,7 @@ pub const STEP_NAMES: [&str; 19] = [
     "pages",
     "validation",
     "3d-pages",
+    "model",
     "report",
 ];
 
@@ -293,7 +293,6 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         time_offset,
     };
     let calls: [Vec<Call>; 19] = [
-        vec![Call::Model],
         files.into_iter().map(|file| Call::Run { file, out: out.clone() }).collect(),
         vec![Call::Figures { out: out.clone(), figures: figures.clone() }],
         vec![Call::Checks],
@@ -325,6 +324,7 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         vec![Call::Pages],
         vec![Call::Validation],
         vec![Call::Pages3d],
+        vec![Call::Model],
         vec![Call::Report],
     ];
     Ok(STEP_NAMES.into_iter().zip(calls).map(|(name, calls)| Step { name, calls }).collect())
