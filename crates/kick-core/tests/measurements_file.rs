@@ -58,6 +58,7 @@ fn no_source_is_the_project_itself() {
     for s in &m.sources {
         let text = format!("{} {} {}", s.authors, s.title, s.container).to_lowercase();
         assert!(!text.contains("issue tracker") && !text.contains("task statement") && !text.contains("kick project"), "{}", s.key);
+        assert!(!s.citation_note.as_deref().unwrap_or("").contains("not a publication"), "{}", s.key);
     }
     for x in &m.measurements {
         assert!(!x.location.contains("task statement"), "`{}`", x.key);

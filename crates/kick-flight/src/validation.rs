@@ -240,6 +240,10 @@ pub fn measured_flights(m: &Measurements) -> Result<Vec<Comparison>, FlightValid
             .build()?;
     let crossing =
         solve(&curve)?.crossing.ok_or(FlightValidationError::NoCrossing { speed: (vx * vx + vy * vy + vz * vz).sqrt(), spin, distance })?;
+    // Drag and lift act in the vertical plane through v and across it; with no
+    // spin the horizontal path keeps the launch direction, y = x vy/vx.
+    let straight = distance * vy / vx;
+    let drift = value(keys::CURVEBALL_DRIFT)?;
     let [px, pz] = [value(keys::PLAIN_LAUNCH[0])?, value(keys::PLAIN_LAUNCH[1])?];
     let plain = solve(&FlightSpec { launch_velocity: Some([px, 0.0, pz]), ..FlightSpec::default() }.build()?)?;
     let launch = format!("launched at ({}, {}, {}) m/s with {} rad/s about the vertical", vx, vy, vz, spin.abs());
@@ -248,7 +252,13 @@ pub fn measured_flights(m: &Measurements) -> Result<Vec<Comparison>, FlightValid
             format!("lateral drift at x = {} m, curveball", kick_core::short(distance)),
             m.measured(keys::CURVEBALL_DRIFT, NEEDED_BY)?,
             crossing.lateral_offset,
-            format!("{launch}; default ball, air, C_D and C_L; the launch's own sideways 2.5 m/s is in the drift"),
+            format!(
+                "{launch}; default ball, air, C_D and C_L; measured from the straight launch line (y = {} m there) the \
+                 model bends {} m, the digitised path {} m",
+                kick_core::short(straight),
+                kick_core::short(straight - crossing.lateral_offset),
+                kick_core::short(straight - drift)
+            ),
         ),
         Comparison::new(
             "apex above the launch point, kick without spin",
@@ -281,7 +291,7 @@ pub struct LiftBend {
 /// The free kick `speed` m/s at `launch_angle`° with sidespin `spin` rad/s
 /// about the vertical, crossing x = `distance`, flown with the default C_L(S)
 /// and then with each constant C_L of `constants` (the plateau's role in the
-/// bend: the default's points above S ≈ 0.2 were read only in transcriptions).
+/// bend: the default's seven points were read only in transcriptions).
 pub fn lift_plateau_bends(
     speed: f64,
     spin: f64,

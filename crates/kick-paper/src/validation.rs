@@ -1103,7 +1103,8 @@ impl Validation {
              (`kick_flight::coefficients::DragCrisis::critical_reynolds`); for the default 14-panel ball in sea-level air it \
              is {} ({} m/s for R = 0.11 m). Eq. 3's centre, where C_D is halfway down, lies at {} and is not called \
              critical. The sources' own definition was not read (crates/kick-flight/SOURCES.md). Each construction's \
-             factor on the crisis was set from its published critical Re: those rows are calibrations.\n",
+             factor on the crisis was set from its published critical Re: those rows are calibrations. The constants \
+             of Goff & Carré's Eq. 3 and Eq. 4 themselves were read only in code bases' transcriptions.\n",
             short(d.critical),
             three(d.critical_speed),
             short(d.centre)
