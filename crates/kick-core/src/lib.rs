@@ -4,12 +4,14 @@
 //! Equation numbers refer to "The Millisecond Physics of a Soccer Kick"
 //! (`shared/paper/millisecond-physics-of-a-soccer-kick.md`).
 
+pub mod boot;
 pub mod check;
 pub mod dop853;
 pub mod error;
 pub mod input;
 pub mod law;
 pub mod laws;
+pub mod leg;
 pub mod measurements;
 pub mod models;
 pub mod number;
@@ -22,6 +24,7 @@ pub mod shell;
 pub mod special;
 pub mod threads;
 
+pub use boot::Boot;
 pub use error::{KickError, Status};
 pub use law::{ContactLaw, PowerLawContact};
 pub use laws::{AnyLaw, LawKind};
@@ -31,7 +34,7 @@ pub use outcome::{
     MAX_HISTORY_SAMPLES, OBSERVABLES,
 };
 pub use parameters::{Level, ParameterDef, SetLaw, SetParameter, Value, PARAMETERS};
-pub use scenario::{Parameter, Scenario, ScenarioSpec};
+pub use scenario::{Foot, Parameter, Scenario, ScenarioSpec};
 pub use shell::ShellBall;
 use std::ops::ControlFlow;
 
