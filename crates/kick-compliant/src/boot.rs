@@ -278,4 +278,5 @@ pub fn not_applicable(solver: &'static str) -> KickError {
     }
 }
 
+pub mod identify;
 pub mod series;

@@ -379,8 +379,11 @@ impl Foot {
                 (parameters::HIP.name, pose.hip),
             ]);
         }
-        if let Some(boot) = self.boot {
-            out.extend(boot.parameters());
+        match self.boot {
+            Some(boot) => out.extend(boot.parameters()),
+            // The leg brings a boot unless told there is none.
+            None if self.leg.is_some() => out.push((parameters::BOOT_STIFFNESS.name, f64::INFINITY)),
+            None => {}
         }
         out
     }
@@ -516,10 +519,21 @@ impl Scenario {
         }
     }
 
-    /// A copy with the foot `foot` behind the contact (the mass unchanged:
-    /// a leg's is set where the spec is built, [`ScenarioSpec::build`]).
+    /// A copy with the foot `foot` behind the contact, the mass unchanged
+    /// (see [`Scenario::on_foot`] for a leg's).
     pub fn with_foot(&self, foot: Foot) -> Scenario {
         Scenario { foot, ..*self }
+    }
+
+    /// A copy on the foot `foot`: with a leg its apparent mass along the
+    /// line of motion is the foot's mass (Eq. 11), validated again.
+    pub fn on_foot(&self, foot: Foot) -> Result<Scenario, KickError> {
+        let rigid = Scenario { foot: Foot::RIGID, ..*self };
+        let moved = match foot.leg {
+            Some(pose) => rigid.with(Parameter::FootMass, LegFoot::new(pose)?.effective_mass)?,
+            None => rigid,
+        };
+        Ok(moved.with_foot(foot))
     }
 
     /// The foot behind the contact: the leg's pose and the boot.

@@ -155,11 +155,14 @@ struct Keys3d {
 struct RawSpec<const NAMED: bool> {
     name: Option<Spanned<String>>,
     values: Vec<(&'static ParameterDef, Spanned<f64>)>,
+    /// The switches among them (`leg`).
+    switches: Vec<(&'static ParameterDef, Spanned<bool>)>,
 }
 
-/// The keys of `[base]` and `[[scenario]]`: the 1D scenario's and the shell
-/// ball's (which apply under `law = "shell"`).
-const TABLE_LEVELS: &[Level] = &[Level::Scenario, Level::Bounce];
+/// The keys of `[base]` and `[[scenario]]`: the 1D scenario's, the shell
+/// ball's (which apply under `law = "shell"`) and the foot's (the leg and
+/// the boot, `kick_core::Foot`).
+const TABLE_LEVELS: &[Level] = &[Level::Scenario, Level::Bounce, Level::Foot];
 
 type RawBase = RawSpec<false>;
 type RawNamed = RawSpec<true>;
@@ -173,6 +176,9 @@ impl<const NAMED: bool> RawSpec<NAMED> {
     }
     fn restitution(&self) -> Option<&Spanned<f64>> {
         self.value(&parameters::RESTITUTION)
+    }
+    fn switch(&self, parameter: &ParameterDef) -> Option<&Spanned<bool>> {
+        self.switches.iter().find(|(p, _)| p.name == parameter.name).map(|(_, v)| v)
     }
     /// The table's name (`[[scenario]]` tables always have one).
     fn name(&self) -> &Spanned<String> {
@@ -197,10 +203,14 @@ impl<'de, const NAMED: bool> Deserialize<'de> for RawSpec<NAMED> {
                     }
                     match parameters::find_at(TABLE_LEVELS, &key) {
                         Ok(parameter) => {
-                            if table.value(parameter).is_some() {
+                            if table.value(parameter).is_some() || table.switch(parameter).is_some() {
                                 return Err(serde::de::Error::custom(format!("duplicate key `{key}`")));
                             }
-                            table.values.push((parameter, map.next_value()?));
+                            if parameter.shape == parameters::Shape::Switch {
+                                table.switches.push((parameter, map.next_value()?));
+                            } else {
+                                table.values.push((parameter, map.next_value()?));
+                            }
                         }
                         Err(_) => {
                             let mut valid: Vec<&str> = parameters::at_levels(TABLE_LEVELS).map(|p| p.name).collect();
@@ -686,6 +696,53 @@ fn shell_ball<'a>(
         let (span, key) = first.unwrap_or((0..0, "law".into()));
         at.error(span, &key, e.to_string())
     })
+}
+
+/// The foot of a table ([`kick_core::Foot`]: `leg`, its pose, the boot;
+/// each key from the table, else `[base]`, as `get` and `switch` give them
+/// with their keys) applied to `scenario` (a leg's mass set, Eq. 11); a
+/// setting that would be ignored (`foot_mass` with `leg`, a pose without
+/// it, `boot_damping` without a boot) is refused at its line.
+fn on_foot<'a>(
+    at: &Locator,
+    scenario: Scenario,
+    get: impl Fn(&'static ParameterDef) -> Option<(&'a Spanned<f64>, String)>,
+    switch: impl Fn(&'static ParameterDef) -> Option<(&'a Spanned<bool>, String)>,
+) -> Result<Scenario, ExperimentError> {
+    use kick_core::parameters::{SetParameter, Value};
+    let mut spec = kick_core::ScenarioSpec::default();
+    let mut keys: Vec<(&'static str, std::ops::Range<usize>, String)> = Vec::new();
+    if let Some((v, key)) = switch(&parameters::LEG) {
+        spec.leg = Some(*v.get_ref());
+        keys.push((parameters::LEG.name, v.span(), key));
+    }
+    for p in parameters::at_level(Level::Foot).filter(|p| p.shape == parameters::Shape::Scalar) {
+        if let Some((v, key)) = get(p) {
+            spec.set_parameter(p, Value::Number(*v.get_ref())).map_err(|e| at.error(v.span(), &key, e.to_string()))?;
+            keys.push((p.name, v.span(), key));
+        }
+    }
+    if let (Some(true), Some((v, key))) = (spec.leg, get(Parameter::FootMass.def())) {
+        spec.foot_mass = Some(*v.get_ref());
+        let e = spec.check_given().err().map(|e| e.to_string()).unwrap_or_default();
+        return Err(at.error(v.span(), &key, e));
+    }
+    let blame = |e: KickError| {
+        let named = match &e {
+            KickError::DoesNotApply { given, .. } => Some(*given),
+            KickError::InvalidParameter { name, .. } => Some(*name),
+            _ => None,
+        };
+        let (span, key) = keys
+            .iter()
+            .find(|(name, _, _)| Some(*name) == named)
+            .or(keys.first())
+            .map(|(_, span, key)| (span.clone(), key.clone()))
+            .unwrap_or((0..0, "leg".into()));
+        at.error(span, &key, e.to_string())
+    };
+    let foot = spec.foot().map_err(blame)?;
+    scenario.on_foot(foot).map_err(blame)
 }
 
 fn law_settings_apply(at: &Locator, law: kick_core::LawKind, damping: Located, restitution: Located) -> Result<(), ExperimentError> {

@@ -41,6 +41,10 @@ fn meta_1d(scenario: &Scenario, solver: &str) -> HistoryMeta {
         let def = &kick_core::parameters::RESTITUTION;
         meta.fixed.push((def.name.into(), def.unit.into(), vec![e]));
     }
+    for (name, value) in scenario.foot().settings() {
+        let unit = kick_core::parameters::find(name).map_or("", |p| p.unit);
+        meta.fixed.push((name.into(), unit.into(), vec![value]));
+    }
     meta
 }
 
@@ -98,6 +102,16 @@ pub fn outcome_json(scenario: &Scenario, solver: &str, outcome: &Outcome) -> Map
     }
     object.insert("scenario".into(), Value::Object(parameters));
     object.insert("law".into(), serde_json::to_value(scenario.contact_law()).unwrap_or(Value::Null));
+    let foot = scenario.foot();
+    if foot != kick_core::Foot::RIGID {
+        // The foot behind the contact: the leg's pose (foot_mass above is its
+        // apparent mass) and the boot; JSON has no infinity, so no boot is null.
+        let mut settings = Map::new();
+        for (name, value) in foot.settings() {
+            settings.insert(name.into(), if value.is_finite() { value.into() } else { Value::Null });
+        }
+        object.insert("foot".into(), Value::Object(settings));
+    }
     object
 }
 

@@ -4,7 +4,6 @@
 //! the layer's limits (k_b → ∞ is the rigid foot), energy, and the
 //! refusals of solvers that cannot carry the layer.
 
-use kick_compliant::boot;
 use kick_compliant::events::Method;
 use kick_compliant::precision::max_relative_error;
 use kick_compliant::reduced::Reduced;
