@@ -953,6 +953,46 @@ mod tests {
         );
     }
 
+    /// `leg = true` and the boot's keys in `[base]` and `[[scenario]]`: every
+    /// scenario stands on that foot (the leg's mass, its identified boot, a
+    /// named scenario's own pose), a 3D file sweeps them (level 3d), and a
+    /// setting the foot would ignore is refused at its line.
+    #[test]
+    fn the_foots_keys_reach_every_scenario() {
+        use kick_core::leg::{LegFoot, LegPose};
+        use kick_core::{boot::IDENTIFIED, Foot};
+        let grid = "law = \"shell\"\n[base]\nleg = true\n[[sweep]]\nparameter = \"foot_speed\"\nvalues = [9.1, 21.2]\n";
+        let e = parse(Path::new("g.toml"), grid).unwrap();
+        let kicks = e.one_d().unwrap();
+        let mass = LegFoot::new(LegPose::DEFAULT).unwrap().effective_mass;
+        for i in 0..2 {
+            let s = kicks.scenarios.scenario(i).unwrap();
+            assert_eq!(s.foot(), Foot { leg: Some(LegPose::DEFAULT), boot: Some(IDENTIFIED) }, "row {i}");
+            assert_eq!(s.effective_foot_mass(), mass);
+        }
+        let named = "[base]\nboot_stiffness = 5.0e4\n[[scenario]]\nname = \"boot\"\n[[scenario]]\nname = \"leg\"\nleg = true\nknee = 50.0\n";
+        let e = parse(Path::new("n.toml"), named).unwrap();
+        let kicks = e.one_d().unwrap();
+        let (boot, leg) = (kicks.scenarios.scenario(0).unwrap(), kicks.scenarios.scenario(1).unwrap());
+        assert_eq!((boot.effective_foot_mass(), boot.boot().map(|b| b.stiffness)), (3.0, Some(5.0e4)));
+        assert_eq!(leg.foot().leg.map(|p| p.knee), Some(50.0));
+        assert_eq!(leg.boot().map(|b| b.stiffness), Some(5.0e4));
+        let three = "level = \"3d\"\nlaw = \"shell\"\n[base]\nleg = true\n[kick3d]\noffset = 0.03\n[[sweep]]\nparameter = \"boot_stiffness\"\nvalues = [3.0e4, 6.0e4]\n";
+        let e = parse(Path::new("t.toml"), three).unwrap();
+        let kicks = e.three_d().unwrap();
+        for (i, k_b) in [3.0e4, 6.0e4].into_iter().enumerate() {
+            let spec: kick_core::ScenarioSpec = toml::from_str(&format!("law = \"shell\"\nleg = true\nboot_stiffness = {k_b:e}\n")).unwrap();
+            let by_hand = kick_3d::KickSpec { scenario: spec, kick3d: kick_3d::Kick3dSpec { offset: Some(0.03), ..Default::default() } };
+            assert_eq!(kicks.kick(i as u64).unwrap(), by_hand.build().unwrap(), "cell {i}");
+        }
+        let refused = parse(Path::new("r.toml"), "[base]\nleg = true\nfoot_mass = 2.0\n").unwrap_err();
+        assert_eq!(refused.line, 3, "{refused}");
+        assert!(refused.to_string().contains("`base.foot_mass`: `foot_mass` does not apply to the leg"), "{refused}");
+        let refused = parse(Path::new("k.toml"), "[base]\nfoot_speed = 20.0\nknee = 20.0\n").unwrap_err();
+        assert_eq!(refused.line, 3, "{refused}");
+        assert!(refused.to_string().contains("`knee` does not apply to a foot without the leg"), "{refused}");
+    }
+
     /// The instep's parameters are 3D sweep axes (a file sweeping one is a
     /// 3D file): every cell's kick is the one built by hand with that value.
     #[test]

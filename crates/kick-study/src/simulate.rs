@@ -102,17 +102,49 @@ pub fn outcome_json(scenario: &Scenario, solver: &str, outcome: &Outcome) -> Map
     }
     object.insert("scenario".into(), Value::Object(parameters));
     object.insert("law".into(), serde_json::to_value(scenario.contact_law()).unwrap_or(Value::Null));
-    let foot = scenario.foot();
-    if foot != kick_core::Foot::RIGID {
-        // The foot behind the contact: the leg's pose (foot_mass above is its
-        // apparent mass) and the boot; JSON has no infinity, so no boot is null.
-        let mut settings = Map::new();
-        for (name, value) in foot.settings() {
-            settings.insert(name.into(), if value.is_finite() { value.into() } else { Value::Null });
-        }
-        object.insert("foot".into(), Value::Object(settings));
+    if let Some(foot) = foot_json(scenario) {
+        object.insert("foot".into(), foot);
     }
     object
+}
+
+/// One line naming the foot when it is not Table 1's rigid one.
+fn foot_line(scenario: &Scenario) -> Option<String> {
+    let foot = scenario.foot();
+    let leg = foot.leg.map(|p| {
+        format!(
+            "the leg (knee {}, ankle {}, hip {} deg; {} kg along the line of motion)",
+            sig(p.knee),
+            sig(p.ankle),
+            sig(p.hip),
+            sig(scenario.effective_foot_mass())
+        )
+    });
+    let boot = foot.boot.map(|b| format!("a boot in series (k_b {} N/m, c_b {} N s/m)", sig(b.stiffness), sig(b.damping)));
+    match (leg, boot) {
+        (None, None) => None,
+        (Some(l), None) => Some(format!("foot: {l}, no boot")),
+        (None, Some(b)) => Some(format!("foot: rigid, {b}")),
+        (Some(l), Some(b)) => Some(format!("foot: {l}, {b}")),
+    }
+}
+
+/// The foot behind the contact when it is not Table 1's rigid one: the
+/// leg's pose and its apparent mass along the line of motion (Eq. 11, the
+/// scenario's foot mass), the boot; JSON has no infinity, so no boot is null.
+fn foot_json(scenario: &Scenario) -> Option<Value> {
+    let foot = scenario.foot();
+    if foot == kick_core::Foot::RIGID {
+        return None;
+    }
+    let mut settings = Map::new();
+    for (name, value) in foot.settings() {
+        settings.insert(name.into(), if value.is_finite() { value.into() } else { Value::Null });
+    }
+    if foot.leg.is_some() {
+        settings.insert("effective_mass".into(), scenario.effective_foot_mass().into());
+    }
+    Some(Value::Object(settings))
 }
 
 impl Serialize for Simulation {
@@ -130,6 +162,9 @@ impl Printable for Simulation {
         let mut w = String::new();
         let o = &self.outcome;
         let _ = writeln!(w, "solver: {} (path: {})", self.solver, o.method);
+        if let Some(line) = foot_line(&self.scenario) {
+            let _ = writeln!(w, "{line}");
+        }
         for ((name, unit), value) in OBSERVABLES.iter().zip(o.observable_values()) {
             let value = if *name == "speed_ratio" && o.speed_ratio.is_none() { "undefined".to_string() } else { sig(value).to_string() };
             let _ = writeln!(w, "{name:<24} {value:>12} {unit}");
@@ -245,6 +280,9 @@ impl Serialize for Simulation3d {
         };
         m.insert("energy_residual".into(), o.energy.residual().into());
         m.insert("law_parameters".into(), serde_json::to_value(self.kick.law()).map_err(serde::ser::Error::custom)?);
+        if let Some(foot) = foot_json(&self.kick.base) {
+            m.insert("foot".into(), foot);
+        }
         if let Some(f) = &self.flight {
             m.insert("flight".into(), serde_json::to_value(f).map_err(serde::ser::Error::custom)?);
         }
@@ -258,6 +296,9 @@ impl Printable for Simulation3d {
         let mut w = String::new();
         let v = |a: [f64; 3], unit: &str| format!("{} {unit}", vector(&a));
         let _ = writeln!(w, "solver: {}, normal law: {}", o.solver, o.law.name());
+        if let Some(line) = foot_line(&self.kick.base) {
+            let _ = writeln!(w, "{line}");
+        }
         let _ = writeln!(w, "{:<24} {}", "launch_velocity", v(o.launch_velocity, "m/s"));
         let _ = writeln!(w, "{:<24} {}", "spin", v(o.spin, "rad/s"));
         for (name, value, unit) in [

@@ -40,8 +40,8 @@ pub fn applies(scenario: &Scenario) -> bool {
     scenario.boot().is_some() && crate::shell_series::applies(scenario)
 }
 
-/// One step's coefficients: δ to t^K, b and β to t^(K−1), the force and
-/// the loss power to t^(K−2).
+/// One step's coefficients: δ, b and β to t^K, the force and the loss
+/// power to t^(K−2).
 struct Step {
     delta: [f64; K + 1],
     boot: [f64; K + 1],
@@ -64,7 +64,8 @@ fn step(ball: &ShellBall, boot: &Boot, mu: f64, drive_share: f64, state: (f64, f
     beta[0] = delta0 - boot0;
     let mut jet = ElasticJet::new(ball, beta[0])?;
     let mut e0 = 0.0;
-    for k in 0..=K - 2 {
+    // To order K − 1 for b (its step criterion takes b_K), to K − 2 for the force.
+    for k in 0..K {
         jet.next(k, &beta);
         let e = jet.elastic();
         if k == 0 {
@@ -77,19 +78,21 @@ fn step(ball: &ShellBall, boot: &Boot, mu: f64, drive_share: f64, state: (f64, f
         b[k + 1] = boot_rate[k] / kk;
         beta[k + 1] = d[k + 1] - b[k + 1];
         ball_rate[k] = kk * beta[k + 1];
-        force[k] = kb * b[k] + cb * boot_rate[k];
-        let drive = if k == 0 { drive_share } else { 0.0 };
-        d[k + 2] = (drive - force[k]) / (mu * (kk * (kk + 1.0)));
+        if k + 2 <= K {
+            force[k] = kb * b[k] + cb * boot_rate[k];
+            let drive = if k == 0 { drive_share } else { 0.0 };
+            d[k + 2] = (drive - force[k]) / (mu * (kk * (kk + 1.0)));
+        }
     }
     let e = jet.elastic();
-    // χ E β̇² + c_b ḃ², by Cauchy products.
+    // χ E β̇² + c_b ḃ², by Cauchy products: E β̇ first, then with β̇.
+    let mut e_rate = [0.0; K - 1];
+    for (k, slot) in e_rate.iter_mut().enumerate() {
+        *slot = (0..=k).map(|j| e[j] * ball_rate[k - j]).sum();
+    }
     let mut dissipation = [0.0; K - 1];
     for (k, slot) in dissipation.iter_mut().enumerate() {
-        let mut ball_loss = 0.0;
-        for i in 0..=k {
-            let e_rate: f64 = (0..=i).map(|j| e[j] * ball_rate[i - j]).sum();
-            ball_loss += e_rate * ball_rate[k - i];
-        }
+        let ball_loss: f64 = (0..=k).map(|i| e_rate[i] * ball_rate[k - i]).sum();
         let boot_loss: f64 = (0..=k).map(|i| boot_rate[i] * boot_rate[k - i]).sum();
         *slot = chi * ball_loss + cb * boot_loss;
     }
@@ -135,7 +138,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
         if !(h.is_finite() && h > 0.0) {
             return Err(KickError::Integration { time: t, reason: format!("the booted series found no step at δ = {delta} m") });
         }
-        let ball_poly = &s.ball[..K];
+        let ball_poly = &s.ball[..];
         // Separation: β falls through 0 while receding.
         let separates = if s.ball[1] < 0.0 || derivative(ball_poly, h) < 0.0 { first_fall(|x| poly(ball_poly, x), h) } else { None };
         if let Some(end) = separates {
@@ -164,9 +167,13 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
         t += h;
         rate = derivative(&s.delta, h);
         delta = poly(&s.delta, h);
-        layer = poly(&s.boot[..K], h);
+        layer = poly(&s.boot, h);
         if separates.is_some() {
             break;
+        }
+        // Without a drive the energy stays ≥ 0: only a drive can trap.
+        if drive_share == 0.0 {
+            continue;
         }
         let ball_compression = delta - layer;
         let stored = ball.potential(ball_compression) + boot.potential(layer);

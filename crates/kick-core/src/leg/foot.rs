@@ -71,8 +71,22 @@ fn to_kick(v: &Vector3<f64>) -> Vector3<f64> {
 
 impl LegFoot {
     /// The reference subject's leg at `pose` (module docs); a pose outside
-    /// `kick leg`'s ranges is refused naming `hip`, `knee` or `ankle`.
+    /// `kick leg`'s ranges is refused naming `hip`, `knee` or `ankle`. The
+    /// last pose's leg is kept per thread: a sweep's kicks share a pose, and
+    /// the chain's allocations would cost as much as a 1D kick.
     pub fn new(pose: LegPose) -> Result<LegFoot, KickError> {
+        thread_local! {
+            static LAST: std::cell::Cell<Option<LegFoot>> = const { std::cell::Cell::new(None) };
+        }
+        if let Some(foot) = LAST.with(|last| last.get()).filter(|f| f.pose == pose) {
+            return Ok(foot);
+        }
+        let foot = LegFoot::compute(pose)?;
+        LAST.with(|last| last.set(Some(foot)));
+        Ok(foot)
+    }
+
+    fn compute(pose: LegPose) -> Result<LegFoot, KickError> {
         let leg = Leg { variant: Variant::Spatial, hip: HipSupport::Pinned, knee_locked: false, ..Leg::reference() };
         let pose_ =
             Pose { hip_flexion: pose.hip, knee_flexion: pose.knee, plantarflexion: pose.ankle, hip_abduction: 0.0, hip_rotation: 0.0 };
