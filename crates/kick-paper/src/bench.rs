@@ -415,8 +415,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
          the leg and its boot on the cap {:.1} µs",
         kicks[0].0, kicks[1].0, kicks[2].0, kicks[3].0, kicks[4].0, kicks[5].0, kicks[6].0, kicks[7].0, kicks[8].0, kicks[9].0
     );
-    let other =
-        Other { shell, paper_law, leg, flight_rows, flights_1, flights_2, aim_launch: aim_launch_s, aim_kick: aim_kick_s, kicks };
+    let other = Other { shell, paper_law, leg, flight_rows, flights_1, flights_2, aim_launch: aim_launch_s, aim_kick: aim_kick_s, kicks };
 
     let files = file_runs(args.quick)?;
     for run in &files {

@@ -970,7 +970,8 @@ mod tests {
             assert_eq!(s.foot(), Foot { leg: Some(LegPose::DEFAULT), boot: Some(IDENTIFIED) }, "row {i}");
             assert_eq!(s.effective_foot_mass(), mass);
         }
-        let named = "[base]\nboot_stiffness = 5.0e4\n[[scenario]]\nname = \"boot\"\n[[scenario]]\nname = \"leg\"\nleg = true\nknee = 50.0\n";
+        let named =
+            "[base]\nboot_stiffness = 5.0e4\n[[scenario]]\nname = \"boot\"\n[[scenario]]\nname = \"leg\"\nleg = true\nknee = 50.0\n";
         let e = parse(Path::new("n.toml"), named).unwrap();
         let kicks = e.one_d().unwrap();
         let (boot, leg) = (kicks.scenarios.scenario(0).unwrap(), kicks.scenarios.scenario(1).unwrap());
@@ -981,7 +982,8 @@ mod tests {
         let e = parse(Path::new("t.toml"), three).unwrap();
         let kicks = e.three_d().unwrap();
         for (i, k_b) in [3.0e4, 6.0e4].into_iter().enumerate() {
-            let spec: kick_core::ScenarioSpec = toml::from_str(&format!("law = \"shell\"\nleg = true\nboot_stiffness = {k_b:e}\n")).unwrap();
+            let spec: kick_core::ScenarioSpec =
+                toml::from_str(&format!("law = \"shell\"\nleg = true\nboot_stiffness = {k_b:e}\n")).unwrap();
             let by_hand = kick_3d::KickSpec { scenario: spec, kick3d: kick_3d::Kick3dSpec { offset: Some(0.03), ..Default::default() } };
             assert_eq!(kicks.kick(i as u64).unwrap(), by_hand.build().unwrap(), "cell {i}");
         }

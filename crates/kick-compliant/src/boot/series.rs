@@ -132,8 +132,8 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
         let size = |c: f64, k: usize| (STEP_SCALE * tolerance * length / c.abs()).powf(1.0 / k as f64);
         let mut h = size(s.delta[K], K)
             .min(size(s.delta[K - 1], K - 1))
+            .min(size(s.boot[K], K))
             .min(size(s.boot[K - 1], K - 1))
-            .min(size(s.boot[K - 2], K - 2))
             .min(100.0 * time_unit);
         if !(h.is_finite() && h > 0.0) {
             return Err(KickError::Integration { time: t, reason: format!("the booted series found no step at δ = {delta} m") });
