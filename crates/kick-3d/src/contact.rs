@@ -9,10 +9,13 @@
 //! (no cancellation of two positions), and the tangential spring, glued to
 //! the face, needs no co-rotation term.
 //!
-//! State (23): s, the relative velocity w = v_b − v_f, the foot's angular
+//! State (23, then 7 slots used by a leg or a boot, zero otherwise): s, the
+//! relative velocity w = v_b − v_f, the foot's angular
 //! velocity Ω and orientation q (world from body), the ball's angular
 //! velocity, the spring ξ (all but q in body components), the normal
-//! impulse, the two losses, and the time (see [`Clock`]). With r = r0 + s the ball centre from the
+//! impulse, the two losses, the time (see [`Clock`]), the boot's
+//! compression δ_b, and with the leg the foot's velocity and displacement
+//! in the world frame. With r = r0 + s the ball centre from the
 //! foot's centre of mass (r0 = (R + h_x, 0, 0)), p = r − R n the contact
 //! point and F = F_n n + F_t the force on the ball:
 //!
@@ -22,6 +25,15 @@
 //! - q̇ = ½ q ⊗ Ω,
 //! - ω̇_b = (−R n) × F / I_b − Ω × ω_b,
 //! - ξ̇ = the spring–damper element's rate (see [`crate::dynamics`] for the law).
+//!
+//! With the leg ([`crate::model::LegDynamics`]) the foot's two rates are the
+//! leg's response to the wrench on it, [Ω̇; a_o] = qᵀ Ω_w [q (p × (−F));
+//! q (−F) + F_drive], with no Euler term, and ẇ = F/m_b − a_o − Ω × w. A boot
+//! in series ([`kick_core::Boot`]) takes the overlap δ as δ_b + δ_B: the
+//! ball's law sees δ_B and its rate, δ̇_b follows from the force balance
+//! (kick-core's `boot`), and the events, the clocks and the reported
+//! compression are the ball's; under a patch the foot's surface moves
+//! back by δ_b along the contact normal.
 //!
 //! The right-hand side is the same law as [`crate::dynamics::Dynamics`]
 //! (which writes both bodies in the world frame), with each switch made
@@ -50,8 +62,12 @@ use nalgebra::SVector;
 use parry3d_f64::math::{Pose3, Rot3, Vec3};
 use parry3d_f64::shape::Cuboid;
 
-pub const DIM: usize = 23;
+pub const DIM: usize = 30;
 pub type State = SVector<f64, DIM>;
+/// The components of a kick without a leg or a boot: the rest stay zero,
+/// and the error norm averages over these alone, so such a kick is the same
+/// bit for bit as before the slots were added ([`Relative::counted_components`]).
+pub const PLAIN_DIM: usize = 23;
 
 /// s: the ball centre's displacement from first touch (body frame).
 pub const DISPLACEMENT: usize = 0;
@@ -73,6 +89,13 @@ pub const DAMPING_LOSS: usize = 20;
 pub const FRICTION_LOSS: usize = 21;
 /// t (integrated while the independent variable is not the time).
 pub const TIME: usize = 22;
+/// δ_b, the boot's compression (a boot in series, `kick_core::Boot`).
+pub const BOOT: usize = 23;
+/// The foot's reference point's velocity, world frame (the leg only: the
+/// pair's centre of mass no longer moves freely, the hip holds the leg).
+pub const FOOT_VELOCITY_WORLD: usize = 24;
+/// The foot's reference point's displacement since first touch, world frame (the leg only).
+pub const FOOT_DISPLACEMENT_WORLD: usize = 27;
 
 /// The power p of u = δ^(1/p). δⁿ = u^(pn) is still not smooth at u = 0,
 /// but far less steep: p = 2 took the fewest evaluations over the box
@@ -174,6 +197,8 @@ pub struct Local {
     pub friction_power: f64,
     /// The normal force over the patch, when it is spread ([`crate::patch`]).
     pub patch: Option<PatchForce>,
+    /// δ̇_b, the boot's compression rate (0 without a boot).
+    pub boot_rate: f64,
 }
 
 impl Local {
@@ -221,6 +246,10 @@ pub struct Relative {
     pub cap: Option<(Vec3, f64)>,
     /// The patch's quadrature, when the normal force is spread.
     pub patch: Option<Patch>,
+    /// The leg behind the foot, in place of the box's mass and inertia.
+    pub leg: Option<crate::model::LegDynamics>,
+    /// The boot in series.
+    pub boot: Option<kick_core::Boot>,
     /// Evaluate with the right-hand side's AVX2 copy ([`avx2`]; set by [`Relative::on_avx2`]).
     #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
     avx2: bool,
@@ -255,7 +284,19 @@ impl Relative {
             phase,
             cap: kick.instep.filter(|i| i.is_curved()).map(|i| (Vec3::new(kick.face_distance() - i.radius, 0.0, 0.0), i.radius)),
             patch: kick.instep.and_then(|i| i.patch).map(Patch::new),
+            leg: kick.leg,
+            boot: kick.base.boot(),
             avx2: false,
+        }
+    }
+
+    /// The error norm's count: [`PLAIN_DIM`] without a leg or a boot, all otherwise.
+    #[inline]
+    pub fn counted_components(&self) -> usize {
+        if self.leg.is_none() && self.boot.is_none() {
+            PLAIN_DIM
+        } else {
+            DIM
         }
     }
 
@@ -345,12 +386,21 @@ impl Relative {
             let (delta, n, _) = geometry(&self.cuboid, self.ball_radius, self.border, &Pose3::IDENTITY, r);
             (delta, n)
         };
-        let delta = self.clock_compression(x).unwrap_or(delta);
+        // With a boot the law and the clocks see the ball's compression δ − δ_b.
+        let delta = match self.boot {
+            Some(_) => self.clock_compression(x).unwrap_or(delta - y[BOOT]),
+            None => self.clock_compression(x).unwrap_or(delta),
+        };
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
+        let mut boot_rate = 0.0;
         let (point, rate, sliding, normal_force, unclamped_force, damping_power, patch, zeta_rate) = match &self.patch {
-            Some(patch) => self.patch_normal::<FACE>(patch, y, delta, n),
+            Some(patch) => {
+                let normal = self.patch_normal::<FACE>(patch, y, delta, n);
+                boot_rate = normal.8;
+                (normal.0, normal.1, normal.2, normal.3, normal.4, normal.5, normal.6, normal.7)
+            }
             None => {
                 let lever_ball = along::<FACE>(n, -self.ball_radius);
                 let point = r + lever_ball;
@@ -358,15 +408,22 @@ impl Relative {
                 let v_rel = w - cross_normal::<FACE>(spin, n) * self.ball_radius - omega.cross(point);
                 let rate = -dot_normal::<FACE>(n, v_rel);
                 let sliding = tangential::<FACE>(n, v_rel);
-                let (elastic, normal_force, unclamped_force) = if self.clamps {
-                    let (elastic, raw) = self.law.unclamped_force(delta, rate);
-                    (elastic, if self.phase.clamped { 0.0 } else { raw }, raw)
+                if let Some(boot) = &self.boot {
+                    // The approach rate splits between the boot and the ball (kick-core's `boot`).
+                    let split = boot.split(&self.law, delta, rate, y[BOOT], self.phase.compressing, self.phase.clamped);
+                    boot_rate = split.boot_rate;
+                    (point, split.ball_rate, sliding, split.force, split.unclamped_force, split.loss_power(boot), None, 0.0)
                 } else {
-                    let (elastic, force) = self.law.branch_force(delta, rate, self.phase.compressing);
-                    (elastic, force, force)
-                };
-                let damping_power = (normal_force - elastic) * rate;
-                (point, rate, sliding, normal_force, unclamped_force, damping_power, None, 0.0)
+                    let (elastic, normal_force, unclamped_force) = if self.clamps {
+                        let (elastic, raw) = self.law.unclamped_force(delta, rate);
+                        (elastic, if self.phase.clamped { 0.0 } else { raw }, raw)
+                    } else {
+                        let (elastic, force) = self.law.branch_force(delta, rate, self.phase.compressing);
+                        (elastic, force, force)
+                    };
+                    let damping_power = (normal_force - elastic) * rate;
+                    (point, rate, sliding, normal_force, unclamped_force, damping_power, None, 0.0)
+                }
             }
         };
 
@@ -383,7 +440,7 @@ impl Relative {
             Friction::Grip => match &patch {
                 // The point contact on a cap: p = C + (r_f − δ) n, the patch's formula with dζ/dδ = −1.
                 None if !FACE && self.cap.is_some() => {
-                    let p = PatchForce { force: n * normal_force, moment: Vec3::ZERO, centroid: point };
+                    let p = PatchForce { force: n * normal_force, moment: Vec3::ZERO, centroid: point, rate_weight: 1.0 };
                     self.patch_grip_force::<FACE>(y, &p, n, delta, rate, -1.0)
                 }
                 None => self.grip_force::<FACE>(y, n, point, normal_force),
@@ -433,6 +490,7 @@ impl Relative {
             damping_power,
             friction_power,
             patch,
+            boot_rate,
         }
     }
 
@@ -449,7 +507,7 @@ impl Relative {
         y: &State,
         delta: f64,
         n: Vec3,
-    ) -> (Vec3, f64, Vec3, f64, f64, f64, Option<PatchForce>, f64) {
+    ) -> (Vec3, f64, Vec3, f64, f64, f64, Option<PatchForce>, f64, f64) {
         let r = self.centre(y);
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
@@ -468,6 +526,20 @@ impl Relative {
                 (elastic, f1 - elastic)
             }
         };
+        // A boot moves the foot's surface back by δ_b along n: the ball's
+        // centre seen from it is r + δ_b n, which turns with n on a cap
+        // (ṅ = ṙ_t/|r − C|); its rate along n, δ̇_b, is solved below.
+        let (r_in, r_dot_in) = match self.boot {
+            None => (r, r_dot),
+            Some(_) => {
+                let layer = y[BOOT];
+                let turning = match self.cap {
+                    Some((centre, _)) if !FACE => tangential::<false>(n, r_dot) * (layer / (r - centre).length()),
+                    _ => Vec3::ZERO,
+                };
+                (r + n * layer, r_dot + turning)
+            }
+        };
         let mut zeta_rate = 0.0;
         let mut p = match self.cap {
             Some((centre, radius)) if self.rigid && self.phase.friction == Friction::Grip => {
@@ -475,8 +547,8 @@ impl Relative {
                 (p, zeta_rate) = patch.resultant_and_centroid_rate(
                     Surface::Sphere { centre, radius },
                     self.ball_radius,
-                    r,
-                    r_dot,
+                    r_in,
+                    r_dot_in,
                     spin - omega,
                     delta,
                     n,
@@ -485,12 +557,35 @@ impl Relative {
                 );
                 p
             }
-            Some((centre, radius)) => {
-                patch.resultant(Surface::Sphere { centre, radius }, self.ball_radius, r, r_dot, spin - omega, delta, n, elastic, slope)
-            }
+            Some((centre, radius)) => patch.resultant(
+                Surface::Sphere { centre, radius },
+                self.ball_radius,
+                r_in,
+                r_dot_in,
+                spin - omega,
+                delta,
+                n,
+                elastic,
+                slope,
+            ),
             // The closed form, inlined here (no rule).
-            None if delta > 0.0 => crate::patch::flat(self.ball_radius, r, n.dot(r_dot), spin - omega, delta, n, elastic, slope),
-            None => patch.resultant(Surface::Flat, self.ball_radius, r, r_dot, spin - omega, delta, n, elastic, slope),
+            None if delta > 0.0 => crate::patch::flat(self.ball_radius, r_in, n.dot(r_dot_in), spin - omega, delta, n, elastic, slope),
+            None => patch.resultant(Surface::Flat, self.ball_radius, r_in, r_dot_in, spin - omega, delta, n, elastic, slope),
+        };
+        // The boot's balance: n · force = N0 − slope w δ̇_b = k_b δ_b + c_b δ̇_b
+        // (the moment and the tangential part do not move with δ̇_b).
+        let (boot_rate, boot_power) = match &self.boot {
+            None => (0.0, 0.0),
+            Some(boot) => {
+                let (layer, give) = (y[BOOT], slope * p.rate_weight);
+                let boot_rate = if self.phase.clamped {
+                    -boot.stiffness * layer / boot.damping
+                } else {
+                    (n.dot(p.force) - boot.stiffness * layer) / (boot.damping + give)
+                };
+                p.force -= n * (give * boot_rate);
+                (boot_rate, boot.stiffness * layer * boot_rate)
+            }
         };
         let unclamped_force = n.dot(p.force);
         if self.phase.clamped {
@@ -499,9 +594,11 @@ impl Relative {
         }
         let point = p.centroid;
         let v_rel = w + spin.cross(point - r) - omega.cross(point);
-        // Power of the element forces on the relative motion, less the elastic's.
+        // Power of the element forces on the relative motion, less the elastic's (and the boot's spring's).
         let power = p.force.dot(w) + spin.dot(p.moment) - omega.dot(r.cross(p.force) + p.moment);
-        (point, rate, tangential::<FACE>(n, v_rel), n.dot(p.force), unclamped_force, -power - elastic * rate, Some(p), zeta_rate)
+        let ball_rate = rate - boot_rate;
+        let loss = -power - elastic * ball_rate - boot_power;
+        (point, ball_rate, tangential::<FACE>(n, v_rel), n.dot(p.force), unclamped_force, loss, Some(p), zeta_rate, boot_rate)
     }
 
     /// dy/dx at (x, y).
@@ -570,14 +667,26 @@ impl Relative {
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
         let mut dy = State::zeros();
         put3(&mut dy, DISPLACEMENT, w - omega.cross(r));
-        let mut dw = force * self.inverse_reduced_mass - omega.cross(w);
-        if self.drive != Vec3::ZERO {
-            dw -= if FACE { rotation(y).inverse() * self.drive / self.foot_mass } else { rotation(y).inverse() * self.foot_drive };
+        if let Some(leg) = &self.leg {
+            // The leg's response to the wrench on the foot, in the world frame (model.rs).
+            let q = rotation(y);
+            let (turn, accel) = leg.response(q * torque, q * (-force) + self.drive);
+            let inverse = q.inverse();
+            put3(&mut dy, RELATIVE_VELOCITY, force * (1.0 / self.ball_mass) - inverse * accel - omega.cross(w));
+            put3(&mut dy, FOOT_ANGULAR_VELOCITY, inverse * turn);
+            put3(&mut dy, FOOT_VELOCITY_WORLD, accel);
+            put3(&mut dy, FOOT_DISPLACEMENT_WORLD, vec3(y, FOOT_VELOCITY_WORLD));
+        } else {
+            let mut dw = force * self.inverse_reduced_mass - omega.cross(w);
+            if self.drive != Vec3::ZERO {
+                dw -= if FACE { rotation(y).inverse() * self.drive / self.foot_mass } else { rotation(y).inverse() * self.foot_drive };
+            }
+            put3(&mut dy, RELATIVE_VELOCITY, dw);
+            // Off the face: products, not quotients (the divider is the right-hand side's bottleneck).
+            let foot_turn = torque - omega.cross(omega * self.foot_inertia);
+            put3(&mut dy, FOOT_ANGULAR_VELOCITY, if FACE { foot_turn / self.foot_inertia } else { foot_turn * self.inverse_foot_inertia });
         }
-        put3(&mut dy, RELATIVE_VELOCITY, dw);
-        // Off the face: products, not quotients (the divider is the right-hand side's bottleneck).
-        let foot_turn = torque - omega.cross(omega * self.foot_inertia);
-        put3(&mut dy, FOOT_ANGULAR_VELOCITY, if FACE { foot_turn / self.foot_inertia } else { foot_turn * self.inverse_foot_inertia });
+        dy[BOOT] = c.boot_rate;
         // q̇ = ½ q ⊗ (0, Ω)
         let (qw, qv) = (y[FOOT_ROTATION], Vec3::new(y[FOOT_ROTATION + 1], y[FOOT_ROTATION + 2], y[FOOT_ROTATION + 3]));
         dy[FOOT_ROTATION] = -0.5 * qv.dot(omega);
@@ -614,7 +723,25 @@ impl Relative {
             + 0.5 * omega.dot(omega * self.foot_inertia)
             + 0.5 * self.ball_inertia * vec3(y, BALL_ANGULAR_VELOCITY).length_squared()
             + self.law.potential(c.compression)
+            + self.boot.map_or(0.0, |b| b.potential(y[BOOT]))
             + if self.rigid { 0.0 } else { 0.5 * self.tangential_stiffness * vec3(y, SPRING).length_squared() }
+    }
+
+    /// Kinetic and elastic energy of the kick with the leg at (x, y), time
+    /// t: the ball's (from the foot's world velocity and w), the foot's
+    /// (`LegDynamics::foot_energy`) and the stored energy.
+    pub fn leg_mechanical_energy(&self, leg: &crate::model::LegDynamics, x: f64, y: &State, t: f64, ball_velocity0: Vec3) -> f64 {
+        let q = rotation(y);
+        let foot_velocity = vec3(y, FOOT_VELOCITY_WORLD);
+        let ball_velocity = foot_velocity + q * vec3(y, RELATIVE_VELOCITY);
+        let impulse = (ball_velocity - ball_velocity0) * self.ball_mass;
+        let c = self.local(x, y);
+        0.5 * self.ball_mass * ball_velocity.length_squared()
+            + 0.5 * self.ball_inertia * vec3(y, BALL_ANGULAR_VELOCITY).length_squared()
+            + leg.foot_energy(self.foot_mass, self.drive * t - impulse, q * vec3(y, FOOT_ANGULAR_VELOCITY), foot_velocity)
+            + self.law.potential(c.compression)
+            + self.boot.map_or(0.0, |b| b.potential(y[BOOT]))
+            + 0.5 * self.tangential_stiffness * vec3(y, SPRING).length_squared()
     }
 
     /// K f: the rate of the contact point's relative velocity (ball's
@@ -815,6 +942,9 @@ impl kick_core::dop853::System<DIM> for Relative {
     fn derivative(&self, x: f64, y: &State) -> State {
         Relative::derivative(self, x, y)
     }
+    fn counted_components(&self) -> usize {
+        Relative::counted_components(self)
+    }
 }
 
 // Products with the normal n, written out for the face (n = e_x) where the
@@ -899,11 +1029,17 @@ pub fn initial_state(kick: &Kick3d) -> State {
     put3(&mut y, RELATIVE_VELOCITY, q.inverse() * (s.ball_velocity - s.foot_velocity));
     y[FOOT_ROTATION] = q.w;
     put3(&mut y, FOOT_ROTATION + 1, Vec3::new(q.x, q.y, q.z));
+    if kick.leg.is_some() {
+        put3(&mut y, FOOT_VELOCITY_WORLD, s.foot_velocity);
+    }
     y
 }
 
 /// Both bodies in the world frame at (x, y), time t.
 pub fn end_state(kick: &Kick3d, system: &Relative, x: f64, y: &State, t: f64) -> EndState {
+    if kick.leg.is_some() {
+        return leg_end_state(kick, system, x, y, t);
+    }
     let start = kick.initial_state();
     let com = CentreOfMass::of(kick);
     let (m_f, m_b, mass) = (system.foot_mass, system.ball_mass, com.mass);
@@ -928,6 +1064,7 @@ pub fn end_state(kick: &Kick3d, system: &Relative, x: f64, y: &State, t: f64) ->
         ball_angular_velocity: spin,
         spring: q * vec3(y, SPRING),
         compression: system.local(x, y).compression,
+        boot_compression: y[BOOT],
         impulse: (ball_velocity - start.ball_velocity - gravity * t) * m_b,
         angular_impulse: spin * system.ball_inertia,
         normal_impulse: y[NORMAL_IMPULSE],
@@ -935,5 +1072,36 @@ pub fn end_state(kick: &Kick3d, system: &Relative, x: f64, y: &State, t: f64) ->
         friction_loss: y[FRICTION_LOSS],
         drive_work: kick.drive().dot(foot_shift),
         gravity_work: gravity.dot(shift) * mass,
+    }
+}
+
+/// [`end_state`] with the leg: the foot's world velocity and displacement
+/// are states (the hip holds the leg, the pair's centre of mass is not free).
+fn leg_end_state(kick: &Kick3d, system: &Relative, x: f64, y: &State, t: f64) -> EndState {
+    let start = kick.initial_state();
+    let q = rotation(y);
+    let foot_position = start.foot_position + vec3(y, FOOT_DISPLACEMENT_WORLD);
+    let foot_velocity = vec3(y, FOOT_VELOCITY_WORLD);
+    let ball_velocity = foot_velocity + q * vec3(y, RELATIVE_VELOCITY);
+    let spin = q * vec3(y, BALL_ANGULAR_VELOCITY);
+    EndState {
+        time: t,
+        foot_position,
+        foot_orientation: q,
+        foot_velocity,
+        foot_angular_velocity: q * vec3(y, FOOT_ANGULAR_VELOCITY),
+        ball_position: foot_position + q * system.centre(y),
+        ball_velocity,
+        ball_angular_velocity: spin,
+        spring: q * vec3(y, SPRING),
+        compression: system.local(x, y).compression,
+        boot_compression: y[BOOT],
+        impulse: (ball_velocity - start.ball_velocity) * system.ball_mass,
+        angular_impulse: spin * system.ball_inertia,
+        normal_impulse: y[NORMAL_IMPULSE],
+        normal_damping_loss: y[DAMPING_LOSS],
+        friction_loss: y[FRICTION_LOSS],
+        drive_work: kick.drive().dot(vec3(y, FOOT_DISPLACEMENT_WORLD)),
+        gravity_work: 0.0,
     }
 }

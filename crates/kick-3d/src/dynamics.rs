@@ -26,8 +26,9 @@ use parry3d_f64::math::{Pose3, Rot3, Vec3};
 use parry3d_f64::query::details::contact_convex_polyhedron_ball;
 use parry3d_f64::shape::{Ball, Cuboid};
 
-pub const DIM: usize = 40;
-/// Foot (x, q, v, ω), ball (x, q, v, ω), tangential spring ξ, running integrals.
+pub const DIM: usize = 41;
+/// Foot (x, q, v, ω), ball (x, q, v, ω), tangential spring ξ, running
+/// integrals, the boot's compression δ_b (zero without a boot).
 pub type State = SVector<f64, DIM>;
 
 pub const FOOT_POSITION: usize = 0;
@@ -48,6 +49,8 @@ pub const DAMPING_LOSS: usize = 36;
 pub const FRICTION_LOSS: usize = 37;
 pub const DRIVE_WORK: usize = 38;
 pub const GRAVITY_WORK: usize = 39;
+/// δ_b, the boot's compression.
+pub const BOOT: usize = 40;
 
 #[inline]
 pub fn vec3(y: &State, i: usize) -> Vec3 {
@@ -96,6 +99,8 @@ pub struct ContactEval {
     pub grip_margin: f64,
     pub damping_power: f64,
     pub friction_power: f64,
+    /// δ̇_b, the boot's compression rate (0 without a boot).
+    pub boot_rate: f64,
 }
 
 impl ContactEval {
@@ -125,6 +130,11 @@ pub struct Dynamics {
     pub tangential_damping: f64,
     pub drive: Vec3,
     pub gravity: Vec3,
+    /// The leg behind the foot (its mobility about the foot's centre, world
+    /// frame) in place of the box's mass and inertia.
+    pub leg: Option<crate::model::LegDynamics>,
+    /// The boot in series.
+    pub boot: Option<kick_core::Boot>,
 }
 
 impl Dynamics {
@@ -145,6 +155,8 @@ impl Dynamics {
             tangential_damping: kick.tangential_damping,
             drive: kick.drive(),
             gravity: kick.gravity_vector(),
+            leg: kick.leg,
+            boot: kick.base.boot(),
         }
     }
 
@@ -179,10 +191,29 @@ impl Dynamics {
         // normal component of v_rel is the exact −δ̇ of the parry distance.
         let rate = -n.dot(v_rel);
         let sliding = v_rel + n * rate;
-        let normal_force = self.law.contact_force(delta, rate); // Eq. 20 for the paper's law
-        let elastic = self.law.contact_force(delta, 0.0);
-        // d/dt of kinetic + U(δ) is −(F − F(δ, 0)) δ̇: Eq. 25 for the paper's law.
-        let damping_power = (normal_force - elastic) * rate;
+        let (delta, rate, normal_force, damping_power, boot_rate) = match &self.boot {
+            None => {
+                let normal_force = self.law.contact_force(delta, rate); // Eq. 20 for the paper's law
+                let elastic = self.law.contact_force(delta, 0.0);
+                // d/dt of kinetic + U(δ) is −(F − F(δ, 0)) δ̇: Eq. 25 for the paper's law.
+                (delta, rate, normal_force, (normal_force - elastic) * rate, 0.0)
+            }
+            // The overlap splits between the boot and the ball (kick-core's
+            // `boot`); the ball's rate has one sign on both damping branches,
+            // so the branch is the one it gives, and a law that would pull is
+            // held at zero.
+            Some(boot) => {
+                let (ball, layer) = (delta - y[BOOT], y[BOOT]);
+                let mut split = boot.split(&self.law, ball, rate, layer, true, false);
+                if split.ball_rate < 0.0 {
+                    split = boot.split(&self.law, ball, rate, layer, false, false);
+                }
+                if split.force < 0.0 {
+                    split = boot.split(&self.law, ball, rate, layer, split.ball_rate > 0.0, true);
+                }
+                (ball, split.ball_rate, split.force, split.loss_power(boot), split.boot_rate)
+            }
+        };
 
         let xi = vec3(y, SPRING);
         let xi_t = xi - n * xi.dot(n);
@@ -224,6 +255,7 @@ impl Dynamics {
             grip_margin,
             damping_power,
             friction_power,
+            boot_rate,
         }
     }
 
@@ -242,13 +274,20 @@ impl Dynamics {
 
         put3(&mut dy, FOOT_POSITION, v_f);
         put_rot(&mut dy, FOOT_ROTATION, Rot3::from_xyzw(w_f.x, w_f.y, w_f.z, 0.0) * q_f * 0.5);
-        put3(&mut dy, FOOT_VELOCITY, (self.drive - force) / self.foot_mass + self.gravity);
-        // Euler's equations in the foot's principal axes.
         let torque_foot = c.lever_foot.cross(-force);
-        let w_body = q_f.inverse() * w_f;
-        let l_body = w_body * self.foot_inertia;
-        let dw_body = ((q_f.inverse() * torque_foot) - w_body.cross(l_body)) / self.foot_inertia;
-        put3(&mut dy, FOOT_ANGULAR_VELOCITY, q_f * dw_body);
+        if let Some(leg) = &self.leg {
+            // The leg's mobility about the foot's centre, frozen in the world frame.
+            let (turn, accel) = leg.response(torque_foot, self.drive - force);
+            put3(&mut dy, FOOT_VELOCITY, accel + self.gravity);
+            put3(&mut dy, FOOT_ANGULAR_VELOCITY, turn);
+        } else {
+            put3(&mut dy, FOOT_VELOCITY, (self.drive - force) / self.foot_mass + self.gravity);
+            // Euler's equations in the foot's principal axes.
+            let w_body = q_f.inverse() * w_f;
+            let l_body = w_body * self.foot_inertia;
+            let dw_body = ((q_f.inverse() * torque_foot) - w_body.cross(l_body)) / self.foot_inertia;
+            put3(&mut dy, FOOT_ANGULAR_VELOCITY, q_f * dw_body);
+        }
 
         put3(&mut dy, BALL_POSITION, v_b);
         put_rot(&mut dy, BALL_ROTATION, Rot3::from_xyzw(w_b.x, w_b.y, w_b.z, 0.0) * q_b * 0.5);
@@ -266,6 +305,7 @@ impl Dynamics {
         dy[FRICTION_LOSS] = c.friction_power;
         dy[DRIVE_WORK] = self.drive.dot(v_f);
         dy[GRAVITY_WORK] = self.gravity.dot(v_f * self.foot_mass + v_b * self.ball_mass);
+        dy[BOOT] = c.boot_rate;
         dy
     }
 
@@ -280,14 +320,21 @@ impl Dynamics {
     pub fn ball_spin_energy(&self, y: &State) -> f64 {
         0.5 * self.ball_inertia * vec3(y, BALL_ANGULAR_VELOCITY).length_squared()
     }
-    pub fn foot_energy(&self, y: &State) -> f64 {
+    /// The foot's kinetic energy at y, time t (with the leg, `LegDynamics::foot_energy`).
+    pub fn foot_energy(&self, y: &State, t: f64) -> f64 {
+        if let Some(leg) = &self.leg {
+            let impulse = self.drive * t - vec3(y, IMPULSE);
+            return leg.foot_energy(self.foot_mass, impulse, vec3(y, FOOT_ANGULAR_VELOCITY), vec3(y, FOOT_VELOCITY));
+        }
         let q = rot(y, FOOT_ROTATION);
         let w_body = q.inverse() * vec3(y, FOOT_ANGULAR_VELOCITY);
         0.5 * self.foot_mass * vec3(y, FOOT_VELOCITY).length_squared() + 0.5 * w_body.dot(w_body * self.foot_inertia)
     }
-    /// U(δ) + ½ k_t |ξ|².
+    /// U(δ) + ½ k_t |ξ|² (+ ½ k_b δ_b² with a boot).
     pub fn elastic_energy(&self, y: &State, compression: f64) -> f64 {
-        self.law.potential(compression) + 0.5 * self.tangential_stiffness * vec3(y, SPRING).length_squared()
+        self.law.potential(compression)
+            + 0.5 * self.tangential_stiffness * vec3(y, SPRING).length_squared()
+            + self.boot.map_or(0.0, |b| b.potential(y[BOOT]))
     }
     /// The world-frame end state of a run that stopped at state y, time t.
     pub fn end_state(&self, kick: &Kick3d, y: &State, t: f64) -> crate::outcome::EndState {
@@ -303,6 +350,7 @@ impl Dynamics {
             ball_angular_velocity: vec3(y, BALL_ANGULAR_VELOCITY),
             spring: vec3(y, SPRING),
             compression: self.contact(y).compression,
+            boot_compression: y[BOOT],
             impulse: vec3(y, IMPULSE),
             angular_impulse: vec3(y, ANGULAR_IMPULSE),
             normal_impulse: y[NORMAL_IMPULSE],
@@ -314,9 +362,9 @@ impl Dynamics {
     }
 
     /// Kinetic plus elastic energy (what a passive contact can only lose).
-    pub fn mechanical_energy(&self, y: &State) -> f64 {
+    pub fn mechanical_energy(&self, y: &State, t: f64) -> f64 {
         let c = self.contact(y);
-        self.ball_translation_energy(y) + self.ball_spin_energy(y) + self.foot_energy(y) + self.elastic_energy(y, c.compression)
+        self.ball_translation_energy(y) + self.ball_spin_energy(y) + self.foot_energy(y, t) + self.elastic_energy(y, c.compression)
     }
 }
 

@@ -210,7 +210,7 @@ impl System<f64, State> for PhaseSystem<'_> {
 }
 
 fn sample(dynamics: &Dynamics, t: f64, y: &State) -> EnergySample {
-    (t, dynamics.mechanical_energy(y), y[dynamics::DAMPING_LOSS], y[dynamics::FRICTION_LOSS])
+    (t, dynamics.mechanical_energy(y, t), y[dynamics::DAMPING_LOSS], y[dynamics::FRICTION_LOSS])
 }
 
 struct Plain(Dynamics);

@@ -209,12 +209,12 @@ impl kick_core::parameters::SetLaw for KickSpec {
 
 impl SetParameter for KickSpec {
     /// The 1D scenario's parameters with the shell ball's (Level::Bounce, as
-    /// in `kick simulate`), and the 3D ones.
-    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Bounce, Level::Kick3d, Level::Instep];
+    /// in `kick simulate`) and the foot's (Level::Foot), and the 3D ones.
+    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Bounce, Level::Kick3d, Level::Instep, Level::Foot];
 
     fn set_parameter(&mut self, parameter: &'static ParameterDef, value: Value) -> Result<(), ParameterError> {
         match parameter.level {
-            Level::Scenario | Level::Bounce => self.scenario.set_parameter(parameter, value),
+            Level::Scenario | Level::Bounce | Level::Foot => self.scenario.set_parameter(parameter, value),
             _ => self.kick3d.set_parameter(parameter, value),
         }
     }
@@ -251,6 +251,77 @@ pub struct Kick3d {
     /// knife-edge face tilted by asin(e/R) and the point contact.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub instep: Option<Instep>,
+    /// The leg behind the foot (`leg`): its apparent inertia in place of
+    /// the free box's mass and inertia; `None`: the box of `foot_mass`.
+    #[serde(skip)]
+    pub leg: Option<LegDynamics>,
+}
+
+/// The leg behind the foot (`leg`; kick-core's `leg::foot::LegFoot`) as the
+/// 3D kick sees it: the 6×6 generalisation of Eq. 11. The foot's twist
+/// [ω; v(o)] at its reference point o (the body origin, the box's centre)
+/// changes as Ω [τ_o; F] under the wrench on the foot, Ω = J M⁻¹ Jᵀ the
+/// leg's mobility, frozen at the contact pose in the world frame (the
+/// assumption of Eq. 11: the leg keeps its configuration through the
+/// contact, and the velocity products of its swing, centripetal, Coriolis
+/// and the foot's gyroscopic term, are left out). The leg's contact point
+/// (0.65 of the foot's length) is the instep's point of first touch. Its
+/// kinetic energy changes by ½ ΔVᵀ Ω⁺ ΔV + V0 · ∫ W dt (ΔV in Ω's range,
+/// Ω⁺ its pseudo-inverse there): the energy partition's foot term.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LegDynamics {
+    /// Ω about o at first touch, world frame: rows and columns (α, a) × (τ, F).
+    pub mobility: [[f64; 6]; 6],
+    /// Ω⁺: Ω's pseudo-inverse on its range (rank 4 for the leg).
+    pub inertia: [[f64; 6]; 6],
+    /// The foot's velocity at first touch, world frame.
+    pub initial_velocity: Vec3,
+}
+
+impl LegDynamics {
+    /// The leg at `pose`, its mobility moved from the first touch's contact
+    /// point `contact` to the foot's reference point `origin` (world frame).
+    pub fn new(pose: kick_core::leg::LegPose, contact: Vec3, origin: Vec3, initial_velocity: Vec3) -> Result<LegDynamics, Kick3dError> {
+        let foot = kick_core::leg::LegFoot::new(pose)?;
+        let offset = origin - contact;
+        let omega = foot.mobility_about(nalgebra::Vector3::new(offset.x, offset.y, offset.z));
+        let eigen = omega.symmetric_eigen();
+        let largest = eigen.eigenvalues.amax();
+        let mut inverse = nalgebra::Matrix6::<f64>::zeros();
+        for (i, &value) in eigen.eigenvalues.iter().enumerate() {
+            // The null directions (the leg cannot move there) are exact zeros up to rounding.
+            if value > 1e-10 * largest {
+                let v = eigen.eigenvectors.column(i);
+                inverse += v * v.transpose() / value;
+            }
+        }
+        let array = |m: &nalgebra::Matrix6<f64>| std::array::from_fn(|r| std::array::from_fn(|c| m[(r, c)]));
+        Ok(LegDynamics { mobility: array(&omega), inertia: array(&inverse), initial_velocity })
+    }
+
+    /// (α, a): the foot's angular acceleration and its point o's, per the
+    /// wrench (torque about o, force) on the foot, world frame.
+    #[inline]
+    pub fn response(&self, torque: Vec3, force: Vec3) -> (Vec3, Vec3) {
+        let w = [torque.x, torque.y, torque.z, force.x, force.y, force.z];
+        let row = |r: usize| self.mobility[r].iter().zip(&w).map(|(m, x)| m * x).sum::<f64>();
+        (Vec3::new(row(0), row(1), row(2)), Vec3::new(row(3), row(4), row(5)))
+    }
+
+    /// ½ ΔVᵀ Ω⁺ ΔV for the twist change (Δω, Δv(o)).
+    pub fn quadratic(&self, angular: Vec3, velocity: Vec3) -> f64 {
+        let v = [angular.x, angular.y, angular.z, velocity.x, velocity.y, velocity.z];
+        0.5 * (0..6).map(|r| v[r] * (0..6).map(|c| self.inertia[r][c] * v[c]).sum::<f64>()).sum::<f64>()
+    }
+
+    /// The foot's kinetic energy at the end, with `mass` the 1D projection
+    /// that `kinetic_initial` books for it: ½ m v0² + v0 · ∫ F dt + ½ ΔVᵀ Ω⁺ ΔV
+    /// (no angular velocity at touch), `impulse` ∫ F dt on the foot.
+    pub fn foot_energy(&self, mass: f64, impulse: Vec3, angular: Vec3, velocity: Vec3) -> f64 {
+        0.5 * mass * self.initial_velocity.length_squared()
+            + self.initial_velocity.dot(impulse)
+            + self.quadratic(angular, velocity - self.initial_velocity)
+    }
 }
 
 /// The instep's surface, orientation and contact model, when given
@@ -379,6 +450,7 @@ impl Kick3d {
             gravity: spec.gravity.unwrap_or(false),
             ground: spec.ground.unwrap_or(false),
             instep: None,
+            leg: None,
         };
         kick.instep = crate::patch::instep(&kick, spec)?;
         let v_n = kick.normal_approach_speed();
@@ -390,7 +462,40 @@ impl Kick3d {
             }));
         }
         kick.law = kick.normal_scenario()?.contact_law();
+        kick.foot(spec)?;
         Ok(kick)
+    }
+
+    /// The foot behind the contact: the leg's dynamics, and what the leg or a
+    /// boot does not take (module docs of `contact`, README).
+    fn foot(&mut self, spec: &Kick3dSpec) -> Result<(), Kick3dError> {
+        let foot = self.base.foot();
+        let refuse = |given: &'static str, reason: &'static str| {
+            Err(Kick3dError::Core(kick_core::KickError::DoesNotApply { given, to: "a foot with the leg or a boot".into(), reason }))
+        };
+        if foot.leg.is_some() || foot.boot.is_some() {
+            if self.rigid_grip() {
+                return refuse(
+                    "tangential_stiffness",
+                    "rigid grip's constraint is written for the free box foot against the ball itself; give a finite tangential_stiffness",
+                );
+            }
+            if self.ground {
+                return refuse("ground", "the rapier scene path models the box foot on the ball alone");
+            }
+        }
+        if let Some(pose) = foot.leg {
+            if self.gravity {
+                return refuse("gravity", "the leg's weight is held at the hip: gravity on a frozen leg is not modelled");
+            }
+            if spec.foot_inertia.is_some() {
+                return refuse("foot_inertia", "the leg's apparent inertia replaces the box's");
+            }
+            let s = self.initial_state();
+            let contact = s.ball_position - s.normal * self.ball_radius;
+            self.leg = Some(LegDynamics::new(pose, contact, s.foot_position, s.foot_velocity)?);
+        }
+        Ok(())
     }
 
     /// The value of every declared parameter of the 1D and 3D levels this kick
@@ -433,6 +538,22 @@ impl Kick3d {
                 (&parameters::INSTEP_RADIUS, Value::Number(instep.radius)),
                 (&parameters::PATCH_CONTACT, Value::Switch(instep.patch.is_some())),
             ]);
+        }
+        // The foot's settings only when it is not Table 1's rigid foot.
+        let foot = self.base.foot();
+        if let Some(pose) = foot.leg {
+            values.extend([
+                (&parameters::LEG, Value::Switch(true)),
+                (&parameters::KNEE, Value::Number(pose.knee)),
+                (&parameters::ANKLE, Value::Number(pose.ankle)),
+                (&parameters::HIP, Value::Number(pose.hip)),
+            ]);
+        }
+        match foot.boot {
+            Some(b) => values
+                .extend([(&parameters::BOOT_STIFFNESS, Value::Number(b.stiffness)), (&parameters::BOOT_DAMPING, Value::Number(b.damping))]),
+            None if foot.leg.is_some() => values.push((&parameters::BOOT_STIFFNESS, Value::Number(f64::INFINITY))),
+            None => {}
         }
         values
     }
@@ -584,7 +705,8 @@ impl Kick3d {
             }
             None => true,
         };
-        centred && !self.gravity && self.initial_sliding_velocity().length() == 0.0
+        // The leg's contact point swings on an arc: even a central kick slides.
+        centred && !self.gravity && self.leg.is_none() && self.initial_sliding_velocity().length() == 0.0
     }
 
     /// The ball centre from the foot's centre of mass at first touch, body

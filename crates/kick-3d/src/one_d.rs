@@ -18,7 +18,7 @@ pub fn solve(kick: &Kick3d) -> Result<Outcome3d, Kick3dError> {
     if !kick.is_one_dimensional() {
         return Err(Kick3dError::UnsupportedScene {
             path: "1d",
-            reason: "the kick is off-center or oblique (the surfaces slide) or gravity is on",
+            reason: "the kick is off-center or oblique (the surfaces slide), gravity is on, or the foot is the leg (its contact point swings on an arc)",
         });
     }
     solve_along_normal(kick)

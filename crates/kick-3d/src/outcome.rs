@@ -177,8 +177,10 @@ pub struct EndState {
     pub ball_angular_velocity: Vec3,
     /// Tangential spring extension ξ.
     pub spring: Vec3,
-    /// δ at the end (zero up to the event's location).
+    /// δ at the end (zero up to the event's location; the ball's δ_B with a boot).
     pub compression: f64,
+    /// δ_b, the boot's compression at the end (0 without a boot).
+    pub boot_compression: f64,
     /// ∫ F dt and ∫ r × F dt (about the ball centre) on the ball, ∫ F_n dt.
     pub impulse: Vec3,
     pub angular_impulse: Vec3,
@@ -192,6 +194,11 @@ pub struct EndState {
 impl EndState {
     /// Kinetic energy of the foot: translation and rotation about its principal axes.
     pub fn foot_energy(&self, kick: &Kick3d) -> f64 {
+        if let Some(leg) = &kick.leg {
+            // ∫ F dt on the foot: the drive's less the contact's on the ball.
+            let impulse = kick.drive() * self.time - self.impulse;
+            return leg.foot_energy(kick.base.effective_foot_mass(), impulse, self.foot_angular_velocity, self.foot_velocity);
+        }
         let [ix, iy, iz] = kick.foot_inertia;
         let w = self.foot_orientation.inverse() * self.foot_angular_velocity;
         0.5 * kick.base.effective_foot_mass() * self.foot_velocity.length_squared() + 0.5 * w.dot(w * Vec3::new(ix, iy, iz))
@@ -249,7 +256,9 @@ pub(crate) fn assemble(
             ball_translation: 0.5 * kick.base.ball_mass() * end.ball_velocity.length_squared(),
             ball_spin: 0.5 * kick.ball_inertia * end.ball_angular_velocity.length_squared(),
             foot: end.foot_energy(kick),
-            elastic_final: law.potential(end.compression) + kick.spring_energy(end.spring.length_squared()),
+            elastic_final: law.potential(end.compression)
+                + kick.spring_energy(end.spring.length_squared())
+                + kick.base.boot().map_or(0.0, |b| b.potential(end.boot_compression)),
             normal_damping_loss: end.normal_damping_loss,
             friction_loss: end.friction_loss,
             drive_work: end.drive_work,

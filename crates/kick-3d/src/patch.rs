@@ -243,7 +243,7 @@ impl Patch {
     ) -> (PatchForce, f64) {
         let big_r = ball_radius;
         let r_n = n.dot(r_dot);
-        let point = PatchForce { force: n * (elastic - slope * r_n), moment: Vec3::ZERO, centroid: r - n * big_r };
+        let point = PatchForce { force: n * (elastic - slope * r_n), moment: Vec3::ZERO, centroid: r - n * big_r, rate_weight: 1.0 };
         if !(delta > 0.0) {
             return (point, 0.0);
         }
@@ -257,7 +257,7 @@ impl Patch {
         let (mut sum_g, mut sum_gz) = (0.0, 0.0);
         let d = big_r + rf - delta;
         let inv_rf = 1.0 / rf;
-        let (total, along, across) = {
+        let (total, along, across, rated) = {
             let kappa = d * inv_rf;
             // The rings are spaced in S = √((ν·q)² + R² − |q|²), the half
             // chord of the ball along ν: S² = κ² z² − B² (ν runs through
@@ -334,7 +334,7 @@ impl Patch {
             let total = sum_gz * inv_rf;
             let rated = sum_gzz * inv_rf * inv_rf;
             // Σ_θ ν (−ρ⃗·V/r_f) = −ρ² V / (2 r_f²) per spoke.
-            (total, elastic * total - slope * r_n * rated, -slope * spread * 0.5 * inv_rf * inv_rf)
+            (total, elastic * total - slope * r_n * rated, -slope * spread * 0.5 * inv_rf * inv_rf, rated)
         };
         if !(total > 0.0) {
             return (point, 0.0);
@@ -344,7 +344,7 @@ impl Patch {
         let inv_total = 1.0 / total;
         let force = n * (along * inv_total) + v * (across * inv_total);
         let moment = v.cross(n) * (across * d * inv_total);
-        (PatchForce { force, moment, centroid: centre + n * (sum_gz / sum_g) }, zeta_rate)
+        (PatchForce { force, moment, centroid: centre + n * (sum_gz / sum_g), rate_weight: rated * inv_total }, zeta_rate)
     }
 }
 
@@ -361,7 +361,7 @@ impl Patch {
 pub(crate) fn flat(big_r: f64, r: Vec3, r_n: f64, turn: Vec3, delta: f64, n: Vec3, elastic: f64, slope: f64) -> PatchForce {
     let m2 = delta * (20.0 * big_r * big_r - 15.0 * big_r * delta + 3.0 * delta * delta) / (20.0 * (3.0 * big_r - delta));
     let turn_t = turn - n * n.dot(turn);
-    PatchForce { force: n * (elastic - slope * r_n), moment: turn_t * (-slope * m2), centroid: r - n * (big_r - delta) }
+    PatchForce { force: n * (elastic - slope * r_n), moment: turn_t * (-slope * m2), centroid: r - n * (big_r - delta), rate_weight: 1.0 }
 }
 
 /// The normal force over the patch, body frame.
@@ -373,6 +373,10 @@ pub struct PatchForce {
     pub moment: Vec3,
     /// The patch's centroid (depth-weighted), where friction acts.
     pub centroid: Vec3,
+    /// w in ∂(n · force)/∂(n · ṙ) = −slope w: how the normal force moves with
+    /// the ball's normal rate (1 on a flat face, Σ over the rings on a cap);
+    /// a boot in series solves its balance with it.
+    pub rate_weight: f64,
 }
 
 /// The ball centre in the foot's body frame at first touch, and the normal there.
@@ -565,7 +569,7 @@ mod tests {
                 loss += w * slope * rate * rate;
             }
         }
-        (PatchForce { force: force / total, moment: moment / total, centroid: Vec3::ZERO }, loss / total)
+        (PatchForce { force: force / total, moment: moment / total, centroid: Vec3::ZERO, rate_weight: 1.0 }, loss / total)
     }
 
     /// Ball radius, cap radius, the cap's centre and a tilted normal: the

@@ -77,6 +77,12 @@ impl Scene {
             return Err(Kick3dError::UnsupportedScene { path: "rapier", reason: crate::model::RIGID_GRIP_PATHS });
         }
         kick.require_point_contact_box("rapier")?;
+        if kick.leg.is_some() || kick.base.boot().is_some() {
+            return Err(Kick3dError::UnsupportedScene {
+                path: "rapier",
+                reason: "the scene's foot is the free box against the ball itself: the leg and the boot run on the accurate and full-state paths",
+            });
+        }
         let dynamics = Dynamics::new(kick);
         let start = dynamics::initial_state(kick);
         let init = kick.initial_state();

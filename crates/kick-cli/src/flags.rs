@@ -290,7 +290,7 @@ mod tests {
             let value = flags.given.iter().find(|(q, _)| q.name == p.name).map(|(_, v)| *v).expect("given");
             expected.set_parameter(p, value).unwrap();
             assert_eq!(flags.spec(), expected, "{}", p.name);
-            if matches!(p.level, kick_core::Level::Scenario | kick_core::Level::Bounce) {
+            if matches!(p.level, kick_core::Level::Scenario | kick_core::Level::Bounce | kick_core::Level::Foot) {
                 assert!(parse::<ScenarioSpec>(&args).is_ok(), "{}", p.name);
             } else {
                 assert!(parse::<ScenarioSpec>(&args).is_err(), "{} is not a 1D flag", p.name);

@@ -63,6 +63,9 @@ impl Solver for Accurate {
         "accurate"
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        if let Some(boot) = scenario.boot() {
+            return crate::boot::solve(self.method(), SolverPath::Accurate, scenario, boot, None);
+        }
         match scenario.contact_law() {
             AnyLaw::PowerLaw(law) => self.solve_law(scenario, law),
             law => self.solve_law(scenario, law),
@@ -77,6 +80,9 @@ impl RecordingSolver for Accurate {
         spacing: Spacing,
         sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
     ) -> Result<Streamed, KickError> {
+        if let Some(boot) = scenario.boot() {
+            return crate::boot::solve_streamed(self.method(), SolverPath::Accurate, scenario, boot, spacing, sink);
+        }
         match scenario.contact_law() {
             AnyLaw::PowerLaw(law) => self.solve_law_streamed(scenario, law, spacing, sink),
             law => self.solve_law_streamed(scenario, law, spacing, sink),
@@ -145,6 +151,9 @@ impl Solver for FullState {
         self.path.name()
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        if let Some(boot) = scenario.boot() {
+            return crate::boot::solve(self.method, self.path, scenario, boot, None);
+        }
         match scenario.contact_law() {
             AnyLaw::PowerLaw(law) => self.run(scenario, law, None),
             law => self.run(scenario, law, None),
@@ -159,6 +168,9 @@ impl RecordingSolver for FullState {
         spacing: Spacing,
         sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
     ) -> Result<Streamed, KickError> {
+        if let Some(boot) = scenario.boot() {
+            return crate::boot::solve_streamed(self.method, self.path, scenario, boot, spacing, sink);
+        }
         match scenario.contact_law() {
             AnyLaw::PowerLaw(law) => self.streamed(scenario, law, spacing, sink),
             law => self.streamed(scenario, law, spacing, sink),

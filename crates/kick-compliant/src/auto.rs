@@ -6,6 +6,8 @@
 //! | no drive, n = 1 | `closed-form` (damped oscillator, undamped return) |
 //! | the paper's law | `series` (power series to δ_max, energy integral back) |
 //! | the shell ball, drive ≥ 0 | `series` ([`crate::shell_series`]: Taylor steps from touch to separation) |
+//! | a boot in series: the shell ball, drive ≥ 0 | `series` ([`crate::boot::series`]) |
+//! | a boot in series, another law | `reduced` ([`crate::boot`]: (δ, δ̇, δ_b) on the engine) |
 //! | another contact law | `reduced` (δ through the whole contact) |
 //! | time history wanted | `accurate` (full state; outcome and history from one run) |
 //!
@@ -47,7 +49,11 @@ impl Solver for Auto {
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
         match Auto::path(scenario) {
             SolverPath::ClosedForm => ClosedForm.solve(scenario),
-            SolverPath::Series => self.series.solve(scenario),
+            // A booted series that meets the ball's clamp hands over to the engine.
+            SolverPath::Series => match self.series.solve(scenario) {
+                Err(KickError::NotApplicable { .. }) if scenario.boot().is_some() => self.reduced.solve(scenario),
+                other => other,
+            },
             _ => self.reduced.solve(scenario),
         }
     }

@@ -136,6 +136,7 @@ pub fn released_energy(scenario: &Scenario, end: &CompressionEnd) -> (f64, f64) 
 /// c = 0 and no drive: the whole contact in closed form (Eqs. 33–34).
 pub fn elastic(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
     if scenario.law_kind() != kick_core::LawKind::PowerLaw
+        || scenario.boot().is_some()
         || scenario.get(kick_core::Parameter::Damping) != 0.0
         || scenario.drive_force() != 0.0
     {
@@ -202,6 +203,7 @@ impl LinearCompression {
 /// n = 1, compression-only damping, no drive: closed form for any ζ.
 pub fn linear(scenario: &Scenario) -> Option<Result<Outcome, KickError>> {
     if scenario.law_kind() != kick_core::LawKind::PowerLaw
+        || scenario.boot().is_some()
         || scenario.get(kick_core::Parameter::Exponent) != 1.0
         || scenario.drive_force() != 0.0
     {
@@ -243,6 +245,7 @@ pub struct ClosedForm;
 impl ClosedForm {
     pub fn applies(scenario: &Scenario) -> bool {
         scenario.law_kind() == kick_core::LawKind::PowerLaw
+            && scenario.boot().is_none()
             && scenario.drive_force() == 0.0
             && (scenario.get(kick_core::Parameter::Damping) == 0.0 || scenario.get(kick_core::Parameter::Exponent) == 1.0)
     }
@@ -256,7 +259,7 @@ impl kick_core::Solver for ClosedForm {
         elastic(scenario).or_else(|| linear(scenario)).unwrap_or_else(|| {
             Err(KickError::NotApplicable {
                 solver: "closed-form",
-                reason: "it needs the paper's law, no drive, and either damping = 0 or exponent = 1",
+                reason: "it needs the paper's law, no drive, no boot, and either damping = 0 or exponent = 1",
             })
         })
     }

@@ -17,6 +17,7 @@
 
 pub mod accurate;
 pub mod auto;
+pub mod boot;
 pub mod closed;
 pub mod events;
 pub mod history;

@@ -220,6 +220,9 @@ impl Solver for Reduced {
         "reduced"
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        if let Some(boot) = scenario.boot() {
+            return crate::boot::solve(self.method, SolverPath::Reduced, scenario, boot, None);
+        }
         match scenario.contact_law() {
             AnyLaw::PowerLaw(law) => self.solve_law(scenario, law, None),
             law => self.solve_law(scenario, law, None),
@@ -234,6 +237,9 @@ impl RecordingSolver for Reduced {
         spacing: Spacing,
         sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
     ) -> Result<Streamed, KickError> {
+        if let Some(boot) = scenario.boot() {
+            return crate::boot::solve_streamed(self.method, SolverPath::Reduced, scenario, boot, spacing, sink);
+        }
         let end = |o: &Outcome| o.contact_time;
         match scenario.contact_law() {
             AnyLaw::PowerLaw(law) => history::stream(spacing, sink, end, |s| self.solve_law(scenario, law, s)),
@@ -251,7 +257,7 @@ pub struct ReducedReturn {
 
 impl ReducedReturn {
     pub fn applies(scenario: &Scenario) -> bool {
-        scenario.law_kind() == LawKind::PowerLaw
+        scenario.law_kind() == LawKind::PowerLaw && scenario.boot().is_none()
     }
 }
 
@@ -260,6 +266,9 @@ impl Solver for ReducedReturn {
         "reduced-return"
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        if scenario.boot().is_some() {
+            return Err(crate::boot::not_applicable("reduced-return"));
+        }
         if !Self::applies(scenario) {
             return Err(KickError::NotApplicable {
                 solver: "reduced-return",

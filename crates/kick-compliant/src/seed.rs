@@ -133,6 +133,9 @@ impl Solver for SeedRk4 {
         "seed-rk4"
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        if scenario.boot().is_some() {
+            return Err(crate::boot::not_applicable("seed-rk4"));
+        }
         match scenario.contact_law() {
             AnyLaw::PowerLaw(law) => self.run(scenario, law, None),
             law => self.run(scenario, law, None),
@@ -148,6 +151,9 @@ impl RecordingSolver for SeedRk4 {
         sink: &mut dyn FnMut(&Sample) -> ControlFlow<()>,
     ) -> Result<Streamed, KickError> {
         // The history ends where Eq. 48 held, one step after the contact time.
+        if scenario.boot().is_some() {
+            return Err(crate::boot::not_applicable("seed-rk4"));
+        }
         let end = |o: &Outcome| o.contact_time + self.step;
         match scenario.contact_law() {
             AnyLaw::PowerLaw(law) => history::stream(spacing, sink, end, |s| self.run(scenario, law, s)),

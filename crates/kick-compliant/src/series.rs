@@ -607,7 +607,10 @@ impl Series {
     /// The paper's law, or the shell ball with a drive ≥ 0
     /// ([`crate::shell_series`]).
     pub fn applies(scenario: &Scenario) -> bool {
-        scenario.law_kind() == LawKind::PowerLaw || crate::shell_series::applies(scenario)
+        match scenario.boot() {
+            Some(_) => crate::boot::series::applies(scenario),
+            None => scenario.law_kind() == LawKind::PowerLaw || crate::shell_series::applies(scenario),
+        }
     }
 
     /// Maximum compression, its time, the force peak and the dissipated
@@ -675,6 +678,17 @@ impl Solver for Series {
         "series"
     }
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
+        if let Some(boot) = scenario.boot() {
+            return match scenario.contact_law() {
+                kick_core::AnyLaw::Shell(ball) if crate::boot::series::applies(scenario) => {
+                    crate::boot::series::solve(scenario, ball, boot, self.tolerance)
+                }
+                _ => Err(KickError::NotApplicable {
+                    solver: "series",
+                    reason: "with a boot in series its Taylor steps are written for the shell ball under a drive >= 0",
+                }),
+            };
+        }
         if let kick_core::AnyLaw::Shell(ball) = scenario.contact_law() {
             if crate::shell_series::applies(scenario) {
                 return crate::shell_series::solve(scenario, ball, self.tolerance);

@@ -51,10 +51,10 @@ pub const MAX_STEPS: u32 = 20_000;
 /// `reduced` at 1e-14 at the default tolerance: 1.7e-10 with 1, 6.6e-11 with
 /// 1e-3, 3.5e-12 with 1e-4 (chosen: the documented 1e-10 with a margin of 30,
 /// at 1.6x the steps of 1).
-const STEP_SCALE: f64 = 1e-4;
+pub(crate) const STEP_SCALE: f64 = 1e-4;
 /// Points per step at which δ, δ̇ and dF/dt are sampled for sign changes.
 const SAMPLES: usize = 4;
-const K: usize = ORDER;
+pub(crate) const K: usize = ORDER;
 
 /// True when this path solves the scenario: the shell law with a drive that
 /// pushes the foot on (or none).
@@ -70,41 +70,95 @@ struct Step {
     dissipation: [f64; K - 1],
 }
 
+/// The elastic force's Taylor coefficients E_k of F_el(δ(t)), order by
+/// order from δ's (δ_k known up to k when E_k is asked for): the
+/// recurrences of the module docs, shared by the shell's own steps and the
+/// booted ones ([`crate::boot::series`]).
+pub(crate) struct ElasticJet {
+    radius: f64,
+    absolute: f64,
+    gamma: f64,
+    shell_stiffness: f64,
+    q: [f64; K + 1],
+    cube: [f64; K + 1],
+    f: [f64; K + 1],
+    w: [f64; K + 1],
+    g: [f64; K + 1],
+    area: [f64; K + 1],
+    elastic: [f64; K + 1],
+}
+
+impl ElasticJet {
+    /// At compression δ0 (the step's start).
+    pub(crate) fn new(ball: &ShellBall, delta0: f64) -> Result<ElasticJet, KickError> {
+        let r = ball.radius;
+        let absolute = ball.pressure + ball.atmospheric_pressure;
+        let gamma = ball.gas_exponent;
+        let mut jet = ElasticJet {
+            radius: r,
+            absolute,
+            gamma,
+            shell_stiffness: ball.shell_stiffness,
+            q: [0.0; K + 1],
+            cube: [0.0; K + 1],
+            f: [0.0; K + 1],
+            w: [0.0; K + 1],
+            g: [0.0; K + 1],
+            area: [0.0; K + 1],
+            elastic: [0.0; K + 1],
+        };
+        let cap0 = delta0 * delta0 * (3.0 * r - delta0) / (4.0 * r * r * r);
+        jet.f[0] = 1.0 - cap0;
+        if !(jet.f[0] > 0.0) {
+            return Err(KickError::Integration { time: 0.0, reason: format!("compression {delta0} m leaves no gas in the ball") });
+        }
+        // (1 − c)^(−γ) and the gauge pressure with the digits of a small cap.
+        let log_ratio = -(-cap0).ln_1p();
+        jet.w[0] = (gamma * log_ratio).exp();
+        jet.g[0] = ball.pressure + absolute * (gamma * log_ratio).exp_m1();
+        Ok(jet)
+    }
+
+    /// E_k from δ_0..δ_k (`d`).
+    #[inline]
+    pub(crate) fn next(&mut self, k: usize, d: &[f64]) -> f64 {
+        let r = self.radius;
+        let a = -self.gamma;
+        self.q[k] = (0..=k).map(|i| d[i] * d[k - i]).sum();
+        self.cube[k] = (0..=k).map(|i| self.q[i] * d[k - i]).sum();
+        if k > 0 {
+            self.f[k] = -(3.0 * r * self.q[k] - self.cube[k]) / (4.0 * r * r * r);
+            let s: f64 = (1..=k).map(|j| ((a + 1.0) * j as f64 - k as f64) * self.f[j] * self.w[k - j]).sum();
+            self.w[k] = s / (k as f64 * self.f[0]);
+            self.g[k] = self.absolute * self.w[k];
+        }
+        self.area[k] = std::f64::consts::PI * (2.0 * r * d[k] - self.q[k]);
+        self.elastic[k] = (0..=k).map(|i| self.g[i] * self.area[k - i]).sum::<f64>() + self.shell_stiffness * d[k];
+        self.elastic[k]
+    }
+
+    /// E_0..E_k computed so far.
+    pub(crate) fn elastic(&self) -> &[f64; K + 1] {
+        &self.elastic
+    }
+}
+
 fn step(ball: &ShellBall, mu: f64, drive_share: f64, delta0: f64, rate0: f64) -> Result<Step, KickError> {
-    let r = ball.radius;
-    let absolute = ball.pressure + ball.atmospheric_pressure;
-    let (gamma, chi, ks) = (ball.gas_exponent, ball.shell_loss, ball.shell_stiffness);
+    let chi = ball.shell_loss;
     let mut d = [0.0; K + 1];
-    let (mut q, mut cube, mut f, mut w, mut g, mut area, mut elastic, mut force) =
-        ([0.0; K + 1], [0.0; K + 1], [0.0; K + 1], [0.0; K + 1], [0.0; K + 1], [0.0; K + 1], [0.0; K + 1], [0.0; K - 1]);
+    let mut force = [0.0; K - 1];
     d[0] = delta0;
     d[1] = rate0;
-    let cap0 = delta0 * delta0 * (3.0 * r - delta0) / (4.0 * r * r * r);
-    f[0] = 1.0 - cap0;
-    if !(f[0] > 0.0) {
-        return Err(KickError::Integration { time: 0.0, reason: format!("compression {delta0} m leaves no gas in the ball") });
-    }
-    // (1 − c)^(−γ) and the gauge pressure with the digits of a small cap.
-    let log_ratio = -(-cap0).ln_1p();
-    w[0] = (gamma * log_ratio).exp();
-    g[0] = ball.pressure + absolute * (gamma * log_ratio).exp_m1();
-    let a = -gamma;
+    let mut jet = ElasticJet::new(ball, delta0)?;
     for k in 0..=K - 2 {
-        q[k] = (0..=k).map(|i| d[i] * d[k - i]).sum();
-        cube[k] = (0..=k).map(|i| q[i] * d[k - i]).sum();
-        if k > 0 {
-            f[k] = -(3.0 * r * q[k] - cube[k]) / (4.0 * r * r * r);
-            let s: f64 = (1..=k).map(|j| ((a + 1.0) * j as f64 - k as f64) * f[j] * w[k - j]).sum();
-            w[k] = s / (k as f64 * f[0]);
-            g[k] = absolute * w[k];
-        }
-        area[k] = std::f64::consts::PI * (2.0 * r * d[k] - q[k]);
-        elastic[k] = (0..=k).map(|i| g[i] * area[k - i]).sum::<f64>() + ks * d[k];
+        jet.next(k, &d);
+        let elastic = jet.elastic();
         // F = F_el (1 + χ δ̇): the factor's k-th coefficient is χ (k+1) d_(k+1).
         force[k] = elastic[k] + chi * (0..=k).map(|i| elastic[i] * (k - i + 1) as f64 * d[k - i + 1]).sum::<f64>();
         let drive = if k == 0 { drive_share } else { 0.0 };
         d[k + 2] = (drive - force[k]) / (mu * ((k + 1) * (k + 2)) as f64);
     }
+    let elastic = jet.elastic();
     // χ F_el δ̇² = (F − F_el) δ̇.
     let mut dissipation = [0.0; K - 1];
     for (k, slot) in dissipation.iter_mut().enumerate() {
@@ -114,23 +168,23 @@ fn step(ball: &ShellBall, mu: f64, drive_share: f64, delta0: f64, rate0: f64) ->
 }
 
 /// Σ c_k t^k (Horner).
-fn poly(c: &[f64], t: f64) -> f64 {
+pub(crate) fn poly(c: &[f64], t: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &x| acc * t + x)
 }
 
 /// d/dt Σ c_k t^k.
-fn derivative(c: &[f64], t: f64) -> f64 {
+pub(crate) fn derivative(c: &[f64], t: f64) -> f64 {
     c.iter().enumerate().skip(1).rev().fold(0.0, |acc, (k, &x)| acc * t + k as f64 * x)
 }
 
 /// ∫_0^t Σ c_k s^k ds.
-fn integral(c: &[f64], t: f64) -> f64 {
+pub(crate) fn integral(c: &[f64], t: f64) -> f64 {
     t * c.iter().enumerate().rev().fold(0.0, |acc, (k, &x)| acc * t + x / (k + 1) as f64)
 }
 
 /// The first time in (0, h] where `f` changes sign from positive to
 /// non-positive, sampled at SAMPLES points and refined by Brent's method.
-fn first_fall(f: impl Fn(f64) -> f64, h: f64) -> Option<f64> {
+pub(crate) fn first_fall(f: impl Fn(f64) -> f64, h: f64) -> Option<f64> {
     let mut previous = (0.0, f(0.0));
     for j in 1..=SAMPLES {
         let t = h * j as f64 / SAMPLES as f64;

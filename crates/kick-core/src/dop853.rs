@@ -20,6 +20,13 @@ use nalgebra::SVector;
 /// A system y' = f(x, y) (x: the independent variable, usually time).
 pub trait System<const N: usize> {
     fn derivative(&self, x: f64, y: &SVector<f64, N>) -> SVector<f64, N>;
+    /// How many components the error norm averages over: all N, unless a
+    /// system carries components it leaves at zero (kick-3d's state keeps
+    /// slots for a leg and a boot): those add nothing to the sum, and
+    /// averaging over the others keeps a kick without them bit for bit.
+    fn counted_components(&self) -> usize {
+        N
+    }
 }
 
 /// Why stepping stopped short.
@@ -494,7 +501,7 @@ impl<const N: usize> Stepper<N> {
             if denominator <= 0.0 {
                 denominator = 1.0;
             }
-            let err = h * e5 / (N as f64 * denominator).sqrt();
+            let err = h * e5 / (system.counted_components() as f64 * denominator).sqrt();
             if !err.is_finite() || !y_new.iter().all(|v| v.is_finite()) {
                 // A non-finite trial is a step too large, never physics.
                 self.rejected += 1;

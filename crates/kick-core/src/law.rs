@@ -60,6 +60,15 @@ pub trait ContactLaw {
     fn unclamped_force(&self, compression: f64, compression_rate: f64) -> (f64, f64) {
         self.elastic_and_contact_force(compression, compression_rate)
     }
+    /// (E, D) with F(δ, δ̇) = E + D δ̇ on one side of the switch, before any
+    /// clamp: every law here is affine in the rate there. A layer in series
+    /// (kick-core's `boot`) solves its force balance with it in closed form.
+    /// One evaluation: the branch force at δ̇ = 1.
+    #[inline]
+    fn rate_affine(&self, compression: f64, compressing: bool) -> (f64, f64) {
+        let (elastic, total) = self.branch_force(compression, 1.0, compressing);
+        (elastic, total - elastic)
+    }
     /// True when the law dissipates only while compressing (δ̇ > 0), so the
     /// restitution phase of a passive run is conservative.
     fn damps_compression_only(&self) -> bool {

@@ -557,6 +557,8 @@ forward_contact_law! {
     #[inline]
     fn branch_force_and_gradient(&self, compression: f64, compression_rate: f64, compressing: bool) -> (f64, f64, f64);
     fn damps_compression_only(&self) -> bool;
+    #[inline]
+    fn rate_affine(&self, compression: f64, compressing: bool) -> (f64, f64);
 }
 
 fn check_positive(name: &'static str, value: f64) -> Result<f64, KickError> {
@@ -695,6 +697,25 @@ mod tests {
         }
     }
 
+    /// `rate_affine` is each law's force on its branch: F(δ, v) = E + D v for
+    /// several rates, before the clamp (where the law does not pull).
+    #[test]
+    fn every_law_is_affine_in_the_rate_on_its_branch() {
+        let shell = AnyLaw::Shell(ShellBall::default_with_radius(crate::DEFAULT_BALL_RADIUS).unwrap());
+        for law in laws().into_iter().chain([shell]) {
+            for &d in &[0.002, 0.01, 0.03] {
+                for compressing in [true, false] {
+                    let (e, slope) = law.rate_affine(d, compressing);
+                    for &v in &[-3.0, 0.5, 7.0, 20.0] {
+                        let (_, raw) = law.unclamped_force(d, v);
+                        let branch = if matches!(law, AnyLaw::PowerLaw(_)) { law.branch_force(d, v, compressing).1 } else { raw };
+                        assert!((branch - (e + slope * v)).abs() <= 1e-12 * branch.abs().max(e), "{:?} {d} {v} {compressing}", law.kind());
+                    }
+                }
+            }
+        }
+    }
+
     /// Each method of `AnyLaw` gives exactly what the law inside gives,
     /// including the paper's law's overrides (before forwarding, `AnyLaw`
     /// fell back to the trait's defaults for the branch forces, which clip
@@ -723,6 +744,9 @@ mod tests {
                 assert_eq!(any.potential(d).to_bits(), law.potential(d).to_bits());
             }
             assert_eq!(any.onset_force(22.0), law.onset_force(22.0));
+            for compressing in [true, false] {
+                assert_eq!(any.rate_affine(0.01, compressing), law.rate_affine(0.01, compressing));
+            }
             assert_eq!(any.damps_compression_only(), law.damps_compression_only());
         }
         let shell = AnyLaw::Shell(ShellBall::default_with_radius(crate::DEFAULT_BALL_RADIUS).unwrap());

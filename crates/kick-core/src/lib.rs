@@ -4,12 +4,14 @@
 //! Equation numbers refer to *The Millisecond Physics of a Soccer Kick*;
 //! each is stated, with the function that implements it, in `paper/model.md`.
 
+pub mod boot;
 pub mod check;
 pub mod dop853;
 pub mod error;
 pub mod input;
 pub mod law;
 pub mod laws;
+pub mod leg;
 pub mod measurements;
 pub mod models;
 pub mod number;
@@ -23,6 +25,7 @@ pub mod special;
 pub mod threads;
 pub mod validity;
 
+pub use boot::Boot;
 pub use error::{KickError, Status};
 pub use law::{ContactLaw, PowerLawContact};
 pub use laws::{AnyLaw, LawKind};
@@ -32,7 +35,7 @@ pub use outcome::{
     MAX_HISTORY_SAMPLES, OBSERVABLES,
 };
 pub use parameters::{Level, ParameterDef, SetLaw, SetParameter, Value, PARAMETERS};
-pub use scenario::{Parameter, Scenario, ScenarioSpec};
+pub use scenario::{Foot, Parameter, Scenario, ScenarioSpec};
 pub use shell::ShellBall;
 use std::ops::ControlFlow;
 pub use validity::{OutsideValidity, Validity};

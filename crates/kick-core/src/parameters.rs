@@ -41,6 +41,11 @@ pub enum Level {
     /// The ball alone: the shell law's parameters (kick-core's `shell`) and
     /// a bounce on a rigid plate (kick-bounce's own list).
     Bounce,
+    /// The foot behind the contact, 1D and 3D kicks alike: the articulated
+    /// leg (kick-core's `leg::foot`) and the boot in series (`boot`).
+    /// Settings of the foot, like the shell ball's of its law: not columns
+    /// of result rows (recorded with the outcome sets and in `/fixed`).
+    Foot,
 }
 
 impl Level {
@@ -51,6 +56,7 @@ impl Level {
             Level::Instep => "3D instep",
             Level::Flight => "flight",
             Level::Bounce => "bounce",
+            Level::Foot => "foot",
         }
     }
 }
@@ -701,8 +707,72 @@ pub const PATCH_CONTACT: ParameterDef = ParameterDef {
     doc: "Spread the shell ball's normal force over the contact patch, each element damped at its own rate (law shell)",
 };
 
+// The foot behind the contact (Level::Foot): the articulated leg and the boot.
+pub const LEG: ParameterDef = ParameterDef {
+    name: "leg",
+    symbol: "leg",
+    unit: "",
+    level: Level::Foot,
+    shape: Shape::Switch,
+    default: DefaultValue::Off,
+    valid: Valid::ANY,
+    sample: None,
+    doc: "The foot is the articulated leg posed by knee, ankle and hip: its apparent inertia at the contact point (Eq. 11; 6x6 in 3D) \
+          in place of foot_mass, with the identified boot",
+};
+pub const KNEE: ParameterDef = scalar(
+    "knee",
+    "θ_k",
+    "deg",
+    Level::Foot,
+    Number(crate::leg::LegPose::DEFAULT.knee),
+    Valid::new(Bound::Closed(-15.0), Bound::Closed(170.0), "in [-15, 170] degrees"),
+    None,
+    "With leg: knee flexion, 0 straight (kick leg --knee)",
+);
+pub const ANKLE: ParameterDef = scalar(
+    "ankle",
+    "θ_a",
+    "deg",
+    Level::Foot,
+    Number(crate::leg::LegPose::DEFAULT.ankle),
+    Valid::new(Bound::Closed(-45.0), Bound::Closed(100.0), "in [-45, 100] degrees"),
+    None,
+    "With leg: ankle plantarflexion from neutral, the ankle braced (kick leg --ankle --locked-ankle)",
+);
+pub const HIP: ParameterDef = scalar(
+    "hip",
+    "θ_h",
+    "deg",
+    Level::Foot,
+    Number(crate::leg::LegPose::DEFAULT.hip),
+    Valid::new(Bound::Closed(-90.0), Bound::Closed(150.0), "in [-90, 150] degrees"),
+    None,
+    "With leg: thigh angle from the downward vertical, positive forward (kick leg --hip)",
+);
+pub const BOOT_STIFFNESS: ParameterDef = scalar(
+    "boot_stiffness",
+    "k_b",
+    "N/m",
+    Level::Foot,
+    Derived("inf (the rigid foot); with leg the identified boot's 3.52e4"),
+    Valid::new(Bound::Open(0.0), Bound::Closed(f64::INFINITY), "> 0 (inf: no layer, the rigid foot)"),
+    None,
+    "Stiffness of the compliant layer (boot upper and tissue) in series between foot and ball, Kelvin-Voigt (inf: rigid foot)",
+);
+pub const BOOT_DAMPING: ParameterDef = scalar(
+    "boot_damping",
+    "c_b",
+    "N s/m",
+    Level::Foot,
+    Derived("the identified boot's 37.7"),
+    Valid::new(Bound::Open(0.0), Bound::Unbounded, "finite and > 0"),
+    None,
+    "Damping of the compliant layer in series, F = k_b δ_b + c_b dδ_b/dt",
+);
+
 /// Every parameter of the 1D and 3D levels, each once, lower levels first.
-pub static PARAMETERS: [ParameterDef; 29] = [
+pub static PARAMETERS: [ParameterDef; 35] = [
     FOOT_MASS,
     BALL_MASS,
     FOOT_SPEED,
@@ -733,6 +803,13 @@ pub static PARAMETERS: [ParameterDef; 29] = [
     crate::shell::GAS_EXPONENT,
     crate::shell::SHELL_STIFFNESS,
     crate::shell::SHELL_LOSS,
+    // The foot (leg and boot), taken by 1D and 3D kicks alike.
+    LEG,
+    KNEE,
+    ANKLE,
+    HIP,
+    BOOT_STIFFNESS,
+    BOOT_DAMPING,
 ];
 
 /// The parameters of one level (not those it takes from lower levels).
@@ -918,8 +995,8 @@ mod tests {
             if p.shape != Shape::Switch {
                 assert!(p.check(f64::NAN).is_err(), "{}", p.name);
             }
-            // μ = ∞ never slips; k_t = ∞ is rigid grip, a constraint.
-            if p.name != "friction" && p.name != "tangential_stiffness" {
+            // μ = ∞ never slips; k_t = ∞ is rigid grip, a constraint; k_b = ∞ is no boot.
+            if !["friction", "tangential_stiffness", "boot_stiffness"].contains(&p.name) {
                 assert!(p.check(f64::INFINITY).is_err(), "{}", p.name);
             }
         }

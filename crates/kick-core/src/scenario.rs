@@ -1,8 +1,10 @@
 //! Scenario parameters of the 1D model (Table 1) and their validation.
 
+use crate::boot::{self, Boot};
 use crate::error::KickError;
 use crate::law::PowerLawContact;
 use crate::laws::{AnyLaw, LawError, LawKind, LawParameters};
+use crate::leg::{LegFoot, LegPose};
 use crate::parameters::{self, Level, ParameterDef, ParameterError, SetParameter, Value};
 use crate::shell::{self, ShellBall};
 use serde::{Deserialize, Serialize};
@@ -93,6 +95,19 @@ pub struct ScenarioSpec {
     pub shell_stiffness: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shell_loss: Option<f64>,
+    /// The foot (Level::Foot): the articulated leg and its pose, the boot.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub leg: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub knee: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ankle: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hip: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub boot_stiffness: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub boot_damping: Option<f64>,
 }
 
 impl ScenarioSpec {
@@ -159,7 +174,56 @@ impl ScenarioSpec {
                 });
             }
         }
-        Ok(())
+        if self.leg == Some(true) && self.foot_mass.is_some() {
+            return Err(KickError::DoesNotApply {
+                given: "foot_mass",
+                to: "the leg (`leg`)".into(),
+                reason: "the leg's apparent mass at the contact point is the foot's (Eq. 11); pose it with knee, ankle and hip",
+            });
+        }
+        self.foot().map(|_| ())
+    }
+
+    /// The foot this spec gives: the leg when `leg` is on (its pose from
+    /// `knee`, `ankle`, `hip`, declared defaults for the rest) and the boot,
+    /// given by `boot_stiffness`, else the identified one with the leg
+    /// ([`boot::IDENTIFIED`]), else none (the rigid foot of Table 1). A pose
+    /// without the leg, or a boot damping without a boot, is refused by name.
+    pub fn foot(&self) -> Result<Foot, KickError> {
+        let leg = self.leg == Some(true);
+        if !leg {
+            let pose = [(&parameters::KNEE, self.knee), (&parameters::ANKLE, self.ankle), (&parameters::HIP, self.hip)];
+            if let Some((p, _)) = pose.iter().find(|(_, v)| v.is_some()) {
+                return Err(KickError::DoesNotApply {
+                    given: p.name,
+                    to: "a foot without the leg".into(),
+                    reason: "the pose sets the leg's apparent inertia; give `leg` too",
+                });
+            }
+        }
+        let pose = leg
+            .then(|| -> Result<LegPose, KickError> {
+                let or = |v: Option<f64>, p: &ParameterDef| p.check(v.unwrap_or(p.default_number()));
+                Ok(LegPose {
+                    hip: or(self.hip, &parameters::HIP)?,
+                    knee: or(self.knee, &parameters::KNEE)?,
+                    ankle: or(self.ankle, &parameters::ANKLE)?,
+                })
+            })
+            .transpose()?;
+        let boot = match (self.boot_stiffness, leg) {
+            (Some(k), _) => Boot::new(k, self.boot_damping.unwrap_or(boot::IDENTIFIED.damping))?,
+            (None, true) => Boot::new(boot::IDENTIFIED.stiffness, self.boot_damping.unwrap_or(boot::IDENTIFIED.damping))?,
+            (None, false) if self.boot_damping.is_some() => {
+                return Err(KickError::DoesNotApply {
+                    given: "boot_damping",
+                    to: "the rigid foot".into(),
+                    reason: "it damps the boot in series; give `boot_stiffness` (or `leg`, which brings the identified boot)",
+                })
+            }
+            (None, false) => None,
+        };
+        Ok(Foot { leg: pose, boot })
     }
 
     /// The shell ball's parameters given, with their declarations (for the
@@ -196,7 +260,12 @@ impl ScenarioSpec {
         for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
             *slot = self.get(p).unwrap_or_else(|| base.get(p));
         }
-        self.law_on(Scenario::from_values(values)?)
+        let foot = self.foot()?;
+        // The leg's mass along the line of motion is the 1D foot's (Eq. 11).
+        if let Some(pose) = foot.leg {
+            values[0] = LegFoot::new(pose)?.effective_mass;
+        }
+        Ok(self.law_on(Scenario::from_values(values)?)?.with_foot(foot))
     }
 
     /// `scenario` under this spec's law: its target restitution, or for the
@@ -210,9 +279,13 @@ impl ScenarioSpec {
 }
 
 impl SetParameter for ScenarioSpec {
-    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Bounce];
+    const LEVELS: &'static [Level] = &[Level::Scenario, Level::Bounce, Level::Foot];
 
     fn set_parameter(&mut self, parameter: &'static ParameterDef, value: Value) -> Result<(), ParameterError> {
+        if parameter.name == parameters::LEG.name {
+            self.leg = Some(parameters::switch(parameter, value)?);
+            return Ok(());
+        }
         let x = parameters::number(parameter, value)?;
         let name = parameter.name;
         match Parameter::from_name(name) {
@@ -222,6 +295,11 @@ impl SetParameter for ScenarioSpec {
             None if name == shell::GAS_EXPONENT.name => self.gas_exponent = Some(x),
             None if name == shell::SHELL_STIFFNESS.name => self.shell_stiffness = Some(x),
             None if name == shell::SHELL_LOSS.name => self.shell_loss = Some(x),
+            None if name == parameters::KNEE.name => self.knee = Some(x),
+            None if name == parameters::ANKLE.name => self.ankle = Some(x),
+            None if name == parameters::HIP.name => self.hip = Some(x),
+            None if name == parameters::BOOT_STIFFNESS.name => self.boot_stiffness = Some(x),
+            None if name == parameters::BOOT_DAMPING.name => self.boot_damping = Some(x),
             None => return Err(parameters::unknown(Self::LEVELS, parameter.name)),
         }
         Ok(())
@@ -269,6 +347,46 @@ pub struct Scenario {
     contact: AnyLaw,
     /// Target restitution when a law other than the paper's is chosen.
     restitution_target: Option<f64>,
+    /// The foot behind the contact: the leg's pose (then `foot_mass` is its
+    /// apparent mass) and the boot in series.
+    foot: Foot,
+}
+
+/// The foot behind the contact (Level::Foot): `leg` the pose of the
+/// articulated leg when the foot is the leg ([`LegFoot`]), `boot` the layer
+/// in series ([`Boot`]); neither is Table 1's rigid foot of mass `foot_mass`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+pub struct Foot {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub leg: Option<LegPose>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub boot: Option<Boot>,
+}
+
+impl Foot {
+    /// Table 1's: rigid, no leg.
+    pub const RIGID: Foot = Foot { leg: None, boot: None };
+
+    /// The foot's settings by name, for result files and JSON (the leg's
+    /// pose and switch, the boot's two numbers), in declaration order.
+    pub fn settings(&self) -> Vec<(&'static str, f64)> {
+        let mut out = Vec::new();
+        if let Some(pose) = self.leg {
+            out.extend([
+                (parameters::LEG.name, 1.0),
+                (parameters::KNEE.name, pose.knee),
+                (parameters::ANKLE.name, pose.ankle),
+                (parameters::HIP.name, pose.hip),
+            ]);
+        }
+        match self.boot {
+            Some(boot) => out.extend(boot.parameters()),
+            // The leg brings a boot unless told there is none.
+            None if self.leg.is_some() => out.push((parameters::BOOT_STIFFNESS.name, f64::INFINITY)),
+            None => {}
+        }
+        out
+    }
 }
 
 impl Scenario {
@@ -288,6 +406,7 @@ impl Scenario {
             exponent: parameters::EXPONENT.default_number(),
         }),
         restitution_target: None,
+        foot: Foot::RIGID,
     };
 
     pub fn baseline() -> Scenario {
@@ -309,6 +428,7 @@ impl Scenario {
             drive_force: check(Parameter::DriveForce, drive_force)?,
             contact: AnyLaw::PowerLaw(PowerLawContact { stiffness, damping, exponent }),
             restitution_target: None,
+            foot: Foot::RIGID,
         };
         // The foot must close the gap (Eq. 48's start: v_f > v_b), and the
         // relative speed must be representable next to the absolute speeds.
@@ -385,11 +505,45 @@ impl Scenario {
     /// restitution (the damping recomputed at the new impact speed) and the
     /// shell law's ball.
     pub fn with_values(&self, values: [f64; 8]) -> Result<Scenario, KickError> {
-        let scenario = Scenario::from_values(values)?;
+        if self.foot.leg.is_some() && values[0] != self.foot_mass {
+            return Err(KickError::DoesNotApply {
+                given: "foot_mass",
+                to: "the leg (`leg`)".into(),
+                reason: "the leg's apparent mass at the contact point is the foot's (Eq. 11); pose it with knee, ankle and hip",
+            });
+        }
+        let scenario = Scenario::from_values(values)?.with_foot(self.foot);
         match self.contact {
             AnyLaw::Shell(ball) => Ok(scenario.with_shell(ball)),
             _ => scenario.with_law(self.law_kind(), self.restitution_target),
         }
+    }
+
+    /// A copy with the foot `foot` behind the contact, the mass unchanged
+    /// (see [`Scenario::on_foot`] for a leg's).
+    pub fn with_foot(&self, foot: Foot) -> Scenario {
+        Scenario { foot, ..*self }
+    }
+
+    /// A copy on the foot `foot`: with a leg its apparent mass along the
+    /// line of motion is the foot's mass (Eq. 11), validated again.
+    pub fn on_foot(&self, foot: Foot) -> Result<Scenario, KickError> {
+        let rigid = Scenario { foot: Foot::RIGID, ..*self };
+        let moved = match foot.leg {
+            Some(pose) => rigid.with(Parameter::FootMass, LegFoot::new(pose)?.effective_mass)?,
+            None => rigid,
+        };
+        Ok(moved.with_foot(foot))
+    }
+
+    /// The foot behind the contact: the leg's pose and the boot.
+    pub fn foot(&self) -> Foot {
+        self.foot
+    }
+
+    /// The boot in series, if any.
+    pub fn boot(&self) -> Option<Boot> {
+        self.foot.boot
     }
 
     /// A copy whose contact is the pressurised ball `ball` (law `shell`):
@@ -483,6 +637,17 @@ impl Scenario {
             spec.gas_exponent = Some(b.gas_exponent);
             spec.shell_stiffness = Some(b.shell_stiffness);
             spec.shell_loss = Some(b.shell_loss);
+        }
+        if let Some(pose) = self.foot.leg {
+            // The leg sets the foot's mass.
+            spec.foot_mass = None;
+            (spec.leg, spec.knee, spec.ankle, spec.hip) = (Some(true), Some(pose.knee), Some(pose.ankle), Some(pose.hip));
+        }
+        match self.foot.boot {
+            Some(b) => (spec.boot_stiffness, spec.boot_damping) = (Some(b.stiffness), Some(b.damping)),
+            // The leg brings a boot unless told there is none.
+            None if self.foot.leg.is_some() => spec.boot_stiffness = Some(f64::INFINITY),
+            None => {}
         }
         spec
     }
@@ -602,6 +767,40 @@ mod tests {
         let flores = spec(Some(LawKind::Flores), None, Some(0.5)).build().unwrap();
         assert_eq!(flores.restitution_target(), Some(0.5));
         assert_eq!(flores.spec().build().unwrap(), flores);
+    }
+
+    /// `leg = true` (a TOML key, a flag, a keyword: one declaration) makes
+    /// the foot the leg: its apparent mass along the line of motion (Eq. 11,
+    /// `kick leg --locked-ankle`'s 1.327 kg at the default pose) and the
+    /// identified boot; the pose moves the mass; a boot is given alone by its
+    /// stiffness (inf: none); settings that would be ignored are refused by name.
+    #[test]
+    fn the_leg_and_the_boot_are_built_from_their_keys() {
+        let leg: ScenarioSpec = toml::from_str("leg = true\n").unwrap();
+        let s = leg.build().unwrap();
+        assert!((s.effective_foot_mass() - 1.32686).abs() < 1e-5, "{}", s.effective_foot_mass());
+        assert_eq!(s.foot(), Foot { leg: Some(LegPose::DEFAULT), boot: Some(boot::IDENTIFIED) });
+        assert_eq!(s.spec().build().unwrap(), s);
+        let bent: ScenarioSpec = toml::from_str("leg = true\nknee = 60.0\nankle = 45.0\nboot_stiffness = inf\n").unwrap();
+        let b = bent.build().unwrap();
+        assert!(b.effective_foot_mass() != s.effective_foot_mass());
+        assert_eq!(b.boot(), None);
+        assert_eq!(b.spec().build().unwrap(), b);
+        // A changed speed keeps the foot; a changed mass is refused under the leg.
+        assert_eq!(s.with(Parameter::FootSpeed, 15.0).unwrap().foot(), s.foot());
+        assert!(s.with(Parameter::FootMass, 3.0).unwrap_err().to_string().starts_with("`foot_mass` does not apply to the leg"));
+        let boot: ScenarioSpec = toml::from_str("boot_stiffness = 5.0e4\n").unwrap();
+        let k = boot.build().unwrap();
+        assert_eq!(k.effective_foot_mass(), 3.0);
+        assert_eq!(k.boot(), Some(Boot { stiffness: 5.0e4, damping: boot::IDENTIFIED.damping }));
+        let refused = |text: &str| toml::from_str::<ScenarioSpec>(text).unwrap().build().unwrap_err().to_string();
+        assert!(refused("leg = true\nfoot_mass = 2.0\n").starts_with("`foot_mass` does not apply to the leg"));
+        assert!(refused("knee = 20.0\n").starts_with("`knee` does not apply to a foot without the leg"));
+        assert!(refused("boot_damping = 20.0\n").starts_with("`boot_damping` does not apply to the rigid foot"));
+        assert!(refused("leg = true\nknee = 200.0\n").contains("`knee`"));
+        assert!(refused("boot_stiffness = -1.0\n").contains("`boot_stiffness`"));
+        // Table 1's foot is untouched.
+        assert_eq!(ScenarioSpec::default().build().unwrap(), Scenario::BASELINE);
     }
 
     /// TOML `law = "shell"` with the ball's keys builds the pressurised ball

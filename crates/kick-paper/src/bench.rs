@@ -131,7 +131,7 @@ fn aim_seconds(repeats: usize) -> Result<(f64, f64), String> {
 }
 
 /// How many forms [`kick_costs`] times.
-pub const KICK_FORMS: usize = 9;
+pub const KICK_FORMS: usize = 10;
 
 /// One off-center 3D kick (Table 1, 5 cm offset, `accurate`, one core) in
 /// [`KICK_FORMS`] forms, µs per kick and evaluations, timed in alternation,
@@ -140,8 +140,10 @@ pub const KICK_FORMS: usize = 9;
 /// constraint (k_t = ∞), the shell ball at μ = 0.5; then the shell ball's
 /// patch (issue 22's ≤ 100 µs at any μ): on the knife-edge face at μ = 0.5
 /// and in rigid grip at μ = ∞, and on a convex instep (the assumed cap,
-/// face square) likewise; the last again on the baseline x86-64 copy
-/// (`Accurate3d::solve_baseline`: what a CPU without AVX2 runs).
+/// face square) likewise; that rigid kick again on the baseline x86-64 copy
+/// (`Accurate3d::solve_baseline`: what a CPU without AVX2 runs); and the
+/// realistic foot (`--leg`: the leg's 6×6 apparent inertia and its boot) on
+/// the cap's patch at μ = 0.5 (issue 31: ≤ 120 µs).
 fn kick_costs(min_seconds: f64) -> Result<[(f64, u64); KICK_FORMS], String> {
     use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
     let at = |scenario: kick_core::ScenarioSpec, kick3d: Kick3dSpec| KickSpec { scenario, kick3d }.build().map_err(|e| e.to_string());
@@ -162,11 +164,13 @@ fn kick_costs(min_seconds: f64) -> Result<[(f64, u64); KICK_FORMS], String> {
         at(shell, Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), patch_contact: Some(true), ..spec })?,
         at(shell, Kick3dSpec { friction: Some(0.5), ..cap })?,
         at(shell, Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..cap })?,
+        at(kick_core::ScenarioSpec { leg: Some(true), ..shell }, Kick3dSpec { friction: Some(0.5), ..cap })?,
     ];
     let solver = Accurate3d::default();
     let mut times: [Vec<f64>; KICK_FORMS] = Default::default();
     let mut evaluations = [0u64; KICK_FORMS];
-    let forms: Vec<(&kick_3d::Kick3d, bool)> = kicks.iter().map(|k| (k, false)).chain([(&kicks[7], true)]).collect();
+    let forms: Vec<(&kick_3d::Kick3d, bool)> =
+        kicks[..8].iter().map(|k| (k, false)).chain([(&kicks[7], true), (&kicks[8], false)]).collect();
     for _ in 0..5 {
         for (i, &(kick, baseline)) in forms.iter().enumerate() {
             let (mut runs, started) = (0u32, Instant::now());
@@ -263,6 +267,23 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
         let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
         let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
         let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --out sweep3d.h5");
+        runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
+        let _ = std::fs::remove_file(&report.path);
+        // The realistic foot, the leg and its boot (issue 31: at least 10,000 kicks/s on 2 threads).
+        let mut fixed = kick_3d::KickSpec::default();
+        (fixed.scenario.law, fixed.scenario.leg) = (Some(kick_core::LawKind::Shell), Some(true));
+        let settings = crate::sweep3d::Sweep3dSettings {
+            samples: samples_3d,
+            seed: 1,
+            out: dir.join("sweep3d.h5"),
+            fixed,
+            shard: None,
+            threads: None,
+            compress: Compression::None,
+        };
+        let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
+        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+        let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --leg --out sweep3d.h5");
         runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
         let _ = std::fs::remove_file(&report.path);
         Ok(())
@@ -364,16 +385,22 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     // scenarios with `law = shell`, auto, one thread, alternated, medians.
     let mut shell_sweep = sweep;
     shell_sweep.fixed.law = Some(kick_core::LawKind::Shell);
-    let (mut paper_law, mut shell) = (Vec::new(), Vec::new());
+    // The realistic foot on the shell ball: the leg's mass and its boot (issue 31: at most 2x the shell ball's cost).
+    let mut leg_sweep = shell_sweep;
+    leg_sweep.fixed.leg = Some(true);
+    let (mut paper_law, mut shell, mut leg) = (Vec::new(), Vec::new(), Vec::new());
     for _ in 0..3 {
         paper_law.push(throughput(&default_auto, sweep, 1)?);
         shell.push(throughput(&default_auto, shell_sweep, 1)?);
+        leg.push(throughput(&default_auto, leg_sweep, 1)?);
     }
-    let (paper_law, shell) = (median(&mut paper_law), median(&mut shell));
+    let (paper_law, shell, leg) = (median(&mut paper_law), median(&mut shell), median(&mut leg));
     let _ = writeln!(
         log,
-        "shell ball, 1D (auto, 1 thread): {shell:.0} scenarios/s against {paper_law:.0} with the paper's law, {:.1}x the cost",
-        paper_law / shell
+        "shell ball, 1D (auto, 1 thread): {shell:.0} scenarios/s against {paper_law:.0} with the paper's law, {:.1}x the cost; \
+         with the leg and its boot {leg:.0} scenarios/s, {:.2}x the shell ball's cost",
+        paper_law / shell,
+        shell / leg
     );
     // Flights through `flight_many`, 1 and 2 threads alternated, medians.
     let flight_rows = if args.quick { 1_000 } else { 50_000 };
@@ -390,10 +417,11 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let _ = writeln!(
         log,
         "5 cm kick, one core: default spring {:.1} µs, stiff spring {:.1} µs, rigid grip {:.1} µs, shell ball {:.1} µs; \
-         patch: knife edge {:.1} µs, rigid {:.1} µs; cap {:.1} µs, rigid {:.1} µs (baseline copy {:.1} µs)",
-        kicks[0].0, kicks[1].0, kicks[2].0, kicks[3].0, kicks[4].0, kicks[5].0, kicks[6].0, kicks[7].0, kicks[8].0
+         patch: knife edge {:.1} µs, rigid {:.1} µs; cap {:.1} µs, rigid {:.1} µs (baseline copy {:.1} µs); \
+         the leg and its boot on the cap {:.1} µs",
+        kicks[0].0, kicks[1].0, kicks[2].0, kicks[3].0, kicks[4].0, kicks[5].0, kicks[6].0, kicks[7].0, kicks[8].0, kicks[9].0
     );
-    let other = Other { shell, paper_law, flight_rows, flights_1, flights_2, aim_launch: aim_launch_s, aim_kick: aim_kick_s, kicks };
+    let other = Other { shell, paper_law, leg, flight_rows, flights_1, flights_2, aim_launch: aim_launch_s, aim_kick: aim_kick_s, kicks };
 
     let files = file_runs(args.quick)?;
     for run in &files {
@@ -435,6 +463,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         ("sweep_samples", sweep.samples as f64),
         ("off_center_3d_vs_1d_cost_ratio", cost.ratio),
         ("shell_vs_paper_law_1d_cost_ratio", paper_law / shell),
+        ("leg_boot_vs_shell_1d_cost_ratio", shell / leg),
         ("flights_per_second_1_thread", flights_1),
         ("flights_per_second_2_threads", flights_2),
         ("aim_launch_seconds", aim_launch_s),
@@ -501,9 +530,11 @@ struct Measured<'a> {
 
 /// The shell ball's cost, flights and aims.
 struct Other {
-    /// Scenarios/s, auto, one thread: the shell ball and the paper's law.
+    /// Scenarios/s, auto, one thread: the shell ball, the paper's law, and
+    /// the shell ball with the leg and its boot.
     shell: f64,
     paper_law: f64,
+    leg: f64,
     flight_rows: usize,
     flights_1: f64,
     flights_2: f64,
@@ -635,7 +666,9 @@ impl Measured<'_> {
              against its tightened reference is held to 1e-9 by `crates/kick-3d/tests/model/box_accuracy.rs`.\n\
              - The shell ball (`law = shell`) in 1D, the same sampled scenarios, `auto`, one thread: {:.0} scenarios/s \
              against {:.0} with the paper's law: **{:.1}x** the cost (medians of 3 alternating runs); both take the \
-             `series` path (`kick_compliant::shell_series` for the shell ball).\n\
+             `series` path (`kick_compliant::shell_series` for the shell ball). With the realistic foot (`--leg`: \
+             the leg's mass along the line of motion and its boot in series) on the shell ball, the same scenarios: \
+             {:.0} scenarios/s, **{:.2}x** the shell ball's cost (`kick_compliant::boot::series`).\n\
              - Flights: {} free kicks (18°, 9 rev/s of sidespin, 22–32 m/s, `kick_flight::models::free_kick_speeds`) \
              through `flight_many` (Python's `kick.flight_many`): {:.0} flights/s on 1 thread, **{:.0} flights/s on 2 \
              threads** (medians of 3 alternating runs), {:.2} µs per flight on one.\n\
@@ -648,7 +681,8 @@ impl Measured<'_> {
              The shell ball's patch (`--patch-contact`): on the knife-edge face at μ = 0.5 {}, in rigid \
              grip at μ = ∞ {}; on a convex instep (`--instep-radius {} --face-yaw 0`) at μ = 0.5 {}, \
              in rigid grip at μ = ∞ {}. These run the kick's AVX2 copy where the CPU has AVX2 (the results are \
-             the baseline copy's, bit for bit); the last on the baseline x86-64 copy: {}.\n",
+             the baseline copy's, bit for bit); the last on the baseline x86-64 copy: {}. With the realistic foot \
+             (`--leg`: the leg's 6×6 apparent inertia and its boot) on the convex instep's patch at μ = 0.5: **{}**.\n",
             machine.describe(),
             crate::provenance::utc_timestamp(std::time::SystemTime::now()),
             self.ratio,
@@ -668,6 +702,8 @@ impl Measured<'_> {
             self.other.shell,
             self.other.paper_law,
             self.other.paper_law / self.other.shell,
+            self.other.leg,
+            self.other.shell / self.other.leg,
             self.other.flight_rows,
             self.other.flights_1,
             self.other.flights_2,
@@ -684,6 +720,7 @@ impl Measured<'_> {
             kick(6),
             kick(7),
             kick(8),
+            kick(9),
         );
         format!(
             "{body}\n## Sweeps into result files\n\n\

@@ -126,11 +126,15 @@ def test_every_declared_keyword_is_accepted_with_its_default():
     for function in ("simulate", "simulate3d"):
         base = getattr(kick, function)()
         shell = getattr(kick, function)(law="shell")
+        leg = getattr(kick, function)(leg=True)
         for p in kick.keywords(function):
             if p["default"] is not None:
                 # The shell ball's keywords apply under law="shell" only.
                 if p["level"] == "bounce":
                     same(getattr(kick, function)(law="shell", **{p["name"]: p["default"]}), _plain(shell))
+                # The leg's pose applies with leg=True only (refused without it, by name).
+                elif p["name"] in ("knee", "ankle", "hip"):
+                    same(getattr(kick, function)(leg=True, **{p["name"]: p["default"]}), _plain(leg))
                 else:
                     same(getattr(kick, function)(**{p["name"]: p["default"]}), _plain(base))
 
@@ -168,3 +172,16 @@ def test_every_law_is_listed_from_the_one_list():
     for f in (kick.simulate, kick.simulate_many, kick.simulate3d, kick.simulate3d_many, kick.history, kick.history3d, kick.aim):
         law = f.__doc__[f.__doc__.index("law : str"):]
         assert all(name in law for name in kick.LAWS), f.__name__
+
+
+def test_the_leg_is_the_clis_leg_and_its_pose_needs_it(kick_bin):
+    """leg=True with a pose is `kick simulate --leg --knee ...`, bit for bit: the
+    leg's apparent mass (Eq. 11, below Table 1's 3 kg) and the identified boot
+    (a longer kick than the rigid foot's). A pose without the leg is refused by name."""
+    out = kick.simulate(law="shell", leg=True, knee=40.0)
+    same(out, cli(kick_bin, "simulate", "--format", "json", "--law", "shell", *flags(leg=True, knee=40.0)))
+    assert 1.0 < out["scenario"]["foot_mass"] < 2.0
+    assert out["foot"]["boot_stiffness"] > 0 and out["foot"]["knee"] == 40.0
+    assert out["contact_time"] > kick.simulate(law="shell")["contact_time"]
+    with pytest.raises(ValueError, match="`knee`"):
+        kick.simulate(knee=40.0)

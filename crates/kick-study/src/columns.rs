@@ -34,7 +34,16 @@ pub fn law_settings<'a>(scenario: &kick_core::Scenario, numbers: impl IntoIterat
         settings.push(("restitution".into(), Setting::Number(e)));
     }
     settings.extend(ball_settings(scenario.contact_law()));
+    settings.extend(foot_settings(scenario.foot()));
     settings
+}
+
+/// The foot's settings under their declared names (the leg's switch and
+/// pose, the boot's two numbers; `boot_stiffness` inf for a leg without
+/// one), so a file records the foot it was solved with; none for Table 1's
+/// rigid foot.
+pub fn foot_settings(foot: kick_core::Foot) -> Vec<(String, Setting)> {
+    Setting::numbers(foot.settings())
 }
 
 /// The shell ball's own quantities under their declared names, so a file

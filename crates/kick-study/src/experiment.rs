@@ -155,11 +155,14 @@ struct Keys3d {
 struct RawSpec<const NAMED: bool> {
     name: Option<Spanned<String>>,
     values: Vec<(&'static ParameterDef, Spanned<f64>)>,
+    /// The switches among them (`leg`).
+    switches: Vec<(&'static ParameterDef, Spanned<bool>)>,
 }
 
-/// The keys of `[base]` and `[[scenario]]`: the 1D scenario's and the shell
-/// ball's (which apply under `law = "shell"`).
-const TABLE_LEVELS: &[Level] = &[Level::Scenario, Level::Bounce];
+/// The keys of `[base]` and `[[scenario]]`: the 1D scenario's, the shell
+/// ball's (which apply under `law = "shell"`) and the foot's (the leg and
+/// the boot, `kick_core::Foot`).
+const TABLE_LEVELS: &[Level] = &[Level::Scenario, Level::Bounce, Level::Foot];
 
 type RawBase = RawSpec<false>;
 type RawNamed = RawSpec<true>;
@@ -173,6 +176,9 @@ impl<const NAMED: bool> RawSpec<NAMED> {
     }
     fn restitution(&self) -> Option<&Spanned<f64>> {
         self.value(&parameters::RESTITUTION)
+    }
+    fn switch(&self, parameter: &ParameterDef) -> Option<&Spanned<bool>> {
+        self.switches.iter().find(|(p, _)| p.name == parameter.name).map(|(_, v)| v)
     }
     /// The table's name (`[[scenario]]` tables always have one).
     fn name(&self) -> &Spanned<String> {
@@ -197,10 +203,14 @@ impl<'de, const NAMED: bool> Deserialize<'de> for RawSpec<NAMED> {
                     }
                     match parameters::find_at(TABLE_LEVELS, &key) {
                         Ok(parameter) => {
-                            if table.value(parameter).is_some() {
+                            if table.value(parameter).is_some() || table.switch(parameter).is_some() {
                                 return Err(serde::de::Error::custom(format!("duplicate key `{key}`")));
                             }
-                            table.values.push((parameter, map.next_value()?));
+                            if parameter.shape == parameters::Shape::Switch {
+                                table.switches.push((parameter, map.next_value()?));
+                            } else {
+                                table.values.push((parameter, map.next_value()?));
+                            }
                         }
                         Err(_) => {
                             let mut valid: Vec<&str> = parameters::at_levels(TABLE_LEVELS).map(|p| p.name).collect();
@@ -696,6 +706,53 @@ fn shell_ball<'a>(
     })
 }
 
+/// The foot of a table ([`kick_core::Foot`]: `leg`, its pose, the boot;
+/// each key from the table, else `[base]`, as `get` and `switch` give them
+/// with their keys) applied to `scenario` (a leg's mass set, Eq. 11); a
+/// setting that would be ignored (`foot_mass` with `leg`, a pose without
+/// it, `boot_damping` without a boot) is refused at its line.
+fn on_foot<'a>(
+    at: &Locator,
+    scenario: Scenario,
+    get: impl Fn(&'static ParameterDef) -> Option<(&'a Spanned<f64>, String)>,
+    switch: impl Fn(&'static ParameterDef) -> Option<(&'a Spanned<bool>, String)>,
+) -> Result<Scenario, ExperimentError> {
+    use kick_core::parameters::{SetParameter, Value};
+    let mut spec = kick_core::ScenarioSpec::default();
+    let mut keys: Vec<(&'static str, std::ops::Range<usize>, String)> = Vec::new();
+    if let Some((v, key)) = switch(&parameters::LEG) {
+        spec.leg = Some(*v.get_ref());
+        keys.push((parameters::LEG.name, v.span(), key));
+    }
+    for p in parameters::at_level(Level::Foot).filter(|p| p.shape == parameters::Shape::Scalar) {
+        if let Some((v, key)) = get(p) {
+            spec.set_parameter(p, Value::Number(*v.get_ref())).map_err(|e| at.error(v.span(), &key, e.to_string()))?;
+            keys.push((p.name, v.span(), key));
+        }
+    }
+    if let (Some(true), Some((v, key))) = (spec.leg, get(Parameter::FootMass.def())) {
+        spec.foot_mass = Some(*v.get_ref());
+        let e = spec.check_given().err().map(|e| e.to_string()).unwrap_or_default();
+        return Err(at.error(v.span(), &key, e));
+    }
+    let blame = |e: KickError| {
+        let named = match &e {
+            KickError::DoesNotApply { given, .. } => Some(*given),
+            KickError::InvalidParameter { name, .. } => Some(*name),
+            _ => None,
+        };
+        let (span, key) = keys
+            .iter()
+            .find(|(name, _, _)| Some(*name) == named)
+            .or(keys.first())
+            .map(|(_, span, key)| (span.clone(), key.clone()))
+            .unwrap_or((0..0, "leg".into()));
+        at.error(span, &key, e.to_string())
+    };
+    let foot = spec.foot().map_err(blame)?;
+    scenario.on_foot(foot).map_err(blame)
+}
+
 fn law_settings_apply(at: &Locator, law: kick_core::LawKind, damping: Located, restitution: Located) -> Result<(), ExperimentError> {
     law.check_given(damping.is_some(), restitution.is_some()).map_err(|e| {
         let (span, key) = match &e {
@@ -945,6 +1002,48 @@ mod tests {
             refused.to_string().contains("`base.inflation_pressure`: `inflation_pressure` does not apply to law `power-law`"),
             "{refused}"
         );
+    }
+
+    /// `leg = true` and the boot's keys in `[base]` and `[[scenario]]`: every
+    /// scenario stands on that foot (the leg's mass, its identified boot, a
+    /// named scenario's own pose), a 3D file sweeps them (level 3d), and a
+    /// setting the foot would ignore is refused at its line.
+    #[test]
+    fn the_foots_keys_reach_every_scenario() {
+        use kick_core::leg::{LegFoot, LegPose};
+        use kick_core::{boot::IDENTIFIED, Foot};
+        let grid = "law = \"shell\"\n[base]\nleg = true\n[[sweep]]\nparameter = \"foot_speed\"\nvalues = [9.1, 21.2]\n";
+        let e = parse(Path::new("g.toml"), grid).unwrap();
+        let kicks = e.one_d().unwrap();
+        let mass = LegFoot::new(LegPose::DEFAULT).unwrap().effective_mass;
+        for i in 0..2 {
+            let s = kicks.scenarios.scenario(i).unwrap();
+            assert_eq!(s.foot(), Foot { leg: Some(LegPose::DEFAULT), boot: Some(IDENTIFIED) }, "row {i}");
+            assert_eq!(s.effective_foot_mass(), mass);
+        }
+        let named =
+            "[base]\nboot_stiffness = 5.0e4\n[[scenario]]\nname = \"boot\"\n[[scenario]]\nname = \"leg\"\nleg = true\nknee = 50.0\n";
+        let e = parse(Path::new("n.toml"), named).unwrap();
+        let kicks = e.one_d().unwrap();
+        let (boot, leg) = (kicks.scenarios.scenario(0).unwrap(), kicks.scenarios.scenario(1).unwrap());
+        assert_eq!((boot.effective_foot_mass(), boot.boot().map(|b| b.stiffness)), (3.0, Some(5.0e4)));
+        assert_eq!(leg.foot().leg.map(|p| p.knee), Some(50.0));
+        assert_eq!(leg.boot().map(|b| b.stiffness), Some(5.0e4));
+        let three = "level = \"3d\"\nlaw = \"shell\"\n[base]\nleg = true\n[kick3d]\noffset = 0.03\n[[sweep]]\nparameter = \"boot_stiffness\"\nvalues = [3.0e4, 6.0e4]\n";
+        let e = parse(Path::new("t.toml"), three).unwrap();
+        let kicks = e.three_d().unwrap();
+        for (i, k_b) in [3.0e4, 6.0e4].into_iter().enumerate() {
+            let spec: kick_core::ScenarioSpec =
+                toml::from_str(&format!("law = \"shell\"\nleg = true\nboot_stiffness = {k_b:e}\n")).unwrap();
+            let by_hand = kick_3d::KickSpec { scenario: spec, kick3d: kick_3d::Kick3dSpec { offset: Some(0.03), ..Default::default() } };
+            assert_eq!(kicks.kick(i as u64).unwrap(), by_hand.build().unwrap(), "cell {i}");
+        }
+        let refused = parse(Path::new("r.toml"), "[base]\nleg = true\nfoot_mass = 2.0\n").unwrap_err();
+        assert_eq!(refused.line, 3, "{refused}");
+        assert!(refused.to_string().contains("`base.foot_mass`: `foot_mass` does not apply to the leg"), "{refused}");
+        let refused = parse(Path::new("k.toml"), "[base]\nfoot_speed = 20.0\nknee = 20.0\n").unwrap_err();
+        assert_eq!(refused.line, 3, "{refused}");
+        assert!(refused.to_string().contains("`knee` does not apply to a foot without the leg"), "{refused}");
     }
 
     /// The instep's parameters are 3D sweep axes (a file sweeping one is a

@@ -64,7 +64,12 @@ impl SampledSweep {
             let drawn = p.def().sample.map_or(f64::NAN, |range| range.draw(&mut uniform));
             *slot = self.fixed.get(p).unwrap_or(drawn);
         }
-        self.fixed.law_on(Scenario::from_values(values)?)
+        // The foot held (a leg sets the foot's mass over the drawn one, Eq. 11).
+        let foot = self.fixed.foot()?;
+        if let Some(pose) = foot.leg {
+            values[0] = kick_core::leg::LegFoot::new(pose)?.effective_mass;
+        }
+        Ok(self.fixed.law_on(Scenario::from_values(values)?)?.with_foot(foot))
     }
 }
 

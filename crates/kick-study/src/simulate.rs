@@ -41,6 +41,10 @@ fn meta_1d(scenario: &Scenario, solver: &str) -> HistoryMeta {
         let def = &kick_core::parameters::RESTITUTION;
         meta.fixed.push((def.name.into(), def.unit.into(), vec![e]));
     }
+    for (name, value) in scenario.foot().settings() {
+        let unit = kick_core::parameters::find(name).map_or("", |p| p.unit);
+        meta.fixed.push((name.into(), unit.into(), vec![value]));
+    }
     meta
 }
 
@@ -98,6 +102,9 @@ pub fn outcome_json(scenario: &Scenario, solver: &str, outcome: &Outcome) -> Map
     }
     object.insert("scenario".into(), Value::Object(parameters));
     object.insert("law".into(), serde_json::to_value(scenario.contact_law()).unwrap_or(Value::Null));
+    if let Some(foot) = foot_json(scenario) {
+        object.insert("foot".into(), foot);
+    }
     object
 }
 
@@ -106,6 +113,45 @@ impl Simulation {
     pub fn outside_validity(&self) -> Option<kick_core::OutsideValidity> {
         self.scenario.check_validity(&self.outcome).err()
     }
+}
+
+/// One line naming the foot when it is not Table 1's rigid one.
+fn foot_line(scenario: &Scenario) -> Option<String> {
+    let foot = scenario.foot();
+    let leg = foot.leg.map(|p| {
+        format!(
+            "the leg (knee {}, ankle {}, hip {} deg; {} kg along the line of motion)",
+            sig(p.knee),
+            sig(p.ankle),
+            sig(p.hip),
+            sig(scenario.effective_foot_mass())
+        )
+    });
+    let boot = foot.boot.map(|b| format!("a boot in series (k_b {} N/m, c_b {} N s/m)", sig(b.stiffness), sig(b.damping)));
+    match (leg, boot) {
+        (None, None) => None,
+        (Some(l), None) => Some(format!("foot: {l}, no boot")),
+        (None, Some(b)) => Some(format!("foot: rigid, {b}")),
+        (Some(l), Some(b)) => Some(format!("foot: {l}, {b}")),
+    }
+}
+
+/// The foot behind the contact when it is not Table 1's rigid one: the
+/// leg's pose and its apparent mass along the line of motion (Eq. 11, the
+/// scenario's foot mass), the boot; JSON has no infinity, so no boot is null.
+fn foot_json(scenario: &Scenario) -> Option<Value> {
+    let foot = scenario.foot();
+    if foot == kick_core::Foot::RIGID {
+        return None;
+    }
+    let mut settings = Map::new();
+    for (name, value) in foot.settings() {
+        settings.insert(name.into(), if value.is_finite() { value.into() } else { Value::Null });
+    }
+    if foot.leg.is_some() {
+        settings.insert("effective_mass".into(), scenario.effective_foot_mass().into());
+    }
+    Some(Value::Object(settings))
 }
 
 impl Serialize for Simulation {
@@ -124,6 +170,9 @@ impl Printable for Simulation {
         let mut w = String::new();
         let o = &self.outcome;
         let _ = writeln!(w, "solver: {} (path: {})", self.solver, o.method);
+        if let Some(line) = foot_line(&self.scenario) {
+            let _ = writeln!(w, "{line}");
+        }
         for ((name, unit), value) in OBSERVABLES.iter().zip(o.observable_values()) {
             let value = if *name == "speed_ratio" && o.speed_ratio.is_none() { "undefined".to_string() } else { sig(value).to_string() };
             let _ = writeln!(w, "{name:<24} {value:>12} {unit}");
@@ -254,6 +303,9 @@ impl Serialize for Simulation3d {
         m.insert("energy_residual".into(), o.energy.residual().into());
         m.insert("law_parameters".into(), serde_json::to_value(self.kick.law()).map_err(serde::ser::Error::custom)?);
         crate::printable::insert_status(&mut m, self.outside_validity().as_ref());
+        if let Some(foot) = foot_json(&self.kick.base) {
+            m.insert("foot".into(), foot);
+        }
         if let Some(f) = &self.flight {
             m.insert("flight".into(), serde_json::to_value(f).map_err(serde::ser::Error::custom)?);
         }
@@ -267,6 +319,9 @@ impl Printable for Simulation3d {
         let mut w = String::new();
         let v = |a: [f64; 3], unit: &str| format!("{} {unit}", vector(&a));
         let _ = writeln!(w, "solver: {}, normal law: {}", o.solver, o.law.name());
+        if let Some(line) = foot_line(&self.kick.base) {
+            let _ = writeln!(w, "{line}");
+        }
         let _ = writeln!(w, "{:<24} {}", "launch_velocity", v(o.launch_velocity, "m/s"));
         let _ = writeln!(w, "{:<24} {}", "spin", v(o.spin, "rad/s"));
         for (name, value, unit) in [

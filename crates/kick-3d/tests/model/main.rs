@@ -3,6 +3,7 @@
 mod accurate;
 mod box_accuracy;
 mod checks;
+mod foot;
 mod grip;
 mod history;
 mod patch;

@@ -4,6 +4,7 @@
 
 mod accurate_vs_closed_forms;
 mod bad_input;
+mod boot;
 mod conservation;
 mod contact_laws_everywhere;
 mod history;

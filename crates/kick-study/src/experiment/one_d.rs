@@ -91,9 +91,11 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
     let base_key = |p: &'static kick_core::parameters::ParameterDef| base_raw.value(p).map(|v| (v, format!("base.{}", p.name)));
     // The base scenario of a grid; named scenarios build their own over [base].
     let base_damping = || base_raw.get(Parameter::Damping).map(|d| (d.span(), "base.damping".to_string()));
+    let base_switch = |p: &'static kick_core::parameters::ParameterDef| base_raw.switch(p).map(|v| (v, format!("base.{}", p.name)));
     let base = || {
         let ball = super::shell_ball(at, law, base_key)?;
-        with_law(build(at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution(), base_damping(), ball)
+        let scenario = with_law(build(at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution(), base_damping(), ball)?;
+        super::on_foot(at, scenario, base_key, base_switch)
     };
 
     let sources = [raw.sweep.is_some(), raw.scenario.is_some(), raw.table2.is_some()];
@@ -151,6 +153,12 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
             let ball = super::shell_ball(at, law, |p| entry.value(p).map(|v| (v, format!("{key}.{}", p.name))).or_else(|| base_key(p)))?;
             let scenario =
                 with_law(build(at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution, damping, ball)?;
+            let scenario = super::on_foot(
+                at,
+                scenario,
+                |p| entry.value(p).map(|v| (v, format!("{key}.{}", p.name))).or_else(|| base_key(p)),
+                |p| entry.switch(p).map(|v| (v, format!("{key}.{}", p.name))).or_else(|| base_switch(p)),
+            )?;
             names.push(entry.name().get_ref().clone());
             scenarios.push(scenario);
         }

@@ -19,8 +19,9 @@ use kick_core::{short, Parameter, Scenario};
 pub const MAX_CELLS_3D: u64 = 10_000_000;
 
 /// Parameter levels a 3D experiment takes.
-/// The parameters a 3D file sweeps: the 1D scenario's, the 3D kick's and the instep's.
-const LEVELS_3D: &[Level] = &[Level::Scenario, Level::Kick3d, Level::Instep];
+/// The parameters a 3D file sweeps: the 1D scenario's, the 3D kick's, the
+/// instep's and the foot's (the leg's pose, the boot).
+const LEVELS_3D: &[Level] = &[Level::Scenario, Level::Kick3d, Level::Instep, Level::Foot];
 
 /// The 3D part of an experiment: its solver and a grid of kicks, the base
 /// kick and every combination of the axes' values (cell order: the last
@@ -55,6 +56,14 @@ fn kick_at(mut scenario: Scenario, mut spec: Kick3dSpec, grid: &Grid, index: u64
             None if axis.parameter.level == Level::Scenario => {
                 // The target restitution, the one 1D parameter outside `Parameter`.
                 scenario = scenario.with_law(scenario.law_kind(), Some(value))?;
+            }
+            // The foot: its spec with the value, built again (a pose moves the leg's mass).
+            None if axis.parameter.level == Level::Foot => {
+                let mut foot_spec = scenario.spec();
+                foot_spec
+                    .set_parameter(axis.parameter, Value::Number(value))
+                    .map_err(|e| Kick3dError::Experiment { reason: e.to_string() })?;
+                scenario = scenario.on_foot(foot_spec.foot()?)?;
             }
             None => {
                 spec.set_parameter(axis.parameter, Value::Number(value)).map_err(|e| Kick3dError::Experiment { reason: e.to_string() })?
@@ -95,6 +104,12 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
         scenario.with_law(law, restitution.map(|r| *r.get_ref())).map_err(|e| at.error(law_span.clone(), "law", e.to_string()))?;
     let ball = super::shell_ball(at, law, |p| base_raw.value(p).map(|v| (v, format!("base.{}", p.name))))?;
     let scenario = ball.map_or(scenario, |ball| scenario.with_shell(ball));
+    let scenario = super::on_foot(
+        at,
+        scenario,
+        |p| base_raw.value(p).map(|v| (v, format!("base.{}", p.name))),
+        |p| base_raw.switch(p).map(|v| (v, format!("base.{}", p.name))),
+    )?;
     let kick3d = raw.kick3d.unwrap_or_default();
     // A problem of the fixed kick names its key in [kick3d] (or [base]).
     let locate = |e: &Kick3dError, fallback: &str| {
@@ -127,7 +142,7 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
             return Err(at.error(axis.parameter.span(), &key, "parameter swept twice"));
         }
         let fixed_at = match parameter.level {
-            Level::Scenario => base_raw.value(parameter).map(|v| (v.span(), format!("base.{name}"))),
+            Level::Scenario | Level::Foot => base_raw.value(parameter).map(|v| (v.span(), format!("base.{name}"))),
             _ => key_span(text, "kick3d", name).map(|s| (s, format!("kick3d.{name}"))),
         };
         if let Some((span, key)) = fixed_at {

@@ -25,12 +25,14 @@ pub fn outcome_columns() -> Vec<Column> {
     OBSERVABLES.iter().map(|(n, u)| Column::new(n, u)).collect()
 }
 
-/// The outcome-set description of a solver: its name, its settings and the
-/// scenarios' contact law (`law`; the target restitution is a parameter column).
-pub fn outcome_set(solver: &SolverChoice, law: AnyLaw) -> OutcomeSet {
+/// The outcome-set description of a solver: its name, its settings, the
+/// scenarios' contact law (`law`; the target restitution is a parameter
+/// column) and their foot.
+pub fn outcome_set(solver: &SolverChoice, law: AnyLaw, foot: kick_core::Foot) -> OutcomeSet {
     let mut settings = Setting::numbers(solver.settings());
     settings.push(("law".into(), Setting::Text(law.kind().name().into())));
     settings.extend(crate::columns::ball_settings(law));
+    settings.extend(crate::columns::foot_settings(foot));
     OutcomeSet { solver: solver.name().to_string(), settings, columns: outcome_columns() }
 }
 
@@ -109,8 +111,9 @@ impl Level for OneD<'_> {
 
     fn outcome_sets(&self) -> Vec<OutcomeSet> {
         // One law for every scenario of an experiment (the file's `law`).
-        let law = self.kicks.scenarios.scenario(0).map_or(AnyLaw::PowerLaw(Scenario::BASELINE.paper_law()), |s| s.contact_law());
-        let mut sets: Vec<OutcomeSet> = self.kicks.solvers.iter().map(|s| outcome_set(s, law)).collect();
+        let first = self.kicks.scenarios.scenario(0).unwrap_or(Scenario::BASELINE);
+        let (law, foot) = (first.contact_law(), first.foot());
+        let mut sets: Vec<OutcomeSet> = self.kicks.solvers.iter().map(|s| outcome_set(s, law, foot)).collect();
         if let Some(rest) = self.flight {
             let flown = kick_flight::FlightSpec { speed: Some(1.0), ..*rest }.build().ok();
             sets.extend(self.kicks.solvers.iter().map(|s| crate::flight::flight_set(s.name(), rest, flown.as_ref())));

@@ -130,6 +130,9 @@ impl Level for SampledSweep3d {
         if let (kick_core::LawKind::Shell, Ok(ball)) = (law, self.kicks.fixed.scenario.shell_ball()) {
             settings.extend(crate::columns::ball_settings(kick_core::AnyLaw::Shell(ball)));
         }
+        if let Ok(foot) = self.kicks.fixed.scenario.foot() {
+            settings.extend(crate::columns::foot_settings(foot));
+        }
         vec![OutcomeSet { solver: SOLVER.into(), settings, columns: OBSERVABLES_3D.iter().map(|(n, u)| Column::new(n, u)).collect() }]
     }
 

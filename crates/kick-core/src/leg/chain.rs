@@ -9,8 +9,8 @@
 //! unchanged), so joint axes may be given in world coordinates at the current
 //! pose; no joint-angle derivatives are needed.
 
-use crate::LegError;
-use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
+use super::LegError;
+use nalgebra::{DMatrix, DVector, Matrix3, Matrix6, Vector3};
 
 /// A rigid body at the current pose, world coordinates.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -114,6 +114,39 @@ impl Chain {
             .ok_or_else(|| LegError::Degenerate("the generalized mass matrix is not positive definite (a joint moves no mass)".into()))?;
         let y = cholesky.solve(&jtn);
         Ok(jtn.dot(&y))
+    }
+
+    /// The 6×6 mobility of the last body at its material point `x`: the
+    /// twist [ω; v(x)] it takes per unit impulsive wrench [τ about x; F],
+    /// Ω = J M⁻¹ Jᵀ with J = [J_ω; J_v(x)] (6 × dof). Eq. 11 is its
+    /// projection nᵀ Ω_vv n; Ω is symmetric, positive semi-definite, of the
+    /// rank of the chain's degrees of freedom (directions the chain cannot
+    /// move in have zero mobility: infinite apparent inertia).
+    pub fn spatial_mobility(&self, x: &Vector3<f64>) -> Result<Matrix6<f64>, LegError> {
+        let Some(last) = self.bodies.len().checked_sub(1) else {
+            return Err(LegError::Degenerate("the chain has no bodies".into()));
+        };
+        let dof = self.joints.len();
+        let mut j = DMatrix::zeros(6, dof);
+        j.rows_mut(0, 3).copy_from(&self.angular_jacobian(last));
+        j.rows_mut(3, 3).copy_from(&self.point_jacobian(last, x));
+        if dof == 0 {
+            return Ok(Matrix6::zeros());
+        }
+        let cholesky = self
+            .mass_matrix()
+            .cholesky()
+            .ok_or_else(|| LegError::Degenerate("the generalized mass matrix is not positive definite (a joint moves no mass)".into()))?;
+        let solved = cholesky.solve(&j.transpose());
+        let mobility = &j * solved;
+        let mut out = Matrix6::zeros();
+        for r in 0..6 {
+            for c in 0..6 {
+                // Symmetric by construction; average the rounding away.
+                out[(r, c)] = 0.5 * (mobility[(r, c)] + mobility[(c, r)]);
+            }
+        }
+        Ok(out)
     }
 
     /// m_eff = (nᵀ J M⁻¹ Jᵀ n)⁻¹ (Eq. 11), kg.

@@ -18,7 +18,7 @@
 //! transverse radii differ by at most 0.006 of the length, so the assignment
 //! matters little.
 
-use crate::LegError;
+use super::LegError;
 
 /// One row of de Leva's Table 4 (male).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -115,8 +115,8 @@ impl Anthropometry {
     pub fn de_leva_male(body_mass: f64, stature: f64) -> Result<Anthropometry, LegError> {
         // Bounds wide enough for any adult, narrow enough to catch unit slips
         // (grams, centimetres).
-        crate::check_range("body_mass", body_mass, 20.0, 250.0, "kg")?;
-        crate::check_range("height", stature, 1.0, 2.5, "m")?;
+        super::check_range("body_mass", body_mass, 20.0, 250.0, "kg")?;
+        super::check_range("height", stature, 1.0, 2.5, "m")?;
         let [thigh, shank, foot] = DE_LEVA_MALE.map(|row| Segment::from_row(&row, body_mass, stature));
         Ok(Anthropometry { thigh, shank, foot })
     }

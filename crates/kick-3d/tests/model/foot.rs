@@ -1,0 +1,213 @@
+//! The foot behind the contact in 3D: the leg's 6×6 apparent inertia
+//! (`leg`) and the boot in series (`boot_stiffness`).
+//!
+//! - The accurate path against the full-state reference tightened
+//!   (`kick_3d::precision::reference`: another state, frame, geometry code,
+//!   integrator and event machinery, carrying the leg's mobility and the boot
+//!   too) within 1e-9 on every observable it promises, peaks and their times
+//!   included, over offsets, approach angles, friction, laws and drive.
+//! - With the patch (which the full state does not carry): against the
+//!   accurate path tightened to rtol 1e-15, flat face and cap.
+//! - The leg's dynamics written as the box's own mobility reproduce the box
+//!   kick (in one plane Euler's term vanishes), and a central square kick
+//!   with a boot is the 1D booted kick: two independent checks of the new
+//!   code paths; the energy budget closes.
+
+use kick_3d::precision::{self, Errors3d};
+use kick_3d::{Accurate3d, Kick3d, Kick3dSpec, KickSpec, Solver3d};
+use kick_core::parameters::{SetParameter, Value};
+use kick_core::{Scenario, ScenarioSpec, Solver};
+
+const TOLERANCE: f64 = 1e-9;
+
+fn kick(scenario: &str, kick3d: Kick3dSpec) -> Kick3d {
+    let spec: ScenarioSpec = toml::from_str(scenario).unwrap();
+    KickSpec { scenario: spec, kick3d }.build().unwrap_or_else(|e| panic!("{scenario}: {e}"))
+}
+
+fn check(name: &str, solved: &kick_3d::Outcome3d, reference: &kick_3d::Outcome3d, kick: &Kick3d) -> Errors3d {
+    let errors = Errors3d::of(kick, solved, reference);
+    for (quantity, error) in Errors3d::NAMES.iter().zip(errors.values()) {
+        assert!(error <= TOLERANCE, "{name}: {quantity} off by {error:.3e} relative\n{solved:?}\n{reference:?}");
+    }
+    let residual = solved.energy.relative_residual().abs();
+    assert!(residual <= 1e-10, "{name}: energy residual {residual:.3e}");
+    errors
+}
+
+fn worst(label: &str, errors: &[Errors3d]) -> f64 {
+    let max = errors.iter().map(Errors3d::max).fold(0.0, f64::max);
+    println!("{label}: worst {max:.2e} over {} kicks", errors.len());
+    max
+}
+
+/// The point contact on the knife-edge box: the leg, the boot and both,
+/// against the tightened full state.
+#[test]
+fn the_leg_and_the_boot_match_the_full_state_reference() {
+    let mut errors = Vec::new();
+    let feet =
+        ["leg = true\nboot_stiffness = inf\n", "boot_stiffness = 4.0e4\n", "leg = true\n", "leg = true\nknee = 50.0\nankle = 80.0\n"];
+    let laws = ["", "law = \"shell\"\n", "law = \"hunt-crossley\"\nrestitution = 0.6\n"];
+    for foot in feet {
+        for law in laws {
+            for (offset, approach, friction) in [(0.0, 0.0, 0.5), (0.03, 0.0, 0.5), (0.06, 10.0, f64::INFINITY), (0.05, -5.0, 0.2)] {
+                let k = kick(
+                    &format!("{foot}{law}"),
+                    Kick3dSpec { offset: Some(offset), approach_angle_deg: Some(approach), friction: Some(friction), ..Default::default() },
+                );
+                let name = format!("{foot:?} {law:?} e {offset} α {approach} μ {friction}");
+                let solved = Accurate3d::default().solve(&k).unwrap_or_else(|e| panic!("{name}: {e}"));
+                let reference = precision::reference().solve(&k).unwrap_or_else(|e| panic!("{name}: reference: {e}"));
+                errors.push(check(&name, &solved, &reference, &k));
+            }
+        }
+    }
+    // A drive on the leg's foot.
+    let k = kick("leg = true\nlaw = \"shell\"\ndrive_force = 300.0\n", Kick3dSpec { offset: Some(0.04), ..Default::default() });
+    let (solved, reference) = (Accurate3d::default().solve(&k).unwrap(), precision::reference().solve(&k).unwrap());
+    errors.push(check("drive", &solved, &reference, &k));
+    worst("leg and boot, accurate vs full state", &errors);
+}
+
+/// The patch (flat face and cap) with the leg and the boot: within 1e-9 of
+/// the accurate path tightened to rtol 1e-15.
+#[test]
+fn the_patch_with_the_leg_and_the_boot_matches_the_tightened_path() {
+    let tight = Accurate3d::new(1e-15).unwrap();
+    let mut errors = Vec::new();
+    for foot in ["leg = true\n", "boot_stiffness = 6.0e4\nboot_damping = 20.0\n"] {
+        for cap in [None, Some(0.15)] {
+            for (offset, friction) in [(0.0, 0.5), (0.05, 0.5), (0.08, 1.0)] {
+                let k = kick(
+                    &format!("law = \"shell\"\n{foot}"),
+                    Kick3dSpec {
+                        offset: Some(offset),
+                        friction: Some(friction),
+                        patch_contact: Some(true),
+                        instep_radius: cap,
+                        face_yaw_deg: cap.map(|_| 0.0),
+                        ..Default::default()
+                    },
+                );
+                let name = format!("{foot:?} cap {cap:?} e {offset} μ {friction}");
+                let solved = Accurate3d::default().solve(&k).unwrap_or_else(|e| panic!("{name}: {e}"));
+                let reference = tight.solve(&k).unwrap_or_else(|e| panic!("{name}: tight: {e}"));
+                errors.push(check(&name, &solved, &reference, &k));
+            }
+        }
+    }
+    worst("patch with leg and boot, accurate vs rtol 1e-15", &errors);
+}
+
+/// The leg's code path given the box's own mobility, diag(I⁻¹, 1/m) at
+/// its centre, is the box kick wherever Euler's term Ω × IΩ vanishes: a kick
+/// in one plane turns the foot about one principal axis.
+#[test]
+fn the_leg_path_with_the_box_mobility_is_the_box() {
+    for (offset, friction) in [(0.04, 0.5), (0.07, f64::INFINITY)] {
+        let spec = Kick3dSpec { offset: Some(offset), friction: Some(friction), ..Default::default() };
+        let mut boxed = Kick3d::new(Scenario::baseline(), &spec).unwrap();
+        let solved_box = Accurate3d::default().solve(&boxed).unwrap();
+        let [ix, iy, iz] = boxed.foot_inertia;
+        let m = boxed.base.effective_foot_mass();
+        // The box's principal axes are its body axes, turned by the knife edge's yaw.
+        let q = boxed.initial_state().foot_orientation;
+        let world = |i: f64, axis: parry3d_f64::math::Vec3| (q * axis, 1.0 / i);
+        let mut mobility = [[0.0; 6]; 6];
+        for (axis, inverse) in
+            [world(ix, parry3d_f64::math::Vec3::X), world(iy, parry3d_f64::math::Vec3::Y), world(iz, parry3d_f64::math::Vec3::Z)]
+        {
+            let a = [axis.x, axis.y, axis.z];
+            for r in 0..3 {
+                for c in 0..3 {
+                    mobility[r][c] += inverse * a[r] * a[c];
+                }
+            }
+        }
+        for i in 3..6 {
+            mobility[i][i] = 1.0 / m;
+        }
+        let mut inertia = [[0.0; 6]; 6];
+        let inverse = nalgebra::Matrix6::from_fn(|r, c| mobility[r][c]).try_inverse().unwrap();
+        for r in 0..6 {
+            for c in 0..6 {
+                inertia[r][c] = inverse[(r, c)];
+            }
+        }
+        boxed.leg = Some(kick_3d::model::LegDynamics { mobility, inertia, initial_velocity: boxed.initial_state().foot_velocity });
+        let solved_leg = Accurate3d::default().solve(&boxed).unwrap();
+        let errors = Errors3d::of(&boxed, &solved_leg, &solved_box);
+        assert!(errors.max() < 1e-10, "e {offset}: {errors:?}");
+        let foot = (solved_leg.energy.foot - solved_box.energy.foot).abs() / solved_box.energy.kinetic_initial;
+        assert!(foot < 1e-10, "{foot:e}");
+    }
+}
+
+/// A central square kick with a boot is the 1D booted kick (auto takes the
+/// 1D path; the accurate path agrees with it); with the leg it is not (its
+/// contact point swings), and auto takes the accurate path.
+#[test]
+fn a_central_booted_kick_is_the_1d_booted_kick() {
+    let k = kick("law = \"shell\"\nboot_stiffness = 4.0e4\n", Kick3dSpec::default());
+    assert!(k.is_one_dimensional());
+    let one_d = Solver3d::Auto.solve(&k).unwrap();
+    let accurate = Accurate3d::default().solve(&k).unwrap();
+    let errors = Errors3d::of(&k, &accurate, &one_d);
+    assert!(errors.max() < 1e-9, "{errors:?}");
+    let direct = kick_compliant::Auto::default().solve(&k.normal_scenario().unwrap()).unwrap();
+    assert!((one_d.speed - direct.v_ball_out).abs() < 1e-12 * direct.v_ball_out);
+    let leg = kick("law = \"shell\"\nleg = true\n", Kick3dSpec::default());
+    assert!(!leg.is_one_dimensional());
+    assert_eq!(Solver3d::Auto.solve(&leg).unwrap().solver, "accurate-3d");
+}
+
+/// The leg's foot in 3D moves along the forward direction as its 1D mass
+/// says at first touch, and a stiffer and stiffer boot tends to no boot.
+#[test]
+fn the_1d_projection_and_the_stiff_boot_limit() {
+    let leg = kick("leg = true\nboot_stiffness = inf\n", Kick3dSpec::default());
+    let foot = kick_core::leg::LegFoot::new(kick_core::leg::LegPose::DEFAULT).unwrap();
+    assert_eq!(leg.base.effective_foot_mass(), foot.effective_mass);
+    let ld = leg.leg.unwrap();
+    // The foot's centre lies behind the contact point: its own mobility
+    // along x differs, the contact point's is 1/m_eff.
+    let (_, a) = ld.response(parry3d_f64::math::Vec3::ZERO, parry3d_f64::math::Vec3::X);
+    assert!(a.x > 0.0);
+    let rigid = Accurate3d::default().solve(&kick("law = \"shell\"\n", Kick3dSpec { offset: Some(0.03), ..Default::default() })).unwrap();
+    let gap = |k_b: f64| {
+        let o = Accurate3d::default()
+            .solve(&kick(
+                &format!("law = \"shell\"\nboot_stiffness = {k_b:e}\nboot_damping = {:e}\n", 1e-3 * k_b),
+                Kick3dSpec { offset: Some(0.03), ..Default::default() },
+            ))
+            .unwrap();
+        (o.speed - rigid.speed).abs() / rigid.speed
+    };
+    let (g6, g7) = (gap(1e7), gap(1e8));
+    assert!(g7 < 0.2 * g6 && g7 < 1e-2, "{g6:e} {g7:e}");
+}
+
+/// What the leg and a boot do not take is refused by name.
+#[test]
+fn settings_the_foot_does_not_take_are_refused() {
+    let refused = |scenario: &str, kick3d: Kick3dSpec| {
+        let spec: ScenarioSpec = toml::from_str(scenario).unwrap();
+        KickSpec { scenario: spec, kick3d }.build().unwrap_err().to_string()
+    };
+    let e = refused("leg = true\n", Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..Default::default() });
+    assert!(e.starts_with("`tangential_stiffness` does not apply"), "{e}");
+    let e = refused("boot_stiffness = 4e4\n", Kick3dSpec { ground: Some(true), ..Default::default() });
+    assert!(e.starts_with("`ground` does not apply"), "{e}");
+    let e = refused("leg = true\n", Kick3dSpec { gravity: Some(true), ..Default::default() });
+    assert!(e.starts_with("`gravity` does not apply"), "{e}");
+    let e = refused("leg = true\n", Kick3dSpec { foot_inertia: Some([0.01, 0.01, 0.01]), ..Default::default() });
+    assert!(e.starts_with("`foot_inertia` does not apply"), "{e}");
+    // A foot setting by name on a 3D spec lands in the scenario.
+    let mut spec = KickSpec::default();
+    spec.set_named("leg", Value::Switch(true)).unwrap();
+    spec.set_named("knee", Value::Number(45.0)).unwrap();
+    let k = spec.build().unwrap();
+    assert_eq!(k.base.foot().leg.unwrap().knee, 45.0);
+    assert!(k.base.foot().boot == Some(kick_core::boot::IDENTIFIED));
+}

@@ -1,0 +1,211 @@
+//! The shell ball behind a boot by Taylor series: the `series` and `auto`
+//! path of a booted shell kick (drive ≥ 0), as [`crate::shell_series`] is
+//! of the bare one.
+//!
+//! With δ the approach, b = δ_b the layer's compression and β = δ − b the
+//! ball's, the motion is μ δ̈ = f_s − F with F = E(β)(1 + χ β̇) on the
+//! ball's side and F = k_b b + c_b ḃ on the layer's. In Taylor coefficients
+//! (d_k, b_k, β_k = d_k − b_k, E_k from [`crate::shell_series::ElasticJet`]
+//! on β) the balance at order k holds b_(k+1) once, in the χ E_0 β̇ term, so
+//!
+//!     (k+1) b_(k+1) (c_b + χ E_0) = E_k + χ Σ_(i=1..k) E_i (k−i+1) β_(k−i+1)
+//!                                    + χ E_0 (k+1) d_(k+1) − k_b b_k,
+//!
+//! then F_k = k_b b_k + c_b (k+1) b_(k+1) and d_(k+2) = (f_s δ_k0 − F_k)/(μ (k+1)(k+2)).
+//! c_b > 0 keeps the divisor away from zero at first touch (E_0 = 0).
+//! Events are roots of the step's polynomials: β̇ = 0 (the ball's maximum
+//! compression), dF/dt = 0, β = 0 (separation). The energy
+//! ½ μ δ̇² + U(β) + ½ k_b b² − f_s δ only falls (both dashpots take power),
+//! and at separation (β = 0) it is at least −f_s²/(2 k_b): below that the
+//! ball is proven trapped. The step is the largest whose last terms of δ and
+//! of b stay below the tolerance in the scenario's units.
+//!
+//! The clamp F ≥ 0 (1 + χ β̇ ≤ 0) is not continued by series: a step that
+//! would start there returns [`KickError::NotApplicable`], and `auto` takes
+//! the engine ([`super::solve`]).
+
+use super::{BootedOde, BootedState};
+use crate::events::proves_trapped;
+use crate::events::ContactSystem;
+use crate::reduced::{reconstruct, RelativeState};
+use crate::shell_series::{derivative, first_fall, integral, poly, ElasticJet, K, STEP_SCALE};
+use kick_core::{Boot, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath, StopReason};
+
+/// Bound on steps in one contact (typical: 20 to 40).
+pub const MAX_STEPS: u32 = 20_000;
+
+/// True when this path solves the scenario: a boot, the shell ball and a
+/// drive that pushes the foot on (or none).
+pub fn applies(scenario: &Scenario) -> bool {
+    scenario.boot().is_some() && crate::shell_series::applies(scenario)
+}
+
+/// One step's coefficients: δ, b and β to t^K, the force and the loss
+/// power to t^(K−2).
+struct Step {
+    delta: [f64; K + 1],
+    boot: [f64; K + 1],
+    ball: [f64; K + 1],
+    force: [f64; K - 1],
+    dissipation: [f64; K - 1],
+}
+
+fn step(ball: &ShellBall, boot: &Boot, mu: f64, drive_share: f64, state: (f64, f64, f64)) -> Result<Step, KickError> {
+    let (delta0, rate0, boot0) = state;
+    let chi = ball.shell_loss;
+    let (kb, cb) = (boot.stiffness, boot.damping);
+    let (mut d, mut b, mut beta) = ([0.0; K + 1], [0.0; K + 1], [0.0; K + 1]);
+    // β's rate coefficients (k+1) β_(k+1) and the layer's (k+1) b_(k+1).
+    let (mut ball_rate, mut boot_rate) = ([0.0; K], [0.0; K]);
+    let mut force = [0.0; K - 1];
+    d[0] = delta0;
+    d[1] = rate0;
+    b[0] = boot0;
+    beta[0] = delta0 - boot0;
+    let mut jet = ElasticJet::new(ball, beta[0])?;
+    let mut e0 = 0.0;
+    // To order K − 1 for b (its step criterion takes b_K), to K − 2 for the force.
+    for k in 0..K {
+        jet.next(k, &beta);
+        let e = jet.elastic();
+        if k == 0 {
+            e0 = e[0];
+        }
+        let cross: f64 = (1..=k).map(|i| e[i] * ball_rate[k - i]).sum();
+        let kk = (k + 1) as f64;
+        let numerator = e[k] + chi * cross + chi * e0 * kk * d[k + 1] - kb * b[k];
+        boot_rate[k] = numerator / (cb + chi * e0);
+        b[k + 1] = boot_rate[k] / kk;
+        beta[k + 1] = d[k + 1] - b[k + 1];
+        ball_rate[k] = kk * beta[k + 1];
+        if k + 2 <= K {
+            force[k] = kb * b[k] + cb * boot_rate[k];
+            let drive = if k == 0 { drive_share } else { 0.0 };
+            d[k + 2] = (drive - force[k]) / (mu * (kk * (kk + 1.0)));
+        }
+    }
+    let e = jet.elastic();
+    // χ E β̇² + c_b ḃ², by Cauchy products: E β̇ first, then with β̇.
+    let mut e_rate = [0.0; K - 1];
+    for (k, slot) in e_rate.iter_mut().enumerate() {
+        *slot = (0..=k).map(|j| e[j] * ball_rate[k - j]).sum();
+    }
+    let mut dissipation = [0.0; K - 1];
+    for (k, slot) in dissipation.iter_mut().enumerate() {
+        let ball_loss: f64 = (0..=k).map(|i| e_rate[i] * ball_rate[k - i]).sum();
+        let boot_loss: f64 = (0..=k).map(|i| boot_rate[i] * boot_rate[k - i]).sum();
+        *slot = chi * ball_loss + cb * boot_loss;
+    }
+    Ok(Step { delta: d, boot: b, ball: beta, force, dissipation })
+}
+
+/// The booted contact of `scenario` with `ball` (module docs); `tolerance`
+/// is the local error per step in the scenario's units.
+pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -> Result<Outcome, KickError> {
+    let mu = scenario.reduced_mass();
+    let v0 = scenario.approach_speed();
+    let drive_share = mu / scenario.effective_foot_mass() * scenario.drive_force();
+    // The series stiffness at touch sets the time and length units.
+    let k0 = ball.small_compression_stiffness();
+    let time_unit = (mu * (1.0 / k0 + 1.0 / boot.stiffness)).sqrt();
+    let length = v0 * time_unit;
+    let (mut t, mut delta, mut rate, mut layer, mut dissipated) = (0.0, 0.0, v0, 0.0, 0.0);
+    let (mut peak_force, mut peak_force_time, mut max_compression, mut max_compression_time) = (0.0_f64, 0.0, 0.0, 0.0);
+    let mut steps = 0u32;
+    let trap_floor = drive_share * drive_share / (2.0 * boot.stiffness);
+    loop {
+        steps += 1;
+        if steps > MAX_STEPS {
+            return Err(KickError::Integration {
+                time: t,
+                reason: format!("the booted series took more than {MAX_STEPS} steps without separation"),
+            });
+        }
+        let s = step(&ball, &boot, mu, drive_share, (delta, rate, layer))?;
+        // The clamp: the ball law's factor 1 + χ β̇ at the step's start.
+        if 1.0 + ball.shell_loss * s.ball[1] <= 0.0 {
+            return Err(KickError::NotApplicable {
+                solver: "series",
+                reason: "the ball's force reached its clamp at zero (1 + χ dδ_B/dt <= 0)",
+            });
+        }
+        let size = |c: f64, k: usize| (STEP_SCALE * tolerance * length / c.abs()).powf(1.0 / k as f64);
+        let mut h = size(s.delta[K], K)
+            .min(size(s.delta[K - 1], K - 1))
+            .min(size(s.boot[K], K))
+            .min(size(s.boot[K - 1], K - 1))
+            .min(100.0 * time_unit);
+        if !(h.is_finite() && h > 0.0) {
+            return Err(KickError::Integration { time: t, reason: format!("the booted series found no step at δ = {delta} m") });
+        }
+        let ball_poly = &s.ball[..];
+        // Separation: β falls through 0 while receding.
+        let separates = if s.ball[1] < 0.0 || derivative(ball_poly, h) < 0.0 { first_fall(|x| poly(ball_poly, x), h) } else { None };
+        if let Some(end) = separates {
+            h = end;
+        }
+        // The clamp within the step (module docs).
+        if first_fall(|x| 1.0 + ball.shell_loss * derivative(ball_poly, x), h).is_some() {
+            return Err(KickError::NotApplicable {
+                solver: "series",
+                reason: "the ball's force reaches its clamp at zero (1 + χ dδ_B/dt <= 0)",
+            });
+        }
+        if let Some(turn) = first_fall(|x| derivative(ball_poly, x), h) {
+            let reached = poly(ball_poly, turn);
+            if reached > max_compression {
+                (max_compression, max_compression_time) = (reached, t + turn);
+            }
+        }
+        for candidate in [first_fall(|x| derivative(&s.force, x), h), Some(h)].into_iter().flatten() {
+            let value = poly(&s.force, candidate);
+            if value > peak_force {
+                (peak_force, peak_force_time) = (value, t + candidate);
+            }
+        }
+        dissipated += integral(&s.dissipation, h);
+        t += h;
+        rate = derivative(&s.delta, h);
+        delta = poly(&s.delta, h);
+        layer = poly(&s.boot, h);
+        if separates.is_some() {
+            break;
+        }
+        // Without a drive the energy stays ≥ 0: only a drive can trap.
+        if drive_share == 0.0 {
+            continue;
+        }
+        let ball_compression = delta - layer;
+        let stored = ball.potential(ball_compression) + boot.potential(layer);
+        let energy = 0.5 * mu * rate * rate + stored - drive_share * delta;
+        if proves_trapped(-(energy + trap_floor), stored.max(drive_share * delta)) {
+            return Err(KickError::Trapped {
+                time: t,
+                reason: "½μδ̇² + U(δ_B) + ½k_b δ_b² − (μ/m_f)F_drive δ fell below −f²/(2 k_b), its least value at separation \
+                         (the drive keeps the ball pressed)"
+                    .into(),
+            });
+        }
+    }
+    let end = BootedState::new(delta, rate, layer, dissipated);
+    let r = reconstruct(scenario, t, &RelativeState::new(delta, rate, dissipated));
+    let system = BootedOde::new(scenario, ball, boot);
+    let outcome = Outcome {
+        v_ball_out: r.ball_velocity,
+        v_foot_out: r.foot_velocity,
+        speed_ratio: Outcome::ratio(r.ball_velocity, scenario.foot_speed()),
+        peak_force,
+        peak_force_time,
+        contact_time: t,
+        max_compression,
+        max_compression_time,
+        impulse: scenario.ball_mass() * (r.ball_velocity - scenario.ball_speed()), // Eq. 2
+        restitution: -rate / v0,
+        energy: system.budget(scenario, t, &end),
+        stop: StopReason::Separated { t },
+        evaluations: u64::from(steps),
+        method: SolverPath::Series,
+    };
+    crate::ode::check_finite(&outcome)?;
+    Ok(outcome)
+}
