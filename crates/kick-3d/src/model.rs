@@ -328,7 +328,7 @@ impl Kick3d {
         // `ball_radius` (the 1D scenario builds it at the default radius).
         let base = match base.contact_law() {
             AnyLaw::Shell(ball) if ball.radius != radius => {
-                base.with_shell(kick_core::ShellBall::new(ball.pressure, radius, ball.gas_exponent, ball.shell_stiffness, ball.shell_loss)?)
+                base.with_shell(kick_core::ShellBall::new(ball.pressure, radius, ball.gas_exponent, ball.shell_stiffness, ball.shell_damping)?)
             }
             _ => base,
         };

@@ -5,7 +5,7 @@
 //! | no drive, c = 0 | `closed-form` (energy integral, Beta function) |
 //! | no drive, n = 1 | `closed-form` (damped oscillator, undamped return) |
 //! | the paper's law | `series` (power series to δ_max, energy integral back) |
-//! | the shell ball, drive ≥ 0 | `series` ([`crate::shell_series`]: Taylor steps from touch to separation) |
+//! | the shell ball, drive ≥ 0 | `series` ([`crate::shell_series`]: Taylor steps from touch to separation; `reduced` for a rebound that reaches the clamp F = 0) |
 //! | another contact law | `reduced` (δ through the whole contact) |
 //! | time history wanted | `accurate` (full state; outcome and history from one run) |
 //!
@@ -47,7 +47,11 @@ impl Solver for Auto {
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
         match Auto::path(scenario) {
             SolverPath::ClosedForm => ClosedForm.solve(scenario),
-            SolverPath::Series => self.series.solve(scenario),
+            // The shell series hands a rebound that reaches the clamp F = 0 to `reduced`.
+            SolverPath::Series => match self.series.solve(scenario) {
+                Err(KickError::NotApplicable { .. }) => self.reduced.solve(scenario),
+                other => other,
+            },
             _ => self.reduced.solve(scenario),
         }
     }

@@ -732,7 +732,7 @@ pub static PARAMETERS: [ParameterDef; 29] = [
     crate::shell::INFLATION_PRESSURE,
     crate::shell::GAS_EXPONENT,
     crate::shell::SHELL_STIFFNESS,
-    crate::shell::SHELL_LOSS,
+    crate::shell::SHELL_DAMPING,
 ];
 
 /// The parameters of one level (not those it takes from lower levels).

@@ -136,7 +136,7 @@ fn error(e: impl std::fmt::Display) -> String {
     e.to_string()
 }
 
-/// The ball alone: the FIFA rebound of the shell ball (what its loss χ was
+/// The ball alone: the FIFA rebound of the shell ball (what its loss β was
 /// set on) and the default ball against Law 2.
 fn ball_rows(m: &Measurements) -> Result<Vec<Row>, String> {
     let mut spec = kick_bounce::BounceSpec::default();
@@ -159,11 +159,11 @@ fn ball_rows(m: &Measurements) -> Result<Vec<Row>, String> {
             "rebound height",
             m.measured("fifa_rebound_height", NEEDED_BY).map_err(error)?,
             rebound,
-            "χ was identified in closed form from the band's middle (140 cm, e = 0.837, without gravity during contact); \
-             gravity during the contact lowers the rebound by a few mm",
+            "β was identified from the band's middle: the 2 m drop, gravity on during contact as in the test, \
+             rebounds 140 cm",
         ),
     )
-    .sets(format!("shell loss χ = {} s/m (crates/kick-bounce/SOURCES.md)", short(ball.shell_loss)))];
+    .sets(format!("shell loss β = {} Pa s/m (crates/kick-bounce/SOURCES.md)", short(ball.shell_damping)))];
     for r in kick_flight::validation::ball_comparisons(m).map_err(error)? {
         rows.push(Row::new(m, Role::Check, "default ball", "Table 1's ball, R = 0.11 m", r));
     }
@@ -780,7 +780,7 @@ impl Validation {
         let _ = writeln!(
             w,
             "The shell ball (`--law shell`, `kick_core::ShellBall`) is calibrated on the FIFA rebound test only: its loss \
-             χ is set there, its pressure is the test's 0.8 bar, and nothing about a kick went into it. Every shell-ball \
+             β is set there, its pressure is the test's 0.8 bar, and nothing about a kick went into it. Every shell-ball \
              row below is a prediction of that ball.\n"
         );
         table(&mut w, &self.ball);
@@ -792,7 +792,7 @@ impl Validation {
              (`kick_identify::validation::with_ball_speed`). The rigid foot is set against a nearly rigid mechanical \
              kicking limb at the limb's own foot speeds; players' ratios are shown apart. What each law was calibrated on: \
              the paper's law takes Table 1's k, n and c (the paper's values, fitted to none of these measurements); \
-             the shell ball takes the FIFA rebound's χ and the test's 0.8 bar, and nothing else.\n",
+             the shell ball takes the FIFA rebound's β and the test's 0.8 bar, and nothing else.\n",
             short(Scenario::baseline().effective_foot_mass())
         );
         table(&mut w, &self.contact);

@@ -150,7 +150,7 @@ fn a_sweep_records_the_shell_ball_it_solved_with() {
         assert!(text.lines().next().unwrap().ends_with("--law shell --inflation-pressure 60000"), "{text}");
     }
     let ball =
-        kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, kick_core::shell::SHELL_LOSS.default_number()).unwrap();
+        kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, kick_core::shell::SHELL_DAMPING.default_number()).unwrap();
     let data = SweepData::read(&one).unwrap();
     let column = |name: &str| data.parameters.iter().find(|(c, _)| c.name == name).map(|(_, v)| v[0]).unwrap();
     let values = kick_core::Parameter::ALL.map(|p| column(p.def().name));
