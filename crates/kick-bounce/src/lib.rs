@@ -339,7 +339,9 @@ impl BounceSpec {
                 &[&STIFFNESS, &DAMPING, &EXPONENT, &RESTITUTION],
                 "it is a parameter of the kick family's laws (--law power-law, ...), not of the shell",
             ),
-            LawChoice::Kick(_) => (&[&INFLATION_PRESSURE, &GAS_EXPONENT, &SHELL_STIFFNESS, &SHELL_DAMPING], "it is a parameter of law shell"),
+            LawChoice::Kick(_) => {
+                (&[&INFLATION_PRESSURE, &GAS_EXPONENT, &SHELL_STIFFNESS, &SHELL_DAMPING], "it is a parameter of law shell")
+            }
         };
         if let Some(p) = others.iter().find(|p| self.given(p.name).is_some()) {
             return Err(KickError::DoesNotApply { given: p.name, to: format!("law `{}`", choice.name()), reason });

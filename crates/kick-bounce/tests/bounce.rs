@@ -64,8 +64,10 @@ fn slow_impacts_follow_the_hunt_crossley_relation() {
 fn restitution_rises_with_pressure() {
     let atm = kick_core::shell::SEA_LEVEL_PRESSURE;
     for v in [(2.0 * kick_core::GRAVITY * 2.0_f64).sqrt(), 19.2] {
-        let outcomes: Vec<_> =
-            [0.6, 0.7, 0.8, 0.9, 1.0, 1.1].iter().map(|&x| run(&spec(&[("speed", n(v)), ("inflation_pressure", n(x * atm))])).unwrap()).collect();
+        let outcomes: Vec<_> = [0.6, 0.7, 0.8, 0.9, 1.0, 1.1]
+            .iter()
+            .map(|&x| run(&spec(&[("speed", n(v)), ("inflation_pressure", n(x * atm))])).unwrap())
+            .collect();
         for w in outcomes.windows(2) {
             assert!(w[1].restitution > w[0].restitution, "V={v}: {:?}", outcomes.iter().map(|o| o.restitution).collect::<Vec<_>>());
             assert!(w[1].contact_time < w[0].contact_time, "V={v}");
@@ -165,6 +167,36 @@ fn shell_damping_is_the_fifa_rebound() {
     let rebound = |beta: f64| run(&spec(&[("drop_height", n(2.0)), ("shell_damping", n(beta))])).unwrap().rebound_height.unwrap() - 1.40;
     let beta = kick_core::roots::brent(rebound, 1.0e3, 1.0e4, 1e-12, 200).unwrap().x;
     close(kick_core::shell::SHELL_DAMPING.default_number(), beta, 1e-8, "β");
+}
+
+/// The dynamic stiffness against plate tests, as SOURCES.md states it
+/// (abstract numbers, not counted as validation). Dowell & Krebs (1991):
+/// d = 2.80 v mm; the default ball's δ_max/V at 2, 4 and 6 m/s lies 1–7 %
+/// below it, the line is met at the FIFA drop's speed near 0.66 atm
+/// (read by the sagitta, d = δ_max), and at a shot's speed the model is
+/// stiffer: below 0.9 × 2.80 v at 15 and 30 m/s. Mills et al. (2026): a
+/// contact near 0.3 ms / 2.8 % = 10.7 ms at 5.93 m/s is longer than the
+/// model's at every pressure in Law 2's range (0.6 atm the softest).
+#[test]
+fn stiffness_against_plate_tests() {
+    let atm = kick_core::shell::SEA_LEVEL_PRESSURE;
+    let dk = |v: f64| 2.80e-3 * v;
+    for v in [2.0, 4.0, 6.0] {
+        let miss = 1.0 - run(&spec(&[("speed", n(v))])).unwrap().max_compression / dk(v);
+        assert!((0.01..0.07).contains(&miss), "V={v}: δ_max {miss:.3} below 2.80 V");
+    }
+    let v0 = (2.0 * kick_core::GRAVITY * 2.0_f64).sqrt();
+    let at = |p_atm: f64| run(&spec(&[("speed", n(v0)), ("inflation_pressure", n(p_atm * atm))])).unwrap().max_compression - dk(v0);
+    let meets = kick_core::roots::brent(at, 0.6, 1.1, 1e-10, 100).unwrap().x;
+    assert!((meets - 0.66).abs() < 0.005, "2.80 V met at {meets} atm");
+    for v in [15.0, 30.0] {
+        let d = run(&spec(&[("speed", n(v))])).unwrap().max_compression;
+        assert!(d < 0.9 * dk(v), "V={v}: {d} vs {}", dk(v));
+    }
+    let mills = 0.3e-3 / 0.028;
+    let softest = run(&spec(&[("speed", n(5.93)), ("inflation_pressure", n(0.6 * atm))])).unwrap().contact_time;
+    let fifa = run(&spec(&[("speed", n(5.93))])).unwrap().contact_time;
+    assert!(fifa < softest && softest < mills && (softest / mills - 1.0).abs() < 0.06, "{fifa} {softest} vs {mills}");
 }
 
 /// Prediction, not fitted: restitution falls with impact speed.

@@ -397,7 +397,9 @@ impl Observations {
 
     /// Number of residuals, the measurements' included.
     pub fn len(&self) -> usize {
-        self.scalars.len() + self.history.as_ref().map_or(0, |h| h.data.len()) + self.measurements.iter().map(|m| m.observations.len()).sum::<usize>()
+        self.scalars.len()
+            + self.history.as_ref().map_or(0, |h| h.data.len())
+            + self.measurements.iter().map(|m| m.observations.len()).sum::<usize>()
     }
 
     pub fn is_empty(&self) -> bool {
@@ -716,7 +718,8 @@ impl FitSpec {
                         Some(kick_bounce::LawChoice::from_name(name).map_err(|e| at.error(Section::Top, "law", "law", e.to_string()))?);
                 }
                 for (key, &value) in self.bounce.iter().flatten() {
-                    spec.set(key, value.into()).map_err(|e| at.error(Section::Table("bounce"), key, &format!("bounce.{key}"), e.to_string()))?;
+                    spec.set(key, value.into())
+                        .map_err(|e| at.error(Section::Table("bounce"), key, &format!("bounce.{key}"), e.to_string()))?;
                 }
                 // Without a speed of its own, the first measurement's stands in.
                 if spec.given("speed").is_none() && spec.given("drop_height").is_none() {
@@ -724,9 +727,15 @@ impl FitSpec {
                         m.conditions.get("speed").map(|&v| ("speed", v)).or(m.conditions.get("drop_height").map(|&v| ("drop_height", v)))
                     });
                     let (name, value) = given.ok_or_else(|| {
-                        at.error(Section::Table("bounce"), "speed", "speed", "give the impact speed (or drop_height) in [bounce] or in each [[measurement]]")
+                        at.error(
+                            Section::Table("bounce"),
+                            "speed",
+                            "speed",
+                            "give the impact speed (or drop_height) in [bounce] or in each [[measurement]]",
+                        )
                     })?;
-                    spec.set(name, kick_core::parameters::Value::Number(value)).map_err(|e| IdentifyError::data(source_name, e.to_string()))?;
+                    spec.set(name, kick_core::parameters::Value::Number(value))
+                        .map_err(|e| IdentifyError::data(source_name, e.to_string()))?;
                 }
                 ModelPoint::bounce(spec).map_err(|e| at.error(Section::Table("bounce"), "speed", "bounce", e.to_string()))
             }
@@ -809,16 +818,31 @@ impl FitSpec {
                     return Err(at.error(Section::MeasurementScalar(i, j), "value", &what, format!("value {} is not finite", s.value)));
                 }
                 if !(s.sigma.is_finite() && s.sigma > 0.0) {
-                    return Err(at.error(Section::MeasurementScalar(i, j), "sigma", &what, format!("sigma {}: must be finite and > 0", s.sigma)));
+                    return Err(at.error(
+                        Section::MeasurementScalar(i, j),
+                        "sigma",
+                        &what,
+                        format!("sigma {}: must be finite and > 0", s.sigma),
+                    ));
                 }
             }
             if level == FitLevel::Bounce && m.history.is_some() {
-                return Err(at.error(Section::Measurement(i), "history", &format!("measurement[{i}].history"), "a bounce fit takes scalars only"));
+                return Err(at.error(
+                    Section::Measurement(i),
+                    "history",
+                    &format!("measurement[{i}].history"),
+                    "a bounce fit takes scalars only",
+                ));
             }
             let history = m.history.as_ref().map(|h| load_history(dir, h)).transpose()?;
             let observations = Observations { scalars: m.scalar.clone(), history, measurements: Vec::new() };
             if observations.is_empty() {
-                return Err(at.error(Section::Measurement(i), "name", &format!("measurement[{i}]"), "no observations: add [[measurement.scalar]] tables"));
+                return Err(at.error(
+                    Section::Measurement(i),
+                    "name",
+                    &format!("measurement[{i}]"),
+                    "no observations: add [[measurement.scalar]] tables",
+                ));
             }
             let measurement = Measurement { name: label, conditions, observations };
             // Its conditions must build on the start (a speed the plate can take, say).

@@ -136,7 +136,8 @@ impl FitParameter {
     /// takes (`ScenarioSpec::LEVELS`: the shell ball's, and what is declared
     /// there later); at a bounce any scalar of `kick_bounce::BOUNCE_PARAMETERS`.
     pub fn from_name_at(level: FitLevel, name: &str) -> Result<FitParameter, IdentifyError> {
-        let scalar = |p: &&'static ParameterDef| p.shape == Shape::Scalar && matches!(p.default, DefaultValue::Number(_) | DefaultValue::Unset(_));
+        let scalar =
+            |p: &&'static ParameterDef| p.shape == Shape::Scalar && matches!(p.default, DefaultValue::Number(_) | DefaultValue::Unset(_));
         let found = match level {
             FitLevel::Kick => FitParameter::ALL.into_iter().find(|p| p.name() == name).or_else(|| {
                 parameters::at_levels(ScenarioSpec::LEVELS).filter(scalar).find(|p| p.name == name).map(FitParameter::Declared)
@@ -160,7 +161,14 @@ impl FitParameter {
                 names.extend(parameters::at_levels(ScenarioSpec::LEVELS).filter(|p| p.shape == Shape::Scalar).map(|p| p.name));
                 names.dedup();
                 let mut seen = Vec::new();
-                names.retain(|n| if seen.contains(n) { false } else { seen.push(*n); true });
+                names.retain(|n| {
+                    if seen.contains(n) {
+                        false
+                    } else {
+                        seen.push(*n);
+                        true
+                    }
+                });
                 names
             }
             FitLevel::Bounce => kick_bounce::BOUNCE_PARAMETERS.iter().filter(|p| p.shape == Shape::Scalar).map(|p| p.name).collect(),
@@ -394,9 +402,10 @@ impl ModelPoint {
             FitParameter::Scenario(Parameter::Exponent) if law == LawKind::KelvinVoigt => {
                 (law, "the law is linear; n only sets its secant stiffness k δ*^(n−1), which `stiffness` already moves")
             }
-            FitParameter::Scenario(Parameter::Damping | Parameter::Stiffness | Parameter::Exponent) if law == LawKind::Shell => {
-                (law, "the shell ball takes its stiffness and loss from its own parameters (inflation_pressure, shell_stiffness, shell_damping)")
-            }
+            FitParameter::Scenario(Parameter::Damping | Parameter::Stiffness | Parameter::Exponent) if law == LawKind::Shell => (
+                law,
+                "the shell ball takes its stiffness and loss from its own parameters (inflation_pressure, shell_stiffness, shell_damping)",
+            ),
             FitParameter::Restitution if law == LawKind::PowerLaw => {
                 (law, "the paper's law (Eq. 20) has no target restitution; fit `damping`, or choose another law")
             }

@@ -57,7 +57,8 @@ const FIT_SPEEDS: [f64; 4] = [3.0, 6.264, 12.0, 19.2];
 const FIT_PRESSURES_ATM: [f64; 3] = [0.6, 0.8, 1.1];
 /// Their standard uncertainties: a restitution to 0.01, a contact time to
 /// 0.1 ms (10 kHz film), a compression to 1 mm.
-const FIT_SIGMA: [(Observable, f64); 3] = [(Observable::Restitution, 0.01), (Observable::ContactTime, 1e-4), (Observable::MaxCompression, 1e-3)];
+const FIT_SIGMA: [(Observable, f64); 3] =
+    [(Observable::Restitution, 0.01), (Observable::ContactTime, 1e-4), (Observable::MaxCompression, 1e-3)];
 const FIT_SEED: u64 = 31;
 
 /// Draw both figures from the result files, write the synthetic plate
@@ -175,13 +176,9 @@ fn draw_speeds(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, String>
     )
     .with_markers();
     let line_speeds = [0.0, DROP_LINE_END];
-    let dowell = Series::line(
-        "Dowell & Krebs (abstract): d = 2.80 v",
-        black,
-        &line_speeds,
-        &line_speeds.map(|s| DOWELL_KREBS_MM_PER_MPS * s),
-    )
-    .dashed();
+    let dowell =
+        Series::line("Dowell & Krebs (abstract): d = 2.80 v", black, &line_speeds, &line_speeds.map(|s| DOWELL_KREBS_MM_PER_MPS * s))
+            .dashed();
     let small_cap: Vec<f64> = b.max_compression.iter().map(|&d| 1e3 * small_cap_compression(d, radius)).collect();
     let panel = |title: &str, y_label: &str, series: Vec<Series>, legend| Panel {
         title: title.into(),
@@ -195,7 +192,12 @@ fn draw_speeds(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, String>
     let label = "shell ball, 0.8 bar";
     let panels = [
         panel("Restitution", "e", vec![Series::line(label, color(0), b.speed, b.restitution), fifa], SeriesLabelPosition::LowerLeft),
-        panel("Contact time", "t_c (ms)", vec![Series::line(label, color(0), b.speed, &mm(b.contact_time))], SeriesLabelPosition::LowerLeft),
+        panel(
+            "Contact time",
+            "t_c (ms)",
+            vec![Series::line(label, color(0), b.speed, &mm(b.contact_time))],
+            SeriesLabelPosition::LowerLeft,
+        ),
         panel(
             "Maximum compression",
             "δ_max (mm)",
@@ -301,8 +303,8 @@ fn fit_plate_tests(out: &Path) -> Result<(crate::identify::DataFit, Vec<PathBuf>
         .iter()
         .flat_map(|&v| FIT_PRESSURES_ATM.iter().map(move |&p| vec![(speed, v), (pressure, p * SEA_LEVEL_PRESSURE)]))
         .collect();
-    let data = kick_identify::synthetic::measurements(&Default::default(), &truth, &conditions, &FIT_SIGMA, Some(FIT_SEED))
-        .map_err(text)?;
+    let data =
+        kick_identify::synthetic::measurements(&Default::default(), &truth, &conditions, &FIT_SIGMA, Some(FIT_SEED)).map_err(text)?;
     let spec_path = out.join(FIT_SPEC);
     let mut file = format!(
         "# Synthetic plate tests: the default shell ball with shell_damping = {} Pa s/m and\n\
@@ -326,7 +328,13 @@ fn fit_plate_tests(out: &Path) -> Result<(crate::identify::DataFit, Vec<PathBuf>
             let _ = writeln!(file, "{} = {v:e}", p.name());
         }
         for s in &m.observations.scalars {
-            let _ = write!(file, "[[measurement.scalar]]\nobservable = \"{}\"\nvalue = {:e}\nsigma = {:e}\n", s.observable.name(), s.value, s.sigma);
+            let _ = write!(
+                file,
+                "[[measurement.scalar]]\nobservable = \"{}\"\nvalue = {:e}\nsigma = {:e}\n",
+                s.observable.name(),
+                s.value,
+                s.sigma
+            );
         }
     }
     let _ = write!(file, "\n[truth] # the values the data were made with\n");
@@ -363,8 +371,10 @@ fn page_text(
     let mut w = String::new();
 
     // The calibration and its band.
-    let band: Vec<(f64, f64)> =
-        [FIFA_REBOUND.0, FIFA_PRO_FLOOR, 1.40, FIFA_REBOUND.1].iter().map(|&h| damping_for_rebound(h).map(|b| (h, b))).collect::<Result<_, _>>()?;
+    let band: Vec<(f64, f64)> = [FIFA_REBOUND.0, FIFA_PRO_FLOOR, 1.40, FIFA_REBOUND.1]
+        .iter()
+        .map(|&h| damping_for_rebound(h).map(|b| (h, b)))
+        .collect::<Result<_, _>>()?;
     let drops: Vec<(f64, f64)> = [0.6 * SEA_LEVEL_PRESSURE, FIFA_PRESSURE, 1.1 * SEA_LEVEL_PRESSURE]
         .iter()
         .map(|&p0| bounce(&[("drop_height", FIFA_DROP), ("inflation_pressure", p0)]).map(|o| (p0, o.rebound_height.unwrap_or(f64::NAN))))

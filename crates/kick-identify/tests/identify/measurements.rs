@@ -29,13 +29,11 @@ fn plate_truth() -> ModelPoint {
 /// Plate tests at three speeds and three pressures.
 fn plate_conditions() -> Vec<Vec<(FitParameter, f64)>> {
     let (speed, pressure) = (named(FitLevel::Bounce, "speed"), named(FitLevel::Bounce, "inflation_pressure"));
-    [3.0, 8.0, 19.2]
-        .iter()
-        .flat_map(|&v| [0.6, 0.8, 1.1].map(|p| vec![(speed, v), (pressure, p * SEA_LEVEL_PRESSURE)]))
-        .collect()
+    [3.0, 8.0, 19.2].iter().flat_map(|&v| [0.6, 0.8, 1.1].map(|p| vec![(speed, v), (pressure, p * SEA_LEVEL_PRESSURE)])).collect()
 }
 
-const PLATE_SIGMA: [(Observable, f64); 3] = [(Observable::Restitution, 0.01), (Observable::ContactTime, 1e-4), (Observable::MaxCompression, 1e-3)];
+const PLATE_SIGMA: [(Observable, f64); 3] =
+    [(Observable::Restitution, 0.01), (Observable::ContactTime, 1e-4), (Observable::MaxCompression, 1e-3)];
 
 /// A bounce's predictions are `kick bounce`'s, to the solvers' accuracy
 /// (the fit solves the normal phase with `accurate`, `kick bounce` with `reduced`).

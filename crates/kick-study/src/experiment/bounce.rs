@@ -134,12 +134,14 @@ pub(super) fn parse(
         spec.set(key, v).map_err(|e| at.error(given.span(), &dotted, e.to_string()))?;
         first.get_or_insert((given.span(), dotted));
     }
-    // The base alone; a speed an axis gives stands in as 1 (its values are checked below).
+    // The base alone; a speed an axis gives stands in as 1 when the base
+    // gives none (its values, and their clash with the base, are checked below).
     let swept = |name: &str| raw.sweep.iter().flatten().any(|a| a.parameter.get_ref() == name);
     let check = |spec: &BounceSpec| -> Result<(), kick_core::KickError> {
         let mut probe = *spec;
+        let impact_given = spec.given("speed").is_some() || spec.given("drop_height").is_some();
         for axis in ["speed", "drop_height"] {
-            if swept(axis) {
+            if swept(axis) && !impact_given {
                 let _ = probe.set(axis, Value::Number(1.0));
             }
         }
@@ -192,8 +194,13 @@ pub(super) fn parse(
     // Every combination builds (a speed with a drop height, say, does not).
     for i in 0..kicks.grid.len() {
         if let Err(e) = kicks.spec_at(i).build() {
-            let at_cell: Vec<String> =
-                kicks.grid.axes.iter().zip(kicks.grid.coordinates(i)).map(|(a, v)| format!("{} = {}", a.parameter.name, short(v))).collect();
+            let at_cell: Vec<String> = kicks
+                .grid
+                .axes
+                .iter()
+                .zip(kicks.grid.coordinates(i))
+                .map(|(a, v)| format!("{} = {}", a.parameter.name, short(v)))
+                .collect();
             return Err(at.error(last_span, "sweep", format!("grid point {i} ({}): {e}", at_cell.join(", "))));
         }
     }
@@ -239,7 +246,7 @@ mod tests {
             ("level = \"bounce\"\n[base]\nstiffness = 1e5\nspeed = 5.0\n", 3, "base.stiffness", "law"),
             (
                 "level = \"bounce\"\n[base]\ndrop_height = 2.0\n[[sweep]]\nparameter = \"speed\"\nvalues = [3.0]\n",
-                5,
+                6,
                 "sweep",
                 "grid point 0 (speed = 3)",
             ),
