@@ -38,7 +38,7 @@ def simulate(
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
-    shell_loss: float | None = ...,
+    shell_damping: float | None = ...,
     solver: str = ...,
     law: str = ...,
     dt: float | None = ...,
@@ -75,7 +75,7 @@ def simulate3d(
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
-    shell_loss: float | None = ...,
+    shell_damping: float | None = ...,
     solver: str = ...,
     law: str = ...,
     dt: float | None = ...,
@@ -96,7 +96,7 @@ def simulate_many(
     inflation_pressure: ArrayLike | None = ...,
     gas_exponent: ArrayLike | None = ...,
     shell_stiffness: ArrayLike | None = ...,
-    shell_loss: ArrayLike | None = ...,
+    shell_damping: ArrayLike | None = ...,
     solver: str = ...,
     law: str = ...,
     dt: float | None = ...,
@@ -134,7 +134,7 @@ def simulate3d_many(
     inflation_pressure: ArrayLike | None = ...,
     gas_exponent: ArrayLike | None = ...,
     shell_stiffness: ArrayLike | None = ...,
-    shell_loss: ArrayLike | None = ...,
+    shell_damping: ArrayLike | None = ...,
     solver: str = ...,
     law: str = ...,
     dt: float | None = ...,
@@ -156,7 +156,7 @@ def history(
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
-    shell_loss: float | None = ...,
+    shell_damping: float | None = ...,
     solver: str = ...,
     law: str = ...,
     dt: float | None = ...,
@@ -195,7 +195,7 @@ def history3d(
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
-    shell_loss: float | None = ...,
+    shell_damping: float | None = ...,
     solver: str = ...,
     law: str = ...,
     samples: int | np.integer | None = ...,
@@ -226,7 +226,7 @@ def fit(
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
-    shell_loss: float | None = ...,
+    shell_damping: float | None = ...,
 ) -> dict[str, Any]:
     """Identify parameters from a measured history, as ``kick fit data``."""
 
@@ -295,7 +295,7 @@ def bounce(
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
-    shell_loss: float | None = ...,
+    shell_damping: float | None = ...,
 ) -> dict[str, Any]:
     """The ball alone on a rigid, massive plate (``kick bounce``; ``kick_bounce::run``)."""
 
@@ -319,7 +319,7 @@ def bounce_many(
     inflation_pressure: ArrayLike | None = ...,
     gas_exponent: ArrayLike | None = ...,
     shell_stiffness: ArrayLike | None = ...,
-    shell_loss: ArrayLike | None = ...,
+    shell_damping: ArrayLike | None = ...,
     threads: int | np.integer | None = ...,
 ) -> dict[str, Any]:
     """Solve many bounces, as ``bounce`` does, from arrays."""
@@ -372,6 +372,6 @@ def aim(
     inflation_pressure: float | None = ...,
     gas_exponent: float | None = ...,
     shell_stiffness: float | None = ...,
-    shell_loss: float | None = ...,
+    shell_damping: float | None = ...,
 ) -> dict[str, Any]:
     """Aim a free kick, as ``kick aim``: the launch (or the 3D kick) that clears"""
