@@ -515,12 +515,9 @@ impl Relative {
         let r_dot = w - omega.cross(r);
         let rate = -n.dot(r_dot);
         // The shell law (the patch's only law; others are refused when the kick
-        // is built): F(δ, v) = F_el(δ)(1 + χ v), one evaluation, slope χ F_el exactly.
+        // is built): F(δ, v) = F_el(δ) + β A(δ) v, slope β A exactly.
         let (elastic, slope) = match &self.law {
-            AnyLaw::Shell(ball) => {
-                let elastic = ball.elastic_force(delta);
-                (elastic, elastic * ball.shell_loss)
-            }
+            AnyLaw::Shell(ball) => (ball.elastic_force(delta), ball.loss_slope(delta)),
             law => {
                 let (elastic, f1) = law.unclamped_force(delta, 1.0);
                 (elastic, f1 - elastic)

@@ -398,9 +398,13 @@ impl Kick3d {
         // The shell ball is this kick's ball: its patch and gas volume follow
         // `ball_radius` (the 1D scenario builds it at the default radius).
         let base = match base.contact_law() {
-            AnyLaw::Shell(ball) if ball.radius != radius => {
-                base.with_shell(kick_core::ShellBall::new(ball.pressure, radius, ball.gas_exponent, ball.shell_stiffness, ball.shell_loss)?)
-            }
+            AnyLaw::Shell(ball) if ball.radius != radius => base.with_shell(kick_core::ShellBall::new(
+                ball.pressure,
+                radius,
+                ball.gas_exponent,
+                ball.shell_stiffness,
+                ball.shell_damping,
+            )?),
             _ => base,
         };
         let m_b = base.ball_mass();

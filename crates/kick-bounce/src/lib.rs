@@ -35,7 +35,7 @@
 use kick_compliant::{Accurate, Reduced};
 use kick_core::parameters::{Bound, DefaultValue, Level, ParameterDef, Shape, Valid, Value};
 use kick_core::parameters::{DAMPING, EXPONENT, RESTITUTION, STIFFNESS};
-use kick_core::shell::{ShellBall, GAS_EXPONENT, INFLATION_PRESSURE, SHELL_LOSS, SHELL_STIFFNESS};
+use kick_core::shell::{ShellBall, GAS_EXPONENT, INFLATION_PRESSURE, SHELL_DAMPING, SHELL_STIFFNESS};
 use kick_core::{AnyLaw, ContactLaw, KickError, LawKind, Outcome, Scenario, DEFAULT_BALL_MASS, DEFAULT_BALL_RADIUS, GRAVITY};
 use serde::Serialize;
 
@@ -63,11 +63,14 @@ use Bound::{Closed, Open, Unbounded};
 use DefaultValue::{Derived, Number, Unset};
 use Shape::{Scalar, Vector3};
 
+/// How many parameters a bounce declares.
+pub const BOUNCE_PARAMETER_COUNT: usize = 18;
+
 /// Every parameter of a bounce, declared once: the kick family's law
 /// parameters (kick-core's, for `law` other than `shell`), the shot, the
 /// ball, and the shell law's own (kick-core's `shell::BALL_PARAMETERS`).
 /// Flags, keys and refusals use these names.
-pub static BOUNCE_PARAMETERS: [ParameterDef; 18] = [
+pub static BOUNCE_PARAMETERS: [ParameterDef; BOUNCE_PARAMETER_COUNT] = [
     STIFFNESS,
     DAMPING,
     EXPONENT,
@@ -185,8 +188,13 @@ pub static BOUNCE_PARAMETERS: [ParameterDef; 18] = [
     INFLATION_PRESSURE,
     GAS_EXPONENT,
     SHELL_STIFFNESS,
-    SHELL_LOSS,
+    SHELL_DAMPING,
 ];
+
+/// The position of a declared name in [`BOUNCE_PARAMETERS`].
+fn slot(name: &str) -> usize {
+    BOUNCE_PARAMETERS.iter().position(|p| p.name == name).expect("a declared name")
+}
 
 /// The declaration called `name`, or an error with the valid names.
 pub fn parameter(name: &str) -> Result<&'static ParameterDef, kick_core::parameters::ParameterError> {
@@ -230,11 +238,12 @@ impl LawChoice {
     }
 }
 
-/// The values given for a bounce, by declared name, and the law;
-/// validated by [`BounceSpec::build`].
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+/// The values given for a bounce, one slot per declared parameter
+/// ([`BOUNCE_PARAMETERS`] order), and the law; validated by
+/// [`BounceSpec::build`]. `Copy`: a fit moves it from trial to trial.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct BounceSpec {
-    values: Vec<(&'static str, Value)>,
+    values: [Option<Value>; BOUNCE_PARAMETER_COUNT],
     /// `None`: the shell.
     pub law: Option<LawChoice>,
 }
@@ -246,13 +255,31 @@ impl BounceSpec {
         if value.shape() != p.shape {
             return Err(kick_core::parameters::ParameterError::WrongShape { name: p.name, expected: p.shape, found: value.shape() });
         }
-        self.values.retain(|(n, _)| *n != p.name);
-        self.values.push((p.name, value));
+        self.values[slot(p.name)] = Some(value);
         Ok(self)
     }
 
-    fn given(&self, name: &str) -> Option<Value> {
-        self.values.iter().find(|(n, _)| *n == name).map(|&(_, v)| v)
+    /// The value given for `name`, if any (not its default).
+    pub fn given(&self, name: &str) -> Option<Value> {
+        BOUNCE_PARAMETERS.iter().position(|p| p.name == name).and_then(|i| self.values[i])
+    }
+
+    /// The scalar `name` as a bounce would use it: given, else its declared
+    /// numeric default (`None` for a vector, or a scalar with no default).
+    pub fn number(&self, name: &str) -> Option<f64> {
+        let p = parameter(name).ok()?;
+        match (self.given(name), p.default) {
+            (Some(Value::Number(x)), _) => Some(x),
+            (None, DefaultValue::Number(x)) => Some(x),
+            _ => None,
+        }
+    }
+
+    /// Forget the value given for `name` (its default applies again).
+    pub fn unset(&mut self, name: &str) {
+        if let Some(i) = BOUNCE_PARAMETERS.iter().position(|p| p.name == name) {
+            self.values[i] = None;
+        }
     }
 
     /// A scalar, checked against its declaration; the default if not given.
@@ -313,7 +340,9 @@ impl BounceSpec {
                 &[&STIFFNESS, &DAMPING, &EXPONENT, &RESTITUTION],
                 "it is a parameter of the kick family's laws (--law power-law, ...), not of the shell",
             ),
-            LawChoice::Kick(_) => (&[&INFLATION_PRESSURE, &GAS_EXPONENT, &SHELL_STIFFNESS, &SHELL_LOSS], "it is a parameter of law shell"),
+            LawChoice::Kick(_) => {
+                (&[&INFLATION_PRESSURE, &GAS_EXPONENT, &SHELL_STIFFNESS, &SHELL_DAMPING], "it is a parameter of law shell")
+            }
         };
         if let Some(p) = others.iter().find(|p| self.given(p.name).is_some()) {
             return Err(KickError::DoesNotApply { given: p.name, to: format!("law `{}`", choice.name()), reason });
@@ -324,7 +353,7 @@ impl BounceSpec {
                 radius,
                 number("gas_exponent")?,
                 number("shell_stiffness")?,
-                number("shell_loss")?,
+                number("shell_damping")?,
             )?),
             LawChoice::Kick(kind) => {
                 kind.check_given(self.given("damping").is_some(), self.given("restitution").is_some())?;
@@ -406,6 +435,10 @@ pub enum Tangential {
 /// What a bounce gives (SI units, the axes of the module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct BounceOutcome {
+    /// The shell ball's gauge inflation pressure, Pa (law `shell`): what a
+    /// pressure study sets each bounce's outcome against.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inflation_pressure: Option<f64>,
     /// e = v_n⁺/v_n⁻, normal, relative to the plate.
     pub restitution: f64,
     /// s.
@@ -592,6 +625,10 @@ pub fn solve(b: &Bounce, solver: NormalSolver) -> Result<BounceOutcome, KickErro
     };
     let outside_validity = kick_core::validity::check(kind, b.radius, o.max_compression).err();
     Ok(BounceOutcome {
+        inflation_pressure: match b.law {
+            BallLaw::Shell(shell) => Some(shell.pressure),
+            BallLaw::Kick { .. } => None,
+        },
         restitution: o.restitution,
         contact_time: o.contact_time,
         peak_force: o.peak_force,
@@ -615,6 +652,9 @@ impl BounceOutcome {
     pub fn text(&self) -> String {
         let v = |x: [f64; 3]| format!("{}, {}, {}", kick_core::sig(x[0]), kick_core::sig(x[1]), kick_core::sig(x[2]));
         let mut s = String::new();
+        if let Some(p) = self.inflation_pressure {
+            s += &format!("inflation_pressure {} Pa (gauge)\n", kick_core::sig(p));
+        }
         s += &format!("restitution       {}\n", kick_core::sig(self.restitution));
         s += &format!("contact_time      {} ms\n", kick_core::sig(self.contact_time * 1e3));
         s += &format!("peak_force        {} N\n", kick_core::sig(self.peak_force));

@@ -27,16 +27,52 @@ fn close(a: f64, b: f64, tol: f64, what: &str) {
     assert!((a - b).abs() <= tol * b.abs(), "{what}: {a} vs {b} ({:e} relative)", (a - b).abs() / b.abs());
 }
 
-/// With the loss multiplying the elastic force, a passive impact on a
-/// massive plate has exactly the hysteresis relation's restitution at
-/// x0 = χ V, whatever the gas and the shell (kick-core's laws module docs).
+/// The stated speed dependence: at small compression the shell law is
+/// Hunt–Crossley, k δ (1 + χ δ̇) with k = 2πR p0 + k_s and
+/// χ = β/(p0 + k_s/(2πR)), so restitution is the exact hysteresis relation
+/// at x0 = χ V: it falls with speed and rises with pressure through βV/p0.
+/// At V ≤ 0.1 m/s (δ ≤ 0.3 mm) the law's own corrections are O(δ/R) in the
+/// force (the patch's −δ/2R, the gas's compression): 1 − e is held to within
+/// δ_max/R of itself (measured: at most 1.2e-4 of it, against δ_max/R ≈ 2.5e-3).
 #[test]
-fn restitution_is_the_exact_hysteresis_relation() {
-    for (v, chi, k_s, gamma) in [(6.26, 0.0466, 0.0, 1.4), (20.0, 0.0466, 0.0, 1.4), (3.0, 0.1, 5.0e3, 1.0), (35.0, 0.01, 2.0e4, 1.4)] {
-        let b =
-            built(&[("speed", n(v)), ("gravity", n(0.0)), ("shell_loss", n(chi)), ("shell_stiffness", n(k_s)), ("gas_exponent", n(gamma))]);
+fn slow_impacts_follow_the_hunt_crossley_relation() {
+    for (v, beta, k_s, gamma, p) in
+        [(0.05, 3600.0, 0.0, 1.4, 8.0e4), (0.05, 1.0e5, 5.0e3, 1.0, 6.0e4), (0.1, 5.0e4, 2.0e4, 1.4, 1.1e5), (0.02, 2.0e5, 0.0, 1.4, 8.0e4)]
+    {
+        let b = built(&[
+            ("speed", n(v)),
+            ("gravity", n(0.0)),
+            ("shell_damping", n(beta)),
+            ("shell_stiffness", n(k_s)),
+            ("gas_exponent", n(gamma)),
+            ("inflation_pressure", n(p)),
+        ]);
+        let BallLaw::Shell(law) = b.law else { panic!("the shell by default") };
+        let chi = beta / (p + k_s / (2.0 * std::f64::consts::PI * b.radius));
+        close(law.small_compression_hysteresis(), chi, 1e-15, "χ");
         let o = solve(&b, NormalSolver::default()).unwrap();
-        close(o.restitution, exact_restitution(chi * v), 1e-9, &format!("V={v} χ={chi}"));
+        let e = exact_restitution(chi * v);
+        let relative = (o.restitution - e).abs() / (1.0 - e);
+        println!("V={v} β={beta}: e {} vs {e} ({relative:.1e} of 1 − e)", o.restitution);
+        assert!(relative < o.max_compression / b.radius, "V={v} β={beta}: {} vs {e} ({relative:e} of 1 − e)", o.restitution);
+    }
+}
+
+/// Restitution rises with pressure over Law 2's range, at the FIFA drop and
+/// at a shot's speed; contact time and compression fall (the ball stiffens).
+#[test]
+fn restitution_rises_with_pressure() {
+    let atm = kick_core::shell::SEA_LEVEL_PRESSURE;
+    for v in [(2.0 * kick_core::GRAVITY * 2.0_f64).sqrt(), 19.2] {
+        let outcomes: Vec<_> = [0.6, 0.7, 0.8, 0.9, 1.0, 1.1]
+            .iter()
+            .map(|&x| run(&spec(&[("speed", n(v)), ("inflation_pressure", n(x * atm))])).unwrap())
+            .collect();
+        for w in outcomes.windows(2) {
+            assert!(w[1].restitution > w[0].restitution, "V={v}: {:?}", outcomes.iter().map(|o| o.restitution).collect::<Vec<_>>());
+            assert!(w[1].contact_time < w[0].contact_time, "V={v}");
+            assert!(w[1].max_compression < w[0].max_compression, "V={v}");
+        }
     }
 }
 
@@ -46,7 +82,7 @@ fn restitution_is_the_exact_hysteresis_relation() {
 #[test]
 fn lossless_bounce_conserves_energy() {
     for v in [1.0, 6.26, 25.0] {
-        let b = built(&[("speed", n(v)), ("gravity", n(0.0)), ("shell_loss", n(0.0)), ("shell_stiffness", n(3.0e3))]);
+        let b = built(&[("speed", n(v)), ("gravity", n(0.0)), ("shell_damping", n(0.0)), ("shell_stiffness", n(3.0e3))]);
         let BallLaw::Shell(law) = b.law else { panic!("the shell by default") };
         let scenario = normal_scenario(&b, v).unwrap();
         let o = NormalSolver::default().solve(&scenario, law).unwrap();
@@ -69,7 +105,7 @@ fn slow_impact_is_the_pressure_spring() {
     let b = built(&[
         ("speed", n(v)),
         ("gravity", n(0.0)),
-        ("shell_loss", n(0.0)),
+        ("shell_damping", n(0.0)),
         ("inflation_pressure", n(6.0e4)),
         ("shell_stiffness", n(1.0e4)),
     ]);
@@ -86,8 +122,12 @@ fn slow_impact_is_the_pressure_spring() {
 #[test]
 fn tightened_independent_solve_agrees() {
     let tight = NormalSolver::Accurate(Accurate::new(1e-14, 1e-14).unwrap());
-    let cases: [&[(&str, Value)]; 5] = [
+    let cases: [&[(&str, Value)]; 8] = [
         &[("drop_height", n(2.0))],
+        &[("drop_height", n(2.0)), ("inflation_pressure", n(0.6 * kick_core::shell::SEA_LEVEL_PRESSURE))],
+        &[("speed", n(19.2)), ("inflation_pressure", n(1.1 * kick_core::shell::SEA_LEVEL_PRESSURE))],
+        // A rebound faster than p0/β: the clamp F = 0 engages before separation.
+        &[("speed", n(30.0)), ("inflation_pressure", n(2.0e4)), ("shell_damping", n(2.0e4))],
         &[("speed", n(20.0))],
         &[("speed", n(35.0)), ("inflation_pressure", n(1.1e5))],
         &[
@@ -97,7 +137,7 @@ fn tightened_independent_solve_agrees() {
             ("angle", n(40.0)),
             ("spin", Value::Vector([0.0, 30.0, 5.0])),
         ],
-        &[("speed", n(3.0)), ("shell_loss", n(0.2))],
+        &[("speed", n(3.0)), ("shell_damping", n(15000.0))],
     ];
     for values in cases {
         let b = built(values);
@@ -117,17 +157,46 @@ fn tightened_independent_solve_agrees() {
     }
 }
 
-/// The calibration holds: dropped 2 m at 0.8 bar, the default ball
-/// rebounds to the middle of FIFA's 115–165 cm. χ was identified without
-/// gravity during contact; with it the rebound is a few mm lower.
+/// The calibration holds: dropped 2 m at 0.8 bar (gravity on during the
+/// contact, as in the test), the default ball rebounds to 1.40 m, the middle
+/// of FIFA's 115–165 cm; β solved here again by Brent's method on the rebound.
 #[test]
-fn fifa_rebound_test_is_met() {
+fn shell_damping_is_the_fifa_rebound() {
     let o = run(&spec(&[("drop_height", n(2.0))])).unwrap();
-    let h = o.rebound_height.unwrap();
-    assert!((h - 1.40).abs() < 0.01, "{h}");
-    // The gravity-free bounce is the calibration itself, to the solver's accuracy.
-    let free = run(&spec(&[("speed", n((2.0 * kick_core::GRAVITY * 2.0_f64).sqrt())), ("gravity", n(0.0))])).unwrap();
-    close(free.restitution, (1.40_f64 / 2.0).sqrt(), 1e-8, "e at the FIFA test");
+    close(o.rebound_height.unwrap(), 1.40, 1e-8, "rebound");
+    let rebound = |beta: f64| run(&spec(&[("drop_height", n(2.0)), ("shell_damping", n(beta))])).unwrap().rebound_height.unwrap() - 1.40;
+    let beta = kick_core::roots::brent(rebound, 1.0e3, 1.0e4, 1e-12, 200).unwrap().x;
+    close(kick_core::shell::SHELL_DAMPING.default_number(), beta, 1e-8, "β");
+}
+
+/// The dynamic stiffness against plate tests, as SOURCES.md states it
+/// (abstract numbers, not counted as validation). Dowell & Krebs (1991):
+/// d = 2.80 v mm; the default ball's δ_max/V at 2, 4 and 6 m/s lies 1–7 %
+/// below it, the line is met at the FIFA drop's speed near 0.66 atm
+/// (read by the sagitta, d = δ_max), and at a shot's speed the model is
+/// stiffer: below 0.9 × 2.80 v at 15 and 30 m/s. Mills et al. (2026): a
+/// contact near 0.3 ms / 2.8 % = 10.7 ms at 5.93 m/s is longer than the
+/// model's at every pressure in Law 2's range (0.6 atm the softest).
+#[test]
+fn stiffness_against_plate_tests() {
+    let atm = kick_core::shell::SEA_LEVEL_PRESSURE;
+    let dk = |v: f64| 2.80e-3 * v;
+    for v in [2.0, 4.0, 6.0] {
+        let miss = 1.0 - run(&spec(&[("speed", n(v))])).unwrap().max_compression / dk(v);
+        assert!((0.01..0.07).contains(&miss), "V={v}: δ_max {miss:.3} below 2.80 V");
+    }
+    let v0 = (2.0 * kick_core::GRAVITY * 2.0_f64).sqrt();
+    let at = |p_atm: f64| run(&spec(&[("speed", n(v0)), ("inflation_pressure", n(p_atm * atm))])).unwrap().max_compression - dk(v0);
+    let meets = kick_core::roots::brent(at, 0.6, 1.1, 1e-10, 100).unwrap().x;
+    assert!((meets - 0.66).abs() < 0.005, "2.80 V met at {meets} atm");
+    for v in [15.0, 30.0] {
+        let d = run(&spec(&[("speed", n(v))])).unwrap().max_compression;
+        assert!(d < 0.9 * dk(v), "V={v}: {d} vs {}", dk(v));
+    }
+    let mills = 0.3e-3 / 0.028;
+    let softest = run(&spec(&[("speed", n(5.93)), ("inflation_pressure", n(0.6 * atm))])).unwrap().contact_time;
+    let fifa = run(&spec(&[("speed", n(5.93))])).unwrap().contact_time;
+    assert!(fifa < softest && softest < mills && (softest / mills - 1.0).abs() < 0.06, "{fifa} {softest} vs {mills}");
 }
 
 /// Prediction, not fitted: restitution falls with impact speed.
@@ -196,7 +265,7 @@ fn bad_input_names_the_parameter() {
     assert_eq!(refused(&[("speed", n(5.0)), ("ball_radius", n(0.0))]), "ball_radius");
     assert_eq!(refused(&[("speed", n(5.0)), ("friction", n(-0.1))]), "friction");
     assert_eq!(refused(&[("speed", n(5.0)), ("gas_exponent", n(2.0))]), "gas_exponent");
-    assert_eq!(refused(&[("speed", n(5.0)), ("shell_loss", n(-1.0))]), "shell_loss");
+    assert_eq!(refused(&[("speed", n(5.0)), ("shell_damping", n(-1.0))]), "shell_damping");
     assert_eq!(refused(&[("speed", n(5.0)), ("tangential_restitution", n(1.5))]), "tangential_restitution");
     let unknown = BounceSpec::default().set("pressure", n(1.0)).unwrap_err().to_string();
     assert!(unknown.contains("inflation_pressure"), "{unknown}");

@@ -5,8 +5,8 @@
 //! | no drive, c = 0 | `closed-form` (energy integral, Beta function) |
 //! | no drive, n = 1 | `closed-form` (damped oscillator, undamped return) |
 //! | the paper's law | `series` (power series to δ_max, energy integral back) |
-//! | the shell ball, drive ≥ 0 | `series` ([`crate::shell_series`]: Taylor steps from touch to separation) |
-//! | a boot in series: the shell ball, drive ≥ 0 | `series` ([`crate::boot::series`]) |
+//! | the shell ball, drive ≥ 0 | `series` ([`crate::shell_series`]: Taylor steps from touch to separation; `reduced` for a rebound that reaches the clamp F = 0) |
+//! | a boot in series: the shell ball, drive ≥ 0 | `series` ([`crate::boot::series`]; `reduced` likewise at the clamp) |
 //! | a boot in series, another law | `reduced` ([`crate::boot`]: (δ, δ̇, δ_b) on the engine) |
 //! | another contact law | `reduced` (δ through the whole contact) |
 //! | time history wanted | `accurate` (full state; outcome and history from one run) |
@@ -49,9 +49,9 @@ impl Solver for Auto {
     fn solve(&self, scenario: &Scenario) -> Result<Outcome, KickError> {
         match Auto::path(scenario) {
             SolverPath::ClosedForm => ClosedForm.solve(scenario),
-            // A booted series that meets the ball's clamp hands over to the engine.
+            // A shell series (bare or booted) hands a rebound that reaches the clamp F = 0 to `reduced`.
             SolverPath::Series => match self.series.solve(scenario) {
-                Err(KickError::NotApplicable { .. }) if scenario.boot().is_some() => self.reduced.solve(scenario),
+                Err(KickError::NotApplicable { .. }) => self.reduced.solve(scenario),
                 other => other,
             },
             _ => self.reduced.solve(scenario),

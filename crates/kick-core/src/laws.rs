@@ -335,7 +335,7 @@ impl LawKind {
             LawKind::Shell if damping || restitution => Err(KickError::DoesNotApply {
                 given: if damping { "damping" } else { "restitution" },
                 to,
-                reason: "the shell ball's loss is `shell_loss` (calibrated on the FIFA rebound test); its restitution is predicted, not a target",
+                reason: "the shell ball's loss is `shell_damping` (calibrated on the FIFA rebound test); its restitution is predicted, not a target",
             }),
             LawKind::Shell => Ok(()),
             _ if damping => Err(KickError::DoesNotApply {
@@ -478,7 +478,7 @@ impl AnyLaw {
                 ("atmospheric_pressure", b.atmospheric_pressure),
                 ("gas_exponent", b.gas_exponent),
                 ("shell_stiffness", b.shell_stiffness),
-                ("shell_loss", b.shell_loss),
+                ("shell_damping", b.shell_damping),
             ],
         }
     }

@@ -802,7 +802,7 @@ pub static PARAMETERS: [ParameterDef; 35] = [
     crate::shell::INFLATION_PRESSURE,
     crate::shell::GAS_EXPONENT,
     crate::shell::SHELL_STIFFNESS,
-    crate::shell::SHELL_LOSS,
+    crate::shell::SHELL_DAMPING,
     // The foot (leg and boot), taken by 1D and 3D kicks alike.
     LEG,
     KNEE,

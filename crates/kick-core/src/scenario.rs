@@ -94,7 +94,7 @@ pub struct ScenarioSpec {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shell_stiffness: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub shell_loss: Option<f64>,
+    pub shell_damping: Option<f64>,
     /// The foot (Level::Foot): the articulated leg and its pose, the boot.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub leg: Option<bool>,
@@ -233,7 +233,7 @@ impl ScenarioSpec {
             (&shell::INFLATION_PRESSURE, self.inflation_pressure),
             (&shell::GAS_EXPONENT, self.gas_exponent),
             (&shell::SHELL_STIFFNESS, self.shell_stiffness),
-            (&shell::SHELL_LOSS, self.shell_loss),
+            (&shell::SHELL_DAMPING, self.shell_damping),
         ]
         .into_iter()
         .filter_map(|(p, v)| v.map(|v| (p, v)))
@@ -247,7 +247,7 @@ impl ScenarioSpec {
             crate::DEFAULT_BALL_RADIUS,
             or(self.gas_exponent, &shell::GAS_EXPONENT),
             or(self.shell_stiffness, &shell::SHELL_STIFFNESS),
-            or(self.shell_loss, &shell::SHELL_LOSS),
+            or(self.shell_damping, &shell::SHELL_DAMPING),
         )
     }
 
@@ -294,7 +294,7 @@ impl SetParameter for ScenarioSpec {
             None if name == shell::INFLATION_PRESSURE.name => self.inflation_pressure = Some(x),
             None if name == shell::GAS_EXPONENT.name => self.gas_exponent = Some(x),
             None if name == shell::SHELL_STIFFNESS.name => self.shell_stiffness = Some(x),
-            None if name == shell::SHELL_LOSS.name => self.shell_loss = Some(x),
+            None if name == shell::SHELL_DAMPING.name => self.shell_damping = Some(x),
             None if name == parameters::KNEE.name => self.knee = Some(x),
             None if name == parameters::ANKLE.name => self.ankle = Some(x),
             None if name == parameters::HIP.name => self.hip = Some(x),
@@ -636,7 +636,7 @@ impl Scenario {
             spec.inflation_pressure = Some(b.pressure);
             spec.gas_exponent = Some(b.gas_exponent);
             spec.shell_stiffness = Some(b.shell_stiffness);
-            spec.shell_loss = Some(b.shell_loss);
+            spec.shell_damping = Some(b.shell_damping);
         }
         if let Some(pose) = self.foot.leg {
             // The leg sets the foot's mass.
@@ -809,9 +809,9 @@ mod tests {
     /// refused under another law, naming the key.
     #[test]
     fn law_shell_is_built_from_the_balls_keys() {
-        let spec: ScenarioSpec = toml::from_str("law = \"shell\"\ninflation_pressure = 7.0e4\nshell_loss = 0.03\n").unwrap();
+        let spec: ScenarioSpec = toml::from_str("law = \"shell\"\ninflation_pressure = 7.0e4\nshell_damping = 3000.0\n").unwrap();
         let scenario = spec.build().unwrap();
-        let ball = ShellBall::new(7.0e4, crate::DEFAULT_BALL_RADIUS, 1.4, 0.0, 0.03).unwrap();
+        let ball = ShellBall::new(7.0e4, crate::DEFAULT_BALL_RADIUS, 1.4, 0.0, 3000.0).unwrap();
         assert_eq!(scenario.contact_law(), AnyLaw::Shell(ball));
         assert_eq!((scenario.law_kind(), scenario.restitution_target()), (LawKind::Shell, None));
         assert_eq!(scenario.spec().build().unwrap(), scenario);

@@ -25,8 +25,36 @@
 //! `force` (N), `compression` (m), `foot_velocity`, `ball_velocity` (m/s);
 //! times in s, strictly increasing, first touch at t0 (`time_offset`); lines
 //! starting with `#` are comments. Every channel in the file needs a sigma.
+//!
+//! Many measurements, each at its own conditions: `[[measurement]]` tables,
+//! each with the values of declared parameters it was taken at (its keys,
+//! the level's names), its `[[measurement.scalar]]` observations with σ, an
+//! optional `name` and (at the kick level) a `history`. The model point is
+//! moved to a measurement's conditions before it predicts that measurement.
+//! `level = "bounce"` fits the ball alone on a rigid plate (`kick bounce`):
+//! its known values and starting guesses go in `[bounce]` by `kick bounce`'s
+//! names, its observables are `restitution`, `contact_time`, `peak_force`
+//! and `max_compression` of the normal phase:
+//!
+//! ```toml
+//! level = "bounce"
+//! free = ["shell_damping", "shell_stiffness"]
+//! [bounce]
+//! shell_stiffness = 1000.0   # a starting guess
+//! [[measurement]]
+//! name = "6 m/s at 0.8 bar"
+//! speed = 6.0
+//! inflation_pressure = 8.0e4
+//! [[measurement.scalar]]
+//! observable = "restitution"
+//! value = 0.84
+//! sigma = 0.01
+//! ```
+//!
+//! A problem in a TOML file is reported as `file:line` with the key
+//! (`measurement[2].speed`); in a JSON file as `file` with the key.
 
-use crate::parameter::{FitParameter, ModelPoint};
+use crate::parameter::{FitLevel, FitParameter, ModelPoint};
 use crate::IdentifyError;
 use kick_core::{LawKind, Outcome, ScenarioSpec};
 use serde::{Deserialize, Serialize};
@@ -47,12 +75,20 @@ pub enum Observable {
     PeakForce,
     /// δ_max, m.
     MaxCompression,
+    /// e = −δ̇⁺/δ̇⁻, the contact's restitution (a bounce's, relative to the plate).
+    Restitution,
 }
 
 impl Observable {
-    pub const ALL: [Observable; 5] =
-        [Observable::VBallOut, Observable::VFootOut, Observable::ContactTime, Observable::PeakForce, Observable::MaxCompression];
-    pub const NAMES: &'static str = "v_ball_out, v_foot_out, contact_time, peak_force, max_compression";
+    pub const ALL: [Observable; 6] = [
+        Observable::VBallOut,
+        Observable::VFootOut,
+        Observable::ContactTime,
+        Observable::PeakForce,
+        Observable::MaxCompression,
+        Observable::Restitution,
+    ];
+    pub const NAMES: &'static str = "v_ball_out, v_foot_out, contact_time, peak_force, max_compression, restitution";
 
     pub fn name(self) -> &'static str {
         match self {
@@ -61,6 +97,7 @@ impl Observable {
             Observable::ContactTime => "contact_time",
             Observable::PeakForce => "peak_force",
             Observable::MaxCompression => "max_compression",
+            Observable::Restitution => "restitution",
         }
     }
 
@@ -71,6 +108,7 @@ impl Observable {
             Observable::ContactTime => "s",
             Observable::PeakForce => "N",
             Observable::MaxCompression => "m",
+            Observable::Restitution => "1",
         }
     }
 
@@ -88,7 +126,14 @@ impl Observable {
             Observable::ContactTime => outcome.contact_time,
             Observable::PeakForce => outcome.peak_force,
             Observable::MaxCompression => outcome.max_compression,
+            Observable::Restitution => outcome.restitution,
         }
+    }
+
+    /// Whether a fit at `level` predicts it: a bounce's plate takes no
+    /// exit speeds (its normal phase gives the ball's rebound as `restitution`).
+    pub fn at(self, level: FitLevel) -> bool {
+        level == FitLevel::Kick || !matches!(self, Observable::VBallOut | Observable::VFootOut)
     }
 }
 
@@ -306,37 +351,86 @@ impl WeightedHistory {
     }
 }
 
-/// Everything a fit compares the model with.
+/// Everything a fit compares the model with: observations at the model
+/// point's own conditions, and measurements each at its own.
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct Observations {
     pub scalars: Vec<ScalarObservation>,
     pub history: Option<WeightedHistory>,
+    /// Further measurements (`[[measurement]]`), each at its own conditions.
+    pub measurements: Vec<Measurement>,
+}
+
+/// One measurement at its own conditions: values of declared parameters
+/// (an impact speed, a pressure) set on the model point before it predicts
+/// this measurement's observations.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Measurement {
+    /// Its label in reports (`measurement[i]` when the file names none).
+    pub name: String,
+    pub conditions: Vec<(FitParameter, f64)>,
+    /// Its scalars and history (no nested measurements).
+    pub observations: Observations,
+}
+
+impl Measurement {
+    /// `point` at this measurement's conditions.
+    pub fn at(&self, point: &ModelPoint) -> Result<ModelPoint, IdentifyError> {
+        let mut point = *point;
+        for &(p, value) in &self.conditions {
+            point = point.with(p, value).map_err(|e| IdentifyError::data(format!("measurement `{}`", self.name), e.to_string()))?;
+        }
+        Ok(point)
+    }
 }
 
 impl Observations {
     pub fn scalars(scalars: Vec<ScalarObservation>) -> Result<Self, IdentifyError> {
-        let o = Observations { scalars, history: None };
+        let o = Observations { scalars, history: None, measurements: Vec::new() };
         o.validate()?;
         Ok(o)
     }
 
     pub fn history(history: WeightedHistory) -> Self {
-        Observations { scalars: Vec::new(), history: Some(history) }
+        Observations { scalars: Vec::new(), history: Some(history), measurements: Vec::new() }
     }
 
-    /// Number of residuals.
+    /// Number of residuals, the measurements' included.
     pub fn len(&self) -> usize {
-        self.scalars.len() + self.history.as_ref().map_or(0, |h| h.data.len())
+        self.scalars.len()
+            + self.history.as_ref().map_or(0, |h| h.data.len())
+            + self.measurements.iter().map(|m| m.observations.len()).sum::<usize>()
     }
 
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
 
+    /// Whether any history is among them (the measurements' included).
+    pub fn has_history(&self) -> bool {
+        self.history.is_some() || self.measurements.iter().any(|m| m.observations.has_history())
+    }
+
     pub fn validate(&self) -> Result<(), IdentifyError> {
         if self.is_empty() {
             return Err(IdentifyError::NoData);
         }
+        self.validate_own()?;
+        for m in &self.measurements {
+            let named = |e: IdentifyError| IdentifyError::data(format!("measurement `{}`", m.name), e.to_string());
+            if m.observations.is_empty() {
+                return Err(named(IdentifyError::NoData));
+            }
+            if !m.observations.measurements.is_empty() {
+                return Err(named(IdentifyError::data("measurement", "a measurement holds no measurements of its own")));
+            }
+            m.observations.validate_own().map_err(named)?;
+        }
+        Ok(())
+    }
+
+    /// The checks of this level's own scalars and history.
+    fn validate_own(&self) -> Result<(), IdentifyError> {
         if let Some(history) = &self.history {
             // A channel that never changes (all zero, or one value) says
             // nothing about the contact: refused now, not after a long fit.
@@ -374,12 +468,82 @@ pub struct HistorySpec {
     pub sigma: BTreeMap<String, f64>,
 }
 
+/// A value of a declared parameter in a specification: a number, three
+/// numbers or a switch (a bounce's `spin` is three).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum GivenValue {
+    Number(f64),
+    Vector([f64; 3]),
+    Switch(bool),
+}
+
+impl From<GivenValue> for kick_core::parameters::Value {
+    fn from(v: GivenValue) -> Self {
+        match v {
+            GivenValue::Number(x) => kick_core::parameters::Value::Number(x),
+            GivenValue::Vector(x) => kick_core::parameters::Value::Vector(x),
+            GivenValue::Switch(x) => kick_core::parameters::Value::Switch(x),
+        }
+    }
+}
+
+/// A `[[measurement]]` of a fit specification: its conditions (any
+/// declared parameter of the level, by name, as keys of the table), its
+/// scalars (`[[measurement.scalar]]`) and optionally a history.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct MeasurementSpec {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    #[serde(flatten)]
+    pub conditions: BTreeMap<String, f64>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub scalar: Vec<ScalarObservation>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub history: Option<HistorySpec>,
+}
+
+impl<'de> Deserialize<'de> for MeasurementSpec {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Keys;
+        impl<'de> serde::de::Visitor<'de> for Keys {
+            type Value = MeasurementSpec;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a measurement: `name`, `scalar`, `history` and the values of the parameters it was taken at")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<MeasurementSpec, A::Error> {
+                use serde::de::Error as _;
+                let mut m = MeasurementSpec::default();
+                while let Some(key) = map.next_key::<String>()? {
+                    match key.as_str() {
+                        "name" => m.name = Some(map.next_value()?),
+                        "scalar" => m.scalar = map.next_value()?,
+                        "history" => m.history = Some(map.next_value()?),
+                        _ => {
+                            let value: f64 = map.next_value().map_err(|e| A::Error::custom(format!("`{key}`: {e}")))?;
+                            if m.conditions.insert(key.clone(), value).is_some() {
+                                return Err(A::Error::custom(format!("duplicate key `{key}`")));
+                            }
+                        }
+                    }
+                }
+                Ok(m)
+            }
+        }
+        deserializer.deserialize_map(Keys)
+    }
+}
+
 /// A fit specification file (see the module documentation).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FitSpec {
+    /// The model: `kick` (default: the 1D kick) or `bounce` (the ball alone on a plate).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub level: Option<String>,
     pub free: Vec<String>,
-    /// Contact law of the forward model, by `LawKind` name (default: the paper's).
+    /// Contact law of the forward model, by `LawKind` name (default: the
+    /// paper's); at the bounce level a `kick bounce --law` name (default shell).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub law: Option<String>,
     /// Target restitution of a law other than the paper's.
@@ -390,14 +554,105 @@ pub struct FitSpec {
     pub time_offset: Option<f64>,
     #[serde(default)]
     pub scenario: ScenarioSpec,
+    /// The bounce's known values and starting guesses (level `bounce`), by
+    /// `kick bounce`'s parameter names.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bounce: Option<BTreeMap<String, GivenValue>>,
     #[serde(default)]
     pub scalar: Vec<ScalarObservation>,
     #[serde(default)]
     pub history: Option<HistorySpec>,
+    /// Measurements, each at its own conditions.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub measurement: Vec<MeasurementSpec>,
     /// The true values, when known (synthetic data): `kick fit data`
     /// reports (estimate − truth)/σ for the free parameters named here.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub truth: Option<BTreeMap<String, f64>>,
+}
+
+/// Where a key of a specification is: `file:line` in a TOML text (the first
+/// line of the table that holds it setting it), `file` otherwise.
+struct Locator<'a> {
+    source: &'a str,
+    /// The text, when it is TOML.
+    toml: Option<&'a str>,
+}
+
+/// A table of a specification.
+#[derive(Clone, Copy)]
+enum Section<'a> {
+    Top,
+    Table(&'a str),
+    /// The i-th `[[measurement]]`.
+    Measurement(usize),
+    /// The j-th `[[measurement.scalar]]` (or `scalar` key) of the i-th measurement.
+    MeasurementScalar(usize, usize),
+}
+
+impl Locator<'_> {
+    /// The 1-based line of `key = ...` in `section`.
+    fn line(&self, section: Section, key: &str) -> Option<usize> {
+        let text = self.toml?;
+        let (mut table, mut measurement, mut scalar): (String, Option<usize>, Option<usize>) = (String::new(), None, None);
+        let mut measurements = 0;
+        let mut scalars = 0;
+        let mut first_scalar_line = None;
+        for (i, raw) in text.lines().enumerate() {
+            let line = raw.trim();
+            if let Some(header) = line.strip_prefix("[[").and_then(|l| l.split("]]").next()) {
+                let header = header.trim();
+                if header == "measurement" {
+                    measurement = Some(measurements);
+                    measurements += 1;
+                    scalars = 0;
+                    scalar = None;
+                    table = header.into();
+                } else if header == "measurement.scalar" {
+                    scalar = Some(scalars);
+                    scalars += 1;
+                    table = header.into();
+                } else {
+                    (table, measurement, scalar) = (header.into(), None, None);
+                }
+                continue;
+            }
+            if let Some(header) = line.strip_prefix('[').and_then(|l| l.split(']').next()) {
+                // A top-level key that is a table: its header's line.
+                if matches!(section, Section::Top) && header.trim() == key {
+                    return Some(i + 1);
+                }
+                (table, measurement, scalar) = (header.trim().into(), None, None);
+                continue;
+            }
+            let Some((k, _)) = line.split_once('=') else { continue };
+            let k = k.trim().trim_matches('"');
+            let here = match section {
+                Section::Top => table.is_empty(),
+                Section::Table(name) => table == name,
+                Section::Measurement(m) => measurement == Some(m) && table == "measurement",
+                Section::MeasurementScalar(m, j) => {
+                    if measurement == Some(m) && table == "measurement" && k == "scalar" {
+                        first_scalar_line.get_or_insert(i + 1);
+                    }
+                    measurement == Some(m) && scalar == Some(j) && table == "measurement.scalar"
+                }
+            };
+            if here && k == key {
+                return Some(i + 1);
+            }
+        }
+        first_scalar_line
+    }
+
+    /// A data error at `key` of `section`, named `what`.
+    fn error(&self, section: Section, key: &str, what: &str, message: impl Into<String>) -> IdentifyError {
+        let place = match self.line(section, key) {
+            Some(line) => format!("{}:{line}", self.source),
+            None => self.source.to_string(),
+        };
+        IdentifyError::data(place, format!("`{what}`: {}", message.into()))
+    }
 }
 
 impl FitSpec {
@@ -410,34 +665,97 @@ impl FitSpec {
         }
     }
 
-    /// Known values and starting guesses: the scenario with its law, and t0.
+    /// The model the data are fitted with (`level`, default the kick).
+    pub fn fit_level(&self) -> Result<FitLevel, IdentifyError> {
+        self.level.as_deref().map_or(Ok(FitLevel::Kick), FitLevel::from_name)
+    }
+
+    /// Known values and starting guesses: the scenario with its law, and t0;
+    /// at the bounce level the bounce of `[bounce]`.
     pub fn start(&self, source_name: &str) -> Result<ModelPoint, IdentifyError> {
-        let law = match &self.law {
-            Some(name) => Some(LawKind::from_name(name).map_err(|e| IdentifyError::data(source_name, e.to_string()))?),
-            None => None,
-        };
-        let spec = self.scenario.with_law_keys(law, self.restitution).map_err(|key| {
-            IdentifyError::data(
-                source_name,
-                format!("`{key}` is set both at the top level and in [scenario]; set it once, at the top level"),
-            )
-        })?;
-        let scenario = spec.build().map_err(|e| IdentifyError::data(source_name, e.to_string()))?;
-        ModelPoint::new(scenario, self.time_offset.unwrap_or(0.0))
+        self.start_located(&Locator { source: source_name, toml: None })
+    }
+
+    fn start_located(&self, at: &Locator) -> Result<ModelPoint, IdentifyError> {
+        let source_name = at.source;
+        match self.fit_level().map_err(|e| at.error(Section::Top, "level", "level", e.to_string()))? {
+            FitLevel::Kick => {
+                if self.bounce.is_some() {
+                    return Err(at.error(Section::Top, "level", "bounce", "a [bounce] table needs level = \"bounce\""));
+                }
+                let law = match &self.law {
+                    Some(name) => Some(LawKind::from_name(name).map_err(|e| at.error(Section::Top, "law", "law", e.to_string()))?),
+                    None => None,
+                };
+                let spec = self.scenario.with_law_keys(law, self.restitution).map_err(|key| {
+                    IdentifyError::data(
+                        source_name,
+                        format!("`{key}` is set both at the top level and in [scenario]; set it once, at the top level"),
+                    )
+                })?;
+                let scenario = spec.build().map_err(|e| IdentifyError::data(source_name, e.to_string()))?;
+                ModelPoint::new(scenario, self.time_offset.unwrap_or(0.0))
+            }
+            FitLevel::Bounce => {
+                for (given, key) in [
+                    (self.scenario != ScenarioSpec::default(), "scenario"),
+                    (self.restitution.is_some(), "restitution"),
+                    (self.time_offset.is_some(), "time_offset"),
+                    (self.history.is_some(), "history"),
+                ] {
+                    if given {
+                        return Err(at.error(
+                            Section::Top,
+                            key,
+                            key,
+                            "not a key of a bounce fit (its values go in [bounce], by `kick bounce`'s names; it has no history)",
+                        ));
+                    }
+                }
+                let mut spec = kick_bounce::BounceSpec::default();
+                if let Some(name) = &self.law {
+                    spec.law =
+                        Some(kick_bounce::LawChoice::from_name(name).map_err(|e| at.error(Section::Top, "law", "law", e.to_string()))?);
+                }
+                for (key, &value) in self.bounce.iter().flatten() {
+                    spec.set(key, value.into())
+                        .map_err(|e| at.error(Section::Table("bounce"), key, &format!("bounce.{key}"), e.to_string()))?;
+                }
+                // Without a speed of its own, the first measurement's stands in.
+                if spec.given("speed").is_none() && spec.given("drop_height").is_none() {
+                    let given = self.measurement.iter().find_map(|m| {
+                        m.conditions.get("speed").map(|&v| ("speed", v)).or(m.conditions.get("drop_height").map(|&v| ("drop_height", v)))
+                    });
+                    let (name, value) = given.ok_or_else(|| {
+                        at.error(
+                            Section::Table("bounce"),
+                            "speed",
+                            "speed",
+                            "give the impact speed (or drop_height) in [bounce] or in each [[measurement]]",
+                        )
+                    })?;
+                    spec.set(name, kick_core::parameters::Value::Number(value))
+                        .map_err(|e| IdentifyError::data(source_name, e.to_string()))?;
+                }
+                ModelPoint::bounce(spec).map_err(|e| at.error(Section::Table("bounce"), "speed", "bounce", e.to_string()))
+            }
+        }
     }
 
     /// The free parameters, by name.
     pub fn free_parameters(&self) -> Result<Vec<FitParameter>, IdentifyError> {
-        self.free.iter().map(|name| FitParameter::from_name(name)).collect()
+        let level = self.fit_level()?;
+        self.free.iter().map(|name| FitParameter::from_name_at(level, name)).collect()
     }
 
     /// The `[truth]` table by parameter; names are checked, values must be finite.
     pub fn truth(&self) -> Result<Vec<(FitParameter, f64)>, IdentifyError> {
         let Some(truth) = &self.truth else { return Ok(Vec::new()) };
+        let level = self.fit_level()?;
         truth
             .iter()
             .map(|(name, &value)| {
-                let p = FitParameter::from_name(name)?;
+                let p = FitParameter::from_name_at(level, name)?;
                 if value.is_finite() {
                     Ok((p, value))
                 } else {
@@ -447,30 +765,110 @@ impl FitSpec {
             .collect()
     }
 
-    /// Read the specification and the history file it names (relative to it).
+    /// Read the specification and the history files it names (relative to it).
     pub fn load(path: &Path) -> Result<(FitSpec, Observations), IdentifyError> {
         let name = path.display().to_string();
         let text = kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| IdentifyError::data(&name, e))?;
         let spec = FitSpec::parse(&text, &name)?;
-        let history = match &spec.history {
-            None => None,
-            Some(h) => {
-                let file = path.parent().unwrap_or(Path::new(".")).join(&h.file);
-                let file_name = file.display().to_string();
-                let csv =
-                    kick_core::input::read_text(&file, kick_core::input::MAX_DATA_BYTES).map_err(|e| IdentifyError::data(&file_name, e))?;
-                let data = HistoryData::parse_csv(&csv, &file_name)?;
-                let mut sigma = BTreeMap::new();
-                for (k, v) in &h.sigma {
-                    sigma.insert(Channel::from_name(k)?, *v);
-                }
-                Some(WeightedHistory::new(data, sigma)?)
+        let at = Locator { source: &name, toml: (!text.trim_start().starts_with('{')).then_some(text.as_str()) };
+        let dir = path.parent().unwrap_or(Path::new("."));
+        let level = spec.fit_level().map_err(|e| at.error(Section::Top, "level", "level", e.to_string()))?;
+        for (i, free) in spec.free.iter().enumerate() {
+            FitParameter::from_name_at(level, free).map_err(|e| at.error(Section::Top, "free", &format!("free[{i}]"), e.to_string()))?;
+        }
+        let start = spec.start_located(&at)?;
+        let history = spec.history.as_ref().map(|h| load_history(dir, h)).transpose()?;
+        for s in &spec.scalar {
+            if !s.observable.at(level) {
+                return Err(at.error(Section::Top, "scalar", s.observable.name(), format!("not an observable of a {} fit", level.name())));
             }
-        };
-        let observations = Observations { scalars: spec.scalar.clone(), history };
+        }
+        let mut measurements = Vec::with_capacity(spec.measurement.len());
+        for (i, m) in spec.measurement.iter().enumerate() {
+            let label = m.name.clone().unwrap_or_else(|| format!("measurement[{i}]"));
+            let mut conditions = Vec::new();
+            for (key, &value) in &m.conditions {
+                let what = format!("measurement[{i}].{key}");
+                let p = FitParameter::from_name_at(level, key).map_err(|e| at.error(Section::Measurement(i), key, &what, e.to_string()))?;
+                if spec.free.iter().any(|f| f == key) {
+                    return Err(at.error(Section::Measurement(i), key, &what, "it is free: a measurement cannot also fix it"));
+                }
+                p.def().check(value).map_err(|e| at.error(Section::Measurement(i), key, &what, e.to_string()))?;
+                conditions.push((p, value));
+            }
+            for (j, s) in m.scalar.iter().enumerate() {
+                let what = format!("measurement[{i}].scalar[{j}]");
+                if m.scalar[..j].iter().any(|t| t.observable == s.observable) {
+                    return Err(at.error(
+                        Section::MeasurementScalar(i, j),
+                        "observable",
+                        &what,
+                        format!("`{}` is observed twice in this measurement; give one value with its sigma", s.observable.name()),
+                    ));
+                }
+                if !s.observable.at(level) {
+                    return Err(at.error(
+                        Section::MeasurementScalar(i, j),
+                        "observable",
+                        &what,
+                        format!("`{}` is not an observable of a {} fit", s.observable.name(), level.name()),
+                    ));
+                }
+                if !s.value.is_finite() {
+                    return Err(at.error(Section::MeasurementScalar(i, j), "value", &what, format!("value {} is not finite", s.value)));
+                }
+                if !(s.sigma.is_finite() && s.sigma > 0.0) {
+                    return Err(at.error(
+                        Section::MeasurementScalar(i, j),
+                        "sigma",
+                        &what,
+                        format!("sigma {}: must be finite and > 0", s.sigma),
+                    ));
+                }
+            }
+            if level == FitLevel::Bounce && m.history.is_some() {
+                return Err(at.error(
+                    Section::Measurement(i),
+                    "history",
+                    &format!("measurement[{i}].history"),
+                    "a bounce fit takes scalars only",
+                ));
+            }
+            let history = m.history.as_ref().map(|h| load_history(dir, h)).transpose()?;
+            let observations = Observations { scalars: m.scalar.clone(), history, measurements: Vec::new() };
+            if observations.is_empty() {
+                return Err(at.error(
+                    Section::Measurement(i),
+                    "name",
+                    &format!("measurement[{i}]"),
+                    "no observations: add [[measurement.scalar]] tables",
+                ));
+            }
+            let measurement = Measurement { name: label, conditions, observations };
+            // Its conditions must build on the start (a speed the plate can take, say).
+            measurement.at(&start).map_err(|e| {
+                let key = m.conditions.keys().next().map(String::as_str).unwrap_or("name");
+                at.error(Section::Measurement(i), key, &format!("measurement[{i}]"), e.to_string())
+            })?;
+            measurements.push(measurement);
+        }
+        let observations = Observations { scalars: spec.scalar.clone(), history, measurements };
         observations.validate()?;
         Ok((spec, observations))
     }
+}
+
+/// A `[history]` table's file (relative to `dir`) with its sigmas.
+fn load_history(dir: &Path, h: &HistorySpec) -> Result<WeightedHistory, IdentifyError> {
+    let file = dir.join(&h.file);
+    let file_name = file.display().to_string();
+    let csv = kick_core::input::read_text(&file, kick_core::input::MAX_DATA_BYTES).map_err(|e| IdentifyError::data(&file_name, e))?;
+    let data = HistoryData::parse_csv(&csv, &file_name)?;
+    let mut sigma = BTreeMap::new();
+    for (k, v) in &h.sigma {
+        sigma.insert(Channel::from_name(k)?, *v);
+    }
+    WeightedHistory::new(data, sigma)
 }
 
 #[cfg(test)]

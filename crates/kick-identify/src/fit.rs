@@ -456,7 +456,7 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
     problem.observations.validate()?;
     let mut theta0 = Vec::with_capacity(problem.free.len());
     for &p in &problem.free {
-        problem.start.check_fittable(p, problem.observations.history.is_some())?;
+        problem.start.check_fittable(p, problem.observations.has_history())?;
         let v = problem.start.get(p)?;
         let coordinate = p.coordinate();
         let theta = coordinate.theta(v).ok_or(IdentifyError::StartOutOfRange {
@@ -635,25 +635,32 @@ fn check_finite(report: &FitReport) -> Result<(), IdentifyError> {
     Ok(())
 }
 
-/// Observed values, sigmas and labels in [`predict`]'s order.
+/// Observed values, sigmas and labels in [`predict`]'s order (a
+/// measurement's labels start with its name).
 pub fn flatten(observations: &Observations) -> (Vec<f64>, Vec<f64>, Vec<String>) {
     let mut observed = Vec::new();
     let mut sigma = Vec::new();
     let mut labels = Vec::new();
-    for s in &observations.scalars {
-        observed.push(s.value);
-        sigma.push(s.sigma);
-        labels.push(s.observable.name().to_string());
-    }
-    if let Some(h) = &observations.history {
-        for (channel, values) in &h.data.channels {
-            let sig = h.sigma[channel];
-            for (t, v) in h.data.times.iter().zip(values) {
-                observed.push(*v);
-                sigma.push(sig);
-                labels.push(format!("{} at t = {} s", channel.name(), kick_core::number::sig(*t)));
+    let mut own = |o: &Observations, prefix: &str| {
+        for s in &o.scalars {
+            observed.push(s.value);
+            sigma.push(s.sigma);
+            labels.push(format!("{prefix}{}", s.observable.name()));
+        }
+        if let Some(h) = &o.history {
+            for (channel, values) in &h.data.channels {
+                let sig = h.sigma[channel];
+                for (t, v) in h.data.times.iter().zip(values) {
+                    observed.push(*v);
+                    sigma.push(sig);
+                    labels.push(format!("{prefix}{} at t = {} s", channel.name(), kick_core::number::sig(*t)));
+                }
             }
         }
+    };
+    own(observations, "");
+    for m in &observations.measurements {
+        own(&m.observations, &format!("{}: ", m.name));
     }
     (observed, sigma, labels)
 }

@@ -28,9 +28,9 @@ pub mod synthetic;
 pub mod table2;
 pub mod validation;
 
-pub use data::{Channel, FitSpec, HistoryData, Observable, Observations, ScalarObservation};
+pub use data::{Channel, FitSpec, HistoryData, Measurement, Observable, Observations, ScalarObservation};
 pub use fit::{fit, fit_with_cancel, Estimate, FitOptions, FitProblem, FitReport, FitStop};
-pub use parameter::{Coordinate, FitParameter, ModelPoint};
+pub use parameter::{Coordinate, FitLevel, FitParameter, ModelPoint};
 
 use kick_core::KickError;
 use thiserror::Error;

@@ -15,10 +15,26 @@ pub const RECORD_FRACTION: f64 = 1.0 / 400.0;
 
 /// Model predictions at the observations, in the order of
 /// [`Observations`]: scalars first, then each history channel over all
-/// times, a history sample at data time t read at model time t − t0.
+/// times, a history sample at data time t read at model time t − t0; then
+/// each measurement's, the point moved to its conditions.
 pub fn predict(solver: &Accurate, point: &ModelPoint, observations: &Observations) -> Result<Vec<f64>, IdentifyError> {
-    let scenario = &point.scenario;
     let mut out = Vec::with_capacity(observations.len());
+    predict_own(solver, point, observations, &mut out)?;
+    for m in &observations.measurements {
+        predict_own(solver, &m.at(point)?, &m.observations, &mut out)?;
+    }
+    if let Some(bad) = out.iter().position(|v| !v.is_finite()) {
+        return Err(IdentifyError::data("model", format!("prediction {bad} is not finite")));
+    }
+    Ok(out)
+}
+
+/// The predictions of `observations`' own scalars and history (not its measurements) into `out`.
+fn predict_own(solver: &Accurate, point: &ModelPoint, observations: &Observations, out: &mut Vec<f64>) -> Result<(), IdentifyError> {
+    let scenario = &point.scenario;
+    if observations.scalars.is_empty() && observations.history.is_none() {
+        return Ok(());
+    }
     match &observations.history {
         None => {
             let outcome = solver.solve(scenario)?;
@@ -34,10 +50,7 @@ pub fn predict(solver: &Accurate, point: &ModelPoint, observations: &Observation
             }
         }
     }
-    if let Some(bad) = out.iter().position(|v| !v.is_finite()) {
-        return Err(IdentifyError::data("model", format!("prediction {bad} is not finite")));
-    }
-    Ok(out)
+    Ok(())
 }
 
 /// A recorded contact, readable at any time: before first touch the initial

@@ -1,9 +1,9 @@
 //! Synthetic observations: the forward model at known parameters plus seeded
 //! Gaussian noise, for recovery tests and identifiability studies.
 
-use crate::data::{Channel, HistoryData, Observable, Observations, ScalarObservation, WeightedHistory};
+use crate::data::{Channel, HistoryData, Measurement, Observable, Observations, ScalarObservation, WeightedHistory};
 use crate::model::predict;
-use crate::parameter::ModelPoint;
+use crate::parameter::{FitParameter, ModelPoint};
 use crate::IdentifyError;
 use kick_compliant::Accurate;
 use kick_core::Scenario;
@@ -99,6 +99,38 @@ pub fn scalars(solver: &Accurate, truth: &Scenario, sigma: &[(Observable, f64)],
         })
         .collect();
     Observations::scalars(scalars)
+}
+
+/// Measurements of `truth` at each of `conditions` (values of declared
+/// parameters, as a `[[measurement]]` gives them), each observable of
+/// `sigma` plus N(0, sigma²) noise from `seed` (seed `None`: exact values).
+/// Named by their conditions ("speed = 6, inflation_pressure = 80000").
+pub fn measurements(
+    solver: &Accurate,
+    truth: &ModelPoint,
+    conditions: &[Vec<(FitParameter, f64)>],
+    sigma: &[(Observable, f64)],
+    seed: Option<u64>,
+) -> Result<Observations, IdentifyError> {
+    let mut noise = seed.map(Gaussian::new);
+    let mut out = Vec::with_capacity(conditions.len());
+    for given in conditions {
+        let name: Vec<String> = given.iter().map(|(p, v)| format!("{} = {}", p.name(), kick_core::short(*v))).collect();
+        let exact = Observations {
+            scalars: sigma.iter().map(|&(observable, s)| ScalarObservation { observable, value: 0.0, sigma: s }).collect(),
+            history: None,
+            measurements: Vec::new(),
+        };
+        let mut m = Measurement { name: name.join(", "), conditions: given.clone(), observations: exact };
+        let values = predict(solver, &m.at(truth)?, &m.observations)?;
+        for (s, v) in m.observations.scalars.iter_mut().zip(values) {
+            s.value = v + noise.as_mut().map_or(0.0, |g| s.sigma * g.sample());
+        }
+        out.push(m);
+    }
+    let o = Observations { scalars: Vec::new(), history: None, measurements: out };
+    o.validate()?;
+    Ok(o)
 }
 
 #[cfg(test)]

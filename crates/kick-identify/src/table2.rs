@@ -35,7 +35,7 @@ pub fn printed_observations(row: &PrintedRow) -> Observations {
         Observable::PeakForce => row.peak_force,
         Observable::ContactTime => row.contact_time_ms * 1e-3,
         Observable::MaxCompression => row.max_compression_mm * 1e-3,
-        Observable::VFootOut => f64::NAN, // not printed; not in PRINTED_SIGMA
+        Observable::VFootOut | Observable::Restitution => f64::NAN, // not printed; not in PRINTED_SIGMA
     };
     Observations {
         scalars: PRINTED_SIGMA
@@ -43,6 +43,7 @@ pub fn printed_observations(row: &PrintedRow) -> Observations {
             .map(|&(observable, sigma)| ScalarObservation { observable, value: value(observable), sigma })
             .collect(),
         history: None,
+        measurements: Vec::new(),
     }
 }
 
@@ -55,6 +56,7 @@ pub fn unrounded_observations(outcome: &kick_core::Outcome) -> Observations {
             .map(|&(observable, sigma)| ScalarObservation { observable, value: observable.value(outcome), sigma })
             .collect(),
         history: None,
+        measurements: Vec::new(),
     }
 }
 

@@ -65,7 +65,7 @@ pub const SECTIONS: [(&str, &str); 10] = [
     (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
     ("3d.md", "Off-center 3D kicks: spin, friction, launch direction, the speed–spin trade-off"),
     ("flight.md", "Ball flight: free kicks from the 3D kick, deflection at 25 m"),
-    ("ball.md", "The ball alone: restitution, contact time and compression against impact speed"),
+    ("ball.md", "The ball alone: restitution, contact time and compression against impact speed and pressure"),
     ("leg.md", "Effective mass of the articulated leg"),
     ("laws.md", "Contact laws compared"),
     ("identification.md", "Parameter identification and identifiability"),
@@ -141,8 +141,9 @@ pub enum Call {
     FitTable2 { scenarios: PathBuf, out: PathBuf },
     /// `kick bench`.
     Bench(crate::bench::BenchSettings),
-    /// The ball alone: the shell ball's bounces over impact speeds, their
-    /// figure and `paper/ball.md` (part of `kick reproduce` only).
+    /// The ball alone: the figures of the bounce experiments (`experiments/ball/`,
+    /// run before it), the synthetic plate tests and their fit, and
+    /// `paper/ball.md` (part of `kick reproduce` only).
     Ball,
     /// `paper/leg.md`, `laws.md` and `identification.md` from their result files (part of `kick reproduce` only).
     Pages,
@@ -306,6 +307,7 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
     let fits = args.out.join("identification");
     let report_dir = args.report.parent().unwrap_or(Path::new("")).to_path_buf();
     let three_d = toml_files(&args.experiments.join("3d")).unwrap_or_default();
+    let ball = toml_files(&args.experiments.join("ball")).unwrap_or_default();
     let law_name = "synthetic_hunt_crossley";
     let hunt_crossley = kick_core::ScenarioSpec {
         law: Some(kick_core::LawKind::HuntCrossleyExact),
@@ -328,7 +330,7 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         vec![Call::ForceHistory { out: out.clone(), figures: figures.clone() }],
         vec![Call::Patch { out: out.clone(), figures: figures.clone() }],
         vec![leg_call(args)],
-        vec![Call::Ball],
+        ball.into_iter().map(|file| Call::Run { file, out: out.clone() }).chain([Call::Ball]).collect(),
         vec![Call::Laws(crate::identify::LawsSettings {
             scenarios: args.experiments.join("table2.toml"),
             out: Some(fits.clone()),

@@ -196,7 +196,7 @@ fn mass_meeting(target: f64, model: impl Fn(f64) -> Result<f64, String>) -> Opti
     })
 }
 
-/// The ball alone: the FIFA rebound of the shell ball (what its loss χ was
+/// The ball alone: the FIFA rebound of the shell ball (what its loss β was
 /// set on) and the default ball against Law 2.
 fn ball_rows(m: &Measurements) -> Result<Vec<Row>, String> {
     let mut spec = kick_bounce::BounceSpec::default();
@@ -219,11 +219,11 @@ fn ball_rows(m: &Measurements) -> Result<Vec<Row>, String> {
             "rebound height",
             m.measured("fifa_rebound_height", NEEDED_BY).map_err(error)?,
             rebound,
-            "χ was identified in closed form from the band's middle (140 cm, e = 0.837, without gravity during contact); \
-             gravity during the contact lowers the rebound by a few mm",
+            "β was identified from the band's middle: the 2 m drop, gravity on during contact as in the test, \
+             rebounds 140 cm",
         ),
     )
-    .sets(format!("shell loss χ = {} s/m (crates/kick-bounce/SOURCES.md)", short(ball.shell_loss)))];
+    .sets(format!("shell loss β = {} Pa s/m (crates/kick-bounce/SOURCES.md)", short(ball.shell_damping)))];
     for r in kick_flight::validation::ball_comparisons(m).map_err(error)? {
         rows.push(Row::new(m, Role::Check, "default ball", "Table 1's ball, R = 0.11 m", r));
     }
@@ -1007,7 +1007,7 @@ impl Validation {
         let _ = writeln!(
             w,
             "The shell ball (`--law shell`, `kick_core::ShellBall`) is calibrated on the FIFA rebound test only: its loss \
-             χ is set there, its pressure is the test's 0.8 bar, and nothing about a kick went into it.\n"
+             β is set there, its pressure is the test's 0.8 bar, and nothing about a kick went into it.\n"
         );
         tables(&mut w, &self.ball, &mut first);
         let _ = writeln!(w, "## The 1D instep kick\n");
@@ -1018,7 +1018,7 @@ impl Validation {
              nearly rigid mechanical kicking limb (Peacock & Ball 2016) is run at its paired published ends: foot 9.1 m/s \
              with ball 13.0 m/s (ratio 1.43), foot 21.2 m/s with ball 29.7 m/s (ratio 1.40), paired by the published \
              correlation of ball with foot speed. What each law was calibrated on: the paper's law takes Table 1's k, n and \
-             c (the paper's values, fitted to none of these measurements); the shell ball takes the FIFA rebound's χ and \
+             c (the paper's values, fitted to none of these measurements); the shell ball takes the FIFA rebound's β and \
              the test's 0.8 bar, and nothing else.\n"
         );
         tables(&mut w, &self.contact, &mut first);

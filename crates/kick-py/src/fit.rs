@@ -89,7 +89,19 @@ pub fn fit<'py>(
         };
         let observations = Observations::history(WeightedHistory::new(data, sigma).map_err(value_error)?);
         let scenario = crate::params::scenario_spec(Some(&known), crate::law(law)?)?;
-        let spec = FitSpec { free, law: None, restitution: None, time_offset, scenario, scalar: Vec::new(), history: None, truth: None };
+        let spec = FitSpec {
+            level: None,
+            free,
+            law: None,
+            restitution: None,
+            time_offset,
+            scenario,
+            bounce: None,
+            scalar: Vec::new(),
+            history: None,
+            measurement: Vec::new(),
+            truth: None,
+        };
         let start = spec.start(SOURCE).map_err(value_error)?;
         let free = spec.free_parameters().map_err(value_error)?;
         let problem = FitProblem { start, free, observations };

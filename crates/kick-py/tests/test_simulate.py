@@ -19,7 +19,7 @@ CASES_1D = [
     {"law": "kelvin-voigt", "restitution": 0.8, "solver": "reduced"},
     # The pressurised ball by name, at its defaults and with a set pressure.
     {"law": "shell"},
-    {"law": "shell", "inflation_pressure": 6.0e4, "shell_loss": 0.03, "solver": "accurate"},
+    {"law": "shell", "inflation_pressure": 6.0e4, "shell_damping": 3000.0, "solver": "accurate"},
 ]
 
 
@@ -35,7 +35,7 @@ CASES_3D = [
     {"offset": 0.03, "friction": math.inf, "foot_inertia": (0.01, 0.02, 0.02)},
     {"offset": 0.04, "law": "hunt-crossley-exact", "restitution": 0.6, "foot_half_extents": (0.03, 0.1, 0.04)},
     # The shell ball's own keywords reach the 3D kick; rigid grip is a constraint.
-    {"offset": 0.05, "law": "shell", "inflation_pressure": 6.0e4, "shell_loss": 0.03},
+    {"offset": 0.05, "law": "shell", "inflation_pressure": 6.0e4, "shell_damping": 3000.0},
     {"offset": 0.05, "friction": 0.8, "tangential_stiffness": float("inf")},
     # The instep's keywords: a face turned by yaw and pitch, a convex cap, the patch contact.
     {"offset": 0.03, "face_yaw": 5.0, "face_pitch": -3.0},

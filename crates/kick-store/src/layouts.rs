@@ -140,7 +140,7 @@ pub const HISTORY: Layout = Layout {
 /// `kick fit data --out`: one identification.
 pub const FIT: Layout = Layout {
     name: "kick-fit",
-    version: 1,
+    version: 2,
     written_by: "`kick fit data --out`, `kick fit synthesize`; kick-paper's identification",
     summary: "The estimates of one identification from a measured history, with what they rest on.",
     objects: &[
@@ -169,8 +169,13 @@ pub const FIT: Layout = Layout {
             "the data fitted and the weighted residuals at \
                                                                         the estimates (histories: time s and each channel)",
         ),
+        (
+            "/fit/measurements/<i>/name, conditions/<parameter>, residuals/...",
+            "string, scalars, f64[samples]",
+            "each `[[measurement]]`: its name, the values it was taken at (in their units) and its residuals as above",
+        ),
     ],
-    changes: "",
+    changes: "2: /fit/measurements/<i>/ for the measurements of a `[[measurement]]` fit, each at its own conditions",
 };
 
 /// `kick fit table2 --out`: Table 2 read back.

@@ -218,6 +218,7 @@ pub fn run_part(
     let kicks = match &experiment.kicks {
         Kicks::OneD(kicks) => kicks,
         Kicks::ThreeD(kicks) => return crate::three_d::run_part(experiment, kicks, part, attributes),
+        Kicks::Bounce(kicks) => return crate::three_d::run_bounce_part(experiment, kicks, part, attributes),
     };
     let level = OneD { kicks, flight: experiment.flight.as_ref() };
     let out_dir = part.path.parent().unwrap_or(Path::new("."));

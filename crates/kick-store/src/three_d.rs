@@ -1,5 +1,7 @@
 //! 3D experiments (`kick run`, see `kick_study::experiment::three_d`) into
-//! `DIR/NAME.h5` (kick-paper draws the 3D figures back from those files).
+//! `DIR/NAME.h5` (kick-paper draws the 3D figures back from those files),
+//! and bounce experiments (`level = "bounce"`, the ball alone) in the same
+//! grid layout with `level = "bounce"` ([`run_bounce_part`]).
 //!
 //! The file is a sweep table ([`crate::h5`]): one row per grid cell (C
 //! order), `/parameters/<axis>` the swept values per row, `/outcomes/<name>`
@@ -9,7 +11,7 @@
 //! (defaults filled in; vectors as three numbers, switches as 0 or 1) with
 //! its unit, and the root attribute `level = "3d"`.
 
-use crate::experiment::{Experiment, Kicks3d};
+use crate::experiment::{Experiment, Kicks3d, KicksBounce};
 use crate::h5::{new_group, write_column, write_grid, write_str_attr, Column, H5Error};
 use crate::provenance::Provenance;
 use crate::run::{create_table, fill_table, finish_table, progress, Part, RunError, RunSummary};
@@ -48,6 +50,41 @@ pub(crate) fn run_part(
             continue;
         }
         write_column(&fixed, &path, &Column::new(def.name, def.unit), &value.numbers())?;
+    }
+    attributes(&file)?;
+    drop(file);
+    let bar = progress(rows, false);
+    fill_table(experiment, part.rows.clone(), &mut writer, &bar)?;
+    finish_table(experiment, writer, &bar)
+}
+
+/// The bounce part of [`crate::run::run_part`]: the grid layout of
+/// [`run_part`], `/fixed/<name>` every bounce parameter not swept (given or
+/// defaulted; a vector as three numbers; the speed, when a drop height gives
+/// it, left out), root attribute `level = "bounce"` (the law is among the
+/// outcome set's settings).
+pub(crate) fn run_bounce_part(
+    experiment: &Experiment,
+    kicks: &KicksBounce,
+    part: &Part,
+    attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>,
+) -> Result<RunSummary, RunError> {
+    let grid = &kicks.grid;
+    let path = part.path.clone();
+    let out_dir = path.parent().unwrap_or(Path::new("."));
+    let rows = part.rows.end - part.rows.start;
+    crate::limits::check(experiment, &part.rows, out_dir)?;
+    let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
+    let mut writer = create_table(experiment, &path, &provenance, rows, experiment.compress)?;
+    let file = writer.file().clone();
+    write_str_attr(&file, &path, "description", &experiment.description)?;
+    write_str_attr(&file, &path, "level", "bounce")?;
+    let axes = experiment.parameter_columns();
+    let coordinates: Vec<(Column, &[f64])> = axes.into_iter().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
+    write_grid(&file, &path, &coordinates)?;
+    let fixed = new_group(&file, "fixed").map_err(|e| H5Error::Hdf5 { path: path.clone(), message: e.to_string() })?;
+    for (def, value) in kicks.fixed() {
+        write_column(&fixed, &path, &Column::new(def.name, def.unit), &value)?;
     }
     attributes(&file)?;
     drop(file);

@@ -50,13 +50,13 @@ pub fn foot_settings(foot: kick_core::Foot) -> Vec<(String, Setting)> {
 /// records the ball it was solved with (none for the other laws, whose
 /// parameters are columns or the scenario's).
 pub fn ball_settings(law: kick_core::AnyLaw) -> Vec<(String, Setting)> {
-    use kick_core::shell::{GAS_EXPONENT, INFLATION_PRESSURE, SHELL_LOSS, SHELL_STIFFNESS};
+    use kick_core::shell::{GAS_EXPONENT, INFLATION_PRESSURE, SHELL_DAMPING, SHELL_STIFFNESS};
     match law {
         kick_core::AnyLaw::Shell(b) => Setting::numbers([
             (INFLATION_PRESSURE.name, b.pressure),
             (GAS_EXPONENT.name, b.gas_exponent),
             (SHELL_STIFFNESS.name, b.shell_stiffness),
-            (SHELL_LOSS.name, b.shell_loss),
+            (SHELL_DAMPING.name, b.shell_damping),
         ]),
         _ => Vec::new(),
     }

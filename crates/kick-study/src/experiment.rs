@@ -31,6 +31,9 @@
 //! `compress`) once into one [`Experiment`], and the level's own keys into its
 //! [`Kicks`]: 1D solvers and [`Scenarios`], or a 3D kick and its [`Grid`]
 //! ([`three_d`] says which files are 3D). Both grids are one [`Grid`] type.
+//! A file with `level = "bounce"` is the ball alone on the plate
+//! ([`bounce`]: `kick bounce`'s parameters in `[base]` and `[[sweep]]`, the
+//! same `Grid`).
 //!
 //! Every problem is reported with the file, line, column and key.
 
@@ -42,10 +45,12 @@ use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
+pub mod bounce;
 mod flight;
 mod one_d;
 pub mod three_d;
 pub use crate::grid::{Axis, Grid};
+pub use bounce::{KicksBounce, MAX_CELLS_BOUNCE};
 pub use three_d::{Kicks3d, MAX_CELLS_3D};
 
 type Span = std::ops::Range<usize>;
@@ -83,7 +88,7 @@ pub struct ExperimentError {
 /// takes is [`Keys1d`]'s and [`Keys3d`]'s.
 #[derive(Debug, Deserialize)]
 struct RawExperiment {
-    /// "1d" or "3d": decided by [`is_three_d`], here for its type's error.
+    /// "1d", "3d" or "bounce": decided by [`file_level`], here for its type's error.
     #[allow(dead_code)]
     level: Option<Spanned<String>>,
     name: Option<Spanned<String>>,
@@ -307,6 +312,8 @@ pub enum Kicks {
     OneD(Kicks1d),
     /// A grid of 3D kicks ([`three_d`]).
     ThreeD(Kicks3d),
+    /// A grid of bounces of the ball alone on the plate ([`bounce`]).
+    Bounce(KicksBounce),
 }
 
 /// The 1D part of an experiment.
@@ -321,7 +328,7 @@ impl Experiment {
     pub fn one_d(&self) -> Option<&Kicks1d> {
         match &self.kicks {
             Kicks::OneD(k) => Some(k),
-            Kicks::ThreeD(_) => None,
+            _ => None,
         }
     }
 
@@ -329,7 +336,15 @@ impl Experiment {
     pub fn three_d(&self) -> Option<&Kicks3d> {
         match &self.kicks {
             Kicks::ThreeD(k) => Some(k),
-            Kicks::OneD(_) => None,
+            _ => None,
+        }
+    }
+
+    /// The bounce part, when the experiment is the ball alone.
+    pub fn bounce(&self) -> Option<&KicksBounce> {
+        match &self.kicks {
+            Kicks::Bounce(k) => Some(k),
+            _ => None,
         }
     }
 }
@@ -523,25 +538,42 @@ struct AxisProbe {
     parameter: Option<toml::Value>,
 }
 
-/// Whether the file is 3D: it says `level = "3d"`, or without a `level` key
-/// it has a `[kick3d]` table or sweeps a parameter of the 3D level.
-fn is_three_d(at: &Locator, text: &str) -> Result<bool, ExperimentError> {
+/// The level a file is of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum FileLevel {
+    OneD,
+    ThreeD,
+    Bounce,
+}
+
+/// The file's level: what it says in `level` ("1d", "3d", "bounce"), or
+/// without a `level` key 3D when it has a `[kick3d]` table or sweeps a
+/// parameter of the 3D level, else 1D.
+fn file_level(at: &Locator, text: &str) -> Result<FileLevel, ExperimentError> {
     match toml::from_str::<LevelProbe>(text) {
         Ok(LevelProbe { level: Some(level), .. }) => match level.get_ref().as_str() {
-            "1d" => Ok(false),
-            "3d" => Ok(true),
-            other => Err(at.error(level.span(), "level", format!("`{other}`: expected \"1d\" or \"3d\""))),
+            "1d" => Ok(FileLevel::OneD),
+            "3d" => Ok(FileLevel::ThreeD),
+            "bounce" => Ok(FileLevel::Bounce),
+            other => Err(at.error(level.span(), "level", format!("`{other}`: expected \"1d\", \"3d\" or \"bounce\""))),
         },
-        Ok(probe) => Ok(probe.kick3d.is_some()
-            || probe.sweep.iter().flatten().any(|a| {
-                a.parameter
-                    .as_ref()
-                    .and_then(|p| p.as_str())
-                    .and_then(parameters::find)
-                    .is_some_and(|p| matches!(p.level, Level::Kick3d | Level::Instep))
-            })),
+        Ok(probe) => Ok(
+            if probe.kick3d.is_some()
+                || probe.sweep.iter().flatten().any(|a| {
+                    a.parameter
+                        .as_ref()
+                        .and_then(|p| p.as_str())
+                        .and_then(parameters::find)
+                        .is_some_and(|p| matches!(p.level, Level::Kick3d | Level::Instep))
+                })
+            {
+                FileLevel::ThreeD
+            } else {
+                FileLevel::OneD
+            },
+        ),
         // The 1D reader names the problem.
-        Err(_) => Ok(false),
+        Err(_) => Ok(FileLevel::OneD),
     }
 }
 
@@ -551,8 +583,23 @@ fn is_three_d(at: &Locator, text: &str) -> Result<bool, ExperimentError> {
 pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     let file = path.display().to_string();
     let at = Locator { file: &file, text };
-    let three_d = is_three_d(&at, text)?;
+    let level = file_level(&at, text)?;
+    let three_d = level == FileLevel::ThreeD;
     let stem = file_stem(path)?;
+    if level == FileLevel::Bounce {
+        let (name, description, compress, kicks) = bounce::parse(&at, text, stem)?;
+        return Ok(Experiment {
+            name,
+            description,
+            path: path.to_path_buf(),
+            read: vec![path.to_path_buf()],
+            text: text.to_string(),
+            output: Output::Summary,
+            flight: None,
+            compress: compression(&at, compress.as_ref())?,
+            kicks: Kicks::Bounce(kicks),
+        });
+    }
     let table: toml::Table = toml::from_str(text).map_err(|e| at.toml_error(&e))?;
     if !three_d && table.contains_key("row") {
         return one_d::table2_experiment(path, text, stem, &at);
@@ -981,18 +1028,18 @@ mod tests {
     fn the_shell_balls_keys_reach_every_scenario() {
         let ball =
             |p, loss| kick_core::AnyLaw::Shell(kick_core::ShellBall::new(p, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, loss).unwrap());
-        let loss = kick_core::shell::SHELL_LOSS.default_number();
+        let loss = kick_core::shell::SHELL_DAMPING.default_number();
         let grid = "law = \"shell\"\n[base]\ninflation_pressure = 6.0e4\n[[sweep]]\nparameter = \"foot_speed\"\nvalues = [18.0, 22.0]\n";
         let e = parse(Path::new("g.toml"), grid).unwrap();
         let kicks = e.one_d().unwrap();
         for i in 0..2 {
             assert_eq!(kicks.scenarios.scenario(i).unwrap().contact_law(), ball(6.0e4, loss), "row {i}");
         }
-        let named = "law = \"shell\"\n[base]\nshell_loss = 0.03\n[[scenario]]\nname = \"soft\"\ninflation_pressure = 6.0e4\n[[scenario]]\nname = \"hard\"\n";
+        let named = "law = \"shell\"\n[base]\nshell_damping = 3000.0\n[[scenario]]\nname = \"soft\"\ninflation_pressure = 6.0e4\n[[scenario]]\nname = \"hard\"\n";
         let kicks = parse(Path::new("n.toml"), named).unwrap();
         let kicks = kicks.one_d().unwrap();
-        assert_eq!(kicks.scenarios.scenario(0).unwrap().contact_law(), ball(6.0e4, 0.03));
-        assert_eq!(kicks.scenarios.scenario(1).unwrap().contact_law(), ball(8.0e4, 0.03));
+        assert_eq!(kicks.scenarios.scenario(0).unwrap().contact_law(), ball(6.0e4, 3000.0));
+        assert_eq!(kicks.scenarios.scenario(1).unwrap().contact_law(), ball(8.0e4, 3000.0));
         let three = "level = \"3d\"\nlaw = \"shell\"\n[base]\ninflation_pressure = 6.0e4\n[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.05]\n";
         let e = parse(Path::new("t.toml"), three).unwrap();
         assert_eq!(e.three_d().unwrap().scenario.contact_law(), ball(6.0e4, loss));

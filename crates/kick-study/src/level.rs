@@ -182,13 +182,14 @@ pub trait Level: Sync {
 /// An experiment file of either level is the level of its kicks.
 impl crate::experiment::Experiment {
     /// `f` of this experiment's level: [`one_d::OneD`] or [`three_d::ThreeD`]
-    /// with the experiment's `[flight]`.
+    /// with the experiment's `[flight]`, or [`bounce::BounceGrid`].
     pub fn with_level<R>(&self, f: impl FnOnce(&dyn Level) -> R) -> R {
         use crate::experiment::Kicks;
         let flight = self.flight.as_ref();
         match &self.kicks {
             Kicks::OneD(kicks) => f(&one_d::OneD { kicks, flight }),
             Kicks::ThreeD(kicks) => f(&three_d::ThreeD { kicks, flight }),
+            Kicks::Bounce(kicks) => f(&bounce::BounceGrid { kicks }),
         }
     }
 }

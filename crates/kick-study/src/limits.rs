@@ -84,7 +84,7 @@ impl OutputSize {
     pub fn of(experiment: &Experiment, part: &Range<u64>) -> OutputSize {
         let rows = part.end.saturating_sub(part.start);
         let Some(kicks) = experiment.one_d() else {
-            // A 3D row: its values and status bytes.
+            // A 3D or bounce row: its values and status bytes.
             return OutputSize { rows, bytes: rows.saturating_mul(experiment.bytes_per_row()) };
         };
         let solvers = kicks.solvers.len() as u64;
@@ -126,7 +126,7 @@ pub fn check(experiment: &Experiment, part: &Range<u64>, directory: &Path) -> Re
         let what = match &experiment.kicks {
             Kicks::OneD(Kicks1d { scenarios: Scenarios::Sampled(_), .. }) => "samples",
             Kicks::OneD(_) => "scenarios",
-            Kicks::ThreeD(_) => "cells",
+            Kicks::ThreeD(_) | Kicks::Bounce(_) => "cells",
         };
         return Err(LimitError::TooManyRows { what, rows });
     }

@@ -140,7 +140,7 @@ mod tests {
         }
     }
 
-    /// `kick sweep --law shell --inflation-pressure 6e4 --shell-loss 0.03`:
+    /// `kick sweep --law shell --inflation-pressure 6e4 --shell-damping 3000`:
     /// every scenario is solved with that ball (it once fell back to the
     /// declared 0.8 bar), the other values drawn as without it.
     #[test]
@@ -149,8 +149,8 @@ mod tests {
         sweep.fixed.law = Some(kick_core::LawKind::Shell);
         let default_ball = sweep;
         sweep.fixed.inflation_pressure = Some(6.0e4);
-        sweep.fixed.shell_loss = Some(0.03);
-        let ball = kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, 0.03).unwrap();
+        sweep.fixed.shell_damping = Some(3000.0);
+        let ball = kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, 3000.0).unwrap();
         for i in 0..sweep.samples {
             let (a, b) = (default_ball.scenario(i).unwrap(), sweep.scenario(i).unwrap());
             assert_eq!(b.contact_law(), kick_core::AnyLaw::Shell(ball), "row {i}");

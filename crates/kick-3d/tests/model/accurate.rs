@@ -349,11 +349,11 @@ fn the_shell_ball_given_by_name_is_the_ball_of_the_3d_kick() {
     let mut spec = kick_3d::KickSpec::default();
     spec.scenario.law = Some(LawKind::Shell);
     for (name, value) in
-        [("inflation_pressure", 6.0e4), ("shell_stiffness", 2.0e3), ("shell_loss", 0.03), ("ball_radius", 0.105), ("friction", 0.0)]
+        [("inflation_pressure", 6.0e4), ("shell_stiffness", 2.0e3), ("shell_damping", 3000.0), ("ball_radius", 0.105), ("friction", 0.0)]
     {
         spec.set_parameter(find(name).unwrap(), Value::Number(value)).unwrap();
     }
-    let ball = kick_core::ShellBall::new(6.0e4, 0.105, 1.4, 2.0e3, 0.03).unwrap();
+    let ball = kick_core::ShellBall::new(6.0e4, 0.105, 1.4, 2.0e3, 3000.0).unwrap();
     let k = spec.build().unwrap();
     assert_eq!(k.law(), AnyLaw::Shell(ball));
     let base = Scenario::baseline().with_shell(ball);

@@ -388,7 +388,9 @@ fn patch_grip_closes_energy_momentum_and_angular_momentum() {
 /// the spin's distance to the rigid kick is below 1e-5 at 1e10 and falls
 /// every decade. With μ = 0.8 (the spring slips at touch, grips, slips) it
 /// falls tenfold per decade from 1e7 on (≥ 8×), the 1/k_t of a spring's
-/// compliance. With μ = ∞ at least √10-fold: tenfold to 1e8 as with the
+/// compliance; from 1e6 to 1e7, before that rate sets in, it falls 2.4x
+/// with the shell's loss β A ḣ (3.8e-3 to 1.6e-3). With μ = ∞ at least
+/// √10-fold: tenfold to 1e8 as with the
 /// point contact, then slower, since the spring's transient at touch lasts
 /// ∝ k_t^−½ and during it the centroid's lever has already shrunk by
 /// δ ∝ k_t^−½, where the rigid grip's impulse acts at δ = 0.
@@ -399,7 +401,11 @@ fn a_stiff_spring_tends_to_rigid_grip_with_the_patch() {
         let base = Kick3dSpec { offset: Some(0.05), friction: Some(friction), ..Kick3dSpec::default() };
         let mut previous = f64::INFINITY;
         for (k_t, distance, _, _) in spring_to_grip(of, base, &[1e6, 1e7, 1e8, 1e9, 1e10]) {
-            let fall = if friction.is_finite() && k_t > 1e7 { 8.0 } else { 10f64.sqrt() };
+            let fall = match (friction.is_finite(), k_t) {
+                (true, k) if k > 1e7 => 8.0,
+                (true, _) => 2.0,
+                (false, _) => 10f64.sqrt(),
+            };
             assert!(distance < previous / fall, "cap {cap}, mu {friction}, k_t {k_t:e}: {distance:e} after {previous:e}");
             previous = distance;
         }

@@ -362,7 +362,7 @@ fn a_flatter_cap_tends_to_the_flat_face() {
 fn without_loss_the_patch_does_not_turn_the_ball() {
     let lossy = solve(&oblique(0.0, Some(0.15)));
     let ball =
-        kick_core::ShellBall { shell_loss: 0.0, ..kick_core::ShellBall::default_with_radius(kick_core::DEFAULT_BALL_RADIUS).unwrap() };
+        kick_core::ShellBall { shell_damping: 0.0, ..kick_core::ShellBall::default_with_radius(kick_core::DEFAULT_BALL_RADIUS).unwrap() };
     let spec = Kick3dSpec {
         offset: Some(0.05),
         approach_angle_deg: Some(10.0),

@@ -51,7 +51,7 @@ fn bounce_refusals_name_the_flag() {
         (&["bounce", "--drop-height", "2", "--angle", "5"][..], "--angle"),
         (&["bounce", "--speed", "5", "--spin", "1,2"][..], "--spin"),
         (&["bounce", "--speed", "5", "--stiffness", "1e5"][..], "--stiffness"),
-        (&["bounce", "--law", "power-law", "--speed", "5", "--shell-loss", "0.01"][..], "--shell-loss"),
+        (&["bounce", "--law", "power-law", "--speed", "5", "--shell-damping", "3000"][..], "--shell-damping"),
         (&["bounce", "--law", "hertz", "--speed", "5"][..], "--law"),
     ] {
         let out = kick(args);
@@ -79,10 +79,10 @@ fn bounce_takes_the_kick_family_laws() {
 fn values_beyond_a_ball_are_refused_by_name() {
     for (args, name) in [
         (&["bounce", "--speed", "1e300"][..], "`speed`"),
-        (&["bounce", "--speed", "5", "--shell-loss", "1e300"][..], "`shell_loss`"),
+        (&["bounce", "--speed", "5", "--shell-damping", "1e300"][..], "`shell_damping`"),
         (&["bounce", "--speed", "5", "--inflation-pressure", "1e-300"][..], "`inflation_pressure`"),
         (&["simulate", "--law", "shell", "--shell-stiffness", "1e300"][..], "`shell_stiffness`"),
-        (&["simulate", "--law", "shell", "--shell-loss", "1e300"][..], "`shell_loss`"),
+        (&["simulate", "--law", "shell", "--shell-damping", "1e300"][..], "`shell_damping`"),
         (&["simulate", "--law", "shell", "--inflation-pressure", "1e300"][..], "`inflation_pressure`"),
     ] {
         let out = kick(args);

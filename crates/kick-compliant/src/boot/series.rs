@@ -3,16 +3,17 @@
 //! of the bare one.
 //!
 //! With δ the approach, b = δ_b the layer's compression and β = δ − b the
-//! ball's, the motion is μ δ̈ = f_s − F with F = E(β)(1 + χ β̇) on the
-//! ball's side and F = k_b b + c_b ḃ on the layer's. In Taylor coefficients
-//! (d_k, b_k, β_k = d_k − b_k, E_k from [`crate::shell_series::ElasticJet`]
-//! on β) the balance at order k holds b_(k+1) once, in the χ E_0 β̇ term, so
+//! ball's, the motion is μ δ̈ = f_s − F with F = E(β) + s A(β) β̇ on the
+//! ball's side (s the shell's damping, A the patch area) and
+//! F = k_b b + c_b ḃ on the layer's. In Taylor coefficients (d_k, b_k,
+//! β_k = d_k − b_k, E_k and A_k from [`crate::shell_series::ElasticJet`]
+//! on β) the balance at order k holds b_(k+1) once, in the s A_0 β̇ term, so
 //!
-//!     (k+1) b_(k+1) (c_b + χ E_0) = E_k + χ Σ_(i=1..k) E_i (k−i+1) β_(k−i+1)
-//!                                    + χ E_0 (k+1) d_(k+1) − k_b b_k,
+//!     (k+1) b_(k+1) (c_b + s A_0) = E_k + s Σ_(i=1..k) A_i (k−i+1) β_(k−i+1)
+//!                                    + s A_0 (k+1) d_(k+1) − k_b b_k,
 //!
 //! then F_k = k_b b_k + c_b (k+1) b_(k+1) and d_(k+2) = (f_s δ_k0 − F_k)/(μ (k+1)(k+2)).
-//! c_b > 0 keeps the divisor away from zero at first touch (E_0 = 0).
+//! c_b > 0 keeps the divisor away from zero at first touch (A_0 = 0).
 //! Events are roots of the step's polynomials: β̇ = 0 (the ball's maximum
 //! compression), dF/dt = 0, β = 0 (separation). The energy
 //! ½ μ δ̇² + U(β) + ½ k_b b² − f_s δ only falls (both dashpots take power),
@@ -20,7 +21,7 @@
 //! ball is proven trapped. The step is the largest whose last terms of δ and
 //! of b stay below the tolerance in the scenario's units.
 //!
-//! The clamp F ≥ 0 (1 + χ β̇ ≤ 0) is not continued by series: a step that
+//! The clamp F ≥ 0 (E + s A β̇ ≤ 0 while the ball is compressed) is not continued by series: a step that
 //! would start there returns [`KickError::NotApplicable`], and `auto` takes
 //! the engine ([`super::solve`]).
 
@@ -52,7 +53,7 @@ struct Step {
 
 fn step(ball: &ShellBall, boot: &Boot, mu: f64, drive_share: f64, state: (f64, f64, f64)) -> Result<Step, KickError> {
     let (delta0, rate0, boot0) = state;
-    let chi = ball.shell_loss;
+    let damping = ball.shell_damping;
     let (kb, cb) = (boot.stiffness, boot.damping);
     let (mut d, mut b, mut beta) = ([0.0; K + 1], [0.0; K + 1], [0.0; K + 1]);
     // β's rate coefficients (k+1) β_(k+1) and the layer's (k+1) b_(k+1).
@@ -63,18 +64,18 @@ fn step(ball: &ShellBall, boot: &Boot, mu: f64, drive_share: f64, state: (f64, f
     b[0] = boot0;
     beta[0] = delta0 - boot0;
     let mut jet = ElasticJet::new(ball, beta[0])?;
-    let mut e0 = 0.0;
+    let mut a0 = 0.0;
     // To order K − 1 for b (its step criterion takes b_K), to K − 2 for the force.
     for k in 0..K {
         jet.next(k, &beta);
-        let e = jet.elastic();
+        let (e, a) = (jet.elastic(), jet.area());
         if k == 0 {
-            e0 = e[0];
+            a0 = a[0];
         }
-        let cross: f64 = (1..=k).map(|i| e[i] * ball_rate[k - i]).sum();
+        let cross: f64 = (1..=k).map(|i| a[i] * ball_rate[k - i]).sum();
         let kk = (k + 1) as f64;
-        let numerator = e[k] + chi * cross + chi * e0 * kk * d[k + 1] - kb * b[k];
-        boot_rate[k] = numerator / (cb + chi * e0);
+        let numerator = e[k] + damping * cross + damping * a0 * kk * d[k + 1] - kb * b[k];
+        boot_rate[k] = numerator / (cb + damping * a0);
         b[k + 1] = boot_rate[k] / kk;
         beta[k + 1] = d[k + 1] - b[k + 1];
         ball_rate[k] = kk * beta[k + 1];
@@ -84,17 +85,17 @@ fn step(ball: &ShellBall, boot: &Boot, mu: f64, drive_share: f64, state: (f64, f
             d[k + 2] = (drive - force[k]) / (mu * (kk * (kk + 1.0)));
         }
     }
-    let e = jet.elastic();
-    // χ E β̇² + c_b ḃ², by Cauchy products: E β̇ first, then with β̇.
-    let mut e_rate = [0.0; K - 1];
-    for (k, slot) in e_rate.iter_mut().enumerate() {
-        *slot = (0..=k).map(|j| e[j] * ball_rate[k - j]).sum();
+    let a = jet.area();
+    // s A β̇² + c_b ḃ², by Cauchy products: A β̇ first, then with β̇.
+    let mut a_rate = [0.0; K - 1];
+    for (k, slot) in a_rate.iter_mut().enumerate() {
+        *slot = (0..=k).map(|j| a[j] * ball_rate[k - j]).sum();
     }
     let mut dissipation = [0.0; K - 1];
     for (k, slot) in dissipation.iter_mut().enumerate() {
-        let ball_loss: f64 = (0..=k).map(|i| e_rate[i] * ball_rate[k - i]).sum();
+        let ball_loss: f64 = (0..=k).map(|i| a_rate[i] * ball_rate[k - i]).sum();
         let boot_loss: f64 = (0..=k).map(|i| boot_rate[i] * boot_rate[k - i]).sum();
-        *slot = chi * ball_loss + cb * boot_loss;
+        *slot = damping * ball_loss + cb * boot_loss;
     }
     Ok(Step { delta: d, boot: b, ball: beta, force, dissipation })
 }
@@ -122,11 +123,11 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
             });
         }
         let s = step(&ball, &boot, mu, drive_share, (delta, rate, layer))?;
-        // The clamp: the ball law's factor 1 + χ β̇ at the step's start.
-        if 1.0 + ball.shell_loss * s.ball[1] <= 0.0 {
+        // The clamp: the force at the step's start, with the ball compressed.
+        if s.ball[0] > 0.0 && s.force[0] <= 0.0 {
             return Err(KickError::NotApplicable {
                 solver: "series",
-                reason: "the ball's force reached its clamp at zero (1 + χ dδ_B/dt <= 0)",
+                reason: "the ball's force reached its clamp at zero (E + s A dδ_B/dt <= 0)",
             });
         }
         let size = |c: f64, k: usize| (STEP_SCALE * tolerance * length / c.abs()).powf(1.0 / k as f64);
@@ -144,12 +145,15 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
         if let Some(end) = separates {
             h = end;
         }
-        // The clamp within the step (module docs).
-        if first_fall(|x| 1.0 + ball.shell_loss * derivative(ball_poly, x), h).is_some() {
-            return Err(KickError::NotApplicable {
-                solver: "series",
-                reason: "the ball's force reaches its clamp at zero (1 + χ dδ_B/dt <= 0)",
-            });
+        // The clamp within the step (module docs): F > 0 wherever β > 0, sampled as the bare series does.
+        for j in 1..=crate::shell_series::SAMPLES {
+            let x = h * j as f64 / crate::shell_series::SAMPLES as f64;
+            if poly(ball_poly, x) > 1e-9 * length && poly(&s.force, x) <= 0.0 {
+                return Err(KickError::NotApplicable {
+                    solver: "series",
+                    reason: "the ball's force reaches its clamp at zero (E + s A dδ_B/dt <= 0)",
+                });
+            }
         }
         if let Some(turn) = first_fall(|x| derivative(ball_poly, x), h) {
             let reached = poly(ball_poly, turn);

@@ -1,8 +1,9 @@
 //! The shell ball on the `series` path (`kick_compliant::shell_series`)
 //! against `reduced` and `accurate` at 1e-14 (independent integrators of the
 //! same law), the exact restitution of a Hunt–Crossley contact solved here
-//! by bisection, and energy conservation with the loss off. Its documented
-//! accuracy at the default tolerance: 1e-10 relative on every observable.
+//! by bisection (the law's small-compression limit), and energy
+//! conservation with the loss off. Its documented accuracy at the default
+//! tolerance: 1e-10 relative on every observable.
 
 use kick_compliant::precision::max_relative_error;
 use kick_compliant::reduced::Reduced;
@@ -16,6 +17,8 @@ fn tight() -> Reduced {
 /// `count` scenarios from the declared sampling ranges of the eight 1D
 /// parameters (drive ≥ 0 as drawn) with shell balls over Law 2's pressures,
 /// losses up to 4x the calibrated one and a shell stiffness on every other row.
+/// The sweep's foot speeds reach 40 m/s: the fastest rebounds reach the
+/// clamp F = 0, which the series leaves to `reduced` (`NotApplicable`).
 fn shell_scenarios(count: u64) -> Vec<Scenario> {
     let mut state = 0x2545_f491_4f6c_dd1d_u64;
     let mut uniform = move || {
@@ -28,7 +31,7 @@ fn shell_scenarios(count: u64) -> Vec<Scenario> {
         .map(|i| {
             let values = Parameter::ALL.map(|p| p.def().sample.expect("every 1D parameter is sampled").draw(&mut uniform));
             let pressure = 6.0e4 + 5.0e4 * uniform();
-            let loss = 0.2 * uniform();
+            let loss = 4.0 * kick_core::shell::SHELL_DAMPING_FIFA * uniform();
             let stiffness = if i % 2 == 0 { 0.0 } else { 1.0e4 * uniform() };
             let ball = ShellBall::new(pressure, kick_core::DEFAULT_BALL_RADIUS, 1.4, stiffness, loss).unwrap();
             Scenario::from_values(values).unwrap().with_shell(ball)
@@ -40,10 +43,18 @@ fn shell_scenarios(count: u64) -> Vec<Scenario> {
 /// a trapped scenario is trapped on both paths.
 #[test]
 fn matches_the_tight_reference_over_the_sweep_box() {
-    let (mut worst, mut solved, mut trapped) = (0.0_f64, 0, 0);
+    let (mut worst, mut solved, mut trapped, mut clamped) = (0.0_f64, 0, 0, 0);
     for (i, scenario) in shell_scenarios(400).iter().enumerate() {
         let reference = tight().solve(scenario);
         let series = Series::default().solve(scenario);
+        if let Err(KickError::NotApplicable { .. }) = series {
+            // Handed to `reduced` by `auto`, which agrees with the reference.
+            let auto = Auto::default().solve(scenario).unwrap();
+            assert_eq!(auto.method, SolverPath::Reduced);
+            assert!(max_relative_error(&auto, reference.as_ref().unwrap()) < 1e-9, "row {i}");
+            clamped += 1;
+            continue;
+        }
         match (&series, &reference) {
             (Ok(s), Ok(r)) => {
                 assert_eq!(s.method, SolverPath::Series);
@@ -57,7 +68,9 @@ fn matches_the_tight_reference_over_the_sweep_box() {
             _ => panic!("row {i}: {series:?} vs {reference:?}\n{scenario:?}"),
         }
     }
-    println!("shell series vs reduced at 1e-14: worst {worst:.2e} over {solved} scenarios ({trapped} trapped on both)");
+    println!(
+        "shell series vs reduced at 1e-14: worst {worst:.2e} over {solved} scenarios ({trapped} trapped on both, {clamped} left to reduced)"
+    );
     assert!(solved > 300, "{solved}");
 }
 
@@ -72,9 +85,12 @@ fn table1_kick_matches_both_references() {
     }
 }
 
-/// Without a drive the relative motion of F = F_el (1 + χ δ̇) ends with
+/// Without a drive the relative motion of F = k δ (1 + χ δ̇) ends with
 /// e = x_e/x0, x0 − ln(1 + x0) = −x_e − ln(1 − x_e), x0 = χ V0, whatever
-/// F_el and the masses: solved here by bisection.
+/// k and the masses: solved here by bisection. The shell law is that at
+/// small compression, k = 2πR p0 + k_s, χ = β/(p0 + k_s/(2πR)); at
+/// V0 = 0.05 m/s (δ ≈ 0.1 mm) its own corrections, O(δ/R) ≈ 1e-3 in the
+/// force, move e by less than 1e-3 × (1 − e) (measured below 1.5e-4 of it).
 #[test]
 fn restitution_is_the_hunt_crossley_relation() {
     let relation = |x0: f64| {
@@ -90,13 +106,19 @@ fn restitution_is_the_hunt_crossley_relation() {
         }
         0.5 * (lo + hi) / x0
     };
+    let mut worst = 0.0_f64;
     for scenario in shell_scenarios(60) {
-        let scenario = scenario.with(Parameter::DriveForce, 0.0).unwrap();
+        let scenario = scenario.with(Parameter::DriveForce, 0.0).unwrap().with(Parameter::BallSpeed, 0.0).unwrap();
+        let scenario = scenario.with(Parameter::FootSpeed, 0.05).unwrap();
         let kick_core::AnyLaw::Shell(ball) = scenario.contact_law() else { unreachable!() };
         let outcome = Series::default().solve(&scenario).unwrap();
-        let expected = if ball.shell_loss == 0.0 { 1.0 } else { relation(ball.shell_loss * scenario.approach_speed()) };
-        assert!((outcome.restitution - expected).abs() < 1e-10, "{} vs {expected}", outcome.restitution);
+        let chi = ball.small_compression_hysteresis();
+        let expected = if chi == 0.0 { 1.0 } else { relation(chi * scenario.approach_speed()) };
+        let error = (outcome.restitution - expected).abs() / (1.0 - expected).max(1e-3);
+        worst = worst.max(error);
+        assert!(error < 1e-3, "{} vs {expected}", outcome.restitution);
     }
+    println!("shell series against Hunt–Crossley's restitution at 0.05 m/s: worst {worst:.1e} of 1 − e");
 }
 
 /// With the loss off the contact conserves energy (restitution 1, nothing

@@ -4,6 +4,7 @@ mod common;
 mod fit_refusals;
 mod laws;
 mod laws_and_offset;
+mod measurements;
 mod recovery;
 mod table2;
 mod validation;

@@ -296,10 +296,18 @@ pub fn report_text(report: &FitReport, truth: &[(FitParameter, f64)]) -> String 
     );
     if let Some(c) = &report.correlation {
         let names: Vec<&str> = report.estimates.iter().map(|e| e.parameter.name()).collect();
-        let _ = writeln!(w, "correlation:\n  {:<14} {}", "", names.iter().map(|n| format!("{n:>12}")).collect::<String>());
+        // Columns as wide as the longest name, so declared names never run together.
+        let width = names.iter().map(|n| n.chars().count()).max().unwrap_or(0).max(12);
+        let _ = writeln!(w, "correlation:\n  {:<width$}{}", "", names.iter().map(|n| format!(" {n:>width$}")).collect::<String>());
         for (name, row) in names.iter().zip(c) {
-            let _ = writeln!(w, "  {name:<14} {}", row.iter().map(|&v| format!("{:>12}", sig(v))).collect::<String>());
+            let _ = writeln!(w, "  {name:<width$}{}", row.iter().map(|&v| format!(" {:>width$}", sig(v))).collect::<String>());
         }
+    }
+    // Identifiability: a singular value near zero is a combination the data do not resolve.
+    if let (Some(&largest), Some(&smallest)) = (report.singular_values.first(), report.singular_values.last()) {
+        let values: Vec<String> = report.singular_values.iter().map(|&v| sig(v).to_string()).collect();
+        let ratio = if smallest > 0.0 { sig(largest / smallest).to_string() } else { "inf (not identified)".into() };
+        let _ = writeln!(w, "singular values of the weighted Jacobian: {} (largest/smallest {ratio})", values.join(", "));
     }
     let worst = report.residuals.iter().max_by(|a, b| a.weighted.abs().total_cmp(&b.weighted.abs()));
     if let Some(r) = worst {

@@ -149,8 +149,8 @@ fn a_sweep_records_the_shell_ball_it_solved_with() {
         let text = f.attr("experiment_text").unwrap().read_scalar::<hdf5::types::VarLenUnicode>().unwrap().to_string();
         assert!(text.lines().next().unwrap().ends_with("--law shell --inflation-pressure 60000"), "{text}");
     }
-    let ball =
-        kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, kick_core::shell::SHELL_LOSS.default_number()).unwrap();
+    let ball = kick_core::ShellBall::new(6.0e4, kick_core::DEFAULT_BALL_RADIUS, 1.4, 0.0, kick_core::shell::SHELL_DAMPING.default_number())
+        .unwrap();
     let data = SweepData::read(&one).unwrap();
     let column = |name: &str| data.parameters.iter().find(|(c, _)| c.name == name).map(|(_, v)| v[0]).unwrap();
     let values = kick_core::Parameter::ALL.map(|p| column(p.def().name));

@@ -150,7 +150,7 @@ solver : str, default "auto"
 law : str, default "power-law"
     Contact law: {", ".join(LAWS)}. The paper's takes ``damping`` (and refuses
     ``restitution``); shell takes its ball's own parameters (inflation_pressure,
-    gas_exponent, shell_stiffness, shell_loss) and refuses both; the others need
+    gas_exponent, shell_stiffness, shell_damping) and refuses both; the others need
     ``restitution`` (and refuse ``damping``). Each holds up to a compression
     (shell R/2, the others R; ``kick reference parameters``): beyond, status 4.
 dt : float, optional

@@ -14,7 +14,7 @@
 //! `restitution_formulas/`: `target_restitution` and, per law, the
 //! restitution it gives when asked for that target (baseline, simulated).
 //!
-//! Fit reports (layout `kick-fit`, version 1, under a group G):
+//! Fit reports (layout `kick-fit`, version 2, under a group G):
 //!
 //! ```text
 //! G                         attributes law, termination, converged ("true"/"false")
@@ -25,6 +25,7 @@
 //! G/singular_values         1
 //! G/residuals/<observable>/observed, predicted, sigma (its unit), weighted (1)
 //! G/residuals/<channel>/time (s), observed, predicted, sigma (its unit), weighted (1)
+//! G/measurements/<i>        attribute name; conditions/<parameter> (its unit); residuals/... as above
 //! ```
 //!
 //! `kick fit data --out` writes one report at `/fit`. `kick fit table2 --out`
@@ -194,8 +195,28 @@ pub fn write_fit(
         }
     }
     w.column(group, &Column::new("singular_values", "1"), &report.singular_values).map_err(text)?;
-    // Residuals in `predict`'s order: scalars, then each channel over all times.
+    // Residuals in `predict`'s order: scalars, then each channel over all
+    // times; then each measurement's, under measurements/<i>.
     let mut residuals = report.residuals.iter();
+    write_residuals(w, group, observations, &mut residuals)?;
+    for (i, m) in observations.measurements.iter().enumerate() {
+        let g = format!("{group}/measurements/{i}");
+        w.text(&g, "name", &m.name).map_err(text)?;
+        for (p, value) in &m.conditions {
+            write_scalar(w, &format!("{g}/conditions"), p.name(), p.unit(), *value)?;
+        }
+        write_residuals(w, &g, &m.observations, &mut residuals)?;
+    }
+    Ok(())
+}
+
+/// The residuals of `observations`' own scalars and history, taken in order from `residuals`.
+fn write_residuals<'a>(
+    w: &ResultWriter,
+    group: &str,
+    observations: &Observations,
+    residuals: &mut impl Iterator<Item = &'a kick_identify::fit::Residual>,
+) -> Result<(), String> {
     let mut next = |label: &str| residuals.next().ok_or_else(|| format!("fit report: no residual for {label}"));
     for s in &observations.scalars {
         let r = next(s.observable.name())?;

@@ -1,0 +1,188 @@
+//! Many measurements, each at its own conditions (`[[measurement]]`), the
+//! bounce level (the ball from plate tests) and the parameters a fit finds
+//! by their declared names: recovery of known truths from synthetic data,
+//! the bounce model against `kick bounce` itself, and malformed files
+//! refused naming file:line and key.
+
+use super::common::assert_recovered;
+use kick_bounce::BounceSpec;
+use kick_compliant::Accurate;
+use kick_core::parameters::Value;
+use kick_core::shell::{SEA_LEVEL_PRESSURE, SHELL_DAMPING};
+use kick_identify::fit::{fit, FitOptions, FitProblem};
+use kick_identify::synthetic::measurements;
+use kick_identify::{FitLevel, FitParameter, FitSpec, ModelPoint, Observable};
+use std::path::PathBuf;
+
+fn named(level: FitLevel, name: &str) -> FitParameter {
+    FitParameter::from_name_at(level, name).unwrap()
+}
+
+/// The default ball with a shell stiffness of 5 kN/m, at 6 m/s.
+fn plate_truth() -> ModelPoint {
+    let mut spec = BounceSpec::default();
+    spec.set("speed", Value::Number(6.0)).unwrap();
+    spec.set("shell_stiffness", Value::Number(5.0e3)).unwrap();
+    ModelPoint::bounce(spec).unwrap()
+}
+
+/// Plate tests at three speeds and three pressures.
+fn plate_conditions() -> Vec<Vec<(FitParameter, f64)>> {
+    let (speed, pressure) = (named(FitLevel::Bounce, "speed"), named(FitLevel::Bounce, "inflation_pressure"));
+    [3.0, 8.0, 19.2].iter().flat_map(|&v| [0.6, 0.8, 1.1].map(|p| vec![(speed, v), (pressure, p * SEA_LEVEL_PRESSURE)])).collect()
+}
+
+const PLATE_SIGMA: [(Observable, f64); 3] =
+    [(Observable::Restitution, 0.01), (Observable::ContactTime, 1e-4), (Observable::MaxCompression, 1e-3)];
+
+/// A bounce's predictions are `kick bounce`'s, to the solvers' accuracy
+/// (the fit solves the normal phase with `accurate`, `kick bounce` with `reduced`).
+#[test]
+fn the_bounce_model_is_kick_bounce() {
+    let truth = plate_truth();
+    let data = measurements(&Accurate::default(), &truth, &plate_conditions(), &PLATE_SIGMA, None).unwrap();
+    for m in &data.measurements {
+        let mut spec = truth.bounce.unwrap();
+        for (p, v) in &m.conditions {
+            spec.set(p.name(), Value::Number(*v)).unwrap();
+        }
+        let o = kick_bounce::run(&spec).unwrap();
+        for s in &m.observations.scalars {
+            let want = match s.observable {
+                Observable::Restitution => o.restitution,
+                Observable::ContactTime => o.contact_time,
+                Observable::MaxCompression => o.max_compression,
+                other => panic!("{other:?}"),
+            };
+            assert!((s.value - want).abs() <= 1e-9 * want, "{}: {} {} vs {want}", m.name, s.observable.name(), s.value);
+        }
+    }
+}
+
+/// Exact plate tests: β and k_s come back to 1e-6 of the truth from a start
+/// 40 % off; with noise (σ: 0.01 in e, 0.1 ms, 1 mm) within 3σ, s² near 1.
+#[test]
+fn plate_tests_recover_the_shell() {
+    let truth = plate_truth();
+    let free = vec![named(FitLevel::Bounce, "shell_damping"), named(FitLevel::Bounce, "shell_stiffness")];
+    let start = truth.with(free[0], 1.4 * SHELL_DAMPING.default_number()).unwrap().with(free[1], 3.0e3).unwrap();
+    for seed in [None, Some(3), Some(4)] {
+        let observations = measurements(&Accurate::default(), &truth, &plate_conditions(), &PLATE_SIGMA, seed).unwrap();
+        let report = fit(&FitProblem { start, free: free.clone(), observations }, &FitOptions::default()).unwrap();
+        if seed.is_none() {
+            for e in &report.estimates {
+                let t = truth.get(e.parameter).unwrap();
+                assert!((e.value / t - 1.0).abs() < 1e-6, "{}: {} vs {t}", e.parameter.name(), e.value);
+            }
+        } else {
+            assert_recovered(&truth, &report);
+            let r = report.correlation.as_ref().unwrap()[0][1];
+            assert!(r.abs() < 0.9, "the plate tests separate β and k_s: correlation {r}");
+        }
+    }
+}
+
+/// At the kick level the shell ball's own parameters are fittable by name
+/// (`FitParameter::Declared`), from exit speeds at three foot speeds: the
+/// loss β and the pressure come back from exact data.
+#[test]
+fn kick_measurements_fit_the_shell_ball_by_name() {
+    let base = kick_core::ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() }.build().unwrap();
+    let truth = ModelPoint::from(base);
+    let (beta, pressure, foot_speed) =
+        (named(FitLevel::Kick, "shell_damping"), named(FitLevel::Kick, "inflation_pressure"), named(FitLevel::Kick, "foot_speed"));
+    assert!(matches!(beta, FitParameter::Declared(_)) && matches!(foot_speed, FitParameter::Scenario(_)));
+    let conditions: Vec<Vec<(FitParameter, f64)>> = [12.0, 18.0, 24.0].iter().map(|&v| vec![(foot_speed, v)]).collect();
+    let sigma = [(Observable::VBallOut, 0.05), (Observable::ContactTime, 1e-4)];
+    let observations = measurements(&Accurate::default(), &truth, &conditions, &sigma, None).unwrap();
+    let start = truth.with(beta, 5000.0).unwrap().with(pressure, 6.5e4).unwrap();
+    let report = fit(&FitProblem { start, free: vec![beta, pressure], observations }, &FitOptions::default()).unwrap();
+    assert!(report.converged, "{}", report.termination);
+    for e in &report.estimates {
+        let t = truth.get(e.parameter).unwrap();
+        assert!((e.value / t - 1.0).abs() < 1e-6, "{}: {} vs {t}", e.parameter.name(), e.value);
+    }
+    // Under the paper's law the shell's parameters do not act: refused, named.
+    let paper = ModelPoint::from(kick_core::Scenario::baseline());
+    let e = paper.check_fittable(beta, false).unwrap_err().to_string();
+    assert!(e.contains("shell_damping") && e.contains("power-law"), "{e}");
+}
+
+/// A temporary file with `text`, removed when dropped.
+struct Temp(PathBuf);
+
+impl Temp {
+    fn new(name: &str, text: &str) -> Temp {
+        let dir = std::env::temp_dir().join(format!("kick-fit-measurements-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        Temp(path)
+    }
+}
+
+impl Drop for Temp {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+const GOOD: &str = "level = \"bounce\"\nfree = [\"shell_damping\"]\n[bounce]\nshell_damping = 3000.0\n\
+                    [[measurement]]\nname = \"a\"\nspeed = 6.0\ninflation_pressure = 8.0e4\n\
+                    [[measurement.scalar]]\nobservable = \"restitution\"\nvalue = 0.84\nsigma = 0.01\n\
+                    [[measurement]]\nspeed = 19.2\n\
+                    [[measurement.scalar]]\nobservable = \"contact_time\"\nvalue = 8.7e-3\nsigma = 1e-4\n";
+
+/// A well-formed bounce file loads: two measurements with their conditions,
+/// the first named, the second named by its place.
+#[test]
+fn a_bounce_specification_loads() {
+    let file = Temp::new("good.toml", GOOD);
+    let (spec, observations) = FitSpec::load(&file.0).unwrap();
+    assert_eq!(spec.fit_level().unwrap(), FitLevel::Bounce);
+    assert_eq!(observations.measurements.len(), 2);
+    assert_eq!((observations.measurements[0].name.as_str(), observations.measurements[1].name.as_str()), ("a", "measurement[1]"));
+    assert_eq!(observations.measurements[0].conditions.len(), 2);
+    let start = spec.start("good.toml").unwrap();
+    assert_eq!(start.get(named(FitLevel::Bounce, "shell_damping")).unwrap(), 3000.0);
+    let report = fit(&FitProblem { start, free: spec.free_parameters().unwrap(), observations }, &FitOptions::default()).unwrap();
+    assert!(report.converged && report.residuals[1].label.starts_with("measurement[1]: contact_time"), "{:?}", report.residuals);
+}
+
+/// Malformed files are refused naming file:line and the key.
+#[test]
+fn malformed_files_name_line_and_key() {
+    let with = |from: &str, to: &str| GOOD.replacen(from, to, 1);
+    let cases: Vec<(String, &str, &str)> = vec![
+        (with("speed = 19.2", "sped = 19.2"), ":14", "`measurement[1].sped`"),
+        (with("speed = 19.2", "speed = -1.0"), ":14", "`measurement[1].speed`"),
+        (with("inflation_pressure = 8.0e4", "shell_damping = 8.0e4"), ":8", "it is free"),
+        (with("sigma = 0.01", "sigma = 0.0"), ":12", "`measurement[0].scalar[0]`"),
+        (with("observable = \"restitution\"", "observable = \"v_ball_out\""), ":10", "not an observable of a bounce fit"),
+        (with("[bounce]\nshell_damping = 3000.0", "[bounce]\nshell_dampin = 3000.0"), ":4", "`bounce.shell_dampin`"),
+        (with("free = [\"shell_damping\"]", "free = [\"shell_dmaping\"]"), ":2", "`free[0]`"),
+        (with("[bounce]", "[scenario]\nfoot_mass = 2.0\n[bounce]"), ":3", "`scenario`"),
+        (with("level = \"bounce\"", "level = \"plate\""), ":1", "`level`"),
+        (
+            with("[[measurement.scalar]]\nobservable = \"contact_time\"", "[[measurement.scalar]]\nobservable = \"restitution\"\nvalue = 0.6\nsigma = 0.01\n[[measurement.scalar]]\nobservable = \"restitution\""),
+            ":20",
+            "observed twice",
+        ),
+    ];
+    for (text, line, key) in cases {
+        let file = Temp::new("bad.toml", &text);
+        let e = FitSpec::load(&file.0).unwrap_err().to_string();
+        let at = format!("{}{line}", file.0.display());
+        assert!(e.contains(&at) && e.contains(key), "expected {at} and {key} in: {e}\n{text}");
+    }
+    // An unknown observable is TOML's own error, with its line.
+    let file = Temp::new("bad.toml", &with("observable = \"restitution\"", "observable = \"bounce_height\""));
+    let e = FitSpec::load(&file.0).unwrap_err().to_string();
+    assert!(e.contains("line 10") && e.contains("bounce_height"), "{e}");
+    // JSON: the key, no line.
+    let json = r#"{"level": "bounce", "free": ["shell_damping"], "measurement": [{"speed": 6.0, "presure": 8e4,
+                   "scalar": [{"observable": "restitution", "value": 0.84, "sigma": 0.01}]}]}"#;
+    let file = Temp::new("bad.json", json);
+    let e = FitSpec::load(&file.0).unwrap_err().to_string();
+    assert!(e.contains("`measurement[0].presure`") && e.contains("inflation_pressure"), "{e}");
+}
