@@ -4,6 +4,7 @@
 //! Equation numbers refer to "The Millisecond Physics of a Soccer Kick"
 //! (`shared/paper/millisecond-physics-of-a-soccer-kick.md`).
 
+pub mod bound;
 pub mod check;
 pub mod dop853;
 pub mod error;
