@@ -21,6 +21,7 @@ pub mod patch;
 pub mod report;
 pub mod reproduce;
 pub mod three_d;
+pub mod units;
 pub mod validation;
 
 // The modules of kick-study and kick-store under the names this crate's files use.
