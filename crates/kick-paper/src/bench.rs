@@ -107,9 +107,9 @@ impl Spread {
         Spread::of(&a.iter().zip(b).map(|(x, y)| x / y).collect::<Vec<_>>())
     }
 
-    /// `median (range low–high)` with `decimals` decimals.
-    fn show(&self, decimals: usize) -> String {
-        format!("{:.decimals$} (range {:.decimals$}–{:.decimals$})", self.median, self.low, self.high)
+    /// `median (range low–high)` with `decimals` decimals, `unit` after each number.
+    fn show(&self, decimals: usize, unit: &str) -> String {
+        format!("{:.decimals$}{unit} (range {:.decimals$}–{:.decimals$}{unit})", self.median, self.low, self.high)
     }
 }
 
@@ -394,10 +394,10 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let (seed, auto) = (seed.ok_or("no seed point")?, auto.ok_or("no auto point")?);
     let _ = writeln!(
         log,
-        "\nauto (default) vs seed-rk4 at 5 µs: error {:.2e} vs {:.2e}; cost ratio {}x (5 alternating runs)",
+        "\nauto (default) vs seed-rk4 at 5 µs: error {:.2e} vs {:.2e}; cost ratio {} (5 alternating runs)",
         auto.max_error,
         seed.max_error,
-        headline.show(1)
+        headline.show(1, "x")
     );
     // The same ratio at equal accuracy: the fixed-step family's most accurate
     // point against the cheapest `auto` point at least as accurate, alternated.
@@ -424,12 +424,12 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
             let ratio = Spread::of_ratios(&f, &a);
             let _ = writeln!(
                 log,
-                "at equal accuracy: rk4-events at {:.2e} s (error {:.2e}) vs auto at {:.0e} (error {:.2e}): {}x",
+                "at equal accuracy: rk4-events at {:.2e} s (error {:.2e}) vs auto at {:.0e} (error {:.2e}): {}",
                 fixed.setting,
                 fixed.max_error,
                 cheap.setting,
                 cheap.max_error,
-                ratio.show(0)
+                ratio.show(0, "x")
             );
             Some(EqualAccuracy { fixed: fixed.clone(), auto: cheap.clone(), ratio })
         }
@@ -446,11 +446,11 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let (one, two, speed_up) = (Spread::of(&ones), Spread::of(&twos), Spread::of_ratios(&twos, &ones));
     let _ = writeln!(
         log,
-        "sweep of {} sampled scenarios (auto, summary only): {}/s on 1 thread, {}/s on 2 threads, speed-up {}x (3 alternating runs)",
+        "sweep of {} sampled scenarios (auto, summary only): {}/s on 1 thread, {}/s on 2 threads, speed-up {} (3 alternating runs)",
         sweep.samples,
-        one.show(0),
-        two.show(0),
-        speed_up.show(2)
+        one.show(0, ""),
+        two.show(0, ""),
+        speed_up.show(2, "x")
     );
     let kicks = if args.quick { 20 } else { 200 };
     let mut costs = Vec::new();
@@ -462,11 +462,11 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let cost = costs.iter().find(|c| c.ratio == cost_3d.median).copied().ok_or("no 3D cost run")?;
     let _ = writeln!(
         log,
-        "off-center 3D kick (auto) vs the same kick's 1D contact (auto): {:.1} µs vs {:.2} µs, ratio {}x \
+        "off-center 3D kick (auto) vs the same kick's 1D contact (auto): {:.1} µs vs {:.2} µs, ratio {} \
          (3 runs, each medians over {kicks} kicks of kick_3d::models::OffCenterBox, timed alternately)",
         cost.seconds_3d * 1e6,
         cost.seconds_1d * 1e6,
-        cost_3d.show(1)
+        cost_3d.show(1, "x")
     );
 
     // The shell ball's 1D cost beside the paper's law: the same sampled
@@ -482,10 +482,10 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     let (paper_law, shell) = (Spread::of(&paper_law), Spread::of(&shell));
     let _ = writeln!(
         log,
-        "shell ball, 1D (auto, 1 thread): {:.0} scenarios/s against {:.0} with the paper's law, {}x the cost",
+        "shell ball, 1D (auto, 1 thread): {:.0} scenarios/s against {:.0} with the paper's law, {} the cost",
         shell.median,
         paper_law.median,
-        shell_cost.show(2)
+        shell_cost.show(2, "x")
     );
     // Flights through `flight_many`, 1 and 2 threads alternated, medians.
     let flight_rows = if args.quick { 1_000 } else { 50_000 };
@@ -502,7 +502,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         flights_1.median, flights_2.median
     );
     let aims = aim_seconds(if args.quick { 1 } else { 5 })?.map(|t| Spread::of(&t.iter().map(|s| s * 1e3).collect::<Vec<_>>()));
-    let _ = writeln!(log, "aim solve: {} ms for the launch, {} ms through the 3D kick", aims[0].show(2), aims[1].show(2));
+    let _ = writeln!(log, "aim solve: {} ms for the launch, {} ms through the 3D kick", aims[0].show(2, ""), aims[1].show(2, ""));
     let kick_runs = kick_costs(min_time / 30.0)?;
     let kicks: [(Spread, u64); KICK_FORMS] = std::array::from_fn(|i| (Spread::of(&kick_runs[i].0), kick_runs[i].1));
     let baseline_copy = Spread::of_ratios(&kick_runs[8].0, &kick_runs[7].0);
@@ -626,6 +626,16 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     })
 }
 
+/// A relative error as the pages print it: 3 digits, and an exact 0 (a
+/// closed form taken where it is exact) as 0.
+fn error(x: f64) -> String {
+    if x == 0.0 {
+        "0".into()
+    } else {
+        format!("{x:.2e}")
+    }
+}
+
 /// The build of this binary (compiler, profile and its settings, target
 /// features, RUSTFLAGS), from kick-paper's build script.
 pub const BUILD: &str = env!("KICK_BUILD");
@@ -722,8 +732,12 @@ impl Measured<'_> {
         let mut rows = String::new();
         for p in self.points {
             rows.push_str(&format!(
-                "| {} | {:.2e} | {:.2e} | {:.2e} | {:.0} |\n",
-                p.solver, p.setting, p.max_error_closed_form, p.max_error_tight, p.evaluations_per_scenario
+                "| {} | {:.2e} | {} | {} | {:.0} |\n",
+                p.solver,
+                p.setting,
+                error(p.max_error_closed_form),
+                error(p.max_error_tight),
+                p.evaluations_per_scenario
             ));
         }
         let timing = timing
@@ -763,7 +777,7 @@ impl Measured<'_> {
              | solver | tolerance or step (s) | max error, closed forms | max error, `accurate` at {ref_tol:e} | evaluations per scenario |\n\
              | --- | --- | --- | --- | --- |\n{rows}\n\
              - `auto` at its default tolerance ({auto_tol:e}, the `series` path's `kick_compliant::series::DEFAULT_TOLERANCE`; \
-             closed forms where exact): largest error {auto_closed:.2e} against the closed forms, {auto_tight:.2e} against \
+             closed forms where exact): largest error {auto_closed} against the closed forms, {auto_tight:.2e} against \
              the tight reference (whose own floor is above); `seed-rk4` at 5 µs: {seed:.2e} \
              (step quantisation of the contact time and the missed onset jump c·V0).\n\n\
              ## Where each solver is trustworthy\n\n\
@@ -788,7 +802,7 @@ impl Measured<'_> {
             series = r.against_series,
             series_tol = precision::SERIES_CHECK_TOLERANCE,
             auto_tol = self.auto.setting,
-            auto_closed = self.auto.max_error_closed_form,
+            auto_closed = error(self.auto.max_error_closed_form),
             auto_tight = self.auto.max_error_tight,
             seed = self.seed.max_error,
             box_n = b.samples,
@@ -825,12 +839,12 @@ impl Measured<'_> {
             Some(e) => format!(
                 " At equal accuracy the ratio is another: the fixed-step method's most accurate point of the ladder, \
                  `rk4-events` at Δt = {:.2e} s (error {:.2e}), against the cheapest `auto` point at least as accurate, \
-                 tolerance {:.0e} (error {:.2e}): **{}x** (5 alternating measurements).",
+                 tolerance {:.0e} (error {:.2e}): **{}** (5 alternating measurements).",
                 e.fixed.setting,
                 e.fixed.max_error,
                 e.auto.setting,
                 e.auto.max_error,
-                e.ratio.show(0)
+                e.ratio.show(0, "x")
             ),
             None => " The ratio at equal accuracy needs the `rk4-events` ladder, which this (quick) run leaves out.".into(),
         };
@@ -868,61 +882,61 @@ impl Measured<'_> {
              Errors are against closed forms or `accurate` at 1e-14, whichever the scenario has; [solvers.md](solvers.md) \
              gives the two apart and the tight reference's own error.\n\n\
              ## Headline numbers\n\n\
-             - Cost ratio seed-rk4 / auto, each at its default: **{}x** (5 alternating measurements), at errors {:.2e} \
+             - Cost ratio seed-rk4 / auto, each at its default: **{}** (5 alternating measurements), at errors {:.2e} \
              against {:.2e}, {:.0} orders of magnitude apart: not a ratio at equal accuracy.{equal}\n\
              - Sampled sweep of {} scenarios (auto, summary only, no file): {} scenarios/s on 1 thread, \
-             {} scenarios/s on 2 threads, parallel speed-up {}x (3 alternating runs).\n\
+             {} scenarios/s on 2 threads, parallel speed-up {} (3 alternating runs).\n\
              - Off-center 3D kick against the same kick's 1D contact along its normal (both `auto`, one core, \
              medians over {} kicks of `kick_3d::models::OffCenterBox`, seed {}, timed alternately, 3 runs): \
-             **{}x**; in the median run {:.1} µs against {:.2} µs and {:.0} against {:.0} right-hand-side \
+             **{}**; in the median run {:.1} µs against {:.2} µs and {:.0} against {:.0} right-hand-side \
              evaluations per kick. The 3D path's error against its tightened reference is held to 1e-9 by \
              `crates/kick-3d/tests/model/box_accuracy.rs`.\n\
              - The shell ball (`law = shell`) in 1D, the same sampled scenarios, `auto`, one thread: {:.0} scenarios/s \
-             against {:.0} with the paper's law (medians): **{}x** the cost (3 alternating runs); both take the \
+             against {:.0} with the paper's law (medians): **{}** the cost (3 alternating runs); both take the \
              `series` path (`kick_compliant::shell_series` for the shell ball).\n\
              - Flights: {} free kicks (18°, 9 rev/s of sidespin, 22–32 m/s, `kick_flight::models::free_kick_speeds`) \
              through `flight_many` (Python's `kick.flight_many`): {} flights/s on 1 thread, **{} flights/s on 2 \
-             threads**, speed-up {}x (3 alternating runs), {:.2} µs per flight on one.\n\
+             threads**, speed-up {} (3 alternating runs), {:.2} µs per flight on one.\n\
              - The two aim solves of [flight.md](flight.md), to its target ({target}) m: {} ms for the launch \
              (`kick aim --target {target} --spin {},{},{}`), {} ms through the 3D kick \
              (`kick aim --target {target} --from kick`) (5 alternating solves each).\n\n\
              ## One off-center kick\n\n\
              Table 1, 5 cm offset, `accurate`, one core, 5 alternating measurements of each form (µs per kick, median and \
              range; right-hand-side evaluations). They run the kick's AVX2 copy where the CPU has AVX2 (the results are \
-             the baseline copy's, bit for bit); the last row runs the baseline x86-64 copy: {}x the AVX2 copy's time.\n\n\
+             the baseline copy's, bit for bit); the last row runs the baseline x86-64 copy: {} the AVX2 copy's time.\n\n\
              | kick | µs | range | evaluations |\n| --- | --- | --- | --- |\n{kick_rows}",
             machine.describe(),
             crate::provenance::utc_timestamp(std::time::SystemTime::now()),
             BUILD,
-            self.headline.show(1),
+            self.headline.show(1, "x"),
             self.seed.max_error,
             self.auto.max_error,
             (self.seed.max_error / self.auto.max_error).log10(),
             self.samples,
-            self.one.show(0),
-            self.two.show(0),
-            self.speed_up.show(2),
+            self.one.show(0, ""),
+            self.two.show(0, ""),
+            self.speed_up.show(2, "x"),
             self.cost.kicks,
             self.cost.seed,
-            self.cost_3d.show(1),
+            self.cost_3d.show(1, "x"),
             self.cost.seconds_3d * 1e6,
             self.cost.seconds_1d * 1e6,
             self.cost.evaluations_3d,
             self.cost.evaluations_1d,
             o.shell.median,
             o.paper_law.median,
-            o.shell_cost.show(2),
+            o.shell_cost.show(2, "x"),
             o.flight_rows,
-            o.flights_1.show(0),
-            o.flights_2.show(0),
-            o.flight_speed_up.show(2),
+            o.flights_1.show(0, ""),
+            o.flights_2.show(0, ""),
+            o.flight_speed_up.show(2, "x"),
             1e6 / o.flights_1.median,
-            o.aims[0].show(2),
+            o.aims[0].show(2, ""),
             short(sx),
             short(sy),
             short(sz),
-            o.aims[1].show(2),
-            o.baseline_copy.show(2),
+            o.aims[1].show(2, ""),
+            o.baseline_copy.show(2, "x"),
         );
         format!(
             "{body}\n## Sweeps into result files\n\n\
@@ -1014,6 +1028,6 @@ mod tests {
     fn a_spread_of_ratios_pairs_the_alternated_runs() {
         let s = Spread::of_ratios(&[10.0, 12.0, 9.0], &[1.0, 2.0, 1.0]);
         assert_eq!((s.median, s.low, s.high), (9.0, 6.0, 10.0));
-        assert_eq!(s.show(1), "9.0 (range 6.0–10.0)");
+        assert_eq!(s.show(1, "x"), "9.0x (range 6.0–10.0x)");
     }
 }

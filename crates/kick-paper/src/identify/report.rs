@@ -25,6 +25,17 @@ fn right_model_band(degrees_of_freedom: f64) -> f64 {
     4.0 * (2.0 / degrees_of_freedom).sqrt()
 }
 
+/// `value ± σ (p%)` of the fit's estimate `name`, or `-` when it has none.
+fn relative_uncertainty(fit: &FitData, name: &str) -> String {
+    match fit.estimate(name) {
+        Some(e) => match e.standard_uncertainty {
+            Some(u) => format!("{} ± {} ({}%)", num(e.value, 3), num(u, 2), num(100.0 * u / e.value.abs(), 2)),
+            None => "-".into(),
+        },
+        None => "-".into(),
+    }
+}
+
 /// `x` to `digits` significant digits, plain notation between 1e-3 and 1e6.
 pub fn num(x: f64, digits: usize) -> String {
     if !x.is_finite() {
@@ -410,15 +421,15 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, String> {
          the same data to be fitted with the paper's law (Eq. 20), m_f, k, c, n and t0 free. Result \
          (`{SYNTHETIC_WRONG_LAW_FIT}`): {}. A right model leaves s² within 1 ± {} (four standard deviations of \
          χ²/ν at ν = {}), as both fits above do; here s² is {:.0}x that band's top: the residuals are model \
-         error, not noise. The fit still reports small standard uncertainties (k ± {}, c ± {}), but they are \
+         error, not noise. The fit still reports small standard uncertainties (k {}, c {}), but they are \
          computed as if the law were right and say nothing about the contact: with a wrong law a parameter is \
          pinned, to a value that is not a property of the ball. Read s² before the uncertainties.\n",
         fit_summary(&wrong),
         num(right_model_band(wrong.degrees_of_freedom), 2),
         wrong.degrees_of_freedom,
         wrong_s2 / (1.0 + right_model_band(wrong.degrees_of_freedom)),
-        wrong.estimate("stiffness").and_then(|e| e.standard_uncertainty).map_or("-".into(), |u| num(u, 2)),
-        wrong.estimate("damping").and_then(|e| e.standard_uncertainty).map_or("-".into(), |u| num(u, 2)),
+        relative_uncertainty(&wrong, "stiffness"),
+        relative_uncertainty(&wrong, "damping"),
     );
     let _ = writeln!(
         w,
