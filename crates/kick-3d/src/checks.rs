@@ -14,6 +14,85 @@ use kick_core::{Scenario, Solver};
 use parry3d_f64::math::Vec3;
 
 pub use kick_core::check::CheckRow;
+use kick_core::check::{Scoring, ToleranceKind};
+
+/// How each family of rows of [`checks`] is scored (the report prints it):
+/// the scale of the error and the origin of the tolerance.
+pub const SCORING: [Scoring; 13] = [
+    Scoring {
+        prefix: "3d central frictionless = 1d",
+        scale: "|the 1D value|",
+        tolerance: "1e-9: the same contact, so the solvers' stated accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "3d zero offset",
+        scale: "V/R, the rolling spin at the foot's speed",
+        tolerance: "1e-12: zero by symmetry",
+        kind: ToleranceKind::Rounding,
+    },
+    Scoring {
+        prefix: "3d I_b omega",
+        scale: "|∫ r × F dt|",
+        tolerance: "1e-12: the same impulse, integrated as state",
+        kind: ToleranceKind::Rounding,
+    },
+    Scoring {
+        prefix: "3d passive contact",
+        scale: "the initial kinetic energy",
+        tolerance: "1e-9: the energy cannot rise, so the solver's accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "3d energy in",
+        scale: "the initial kinetic energy",
+        tolerance: "1e-9: the losses are integrated from their own power, so the solver's accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "3d mirrored offset",
+        scale: "|ω| of the kick mirrored",
+        tolerance: "1e-12: the mirror image, by symmetry",
+        kind: ToleranceKind::Rounding,
+    },
+    Scoring { prefix: "3d mu = 0:", scale: "V/R", tolerance: "1e-12: no tangential force", kind: ToleranceKind::Rounding },
+    Scoring {
+        prefix: "3d mu = 0.01 full slip",
+        scale: "R μ J_n / I_b, the expected spin",
+        tolerance: "1e-9: exact while the contact slides throughout, so the solver's accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "3d mu = 0.01: slip time",
+        scale: "the contact time",
+        tolerance: "1e-12: the same event",
+        kind: ToleranceKind::Rounding,
+    },
+    Scoring {
+        prefix: "3d mu = inf, rigid grip",
+        scale: "|the gripping limit|",
+        tolerance: "1e-9: the constraint is the limit, so the solver's accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "3d mu = inf: |spin|",
+        scale: "the closed form",
+        tolerance: "1e-9: the linear oscillator's closed form, so the solver's accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "3d mu = inf, k_t = 1e8",
+        scale: "|the gripping limit|",
+        tolerance: "1e-9: the critically damped stiff spring has stopped sliding to far below it before separation",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "3d mu = inf: slip time",
+        scale: "the contact time",
+        tolerance: "1e-12: it never slips",
+        kind: ToleranceKind::Rounding,
+    },
+];
 
 /// The solvers agree to 1e-9 relative: both integrate at rtol 1e-12 and
 /// locate events to rounding; 1e-9 is the accuracy `accurate` promises.

@@ -408,12 +408,13 @@ impl Kick3d {
             _ => base,
         };
         let m_b = base.ball_mass();
-        let shell = 2.0 / 3.0 * m_b * radius * radius;
-        let ball_inertia = check(&p::BALL_INERTIA, spec.ball_inertia.unwrap_or(shell))?;
-        // A thin shell puts all the mass at R: no sphere of radius R can exceed it.
-        if ball_inertia > shell * (1.0 + 1e-12) {
-            return Err(invalid("ball_inertia", ball_inertia, "<= 2/3 m_b R^2 (thin shell, the most a sphere can have)"));
-        }
+        let shell = kick_core::bound::thin_shell_inertia(m_b, radius);
+        let given = check(&p::BALL_INERTIA, spec.ball_inertia.unwrap_or(shell))?;
+        // A thin shell puts all the mass at R: no sphere of radius R can exceed it
+        // (the shell as printed and rounded up is the shell).
+        let ball_inertia = kick_core::bound::at_most(given, shell).ok_or_else(|| {
+            invalid("ball_inertia", given, "<= 2/3 m_b R^2 (thin shell, the most a sphere can have; up to 5e-4 above reads as it)")
+        })?;
         let outer = spec.foot_half_extents.unwrap_or(FootShape::DEFAULT_HALF_EXTENTS);
         for h in outer {
             check(&p::FOOT_HALF_EXTENTS, h)?;
@@ -787,6 +788,24 @@ mod tests {
         assert_eq!(k.ball_radius, parameters::BALL_RADIUS.default_number());
         assert_eq!(k.foot_shape, FootShape::Box { half_extents: parameters::FOOT_HALF_EXTENTS.default_vector() });
         assert_eq!(KickSpec::default().build().unwrap(), k);
+    }
+
+    /// The thin shell as a user gives it back, printed and rounded up
+    /// (`--ball-inertia 0.0034687`, issue 34), is the thin shell; 0.1% above
+    /// it is refused naming `ball_inertia`; a smaller inertia is kept.
+    #[test]
+    fn the_thin_shell_rounded_up_is_accepted_as_the_thin_shell() {
+        let shell = Kick3d::baseline().ball_inertia;
+        for given in [0.0034687, 0.003469] {
+            let k = Kick3d::new(Scenario::baseline(), &Kick3dSpec { ball_inertia: Some(given), ..Kick3dSpec::default() }).unwrap();
+            assert_eq!(k.ball_inertia, shell, "{given}");
+        }
+        let k = Kick3d::new(Scenario::baseline(), &Kick3dSpec { ball_inertia: Some(0.0034), ..Kick3dSpec::default() }).unwrap();
+        assert_eq!(k.ball_inertia, 0.0034);
+        match Kick3d::new(Scenario::baseline(), &Kick3dSpec { ball_inertia: Some(shell * 1.001), ..Kick3dSpec::default() }) {
+            Err(Kick3dError::InvalidParameter { name: "ball_inertia", .. }) => {}
+            other => panic!("{other:?}"),
+        }
     }
 
     /// A border too large for the foot is refused naming the border radius

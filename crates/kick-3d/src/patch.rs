@@ -451,15 +451,18 @@ pub fn instep(kick: &Kick3d, spec: &Kick3dSpec) -> Result<Option<Instep>, Kick3d
         None => kick.obliquity(),
     };
     let pitch = check(&p::FACE_PITCH, spec.face_pitch_deg.unwrap_or(p::FACE_PITCH.default_number()))?.to_radians();
-    let radius = check(&p::INSTEP_RADIUS, spec.instep_radius.unwrap_or(p::INSTEP_RADIUS.default_number()))?;
+    let given = check(&p::INSTEP_RADIUS, spec.instep_radius.unwrap_or(p::INSTEP_RADIUS.default_number()))?;
     let [_, hy, hz] = kick.foot_shape.core_half_extents();
-    if radius > 0.0 && radius < hy.max(hz) {
-        return Err(Kick3dError::InvalidParameter {
+    // The half-extent as printed and rounded down is the half-extent (kick_core::bound).
+    let radius = if given == 0.0 {
+        0.0
+    } else {
+        kick_core::bound::at_least(given, hy.max(hz)).ok_or(Kick3dError::InvalidParameter {
             name: "instep_radius",
-            value: radius,
-            requirement: "0 (flat) or at least the face's half-extents (a cap over the whole face)",
-        });
-    }
+            value: given,
+            requirement: "0 (flat) or at least the face's half-extents (a cap over the whole face; up to 5e-4 below reads as it)",
+        })?
+    };
     if patch && !matches!(kick.base.contact_law(), AnyLaw::Shell(_)) {
         return Err(KickError::DoesNotApply {
             given: "patch_contact",
@@ -504,6 +507,24 @@ pub fn instep(kick: &Kick3d, spec: &Kick3dSpec) -> Result<Option<Instep>, Kick3d
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A cap as wide as the face, its half-extent printed and rounded down,
+    /// is that cap; 0.1% narrower is refused naming `instep_radius`.
+    #[test]
+    fn the_face_half_extent_rounded_down_is_the_smallest_cap() {
+        let at = |r: f64| {
+            let spec = crate::Kick3dSpec { instep_radius: Some(r), face_yaw_deg: Some(0.0), ..crate::Kick3dSpec::default() };
+            crate::Kick3d::new(kick_core::Scenario::baseline(), &spec)
+        };
+        let [_, hy, hz] = crate::Kick3d::baseline().foot_shape.core_half_extents();
+        let smallest = hy.max(hz);
+        assert_eq!(at(smallest * (1.0 - 3e-4)).unwrap().instep.unwrap().radius, smallest);
+        assert_eq!(at(0.15).unwrap().instep.unwrap().radius, 0.15);
+        match at(smallest * (1.0 - 1e-3)) {
+            Err(Kick3dError::InvalidParameter { name: "instep_radius", .. }) => {}
+            other => panic!("{other:?}"),
+        }
+    }
 
     /// The element sum written out independently: every element of a polar
     /// grid (64 Gauss nodes in s = ρ/a with weight s, 64 angles) on the foot's

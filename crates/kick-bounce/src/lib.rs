@@ -325,12 +325,14 @@ impl BounceSpec {
         };
         let mass = number("ball_mass")?;
         let radius = number("ball_radius")?;
-        let shell = 2.0 / 3.0 * mass * radius * radius;
+        let shell = kick_core::bound::thin_shell_inertia(mass, radius);
         let inertia = match get("ball_inertia")? {
-            Some(i) if i > shell * (1.0 + 1e-12) => {
-                return Err(KickError::InvalidParameter { name: "ball_inertia", value: i, requirement: "at most 2/3 m R^2 (a thin shell)" })
-            }
-            Some(i) => i,
+            // The shell as printed and rounded up is the shell (kick_core::bound).
+            Some(i) => kick_core::bound::at_most(i, shell).ok_or(KickError::InvalidParameter {
+                name: "ball_inertia",
+                value: i,
+                requirement: "at most 2/3 m R^2 (a thin shell; up to 5e-4 above reads as it)",
+            })?,
             None => shell,
         };
         let choice = self.law.unwrap_or(LawChoice::Shell);

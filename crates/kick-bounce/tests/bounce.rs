@@ -262,6 +262,10 @@ fn bad_input_names_the_parameter() {
     assert_eq!(refused(&[("drop_height", n(2.0)), ("gravity", n(0.0))]), "gravity");
     assert_eq!(refused(&[("drop_height", n(0.0))]), "drop_height");
     assert_eq!(refused(&[("speed", n(5.0)), ("ball_inertia", n(1.0))]), "ball_inertia");
+    // The thin shell printed and rounded up (issue 34) is the thin shell; 0.1% above is not.
+    let shell = built(&[("speed", n(5.0))]).inertia;
+    assert_eq!(built(&[("speed", n(5.0)), ("ball_inertia", n(0.0034687))]).inertia, shell);
+    assert_eq!(refused(&[("speed", n(5.0)), ("ball_inertia", n(shell * 1.001))]), "ball_inertia");
     assert_eq!(refused(&[("speed", n(5.0)), ("ball_radius", n(0.0))]), "ball_radius");
     assert_eq!(refused(&[("speed", n(5.0)), ("friction", n(-0.1))]), "friction");
     assert_eq!(refused(&[("speed", n(5.0)), ("gas_exponent", n(2.0))]), "gas_exponent");

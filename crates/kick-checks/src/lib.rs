@@ -17,6 +17,76 @@ use kick_impulse::ImpulseModel;
 use kick_restitution::{inelastic_exit, moving_wall_ball_speed, vanishing_foot_ball_speed, RestitutionModel};
 
 pub use kick_core::check::CheckRow;
+use kick_core::check::{Scoring, ToleranceKind};
+
+/// How each family of rows below is scored (the report prints it beside the
+/// table): the scale of the error and the tolerance, each derived in the
+/// documentation of its check.
+pub const SCORING: [Scoring; 10] = [
+    Scoring {
+        prefix: "impulse model with compliant J",
+        scale: "V0, the approach speed",
+        tolerance: "1e-9: momentum balance is exact, so the `accurate` solver's accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "restitution model with compliant e",
+        scale: "V0",
+        tolerance: "1e-9: Eq. 37 with the energy route's e is exact, so the solver's accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "moving wall, m_f/m_b",
+        scale: "V0",
+        tolerance: "2|b|ε² + 1e-9, ε = m_b/m_f: twice the first term the expansion in ε drops (b from the wall \
+                    problem's e and its μ-derivatives), the factor 2 for the O(ε³) rest at ε ≤ 0.1",
+        kind: ToleranceKind::Estimate,
+    },
+    Scoring {
+        prefix: "moving wall: order",
+        scale: "1 (the observed order itself)",
+        tolerance: "2|b/a| ε₁: twice the shift of the order that the ε² term makes",
+        kind: ToleranceKind::Estimate,
+    },
+    Scoring {
+        prefix: "elastic limit",
+        scale: "1 (e itself)",
+        tolerance: "1e-9: e = 1 exactly with c = 0, so the solver's accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "inelastic limit e ~ 1/(2 zeta)",
+        scale: "1/(2ζ), the asymptote",
+        tolerance: "(1 + ln 4ζ²)/(4ζ²) + 1e-9: the leading relative correction of the overdamped closed form",
+        kind: ToleranceKind::Estimate,
+    },
+    Scoring {
+        prefix: "inelastic limit v_b+",
+        scale: "V0",
+        tolerance: "(m_f/M)/(2ζ − 1/ζ) + 1e-9: since e ≤ 1/(2ζ − 1/ζ), |v_b⁺ − V_cm|/V0 = (m_f/M) e is at most this; \
+                    error/tolerance = e (2ζ − 1/ζ) → 1 as ζ grows, so the margin is thin by construction \
+                    and the check is that the bound holds",
+        kind: ToleranceKind::Bound,
+    },
+    Scoring {
+        prefix: "inelastic limit v_f+",
+        scale: "V0",
+        tolerance: "(m_b/M)/(2ζ − 1/ζ) + 1e-9: the same bound on e, thin by construction",
+        kind: ToleranceKind::Bound,
+    },
+    Scoring {
+        prefix: "stiff limit",
+        scale: "|expected|, the closed form (n = 1)",
+        tolerance: "1e-9: the closed forms are exact for the linear law, so the solver's accuracy",
+        kind: ToleranceKind::SolverAccuracy,
+    },
+    Scoring {
+        prefix: "vanishing foot",
+        scale: "V0",
+        tolerance: "2 m_f/(m_f + m_b) + 1e-9: Eq. 38 with 0 ≤ e ≤ 1 bounds v_b⁺/V0",
+        kind: ToleranceKind::Bound,
+    },
+];
 
 /// A check that could not be computed: it fails and says why.
 fn broken(name: impl Into<String>, equation: &str, expected: f64, tolerance: f64, why: &KickError) -> CheckRow {

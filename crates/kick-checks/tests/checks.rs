@@ -101,3 +101,33 @@ fn the_seed_method_at_the_papers_step_cannot_resolve_the_stiff_limit() {
     // Its O(Δt⁴) error and step-quantised separation fail the 1e-9 checks.
     assert!(bad.iter().any(|n| n.starts_with("elastic limit")), "{bad:?}");
 }
+
+/// Every row is scored by exactly one entry of `SCORING` (its scale and the
+/// origin of its tolerance, printed by the report), and every entry scores
+/// some row.
+#[test]
+fn every_row_says_how_it_is_scored() {
+    let rows = run_all();
+    for r in &rows {
+        let matching: Vec<_> = kick_checks::SCORING.iter().filter(|s| r.name.starts_with(s.prefix)).collect();
+        assert_eq!(matching.len(), 1, "{}: {matching:?}", r.name);
+    }
+    for s in &kick_checks::SCORING {
+        assert!(rows.iter().any(|r| r.name.starts_with(s.prefix)), "no row for {}", s.prefix);
+    }
+}
+
+/// The inelastic exit speeds are held to a rigorous bound, e ≤ 1/(2ζ − 1/ζ),
+/// that the limit approaches: error/tolerance rises toward 1 with ζ and
+/// stays below it (the thin margins of the report are this, not a
+/// tolerance set after seeing the error).
+#[test]
+fn the_inelastic_bounds_are_tight_by_construction() {
+    let rows = run_all();
+    for prefix in ["inelastic limit v_b+", "inelastic limit v_f+"] {
+        let ratios: Vec<f64> =
+            rows.iter().filter(|r| r.name.starts_with(prefix)).map(|r| (r.error - 1e-9) / (r.tolerance - 1e-9)).collect();
+        assert_eq!(ratios.len(), kick_checks::INELASTIC_ZETAS.len(), "{prefix}");
+        assert!(ratios[0] > 0.9 && ratios.windows(2).all(|w| w[1] > w[0]) && ratios[ratios.len() - 1] < 1.0, "{prefix}: {ratios:?}");
+    }
+}

@@ -190,7 +190,7 @@ fn parameter_arg(p: &'static ParameterDef, requires: Option<&'static str>) -> Ar
     }
 }
 
-fn parse_law(name: &str) -> Result<LawKind, String> {
+pub fn parse_law(name: &str) -> Result<LawKind, String> {
     LawKind::from_name(name).map_err(|e| e.to_string())
 }
 

@@ -385,6 +385,10 @@ enum Fit {
         /// Time of first touch in the data, s; when non-zero the specification also fits `time_offset`
         #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
         time_offset: f64,
+        /// Also write NAME_as_LAW.toml: the same data to be fitted with this other contact law
+        /// (its parameters free), to see what a wrong law leaves in the residuals
+        #[arg(long, value_name = "LAW", value_parser = flags::parse_law)]
+        also_fit_law: Option<kick_core::LawKind>,
     },
     /// Identifiability (Section 17.8): misfit profiles of m_f, k, c, n from the exit
     /// speed alone and from noisy histories, and (k, c) misfit maps.
@@ -680,8 +684,8 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(format, &fit)?;
             fit.converged()
         }
-        Command::Fit(Fit::Synthesize { out: dir, name, seed, times, truth, time_offset }) => {
-            out.print(Format::Text, &identify::synthesize(&dir, &name, seed, times, &truth.spec(), time_offset)?)
+        Command::Fit(Fit::Synthesize { out: dir, name, seed, times, truth, time_offset, also_fit_law }) => {
+            out.print(Format::Text, &identify::synthesize(&dir, &name, seed, times, &truth.spec(), time_offset, also_fit_law)?)
         }
         Command::Fit(Fit::Profile { format, out: dir, spread, points, map_points, seed }) => {
             let settings = identify::ProfileSettings { out: dir, spread, points, map_points, seed };

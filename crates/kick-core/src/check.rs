@@ -45,3 +45,52 @@ impl CheckRow {
         }
     }
 }
+
+/// How a family of check rows is scored, said once beside the checks
+/// (`kick_checks::SCORING`, `kick_3d::checks::SCORING`) and printed by the
+/// report: what the error is divided by and where the tolerance comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct Scoring {
+    /// The rows whose name starts with this.
+    pub prefix: &'static str,
+    /// The scale: error = |actual − expected| / scale.
+    pub scale: &'static str,
+    /// The tolerance, as the code computes it.
+    pub tolerance: &'static str,
+    pub kind: ToleranceKind,
+}
+
+/// Where a tolerance comes from. Each is computed from its formula before
+/// the comparison; none is a number chosen after seeing the error.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum ToleranceKind {
+    /// A rigorous bound derived from the model: the check is that the bound
+    /// holds. Where the limit approaches the bound, error/tolerance tends
+    /// to 1 by construction.
+    Bound,
+    /// The first term an asymptotic expansion drops, with the stated factor
+    /// for the rest: an a-priori estimate, not a bound.
+    Estimate,
+    /// The solver's stated accuracy (1e-9 relative), held by its own tests:
+    /// the two sides are equal in exact arithmetic.
+    SolverAccuracy,
+    /// Floating-point rounding: the two sides are equal by construction.
+    Rounding,
+}
+
+impl ToleranceKind {
+    pub fn describe(self) -> &'static str {
+        match self {
+            ToleranceKind::Bound => "a priori: a rigorous bound",
+            ToleranceKind::Estimate => "a priori: the leading dropped term, an estimate",
+            ToleranceKind::SolverAccuracy => "a priori: the solver's stated accuracy",
+            ToleranceKind::Rounding => "a priori: rounding (equal by construction)",
+        }
+    }
+}
+
+/// The scoring of the row called `name`: the entry of `table` with the
+/// longest prefix of it.
+pub fn scoring_of<'a>(name: &str, table: &'a [Scoring]) -> Option<&'a Scoring> {
+    table.iter().filter(|s| name.starts_with(s.prefix)).max_by_key(|s| s.prefix.len())
+}

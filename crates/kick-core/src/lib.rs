@@ -5,6 +5,7 @@
 //! each is stated, with the function that implements it, in `paper/model.md`.
 
 pub mod boot;
+pub mod bound;
 pub mod check;
 pub mod dop853;
 pub mod error;

@@ -206,7 +206,30 @@ fn place_legend(
     Ok(None)
 }
 
-fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Result<(), String> {
+/// The pixel size of a panel's plotting area (inside its labels and caption) in `area`.
+fn plot_pixels<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Result<(f64, f64), String> {
+    let dims = area.dim_in_pixel();
+    let mut scratch = vec![0u8; dims.0 as usize * dims.1 as usize * 3];
+    let scratch_area = BitMapBackend::with_buffer(&mut scratch, dims).into_drawing_area();
+    let chart = chart_builder(&scratch_area, panel).build_cartesian_2d(0.0..1.0, 0.0..1.0).map_err(|e| e.to_string())?;
+    let (xs, ys) = chart.plotting_area().get_pixel_range();
+    Ok((f64::from(xs.end - xs.start), f64::from(ys.end - ys.start)))
+}
+
+/// Widen the shorter of two linear ranges so that a metre along x and along
+/// y take the same pixels on a plot `pixels` wide and high: x grows to the
+/// right (its start, e.g. the kick, stays at the left edge), y about its middle.
+pub fn equal_scale(x: (f64, f64), y: (f64, f64), pixels: (f64, f64)) -> ((f64, f64), (f64, f64)) {
+    let (per_x, per_y) = ((x.1 - x.0) / pixels.0, (y.1 - y.0) / pixels.1);
+    if per_x > per_y {
+        let (middle, half) = ((y.0 + y.1) / 2.0, per_x * pixels.1 / 2.0);
+        (x, (middle - half, middle + half))
+    } else {
+        ((x.0, x.0 + per_y * pixels.0), y)
+    }
+}
+
+fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel, equal: bool) -> Result<(), String> {
     let tx = |x: f64| if panel.log_x { x.log10() } else { x };
     let xs = panel.series.iter().flat_map(|s| s.points.iter().map(|p| tx(p.0)));
     let ys = panel.series.iter().flat_map(|s| s.points.iter().map(|p| p.1));
@@ -220,7 +243,18 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
     let (y0, mut y1) = padded(y0, y1);
     let labels: Vec<&str> = panel.series.iter().map(|s| s.label.as_str()).filter(|l| !l.is_empty()).collect();
     let mut legend_at = panel.legend.clone();
-    if labels.len() > 1 {
+    // Equal scale: the ranges follow from the data and the plot's shape, and
+    // the legend goes where it is free at them (no headroom added above).
+    let equal = equal && !panel.log_x;
+    let ((x0, x1), (y0, y_top)) = if equal { equal_scale((x0, x1), (y0, y1), plot_pixels(area, panel)?) } else { ((x0, x1), (y0, y1)) };
+    y1 = y_top;
+    if equal && labels.len() > 1 {
+        if let Some((corner, top)) = place_legend(area.dim_in_pixel(), panel, &labels, (x0, x1), (y0, y1), tx)? {
+            if top == y1 {
+                legend_at = SeriesLabelPosition::Coordinate(corner.0, corner.1);
+            }
+        }
+    } else if labels.len() > 1 {
         if let Some(((x, y), top)) = place_legend(area.dim_in_pixel(), panel, &labels, (x0, x1), (y0, y1), tx)? {
             legend_at = SeriesLabelPosition::Coordinate(x, y);
             y1 = top;
@@ -294,11 +328,12 @@ fn draw_grid<DB: DrawingBackend>(
     title: &str,
     layout: (usize, usize),
     panels: &[Panel],
+    equal_scale_panels: &[usize],
 ) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     let root = root.titled(title, (FAMILY, 26)).map_err(|e| e.to_string())?;
-    for (area, panel) in root.split_evenly(layout).iter().zip(panels) {
-        draw_panel(area, panel)?;
+    for (i, (area, panel)) in root.split_evenly(layout).iter().zip(panels).enumerate() {
+        draw_panel(area, panel, equal_scale_panels.contains(&i))?;
     }
     root.present().map_err(|e| e.to_string())
 }
@@ -311,11 +346,25 @@ fn png_backend(path: &Path) -> Result<text::TextBackend<'_>, FigureError> {
 
 /// Write `name.png` and `name.svg` of a grid of panels.
 pub fn save_grid(dir: &Path, name: &str, title: &str, layout: (usize, usize), panels: &[Panel]) -> Result<Vec<PathBuf>, FigureError> {
+    save_grid_equal_scale(dir, name, title, layout, panels, &[])
+}
+
+/// [`save_grid`], the panels numbered in `equal_scale` (linear axes, both in
+/// the same unit, e.g. a plan view in metres) drawn at equal scale: a unit
+/// along x takes as many pixels as a unit along y ([`equal_scale`]).
+pub fn save_grid_equal_scale(
+    dir: &Path,
+    name: &str,
+    title: &str,
+    layout: (usize, usize),
+    panels: &[Panel],
+    equal_scale: &[usize],
+) -> Result<Vec<PathBuf>, FigureError> {
     register_font()?;
     let png = Staged::begin(&dir.join(format!("{name}.png")))?;
     let svg = Staged::begin(&dir.join(format!("{name}.svg")))?;
-    draw_grid(png_backend(png.temporary())?.into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
-    draw_grid(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), title, layout, panels).map_err(draw_err(name))?;
+    draw_grid(png_backend(png.temporary())?.into_drawing_area(), title, layout, panels, equal_scale).map_err(draw_err(name))?;
+    draw_grid(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), title, layout, panels, equal_scale).map_err(draw_err(name))?;
     // The two forms of one figure: both or neither.
     Ok(crate::output::commit_all(vec![png, svg])?)
 }
@@ -774,5 +823,33 @@ mod tests {
     fn log_axes_keep_their_end_markers_inside() {
         let (lo, hi) = padded_log(0.5, 3.1);
         assert!(lo < 0.5 - 0.05 && hi > 3.1 + 0.05, "{lo} {hi}");
+    }
+
+    /// Equal scale: the shorter range grows until a unit takes as many pixels
+    /// along x as along y; the data's ranges stay inside; x keeps its start.
+    #[test]
+    fn equal_scale_gives_both_axes_the_same_pixels_per_unit() {
+        let pixels = (1290.0, 350.0);
+        for (x, y) in [((0.0, 28.0), (-4.0, 4.0)), ((0.0, 28.0), (-15.0, 4.0)), ((-1.0, 30.0), (-0.5, 0.5))] {
+            let ((x0, x1), (y0, y1)) = equal_scale(x, y, pixels);
+            let (per_x, per_y) = ((x1 - x0) / pixels.0, (y1 - y0) / pixels.1);
+            assert!((per_x / per_y - 1.0).abs() < 1e-12, "{x:?} {y:?}: {per_x} vs {per_y}");
+            assert!(x0 == x.0 && x1 >= x.1 && y0 <= y.0 && y1 >= y.1);
+            assert!(x1 == x.1 || (y0, y1) == y, "only one range grows");
+        }
+    }
+
+    /// The plan views' panel shape, measured on the panel's own layout.
+    #[test]
+    fn the_plot_area_is_measured_inside_the_labels() {
+        let panel = Panel::new("from above", "x (m)", "y (m)", vec![]);
+        let mut buffer = vec![0u8; SIZE.0 as usize * SIZE.1 as usize * 3];
+        let area = BitMapBackend::with_buffer(&mut buffer, SIZE).into_drawing_area();
+        let halves = area.split_evenly((2, 1));
+        let (w, h) = plot_pixels(&halves[0], &panel).unwrap();
+        assert!(
+            w > 0.85 * f64::from(SIZE.0) && w < f64::from(SIZE.0) && h > 0.3 * f64::from(SIZE.1) && h < 0.5 * f64::from(SIZE.1),
+            "{w} x {h}"
+        );
     }
 }

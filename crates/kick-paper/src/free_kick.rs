@@ -22,7 +22,7 @@
 //! the trajectories of [`TRAJECTORY_OFFSETS`] × [`TRAJECTORY_FRICTIONS`] as
 //! `solvers/goal/histories/<row>` ([`TRAJECTORY_COLUMNS`], uniform in time).
 
-use crate::figures::{color, save_grid, FigureError, Panel, Series};
+use crate::figures::{color, save_grid, save_grid_equal_scale, FigureError, Panel, Series};
 use crate::h5::{write_grid, write_str_attr, Column, H5Error, SweepData};
 use crate::provenance::Provenance;
 use crate::run::{create_table, fill_table};
@@ -160,7 +160,7 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     side.push(Series::line("", GREY, &[WALL_DISTANCE, WALL_DISTANCE], &[0.0, WALL_HEIGHT]));
     side.push(Series::line("", RGBColor(0, 0, 0), &[GOAL_DISTANCE, GOAL_DISTANCE, GOAL_DISTANCE + 1.0], &[0.0, GOAL_HEIGHT, GOAL_HEIGHT]));
     let mut top_panel = Panel::new(
-        &format!("from above (wall at {WALL_DISTANCE} m, goal {GOAL_WIDTH} m wide at {GOAL_DISTANCE} m; dashed: μ = ∞)"),
+        &format!("from above, equal scale (wall at {WALL_DISTANCE} m, goal {GOAL_WIDTH} m wide at {GOAL_DISTANCE} m; dashed: μ = ∞)"),
         "x along the foot's path (m)",
         "lateral y (m)",
         top,
@@ -174,12 +174,14 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
         side,
     );
     side_panel.legend = SeriesLabelPosition::UpperLeft;
-    let mut written = save_grid(
+    // The plan view at equal scale: a stretched lateral axis would exaggerate the bend.
+    let mut written = save_grid_equal_scale(
         dir,
         "flight_free_kick",
         &format!("Free kicks from the 3D kick through the flight (shown to x = {SHOWN_TO} m)"),
         (2, 1),
         &[top_panel, side_panel],
+        &[0],
     )?;
 
     // Against the lateral offset, one curve per friction.
@@ -261,9 +263,10 @@ pub const AIM_TARGET: [f64; 3] = [GOAL_DISTANCE, 2.6, 2.0];
 pub const AIM_SPIN: [f64; 3] = [0.0, 0.0, 50.0];
 
 /// The two aims of the page: the launch (speed, elevation, azimuth free,
-/// [`AIM_SPIN`] held) and the 3D kick (foot speed, e, h, heading free), to [`AIM_TARGET`].
-pub fn aims() -> Result<[kick_study::aim::AimReport; 2], String> {
-    use kick_study::aim::{aim, AimFrom, AimRequest};
+/// [`AIM_SPIN`] held) and the 3D kick (foot speed, e, h, heading free), to
+/// [`AIM_TARGET`]; `kick bench` times the same two.
+pub fn aim_requests() -> [kick_study::aim::AimRequest; 2] {
+    use kick_study::aim::{AimFrom, AimRequest};
     let launch = AimRequest {
         target: Some(AIM_TARGET),
         from: Some(AimFrom::Launch),
@@ -271,7 +274,13 @@ pub fn aims() -> Result<[kick_study::aim::AimReport; 2], String> {
         ..AimRequest::default()
     };
     let kick = AimRequest { target: Some(AIM_TARGET), from: Some(AimFrom::Kick), ..AimRequest::default() };
-    Ok([aim(&launch)?, aim(&kick)?])
+    [launch, kick]
+}
+
+/// The page's two aims ([`aim_requests`]) solved.
+pub fn aims() -> Result<[kick_study::aim::AimReport; 2], String> {
+    let [launch, kick] = aim_requests();
+    Ok([kick_study::aim::aim(&launch)?, kick_study::aim::aim(&kick)?])
 }
 
 /// The target's marker: apart from the trajectories' colours.
@@ -306,12 +315,15 @@ pub fn aim_figure(aims: &[kick_study::aim::AimReport], dir: &Path) -> Result<Vec
     let cross = |label: &str, (a, b): (f64, f64), (da, db): (f64, f64)| {
         [Series::line(label, TARGET_GREEN, &[a - da, a + da], &[b, b]), Series::line("", TARGET_GREEN, &[a, a], &[b - db, b + db])]
     };
-    top.extend(cross(&target, (tx, ty), (0.6, 0.25)));
+    top.extend(cross(&target, (tx, ty), (0.4, 0.4)));
     side.push(Series::line("", GREY, &[WALL_DISTANCE, WALL_DISTANCE], &[0.0, WALL_HEIGHT]));
     side.push(Series::line("", RGBColor(0, 0, 0), &[GOAL_DISTANCE, GOAL_DISTANCE, GOAL_DISTANCE + 1.0], &[0.0, GOAL_HEIGHT, GOAL_HEIGHT]));
     side.extend(cross(&target, (tx, tz), (0.6, 0.12)));
     let mut top_panel = Panel::new(
-        &format!("from above (wall {} m wide at {WALL_DISTANCE} m, goal {GOAL_WIDTH} m wide at {GOAL_DISTANCE} m)", 2.0 * WALL_HALF_WIDTH),
+        &format!(
+            "from above, equal scale (wall {} m wide at {WALL_DISTANCE} m, goal {GOAL_WIDTH} m wide at {GOAL_DISTANCE} m)",
+            2.0 * WALL_HALF_WIDTH
+        ),
         "x toward the goal (m)",
         "lateral y (m)",
         top,
@@ -325,5 +337,12 @@ pub fn aim_figure(aims: &[kick_study::aim::AimReport], dir: &Path) -> Result<Vec
         side,
     );
     side_panel.legend = SeriesLabelPosition::UpperLeft;
-    save_grid(dir, "flight_aim", "Aimed free kicks (kick aim): over the wall to the target under the bar", (2, 1), &[top_panel, side_panel])
+    save_grid_equal_scale(
+        dir,
+        "flight_aim",
+        "Aimed free kicks (kick aim): over the wall to the target under the bar",
+        (2, 1),
+        &[top_panel, side_panel],
+        &[0],
+    )
 }

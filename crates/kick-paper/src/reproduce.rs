@@ -1,7 +1,7 @@
 //! `kick reproduce`: every experiment, the figures, the cross-model checks and
 //! the reproduction report.
 
-use crate::identify::report::{LAWS, SYNTHETIC_FIT, SYNTHETIC_LAW_FIT, TABLE2_FIT};
+use crate::identify::report::{LAWS, SYNTHETIC_FIT, SYNTHETIC_LAW_FIT, SYNTHETIC_WRONG_LAW_FIT, TABLE2_FIT};
 use crate::links::relative;
 use crate::printable::Printable;
 use crate::report::CheckLine;
@@ -134,7 +134,15 @@ pub enum Call {
     /// `kick fit profile`.
     Profile(crate::identify::ProfileSettings),
     /// `kick fit synthesize`.
-    Synthesize { out: PathBuf, name: String, seed: u64, times: usize, truth: kick_core::ScenarioSpec, time_offset: f64 },
+    Synthesize {
+        out: PathBuf,
+        name: String,
+        seed: u64,
+        times: usize,
+        truth: kick_core::ScenarioSpec,
+        time_offset: f64,
+        other_law: Option<kick_core::LawKind>,
+    },
     /// `kick fit data SPEC --out OUT`; a fit that does not converge stops the reproduction.
     FitData { spec: PathBuf, out: PathBuf },
     /// `kick fit table2 --scenarios FILE --out OUT`.
@@ -245,11 +253,12 @@ impl Call {
                 p.map_points,
                 p.seed
             ),
-            Call::Synthesize { out, name, seed, times, truth, time_offset } => format!(
-                "kick fit synthesize --out {} --name {name} --seed {seed} --times {times}{}{}",
+            Call::Synthesize { out, name, seed, times, truth, time_offset, other_law } => format!(
+                "kick fit synthesize --out {} --name {name} --seed {seed} --times {times}{}{}{}",
                 d(out),
                 scenario_flags(truth),
-                if *time_offset != 0.0 { format!(" --time-offset {}", number(*time_offset)) } else { String::new() }
+                if *time_offset != 0.0 { format!(" --time-offset {}", number(*time_offset)) } else { String::new() },
+                other_law.map(|law| format!(" --also-fit-law {}", law.name())).unwrap_or_default()
             ),
             Call::FitData { spec, out } => format!("kick fit data {} --out {}", d(spec), d(out)),
             Call::FitTable2 { scenarios, out } => format!("kick fit table2 --scenarios {} --out {}", d(scenarios), d(out)),
@@ -314,13 +323,14 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         restitution: Some(0.66),
         ..kick_core::ScenarioSpec::default()
     };
-    let synthesize = |name: &str, seed, truth, time_offset| Call::Synthesize {
+    let synthesize = |name: &str, seed, truth, time_offset, other_law| Call::Synthesize {
         out: fits.clone(),
         name: name.into(),
         seed,
         times: 80,
         truth,
         time_offset,
+        other_law,
     };
     let calls: [Vec<Call>; 19] = [
         files.into_iter().map(|file| Call::Run { file, out: out.clone() }).collect(),
@@ -337,12 +347,20 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
             samples: 200,
         })],
         vec![Call::Profile(crate::identify::ProfileSettings { out: Some(fits.clone()), spread: 1.5, points: 9, map_points: 21, seed: 5 })],
-        // Synthetic data (the paper's law; Hunt-Crossley with a late first touch), fitted back.
-        vec![synthesize("synthetic", 1, kick_core::ScenarioSpec::default(), 0.0), synthesize(law_name, 2, hunt_crossley, 2.5e-4)],
-        [("synthetic", SYNTHETIC_FIT), (law_name, SYNTHETIC_LAW_FIT)]
-            .into_iter()
-            .map(|(spec, fit)| Call::FitData { spec: fits.join(format!("{spec}.toml")), out: fits.join(fit) })
-            .collect(),
+        // Synthetic data (the paper's law; Hunt-Crossley with a late first touch), fitted back;
+        // the Hunt-Crossley data fitted with the paper's law too (a wrong law: model error).
+        vec![
+            synthesize("synthetic", 1, kick_core::ScenarioSpec::default(), 0.0, None),
+            synthesize(law_name, 2, hunt_crossley, 2.5e-4, Some(kick_core::LawKind::PowerLaw)),
+        ],
+        [
+            ("synthetic".to_string(), SYNTHETIC_FIT),
+            (law_name.to_string(), SYNTHETIC_LAW_FIT),
+            (crate::identify::other_law_name(law_name, kick_core::LawKind::PowerLaw), SYNTHETIC_WRONG_LAW_FIT),
+        ]
+        .into_iter()
+        .map(|(spec, fit)| Call::FitData { spec: fits.join(format!("{spec}.toml")), out: fits.join(fit) })
+        .collect(),
         vec![Call::FitTable2 { scenarios: args.experiments.join("table2.toml"), out: fits.join(TABLE2_FIT) }],
         vec![Call::Bench(crate::bench::BenchSettings {
             out: args.out.join(TIMING_DIRECTORY),
@@ -458,8 +476,8 @@ impl Call {
             }
             Call::Laws(settings) => say(log, &crate::identify::laws(settings)?.text()),
             Call::Profile(settings) => say(log, &crate::identify::profile(settings)?.text()),
-            Call::Synthesize { out, name, seed, times, truth, time_offset } => {
-                say(log, &crate::identify::synthesize(out, name, *seed, *times, truth, *time_offset)?.text())
+            Call::Synthesize { out, name, seed, times, truth, time_offset, other_law } => {
+                say(log, &crate::identify::synthesize(out, name, *seed, *times, truth, *time_offset, *other_law)?.text())
             }
             Call::FitData { spec, out } => {
                 let fitted = crate::identify::data(spec, Some(out))?;

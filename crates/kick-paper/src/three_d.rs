@@ -51,8 +51,10 @@ pub fn curves(data: &SweepData) -> Vec<(String, Vec<usize>)> {
 /// ball speed, spin and the launch direction (elevation and azimuth of the
 /// launch velocity; a panel that is zero throughout is left out) against the
 /// first axis, one curve per value of the second. When the first axis is the
-/// offset, also `NAME_tradeoff`: ball speed against spin, one curve per value
-/// of the second axis (the speed–spin trade-off). Files of other shapes draw nothing.
+/// offset and a second axis gives a family of curves, also `NAME_tradeoff`:
+/// ball speed against spin, one curve per value of the second axis (the
+/// speed–spin trade-off; paper/3d.md shows the offset × friction one, whose
+/// μ = 0.5 curve is the one-axis offset file's). Files of other shapes draw nothing.
 pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     let data = read_grid_file(h5)?;
     if data.parameters.is_empty() || data.parameters.len() > 2 {
@@ -95,7 +97,7 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     let name = h5.file_stem().and_then(|s| s.to_str()).unwrap_or("3d");
     let title = hdf5::File::open(h5).ok().and_then(|f| kick_store::h5::read_str_attr(&f, "description")).unwrap_or_default();
     let mut written = save_grid(dir, name, &title, layout, &panels)?;
-    if axis.name == "offset" {
+    if axis.name == "offset" && curves.len() > 1 {
         let trade = vec![Panel::new(
             "ball speed against spin across offsets (markers: the offsets of the grid)",
             "spin |ω| (rad/s)",

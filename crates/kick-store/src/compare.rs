@@ -22,6 +22,8 @@ pub struct Difference {
 #[derive(Debug, Clone, PartialEq)]
 enum Value {
     Numbers(Vec<f64>),
+    /// Integers, read exactly (an f64 holds only 53 bits).
+    Integers(Vec<i128>),
     Strings(Vec<String>),
     /// A type the comparison does not read (compared by its description only).
     Other(String),
@@ -40,6 +42,15 @@ fn same_numbers(a: &[f64], b: &[f64]) -> Option<String> {
 fn describe(a: &Value, b: &Value) -> Option<String> {
     match (a, b) {
         (Value::Numbers(a), Value::Numbers(b)) => same_numbers(a, b),
+        (Value::Integers(a), Value::Integers(b)) if a.len() != b.len() => {
+            Some(format!("{} values committed, {} regenerated", a.len(), b.len()))
+        }
+        (Value::Integers(a), Value::Integers(b)) => {
+            let differing: Vec<usize> = (0..a.len()).filter(|&i| a[i] != b[i]).collect();
+            differing.first().map(|&i| {
+                format!("{} of {} values differ; first at index {i}: committed {}, regenerated {}", differing.len(), a.len(), a[i], b[i])
+            })
+        }
         (Value::Strings(a), Value::Strings(b)) if a.len() != b.len() => {
             Some(format!("{} strings committed, {} regenerated", a.len(), b.len()))
         }
@@ -68,9 +79,9 @@ fn read(container: &hdf5::Container) -> Value {
         Err(e) => return Value::Other(format!("unreadable type: {e}")),
     };
     let result = match &descriptor {
-        TypeDescriptor::Integer(_) | TypeDescriptor::Unsigned(_) | TypeDescriptor::Float(_) | TypeDescriptor::Boolean => {
-            container.read_raw::<f64>().map(Value::Numbers)
-        }
+        TypeDescriptor::Integer(_) => container.read_raw::<i64>().map(|v| Value::Integers(v.into_iter().map(i128::from).collect())),
+        TypeDescriptor::Unsigned(_) => container.read_raw::<u64>().map(|v| Value::Integers(v.into_iter().map(i128::from).collect())),
+        TypeDescriptor::Float(_) | TypeDescriptor::Boolean => container.read_raw::<f64>().map(Value::Numbers),
         TypeDescriptor::VarLenUnicode => {
             container.read_raw::<VarLenUnicode>().map(|v| Value::Strings(v.iter().map(|s| s.as_str().to_string()).collect()))
         }
@@ -115,6 +126,79 @@ fn entries(path: &Path) -> Result<BTreeMap<String, Value>, String> {
     let mut out = BTreeMap::new();
     walk(&file, "", &mut out).map_err(|e| format!("cannot read: {e}"))?;
     Ok(out)
+}
+
+/// Whether two HDF5 files hold the same content: the same groups, datasets
+/// and attributes, each of the same type and shape with the same values (bit
+/// for bit, NaN equal to NaN), the root's provenance of the checkout
+/// ([`PROVENANCE_ATTRIBUTES`]) left out. What cannot be read, or holds a type
+/// this module does not read, counts as different. Read one object at a time
+/// and stops at the first difference. [`crate::output::Staged::commit_unless`]
+/// keeps a result file that passes this, so a rerun at a later commit leaves
+/// a file whose numbers did not change as it was, provenance included.
+pub fn same_content(a: &Path, b: &Path) -> bool {
+    crate::h5::disable_file_locking();
+    match (hdf5::File::open(a), hdf5::File::open(b)) {
+        (Ok(a), Ok(b)) => same_group(&a, &b, true).unwrap_or(false),
+        _ => false,
+    }
+}
+
+fn same_group(a: &hdf5::Group, b: &hdf5::Group, root: bool) -> hdf5::Result<bool> {
+    if !same_attributes(a, b, root)? {
+        return Ok(false);
+    }
+    let (mut names, mut others) = (a.member_names()?, b.member_names()?);
+    names.sort();
+    others.sort();
+    if names != others {
+        return Ok(false);
+    }
+    for name in &names {
+        let same = match (a.group(name), b.group(name)) {
+            (Ok(x), Ok(y)) => same_group(&x, &y, false)?,
+            (Err(_), Err(_)) => {
+                let (x, y) = (a.dataset(name)?, b.dataset(name)?);
+                same_container(&x, &y) && same_attributes(&x, &y, false)?
+            }
+            _ => false,
+        };
+        if !same {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+fn same_attributes(a: &hdf5::Location, b: &hdf5::Location, root: bool) -> hdf5::Result<bool> {
+    let kept = |names: Vec<String>| -> Vec<String> {
+        let mut names: Vec<String> = names.into_iter().filter(|n| !(root && PROVENANCE_ATTRIBUTES.contains(&n.as_str()))).collect();
+        names.sort();
+        names
+    };
+    let names = kept(a.attr_names()?);
+    if names != kept(b.attr_names()?) {
+        return Ok(false);
+    }
+    for name in &names {
+        let (x, y) = (a.attr(name)?, b.attr(name)?);
+        if !same_container(&x, &y) {
+            return Ok(false);
+        }
+    }
+    Ok(true)
+}
+
+fn same_container(a: &hdf5::Container, b: &hdf5::Container) -> bool {
+    let kind = |c: &hdf5::Container| c.dtype().and_then(|t| t.to_descriptor()).ok().map(|d| (d, c.shape()));
+    match (kind(a), kind(b)) {
+        (Some(x), Some(y)) if x == y => {}
+        _ => return false,
+    }
+    match (read(a), read(b)) {
+        (Value::Other(_), _) | (_, Value::Other(_)) => false,
+        (x, y) => describe(&x, &y).is_none(),
+    }
 }
 
 /// `regenerated` against `committed` (both HDF5 files); `rename` maps strings
@@ -207,4 +291,97 @@ pub fn files_below(dir: &Path, skip: &[&Path]) -> Vec<PathBuf> {
     visit(dir, dir, skip, &mut out);
     out.sort();
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::h5::{read_str_attr, write_u64_attr, Column, ResultWriter};
+    use crate::provenance::Provenance;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("kick-compare-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    fn provenance(commit: &str) -> Provenance {
+        Provenance {
+            tool: "kick".into(),
+            tool_version: "0".into(),
+            git_commit: Some(commit.into()),
+            git_dirty: Some(false),
+            experiment: "e".into(),
+            experiment_file: "e.toml".into(),
+            experiment_text: "x = 1".into(),
+        }
+    }
+
+    /// A result file written at commit `commit` with `values`, and an
+    /// integer attribute `seed`.
+    fn write(path: &Path, commit: &str, values: &[f64], seed: u64) -> PathBuf {
+        let writer = ResultWriter::create(path, &provenance(commit), &crate::layouts::HISTORY).unwrap();
+        writer.column("fixed", &Column::new("v", "m"), values).unwrap();
+        write_u64_attr(writer.file(), path, "seed", seed).unwrap();
+        writer.finish().unwrap()
+    }
+
+    fn commit_of(path: &Path) -> Option<String> {
+        read_str_attr(&hdf5::File::open(path).unwrap(), "git_commit")
+    }
+
+    /// Rerun at another commit with the same numbers: the file stays as it
+    /// was, bytes and provenance; a changed number, NaN pattern or integer
+    /// beyond 2^53 rewrites it with the new provenance.
+    #[test]
+    fn a_rerun_that_changes_no_number_leaves_the_file_as_it_was() {
+        crate::h5::disable_file_locking();
+        let dir = scratch("rerun");
+        let path = dir.join("r.h5");
+        let values = [1.0, f64::NAN, -0.0];
+        write(&path, "aaaa111", &values, 1 << 53);
+        let bytes = std::fs::read(&path).unwrap();
+        write(&path, "bbbb222", &values, 1 << 53);
+        assert_eq!(std::fs::read(&path).unwrap(), bytes, "same numbers at another commit must not rewrite the file");
+        assert_eq!(commit_of(&path).as_deref(), Some("aaaa111"));
+        // One bit of the seed past what an f64 holds.
+        write(&path, "cccc333", &values, (1 << 53) + 1);
+        assert_eq!(commit_of(&path).as_deref(), Some("cccc333"));
+        // +0 against -0: a different bit pattern is a different number.
+        write(&path, "dddd444", &[1.0, f64::NAN, 0.0], (1 << 53) + 1);
+        assert_eq!(commit_of(&path).as_deref(), Some("dddd444"));
+        // One more value (another shape).
+        write(&path, "eeee555", &[1.0, f64::NAN, 0.0, 0.0], (1 << 53) + 1);
+        assert_eq!(commit_of(&path).as_deref(), Some("eeee555"));
+        let names: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names, ["r.h5"], "no temporary file left");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn same_content_leaves_out_only_the_provenance_of_the_checkout() {
+        crate::h5::disable_file_locking();
+        let dir = scratch("content");
+        let (a, b) = (dir.join("a.h5"), dir.join("b.h5"));
+        write(&a, "aaaa111", &[1.0, 2.0], 3);
+        write(&b, "bbbb222", &[1.0, 2.0], 3);
+        assert!(same_content(&a, &b) && same_content(&b, &a));
+        // Any other provenance attribute counts: the experiment's text.
+        let mut other = provenance("aaaa111");
+        other.experiment_text = "x = 2".into();
+        let writer = ResultWriter::create(&b, &other, &crate::layouts::HISTORY).unwrap();
+        writer.column("fixed", &Column::new("v", "m"), &[1.0, 2.0]).unwrap();
+        write_u64_attr(writer.file(), &b, "seed", 3).unwrap();
+        writer.finish().unwrap();
+        assert!(!same_content(&a, &b));
+        // A unit is an attribute of a dataset.
+        let writer = ResultWriter::create(&b, &provenance("aaaa111"), &crate::layouts::HISTORY).unwrap();
+        writer.column("fixed", &Column::new("v", "mm"), &[1.0, 2.0]).unwrap();
+        write_u64_attr(writer.file(), &b, "seed", 3).unwrap();
+        writer.finish().unwrap();
+        assert!(!same_content(&a, &b));
+        assert!(!same_content(&a, &dir.join("missing.h5")));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }

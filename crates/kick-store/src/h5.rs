@@ -663,10 +663,13 @@ fn create_file(path: &Path, provenance: &Provenance) -> Result<(File, Staged), H
     Ok((file, staged))
 }
 
-/// Close the temporary file of [`create_staged`] and give it its final name.
+/// Close the temporary file of [`create_staged`] and give it its final name,
+/// unless the file there already holds the same content but for the
+/// checkout's provenance ([`crate::compare::same_content`]): that file is
+/// left as it was.
 pub fn close_file(file: File, staged: Staged, path: &Path) -> Result<PathBuf, H5Error> {
     file.close().map_err(h5err(path))?;
-    Ok(staged.commit()?)
+    Ok(staged.commit_unless(crate::compare::same_content)?)
 }
 
 /// Writes a result file of one's own group layout: provenance and `layout`

@@ -291,7 +291,8 @@ pub fn markdown() -> String {
         "a vector quantity is three 1-D columns `NAME_x`, `NAME_y`, `NAME_z`;",
         &format!("a status is a `u8` of `kick_core::Status` codes ({}) with a `meaning` attribute;", crate::h5::status_meaning()),
         "the root carries the provenance: tool, tool_version, git_commit and git_dirty (absent outside a checkout), \
-         experiment, experiment_file, experiment_text;",
+         experiment, experiment_file, experiment_text; git_commit is the last commit that changed the sources when the \
+         file's content last changed: a rerun that would write the same content otherwise leaves the file as it is;",
         "no time stamps: the same run writes the same bytes; a file is written whole or not at all \
          (`kick_store::output`).",
     ] {

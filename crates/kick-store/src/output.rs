@@ -12,6 +12,10 @@
 //!   and is taken over.
 //! - Temporary files left by a killed writer of the same target are removed
 //!   once the lock is held (no live writer can own them then).
+//! - A target that already holds the content is left as it was, bytes and
+//!   time stamps ([`Staged::commit_unless`]; by bytes, or for HDF5 result
+//!   files by content without the checkout's provenance): a rerun that
+//!   changes no number rewrites no file.
 //! - [`install_signal_cleanup`] makes SIGINT, SIGTERM and SIGHUP remove this
 //!   process's temporary and lock files before it exits (130, 143, 129).
 
@@ -419,8 +423,23 @@ impl Staged {
         &self.target
     }
 
-    /// Flush the temporary file to disk and rename it onto the target.
-    pub fn commit(mut self) -> Result<PathBuf, OutputError> {
+    /// Flush the temporary file to disk and rename it onto the target,
+    /// unless the target already holds the same bytes ([`same_bytes`]): then
+    /// it is left as it was and the temporary file removed.
+    pub fn commit(self) -> Result<PathBuf, OutputError> {
+        self.commit_unless(same_bytes)
+    }
+
+    /// [`Staged::commit`], unless `same(target, temporary)` says the target
+    /// (an existing regular file) already holds this content: then the
+    /// target is left as it was, its bytes and time stamps, and the
+    /// temporary file removed. A rerun that changes nothing rewrites nothing
+    /// (HDF5 result files pass [`crate::compare::same_content`], which leaves
+    /// out the provenance of the checkout).
+    pub fn commit_unless(mut self, same: impl FnOnce(&Path, &Path) -> bool) -> Result<PathBuf, OutputError> {
+        if std::fs::symlink_metadata(&self.target).is_ok_and(|m| m.is_file()) && same(&self.target, &self.temporary) {
+            return Ok(self.target.clone());
+        }
         File::open(&self.temporary).and_then(|f| f.sync_all()).map_err(io(&self.temporary))?;
         {
             // Under the registry's lock: a signal sees the rename done or not begun.
@@ -455,6 +474,9 @@ impl Drop for Staged {
 /// one fails. A signal sees all the renames or none (they run under the
 /// registry's lock); only a SIGKILL between them could split the set.
 pub fn commit_all(mut files: Vec<Staged>) -> Result<Vec<PathBuf>, OutputError> {
+    let targets: Vec<PathBuf> = files.iter().map(|s| s.target.clone()).collect();
+    // A target that already holds its new bytes is left as it was (a clean rerun; the dropped temporary goes).
+    files.retain(|s| !(std::fs::symlink_metadata(&s.target).is_ok_and(|m| m.is_file()) && same_bytes(&s.target, &s.temporary)));
     for s in &files {
         File::open(&s.temporary).and_then(|f| f.sync_all()).map_err(io(&s.target))?;
     }
@@ -505,7 +527,7 @@ pub fn commit_all(mut files: Vec<Staged>) -> Result<Vec<PathBuf>, OutputError> {
     for dir in files.iter().filter_map(|s| s.target.parent()).filter(|d| !d.as_os_str().is_empty()) {
         let _ = File::open(dir).and_then(|d| d.sync_all());
     }
-    Ok(files.iter().map(|s| s.target.clone()).collect())
+    Ok(targets)
 }
 
 /// Write each `(target, bytes)` as the whole of its target, all or none
@@ -518,6 +540,27 @@ pub fn write_all(files: &[(&Path, &[u8])]) -> Result<Vec<PathBuf>, OutputError> 
         staged.push(s);
     }
     commit_all(staged)
+}
+
+/// Whether two files hold the same bytes (false when either cannot be read).
+pub fn same_bytes(a: &Path, b: &Path) -> bool {
+    let (Ok(ma), Ok(mb)) = (std::fs::metadata(a), std::fs::metadata(b)) else { return false };
+    if ma.len() != mb.len() {
+        return false;
+    }
+    let (Ok(fa), Ok(fb)) = (File::open(a), File::open(b)) else { return false };
+    let (mut fa, mut fb) = (std::io::BufReader::new(fa), std::io::BufReader::new(fb));
+    let (mut ba, mut bb) = (vec![0u8; 1 << 16], vec![0u8; 1 << 16]);
+    loop {
+        let n = match fa.read(&mut ba) {
+            Ok(0) => return fb.read(&mut bb[..1]).is_ok_and(|m| m == 0),
+            Ok(n) => n,
+            Err(_) => return false,
+        };
+        if fb.read_exact(&mut bb[..n]).is_err() || ba[..n] != bb[..n] {
+            return false;
+        }
+    }
 }
 
 /// Temporary files of this target whose writer is gone (we hold the lock).
@@ -607,6 +650,57 @@ mod tests {
         std::fs::write(dir.join("unrelated.999999-0.tmp.h5"), b"keep").unwrap();
         write(&target, b"whole").unwrap();
         assert_eq!(names(&dir), ["s.h5", "unrelated.999999-0.tmp.h5"]);
+    }
+
+    /// A write of the bytes a target already holds leaves it as it was (the
+    /// same inode, no temporary file left); other bytes replace it; a
+    /// predicate that calls two files the same keeps the old one.
+    #[cfg(unix)]
+    #[test]
+    fn an_unchanged_file_is_not_rewritten() {
+        use std::os::unix::fs::MetadataExt;
+        let dir = scratch("unchanged");
+        let target = dir.join("page.md");
+        let inode = |p: &Path| std::fs::metadata(p).unwrap().ino();
+        write(&target, b"same").unwrap();
+        let first = inode(&target);
+        write(&target, b"same").unwrap();
+        assert_eq!(inode(&target), first, "identical bytes must not be written again");
+        assert_eq!(names(&dir), ["page.md"]);
+        // Same length, one byte different.
+        write(&target, b"sane").unwrap();
+        assert_ne!(inode(&target), first);
+        assert_eq!(std::fs::read(&target).unwrap(), b"sane");
+        let second = inode(&target);
+        let staged = Staged::begin(&target).unwrap();
+        std::fs::write(staged.temporary(), b"other content").unwrap();
+        staged.commit_unless(|old, new| old == target.as_path() && new.to_string_lossy().contains(".tmp")).unwrap();
+        assert_eq!((inode(&target), std::fs::read(&target).unwrap()), (second, b"sane".to_vec()));
+        assert_eq!(names(&dir), ["page.md"]);
+        // No target yet: the predicate is not asked.
+        let fresh = dir.join("fresh.md");
+        let staged = Staged::begin(&fresh).unwrap();
+        std::fs::write(staged.temporary(), b"new").unwrap();
+        staged.commit_unless(|_, _| true).unwrap();
+        assert_eq!(std::fs::read(&fresh).unwrap(), b"new");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn same_bytes_compares_every_byte() {
+        let dir = scratch("same-bytes");
+        let (a, b) = (dir.join("a"), dir.join("b"));
+        let mut long = vec![7u8; 200_000];
+        std::fs::write(&a, &long).unwrap();
+        std::fs::write(&b, &long).unwrap();
+        assert!(same_bytes(&a, &b));
+        long[150_000] = 8;
+        std::fs::write(&b, &long).unwrap();
+        assert!(!same_bytes(&a, &b));
+        std::fs::write(&b, &long[..199_999]).unwrap();
+        assert!(!same_bytes(&a, &b));
+        assert!(!same_bytes(&a, &dir.join("missing")));
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     /// Another user's planted link at `NAME.h5.lock` (to a file, dangling, or

@@ -8,6 +8,18 @@
 //! after that commit writes the same bytes. `kick reproduce --check` ignores
 //! these two attributes ([`PROVENANCE_ATTRIBUTES`]): they describe the
 //! checkout, not the numbers.
+//!
+//! Clean reruns: a result file whose content (every dataset and attribute
+//! but these two) the run would write again unchanged is not rewritten
+//! ([`crate::compare::same_content`], [`crate::output::Staged::commit_unless`]).
+//! So the two attributes name the sources of the run that last *changed* the
+//! file: a later commit that changes no number (a comment, another model, a
+//! formatting pass) leaves every file as committed, and a fresh clone's
+//! `kick reproduce` leaves `git status` clean but for the timing outputs.
+//! That keeps the record honest: the sources named did produce exactly
+//! these numbers, and `kick reproduce --check` confirms the current sources
+//! produce them too. Recording a hash of the sources instead would change
+//! with every unrelated commit, which is what made every file differ.
 
 use std::time::{SystemTime, UNIX_EPOCH};
 

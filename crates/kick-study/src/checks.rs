@@ -20,6 +20,11 @@ impl CheckTable {
     }
 }
 
+/// How every family of rows is scored: kick-checks' and the 3D model's.
+pub fn scoring() -> Vec<kick_core::check::Scoring> {
+    kick_checks::SCORING.iter().chain(&kick_3d::checks::SCORING).copied().collect()
+}
+
 /// Run every check: kick-checks' and the 3D model's, in the same row shape.
 pub fn run_all() -> CheckTable {
     let mut rows = kick_checks::run_all();

@@ -35,6 +35,23 @@ pub fn box_errors(kicks: u64) -> Result<[f64; 8], StudyError> {
     Ok(worst)
 }
 
+/// The reference's own error over the first `kicks` kicks of the box,
+/// estimated by tightening it tenfold: the full-state path at rtol 1e-13
+/// (`kick_3d::precision::reference`) against itself at 1e-14, the largest
+/// relative difference over the observables (Errors3d).
+pub fn reference_error(kicks: u64) -> Result<f64, StudyError> {
+    let sample = kick_3d::models::OffCenterBox::new(kick_3d::models::BENCH_SEED);
+    let reference = kick_3d::precision::reference();
+    let tighter = kick_3d::FullState3d::new(reference.relative_tolerance / 10.0, reference.absolute_tolerance / 10.0)?;
+    let mut worst = 0.0f64;
+    for i in 0..kicks {
+        let kick = sample.kick(i)?;
+        let e = kick_3d::precision::Errors3d::of(&kick, &reference.solve(&kick)?, &tighter.solve(&kick)?);
+        worst = worst.max(e.max());
+    }
+    Ok(worst)
+}
+
 /// Relative gap between the accurate 3D path on a central frictionless
 /// kick and the 1D accurate solver on its scenario (exit speed).
 pub fn central_gap() -> Result<f64, StudyError> {

@@ -19,3 +19,17 @@ fn every_check_passes() {
     let failed: Vec<_> = rows.iter().filter(|r| !r.passed).map(|r| r.name.clone()).collect();
     assert!(failed.is_empty(), "failed: {failed:?}");
 }
+
+/// Every row is scored by exactly one entry of `SCORING` (scale, tolerance
+/// and its origin, printed by the report), and every entry scores a row.
+#[test]
+fn every_row_says_how_it_is_scored() {
+    let rows = kick_3d::checks::checks();
+    for r in &rows {
+        let matching: Vec<_> = kick_3d::checks::SCORING.iter().filter(|s| r.name.starts_with(s.prefix)).collect();
+        assert_eq!(matching.len(), 1, "{}: {matching:?}", r.name);
+    }
+    for s in &kick_3d::checks::SCORING {
+        assert!(rows.iter().any(|r| r.name.starts_with(s.prefix)), "no row for {}", s.prefix);
+    }
+}

@@ -51,6 +51,11 @@ fn reproduce_writes_results_figures_and_report() {
         assert!(text.contains(&format!("figures/figure{n}.png)")), "figure {n} not embedded");
     }
     assert!(text.contains("## Cross-model checks") && text.contains("| Check | Equation |"));
+    // Table 2's fitted column said (issue 34.1); every check family scored and its tolerance's origin given (34.9);
+    // Figures 3 and 4 captioned from the onset jump and the dip (34.2).
+    assert!(text.contains("agrees because it was fitted") && text.contains("v_b⁺ and the ratio by construction"), "{text}");
+    assert!(text.contains("| rows | error divided by | tolerance | kind |") && text.contains("a priori: a rigorous bound"), "{text}");
+    assert!(text.contains("not an elastic peak but the damping's onset jump") && text.contains("the peak force is not monotone"), "{text}");
     // What depends on the clock is in results/timing and paper/timing.md only.
     assert!(results.join("timing/work_precision.h5").exists() && !results.join("work_precision.h5").exists());
     let timing = std::fs::read_to_string(dir.join("paper/timing.md")).unwrap();
@@ -62,9 +67,34 @@ fn reproduce_writes_results_figures_and_report() {
     ] {
         assert!(timing.contains("## Sweeps into result files") && timing.contains(command), "{command}: {timing}");
     }
+    // The machine and the build named; every ratio with its range; the aims of flight.md.
+    for needle in ["Build: rustc ", "; profile ", "clock ", "x (range ", "--target 25,2.6,2 --spin 0,0,50", "--target 25,2.6,2 --from kick"]
+    {
+        assert!(timing.contains(needle), "{needle}: {timing}");
+    }
     let solvers = std::fs::read_to_string(dir.join("paper/solvers.md")).unwrap();
     assert!(!solvers.contains("µs per scenario") && !solvers.contains("scenarios/s"), "{solvers}");
     assert!(solvers.contains("evaluations per scenario") && solvers.contains("(timing.md)"), "{solvers}");
+    // Each error beside its reference and the reference's own error; no unnamed "measured ~".
+    assert!(solvers.contains("max error, closed forms") && solvers.contains("That reference is within"), "{solvers}");
+    assert!(!solvers.contains("measured ~") && solvers.contains("`auto` at its default tolerance (3e-11"), "{solvers}");
+    // Every figure the reproduction draws is shown on one of its pages, and
+    // every figure a page shows was drawn.
+    let mut shown = Vec::new();
+    for page in kick_store::compare::files_below(&dir.join("paper"), &[]) {
+        let page = dir.join("paper").join(page);
+        let text = std::fs::read_to_string(&page).unwrap();
+        for link in text.split("](").skip(1).filter_map(|rest| rest.split_once(')')).map(|(t, _)| t).filter(|t| t.ends_with(".png")) {
+            let target = page.parent().unwrap().join(link);
+            assert!(target.exists(), "{} shows {link}, which was not drawn", page.display());
+            shown.push(target.canonicalize().unwrap());
+        }
+    }
+    let drawn: Vec<PathBuf> =
+        kick_store::compare::files_below(&results, &[]).into_iter().filter(|f| f.extension().is_some_and(|e| e == "png")).collect();
+    assert!(drawn.len() >= 20, "{drawn:?}");
+    let orphans: Vec<&PathBuf> = drawn.iter().filter(|f| !shown.contains(&results.join(f).canonicalize().unwrap())).collect();
+    assert!(orphans.is_empty(), "drawn but shown on no page: {orphans:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -127,7 +157,7 @@ fn reproduce_steps_write_what_their_command_lines_write() {
     let names: Vec<&str> = steps.iter().map(|(name, _)| name.as_str()).collect();
     assert_eq!(names, ["force-history", "synthesize", "fit"], "in the order they run");
     let commands: Vec<&String> = steps.iter().flat_map(|(_, c)| c).collect();
-    assert_eq!(commands.len(), 5, "{commands:?}");
+    assert_eq!(commands.len(), 6, "{commands:?}");
     let out = kick(&[&["reproduce"], &places[..], &only[..]].concat());
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let by_reproduce = contents(&results);

@@ -8,5 +8,5 @@ pub mod fit;
 pub mod laws;
 pub mod report;
 
-pub use fit::{data, profile, synthesize, table2, DataFit, ProfileReport, ProfileSettings, Synthesized, Table2Fits};
+pub use fit::{data, other_law_name, profile, synthesize, table2, DataFit, ProfileReport, ProfileSettings, Synthesized, Table2Fits};
 pub use laws::{laws, LawsReport, LawsSettings};

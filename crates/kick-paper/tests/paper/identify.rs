@@ -92,7 +92,7 @@ fn fit_and_profile_h5_equal_independent_computations() {
     // `kick fit synthesize --law flores --restitution 0.7 --seed 9 --times 40 --time-offset 1e-4`,
     // `kick fit data s.toml --out s_fit.h5`, `kick fit profile --points 3 --map-points 3 --spread 1.2` (seed 5).
     let flores = kick_core::ScenarioSpec::default().with_law_keys(Some(kick_core::LawKind::Flores), Some(0.7)).unwrap();
-    kick_paper::identify::synthesize(&dir, "s", 9, 40, &flores, 1e-4).unwrap();
+    kick_paper::identify::synthesize(&dir, "s", 9, 40, &flores, 1e-4, None).unwrap();
     kick_paper::identify::data(&dir.join("s.toml"), Some(&dir.join("s_fit.h5"))).unwrap();
     let settings = ProfileSettings { out: Some(dir.clone()), spread: 1.2, points: 3, map_points: 3, seed: 5 };
     kick_paper::identify::profile(&settings).unwrap();
@@ -157,6 +157,36 @@ fn fit_and_profile_h5_equal_independent_computations() {
         }
     }
     assert!(dir.join("identifiability.png").exists() && !dir.join("identifiability.json").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `kick fit synthesize --also-fit-law power-law` on Hunt–Crossley data
+/// (as `kick reproduce` runs it for paper/identification.md): the data's own
+/// law fits them with s² inside 1 ± 4√(2/ν), the paper's law leaves s² > 10
+/// (model error), and the second specification lists no true value for the
+/// paper law's parameters (they have none), only t0; its own law is refused.
+#[test]
+fn a_wrong_law_leaves_model_error_in_s2() {
+    use kick_core::LawKind;
+    let dir = scratch("wrong-law");
+    let hunt_crossley = kick_core::ScenarioSpec::default().with_law_keys(Some(LawKind::HuntCrossleyExact), Some(0.66)).unwrap();
+    let written = kick_paper::identify::synthesize(&dir, "hc", 2, 80, &hunt_crossley, 2.5e-4, Some(LawKind::PowerLaw)).unwrap();
+    let other = written.other_law_spec.clone().unwrap();
+    assert_eq!(other, dir.join("hc_as_power_law.toml"));
+    let text = std::fs::read_to_string(&other).unwrap();
+    let truth = text.split("[truth]").nth(1).unwrap();
+    assert!(truth.contains("time_offset = 2.5e-4") && !truth.contains("stiffness") && !truth.contains("restitution"), "{text}");
+    assert!(!text.contains("law = ") && text.contains("\"damping\"") && text.contains("file = \"hc.csv\""), "{text}");
+    let right = kick_paper::identify::data(&written.spec, None).unwrap().report;
+    let wrong = kick_paper::identify::data(&other, None).unwrap().report;
+    assert!(right.converged && wrong.converged);
+    let band = |nu: f64| 4.0 * (2.0 / nu).sqrt();
+    let s2 = right.residual_variance.unwrap();
+    assert!((s2 - 1.0).abs() < band(right.degrees_of_freedom as f64), "right law: s² = {s2}");
+    let s2 = wrong.residual_variance.unwrap();
+    assert!(s2 > 10.0, "the paper's law on Hunt–Crossley data: s² = {s2}");
+    let refused = kick_paper::identify::synthesize(&dir, "hc2", 2, 80, &hunt_crossley, 0.0, Some(LawKind::HuntCrossleyExact));
+    assert!(refused.unwrap_err().contains("--also-fit-law hunt-crossley-exact"));
     std::fs::remove_dir_all(&dir).ok();
 }
 

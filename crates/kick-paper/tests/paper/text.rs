@@ -78,7 +78,7 @@ fn leg_laws_and_table2_print_values_in_the_one_form() {
 #[test]
 fn a_fit_prints_a_table_with_units() {
     let dir = crate::scratch("text");
-    let written = kick_paper::identify::synthesize(&dir, "s", 3, 40, &Default::default(), 0.0).unwrap();
+    let written = kick_paper::identify::synthesize(&dir, "s", 3, 40, &Default::default(), 0.0, None).unwrap();
     let fit = kick_paper::identify::data(&written.spec, None).unwrap();
     let text = fit.text();
     assert_one_form(&text);
