@@ -131,7 +131,7 @@ def test_to_zarr_writes_on_the_workers_the_local_result(client, tmp_path):
     for name in ("foot_mass", "stiffness", "drive_force"):
         np.testing.assert_array_equal(read[name].values, expected[name].values)
         assert read[name].attrs["units"] == expected[name].attrs["units"]
-    with pytest.raises(Exception, match="exist"):
+    with pytest.raises(FileExistsError, match="sweep.zarr: exists"):
         kick.dask.to_zarr(client, store, "simulate_many", **args)  # never over an existing store
 
 

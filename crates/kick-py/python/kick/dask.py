@@ -83,7 +83,7 @@ def _check_options(function, arrays):
     scalar = next(p["name"] for p in kick.keywords(function) if p["shape"] != "vector3")
     declared = {p["name"] for p in kick.keywords(function)}
     options = {k: v for k, v in arrays.items() if k not in declared}
-    getattr(kick, function)(**options, **{scalar: np.empty(0)})
+    getattr(kick, function)(**{"threads": 1, **options}, **{scalar: np.empty(0)})
 
 
 def _rows(given, shape, start, stop):
@@ -197,8 +197,12 @@ def to_zarr(client, store, function: str, chunks: int | None = None, **arrays) -
     import dask.array as da
     import xarray as xr
 
+    import os
+
     if chunks is None:
         chunks = _DEFAULT_CHUNKS.get(function, 1_000)
+    if os.path.exists(store):
+        raise FileExistsError(f"{store}: exists; to_zarr writes a new store, never into an old one")
     chunks = _kick.whole_number("chunks", chunks, 1)
     _check_options(function, arrays)
     given, options, shape = _split(function, arrays)
@@ -223,7 +227,7 @@ def to_zarr(client, store, function: str, chunks: int | None = None, **arrays) -
         data = da.zeros(shape + trailing, dtype=var.dtype, chunks=block + trailing)
         template[key] = (layout[key], data, var.attrs)
     for name in _trailing_coords(sample):
-        template.coords[name] = sample.coords[name]
+        template.coords[name] = (name, sample[name].values)
     template.to_zarr(store, compute=False, mode="w-")
     full = {name: np.broadcast_to(a, shape + ((3,) if vector else ())) for name, (a, vector) in given.items()}
     futures = []
