@@ -289,6 +289,9 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("HISTORY_COLUMNS", HISTORY_COLUMNS.iter().map(|(n, u)| (*n, *u)).collect::<Vec<_>>())?;
     m.add("HISTORY_COLUMNS_3D", kick_3d::HISTORY_COLUMNS_3D.iter().map(|(n, u)| (*n, *u)).collect::<Vec<_>>())?;
     m.add("OBSERVABLES", kick_core::OBSERVABLES.iter().map(|(n, u)| (*n, *u)).collect::<Vec<_>>())?;
+    // The outputs' units, for `kick.to_xarray`.
+    m.add("OBSERVABLES_3D", kick_3d::OBSERVABLES_3D.iter().map(|(n, u)| (*n, *u)).collect::<Vec<_>>())?;
+    m.add("FLIGHT_COLUMNS", kick_flight::OUTCOME_COLUMNS.to_vec())?;
     m.add("CHANNELS", kick_identify::Channel::ALL.map(|c| (c.name(), c.unit())).to_vec())?;
     m.add("SOLVERS", SolverChoice::NAMES.to_vec())?;
     m.add("SOLVERS_3D", kick_3d::Solver3d::NAMES.to_vec())?;

@@ -316,15 +316,21 @@ fn input_array<'py>(parameter: &'static ParameterDef, value: &Bound<'py, PyAny>)
 }
 
 /// `input_array` for `kick.dask`, which splits the rows on the client: the
-/// keyword `name` of `function` (`simulate_many` or `simulate3d_many`).
+/// keyword `name` of `function` (`simulate_many`, `simulate3d_many`,
+/// `flight_many` or `bounce_many`).
 #[pyfunction]
 pub fn many_input<'py>(function: &str, name: &str, value: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let levels = match function {
-        "simulate_many" => ScenarioSpec::LEVELS,
-        "simulate3d_many" => KickSpec::LEVELS,
+    let parameter = match function {
+        "simulate_many" => parameters::find_at(ScenarioSpec::LEVELS, name).map_err(value_error)?,
+        "simulate3d_many" => parameters::find_at(KickSpec::LEVELS, name).map_err(value_error)?,
+        "flight_many" => kick_flight::FLIGHT_PARAMETERS
+            .iter()
+            .find(|p| p.name == name)
+            .ok_or_else(|| value_error(format!("unknown flight parameter `{name}`")))?,
+        "bounce_many" => kick_bounce::parameter(name).map_err(value_error)?,
         other => return Err(value_error(format!("no function `{other}` takes arrays"))),
     };
-    input_array(parameters::find_at(levels, name).map_err(value_error)?, value)
+    input_array(parameter, value)
 }
 
 /// The whole call: inputs from the keywords, outputs allocated, rows solved

@@ -72,3 +72,79 @@ def test_values_are_checked_as_the_local_call_checks_them(client):
     # Switches travel as bools.
     local = kick.simulate3d_many(offset=0.03, gravity=np.array([False, True]))
     assert_same(kick.dask.simulate3d_many(client, chunks=1, offset=0.03, gravity=np.array([False, True])), local)
+
+
+def test_flights_equal_the_local_call(client):
+    speed = np.linspace(15.0, 32.0, 7)
+    spin = np.array([[0.0, 0.0, 60.0], [0.0, -40.0, 0.0]])[:, None, :]
+    local = kick.flight_many(speed=speed, spin=spin, distance=20.0, threads=1)
+    spread = kick.dask.flight_many(client, chunks=4, speed=speed, spin=spin, distance=20.0)
+    assert_same(spread, local)
+    assert spread["landing_point"].shape == (2, 7, 2)
+
+
+def test_each_task_solves_on_one_thread_by_default(monkeypatch):
+    """A task that left `threads` unset would start rayon's pool, one thread per
+    core, in every task of every worker: the default is one thread per task."""
+    seen = []
+    real = kick._kick.simulate_many
+
+    def spy(**arrays):
+        seen.append(arrays.get("threads"))
+        return real(**arrays)
+
+    monkeypatch.setattr(kick._kick, "simulate_many", spy)
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=False, dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as c:
+            kick.dask.simulate_many(c, chunks=2, foot_mass=[1.0, 2.0, 3.0, 4.0, 5.0])
+            tasks = list(seen)
+            seen.clear()
+            kick.dask.simulate_many(c, chunks=2, foot_mass=[1.0, 2.0, 3.0], threads=2)
+            assert seen and set(seen) == {2}
+    assert len(tasks) >= 3 and set(tasks) == {1}, tasks
+
+
+def test_to_zarr_writes_on_the_workers_the_local_result(client, tmp_path):
+    xr = pytest.importorskip("xarray")
+    pytest.importorskip("zarr")
+    rng = np.random.default_rng(3)
+    mass = rng.uniform(0.5, 15.0, size=(9, 1))
+    stiffness = np.geomspace(1e4, 1e7, 7)
+    drive = np.where(rng.uniform(size=7) < 0.4, 5e4, 0.0)  # some rows trapped
+    args = dict(foot_mass=mass, stiffness=stiffness, drive_force=drive)
+    local = kick.simulate_many(**args, threads=1)
+    store = str(tmp_path / "sweep.zarr")
+    summaries = kick.dask.to_zarr(client, store, "simulate_many", chunks=20, **args)
+    # Blocks of whole rows of the last axis: 20 rows -> 2 x 7, five tasks for 9 x 7.
+    assert [s["region"] for s in summaries][:2] == [((0, 2), (0, 7)), ((2, 4), (0, 7))]
+    assert len(summaries) == 5 and sum(s["rows"] for s in summaries) == 63
+    assert {s["threads"] for s in summaries} == {1}
+    failures = sorted(f for s in summaries for f in s["failures"])
+    assert failures == sorted(zip(local["failure_index"].tolist(), local["failure_message"]))
+    assert len(failures) > 0
+    read = xr.open_zarr(store).load()
+    expected = kick.to_xarray(local).drop_vars("failure_message")
+    for key in expected.data_vars:
+        assert read[key].dtype == expected[key].dtype and read[key].dims == expected[key].dims, key
+        np.testing.assert_array_equal(read[key].values, expected[key].values, err_msg=key)  # bit for bit, NaN where NaN
+        assert read[key].attrs["units"] == expected[key].attrs["units"], key
+    for name in ("foot_mass", "stiffness", "drive_force"):
+        np.testing.assert_array_equal(read[name].values, expected[name].values)
+        assert read[name].attrs["units"] == expected[name].attrs["units"]
+    with pytest.raises(FileExistsError, match="sweep.zarr: exists"):
+        kick.dask.to_zarr(client, store, "simulate_many", **args)  # never over an existing store
+
+
+def test_to_zarr_3d_vectors(client, tmp_path):
+    xr = pytest.importorskip("xarray")
+    pytest.importorskip("zarr")
+    offset = np.linspace(0.0, 0.06, 5)
+    extents = np.array([[0.03, 0.12, 0.05], [0.03, 0.10, 0.04]])[:, None, :]
+    local = kick.simulate3d_many(offset=offset, foot_half_extents=extents, friction=0.5, threads=1)
+    store = str(tmp_path / "kicks.zarr")
+    summaries = kick.dask.to_zarr(client, store, "simulate3d_many", chunks=3, offset=offset, foot_half_extents=extents, friction=0.5)
+    assert len(summaries) == 4  # blocks of 1 x 3 over 2 x 5
+    read = xr.open_zarr(store).load()
+    assert read["spin"].dims == ("dim_0", "offset", "xyz")
+    np.testing.assert_array_equal(read["spin"].values, local["spin"])
+    np.testing.assert_array_equal(read["foot_half_extents"].values, extents[:, 0, :])

@@ -82,6 +82,70 @@ fn the_slurm_example_run_locally_equals_an_unsharded_run() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// submit.sh with a stand-in `sbatch` on PATH (it records its arguments and
+/// the `KICK` it was given): the array of SHARDS tasks, the merge queued
+/// after it, and KICK exported as the absolute path of the binary checked at
+/// submit time. A `KICK` that is missing or not kick, and a bad `SHARDS`,
+/// are refused before anything is submitted.
+#[test]
+fn submit_checks_kick_and_queues_the_array_then_the_merge() {
+    let dir = scratch("submit");
+    let bin = dir.join("bin");
+    std::fs::create_dir_all(&bin).unwrap();
+    let log = dir.join("sbatch.log");
+    let sbatch = bin.join("sbatch");
+    std::fs::write(&sbatch, format!("#!/bin/bash\necho \"$* KICK=$KICK\" >> {}\necho 4242\n", log.display())).unwrap();
+    std::process::Command::new("chmod").arg("+x").arg(&sbatch).status().unwrap();
+    // The binary by name, found on PATH (as after `cargo install --root $PREFIX` and PATH=$PREFIX/bin:...).
+    let kick_bin = Path::new(env!("CARGO_BIN_EXE_kick"));
+    let path = format!("{}:{}:{}", bin.display(), kick_bin.parent().unwrap().display(), path_without_sbatch());
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let submit = |kick_var: &str, shards: &str| {
+        Command::new("bash")
+            .arg(root.join("experiments/slurm/submit.sh"))
+            .env("PATH", &path)
+            .env("OUT", dir.join("shards"))
+            .env("KICK", kick_var)
+            .env("SHARDS", shards)
+            .output()
+            .unwrap()
+    };
+    let out = submit("kick", "5");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let calls = std::fs::read_to_string(&log).unwrap();
+    let calls: Vec<&str> = calls.lines().collect();
+    let absolute = std::fs::canonicalize(kick_bin).unwrap();
+    let exported = |line: &str| std::fs::canonicalize(line.rsplit("KICK=").next().unwrap()).unwrap();
+    assert_eq!(calls.len(), 2, "{calls:?}");
+    assert!(calls[0].starts_with("--parsable --array=0-4 --export=ALL") && calls[0].contains("shard.sbatch"), "{calls:?}");
+    assert!(calls[1].starts_with("--dependency=afterok:4242 --export=ALL") && calls[1].contains("merge.sbatch"), "{calls:?}");
+    for line in &calls {
+        assert!(line.rsplit("KICK=").next().unwrap().starts_with('/'), "KICK exported as an absolute path: {line}");
+        assert_eq!(exported(line), absolute, "{line}");
+    }
+
+    // Refusals: nothing submitted, the message names KICK (or SHARDS) and how to build the binary.
+    std::fs::remove_file(&log).unwrap();
+    let not_kick = dir.join("not-kick");
+    std::fs::write(&not_kick, "#!/bin/bash\necho hello\n").unwrap();
+    std::process::Command::new("chmod").arg("+x").arg(&not_kick).status().unwrap();
+    for (kick_var, shards, says) in [
+        ("/nonexistent/bin/kick", "2", "KICK=/nonexistent/bin/kick is not an executable kick binary"),
+        ("kick-not-installed", "2", "cargo install --locked --path crates/kick-cli --root"),
+        (not_kick.to_str().unwrap(), "2", "does not run as kick"),
+        ("kick", "0", "SHARDS=0: a whole number of array tasks, at least 1"),
+        ("kick", "two", "SHARDS=two"),
+    ] {
+        let out = submit(kick_var, shards);
+        assert_eq!(out.status.code(), Some(2), "{kick_var} {shards}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(says), "{kick_var} {shards}: {stderr}");
+        assert!(!log.exists(), "nothing submitted for {kick_var} {shards}");
+    }
+    assert!(!dir.join("shards").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The Slurm example with `SWEEP`: `kick sweep3d --shard I/N` per array task
 /// and the merge, run here, equal to one unsharded `kick sweep3d`.
 #[test]

@@ -20,7 +20,11 @@ flight_many               many flights from arrays (numpy broadcasting), in para
 bounce                    the ball alone on a rigid plate (``kick bounce``; kick-bounce)
 bounce_many               many bounces from arrays (numpy broadcasting), in parallel in Rust
 aim                       the launch (or 3D kick) that clears the wall and hits a target in the goal
+to_xarray                 a ``*_many`` result as an xarray Dataset: dimensions from the
+                          broadcast axes, units in attributes
 kick.dask.simulate_many   ``simulate_many`` spread over a dask ``distributed`` cluster
+                          (also simulate3d_many, flight_many, bounce_many; ``kick.dask.to_zarr``
+                          writes each chunk on its worker)
 
 Errors raise by what became of the call (``kick.STATUS``), with the command
 line's message: bad input (status 3, refused) ``ValueError``; a numerical
@@ -59,6 +63,7 @@ from ._kick import (
     OutsideValidityWarning,
     __version__,
 )
+from ._labelled import ManyResult, to_xarray
 
 __all__ = [
     "simulate",
@@ -86,7 +91,16 @@ __all__ = [
     "SOLVERS_3D",
     "LAWS",
     "keywords",
+    "to_xarray",
 ]
+
+def _labelled(function: str, values: dict, arrays: dict) -> ManyResult:
+    """A ``*_many`` answer that remembers its call, for ``to_xarray``."""
+    names = {p["name"] for p in keywords(function)}
+    inputs = {k: v for k, v in arrays.items() if k in names}
+    options = {k: v for k, v in arrays.items() if k not in names}
+    return ManyResult(values, function, inputs, options)
+
 
 #: Every declared parameter (1D, 3D, flight): dicts with name, symbol, unit,
 #: level, shape, default, default_text, doc, requirement.
@@ -203,7 +217,7 @@ _declare(
 
 
 def simulate_many(**arrays):
-    return _kick.simulate_many(**arrays)
+    return _labelled("simulate_many", _kick.simulate_many(**arrays), arrays)
 
 
 _declare(
@@ -235,7 +249,7 @@ _declare(
 
 
 def simulate3d_many(**arrays):
-    return _kick.simulate3d_many(**arrays)
+    return _labelled("simulate3d_many", _kick.simulate3d_many(**arrays), arrays)
 
 
 _declare(
@@ -415,7 +429,7 @@ aim.__signature__ = aim.__signature__.replace(
 
 
 def flight_many(**arrays):
-    return _kick.flight_many(**arrays)
+    return _labelled("flight_many", _kick.flight_many(**arrays), arrays)
 
 
 _FLIGHT_MANY_OUTPUTS = [
@@ -476,7 +490,7 @@ _declare(
 
 
 def bounce_many(**arrays):
-    return _kick.bounce_many(**arrays)
+    return _labelled("bounce_many", _kick.bounce_many(**arrays), arrays)
 
 
 _declare(
