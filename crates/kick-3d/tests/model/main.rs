@@ -5,6 +5,7 @@ mod box_accuracy;
 mod checks;
 mod grip;
 mod history;
+mod line;
 mod patch;
 mod peaks;
 mod scene;
