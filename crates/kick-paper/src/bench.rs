@@ -224,6 +224,7 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
                 dt: None,
                 out: dir.join("sweep.h5"),
                 fixed: Default::default(),
+                ranges: Default::default(),
                 shard: None,
                 threads: None,
                 compress,
@@ -238,6 +239,8 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
                 seed: 1,
                 out: dir.join("sweep3d.h5"),
                 fixed: Default::default(),
+                ranges: Default::default(),
+                flight: None,
                 shard: None,
                 threads: None,
                 compress,
@@ -256,6 +259,8 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
             seed: 1,
             out: dir.join("sweep3d.h5"),
             fixed,
+            ranges: Default::default(),
+            flight: None,
             shard: None,
             threads: None,
             compress: Compression::None,
@@ -263,6 +268,26 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
         let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
         let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
         let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --out sweep3d.h5");
+        runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
+        let _ = std::fs::remove_file(&report.path);
+        // ... and each kick flown from the ground across the wall's and the
+        // goal line's planes (issue 32: at least 10,000 rows/s on 2 threads),
+        // the foot's line below the centre on a rising path so the balls fly.
+        let ranges = ["contact_depth=0,0.05", "approach_angle=0,20"].map(String::from);
+        let flight = kick_study::flight::FlightPlan::planes(Default::default(), vec![9.15, 25.0]).map_err(|e| e.to_string())?;
+        let settings = crate::sweep3d::Sweep3dSettings {
+            ranges: kick_study::sample::Ranges::parse(&ranges, |n| crate::sweep3d::find_range(n, true)).map_err(|e| e.to_string())?,
+            flight: Some(flight),
+            ..settings
+        };
+        let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
+        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+        let flown = report.flown.as_ref().map_or(0, |(n, _)| *n);
+        let command = format!(
+            "kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --range {} --range {} --flight --distance 9.15 \
+             --distance 25 --out sweep3d.h5 ({flown} of the rows flown)",
+            ranges[0], ranges[1]
+        );
         runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
         let _ = std::fs::remove_file(&report.path);
         Ok(())
@@ -326,8 +351,8 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     // 1 and 2 threads in alternation, three times; the medians (shared machine).
     let (mut ones, mut twos) = (Vec::new(), Vec::new());
     for _ in 0..3 {
-        ones.push(throughput(&default_auto, sweep, 1)?);
-        twos.push(throughput(&default_auto, sweep, 2)?);
+        ones.push(throughput(&default_auto, sweep.clone(), 1)?);
+        twos.push(throughput(&default_auto, sweep.clone(), 2)?);
     }
     ones.sort_by(f64::total_cmp);
     twos.sort_by(f64::total_cmp);
@@ -356,12 +381,12 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
 
     // The shell ball's 1D cost beside the paper's law: the same sampled
     // scenarios with `law = shell`, auto, one thread, alternated, medians.
-    let mut shell_sweep = sweep;
+    let mut shell_sweep = sweep.clone();
     shell_sweep.fixed.law = Some(kick_core::LawKind::Shell);
     let (mut paper_law, mut shell) = (Vec::new(), Vec::new());
     for _ in 0..3 {
-        paper_law.push(throughput(&default_auto, sweep, 1)?);
-        shell.push(throughput(&default_auto, shell_sweep, 1)?);
+        paper_law.push(throughput(&default_auto, sweep.clone(), 1)?);
+        shell.push(throughput(&default_auto, shell_sweep.clone(), 1)?);
     }
     let (paper_law, shell) = (median(&mut paper_law), median(&mut shell));
     let _ = writeln!(

@@ -13,7 +13,12 @@ pub fn simulate(spec: &ScenarioSpec, solver: &str, dt: Option<f64>) -> Result<Va
     serde_json::to_value(kick_study::simulate::simulate(spec, solver, dt, None, None)?).map_err(|e| StudyError::Json(e.to_string()))
 }
 
-/// `kick simulate3d --format json`.
-pub fn simulate3d(spec: &KickSpec, solver: &str, dt: Option<f64>) -> Result<Value, StudyError> {
-    serde_json::to_value(kick_study::simulate::simulate3d(spec, solver, dt, None, None)?).map_err(|e| StudyError::Json(e.to_string()))
+/// `kick simulate3d --format json` (with `--flight` when `flight` is given).
+pub fn simulate3d(
+    spec: &KickSpec,
+    solver: &str,
+    dt: Option<f64>,
+    flight: Option<&kick_study::flight::FlightPlan>,
+) -> Result<Value, StudyError> {
+    serde_json::to_value(kick_study::simulate::simulate3d(spec, solver, dt, None, flight)?).map_err(|e| StudyError::Json(e.to_string()))
 }

@@ -114,6 +114,27 @@ def test_3d_rows_equal_the_single_call_and_vectors_trail():
     assert rows["speed"][1] == kick.simulate3d(offset=0.03, foot_half_extents=tuple(extents[1]))["speed"]
 
 
+def test_3d_rows_fly_with_broadcast_air_and_a_plane_axis():
+    offset = np.array([0.0, 0.04])
+    air = np.array([[1.0], [1.225]])
+    out = kick.simulate3d_many(offset=offset, contact_depth=0.03, flight=True, distance=[9.15, 25.0], air_density=air)
+    assert out["flight_time"].shape == (2, 2) and out["landing_point"].shape == (2, 2, 2)
+    assert out["crossing_height"].shape == (2, 2, 2) and out["crossing_velocity"].shape == (2, 2, 2, 3)
+    assert (out["flight_status"] == 0).all()
+    for i in range(2):
+        for j in range(2):
+            one = kick.simulate3d(offset=offset[j], contact_depth=0.03, flight=True, distance=[9.15, 25.0], air_density=air[i, 0])
+            assert out["flight_time"][i, j] == one["flight"]["flight_time"]
+            for k, c in enumerate(one["flight"]["crossings"]):
+                assert out["crossing_height"][i, j, k] == c["height"]
+                assert out["crossing_lateral_offset"][i, j, k] == c["lateral_offset"]
+                np.testing.assert_array_equal(out["crossing_velocity"][i, j, k], c["velocity"])
+    # A ball that does not leave the ground: its flight refused, its kick kept.
+    flat = kick.simulate3d_many(friction=[0.3, 0.6], flight=True, distance=25.0)
+    assert flat["status"].tolist() == [0, 0] and flat["flight_status"].tolist() == [STATUS["refused"]] * 2
+    assert np.isnan(flat["crossing_height"]).all() and not np.isnan(flat["speed"]).any()
+
+
 def test_a_million_rows_allocate_only_the_output_arrays():
     """No per-row Python objects: the traced peak is the output arrays (plus
     the input), whatever the number of rows."""
