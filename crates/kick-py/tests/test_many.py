@@ -55,6 +55,20 @@ def test_rows_equal_the_single_call_bit_for_bit():
             assert out["evaluations"][i, j] == one["evaluations"]
 
 
+def test_the_shell_balls_pressure_is_a_broadcast_keyword():
+    """Every declared parameter broadcasts: the shell ball's pressure in 1D and
+    3D rows equals the single call; a harder ball is in contact for less time
+    (the 1D exit speed is the law's restitution's, the same at every pressure)
+    and, struck off-centre, leaves faster."""
+    pressure = np.array([6.0e4, 8.5e4, 1.1e5])
+    one_d = kick.simulate_many(law="shell", inflation_pressure=pressure)
+    three_d = kick.simulate3d_many(law="shell", inflation_pressure=pressure, offset=0.03)
+    for i, p in enumerate(pressure):
+        assert one_d["v_ball_out"][i] == kick.simulate(law="shell", inflation_pressure=p)["v_ball_out"]
+        assert three_d["speed"][i] == kick.simulate3d(law="shell", inflation_pressure=p, offset=0.03)["speed"]
+    assert np.all(np.diff(one_d["contact_time"]) < -1e-4) and np.all(np.diff(three_d["speed"]) > 0.01)
+
+
 def test_failed_rows_get_a_status_and_the_cli_message(kick_bin):
     drive = np.array([0.0, 1e5, 0.0, 0.0])
     mass = np.array([3.0, 3.0, -1.0, 3.0])

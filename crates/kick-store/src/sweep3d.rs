@@ -237,6 +237,9 @@ pub fn find_range(name: &str, flight: bool) -> Result<&'static parameters::Param
             .filter(|&q| !kick_study::flight::After::Kick3d.sets(q))
             .map(|q| q.def())
             .ok_or_else(|| format!("{e}, nor a flight parameter the kick leaves")),
+        (Err(_), false) if kick_flight::FlightParameter::from_name(name).is_ok() => {
+            Err(format!("`{name}` is a parameter of the flight: add --flight to fly the kicks"))
+        }
         (Err(e), false) => Err(e.to_string()),
     }
 }

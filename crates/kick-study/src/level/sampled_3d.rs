@@ -101,7 +101,9 @@ impl SampledKicks {
                 Parameter::FootMass => boxed[3],
                 _ => p.def().sample.map_or(f64::NAN, |range| range.draw(&mut uniform)),
             };
-            if spec.scenario.get(p).is_none() {
+            // One the law ignores (the shell's k, c, n) stays unset: it is no
+            // column, so it must not reach the solve (its step sizes) either.
+            if spec.scenario.get(p).is_none() && self.law().uses(p.def()) {
                 // A declared scalar of the 1D level: setting it cannot fail.
                 let _ = spec.scenario.set_parameter(p.def(), Value::Number(own(p.def()).unwrap_or(drawn)));
             }
