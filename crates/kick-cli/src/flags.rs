@@ -149,6 +149,16 @@ pub struct Flags<S> {
     spec: PhantomData<S>,
 }
 
+/// `help` with the note that the flag repeats, before its `[default: ...]`
+/// (the reference page reads the default from the end).
+fn repeat_note(help: &str) -> String {
+    const NOTE: &str = " (repeat for several planes, located in one solve)";
+    match help.rfind(" [default: ") {
+        Some(at) => format!("{}{NOTE}{}", &help[..at], &help[at..]),
+        None => format!("{help}{NOTE}"),
+    }
+}
+
 /// The flight's crossing plane: its flag may be given more than once.
 fn repeatable(p: &ParameterDef) -> bool {
     std::ptr::eq(p, FlightParameter::Distance.def())
@@ -194,12 +204,9 @@ fn parameter_arg(p: &'static ParameterDef, requires: Option<&'static str>) -> Ar
         }
     };
     match p.shape {
-        Shape::Scalar if repeatable(p) => arg
-            .value_name(p.symbol)
-            .value_parser(number)
-            .allow_hyphen_values(true)
-            .action(ArgAction::Append)
-            .help(format!("{} (repeat for several planes, located in one solve)", p.help())),
+        Shape::Scalar if repeatable(p) => {
+            arg.value_name(p.symbol).value_parser(number).allow_hyphen_values(true).action(ArgAction::Append).help(repeat_note(&p.help()))
+        }
         Shape::Scalar => arg.value_name(p.symbol).value_parser(number).allow_hyphen_values(true).action(ArgAction::Set),
         Shape::Vector3 => arg
             .value_name(format!("{0}x,{0}y,{0}z", p.symbol))
