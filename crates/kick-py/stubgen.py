@@ -49,12 +49,19 @@ AIM = {
     "wall": "tuple[float, float, float] | Sequence[float] | None",
     "from_": "str",
     "free": "Sequence[str] | None",
+    "law": "str | None",
+    "objective": "str | None",
+    "bounds": "Mapping[str, tuple[float, float]] | None",
 }
+#: Keywords of the kick-to-flight chain (`simulate3d`, `simulate3d_many`, `flight`).
+FLIGHT = {"flight": "bool", "distance": "float | Sequence[float] | None"}
 
 
 def annotation(function: str, name: str, shapes: dict) -> str:
     if function == "aim" and name in AIM:
         return AIM[name]
+    if function in ("simulate3d", "simulate3d_many", "flight") and name in FLIGHT:
+        return FLIGHT[name]
     if name in OPTIONS:
         return OPTIONS[name]
     if name in dict(kick.CHANNELS):

@@ -413,16 +413,23 @@ impl Accurate3d {
                 reason: "a ground plane is a third body; use the rapier scene path",
             });
         }
-        // One plane: the foot's path (x–z at an approach angle), the offset (y)
-        // and the face's normal (x–y with a yaw, x–z with a pitch).
-        let (yaw, pitch) = kick.instep.map_or((kick.obliquity(), 0.0), |i| (i.yaw, i.pitch));
-        let planar = (kick.approach_angle == 0.0 && pitch == 0.0) || (kick.offset == 0.0 && yaw == 0.0);
+        // One plane: the foot's path (x–z at an approach angle), the ball's
+        // (x), the face's normal and the foot's mirror plane. The knife edge
+        // is the lateral kick rolled about the path: one plane with a
+        // horizontal path, a ball at rest, or no offset. An instep keeps its
+        // box level: a yaw needs a horizontal path and the pole at the
+        // centre's height, a pitch no offset and no yaw.
+        let planar = match kick.instep {
+            None => kick.approach_angle == 0.0 || kick.base.ball_speed() == 0.0 || kick.offset == 0.0,
+            Some(i) => (kick.approach_angle == 0.0 && i.pitch == 0.0 && kick.contact_depth == 0.0) || (kick.offset == 0.0 && i.yaw == 0.0),
+        };
         if kick.rigid_grip() && kick.friction.is_finite() && kick.friction > 0.0 && !planar {
             return Err(Kick3dError::UnsupportedScene {
                 path: "accurate",
                 reason: "rigid grip (tangential_stiffness = inf) with a finite friction keeps each slip in one direction, \
-                         exact for a kick in one plane: give approach_angle = 0 and face_pitch = 0, or offset = 0 and \
-                         face_yaw = 0 (or friction = inf)",
+                         exact for a kick in one plane: on the knife edge give approach_angle = 0, ball_speed = 0 or \
+                         offset = 0; on an instep approach_angle = 0, face_pitch = 0 and contact_depth = 0, or offset = 0 \
+                         and face_yaw = 0 (or friction = inf)",
             });
         }
         let horizon = kick.contact_horizon()?;

@@ -8,8 +8,9 @@ pub enum Kick3dError {
     Core(#[from] KickError),
     #[error("invalid parameter `{name}` = {}: must be {requirement}", short(*.value))]
     InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
-    #[error("offset {} m misses the ball: |offset| must be below the ball radius {} m", short(*.offset), short(*.radius))]
-    OffsetOutsideBall { offset: f64, radius: f64 },
+    /// The foot's line of motion passes outside the ball: √(e² + h²) ≥ R.
+    #[error("{}", outside_ball(*.offset, *.depth, *.radius))]
+    OffsetOutsideBall { offset: f64, depth: f64, radius: f64 },
     #[error("contact geometry failed at t = {} s: {reason}", short(*.time))]
     Geometry { time: f64, reason: String },
     #[error("the {path} path cannot run this scene: {reason}")]
@@ -18,6 +19,21 @@ pub enum Kick3dError {
     UnknownSolver { name: String, expected: &'static str },
     #[error("3D experiment: {reason}")]
     Experiment { reason: String },
+}
+
+/// The message of [`Kick3dError::OffsetOutsideBall`]: the offset alone when the contact depth is 0.
+fn outside_ball(offset: f64, depth: f64, radius: f64) -> String {
+    if depth == 0.0 {
+        format!("offset {} m misses the ball: |offset| must be below the ball radius {} m", short(offset), short(radius))
+    } else {
+        format!(
+            "offset {} m and contact_depth {} m miss the ball: the foot's line of motion must pass within the ball radius {} m \
+             of its centre (offset² + contact_depth² < R²)",
+            short(offset),
+            short(depth),
+            short(radius)
+        )
+    }
 }
 
 impl Kick3dError {

@@ -2,20 +2,44 @@
 //! an off-center, oblique impact and the tangential contact law.
 //!
 //! Frame: x is the horizontal direction of the foot's line of motion, z is up,
-//! y completes a right-handed frame. The ball centre starts at the origin.
+//! y completes a right-handed frame (the kicker's left). The ball centre
+//! starts at the origin.
 //!
-//! - `offset` e: lateral (y) distance of the foot's line of motion from the
-//!   ball centre. The instep face is tangent to the ball where that line first
-//!   meets the sphere, p = (−√(R²−e²), e, 0), so the contact normal is tilted
-//!   by φ = asin(e/R) from the line of motion. (A flat face struck square on
-//!   would push through the centre whatever the offset; the tilt is what makes
-//!   the offset matter.)
-//! - `approach_angle` α: elevation of the foot's velocity above the
-//!   horizontal, v_f = V (cos α, 0, sin α), with the face held as above; the
-//!   foot then also slides up or down the ball.
+//! **Where the foot meets the ball: one definition.** The foot moves along
+//! û = (cos α, 0, sin α), `approach_angle` α its elevation. Its line of
+//! motion passes the ball's centre at the point P = e ŷ − h v̂, with
+//! v̂ = û × ŷ = (−sin α, 0, cos α) the vertical direction across the line:
+//! `offset` e and `contact_depth` h are the distances of the ball's centre
+//! from the line, lateral and vertical (perpendicular to the line), and
+//! √(e² + h²) < R. Signs: e > 0 puts the line on the ball's +y side, so the
+//! ball leaves toward −y spinning with ω_z < 0 and curves further toward −y
+//! (Magnus along ω × v); h > 0 puts it below the centre, so the ball rises
+//! with backspin ω_y < 0 (on a path along +x). The figure on paper/3d.md
+//! draws the axes, the signs and the curve.
 //!
-//! Normal approach speed V_n = (V cos α − v_b) cos φ; the tangential sliding
-//! speed at first touch is V sin φ horizontally and V sin α vertically.
+//! **Geometries on that line** (not definitions of it):
+//! - the knife edge (the default): the instep's face is tangent to the ball
+//!   where the line first meets the sphere, p = P − √(R² − e² − h²) û, so
+//!   the contact normal n0 = −p/R is tilted by φ = asin(√(e² + h²)/R) from
+//!   the line (a flat face struck square on would push through the centre
+//!   whatever the offset; the tilt is what makes the offset matter). The
+//!   foot's box is the lateral kick's (e = r, h = 0, its face turned by φ
+//!   about the vertical) rolled about the line by β = atan2(h, e), so the
+//!   kick at (e, h) is the kick at offset √(e² + h²) turned about the line:
+//!   on a horizontal path with h = 0 the face is turned by asin(e/R) about z
+//!   alone, as it always was;
+//! - the instep of [`crate::patch`] (a flat face or a convex cap, any
+//!   yaw and pitch): its pole moves on the same line.
+//!
+//! Until the contact depth was declared, the knife edge at an approach
+//! angle kept its face vertical, tangent at (−√(R² − e²), e, 0): that kick
+//! is the one at h = −√(R² − e²) sin α here (the line passing above the
+//! centre, so the foot slid up the ball's back and gave topspin), with the
+//! box not rolled. A central kick on a rising path now pushes through the
+//! centre along û.
+//!
+//! Normal approach speed V_n = (V û − v_b x̂) · n0; the tangential sliding
+//! speed at first touch is what the normal leaves of that relative velocity.
 //!
 //! Normal law: the scenario's contact law (`Scenario::contact_law`; Eq. 20
 //! unless another is chosen). A law other than the paper's takes its damping
@@ -86,6 +110,8 @@ impl Default for FootShape {
 pub struct Kick3dSpec {
     /// e, m [0]
     pub offset: Option<f64>,
+    /// h, m [0]: the ball's centre above the foot's line of motion
+    pub contact_depth: Option<f64>,
     /// α, degrees [0]
     #[serde(rename = "approach_angle")]
     pub approach_angle_deg: Option<f64>,
@@ -134,6 +160,33 @@ impl Kick3dSpec {
     }
 }
 
+impl Kick3dSpec {
+    /// The value given for the declared parameter `p` (of [`Kick3dSpec`]'s levels), if any.
+    pub fn value(&self, p: &ParameterDef) -> Option<Value> {
+        let number = |x: Option<f64>| x.map(Value::Number);
+        match p.name {
+            "offset" => number(self.offset),
+            "contact_depth" => number(self.contact_depth),
+            "approach_angle" => number(self.approach_angle_deg),
+            "friction" => number(self.friction),
+            "ball_radius" => number(self.ball_radius),
+            "ball_inertia" => number(self.ball_inertia),
+            "tangential_stiffness" => number(self.tangential_stiffness),
+            "tangential_damping" => number(self.tangential_damping),
+            "foot_inertia" => self.foot_inertia.map(Value::Vector),
+            "foot_half_extents" => self.foot_half_extents.map(Value::Vector),
+            "border_radius" => number(self.border_radius),
+            "gravity" => self.gravity.map(Value::Switch),
+            "ground" => self.ground.map(Value::Switch),
+            "face_yaw" => number(self.face_yaw_deg),
+            "face_pitch" => number(self.face_pitch_deg),
+            "instep_radius" => number(self.instep_radius),
+            "patch_contact" => self.patch_contact.map(Value::Switch),
+            _ => None,
+        }
+    }
+}
+
 impl SetParameter for Kick3dSpec {
     const LEVELS: &'static [Level] = &[Level::Kick3d, Level::Instep];
 
@@ -143,6 +196,7 @@ impl SetParameter for Kick3dSpec {
         let switch = || parameters::switch(parameter, value).map(Some);
         match parameter.name {
             "offset" => self.offset = number()?,
+            "contact_depth" => self.contact_depth = number()?,
             "approach_angle" => self.approach_angle_deg = number()?,
             "friction" => self.friction = number()?,
             "ball_radius" => self.ball_radius = number()?,
@@ -201,6 +255,16 @@ impl KickSpec {
     }
 }
 
+impl KickSpec {
+    /// The value given for the declared parameter `p` (of [`KickSpec::LEVELS`]), if any.
+    pub fn value(&self, p: &ParameterDef) -> Option<Value> {
+        match p.level {
+            Level::Scenario | Level::Bounce => self.scenario.value(p).map(Value::Number),
+            _ => self.kick3d.value(p),
+        }
+    }
+}
+
 impl kick_core::parameters::SetLaw for KickSpec {
     fn set_law(&mut self, law: kick_core::LawKind) {
         self.scenario.law = Some(law);
@@ -239,7 +303,10 @@ pub struct Kick3d {
     pub ball_inertia: f64,
     pub foot_inertia: [f64; 3],
     pub foot_shape: FootShape,
+    /// e, m: the ball's centre from the foot's line of motion, lateral.
     pub offset: f64,
+    /// h, m: the ball's centre above the foot's line of motion.
+    pub contact_depth: f64,
     /// α in radians.
     pub approach_angle: f64,
     pub friction: f64,
@@ -432,8 +499,9 @@ impl Kick3d {
             check(&p::FOOT_INERTIA, i)?;
         }
         let offset = spec.offset.unwrap_or(p::OFFSET.default_number());
-        if !(offset.is_finite() && offset.abs() < radius) {
-            return Err(Kick3dError::OffsetOutsideBall { offset, radius });
+        let depth = spec.contact_depth.unwrap_or(p::CONTACT_DEPTH.default_number());
+        if !(offset.is_finite() && depth.is_finite() && offset.hypot(depth) < radius) {
+            return Err(Kick3dError::OffsetOutsideBall { offset, depth, radius });
         }
         let alpha_deg = check(&p::APPROACH_ANGLE, spec.approach_angle_deg.unwrap_or(p::APPROACH_ANGLE.default_number()))?;
         let friction = check(&p::FRICTION, spec.friction.unwrap_or(Self::DEFAULT_FRICTION))?;
@@ -448,6 +516,7 @@ impl Kick3d {
             foot_inertia,
             foot_shape,
             offset,
+            contact_depth: depth,
             approach_angle: alpha_deg.to_radians(),
             friction,
             tangential_stiffness,
@@ -461,9 +530,10 @@ impl Kick3d {
         let v_n = kick.normal_approach_speed();
         // NaN-safe: anything not strictly positive refuses.
         if v_n.is_nan() || v_n <= 0.0 {
+            let n = kick.initial_normal();
             return Err(Kick3dError::Core(kick_core::KickError::NoContact {
-                foot_speed: base.foot_speed() * kick.approach_angle.cos() * kick.obliquity().cos(),
-                ball_speed: base.ball_speed() * kick.obliquity().cos(),
+                foot_speed: base.foot_speed() * kick.foot_direction().dot(n),
+                ball_speed: base.ball_speed() * n.x,
             }));
         }
         kick.law = kick.normal_scenario()?.contact_law();
@@ -503,64 +573,58 @@ impl Kick3d {
         Ok(())
     }
 
-    /// The value of every declared parameter of the 1D and 3D levels this kick
-    /// was built with, defaults filled in (in [`parameters::PARAMETERS`]
-    /// order; `restitution` only when the law takes one; the instep's
-    /// (Level::Instep) only when given). Angles as declared
-    /// (degrees); the instep's size is its outer size, as given.
-    pub fn parameter_values(&self) -> Vec<(&'static ParameterDef, Value)> {
-        let mut values = Vec::new();
-        for def in parameters::at_levels(KickSpec::ROW_LEVELS) {
-            let value = match def.name {
-                "restitution" => match self.base.restitution_target() {
-                    Some(e) => Value::Number(e),
-                    None => continue,
-                },
-                "offset" => Value::Number(self.offset),
-                "approach_angle" => Value::Number(self.approach_angle.to_degrees()),
-                "friction" => Value::Number(self.friction),
-                "ball_radius" => Value::Number(self.ball_radius),
-                "ball_inertia" => Value::Number(self.ball_inertia),
-                "tangential_stiffness" => Value::Number(self.tangential_stiffness),
-                "tangential_damping" => Value::Number(self.tangential_damping),
-                "foot_inertia" => Value::Vector(self.foot_inertia),
-                "foot_half_extents" => Value::Vector(self.foot_shape.outer_half_extents()),
-                "border_radius" => Value::Number(self.foot_shape.border_radius()),
-                "gravity" => Value::Switch(self.gravity),
-                "ground" => Value::Switch(self.ground),
-                name => match kick_core::Parameter::from_name(name) {
-                    Some(p) => Value::Number(self.base.get(p)),
-                    None => continue,
-                },
+    /// The value of the declared parameter `p` this kick was built with,
+    /// defaults filled in: angles as declared (degrees), the instep's size
+    /// its outer size; None for a parameter the kick's law does not use
+    /// (`damping` but under the paper's law, `restitution` under it, the
+    /// shell ball's but under law `shell`), an instep setting of a kick
+    /// without an instep, or one of no level the kick has.
+    pub fn parameter_value(&self, p: &ParameterDef) -> Option<Value> {
+        if matches!(p.level, Level::Scenario | Level::Bounce) {
+            return self.base.spec().value(p).map(Value::Number);
+        }
+        if p.level == Level::Foot {
+            // The foot's settings only when it is not Table 1's rigid foot.
+            let foot = self.base.foot();
+            return match (p.name, foot.leg, foot.boot) {
+                ("leg", Some(_), _) => Some(Value::Switch(true)),
+                ("knee", Some(pose), _) => Some(Value::Number(pose.knee)),
+                ("ankle", Some(pose), _) => Some(Value::Number(pose.ankle)),
+                ("hip", Some(pose), _) => Some(Value::Number(pose.hip)),
+                ("boot_stiffness", _, Some(b)) => Some(Value::Number(b.stiffness)),
+                ("boot_damping", _, Some(b)) => Some(Value::Number(b.damping)),
+                ("boot_stiffness", Some(_), None) => Some(Value::Number(f64::INFINITY)),
+                _ => None,
             };
-            values.push((def, value));
         }
-        // The instep's settings only when given: a kick without them is the row above.
-        if let Some(instep) = &self.instep {
-            values.extend([
-                (&parameters::FACE_YAW, Value::Number(instep.yaw.to_degrees())),
-                (&parameters::FACE_PITCH, Value::Number(instep.pitch.to_degrees())),
-                (&parameters::INSTEP_RADIUS, Value::Number(instep.radius)),
-                (&parameters::PATCH_CONTACT, Value::Switch(instep.patch.is_some())),
-            ]);
-        }
-        // The foot's settings only when it is not Table 1's rigid foot.
-        let foot = self.base.foot();
-        if let Some(pose) = foot.leg {
-            values.extend([
-                (&parameters::LEG, Value::Switch(true)),
-                (&parameters::KNEE, Value::Number(pose.knee)),
-                (&parameters::ANKLE, Value::Number(pose.ankle)),
-                (&parameters::HIP, Value::Number(pose.hip)),
-            ]);
-        }
-        match foot.boot {
-            Some(b) => values
-                .extend([(&parameters::BOOT_STIFFNESS, Value::Number(b.stiffness)), (&parameters::BOOT_DAMPING, Value::Number(b.damping))]),
-            None if foot.leg.is_some() => values.push((&parameters::BOOT_STIFFNESS, Value::Number(f64::INFINITY))),
-            None => {}
-        }
-        values
+        let instep = || self.instep.as_ref();
+        Some(match p.name {
+            "offset" => Value::Number(self.offset),
+            "contact_depth" => Value::Number(self.contact_depth),
+            "approach_angle" => Value::Number(self.approach_angle.to_degrees()),
+            "friction" => Value::Number(self.friction),
+            "ball_radius" => Value::Number(self.ball_radius),
+            "ball_inertia" => Value::Number(self.ball_inertia),
+            "tangential_stiffness" => Value::Number(self.tangential_stiffness),
+            "tangential_damping" => Value::Number(self.tangential_damping),
+            "foot_inertia" => Value::Vector(self.foot_inertia),
+            "foot_half_extents" => Value::Vector(self.foot_shape.outer_half_extents()),
+            "border_radius" => Value::Number(self.foot_shape.border_radius()),
+            "gravity" => Value::Switch(self.gravity),
+            "ground" => Value::Switch(self.ground),
+            "face_yaw" => Value::Number(instep()?.yaw.to_degrees()),
+            "face_pitch" => Value::Number(instep()?.pitch.to_degrees()),
+            "instep_radius" => Value::Number(instep()?.radius),
+            "patch_contact" => Value::Switch(instep()?.patch.is_some()),
+            _ => return None,
+        })
+    }
+
+    /// The value of every declared parameter of the kick's levels
+    /// ([`KickSpec::LEVELS`]) it was built with and uses, in declaration
+    /// order ([`Kick3d::parameter_value`]; the instep's only when given).
+    pub fn parameter_values(&self) -> Vec<(&'static ParameterDef, Value)> {
+        parameters::at_levels(KickSpec::LEVELS).filter_map(|def| self.parameter_value(def).map(|v| (def, v))).collect()
     }
 
     /// The default 3D kick on Table 1's baseline: central, μ = 0.5.
@@ -571,9 +635,73 @@ impl Kick3d {
         }
     }
 
-    /// φ = asin(e/R), the tilt of the contact normal from the line of motion.
+    /// r = ±√(e² + h²): the distance of the ball's centre from the foot's
+    /// line of motion, with the sign of the offset (so r = e when h = 0).
+    pub fn line_distance(&self) -> f64 {
+        let r = self.offset.hypot(self.contact_depth);
+        if self.offset < 0.0 {
+            -r
+        } else {
+            r
+        }
+    }
+
+    /// φ = asin(r/R), the tilt of the knife edge's normal from the line of
+    /// motion (signed as the offset; asin(e/R) when h = 0).
     pub fn obliquity(&self) -> f64 {
-        (self.offset / self.ball_radius).asin()
+        (self.line_distance() / self.ball_radius).asin()
+    }
+
+    /// (cos β, sin β) of the roll β = atan2(h, e) that turns the lateral
+    /// kick at offset r about the line of motion into the kick at (e, h)
+    /// (β in [−90°, 90°]: r carries the offset's sign).
+    pub fn roll(&self) -> (f64, f64) {
+        let r = self.line_distance();
+        if r == 0.0 {
+            (1.0, 0.0)
+        } else {
+            (self.offset / r, self.contact_depth / r)
+        }
+    }
+
+    /// P = e ŷ − h v̂: where the foot's line of motion passes the ball's
+    /// centre (the point of the line closest to it), v̂ = (−sin α, 0, cos α).
+    pub fn line_point(&self) -> Vec3 {
+        if self.contact_depth == 0.0 {
+            return Vec3::new(0.0, self.offset, 0.0);
+        }
+        let (sa, ca) = self.approach_angle.sin_cos();
+        Vec3::new(self.contact_depth * sa, self.offset, -self.contact_depth * ca)
+    }
+
+    /// The knife edge's normal at first touch (foot → ball) and the foot's
+    /// orientation (module docs): the lateral kick at offset r, its face
+    /// turned by φ about the vertical, rolled by β about the line and
+    /// carried onto the path (a turn by −α about y).
+    pub fn knife_edge(&self) -> (Vec3, Rot3) {
+        let phi = self.obliquity();
+        if self.contact_depth == 0.0 && self.approach_angle == 0.0 {
+            // The lateral kick on a horizontal path, as it always was (bit for bit).
+            return (Vec3::new(phi.cos(), -phi.sin(), 0.0), Rot3::from_rotation_z(-phi));
+        }
+        if phi == 0.0 {
+            // Through the centre: the normal is û itself, so nothing slides (the 1D kick along û).
+            return (self.foot_direction(), Rot3::from_rotation_y(-self.approach_angle));
+        }
+        let (c, s) = self.roll();
+        let orientation = Rot3::from_rotation_y(-self.approach_angle) * Rot3::from_rotation_x(-s.atan2(c)) * Rot3::from_rotation_z(-phi);
+        (orientation * Vec3::X, orientation)
+    }
+
+    /// Yaw ψ and pitch θ of the knife edge's normal, n0 = (cos θ cos ψ,
+    /// −cos θ sin ψ, sin θ), radians: the defaults of an instep's
+    /// `face_yaw` and `face_pitch` ((asin(e/R), 0) on a horizontal path with h = 0).
+    pub fn knife_edge_angles(&self) -> (f64, f64) {
+        if self.contact_depth == 0.0 && self.approach_angle == 0.0 {
+            return (self.obliquity(), 0.0);
+        }
+        let (n, _) = self.knife_edge();
+        ((-n.y).atan2(n.x), n.z.clamp(-1.0, 1.0).asin())
     }
 
     /// Unit direction of the foot's velocity, û = (cos α, 0, sin α).
@@ -595,14 +723,14 @@ impl Kick3d {
         }
     }
 
-    /// Face normal (foot → ball) at first touch, n0 = (cos φ, −sin φ, 0)
-    /// (with an [`Instep`], the normal where it touches the ball).
+    /// Face normal (foot → ball) at first touch: the knife edge's n0 = −p/R
+    /// ((cos φ, −sin φ, 0) on a horizontal path with h = 0; with an
+    /// [`Instep`], the normal where it touches the ball).
     pub fn initial_normal(&self) -> Vec3 {
         if let Some(instep) = &self.instep {
             return crate::patch::first_touch(self, instep).normal;
         }
-        let phi = self.obliquity();
-        Vec3::new(phi.cos(), -phi.sin(), 0.0)
+        self.knife_edge().0
     }
 
     /// V_n = (v_f − v_b)·n0 at first touch.
@@ -638,11 +766,11 @@ impl Kick3d {
                 normal: touch.normal,
             };
         }
-        let n = self.initial_normal();
+        let (n, orientation) = self.knife_edge();
         let contact = -n * self.ball_radius;
         InitialState {
             foot_position: contact - n * self.face_distance(),
-            foot_orientation: Rot3::from_rotation_z(-self.obliquity()),
+            foot_orientation: orientation,
             foot_velocity: self.foot_direction() * self.base.foot_speed(),
             ball_position: Vec3::ZERO,
             ball_velocity: Vec3::X * self.base.ball_speed(),
@@ -766,8 +894,10 @@ mod tests {
                 Shape::Switch => (Value::Switch(true), "true".to_string()),
             };
             let mut by_name = KickSpec::default();
+            assert_eq!(by_name.value(p), None, "{}", p.name);
             by_name.set_named(p.name, value).unwrap();
             assert_ne!(by_name, KickSpec::default(), "{}", p.name);
+            assert_eq!(by_name.value(p), Some(value), "{}: set, then read back", p.name);
             if matches!(p.level, Level::Kick3d | Level::Instep) {
                 let from_toml: Kick3dSpec = toml::from_str(&format!("{} = {literal}", p.name)).unwrap();
                 assert_eq!(from_toml, by_name.kick3d, "{}", p.name);

@@ -6,15 +6,16 @@
 //! foot's contact surface is a flat face (r_i = 0) or a sphere cap of radius
 //! r_i whose pole sits where the box's face centre was (h_x from the foot's
 //! centre of mass along the face normal), the face normal at the pole being
-//! n_f = (cos θ cos ψ, −cos θ sin ψ, sin θ). The offset e is the distance of
-//! the ball's centre from the swing line through the pole: the pole moves on
-//! the line (0, e, 0) + s û, û the foot's direction, and first touch is where
-//! the surface meets the ball (closed form: a plane, or two spheres). The
-//! knife edge of [`crate::model`] is one configuration: a flat face with
-//! ψ = asin(e/R), θ = 0 touches the ball at the pole, where the swing line
-//! meets it (the test `the_knife_edge_is_one_configuration`; at an approach
-//! angle α today's face centre is on the swing line through
-//! (0, e, R cos φ tan α) instead, so the two offsets differ there). A cap's
+//! n_f = (cos θ cos ψ, −cos θ sin ψ, sin θ). The pole moves on the foot's
+//! line of motion, P + s û (P = e ŷ − h v̂, [`crate::model`]: the offset e
+//! and contact depth h are the ball centre's distances from it, as for the
+//! knife edge), and first touch is where the surface meets the ball (closed
+//! form: a plane, or two spheres). Left out, ψ and θ are the knife edge's
+//! (its normal's yaw and pitch), so a flat face with the default angles
+//! touches the ball at the pole, where the line meets it: the knife edge's
+//! face, with the foot's box kept level instead of rolled about the line
+//! (the same kick on a horizontal path with h = 0: the test
+//! `the_knife_edge_is_one_configuration`). A cap's
 //! contact with the ball is a sphere–sphere contact: normal along the line of
 //! centres, δ = R + r_i − |r − c_i|, smooth everywhere (no face/border switch).
 //!
@@ -399,7 +400,7 @@ fn solve_touch(kick: &Kick3d, instep: &Instep) -> Result<Touch, Kick3dError> {
     let h_x = kick.face_distance();
     let n_f = instep.face_normal();
     let u = kick.foot_direction();
-    let line = Vec3::new(0.0, kick.offset, 0.0);
+    let line = kick.line_point();
     let q = instep.orientation();
     let facing = n_f.dot(u);
     if !(facing > 0.0) {
@@ -416,7 +417,7 @@ fn solve_touch(kick: &Kick3d, instep: &Instep) -> Result<Touch, Kick3dError> {
         let wu = w.dot(u);
         let disc = wu * wu - w.length_squared() + (big_r + rf) * (big_r + rf);
         if !(disc >= 0.0) {
-            return Err(Kick3dError::OffsetOutsideBall { offset: kick.offset, radius: big_r });
+            return Err(Kick3dError::OffsetOutsideBall { offset: kick.offset, depth: kick.contact_depth, radius: big_r });
         }
         let s = -wu - disc.sqrt();
         let c = w + u * s;
@@ -446,11 +447,15 @@ pub fn instep(kick: &Kick3d, spec: &Kick3dSpec) -> Result<Option<Instep>, Kick3d
             Err(Kick3dError::InvalidParameter { name: def.name, value, requirement: def.valid.requirement })
         }
     };
+    let (edge_yaw, edge_pitch) = kick.knife_edge_angles();
     let yaw = match spec.face_yaw_deg {
         Some(deg) => check(&p::FACE_YAW, deg)?.to_radians(),
-        None => kick.obliquity(),
+        None => edge_yaw,
     };
-    let pitch = check(&p::FACE_PITCH, spec.face_pitch_deg.unwrap_or(p::FACE_PITCH.default_number()))?.to_radians();
+    let pitch = match spec.face_pitch_deg {
+        Some(deg) => check(&p::FACE_PITCH, deg)?.to_radians(),
+        None => edge_pitch,
+    };
     let given = check(&p::INSTEP_RADIUS, spec.instep_radius.unwrap_or(p::INSTEP_RADIUS.default_number()))?;
     let [_, hy, hz] = kick.foot_shape.core_half_extents();
     // The half-extent as printed and rounded down is the half-extent (kick_core::bound).

@@ -94,17 +94,16 @@ impl<const THREE_D: bool> FlagSpec for FlightAfter<THREE_D> {
     }
 }
 
-/// `kick sweep3d`'s held parameters: the 1D and 3D kick's and `--law`, not
-/// the instep's (Level::Instep, kick-3d's `patch`): a sampled file's columns
-/// and provenance hold the row levels, so an instep setting would be lost
-/// from it (an experiment file keeps its text, and `/fixed` the kick's values).
+/// `kick sweep3d`'s held parameters: every parameter of the kick and
+/// `--law` (a sampled file's columns hold every one its law uses, the
+/// instep's when one is given).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct SampledKick(pub KickSpec);
 
 impl FlagSpec for SampledKick {
     const LAW: bool = true;
     fn parameters() -> Vec<&'static ParameterDef> {
-        parameters::at_levels(KickSpec::LEVELS).filter(|p| p.level != kick_core::Level::Instep).collect()
+        parameters::at_levels(KickSpec::LEVELS).collect()
     }
     fn set(&mut self, parameter: &'static ParameterDef, value: Value) {
         let _ = self.0.set_parameter(parameter, value);
@@ -144,7 +143,33 @@ pub struct Flags<S> {
     /// Each parameter given, in declaration order.
     pub given: Vec<(&'static ParameterDef, Value)>,
     pub law: Option<LawKind>,
+    /// Every value of the flight's `--distance`, which may be repeated (one
+    /// crossing plane each); the spec's `distance` is the first.
+    pub distances: Vec<f64>,
     spec: PhantomData<S>,
+}
+
+/// `help` with the note that the flag repeats, before its `[default: ...]`
+/// (the reference page reads the default from the end).
+fn repeat_note(help: &str) -> String {
+    const NOTE: &str = " (repeat for several planes, located in one solve)";
+    match help.rfind(" [default: ") {
+        Some(at) => format!("{}{NOTE}{}", &help[..at], &help[at..]),
+        None => format!("{help}{NOTE}"),
+    }
+}
+
+/// The flight's crossing plane: its flag may be given more than once.
+fn repeatable(p: &ParameterDef) -> bool {
+    std::ptr::eq(p, FlightParameter::Distance.def())
+}
+
+impl<S: FlagSpec> Flags<S> {
+    /// The flight plan of these flags: `rest` with the planes of `--distance`
+    /// (one: `rest`'s distance; several: each located in the one solve).
+    pub fn plan(&self, rest: FlightSpec) -> Result<kick_study::flight::FlightPlan, kick_flight::FlightError> {
+        kick_study::flight::FlightPlan::with_distances(FlightSpec { distance: None, ..rest }, &self.distances)
+    }
 }
 
 impl<S: FlagSpec> Flags<S> {
@@ -179,6 +204,9 @@ fn parameter_arg(p: &'static ParameterDef, requires: Option<&'static str>) -> Ar
         }
     };
     match p.shape {
+        Shape::Scalar if repeatable(p) => {
+            arg.value_name(p.symbol).value_parser(number).allow_hyphen_values(true).action(ArgAction::Append).help(repeat_note(&p.help()))
+        }
         Shape::Scalar => arg.value_name(p.symbol).value_parser(number).allow_hyphen_values(true).action(ArgAction::Set),
         Shape::Vector3 => arg
             .value_name(format!("{0}x,{0}y,{0}z", p.symbol))
@@ -218,14 +246,20 @@ impl<S: FlagSpec> clap::Args for Flags<S> {
 
 impl<S: FlagSpec> clap::FromArgMatches for Flags<S> {
     fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
-        let mut flags = Flags { given: Vec::new(), law: None, spec: PhantomData };
+        let mut flags = Flags { given: Vec::new(), law: None, distances: Vec::new(), spec: PhantomData };
         flags.update_from_arg_matches(matches)?;
         Ok(flags)
     }
 
     fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
         for p in S::parameters() {
+            if repeatable(p) {
+                if let Some(values) = matches.get_many::<f64>(p.name) {
+                    self.distances = values.copied().collect();
+                }
+            }
             let value = match p.shape {
+                Shape::Scalar if repeatable(p) => matches.get_many::<f64>(p.name).and_then(|mut v| v.next()).map(|&x| Value::Number(x)),
                 Shape::Scalar => matches.get_one::<f64>(p.name).map(|&x| Value::Number(x)),
                 Shape::Vector3 => match matches.get_many::<f64>(p.name) {
                     None => None,
@@ -298,15 +332,28 @@ mod tests {
         }
     }
 
-    /// `kick sweep3d` holds every 1D and 3D parameter but not the instep's
-    /// (its file would not record them), and refuses them as unknown flags.
+    /// `kick sweep3d` holds every parameter of the kick (its file records
+    /// every one the law uses, the instep's when given).
     #[test]
-    fn sweep3d_takes_no_instep_flags() {
+    fn sweep3d_holds_every_parameter_of_the_kick() {
         for p in parameters::at_levels(KickSpec::LEVELS) {
             let args = flag_args(p);
             let args: Vec<&str> = args.iter().map(String::as_str).collect();
-            assert_eq!(parse::<SampledKick>(&args).is_ok(), p.level != kick_core::Level::Instep, "{}", p.name);
+            assert!(parse::<SampledKick>(&args).is_ok(), "{}", p.name);
         }
+    }
+
+    /// `--distance` may be repeated after a kick: every value is a plane,
+    /// the first is the spec's distance.
+    #[test]
+    fn distance_repeats() {
+        let command =
+            Flags::<FlightAfter3d>::augment_args(Command::new("kick")).arg(Arg::new(FLIGHT).long(FLIGHT).action(ArgAction::SetTrue));
+        let matches = command.try_get_matches_from(["kick", "--flight", "--distance", "9.15", "--distance", "25"]).unwrap();
+        let flags = Flags::<FlightAfter3d>::from_arg_matches(&matches).unwrap();
+        assert_eq!(flags.distances, [9.15, 25.0]);
+        let plan = flags.plan(flags.spec().0).unwrap();
+        assert_eq!(plan.planes, Some(vec![9.15, 25.0]));
     }
 
     #[test]

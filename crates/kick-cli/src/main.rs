@@ -30,15 +30,21 @@ enum Command {
     /// Simulate one off-center 3D kick: spin, friction, launch direction.
     ///
     /// Axes (right-handed, the ball's centre at the origin): x is the foot's
-    /// horizontal line of motion, the kick's direction at zero approach angle;
-    /// y is lateral, the direction of --offset; z is up. The foot moves at
-    /// --foot-speed along (cos α, 0, sin α), α = --approach-angle: the path
-    /// tilts in the x–z plane. The ball moves at --ball-speed along x. --offset
-    /// e puts the foot's line of motion e to the side (y) of the ball's centre;
-    /// the instep face is tangent to the ball where that line meets it.
-    /// --foot-half-extents hx,hy,hz is the instep box's outer half-size (hx
-    /// along the face normal), --border-radius rounds its edges inside that
-    /// size. Vectors in the output (launch_velocity, spin, ...) are in these axes.
+    /// horizontal direction, the kick's direction at zero approach angle; y is
+    /// lateral (the kicker's left); z is up. The foot moves at --foot-speed
+    /// along û = (cos α, 0, sin α), α = --approach-angle. The ball moves at
+    /// --ball-speed along x. --offset e and --contact-depth h place the
+    /// foot's line of motion: the ball's centre is e from it sideways and h
+    /// above it (perpendicular to the line), so e > 0 sends the ball toward
+    /// −y spinning ω_z < 0 (and Magnus curves it further to −y), and h > 0
+    /// lifts it with backspin ω_y < 0. The instep face is tangent to the ball
+    /// where that line meets it (the knife edge), or a surface of its own
+    /// (--face-yaw, --face-pitch, --instep-radius) whose pole moves on the
+    /// line. --foot-half-extents hx,hy,hz is the instep box's outer half-size
+    /// (hx along the face normal), --border-radius rounds its edges inside
+    /// that size. Vectors in the output (launch_velocity, spin, ...) are in
+    /// these axes; with --flight the ball flies from the ground (its centre
+    /// at height R), each --distance a crossing plane.
     Simulate3d(Simulate3d),
     /// Fly the ball from its launch: drag crisis, Magnus lift, landing, apex, plane crossing.
     Flight(FlightArgs),
@@ -51,12 +57,17 @@ enum Command {
     /// parameters within their ranges; prints the solution, the miss, the
     /// wall clearance and d(y, z at the goal)/d(each free parameter), or
     /// says that no solution exists within the ranges (exit 1).
-    /// Free parameters (--free): launch: speed, launch_angle, azimuth,
-    /// spin_x, spin_y, spin_z [speed,launch_angle,azimuth]; kick: foot_speed,
-    /// lateral_offset, contact_depth, heading [all]. A free parameter's flag
-    /// gives its start (else speed 25 m/s, launch_angle 15°, azimuth and
-    /// heading toward the target, spin 0, foot_speed 18 m/s, lateral_offset
-    /// 0.02 m, contact_depth 0.03 m); the others hold what is given.
+    /// Every launch and kick parameter is held or free. A parameter's flag
+    /// holds it at that value; free are those --free names, else the default
+    /// ones not given: launch: speed, launch_angle, azimuth (also spin_x,
+    /// spin_y, spin_z); kick: foot_speed, offset, contact_depth, heading
+    /// (also any number parameter of the kick: approach_angle, friction,
+    /// inflation_pressure, ...). A free parameter's bounds: --range
+    /// NAME=LOW,HIGH, else the aim's own; its start: its flag's value, else
+    /// speed 25 m/s, launch_angle 15°, azimuth and heading toward the target,
+    /// spin 0, foot_speed 18 m/s, offset 0.02 m, contact_depth 0.03 m. More
+    /// free parameters than two leave a family of solutions: its extent is
+    /// reported, and --objective picks one member.
     Aim(AimArgs),
     /// Fire the ball at a rigid, massive, horizontal plate: the shell ball
     /// (pressure over the flat patch, adiabatic gas, shell loss; kick-bounce).
@@ -176,6 +187,14 @@ struct AimArgs {
     /// The free parameters, comma-separated (see above)
     #[arg(long, value_name = "NAMES", value_delimiter = ',')]
     free: Option<Vec<String>>,
+    /// Bounds of a free parameter (repeat the flag for several)
+    #[arg(long, value_name = "NAME=LOW,HIGH")]
+    range: Vec<String>,
+    /// Which member of the family of solutions: min-foot-speed (--from kick),
+    /// min-speed (launch speed), min-time (to the goal line), max-clearance
+    /// (of the wall) [default: the one the solve reaches from the starts]
+    #[arg(long, value_name = "NAME", value_parser = ["min-foot-speed", "min-speed", "min-time", "max-clearance"])]
+    objective: Option<String>,
     /// The declared flight parameters: fixed values, or the starts of free ones
     #[command(flatten)]
     flight: Flags<FlightSpec>,
@@ -486,6 +505,12 @@ struct Sweep {
     /// a slower write; read back unchanged
     #[arg(long, value_name = "LEVEL", num_args = 0..=1)]
     compress: Option<Option<i64>>,
+    /// Draw this parameter from LOW to HIGH (uniform, or log-uniform where its
+    /// declared range is) instead of its declared range; any number parameter
+    /// of the scenario and its ball (repeat for several). Without it every
+    /// parameter with a declared range is drawn from it, the others held
+    #[arg(long, value_name = "NAME=LOW,HIGH")]
+    range: Vec<String>,
     /// A 1D parameter given is held at that value instead of drawn; --law
     /// and --restitution set the contact law of every scenario
     #[command(flatten)]
@@ -515,10 +540,22 @@ struct Sweep3d {
     /// a slower write; read back unchanged
     #[arg(long, value_name = "LEVEL", num_args = 0..=1)]
     compress: Option<Option<i64>>,
-    /// A 1D or 3D parameter given is held at that value instead of drawn;
+    /// Draw this parameter from LOW to HIGH (uniform, or log-uniform where its
+    /// declared range is) instead of the off-center box's or its declared
+    /// range; any number parameter of the kick, or with --flight of the
+    /// flight (repeat for several)
+    #[arg(long, value_name = "NAME=LOW,HIGH")]
+    range: Vec<String>,
+    /// A parameter of the kick given is held at that value instead of drawn;
     /// --law and --restitution set the normal contact law of every kick
     #[command(flatten)]
     fixed: Flags<flags::SampledKick>,
+    /// Then fly each kick's ball from the ground (outcome set auto-3d+flight)
+    #[arg(long)]
+    flight: bool,
+    /// The flight's air, coefficients and crossing planes (with --flight)
+    #[command(flatten)]
+    flight_parameters: Flags<FlightAfter3d>,
 }
 
 #[derive(Args)]
@@ -597,7 +634,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.write_all(text.as_bytes()).and_then(|()| out.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
         }
         Command::Simulate(a) => {
-            let flight = a.flight.then(|| a.flight_parameters.spec().0);
+            let flight = a.flight.then(|| a.flight_parameters.plan(a.flight_parameters.spec().0)).transpose().map_err(flight::flight_error)?;
             let history = a.history.request()?;
             let simulation = simulate::simulate(&a.scenario.spec(), &a.solver, a.dt, history.as_ref(), flight.as_ref())?;
             out.print(a.format, &simulation)
@@ -607,7 +644,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             None => out.print(Format::Text, &simulate::scene_convergence(&a.kick.spec())?),
         },
         Command::Simulate3d(a) => {
-            let flight = a.flight.then(|| a.flight_parameters.spec().0);
+            let flight = a.flight.then(|| a.flight_parameters.plan(a.flight_parameters.spec().0)).transpose().map_err(flight::flight_error)?;
             let history = a.history.request()?;
             let simulation = simulate::simulate3d(&a.kick.spec(), &a.solver, a.dt, history.as_ref(), flight.as_ref())?;
             if a.time {
@@ -615,7 +652,10 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             }
             out.print(a.format, &simulation)
         }
-        Command::Flight(a) => out.print(a.format, &flight::flight_report(&a.flight.spec(), a.history.request()?.as_ref())?),
+        Command::Flight(a) => {
+            let plan = a.flight.plan(a.flight.spec()).map_err(flight::flight_error)?;
+            out.print(a.format, &flight::flight_report_planes(&plan, a.history.request()?.as_ref())?)
+        }
         Command::Aim(a) => {
             use kick_study::aim::{aim, AimFrom, AimRequest};
             let request = AimRequest {
@@ -623,6 +663,8 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
                 wall: a.wall.as_deref().map(|w| three("--wall", w)).transpose()?,
                 from: Some(AimFrom::from_name(&a.from)?),
                 free: a.free,
+                ranges: a.range,
+                objective: a.objective.as_deref().map(kick_flight::Objective::from_name).transpose().map_err(|e| e.to_string())?,
                 flight: a.flight.spec(),
                 // Nothing given: the default kick (so --from launch can refuse a kick flag given).
                 kick: match (a.kick.given.is_empty(), a.kick.law) {
@@ -703,6 +745,10 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(Format::Text, &report)
         }
         Command::Sweep(a) => {
+            let find = |name: &str| {
+                use kick_core::parameters::SetParameter;
+                kick_core::parameters::find_at(ScenarioSpec::LEVELS, name).map_err(|e| e.to_string())
+            };
             let settings = sweep::SweepSettings {
                 samples: a.samples,
                 seed: a.seed,
@@ -710,6 +756,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
                 dt: a.dt,
                 out: a.out,
                 fixed: a.fixed.spec(),
+                ranges: kick_study::sample::Ranges::parse(&a.range, find)?,
                 shard: a.shard,
                 threads: a.threads,
                 compress: compression(a.compress)?,
@@ -717,8 +764,19 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(Format::Text, &sweep::sweep(&settings)?)
         }
         Command::Sweep3d(a) => {
-            let settings =
-                sweep3d::Sweep3dSettings { samples: a.samples, seed: a.seed, out: a.out, fixed: a.fixed.spec().0, shard: a.shard, threads: a.threads, compress: compression(a.compress)? };
+            let flight = a.flight.then(|| a.flight_parameters.plan(a.flight_parameters.spec().0)).transpose().map_err(flight::flight_error)?;
+            let ranges = kick_study::sample::Ranges::parse(&a.range, |name| sweep3d::find_range(name, a.flight))?;
+            let settings = sweep3d::Sweep3dSettings {
+                samples: a.samples,
+                seed: a.seed,
+                out: a.out,
+                fixed: a.fixed.spec().0,
+                ranges,
+                flight,
+                shard: a.shard,
+                threads: a.threads,
+                compress: compression(a.compress)?,
+            };
             out.print(Format::Text, &sweep3d::sweep3d(&settings)?)
         }
         Command::Reproduce(a) => {

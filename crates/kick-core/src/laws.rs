@@ -319,6 +319,23 @@ impl LawKind {
         }
     }
 
+    /// Whether this law uses the declared parameter `p` (one of kick-core's
+    /// list or another level's): the paper's law k, c and n; the laws of a
+    /// target restitution k, n and `restitution`; the shell ball its own
+    /// (`shell::BALL_PARAMETERS`), not k, c, n; every parameter that is no
+    /// law's (masses, speeds, the 3D kick's, the flight's) always. A sampled
+    /// file stores only the parameters its law uses.
+    pub fn uses(self, p: &crate::ParameterDef) -> bool {
+        let shell = crate::shell::BALL_PARAMETERS.iter().any(|b| b.name == p.name) && p.level == crate::Level::Bounce;
+        match p.name {
+            _ if shell => self == LawKind::Shell,
+            "stiffness" | "exponent" if p.level == crate::Level::Scenario => self != LawKind::Shell,
+            "damping" if p.level == crate::Level::Scenario => self == LawKind::PowerLaw,
+            "restitution" if p.level == crate::Level::Scenario => !matches!(self, LawKind::PowerLaw | LawKind::Shell),
+            _ => true,
+        }
+    }
+
     /// Refuse a damping setting this law would ignore: the paper's law
     /// takes `damping` (Eq. 20), every other law takes its damping from the
     /// target `restitution`. `damping` and `restitution` say which of the two
@@ -574,6 +591,29 @@ fn check_restitution(e: f64) -> Result<f64, KickError> {
         Ok(e)
     } else {
         Err(KickError::invalid("restitution", e, "in (0, 1]"))
+    }
+}
+
+#[cfg(test)]
+mod uses_tests {
+    use super::LawKind;
+    use crate::parameters::{find, PARAMETERS};
+
+    /// The parameters each law uses: the shell ball no k, c, n or target
+    /// restitution; the paper's law no restitution and no ball; the others
+    /// no damping; all of them every parameter that is no law's.
+    #[test]
+    fn each_law_uses_its_own_parameters() {
+        let names = |law: LawKind| -> Vec<&str> { PARAMETERS.iter().filter(|p| !law.uses(p)).map(|p| p.name).collect() };
+        let ball = ["inflation_pressure", "gas_exponent", "shell_stiffness", "shell_damping"];
+        assert_eq!(names(LawKind::Shell), ["stiffness", "damping", "exponent", "restitution"]);
+        let mut paper = vec!["restitution"];
+        paper.extend(ball);
+        assert_eq!(names(LawKind::PowerLaw), paper);
+        let mut others = vec!["damping"];
+        others.extend(ball);
+        assert_eq!(names(LawKind::Flores), others);
+        assert!(LawKind::Shell.uses(find("foot_speed").unwrap()) && LawKind::Shell.uses(find("offset").unwrap()));
     }
 }
 

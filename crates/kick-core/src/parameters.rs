@@ -556,7 +556,22 @@ pub const OFFSET: ParameterDef = scalar(
     Number(0.0),
     Valid::FINITE,
     SampleRange::linear(0.0, 0.09),
-    "Lateral offset of the foot's line of motion from the ball centre (|e| < R)",
+    "Lateral distance of the ball's centre from the foot's line of motion, the line on the ball's +y side for e > 0 \
+     (the ball leaves toward -y spinning with ω_z < 0 and curves further toward -y); e² + h² < R²",
+);
+/// h: with the offset e, where the foot's line of motion passes the ball's
+/// centre (kick-3d's `model`); the knife edge and the convex instep are
+/// geometries placed on that line, not definitions of it.
+pub const CONTACT_DEPTH: ParameterDef = scalar(
+    "contact_depth",
+    "h",
+    "m",
+    Kick3d,
+    Number(0.0),
+    Valid::FINITE,
+    None,
+    "Vertical distance of the ball's centre above the foot's line of motion, perpendicular to the line (h > 0: the foot \
+     passes below the centre, the ball rises with backspin ω_y < 0); e² + h² < R²",
 );
 pub const APPROACH_ANGLE: ParameterDef = scalar(
     "approach_angle",
@@ -666,34 +681,34 @@ pub const GROUND_PLANE: ParameterDef = ParameterDef {
 };
 
 // The instep as a surface of its own (kick-3d's `patch` module): given,
-// they replace the knife-edge face tilted by asin(e/R); absent, the 3D kick
-// is exactly the one above.
+// they replace the knife-edge face (tangent where the foot's line of motion
+// meets the ball); absent, the 3D kick is exactly the one above.
 pub const FACE_YAW: ParameterDef = scalar(
     "face_yaw",
     "ψ",
     "deg",
     Instep,
-    Derived("asin(e/R): the face tangent to the ball where the swing line meets it (the knife edge)"),
+    Derived("the knife edge's: the face tangent to the ball where the foot's line of motion meets it (asin(e/R) on a horizontal path with h = 0)"),
     Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"),
     None,
-    "Yaw of the instep's face normal from the foot's line of motion, about z (positive turns it as a positive offset's knife edge does)",
+    "Yaw of the instep's face normal from the x axis, about z (positive turns it as a positive offset's knife edge does)",
 );
 pub const FACE_PITCH: ParameterDef = scalar(
     "face_pitch",
     "θ",
     "deg",
     Instep,
-    Number(0.0),
+    Derived("the knife edge's (0 on a horizontal path with h = 0)"),
     Valid::new(Bound::Open(-90.0), Bound::Open(90.0), "finite, in (-90, 90) degrees"),
     None,
-    "Pitch of the instep's face normal above the horizontal (positive: the foot meets the ball below its centre)",
+    "Pitch of the instep's face normal above the horizontal (positive: the face meets the ball below its centre)",
 );
 pub const INSTEP_RADIUS: ParameterDef = scalar(
     "instep_radius", "r_i", "m", Instep, Number(0.0),
     // Flatter caps lose their digits (d = R + r_i − δ against a² / 2d) and are
     // the flat face to 1e-4 anyway (`a_flatter_cap_tends_to_the_flat_face`).
     Valid::new(Bound::Closed(0.0), Bound::Closed(1000.0), "0 (a flat face) to 1000 m"), None,
-    "Radius of curvature of the instep's contact surface, a sphere cap (0: flat); the offset is then the ball centre's distance from the swing line through the cap's pole",
+    "Radius of curvature of the instep's contact surface, a sphere cap (0: flat) whose pole moves on the foot's line of motion (offset, contact_depth)",
 );
 pub const PATCH_CONTACT: ParameterDef = ParameterDef {
     name: "patch_contact",
@@ -772,7 +787,7 @@ pub const BOOT_DAMPING: ParameterDef = scalar(
 );
 
 /// Every parameter of the 1D and 3D levels, each once, lower levels first.
-pub static PARAMETERS: [ParameterDef; 35] = [
+pub static PARAMETERS: [ParameterDef; 36] = [
     FOOT_MASS,
     BALL_MASS,
     FOOT_SPEED,
@@ -783,6 +798,7 @@ pub static PARAMETERS: [ParameterDef; 35] = [
     DRIVE_FORCE,
     RESTITUTION,
     OFFSET,
+    CONTACT_DEPTH,
     APPROACH_ANGLE,
     FRICTION,
     BALL_RADIUS,

@@ -138,6 +138,15 @@ impl ScenarioSpec {
         *slot = Some(value);
     }
 
+    /// The value given for the declared parameter `p` (of [`ScenarioSpec::LEVELS`]), if any.
+    pub fn value(&self, p: &ParameterDef) -> Option<f64> {
+        match Parameter::from_name(p.name) {
+            Some(q) => self.get(q),
+            None if p.name == parameters::RESTITUTION.name => self.restitution,
+            None => self.given_ball().find(|(b, _)| b.name == p.name).map(|(_, v)| v),
+        }
+    }
+
     /// This spec with a file's top-level `law` and `restitution` keys, the
     /// place experiment files give them. `Err(key)` names a key that the
     /// scenario table sets too: the law is chosen in one place.
@@ -303,6 +312,22 @@ impl SetParameter for ScenarioSpec {
             None => return Err(parameters::unknown(Self::LEVELS, parameter.name)),
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod value_tests {
+    use super::*;
+
+    /// Every declared parameter of the spec's levels comes back as given.
+    #[test]
+    fn every_parameter_set_comes_back() {
+        for p in parameters::at_levels(ScenarioSpec::LEVELS) {
+            let mut spec = ScenarioSpec::default();
+            assert_eq!(spec.value(p), None, "{}", p.name);
+            spec.set_parameter(p, Value::Number(0.25)).unwrap();
+            assert_eq!(spec.value(p), Some(0.25), "{}", p.name);
+        }
     }
 }
 
@@ -498,6 +523,29 @@ impl Scenario {
         let mut values = self.values();
         values[Parameter::ALL.iter().position(|&p| p == parameter).unwrap_or(0)] = value;
         self.with_values(values)
+    }
+
+    /// A copy with the declared parameter `p` (of [`ScenarioSpec::LEVELS`])
+    /// at `value`, validated again: one of the eight, the target
+    /// restitution, or the shell ball's (refused under another law).
+    pub fn with_parameter(&self, p: &'static ParameterDef, value: f64) -> Result<Scenario, KickError> {
+        if let Some(q) = Parameter::from_name(p.name) {
+            return self.with(q, value);
+        }
+        if p.name == parameters::RESTITUTION.name {
+            return self.with_law(self.law_kind(), Some(value));
+        }
+        let mut spec = self.spec();
+        spec.set_parameter(p, Value::Number(value))
+            .map_err(|_| KickError::invalid(p.name, value, "a number of the 1D scenario or its ball"))?;
+        spec.check_given()?;
+        match self.contact {
+            AnyLaw::Shell(b) => {
+                let ball = spec.shell_ball()?;
+                Ok(self.with_shell(ShellBall::new(ball.pressure, b.radius, ball.gas_exponent, ball.shell_stiffness, ball.shell_damping)?))
+            }
+            _ => Ok(*self),
+        }
     }
 
     /// A copy with all eight values replaced (in [`Parameter::ALL`] order),

@@ -32,6 +32,17 @@
 //! the ground, height R − (d − x_landing): continuous where the crossing
 //! disappears, so LM can climb back from a kick that falls short.
 //!
+//! The family ([`family`]): with more free parameters than the target's
+//! two equations the solutions form a family of n − 2 dimensions. Two free
+//! parameters are its pivots (the pair whose range-scaled sensitivities
+//! are the least singular at the first solution); the others are its
+//! coordinates. A grid over the coordinates' ranges, each point solved for
+//! the pivots from its nearest solved neighbour (continuation), gives the
+//! members that reach the target past the wall: their extent (each free
+//! parameter's, the time to the goal line's and the wall clearance's) is
+//! reported, and an [`Objective`] picks one: the best member, refined by a
+//! compass search on the coordinates (step halved to 1e-4 of a range).
+//!
 //! Success: the crossing within [`MISS_TOLERANCE`] of the target and the
 //! wall cleared. Otherwise [`AimError::NoSolution`] with the best miss
 //! found, after at most [`MAX_STARTS`] starts of at most
@@ -175,6 +186,11 @@ pub struct AimSolution {
     pub wall_clearance: f64,
     /// Centre at the wall plane (y, z), m.
     pub wall_crossing: [f64; 2],
+    /// How the ball passes the wall: over its top, or beside it.
+    pub wall_pass: WallPass,
+    /// The solution family this member was chosen from (more free
+    /// parameters than two), and by which objective.
+    pub family: Option<Family>,
     /// The flight to its landing, crossing the goal plane.
     pub outcome: FlightOutcome,
     /// The flight flown (its launch, ball, air, coefficients; crossing the goal plane).
@@ -184,6 +200,376 @@ pub struct AimSolution {
     pub evaluations: usize,
     /// Starts tried (the last one succeeded).
     pub starts: usize,
+}
+
+/// How a ball passes the wall plane.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WallPass {
+    /// Above its top, within its width (the ball over some part of it).
+    Over,
+    /// Outside its width, at any height.
+    Beside,
+    /// Into it.
+    Hits,
+}
+
+impl WallPass {
+    /// How a ball of radius `r` whose centre crosses the wall plane at (y, z) passes `wall`.
+    pub fn of(wall: &Wall, r: f64, y: f64, z: f64) -> WallPass {
+        if y.abs() - r >= wall.half_width {
+            WallPass::Beside
+        } else if z - r >= wall.height {
+            WallPass::Over
+        } else {
+            WallPass::Hits
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            WallPass::Over => "over",
+            WallPass::Beside => "beside",
+            WallPass::Hits => "into",
+        }
+    }
+}
+
+/// Which member of the solution family an aim returns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Objective {
+    /// The least foot speed (`foot_speed` free).
+    MinFootSpeed,
+    /// The least launch speed.
+    MinSpeed,
+    /// The least time to the goal line (the keeper's least time).
+    MinTime,
+    /// The most room over or beside the wall.
+    MaxClearance,
+}
+
+impl Objective {
+    pub const ALL: [Objective; 4] = [Objective::MinFootSpeed, Objective::MinSpeed, Objective::MinTime, Objective::MaxClearance];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Objective::MinFootSpeed => "min-foot-speed",
+            Objective::MinSpeed => "min-speed",
+            Objective::MinTime => "min-time",
+            Objective::MaxClearance => "max-clearance",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Result<Objective, AimError> {
+        Objective::ALL.into_iter().find(|o| o.name() == name).ok_or_else(|| AimError::Invalid {
+            name: "objective",
+            values: vec![],
+            requirement: "one of min-foot-speed, min-speed, min-time, max-clearance",
+        })
+    }
+
+    /// The member's score, lower better; None when the objective does not
+    /// apply to these free parameters (`min-foot-speed` without a free `foot_speed`).
+    fn score(self, member: &Member, free: &[Free]) -> Option<f64> {
+        Some(match self {
+            Objective::MinFootSpeed => member.values[free.iter().position(|f| f.name == "foot_speed")?],
+            Objective::MinSpeed => member.launch_speed,
+            Objective::MinTime => member.goal_time,
+            Objective::MaxClearance => -member.clearance,
+        })
+    }
+}
+
+/// One member of a solution family: its free parameters' values and what it gives.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Member {
+    pub values: Vec<f64>,
+    /// Time from launch to the goal plane, s.
+    pub goal_time: f64,
+    /// Wall clearance, m.
+    pub clearance: f64,
+    /// |v0|, m/s.
+    pub launch_speed: f64,
+    /// |ω0|, rad/s.
+    pub spin: f64,
+}
+
+/// One free parameter's extent over the family's members found.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Extent {
+    pub name: &'static str,
+    pub unit: &'static str,
+    pub low: f64,
+    pub high: f64,
+}
+
+/// The solution family an aim's member was chosen from.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Family {
+    /// n − 2 for n free parameters.
+    pub dimension: usize,
+    /// The two parameters solved for at each point of the others.
+    pub pivots: [&'static str; 2],
+    /// Grid points tried and members found (reaching the target past the wall).
+    pub tried: usize,
+    pub members: usize,
+    /// Each free parameter's extent over the members found.
+    pub extent: Vec<Extent>,
+    /// Time to the goal line and wall clearance over the members, (least, most).
+    pub goal_time: [f64; 2],
+    pub clearance: [f64; 2],
+    pub launch_speed: [f64; 2],
+    /// The objective the returned member minimises (None: the member LM reached from the start).
+    pub objective: Option<Objective>,
+    /// Residual evaluations of the family's solves (each two flights).
+    pub evaluations: usize,
+}
+
+/// Grid points per coordinate of a family of `dimension` coordinates.
+fn grid_points(dimension: usize) -> usize {
+    match dimension {
+        0 => 1,
+        1 => 17,
+        2 => 7,
+        3 => 4,
+        4 => 3,
+        _ => 2,
+    }
+}
+
+/// The member an aim's solution is.
+fn member_of(solution: &AimSolution) -> Member {
+    let v = solution.launch_velocity;
+    let w = solution.spin;
+    Member {
+        values: solution.parameters.iter().map(|p| p.value).collect(),
+        goal_time: solution.outcome.crossing.map_or(f64::NAN, |c| c.time),
+        clearance: solution.wall_clearance,
+        launch_speed: (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt(),
+        spin: (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt(),
+    }
+}
+
+/// The family of `solution` (an aim over `free` by `launch`), and the
+/// member `objective` picks (None: `solution` itself). See the module docs.
+pub fn family(
+    scene: &Scene,
+    free: &[Free],
+    launch: &Launch,
+    solution: &AimSolution,
+    objective: Option<Objective>,
+) -> Result<(Family, Member), AimError> {
+    let n = free.len();
+    let first = member_of(solution);
+    if let Some(o) = objective {
+        if o.score(&first, free).is_none() {
+            return Err(AimError::Invalid {
+                name: "objective",
+                values: vec![],
+                requirement: "min-foot-speed with foot_speed free (--from kick); min-speed, min-time or max-clearance otherwise",
+            });
+        }
+    }
+    let extent_of = |members: &[Member]| -> Vec<Extent> {
+        free.iter()
+            .enumerate()
+            .map(|(i, f)| {
+                let (low, high) =
+                    members.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), m| (a.min(m.values[i]), b.max(m.values[i])));
+                Extent { name: f.name, unit: f.unit, low, high }
+            })
+            .collect()
+    };
+    let span = |members: &[Member], get: fn(&Member) -> f64| {
+        members.iter().fold([f64::INFINITY, f64::NEG_INFINITY], |[a, b], m| [a.min(get(m)), b.max(get(m))])
+    };
+    let summary = |members: &[Member], pivots, tried, evaluations| Family {
+        dimension: n.saturating_sub(2),
+        pivots,
+        tried,
+        members: members.len(),
+        extent: extent_of(members),
+        goal_time: span(members, |m| m.goal_time),
+        clearance: span(members, |m| m.clearance),
+        launch_speed: span(members, |m| m.launch_speed),
+        objective,
+        evaluations,
+    };
+    if n <= 2 {
+        let pivots = [free.first().map_or("", |f| f.name), free.get(1).map_or("", |f| f.name)];
+        return Ok((summary(std::slice::from_ref(&first), pivots, 1, 0), first));
+    }
+    // Pivots: the pair whose range-scaled sensitivities are the least singular.
+    let scaled: Vec<[f64; 2]> =
+        solution.parameters.iter().map(|p| [p.sensitivity[0] * (p.high - p.low), p.sensitivity[1] * (p.high - p.low)]).collect();
+    let (mut pi, mut pj, mut best) = (0, 1, -1.0);
+    for i in 0..n {
+        for j in i + 1..n {
+            let det = (scaled[i][0] * scaled[j][1] - scaled[i][1] * scaled[j][0]).abs();
+            if det > best {
+                (pi, pj, best) = (i, j, det);
+            }
+        }
+    }
+    let coordinates: Vec<usize> = (0..n).filter(|&k| k != pi && k != pj).collect();
+    let mut evaluations = 0usize;
+    // The member at coordinate values `c`, its pivots started at `guess`.
+    let mut solve_at = |c: &[f64], guess: [f64; 2]| -> Option<Member> {
+        let pivot = |k: usize, start: f64| Free { start: start.clamp(free[k].low, free[k].high), ..free[k] };
+        let pivots = [pivot(pi, guess[0]), pivot(pj, guess[1])];
+        let assemble = |v2: &[f64]| -> Vec<f64> {
+            let mut full = vec![0.0; n];
+            full[pi] = v2[0];
+            full[pj] = v2[1];
+            for (&k, &x) in coordinates.iter().zip(c) {
+                full[k] = x;
+            }
+            full
+        };
+        let reduced = |v2: &[f64]| launch(&assemble(v2));
+        let found = aim_with(scene, &pivots, &[], &reduced);
+        match found {
+            Ok(s) => {
+                evaluations += s.evaluations;
+                let mut m = member_of(&s);
+                m.values = assemble(&m.values);
+                Some(m)
+            }
+            Err(_) => {
+                evaluations += MAX_EVALUATIONS;
+                None
+            }
+        }
+    };
+    // The grid over the coordinates, nearest to the first solution first.
+    let points = grid_points(coordinates.len());
+    let axes: Vec<Vec<f64>> = coordinates
+        .iter()
+        .map(|&k| {
+            (0..points)
+                .map(|i| {
+                    if points == 1 {
+                        first.values[k]
+                    } else {
+                        free[k].low + (free[k].high - free[k].low) * i as f64 / (points - 1) as f64
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let mut grid: Vec<Vec<f64>> = vec![Vec::new()];
+    for axis in &axes {
+        grid = grid.iter().flat_map(|p| axis.iter().map(move |&x| [p.clone(), vec![x]].concat())).collect();
+    }
+    let scaled_distance = |a: &[f64], b: &[f64]| -> f64 {
+        coordinates.iter().zip(a.iter().zip(b)).map(|(&k, (x, y))| ((x - y) / (free[k].high - free[k].low)).powi(2)).sum::<f64>()
+    };
+    let start_c: Vec<f64> = coordinates.iter().map(|&k| first.values[k]).collect();
+    grid.sort_by(|a, b| scaled_distance(a, &start_c).total_cmp(&scaled_distance(b, &start_c)));
+    let mut members = vec![first.clone()];
+    let tried = grid.len();
+    for c in &grid {
+        let coords = |m: &Member| -> Vec<f64> { coordinates.iter().map(|&k| m.values[k]).collect() };
+        let nearest =
+            members.iter().min_by(|a, b| scaled_distance(&coords(a), c).total_cmp(&scaled_distance(&coords(b), c))).unwrap_or(&first);
+        if let Some(m) = solve_at(c, [nearest.values[pi], nearest.values[pj]]) {
+            members.push(m);
+        }
+    }
+    // One coordinate: its members' ends found by bisection toward the
+    // grid's neighbours outside (to 1/64 of a grid step).
+    if coordinates.len() == 1 {
+        let k = coordinates[0];
+        let step = (free[k].high - free[k].low) / (points - 1) as f64;
+        for toward in [-1.0, 1.0] {
+            let end = members.iter().map(|m| m.values[k]).fold(if toward < 0.0 { f64::INFINITY } else { f64::NEG_INFINITY }, |a, x| {
+                if toward < 0.0 {
+                    a.min(x)
+                } else {
+                    a.max(x)
+                }
+            });
+            let Some(mut inside) = members.iter().find(|m| m.values[k] == end).cloned() else { continue };
+            let mut gap = step;
+            for _ in 0..6 {
+                gap *= 0.5;
+                let c = (inside.values[k] + toward * gap).clamp(free[k].low, free[k].high);
+                if c == inside.values[k] {
+                    break;
+                }
+                if let Some(m) = solve_at(&[c], [inside.values[pi], inside.values[pj]]) {
+                    members.push(m.clone());
+                    inside = m;
+                }
+            }
+        }
+    }
+    let pivots = [free[pi].name, free[pj].name];
+    let Some(objective) = objective else {
+        return Ok((summary(&members, pivots, tried, evaluations), first));
+    };
+    let score = |m: &Member| objective.score(m, free).unwrap_or(f64::INFINITY);
+    let mut best = members.iter().min_by(|a, b| score(a).total_cmp(&score(b))).cloned().unwrap_or(first);
+    // Compass search on the coordinates from the best member.
+    let mut steps: Vec<f64> = coordinates.iter().map(|&k| (free[k].high - free[k].low) / (2.0 * (points.max(2) - 1) as f64)).collect();
+    let mut probes = 0;
+    while probes < 400 && coordinates.iter().zip(&steps).any(|(&k, s)| *s > 1e-4 * (free[k].high - free[k].low)) {
+        let mut improved = false;
+        for d in 0..coordinates.len() {
+            for sign in [1.0, -1.0] {
+                let mut c: Vec<f64> = coordinates.iter().map(|&k| best.values[k]).collect();
+                let k = coordinates[d];
+                c[d] = (c[d] + sign * steps[d]).clamp(free[k].low, free[k].high);
+                if c[d] == best.values[k] {
+                    continue;
+                }
+                probes += 1;
+                if let Some(m) = solve_at(&c, [best.values[pi], best.values[pj]]) {
+                    if score(&m) < score(&best) {
+                        members.push(m.clone());
+                        best = m;
+                        improved = true;
+                    } else {
+                        members.push(m);
+                    }
+                }
+            }
+        }
+        if !improved {
+            steps.iter_mut().for_each(|s| *s *= 0.5);
+        }
+    }
+    Ok((summary(&members, pivots, tried + probes, evaluations), best))
+}
+
+/// [`aim_with`], then the family of its solution and the member
+/// `objective` picks, solved again with every parameter free from there
+/// (so its sensitivities are its own): the aim of `kick aim`.
+pub fn aim_best(
+    scene: &Scene,
+    free: &[Free],
+    restarts: &[Vec<f64>],
+    launch: &Launch,
+    objective: Option<Objective>,
+) -> Result<AimSolution, AimError> {
+    let solution = aim_with(scene, free, restarts, launch)?;
+    if free.len() <= 2 && objective.is_none() {
+        return Ok(solution);
+    }
+    let (family, best) = family(scene, free, launch, &solution, objective)?;
+    let mut chosen = match objective {
+        None => solution,
+        Some(_) => {
+            let from: Vec<Free> = free.iter().zip(&best.values).map(|(f, &v)| Free { start: v, ..*f }).collect();
+            let mut again = aim_with(scene, &from, &[], launch)?;
+            again.evaluations += solution.evaluations + family.evaluations;
+            again.starts += solution.starts;
+            again
+        }
+    };
+    chosen.family = Some(family);
+    Ok(chosen)
 }
 
 /// Why aiming was refused or found nothing.
@@ -386,6 +772,8 @@ pub fn aim_with(scene: &Scene, free: &[Free], restarts: &[Vec<f64>], launch: &La
                 miss,
                 wall_clearance: t.clearance,
                 wall_crossing: t.wall,
+                wall_pass: WallPass::of(&scene.wall, flight.ball_radius(), t.wall[0], t.wall[1]),
+                family: None,
                 outcome: t.outcome,
                 flight: flight.with_distance(Some(scene.target[0]))?,
                 evaluations,
@@ -483,7 +871,7 @@ pub fn check_unique<T: PartialEq + Copy>(free: &[T], name: impl Fn(T) -> &'stati
 /// otherwise speed 25 m/s, elevation 15°, azimuth toward the target, spin 0).
 /// `fixed` may not set `launch_velocity` or `distance` (the target sets the plane).
 pub fn aim_launch(target: [f64; 3], wall: Wall, free: &[LaunchFree], fixed: &crate::FlightSpec) -> Result<AimSolution, AimError> {
-    aim_launch_cancellable(target, wall, free, fixed, &|| false)
+    aim_launch_with(target, wall, free, fixed, &[], None, &|| false)
 }
 
 /// [`aim_launch`], asking `cancel` before every trial flight: once it says
@@ -493,6 +881,21 @@ pub fn aim_launch_cancellable(
     wall: Wall,
     free: &[LaunchFree],
     fixed: &crate::FlightSpec,
+    cancel: &dyn Fn() -> bool,
+) -> Result<AimSolution, AimError> {
+    aim_launch_with(target, wall, free, fixed, &[], None, cancel)
+}
+
+/// [`aim_launch_cancellable`] with bounds of free parameters other than
+/// [`LaunchFree::range`] (`bounds`: name, low, high) and the family's
+/// member `objective` picks ([`aim_best`]).
+pub fn aim_launch_with(
+    target: [f64; 3],
+    wall: Wall,
+    free: &[LaunchFree],
+    fixed: &crate::FlightSpec,
+    bounds: &[(String, f64, f64)],
+    objective: Option<Objective>,
     cancel: &dyn Fn() -> bool,
 ) -> Result<AimSolution, AimError> {
     check_unique(free, LaunchFree::name)?;
@@ -528,8 +931,9 @@ pub fn aim_launch_cancellable(
     };
     let mut parameters = Vec::with_capacity(free.len());
     for &p in free {
-        let (low, high) = p.range();
-        let start = given(p).unwrap_or_else(|| default_start(p));
+        let (low, high) = bounds.iter().find(|(n, _, _)| n == p.name()).map_or(p.range(), |&(_, lo, hi)| (lo, hi));
+        // A default start moves inside bounds given; a start given does not.
+        let start = given(p).unwrap_or_else(|| if low < high { default_start(p).clamp(low, high) } else { default_start(p) });
         if !(start >= low && start <= high) {
             return Err(AimError::Invalid {
                 name: p.name(),
@@ -573,5 +977,5 @@ pub fn aim_launch_cancellable(
         spec.spin = Some(w);
         Ok(spec.build()?)
     };
-    aim_with(&scene, &parameters, &restarts, &launch)
+    aim_best(&scene, &parameters, &restarts, &launch, objective)
 }

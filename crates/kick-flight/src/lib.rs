@@ -58,12 +58,15 @@ pub mod solve;
 pub mod spec;
 pub mod validation;
 
-pub use aim::{aim_launch, aim_with, AimError, AimSolution, LaunchFree, Scene, Wall};
+pub use aim::{
+    aim_best, aim_launch, aim_launch_cancellable, aim_launch_with, aim_with, AimError, AimSolution, Family, LaunchFree, Objective, Scene, Wall, WallPass,
+};
 pub use air::Air;
 pub use coefficients::{DragModel, LiftModel};
 pub use many::{flight_many, Column};
 pub use solve::{
-    history, outcome_columns, solve, Aerodynamics, Crossing, FlightHistory, FlightOutcome, FlightSample, Sampling, OUTCOME_COLUMNS,
+    check_planes, history, outcome_columns, plane_columns, plane_values, solve, solve_planes, Aerodynamics, Crossing, FlightHistory,
+    FlightOutcome, FlightSample, Sampling, LANDING_COLUMNS, MAX_PLANES, OUTCOME_COLUMNS,
 };
 pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
 

@@ -92,12 +92,48 @@ pub fn outcome_columns(crossing: bool) -> &'static [(&'static str, &'static str)
     }
 }
 
+/// The landing and apex columns of [`OUTCOME_COLUMNS`] (the first 11).
+pub const LANDING_COLUMNS: usize = 11;
+
+/// Outcome columns of a flight crossing several planes ([`solve_planes`]):
+/// the landing and apex columns of [`OUTCOME_COLUMNS`], then for plane k
+/// its crossing columns with the suffix `_k` (`crossed_0`,
+/// `crossing_height_0`, ..., `crossed_1`, ...), in [`plane_values`]' order.
+pub fn plane_columns(planes: usize) -> Vec<(String, &'static str)> {
+    let mut columns: Vec<(String, &'static str)> = OUTCOME_COLUMNS[..LANDING_COLUMNS].iter().map(|(n, u)| (n.to_string(), *u)).collect();
+    for k in 0..planes {
+        columns.extend(OUTCOME_COLUMNS[LANDING_COLUMNS..].iter().map(|(n, u)| (format!("{n}_{k}"), *u)));
+    }
+    columns
+}
+
+/// The values of [`plane_columns`] into `out` (at least as long): the
+/// outcome's landing and apex, then each plane's crossing (`crossed` 0 and
+/// NaN where the ball lands first); how many were written. No allocation.
+pub fn plane_values(outcome: &FlightOutcome, crossings: &[Option<Crossing>], out: &mut [f64]) -> usize {
+    let values = outcome.values();
+    out[..LANDING_COLUMNS].copy_from_slice(&values[..LANDING_COLUMNS]);
+    let width = OUTCOME_COLUMNS.len() - LANDING_COLUMNS;
+    for (k, c) in crossings.iter().enumerate() {
+        let at = LANDING_COLUMNS + k * width;
+        out[at..at + width].copy_from_slice(&crossing_values(c.as_ref()));
+    }
+    LANDING_COLUMNS + crossings.len() * width
+}
+
+/// The crossing columns of [`OUTCOME_COLUMNS`] for one plane.
+fn crossing_values(c: Option<&Crossing>) -> [f64; 7] {
+    match c {
+        Some(c) => [1.0, c.time, c.height, c.lateral_offset, c.velocity[0], c.velocity[1], c.velocity[2]],
+        None => [0.0, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN],
+    }
+}
+
 impl FlightOutcome {
     /// The values of [`OUTCOME_COLUMNS`], in order; a flight without a
     /// crossing has `crossed` 0 and NaN crossing columns.
     pub fn values(&self) -> [f64; OUTCOME_COLUMNS.len()] {
-        let c = self.crossing;
-        let crossing = |f: fn(&Crossing) -> f64| c.as_ref().map_or(f64::NAN, f);
+        let [crossed, time, height, lateral, vx, vy, vz] = crossing_values(self.crossing.as_ref());
         [
             self.flight_time,
             self.landing_point[0],
@@ -110,13 +146,13 @@ impl FlightOutcome {
             self.landing_spin[0],
             self.landing_spin[1],
             self.landing_spin[2],
-            if c.is_some() { 1.0 } else { 0.0 },
-            crossing(|c| c.time),
-            crossing(|c| c.height),
-            crossing(|c| c.lateral_offset),
-            crossing(|c| c.velocity[0]),
-            crossing(|c| c.velocity[1]),
-            crossing(|c| c.velocity[2]),
+            crossed,
+            time,
+            height,
+            lateral,
+            vx,
+            vy,
+            vz,
         ]
     }
 }
@@ -277,8 +313,17 @@ fn finite(quantity: &'static str, values: &[f64], time: f64) -> Result<(), Fligh
 /// (the landing in the last step).
 type StepObserver<'a> = Option<&'a mut dyn FnMut(&Dense<9>, f64)>;
 
-/// Integrate to the landing.
-fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, FlightError> {
+/// Most crossing planes one flight locates besides its `distance` ([`solve_planes`]).
+pub const MAX_PLANES: usize = 16;
+
+/// Integrate to the landing; `planes` are further crossing planes, located
+/// into `crossings` (as many), in the same steps.
+fn run(
+    flight: &Flight,
+    planes: &[f64],
+    crossings: &mut [Option<Crossing>],
+    mut on_step: StepObserver,
+) -> Result<FlightOutcome, FlightError> {
     let dynamics = Dynamics::new(flight);
     let radius = flight.ball_radius();
     let v0 = flight.launch_velocity();
@@ -313,7 +358,9 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
             (Some(d), None) => start[X] < d && end[X] >= d,
             _ => false,
         };
-        if apex_here || lands_here || crosses_here || on_step.is_some() {
+        let crosses_plane = |k: usize| crossings[k].is_none() && start[X] < planes[k] && end[X] >= planes[k];
+        let planes_here = (0..planes.len()).any(crosses_plane);
+        if apex_here || lands_here || crosses_here || planes_here || on_step.is_some() {
             let dense = stepper.dense(&dynamics);
             let mut t_apex = t0;
             if apex_here {
@@ -336,6 +383,21 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
                     let s = dense.at(t_cross);
                     crossing =
                         Some(Crossing { distance: d, time: t_cross, height: radius + s[Z], lateral_offset: s[Y], velocity: vector(&s, 3) });
+                }
+            }
+            if planes_here {
+                for k in 0..planes.len() {
+                    if crossings[k].is_none() && start[X] < planes[k] && end[X] >= planes[k] {
+                        let d = planes[k];
+                        let t_cross = locate(|t| dense.component(X, t) - d, t0, t1);
+                        if t_land.is_none_or(|t| t_cross <= t) {
+                            let s = dense.at(t_cross);
+                            let c = Crossing { distance: d, time: t_cross, height: s[Z], lateral_offset: s[Y], velocity: vector(&s, 3) };
+                            finite("crossing", &[c.time, c.height, c.lateral_offset], c.time)?;
+                            finite("crossing velocity", &c.velocity, c.time)?;
+                            crossings[k] = Some(c);
+                        }
+                    }
                 }
             }
             if let Some(callback) = on_step.as_deref_mut() {
@@ -380,7 +442,33 @@ fn run(flight: &Flight, mut on_step: StepObserver) -> Result<FlightOutcome, Flig
 
 /// Solve one flight to its landing (no allocation).
 pub fn solve(flight: &Flight) -> Result<FlightOutcome, FlightError> {
-    run(flight, None)
+    run(flight, &[], &mut [], None)
+}
+
+/// Solve one flight and locate where it crosses each plane x = `planes[k]`
+/// (at most [`MAX_PLANES`], each finite and > 0) into `crossings[k]`: None
+/// where the ball lands first. The flight's own `distance` gives the
+/// outcome's `crossing` as in [`solve`], and the steps are [`solve`]'s, so
+/// the outcome and each crossing are the ones a flight with that one
+/// distance gives, to the bit. No allocation.
+pub fn solve_planes(flight: &Flight, planes: &[f64], crossings: &mut [Option<Crossing>]) -> Result<FlightOutcome, FlightError> {
+    check_planes(planes)?;
+    if crossings.len() != planes.len() {
+        return Err(FlightError::WrongLength { name: "distance", expected: planes.len(), found: crossings.len() });
+    }
+    crossings.fill(None);
+    run(flight, planes, crossings, None)
+}
+
+/// The planes of [`solve_planes`]: at most [`MAX_PLANES`], each finite and > 0.
+pub fn check_planes(planes: &[f64]) -> Result<(), FlightError> {
+    if planes.len() > MAX_PLANES {
+        return Err(FlightError::WrongLength { name: "distance", expected: MAX_PLANES, found: planes.len() });
+    }
+    match planes.iter().find(|&&d| !(d.is_finite() && d > 0.0)) {
+        Some(&d) => Err(FlightError::InvalidParameter { name: "distance", value: d, requirement: "finite and > 0, m" }),
+        None => Ok(()),
+    }
 }
 
 /// The flight's samples at uniform times: the same steps as [`solve`], read
@@ -430,7 +518,7 @@ pub fn history(flight: &Flight, sampling: Sampling) -> Result<FlightHistory, Fli
             next += 1;
         }
     };
-    let again = run(flight, Some(&mut record))?;
+    let again = run(flight, &[], &mut [], Some(&mut record))?;
     // Same steps; only the dense outputs of the steps without events add evaluations.
     debug_assert_eq!(FlightOutcome { evaluations: outcome.evaluations, ..again }, outcome);
     Ok(FlightHistory { outcome, samples })
@@ -534,6 +622,25 @@ mod tests {
         assert!((dy[3] + drag).abs() <= 1e-14 * drag, "{} vs {drag}", -dy[3]);
         let lift = dy[5] + dynamics.gravity;
         assert!((lift / (k * SaturatingLift::at(s) * v * v) - 1.0).abs() < 1e-14, "{lift}");
+    }
+
+    /// Several planes in one solve: each crossing is the one a flight with
+    /// that plane as its `distance` gives, to the bit, and a plane past the
+    /// landing has none; the outcome is [`solve`]'s.
+    #[test]
+    fn several_planes_cross_as_one_plane_each() {
+        let flight = models::free_kick();
+        let planes = [25.0, 9.15, 0.5, 500.0];
+        let mut crossings = [None; 4];
+        let outcome = solve_planes(&flight, &planes, &mut crossings).unwrap();
+        assert_eq!(FlightOutcome { evaluations: 0, ..outcome }, FlightOutcome { evaluations: 0, ..solve(&flight).unwrap() });
+        for (d, c) in planes.iter().zip(crossings) {
+            let alone = solve(&flight.with_distance(Some(*d)).unwrap()).unwrap().crossing;
+            assert_eq!(c, alone, "plane {d}");
+        }
+        assert!(crossings[3].is_none() && crossings[0].is_some());
+        assert!(matches!(solve_planes(&flight, &[f64::NAN], &mut [None]), Err(FlightError::InvalidParameter { name: "distance", .. })));
+        assert!(matches!(solve_planes(&flight, &[1.0], &mut []), Err(FlightError::WrongLength { .. })));
     }
 
     #[test]

@@ -386,6 +386,28 @@ impl FlightSpec {
         Ok(())
     }
 
+    /// The value given for the scalar `parameter` (None: not given, or a vector).
+    pub fn number(&self, parameter: FlightParameter) -> Option<f64> {
+        match parameter {
+            FlightParameter::Speed => self.speed,
+            FlightParameter::LaunchAngle => self.launch_angle,
+            FlightParameter::Azimuth => self.azimuth,
+            FlightParameter::LaunchVelocity | FlightParameter::Spin => None,
+            FlightParameter::BallMass => self.ball_mass,
+            FlightParameter::BallRadius => self.ball_radius,
+            FlightParameter::Gravity => self.gravity,
+            FlightParameter::AirDensity => self.air_density,
+            FlightParameter::Temperature => self.temperature,
+            FlightParameter::Pressure => self.pressure,
+            FlightParameter::Altitude => self.altitude,
+            FlightParameter::DragCoefficient => self.drag_coefficient,
+            FlightParameter::BallPanels => self.ball_panels,
+            FlightParameter::LiftCoefficient => self.lift_coefficient,
+            FlightParameter::SpinDecay => self.spin_decay,
+            FlightParameter::Distance => self.distance,
+        }
+    }
+
     /// Whether `parameter` was given.
     pub fn is_set(&self, parameter: FlightParameter) -> bool {
         match parameter {

@@ -307,6 +307,7 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
                 dt: None,
                 out: dir.join("sweep.h5"),
                 fixed: Default::default(),
+                ranges: Default::default(),
                 shard: None,
                 threads: None,
                 compress,
@@ -321,6 +322,8 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
                 seed: 1,
                 out: dir.join("sweep3d.h5"),
                 fixed: Default::default(),
+                ranges: Default::default(),
+                flight: None,
                 shard: None,
                 threads: None,
                 compress,
@@ -339,6 +342,8 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
             seed: 1,
             out: dir.join("sweep3d.h5"),
             fixed,
+            ranges: Default::default(),
+            flight: None,
             shard: None,
             threads: None,
             compress: Compression::None,
@@ -351,10 +356,30 @@ fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
         // The realistic foot, the leg and its boot (issue 31: at least 10,000 kicks/s on 2 threads).
         let mut fixed = kick_3d::KickSpec::default();
         (fixed.scenario.law, fixed.scenario.leg) = (Some(kick_core::LawKind::Shell), Some(true));
-        let settings = crate::sweep3d::Sweep3dSettings { out: dir.join("sweep3d.h5"), fixed, ..settings };
+        let settings = crate::sweep3d::Sweep3dSettings { out: dir.join("sweep3d.h5"), fixed, ..settings.clone() };
         let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
         let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
         let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --leg --out sweep3d.h5");
+        runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
+        let _ = std::fs::remove_file(&report.path);
+        // ... and each kick flown from the ground across the wall's and the
+        // goal line's planes (issue 32: at least 10,000 rows/s on 2 threads),
+        // the foot's line below the centre on a rising path so the balls fly.
+        let ranges = ["contact_depth=0,0.05", "approach_angle=0,20"].map(String::from);
+        let flight = kick_study::flight::FlightPlan::planes(Default::default(), vec![9.15, 25.0]).map_err(|e| e.to_string())?;
+        let settings = crate::sweep3d::Sweep3dSettings {
+            ranges: kick_study::sample::Ranges::parse(&ranges, |n| crate::sweep3d::find_range(n, true)).map_err(|e| e.to_string())?,
+            flight: Some(flight),
+            ..settings
+        };
+        let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
+        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+        let flown = report.flown.as_ref().map_or(0, |(n, _)| *n);
+        let command = format!(
+            "kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --range {} --range {} --flight --distance 9.15 \
+             --distance 25 --out sweep3d.h5 ({flown} of the rows flown)",
+            ranges[0], ranges[1]
+        );
         runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
         let _ = std::fs::remove_file(&report.path);
         Ok(())
@@ -453,8 +478,8 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
     // 1 and 2 threads in alternation, three times; the medians (shared machine).
     let (mut ones, mut twos) = (Vec::new(), Vec::new());
     for _ in 0..3 {
-        ones.push(throughput(&default_auto, sweep, 1)?);
-        twos.push(throughput(&default_auto, sweep, 2)?);
+        ones.push(throughput(&default_auto, sweep.clone(), 1)?);
+        twos.push(throughput(&default_auto, sweep.clone(), 2)?);
     }
     let (one, two, speed_up) = (Spread::of(&ones), Spread::of(&twos), Spread::of_ratios(&twos, &ones));
     let _ = writeln!(
@@ -484,16 +509,16 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
 
     // The shell ball's 1D cost beside the paper's law: the same sampled
     // scenarios with `law = shell`, auto, one thread, alternated, medians.
-    let mut shell_sweep = sweep;
+    let mut shell_sweep = sweep.clone();
     shell_sweep.fixed.law = Some(kick_core::LawKind::Shell);
     // The realistic foot on the shell ball: the leg's mass and its boot (issue 31: at most 2x the shell ball's cost).
-    let mut leg_sweep = shell_sweep;
+    let mut leg_sweep = shell_sweep.clone();
     leg_sweep.fixed.leg = Some(true);
     let (mut paper_law, mut shell, mut leg) = (Vec::new(), Vec::new(), Vec::new());
     for _ in 0..3 {
-        paper_law.push(throughput(&default_auto, sweep, 1)?);
-        shell.push(throughput(&default_auto, shell_sweep, 1)?);
-        leg.push(throughput(&default_auto, leg_sweep, 1)?);
+        paper_law.push(throughput(&default_auto, sweep.clone(), 1)?);
+        shell.push(throughput(&default_auto, shell_sweep.clone(), 1)?);
+        leg.push(throughput(&default_auto, leg_sweep.clone(), 1)?);
     }
     let shell_cost = Spread::of_ratios(&paper_law, &shell);
     let leg_cost = Spread::of_ratios(&shell, &leg);

@@ -437,7 +437,7 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
     let set = |name: &str| data.set(name).map_err(err);
     let (launch, goal, wall) = (set("launch")?, set("goal")?, set("wall")?);
     let col = |s: &crate::h5::SetData, name: &str| s.column(name).map(<[f64]>::to_vec).ok_or_else(|| format!("{file}: no {name}"));
-    let offsets = data.parameter("lateral_offset").map_err(err)?.to_vec();
+    let offsets = data.parameter(kick_core::parameters::OFFSET.name).map_err(err)?.to_vec();
     let frictions = data.parameter("friction").map_err(err)?.to_vec();
     let (speed, rev, elev, az) =
         (col(launch, "speed")?, col(launch, "spin_rev_per_s")?, col(launch, "launch_angle")?, col(launch, "launch_azimuth")?);
@@ -458,6 +458,19 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
          beside them in the text.\n"
     );
     let _ = writeln!(w, "## The free kick\n\n{}\n", free_kick::setup_note());
+    let _ = writeln!(
+        w,
+        "![offset and contact depth: axes, signs, the sense of the spin and the curve]({fig}/flight_axes.png)\n\n\
+         The one definition, drawn from the file's kick at e = {} cm, μ = {} (every front end uses it: `kick simulate3d \
+         --offset --contact-depth`, experiment files, `kick aim`, Python's keywords): x is the foot's horizontal \
+         direction, y the kicker's left, z up; the ball's centre lies e beside the foot's line of motion and h above \
+         it, measured perpendicular to the line. e > 0 (the line on the ball's +y side) sends the ball toward −y \
+         spinning with ω_z < 0, clockwise from above, and Magnus lift along ω × v curves it further toward −y; \
+         h > 0 (the line below the centre) lifts it with backspin, ω_y < 0. The knife-edge face (tangent to the ball \
+         where the line meets it) and the convex instep are geometries placed on that line, not definitions of it.\n",
+        sig(free_kick::AXES_ROW.0 * 100.0, 2),
+        free_kick::AXES_ROW.1
+    );
     // A realistic free kick: the rows with speed and spin in the published ranges.
     let [v_lo, v_hi] = free_kick::ILLUSTRATED_SPEEDS;
     let [w_lo, w_hi] = free_kick::ILLUSTRATED_SPINS;
@@ -501,7 +514,7 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
             .join("; ")
     );
     let _ = writeln!(w, "![free kicks from above and from the side]({fig}/flight_free_kick.png)\n");
-    let _ = writeln!(w, "![deflection and heights against the lateral offset]({fig}/flight_deflection.png)\n");
+    let _ = writeln!(w, "![deflection and heights against the offset]({fig}/flight_deflection.png)\n");
     let _ = writeln!(w, "The kicks at μ = 0.5 and μ = ∞ (all four frictions are in the file and the figures):\n");
     let _ = writeln!(
         w,
@@ -543,7 +556,7 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
         w,
         "\nWhat the figures show. Spin bends the path toward the side the offset sends the ball (Magnus lift \
          along ω × v): the curve at {d} m — lateral position minus the straight launch line's — grows with the \
-         lateral offset, to {} m at {}, and the friction coefficients spread it by only {} m at that offset (from {} \
+         offset, to {} m at {}, and the friction coefficients spread it by only {} m at that offset (from {} \
          to {} m over μ), so the offset, not μ, sets the curve. The backspin of the contact below the centre lifts \
          the ball; as the offset grows more of the launch goes sideways and the speed drops, so the ball passes \
          lower: at μ = 0.5 its centre is {} m high at the wall ({} m) for e = 0 and {} m at e = {} cm, and balls \
@@ -574,7 +587,13 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
          `flight_time`, `landing_point_x`/`_y`, `apex_height`, `apex_time`, `landing_velocity_x`/`_y`/`_z`, \
          `landing_spin_x`/`_y`/`_z`, and with `distance` `crossed` (1, or 0 when the ball lands first and the crossing \
          columns hold no number), `crossing_time`, `crossing_height`, `crossing_lateral_offset`, `crossing_velocity_x`/`_y`/`_z`, each \
-         with its unit; a row whose kick failed, or whose 3D launch is not upward, has the status of that refusal or failure (`kick_core::Status`) and its message.\n"
+         with its unit; with `distances = [d0, d1, ...]` (several planes, each located in the one solve) these crossing \
+         columns per plane, suffixed `_0`, `_1`, ... (the set records `distance_0`, `distance_1`, ...). A 3D kick's ball \
+         flies from the ground (its centre at height R); a row whose kick failed, or whose ball does not leave the ground \
+         upward (a contact_depth > 0 or a rising path lifts it), has the status of that refusal or failure \
+         (`kick_core::Status`) and its message. Every flight parameter is also a `[base]` key and a `[[sweep]]` axis \
+         (then a parameter column). `kick sweep3d --flight --distance D` and Python's `simulate3d(flight=True, \
+         distance=[...])` and `simulate3d_many` fly their kicks the same way.\n"
     );
     Ok(w)
 }
@@ -664,15 +683,16 @@ pub fn aim_section(aims: &[kick_study::aim::AimReport], fig: &str) -> String {
     let _ = writeln!(
         w,
         "## Aiming a free kick (`kick aim`)\n\n\
-         The inverse problem: which launch, or which kick, sends the ball over the wall ({} m away, {} m high, {} m to \
-         either side of the line to the goal's centre) so that its centre crosses the goal line {x} m away at y = {y} m, \
+         The inverse problem: which launch, or which kick, sends the ball past the wall ({} m away, {} m high, {} m to \
+         either side of the line to the goal's centre: over its top or beside it) so that its centre crosses the goal line {x} m away at y = {y} m, \
          z = {z} m, under the bar by the post? `kick aim` (`kick_flight::aim`) solves it by Levenberg–Marquardt over \
          the free parameters within their ranges, on the residuals (y, z at the goal plane minus the target) and the \
          wall's shortfall below a {} m margin, through the located plane crossings of the flight, with a \
          central-difference Jacobian; success is a miss of at most {} m. The aims below: \
          `kick aim --target {x},{y},{z} --spin {},{},{}` (speed, elevation and azimuth free, the sidespin held) and \
-         `kick aim --target {x},{y},{z} --from kick` (Table 1's foot through kick-3d and the free-kick roll of the \
-         section above: foot speed, the contact's lateral offset e and depth h, the heading of the whole kick). \
+         `kick aim --target {x},{y},{z} --from kick --objective max-clearance` (Table 1's foot through kick-3d: foot \
+         speed, the offset e and contact depth h of the foot's line of motion, the heading of the whole kick free; the \
+         member of the family with the most room at the wall). \
          Sensitivities are ∂(y, z at the goal line)/∂(parameter), central differences of the forward flight \
          (Richardson-extrapolated).\n",
         free_kick::WALL_DISTANCE,
@@ -714,7 +734,7 @@ pub fn aim_section(aims: &[kick_study::aim::AimReport], fig: &str) -> String {
         let v = s.launch_velocity;
         let speed = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
         let omega = (s.spin[0] * s.spin[0] + s.spin[1] * s.spin[1] + s.spin[2] * s.spin[2]).sqrt();
-        let how = if s.wall_crossing[1] - s.flight.ball_radius() >= s.scene.wall.height { "over" } else { "beside" };
+        let how = s.wall_pass.name();
         let _ = writeln!(
             w,
             "- {}: launch {} m/s at {}° elevation, {}° azimuth, {}; misses by {} m; passes {how} the wall with {} m to spare \
@@ -735,11 +755,42 @@ pub fn aim_section(aims: &[kick_study::aim::AimReport], fig: &str) -> String {
             s.starts,
         );
     }
+    for report in aims {
+        if let Some(f) = &report.solution.family {
+            let extent: Vec<String> =
+                f.extent.iter().map(|e| format!("{} {}–{} {}", e.name, sig(e.low, 3), sig(e.high, 3), e.unit)).collect();
+            let _ = writeln!(
+                w,
+                "- {} family: {} dimension(s), {} members found (pivots {} and {}): {}; time to the goal line {}–{} s, wall \
+                 clearance {}–{} m, launch speed {}–{} m/s; the member shown: {}.",
+                match report.from {
+                    kick_study::aim::AimFrom::Launch => "Launch",
+                    kick_study::aim::AimFrom::Kick => "Kick",
+                },
+                f.dimension,
+                f.members,
+                f.pivots[0],
+                f.pivots[1],
+                extent.join(", "),
+                sig(f.goal_time[0], 3),
+                sig(f.goal_time[1], 3),
+                sig(f.clearance[0], 3),
+                sig(f.clearance[1], 3),
+                sig(f.launch_speed[0], 3),
+                sig(f.launch_speed[1], 3),
+                f.objective.map_or("the one the solve reaches from the starts", |o| o.name()),
+            );
+        }
+    }
     let _ = writeln!(
         w,
-        "\nThe free parameters outnumber the two target equations, so a solution is one of a family; LM returns the one \
-         its damped steps reach from the start (given values of free launch parameters are starts; `--free` chooses \
-         which are free). A target no launch within the ranges reaches is reported as such (exit 1), with the best miss.\n"
+        "\nThe free parameters outnumber the two target equations, so a solution is one of a family (`kick_flight::aim::family`: \
+         two free parameters solved for at each point of a grid over the others, from its nearest solved neighbour); \
+         `--objective` picks one member (min-foot-speed, min-speed, min-time, max-clearance, refined by a compass search to \
+         1e-4 of a range), and without it LM returns the one its damped steps reach from the start. A parameter's flag \
+         holds it (`--offset 0.05`), `--free` frees it, `--range NAME=LOW,HIGH` bounds it. \"Over\" the wall is said only \
+         when the ball passes above its top within its width; a ball outside the width passes beside it. A target no \
+         launch within the ranges reaches is reported as such (exit 1), with the best miss.\n"
     );
     w
 }

@@ -14,9 +14,15 @@ pub fn simulate(spec: &ScenarioSpec, solver: &str, dt: Option<f64>) -> Result<(V
     printed(&kick_study::simulate::simulate(spec, solver, dt, None, None)?)
 }
 
-/// `kick simulate3d --format json`, and why it lies outside its law's validity.
-pub fn simulate3d(spec: &KickSpec, solver: &str, dt: Option<f64>) -> Result<(Value, Option<String>), StudyError> {
-    printed(&kick_study::simulate::simulate3d(spec, solver, dt, None, None)?)
+/// `kick simulate3d --format json` (with `--flight` when `flight` is given),
+/// and why it lies outside its law's validity.
+pub fn simulate3d(
+    spec: &KickSpec,
+    solver: &str,
+    dt: Option<f64>,
+    flight: Option<&kick_study::flight::FlightPlan>,
+) -> Result<(Value, Option<String>), StudyError> {
+    printed(&kick_study::simulate::simulate3d(spec, solver, dt, None, flight)?)
 }
 
 /// A result as the command line prints it in JSON, with its flag.

@@ -19,10 +19,20 @@ fn flight_parameter(name: &str) -> PyResult<FlightParameter> {
     })
 }
 
+/// One flight (`kick flight`): its outcome; `distance` one crossing plane or
+/// a list (each located in the one solve: `crossings`, one entry per plane);
+/// with `samples`, its trajectory at that many uniform times (`trajectory`:
+/// `time` [N], `position`, `velocity`, `spin` [N, 3]).
 #[pyfunction]
-#[pyo3(signature = (**params))]
-pub fn flight<'py>(py: Python<'py>, params: Option<&Bound<'py, PyDict>>) -> PyResult<Bound<'py, PyAny>> {
+#[pyo3(signature = (*, samples = None, distance = None, **params))]
+pub fn flight<'py>(
+    py: Python<'py>,
+    samples: Option<&Bound<'py, PyAny>>,
+    distance: Option<&Bound<'py, PyAny>>,
+    params: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyAny>> {
     guard(|| {
+        let samples = crate::params::samples(samples)?;
         let mut spec = FlightSpec::default();
         if let Some(params) = params {
             for (key, value) in params.iter() {
@@ -35,9 +45,40 @@ pub fn flight<'py>(py: Python<'py>, params: Option<&Bound<'py, PyDict>>) -> PyRe
                 spec.set(parameter, &values).map_err(value_error)?;
             }
         }
+        let planes = crate::params::distances(distance)?;
+        let scalar = distance.is_some_and(|d| !d.is_none() && d.extract::<f64>().is_ok());
+        let planes = match planes {
+            Some(list) if scalar => {
+                spec.distance = list.first().copied();
+                Vec::new()
+            }
+            Some(list) => list,
+            None => Vec::new(),
+        };
         let flight = spec.build().map_err(value_error)?;
-        let outcome = py.detach(|| kick_flight::solve::solve(&flight)).map_err(library_error)?;
-        crate::convert::json_to_py(py, &serde_json::to_value(outcome).map_err(value_error)?)
+        let run = py
+            .detach(|| kick_study::flight::fly_planes(flight, &planes))
+            .map_err(|f| crate::library_error(kick_study::StudyError::Failure(f)))?;
+        let mut object = serde_json::to_value(run.outcome).map_err(value_error)?;
+        if !planes.is_empty() {
+            let crossings: Vec<serde_json::Value> = run.crossings.iter().map(|c| serde_json::to_value(c).unwrap_or_default()).collect();
+            object["crossings"] = crossings.into();
+        }
+        let out = crate::convert::json_to_py(py, &object)?;
+        if let Some(n) = samples {
+            let h = py.detach(|| kick_flight::history(&flight, kick_flight::Sampling::Samples(n))).map_err(library_error)?;
+            let trajectory = PyDict::new(py);
+            let time: Vec<f64> = h.samples.iter().map(|s| s.time).collect();
+            trajectory.set_item("time", numpy::PyArray1::from_vec(py, time))?;
+            type Get = fn(&kick_flight::FlightSample) -> [f64; 3];
+            let vectors: [(&str, Get); 3] = [("position", |s| s.position), ("velocity", |s| s.velocity), ("spin", |s| s.spin)];
+            for (name, get) in vectors {
+                let rows: Vec<Vec<f64>> = h.samples.iter().map(|s| get(s).to_vec()).collect();
+                trajectory.set_item(name, numpy::PyArray2::from_vec2(py, &rows).map_err(value_error)?)?;
+            }
+            out.set_item("trajectory", trajectory)?;
+        }
+        Ok(out)
     })
 }
 
@@ -136,7 +177,8 @@ fn three(name: &str, value: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
 /// (`kick aim --law`). `target` and `wall` go through the one argument
 /// guard (three real numbers, no bools); the solve hears Ctrl-C.
 #[pyfunction]
-#[pyo3(signature = (target, *, wall = None, from_ = None, free = None, law = None, **params))]
+#[pyo3(signature = (target, *, wall = None, from_ = None, free = None, law = None, objective = None, bounds = None, **params))]
+#[allow(clippy::too_many_arguments)]
 pub fn aim<'py>(
     py: Python<'py>,
     target: &Bound<'py, PyAny>,
@@ -144,6 +186,8 @@ pub fn aim<'py>(
     from_: Option<String>,
     free: Option<&Bound<'py, PyAny>>,
     law: Option<&str>,
+    objective: Option<String>,
+    bounds: Option<std::collections::BTreeMap<String, (f64, f64)>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     use kick_core::parameters::{SetLaw, SetParameter};
@@ -191,6 +235,8 @@ pub fn aim<'py>(
             free,
             flight,
             kick,
+            ranges: bounds.unwrap_or_default().into_iter().map(|(name, (low, high))| format!("{name}={low:?},{high:?}")).collect(),
+            objective: objective.as_deref().map(kick_flight::Objective::from_name).transpose().map_err(value_error)?,
         };
         let report = crate::interruptible(py, |cancel| {
             kick_study::aim::aim_cancellable(&request, &|| cancel.load(std::sync::atomic::Ordering::Relaxed))

@@ -174,20 +174,28 @@ fn simulate<'py>(
     })
 }
 
-/// One off-center 3D kick: the object `kick simulate3d --format json` prints.
+/// One off-center 3D kick: the object `kick simulate3d --format json` prints;
+/// with `flight`, the ball flown from the ground after it (`--flight`),
+/// `distance` one crossing plane or a list of them, the flight's other
+/// keywords among `params`.
 #[pyfunction]
-#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, **params))]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, flight = false, distance = None, **params))]
+#[allow(clippy::too_many_arguments)]
 fn simulate3d<'py>(
     py: Python<'py>,
     solver: &str,
     law: &str,
     dt: Option<&Bound<'py, PyAny>>,
+    flight: bool,
+    distance: Option<&Bound<'py, PyAny>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     guard(|| {
         let dt = params::optional_number("dt", dt)?;
-        let spec = params::kick_spec(params, crate::law(law)?)?;
-        let (object, outside) = bridge::simulate3d(&spec, solver, dt).map_err(library_error)?;
+        let (kick, rest) = params::split_flight(params, flight)?;
+        let spec = params::kick_spec(kick.as_ref(), crate::law(law)?)?;
+        let plan = params::flight_plan(flight, rest.as_ref(), distance)?;
+        let (object, outside) = bridge::simulate3d(&spec, solver, dt, plan.as_ref()).map_err(library_error)?;
         warn_outside(py, outside)?;
         convert::json_to_py(py, &object)
     })

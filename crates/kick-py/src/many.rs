@@ -33,8 +33,9 @@ pub(crate) trait Model: Sync {
     fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef>;
     /// Set a declared parameter; shapes were checked when the inputs were made.
     fn set(&self, spec: &mut Self::Spec, parameter: &'static ParameterDef, value: Value);
-    /// Output columns: name and width (1, or 3 for a vector).
-    fn columns(&self) -> &[(String, usize)];
+    /// Output columns: name and trailing axes ([]: one number a row; [3]: a
+    /// vector; [P] or [P, 3]: one per crossing plane).
+    fn columns(&self) -> &[(String, Vec<usize>)];
     /// Solve one row into `row` (the columns' values, vectors expanded);
     /// the evaluations spent (and a flag on the kept numbers), or the
     /// status and message of a failure.
@@ -54,15 +55,20 @@ impl Solved {
     }
 }
 
+/// The numbers a row of columns with these trailing axes takes.
+fn width(axes: &[usize]) -> usize {
+    axes.iter().product()
+}
+
 struct Model1d {
     solver: SolverChoice,
-    columns: Vec<(String, usize)>,
+    columns: Vec<(String, Vec<usize>)>,
 }
 
 impl Model1d {
     fn new(solver: SolverChoice) -> Model1d {
-        let mut columns: Vec<(String, usize)> = OBSERVABLES.iter().map(|(n, _)| (n.to_string(), 1)).collect();
-        columns.push(("energy_residual".into(), 1));
+        let mut columns: Vec<(String, Vec<usize>)> = OBSERVABLES.iter().map(|(n, _)| (n.to_string(), vec![])).collect();
+        columns.push(("energy_residual".into(), vec![]));
         Model1d { solver, columns }
     }
 }
@@ -82,7 +88,7 @@ macro_rules! declared_levels {
 impl Model for Model1d {
     type Spec = ScenarioSpec;
     declared_levels!(ScenarioSpec);
-    fn columns(&self) -> &[(String, usize)] {
+    fn columns(&self) -> &[(String, Vec<usize>)] {
         &self.columns
     }
     fn solve(&self, spec: &ScenarioSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
@@ -119,31 +125,106 @@ fn flatten3d(outcome: &Outcome3d, out: &mut Vec<(String, Vec<f64>)>) {
     out.push(("energy_residual".into(), vec![outcome.energy.residual()]));
 }
 
+/// The flight after each 3D kick of `simulate3d_many(flight=True)`: its
+/// plan and whether `distance` was a list (a trailing plane axis).
+struct Flown {
+    plan: kick_study::flight::FlightPlan,
+    planes: Option<usize>,
+}
+
+/// The flight's outputs after a kick, in [`kick_flight::plane_values`]'
+/// order: the landing and apex, then the crossing columns (per plane with a
+/// plane axis), and `flight_status` (the flight's status code: 0 flown,
+/// 3 refused: a ball that does not leave the ground; 1 a numerical failure).
+fn flight_columns(planes: Option<usize>, single: bool) -> Vec<(String, Vec<usize>)> {
+    let mut columns: Vec<(String, Vec<usize>)> = vec![
+        ("flight_time".into(), vec![]),
+        ("landing_point".into(), vec![2]),
+        ("apex_height".into(), vec![]),
+        ("apex_time".into(), vec![]),
+        ("landing_velocity".into(), vec![3]),
+        ("landing_spin".into(), vec![3]),
+    ];
+    let crossing = |axes: Vec<usize>, vector: Vec<usize>| -> Vec<(String, Vec<usize>)> {
+        vec![
+            ("crossed".into(), axes.clone()),
+            ("crossing_time".into(), axes.clone()),
+            ("crossing_height".into(), axes.clone()),
+            ("crossing_lateral_offset".into(), axes),
+            ("crossing_velocity".into(), vector),
+        ]
+    };
+    match planes {
+        Some(p) => columns.extend(crossing(vec![p], vec![p, 3])),
+        None if single => columns.extend(crossing(vec![], vec![3])),
+        None => {}
+    }
+    columns.push(("flight_status".into(), vec![]));
+    columns
+}
+
 struct Model3d {
     solver: Solver3d,
-    columns: Vec<(String, usize)>,
+    columns: Vec<(String, Vec<usize>)>,
+    /// Numbers of the kick's own columns (before the flight's).
+    kick_width: usize,
+    flight: Option<Flown>,
 }
 
 impl Model3d {
-    fn new(solver: Solver3d) -> PyResult<Model3d> {
+    fn new(solver: Solver3d, flight: Option<Flown>) -> PyResult<Model3d> {
         // The columns of a solved kick (the baseline on the cheap 1D path).
         let baseline = kick_3d::one_d::solve(&kick_3d::Kick3d::baseline()).map_err(library_error)?;
         let mut flat = Vec::new();
         flatten3d(&baseline, &mut flat);
-        let columns = flat.into_iter().filter(|(n, _)| n != "evaluations").map(|(n, v)| (n, v.len())).collect();
-        Ok(Model3d { solver, columns })
+        let mut columns: Vec<(String, Vec<usize>)> = flat
+            .into_iter()
+            .filter(|(n, _)| n != "evaluations")
+            .map(|(n, v)| {
+                let axes = if v.len() == 1 { vec![] } else { vec![v.len()] };
+                (n, axes)
+            })
+            .collect();
+        let kick_width = columns.iter().map(|(_, a)| width(a)).sum();
+        if let Some(f) = &flight {
+            columns.extend(flight_columns(f.planes, f.plan.rest.distance.is_some()));
+        }
+        Ok(Model3d { solver, columns, kick_width, flight })
     }
 }
 
 impl Model for Model3d {
-    type Spec = KickSpec;
-    declared_levels!(KickSpec);
-    fn columns(&self) -> &[(String, usize)] {
+    type Spec = (KickSpec, kick_flight::FlightSpec);
+    fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef> {
+        match parameters::find_at(KickSpec::LEVELS, name) {
+            Ok(p) => Ok(p),
+            Err(e) => match crate::params::flight_rest(name) {
+                Some(q) if self.flight.is_some() => Ok(q.def()),
+                Some(_) => Err(value_error(format!("`{name}` is a parameter of the flight: give flight=True"))),
+                None => Err(value_error(e)),
+            },
+        }
+    }
+    fn set(&self, spec: &mut Self::Spec, parameter: &'static ParameterDef, value: Value) {
+        match kick_flight::FlightParameter::from_name(parameter.name) {
+            Ok(q) if parameter.level == kick_core::Level::Flight => {
+                let _ = match value {
+                    Value::Number(x) => spec.1.set(q, &[x]),
+                    Value::Vector(v) => spec.1.set(q, &v),
+                    Value::Switch(_) => Ok(()),
+                };
+            }
+            _ => {
+                let _ = spec.0.set_parameter(parameter, value);
+            }
+        }
+    }
+    fn columns(&self) -> &[(String, Vec<usize>)] {
         &self.columns
     }
-    fn solve(&self, spec: &KickSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
+    fn solve(&self, spec: &Self::Spec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
         let failed = |e: kick_3d::Kick3dError| (e.status(), e.to_string());
-        let kick = spec.build().map_err(failed)?;
+        let kick = spec.0.build().map_err(failed)?;
         let outcome = self.solver.solve(&kick).map_err(failed)?;
         let mut flat = Vec::with_capacity(self.columns.len() + 1);
         flatten3d(&outcome, &mut flat);
@@ -153,7 +234,45 @@ impl Model for Model3d {
             row[at..at + values.len()].copy_from_slice(values);
             at += values.len();
         }
+        if let Some(f) = &self.flight {
+            let out = &mut row[self.kick_width..];
+            let plan = kick_study::flight::FlightPlan { rest: spec.1, planes: f.plan.planes.clone() };
+            let flown = kick_study::flight::flight_after_3d(&kick, &outcome, &spec.1).and_then(|flight| plan.fly_into(&flight, out));
+            let last = out.len() - 1;
+            match flown {
+                Ok(_) => out[last] = 0.0,
+                Err(failure) => {
+                    out.fill(f64::NAN);
+                    out[last] = f64::from(failure.status.code());
+                }
+            }
+            // `crossed` and the crossing's columns come plane by plane in
+            // `plane_values`; the outputs want each quantity over the planes.
+            if let Some(p) = f.planes {
+                regroup_planes(&mut out[kick_flight::LANDING_COLUMNS..last], p);
+            }
+        }
         Ok(Solved::new(outcome.evaluations, kick.check_validity(&outcome).err()))
+    }
+}
+
+/// `plane_values`' crossings (plane by plane, 7 numbers each) as the
+/// outputs hold them: `crossed`, `crossing_time`, `crossing_height`,
+/// `crossing_lateral_offset` each over the planes, then `crossing_velocity`
+/// plane by plane (3 each).
+fn regroup_planes(values: &mut [f64], planes: usize) {
+    let per = kick_flight::OUTCOME_COLUMNS.len() - kick_flight::LANDING_COLUMNS;
+    let by_plane: Vec<f64> = values[..per * planes].to_vec();
+    let mut at = 0;
+    for q in 0..4 {
+        for k in 0..planes {
+            values[at] = by_plane[k * per + q];
+            at += 1;
+        }
+    }
+    for k in 0..planes {
+        values[at..at + 3].copy_from_slice(&by_plane[k * per + 4..k * per + 7]);
+        at += 3;
     }
 }
 
@@ -239,7 +358,7 @@ fn solve_chunk<M: Model>(
     cancel: &AtomicBool,
 ) -> Vec<(usize, String)> {
     let Chunk { start, rows, mut columns, status, evaluations } = chunk;
-    let widths: Vec<usize> = model.columns().iter().map(|(_, w)| *w).collect();
+    let widths: Vec<usize> = model.columns().iter().map(|(_, axes)| width(axes)).collect();
     let mut row = vec![0.0; widths.iter().sum()];
     let mut index = vec![0usize; shape.len()];
     let mut scratch = Vec::with_capacity(shape.len() + 1);
@@ -369,19 +488,19 @@ pub(crate) fn run_many<'py, M: Model>(
         shapes.push((p.name, shape));
     }
     let shape = broadcast_shapes(&shapes)?;
-    // Outputs with a vector axis have one axis more than the rows.
-    let widest = model.columns().iter().find(|(_, w)| *w > 1);
-    let axes = shape.len() + usize::from(widest.is_some());
+    // Outputs with trailing axes (a vector's, the planes') have more axes than the rows.
+    let widest = model.columns().iter().max_by_key(|(_, a)| a.len()).filter(|(_, a)| !a.is_empty());
+    let axes = shape.len() + widest.map_or(0, |(_, a)| a.len());
     if axes > MAX_AXES {
         let from = shapes.iter().max_by_key(|(_, s)| s.len()).map_or("", |(n, _)| *n);
-        let (column, _) = widest.map_or(("", 1), |(c, w)| (c.as_str(), *w));
+        let column = widest.map_or("", |(c, _)| c.as_str());
         return Err(PyValueError::new_err(format!(
             "the rows' shape (from `{from}`) has {} axes, so `{column}` would have {axes}: at most {MAX_AXES}",
             shape.len()
         )));
     }
     // Every output's size before any is allocated: bytes per row, times rows.
-    let row_bytes = model.columns().iter().map(|(_, w)| w * size_of::<f64>()).sum::<usize>() + size_of::<u8>() + size_of::<u64>();
+    let row_bytes = model.columns().iter().map(|(_, a)| width(a) * size_of::<f64>()).sum::<usize>() + size_of::<u8>() + size_of::<u64>();
     let rows = shape.iter().try_fold(1usize, |n, &k| n.checked_mul(k));
     let bytes = rows.and_then(|n| n.checked_mul(row_bytes)).filter(|&b| b <= isize::MAX as usize);
     let (Some(rows), Some(_)) = (rows, bytes) else {
@@ -405,11 +524,9 @@ pub(crate) fn run_many<'py, M: Model>(
     }
 
     // Outputs, filled in place.
-    let with_axis = |w: usize| {
+    let with_axis = |trailing: &[usize]| {
         let mut s = shape.clone();
-        if w > 1 {
-            s.push(w);
-        }
+        s.extend_from_slice(trailing);
         s
     };
     // Allocated by numpy, whose failure is a MemoryError (rust-numpy's `zeros` panics).
@@ -417,8 +534,8 @@ pub(crate) fn run_many<'py, M: Model>(
         numpy.call_method1("zeros", (PyTuple::new(py, shape)?, numpy.getattr(dtype)?))
     };
     let mut outputs: Vec<Bound<'py, PyArrayDyn<f64>>> = Vec::with_capacity(model.columns().len());
-    for (_, w) in model.columns() {
-        outputs.push(zeros(with_axis(*w), "float64")?.cast_into().map_err(value_error)?);
+    for (_, axes) in model.columns() {
+        outputs.push(zeros(with_axis(axes), "float64")?.cast_into().map_err(value_error)?);
     }
     let status: Bound<'py, PyArrayDyn<u8>> = zeros(shape.clone(), "uint8")?.cast_into().map_err(value_error)?;
     let evaluations: Bound<'py, PyArrayDyn<u64>> = zeros(shape.clone(), "uint64")?.cast_into().map_err(value_error)?;
@@ -427,8 +544,8 @@ pub(crate) fn run_many<'py, M: Model>(
     let mut evaluations_guard = evaluations.readwrite();
     let contiguous = |e: numpy::AsSliceError| value_error(e);
     let mut column_chunks: Vec<std::slice::ChunksMut<f64>> = Vec::new();
-    for (guard, (_, w)) in output_guards.iter_mut().zip(model.columns()) {
-        column_chunks.push(guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK * w));
+    for (guard, (_, axes)) in output_guards.iter_mut().zip(model.columns()) {
+        column_chunks.push(guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK * width(axes)));
     }
     let mut status_chunks = status_guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK);
     let mut evaluation_chunks = evaluations_guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK);
@@ -508,24 +625,32 @@ pub fn simulate_many<'py>(
 }
 
 /// Many 3D kicks: `simulate3d`'s keywords, each a scalar or an array
-/// (vectors with a trailing axis of 3).
+/// (vectors with a trailing axis of 3); with `flight`, each ball flown from
+/// the ground after its kick, the flight's keywords broadcast too and
+/// `distance` one plane or a list of them (a trailing axis of the planes).
 #[pyfunction]
-#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, threads = None, **arrays))]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, threads = None, flight = false, distance = None, **arrays))]
+#[allow(clippy::too_many_arguments)]
 pub fn simulate3d_many<'py>(
     py: Python<'py>,
     solver: &str,
     law: &str,
     dt: Option<&Bound<'py, PyAny>>,
     threads: Option<&Bound<'py, PyAny>>,
+    flight: bool,
+    distance: Option<&Bound<'py, PyAny>>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let dt = crate::params::optional_number("dt", dt)?;
         let solver = Solver3d::with_step(solver, dt).map_err(value_error)?;
-        let model = Model3d::new(solver)?;
+        let plan = crate::params::flight_plan(flight, None, distance)?;
+        let flown = plan.map(|plan| Flown { planes: plan.planes.as_ref().map(Vec::len), plan });
+        let base_flight = flown.as_ref().map(|f| f.plan.rest).unwrap_or_default();
+        let model = Model3d::new(solver, flown)?;
         let law = crate::law(law)?;
         check_law_keywords(law, arrays)?;
         let base: KickSpec = crate::params::spec(None, law)?;
-        run_many(py, &model, base, crate::params::threads(threads)?, arrays)
+        run_many(py, &model, (base, base_flight), crate::params::threads(threads)?, arrays)
     })
 }

@@ -291,3 +291,91 @@ pub fn status_codes(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     }
     Ok(d)
 }
+
+/// The keywords of a kick and, with `flight`, of the flight after it: those
+/// of the kick's levels (`KickSpec::LEVELS`; `ball_mass`, `ball_radius` and
+/// `gravity` are the kick's), then the flight's it leaves (`air_density`,
+/// `drag_coefficient`, ...); any other keyword is refused naming the nearby
+/// ones of both.
+pub fn split_flight<'py>(
+    params: Option<&Bound<'py, PyDict>>,
+    flight: bool,
+) -> PyResult<(Option<Bound<'py, PyDict>>, Option<Bound<'py, PyDict>>)> {
+    let Some(params) = params else { return Ok((None, None)) };
+    let py = params.py();
+    let (kick, rest) = (PyDict::new(py), PyDict::new(py));
+    for (key, value) in params.iter() {
+        let name: String = key.extract()?;
+        if parameters::find_at(KickSpec::LEVELS, &name).is_ok() {
+            kick.set_item(&key, value)?;
+        } else if let Some(p) = flight_rest(&name).filter(|_| flight) {
+            rest.set_item(p.name(), value)?;
+        } else {
+            let mut valid: Vec<&'static str> = parameters::at_levels(KickSpec::LEVELS).map(|p| p.name).collect();
+            if flight {
+                valid.extend(
+                    kick_flight::FlightParameter::ALL.iter().filter(|&&q| !kick_study::flight::After::Kick3d.sets(q)).map(|q| q.name()),
+                );
+            } else if flight_rest(&name).is_some() {
+                return Err(value_error(format!("`{name}` is a parameter of the flight: give flight=True")));
+            }
+            let levels = if flight { "3D kick or its flight" } else { "3D kick" };
+            return Err(value_error(format!(
+                "unknown parameter `{name}` of the {levels}{}",
+                parameters::did_you_mean(&parameters::nearby(&name, &valid), &valid)
+            )));
+        }
+    }
+    Ok((Some(kick), Some(rest)))
+}
+
+/// The flight parameter `name` a kick leaves to its flight (not `distance`: a keyword of its own).
+pub fn flight_rest(name: &str) -> Option<kick_flight::FlightParameter> {
+    kick_flight::FlightParameter::from_name(name)
+        .ok()
+        .filter(|&q| !kick_study::flight::After::Kick3d.sets(q) && q != kick_flight::FlightParameter::Distance)
+}
+
+/// The crossing planes of keyword `distance`: None, a number, or a list of numbers.
+pub fn distances(distance: Option<&Bound<'_, PyAny>>) -> PyResult<Option<Vec<f64>>> {
+    let Some(value) = distance.filter(|d| !d.is_none()) else { return Ok(None) };
+    let (array, switches) = real_array("distance", "a number or a list of numbers, m", value)?;
+    if switches || array.ndim() > 1 {
+        return Err(PyTypeError::new_err(format!("`distance` takes a number or a list of numbers, m, got {}", described(value))));
+    }
+    Ok(Some(array.readonly().as_array().iter().copied().collect()))
+}
+
+/// The flight plan of `flight=True`: the flight keywords `rest` and the
+/// planes of `distance` (a number: the one plane, as `--distance` once; a
+/// list: each a plane, the crossing columns per plane). None without `flight`
+/// (a `distance` then refused).
+pub fn flight_plan(
+    flight: bool,
+    rest: Option<&Bound<'_, PyDict>>,
+    distance: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Option<kick_study::flight::FlightPlan>> {
+    let planes = distances(distance)?;
+    if !flight {
+        return match planes {
+            Some(_) => Err(value_error("`distance` is a plane of the flight: give flight=True")),
+            None => Ok(None),
+        };
+    }
+    let mut spec = kick_flight::FlightSpec::default();
+    if let Some(rest) = rest {
+        for (key, v) in rest.iter() {
+            let name: String = key.extract()?;
+            if let (Some(q), false) = (flight_rest(&name), v.is_none()) {
+                spec.set(q, &value(q.def(), &v)?.numbers()).map_err(value_error)?;
+            }
+        }
+    }
+    let scalar = distance.is_some_and(|d| !d.is_none() && d.extract::<f64>().is_ok());
+    let plan = match planes {
+        None => kick_study::flight::FlightPlan::new(spec),
+        Some(list) if scalar => kick_study::flight::FlightPlan::with_distances(spec, &list).map_err(value_error)?,
+        Some(list) => kick_study::flight::FlightPlan::planes(spec, list).map_err(value_error)?,
+    };
+    Ok(Some(plan))
+}

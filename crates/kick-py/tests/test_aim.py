@@ -24,7 +24,7 @@ def test_the_aimed_launch_flown_again_reaches_the_target():
 
 def test_from_the_kick():
     out = kick.aim([25.0, -2.0, 1.8], from_="kick", wall=(9.15, 1.9, 1.0))
-    assert [p["name"] for p in out["parameters"]] == ["foot_speed", "lateral_offset", "contact_depth", "heading"]
+    assert [p["name"] for p in out["parameters"]] == ["foot_speed", "offset", "contact_depth", "heading"]
     assert out["miss"] <= 1e-6 and out["kick"]["contact_time"] > 0.0
     # Kick keywords reach the kick: a heavier foot swings slower to the same target.
     heavy = kick.aim([25.0, -2.0, 1.8], from_="kick", wall=(9.15, 1.9, 1.0), foot_mass=6.0)
@@ -33,9 +33,36 @@ def test_from_the_kick():
         kick.aim([25.0, -2.0, 1.8], foot_mass=6.0)
 
 
+def test_a_keyword_holds_its_parameter_under_any_law():
+    # "With a 5 cm offset, which foot speed, depth and heading?" on the shell ball at 0.9 bar.
+    out = kick.aim([25.0, -2.0, 1.8], from_="kick", offset=0.05, law="shell", inflation_pressure=9.0e4)
+    assert [p["name"] for p in out["parameters"]] == ["foot_speed", "contact_depth", "heading"]
+    solved = dict(out["kick"]["parameters"])
+    assert solved["offset"] == 0.05 and solved["inflation_pressure"] == 9.0e4
+    assert "stiffness" not in solved  # the shell ball's law uses no k, c, n
+    assert out["family"]["dimension"] == 1 and out["miss"] <= 1e-6
+    assert out["wall_pass"] in ("over", "beside")
+
+
+def test_an_objective_picks_one_member_and_bounds_bound_it():
+    target = (25.0, 2.6, 2.0)
+    slow = kick.aim(target, spin=(0.0, 0.0, 50.0), objective="min-speed")
+    quick = kick.aim(target, spin=(0.0, 0.0, 50.0), objective="min-time")
+    speed = lambda out: math.hypot(*out["launch_velocity"])
+    assert slow["family"]["objective"] == "min-speed" and quick["family"]["objective"] == "min-time"
+    assert speed(slow) < speed(quick)
+    assert quick["outcome"]["crossing"]["time"] < slow["outcome"]["crossing"]["time"]
+    assert speed(slow) <= slow["family"]["launch_speed"][0] + 1e-3
+    bounded = kick.aim(target, spin=(0.0, 0.0, 50.0), bounds={"speed": (26.0, 27.0)})
+    p = {q["name"]: q for q in bounded["parameters"]}["speed"]
+    assert (p["low"], p["high"]) == (26.0, 27.0) and 26.0 <= p["value"] <= 27.0
+    with pytest.raises(ValueError, match="min-foot-speed"):
+        kick.aim(target, spin=(0.0, 0.0, 50.0), objective="min-foot-speed")
+
+
 def test_no_solution_and_bad_input_are_value_errors():
     with pytest.raises(ValueError, match="no solution within the parameters' ranges"):
-        kick.aim((25.0, 0.0, 1.5), speed=12.0, free=["launch_angle", "azimuth"])
+        kick.aim((25.0, 0.0, 1.5), speed=12.0)
     with pytest.raises(ValueError, match="`target`"):
         kick.aim((25.0, 0.0, 10.0))
     with pytest.raises(ValueError, match="`target` takes three numbers"):

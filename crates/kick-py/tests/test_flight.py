@@ -88,3 +88,19 @@ def test_launch_coefficients_follow_the_spin():
     assert spun["spin_parameter"] == pytest.approx(0.2, rel=1e-12)
     assert spun["drag_coefficient"] == pytest.approx(0.4127 * 0.2**0.3056, rel=2e-3)
     assert spun["reynolds"] == pytest.approx(1.225 * v * 0.22 / 1.7894e-5, rel=1e-4)
+
+
+def test_the_trajectory_comes_as_arrays_and_several_planes_at_once():
+    out = kick.flight(speed=27.0, launch_angle=16.0, spin=(0.0, 0.0, 56.5), samples=101, distance=[9.15, 25.0])
+    t = out["trajectory"]
+    assert t["time"].shape == (101,) and t["position"].shape == (101, 3)
+    assert t["velocity"].shape == (101, 3) and t["spin"].shape == (101, 3)
+    assert t["time"][0] == 0.0 and t["time"][-1] == out["flight_time"]
+    assert t["position"][-1][:2].tolist() == list(out["landing_point"])
+    # Each plane's crossing is the one distance's, and lies on the trajectory's path.
+    for c in out["crossings"]:
+        one = kick.flight(speed=27.0, launch_angle=16.0, spin=(0.0, 0.0, 56.5), distance=c["distance"])["crossing"]
+        assert c["time"] == one["time"] and c["height"] == one["height"] and c["lateral_offset"] == one["lateral_offset"]
+        assert t["position"][:, 0].min() < c["distance"] < t["position"][:, 0].max()
+    with pytest.raises(ValueError, match="samples"):
+        kick.flight(speed=27.0, launch_angle=16.0, samples=1)

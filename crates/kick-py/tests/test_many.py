@@ -85,6 +85,20 @@ def test_rows_equal_the_single_call_bit_for_bit():
             assert out["evaluations"][i, j] == one["evaluations"]
 
 
+def test_the_shell_balls_pressure_is_a_broadcast_keyword():
+    """Every declared parameter broadcasts: the shell ball's pressure in 1D and
+    3D rows equals the single call; a harder ball is in contact for less time
+    (the 1D exit speed is the law's restitution's, the same at every pressure)
+    and, struck off-centre, leaves faster."""
+    pressure = np.array([6.0e4, 8.5e4, 1.1e5])
+    one_d = kick.simulate_many(law="shell", inflation_pressure=pressure)
+    three_d = kick.simulate3d_many(law="shell", inflation_pressure=pressure, offset=0.03)
+    for i, p in enumerate(pressure):
+        assert one_d["v_ball_out"][i] == kick.simulate(law="shell", inflation_pressure=p)["v_ball_out"]
+        assert three_d["speed"][i] == kick.simulate3d(law="shell", inflation_pressure=p, offset=0.03)["speed"]
+    assert np.all(np.diff(one_d["contact_time"]) < -1e-4) and np.all(np.diff(three_d["speed"]) > 0.01)
+
+
 def test_failed_rows_get_a_status_and_the_cli_message(kick_bin):
     drive = np.array([0.0, 1e5, 0.0, 0.0])
     mass = np.array([3.0, 3.0, -1.0, 3.0])
@@ -142,6 +156,27 @@ def test_3d_rows_equal_the_single_call_and_vectors_trail():
     extents = np.array([[0.03, 0.12, 0.05], [0.03, 0.10, 0.04]])
     rows = kick.simulate3d_many(offset=0.03, foot_half_extents=extents)
     assert rows["speed"][1] == kick.simulate3d(offset=0.03, foot_half_extents=tuple(extents[1]))["speed"]
+
+
+def test_3d_rows_fly_with_broadcast_air_and_a_plane_axis():
+    offset = np.array([0.0, 0.04])
+    air = np.array([[1.0], [1.225]])
+    out = kick.simulate3d_many(offset=offset, contact_depth=0.03, flight=True, distance=[9.15, 25.0], air_density=air)
+    assert out["flight_time"].shape == (2, 2) and out["landing_point"].shape == (2, 2, 2)
+    assert out["crossing_height"].shape == (2, 2, 2) and out["crossing_velocity"].shape == (2, 2, 2, 3)
+    assert (out["flight_status"] == 0).all()
+    for i in range(2):
+        for j in range(2):
+            one = kick.simulate3d(offset=offset[j], contact_depth=0.03, flight=True, distance=[9.15, 25.0], air_density=air[i, 0])
+            assert out["flight_time"][i, j] == one["flight"]["flight_time"]
+            for k, c in enumerate(one["flight"]["crossings"]):
+                assert out["crossing_height"][i, j, k] == c["height"]
+                assert out["crossing_lateral_offset"][i, j, k] == c["lateral_offset"]
+                np.testing.assert_array_equal(out["crossing_velocity"][i, j, k], c["velocity"])
+    # A ball that does not leave the ground: its flight refused, its kick kept.
+    flat = kick.simulate3d_many(friction=[0.3, 0.6], flight=True, distance=25.0)
+    assert flat["status"].tolist() == [0, 0] and flat["flight_status"].tolist() == [STATUS["refused"]] * 2
+    assert np.isnan(flat["crossing_height"]).all() and not np.isnan(flat["speed"]).any()
 
 
 def test_a_million_rows_allocate_only_the_output_arrays():

@@ -40,6 +40,8 @@ CASES_3D = [
     # The instep's keywords: a face turned by yaw and pitch, a convex cap, the patch contact.
     {"offset": 0.03, "face_yaw": 5.0, "face_pitch": -3.0},
     {"offset": 0.05, "law": "shell", "face_yaw": 0.0, "instep_radius": 0.15, "patch_contact": True, "friction": 0.0},
+    # The foot's line below and beside the centre on a rising path (offset, contact_depth: one definition).
+    {"offset": 0.04, "contact_depth": 0.03, "approach_angle": 10.0},
 ]
 
 
@@ -49,6 +51,22 @@ def test_simulate3d_equals_the_cli(kick_bin, case):
     result = kick.simulate3d(**case)
     assert result["launch_velocity"].shape == (3,) and result["spin"].shape == (3,)
     same(result, expected)
+
+
+def test_simulate3d_flies_its_kick_as_the_cli(kick_bin):
+    """`flight=True` is `--flight`: the ball from the ground, a list of distances the planes."""
+    case = {"offset": 0.04, "contact_depth": 0.03, "air_density": 1.1}
+    expected = cli(kick_bin, "simulate3d", "--format", "json", *flags(**case), "--flight", "--distance", "9.15", "--distance", "25")
+    result = kick.simulate3d(flight=True, distance=[9.15, 25.0], **case)
+    same(result, expected)
+    crossings = result["flight"]["crossings"]
+    assert [c["distance"] for c in crossings] == [9.15, 25.0]
+    # Each plane is the crossing a flight with that one distance gives.
+    for c in crossings:
+        one = kick.simulate3d(flight=True, distance=c["distance"], **case)["flight"]["crossing"]
+        same(c, _plain(one))
+    with pytest.raises(ValueError, match="give flight=True"):
+        kick.simulate3d(air_density=1.1)
 
 
 ERRORS = [

@@ -349,6 +349,9 @@ pub struct SweepWriter {
     file: File,
     parameters: Vec<Dataset>,
     parameter_buffer: Vec<Vec<f64>>,
+    /// Rows pushed since the last flush (a table may have no parameter
+    /// columns: a 3D experiment without `[[sweep]]`).
+    pending: usize,
     sets: Vec<SetWriter>,
     rows_written: usize,
     // After `file`: the file is closed before an abandoned temporary is removed.
@@ -437,6 +440,7 @@ impl SweepWriter {
             staged,
             file,
             parameter_buffer: vec![Vec::with_capacity(CHUNK_ROWS); parameter_datasets.len()],
+            pending: 0,
             parameters: parameter_datasets,
             sets: set_writers,
             rows_written: 0,
@@ -450,7 +454,7 @@ impl SweepWriter {
 
     /// Rows pushed so far.
     pub fn rows(&self) -> usize {
-        self.rows_written + self.parameter_buffer.first().map_or(0, Vec::len)
+        self.rows_written + self.pending
     }
 
     /// Start a row with its parameter values (in the order given to `create`).
@@ -461,12 +465,13 @@ impl SweepWriter {
                 format!("row has {} parameter values, the file {} columns", values.len(), self.parameters.len()),
             ));
         }
-        if self.parameter_buffer.first().map_or(0, Vec::len) >= CHUNK_ROWS {
+        if self.pending >= CHUNK_ROWS {
             self.flush()?;
         }
         for (buffer, &v) in self.parameter_buffer.iter_mut().zip(values) {
             buffer.push(v);
         }
+        self.pending += 1;
         Ok(())
     }
 
@@ -538,7 +543,7 @@ impl SweepWriter {
     }
 
     fn flush(&mut self) -> Result<(), H5Error> {
-        let pending = self.parameter_buffer.first().map_or(0, Vec::len);
+        let pending = self.pending;
         let path = self.path.clone();
         for (i, set) in self.sets.iter().enumerate() {
             if set.status_buffer.len() != pending {
@@ -574,6 +579,7 @@ impl SweepWriter {
             }
         }
         self.rows_written = end;
+        self.pending = 0;
         Ok(())
     }
 

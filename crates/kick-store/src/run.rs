@@ -174,7 +174,7 @@ fn receive_histories(
             }
         }
         let scenario = level.kicks.scenarios.scenario(first + row as u64);
-        level.fill_row(&scenario, &outcomes, &mut table_row);
+        level.fill_row(first + row as u64, &scenario, &outcomes, &mut table_row);
         writer.push_row(&table_row)?;
         bar.inc(1);
     }

@@ -176,6 +176,21 @@ fn status_of(path: &str) -> Option<String> {
     Some(format!("{}/outcomes/status", &path[..at]))
 }
 
+/// The `crossed` column that says which rows of the flight's crossing
+/// column `path` hold numbers (the ball lands before the plane: NaN with
+/// status 0): `crossed`, or `crossed_k` for plane k of several.
+fn crossed_of(path: &str) -> Option<String> {
+    let (group, name) = path.rsplit_once('/')?;
+    let crossing = &kick_flight::OUTCOME_COLUMNS[kick_flight::LANDING_COLUMNS + 1..];
+    crossing.iter().find_map(|(base, _)| {
+        if name == *base {
+            return Some(format!("{group}/crossed"));
+        }
+        let plane = name.strip_prefix(base)?.strip_prefix('_')?;
+        plane.chars().all(|c| c.is_ascii_digit()).then(|| format!("{group}/crossed_{plane}"))
+    })
+}
+
 /// Every dataset below `group` (at `prefix`), histories aside.
 fn collect(group: &Group, prefix: &str, path: &Path, out: &mut Vec<Meta>, histories: &mut Vec<String>) -> Result<(), ShardError> {
     for name in group.member_names().map_err(h5(path))? {
@@ -559,7 +574,16 @@ impl Merger<'_> {
                     let offset = if d.path.ends_with("failures/index") { piece.rows.start } else { 0 };
                     let status = status_of(&d.path).and_then(|s| statuses.iter().find(|(p, _)| *p == s)).map(|(_, v)| v.as_slice());
                     let limit = if d.path.ends_with("failures/index") { Some(rows as u64) } else { None };
-                    *at += self.append(piece, &source, &target, &d.path, *at, offset, Some((status.unwrap_or(&[]), limit)))?;
+                    // A crossing column is NaN where its plane was not crossed, the row solved.
+                    let crossed: Option<Vec<u8>> = crossed_of(&d.path)
+                        .and_then(|c| from.dataset(&c).ok())
+                        .and_then(|c| c.read_raw::<f64>().ok())
+                        .map(|c| c.iter().map(|&x| if x == 1.0 { 0 } else { u8::MAX }).collect());
+                    let status: Vec<u8> = match (status, crossed) {
+                        (Some(s), Some(c)) => s.iter().zip(c).map(|(&s, c)| s.max(c)).collect(),
+                        (s, _) => s.unwrap_or(&[]).to_vec(),
+                    };
+                    *at += self.append(piece, &source, &target, &d.path, *at, offset, Some((&status, limit)))?;
                 }
                 _ => {
                     if !same_content(&source, &target).map_err(h5(&piece.path))? {
@@ -912,6 +936,12 @@ mod tests {
                     seed: 5,
                     out: dir.join("sweep/k.h5"),
                     fixed,
+                    // A range of the kick's and of the flight's, and two planes: the merge redraws them.
+                    ranges: kick_study::sample::Ranges::parse(&["contact_depth=0,0.03".into(), "air_density=1.1,1.2".into()], |n| {
+                        crate::sweep3d::find_range(n, true)
+                    })
+                    .unwrap(),
+                    flight: Some(kick_study::flight::FlightPlan::planes(Default::default(), vec![9.15, 25.0]).unwrap()),
                     shard: Some(s.to_string()),
                     threads: None,
                     compress: Default::default(),

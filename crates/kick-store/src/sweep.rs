@@ -12,7 +12,7 @@ use crate::error::StoreError;
 use crate::experiment::MAX_SCENARIOS;
 use crate::limits::LimitError;
 use crate::printable::Printable;
-use crate::sample::{ranges, SampledSweep};
+use crate::sample::SampledSweep;
 use crate::shard::Shard;
 use crate::{Experiment, Output, Scenarios};
 use kick_compliant::{Auto, SolverChoice};
@@ -37,6 +37,8 @@ pub struct SweepSettings {
     pub out: PathBuf,
     /// Parameters held fixed, and the law of every scenario.
     pub fixed: ScenarioSpec,
+    /// Ranges drawn from instead of the declared ones (`--range`, parsed).
+    pub ranges: kick_study::sample::Ranges,
     /// `--shard I/N` as given: only that slice of the samples.
     pub shard: Option<String>,
     /// `--threads`: worker threads (default: one per core).
@@ -116,7 +118,8 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
     let target = SweepTarget::check(settings.samples, &settings.out, settings.shard.as_deref(), settings.threads)?;
     let SweepTarget { name, directory, .. } = target.clone();
     let solver = SolverChoice::with_step(&settings.solver, settings.dt)?;
-    let sweep = SampledSweep { samples: settings.samples, seed: settings.seed, fixed: settings.fixed };
+    let sweep = SampledSweep { samples: settings.samples, seed: settings.seed, fixed: settings.fixed, ranges: settings.ranges.clone() };
+    sweep.check()?;
     sweep.scenario(0)?;
     // The provenance keeps what made the file: the command and the ranges.
     let mut fixed: String =
@@ -127,6 +130,9 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
     for (p, v) in settings.fixed.given_ball() {
         fixed.push_str(&format!(" {} {v}", p.flag()));
     }
+    for r in &settings.ranges.0 {
+        fixed.push_str(&format!(" --range {}={:?},{:?}", r.parameter.name, r.range.from, r.range.to));
+    }
     let text = format!(
         "# kick sweep --samples {} --seed {} --solver {}{} --law {}{fixed}\n# ranges (a parameter given is fixed):\n{}\n\
          # auto paths: no drive and c = 0 or n = 1 -> closed-form; otherwise the paper's law or the shell ball (drive >= 0) -> series; another law -> reduced\n",
@@ -135,7 +141,11 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
         settings.solver,
         settings.dt.map(|dt| format!(" --dt {dt}")).unwrap_or_default(),
         settings.fixed.law.unwrap_or(LawKind::PowerLaw).name(),
-        ranges().lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n")
+        kick_study::sample::describe_ranges(sweep.parameters(), &sweep.ranges, settings.fixed.law.unwrap_or(LawKind::PowerLaw))
+            .lines()
+            .map(|l| format!("#   {l}"))
+            .collect::<Vec<_>>()
+            .join("\n")
     );
     let experiment = Experiment {
         name: name.clone(),
@@ -146,7 +156,7 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
         output: Output::Summary,
         flight: None,
         compress: settings.compress,
-        kicks: Kicks::OneD(Kicks1d { solvers: vec![solver], scenarios: Scenarios::Sampled(sweep) }),
+        kicks: Kicks::OneD(Kicks1d { solvers: vec![solver], scenarios: Scenarios::Sampled(sweep.clone()) }),
     };
     let started = std::time::Instant::now();
     let summary = match target.shard {

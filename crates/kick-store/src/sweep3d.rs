@@ -1,28 +1,35 @@
-//! `kick sweep3d --samples N --seed S --out FILE.h5 [--compress [LEVEL]]`:
-//! random off-center kicks around the baseline, solved in parallel, written
-//! to one HDF5 file (compressed: [`crate::h5::Compression`]).
+//! `kick sweep3d --samples N --seed S --out FILE.h5 [--range NAME=LOW,HIGH]...
+//! [--flight [--distance D]...] [--compress [LEVEL]]`: random off-center
+//! kicks around the baseline, solved (and flown) in parallel, written to one
+//! HDF5 file (compressed: [`crate::h5::Compression`]).
 //!
-//! Kick `i` of seed `s` ([`SampledKicks`]): offset, approach angle, friction
-//! and foot mass from the off-center box (`kick_3d::models::OffCenterBox`, the
-//! box where the accurate path states its speed and accuracy), the other 1D
-//! parameters from their declared sampling ranges (`kick_core::parameters`),
-//! every other 3D parameter at its default. A parameter given on the command
-//! line is held there instead. Rows are pure functions of (seed, index) and
-//! are written in index order, so the data do not depend on the thread count.
+//! Kick `i` of seed `s` ([`SampledKicks`], kick-study's `level::sampled_3d`):
+//! offset, approach angle, friction and foot mass from the off-center box
+//! (`kick_3d::models::OffCenterBox`, the box where the accurate path states
+//! its speed and accuracy), every other parameter with a sampling range
+//! from it (`--range`, else the declared one: the 1D parameters, the
+//! tangential spring, the shell ball's pressure under `--law shell`), every
+//! other parameter at its default. A parameter given on the command line is
+//! held there instead. Rows are pure functions of (seed, index) and are
+//! written in index order, so the data do not depend on the thread count.
 //! With `--shard I/N` only samples `floor(I*N_s/N) .. floor((I+1)*N_s/N)` are
 //! solved, into `NAME.shard-I-of-N.h5` (file rows from 0; see [`crate::shard`]
 //! for the merge).
 //!
 //! The file is a sweep table ([`crate::h5`], the one result layout): one
-//! row per kick, `/parameters/<name>` every declared 1D and 3D parameter
-//! (vectors as `_x`, `_y`, `_z` columns, switches 0/1, restitution NaN
-//! under the paper's law; each with `symbol` and `description` attributes),
-//! `/outcomes/<name>` kick-3d's [`kick_3d::OBSERVABLES_3D`] of the set
-//! `auto-3d`, status codes of `kick_core::Status`; root attributes `level =
-//! "3d"`, `law` (the set's setting), `seed` and `samples` (the sweep's; `rows` is the file's),
-//! and a shard's attributes ([`crate::shard`]). The provenance's experiment
-//! text ends with the held spec exactly (`# held:`, then `#   name = value`
-//! TOML lines), from which `kick merge` redraws every row's parameters.
+//! row per kick, `/parameters/<name>` every declared parameter the kicks'
+//! law uses (vectors as `_x`, `_y`, `_z` columns, switches 0/1; the
+//! instep's only when one is given; each with `symbol` and `description`
+//! attributes) and every flight parameter drawn, `/outcomes/<name>`
+//! kick-3d's [`kick_3d::OBSERVABLES_3D`] of the set `auto-3d` and, with
+//! `--flight`, the set `auto-3d+flight` (the flight from the ground after
+//! the kick, `kick_study::flight::FlightPlan::columns`), status codes of
+//! `kick_core::Status`; root attributes `level = "3d"`, `law` (the set's
+//! setting), `seed` and `samples` (the sweep's; `rows` is the file's), and a
+//! shard's attributes ([`crate::shard`]). The provenance's experiment text
+//! ends with the held spec exactly (`# held:`, then `#   name = value` TOML
+//! lines, with `[range]` and `[flight]` tables), from which `kick merge`
+//! redraws every row's parameters.
 
 use crate::error::StoreError;
 use crate::h5::{write_str_attr, write_u64_attr, Compression, H5Error};
@@ -32,10 +39,12 @@ use crate::provenance::Provenance;
 use crate::run::{create_table, fill_table, finish_table, RunError};
 use crate::sweep::SweepTarget;
 use kick_3d::KickSpec;
-use kick_core::parameters::{self, SetParameter, Shape};
-use kick_core::{Parameter, Status};
-pub use kick_study::level::sampled_3d::{solved_value, SampledKicks, SampledSweep3d};
+use kick_core::parameters::{self, SetParameter};
+use kick_core::Status;
+use kick_study::flight::FlightPlan;
+pub use kick_study::level::sampled_3d::{SampledKicks, SampledSweep3d};
 use kick_study::level::Level;
+use kick_study::sample::Ranges;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -49,6 +58,10 @@ pub struct Sweep3dSettings {
     pub out: PathBuf,
     /// Parameters held fixed instead of drawn, and the normal contact law.
     pub fixed: KickSpec,
+    /// Ranges drawn from instead of the box's and the declared ones (`--range`, parsed).
+    pub ranges: Ranges,
+    /// `--flight`: each kick flown from the ground after it.
+    pub flight: Option<FlightPlan>,
     /// `--shard I/N` as given: only that slice of the samples (see [`crate::sweep`]).
     pub shard: Option<String>,
     /// `--threads`: worker threads (default: one per core).
@@ -69,6 +82,9 @@ pub struct Sweep3dReport {
     pub path: PathBuf,
     /// Rows per status other than separated: (status name, count).
     pub not_separated: Vec<(&'static str, u64)>,
+    /// With `--flight`: the rows flown, and those not flown per status (a
+    /// kick that failed, or a ball that does not leave the ground: refused).
+    pub flown: Option<(u64, Vec<(&'static str, u64)>)>,
     /// With `--shard`: which shard and samples.
     pub shard: Option<String>,
 }
@@ -77,14 +93,10 @@ pub struct Sweep3dReport {
 pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> {
     let target = SweepTarget::check(settings.samples, &settings.out, settings.shard.as_deref(), settings.threads)?;
     let rows = target.rows.end - target.rows.start;
-    limits::check_rows(
-        "--samples",
-        settings.samples,
-        rows,
-        SampledSweep3d { kicks: SampledKicks { seed: settings.seed, fixed: settings.fixed }, samples: settings.samples }.bytes_per_row(),
-        &target.directory,
-    )?;
-    let kicks = SampledKicks { seed: settings.seed, fixed: settings.fixed };
+    let kicks = SampledKicks { seed: settings.seed, fixed: settings.fixed, ranges: settings.ranges.clone() };
+    kicks.check(settings.flight.as_ref())?;
+    let level = SampledSweep3d::new(kicks.clone(), settings.samples, settings.flight.clone());
+    limits::check_rows("--samples", settings.samples, rows, level.bytes_per_row(), &target.directory)?;
     // A held value the model refuses is refused before the run, and so is a
     // held damping or restitution the law would ignore (the drawn damping is
     // the sampler's, not the user's).
@@ -92,33 +104,33 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> 
     kicks.spec(0).build_drawn()?;
     let law = settings.fixed.scenario.law.unwrap_or(kick_core::LawKind::PowerLaw);
     let mut given = String::new();
-    for p in parameters::at_levels(KickSpec::ROW_LEVELS) {
-        let value = solved_value(p, &settings.fixed, None);
-        let held = match p.name {
-            "offset" => settings.fixed.kick3d.offset.is_some(),
-            "approach_angle" => settings.fixed.kick3d.approach_angle_deg.is_some(),
-            "friction" => settings.fixed.kick3d.friction.is_some(),
-            _ => Parameter::ALL.iter().any(|q| q.def().name == p.name && settings.fixed.scenario.get(*q).is_some()),
-        };
-        if held {
-            let _ = write!(given, " {} {}", p.flag(), value[0]);
+    for p in parameters::at_levels(KickSpec::LEVELS) {
+        if let Some(value) = settings.fixed.value(p) {
+            let shown: Vec<String> = value.numbers().iter().map(|x| x.to_string()).collect();
+            let _ = write!(given, " {} {}", p.flag(), shown.join(","));
         }
     }
-    for (p, v) in settings.fixed.scenario.given_ball() {
-        let _ = write!(given, " {} {v}", p.flag());
+    for r in &settings.ranges.0 {
+        let _ = write!(given, " --range {}={:?},{:?}", r.parameter.name, r.range.from, r.range.to);
+    }
+    if let Some(plan) = &settings.flight {
+        let _ = write!(given, " --flight");
+        for d in plan.distances() {
+            let _ = write!(given, " --distance {d:?}");
+        }
     }
     let text = format!(
         "# kick sweep3d --samples {} --seed {} --law {}{given}\n# ranges (a parameter given is held):\n{}\n{}",
         settings.samples,
         settings.seed,
         law.name(),
-        SampledKicks::ranges().lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n"),
-        held_text(&settings.fixed)
+        kicks.describe_ranges().lines().map(|l| format!("#   {l}")).collect::<Vec<_>>().join("\n"),
+        held_text(&settings.fixed, &settings.ranges, settings.flight.as_ref())
     );
     let provenance = Provenance::now(&target.name, &format!("kick sweep3d (seed {})", settings.seed), &text);
     let started = std::time::Instant::now();
     let cpu_started = cpu_seconds();
-    let (path, not_separated) = write(&target, &provenance, &kicks, settings.compress)?;
+    let (path, not_separated, flown) = write(&target, &provenance, &level, settings.compress)?;
     Ok(Sweep3dReport {
         kicks: rows,
         shard: target.describe_shard(),
@@ -127,6 +139,7 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> 
         threads: rayon::current_num_threads(),
         path,
         not_separated,
+        flown,
     })
 }
 
@@ -134,12 +147,27 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> 
 const HELD: &str = "# held:";
 
 /// The held spec, every given value exactly (TOML, `#   name = value`
-/// lines under [`HELD`]), so a merge can redraw the sweep's rows; nothing
-/// (and no check at the merge) should it not serialize.
-fn held_text(fixed: &KickSpec) -> String {
+/// lines under [`HELD`]; the ranges as `[range]` `name = [low, high]`, the
+/// flight as `[flight]` with its `distances`), so a merge can redraw the
+/// sweep's rows; nothing (and no check at the merge) should it not serialize.
+fn held_text(fixed: &KickSpec, ranges: &Ranges, flight: Option<&FlightPlan>) -> String {
     let table = || -> Option<String> {
         let mut table = toml::Table::try_from(fixed.scenario).ok()?;
         table.extend(toml::Table::try_from(fixed.kick3d).ok()?);
+        if !ranges.0.is_empty() {
+            let mut range = toml::Table::new();
+            for r in &ranges.0 {
+                range.insert(r.parameter.name.into(), toml::Value::Array(vec![r.range.from.into(), r.range.to.into()]));
+            }
+            table.insert("range".into(), toml::Value::Table(range));
+        }
+        if let Some(plan) = flight {
+            let mut rest = toml::Table::try_from(plan.rest).ok()?;
+            if let Some(planes) = &plan.planes {
+                rest.insert("distances".into(), toml::Value::Array(planes.iter().map(|&d| d.into()).collect()));
+            }
+            table.insert("flight".into(), toml::Value::Table(rest));
+        }
         toml::to_string(&table).ok()
     };
     let Some(lines) = table() else { return String::new() };
@@ -158,10 +186,29 @@ pub(crate) fn sampled_sweep(text: &str, seed: u64, samples: u64) -> Option<Sampl
     let lines: Vec<&str> = held.lines().map(|l| l.strip_prefix("#   ")).collect::<Option<_>>()?;
     let table: toml::Table = lines.join("\n").parse().ok()?;
     let mut fixed = KickSpec::default();
+    let mut ranges = Vec::new();
+    let mut flight = None;
     for (name, value) in table {
         let value = match value {
             toml::Value::String(law) if name == "law" => {
                 fixed.scenario.law = Some(kick_core::LawKind::from_name(&law).ok()?);
+                continue;
+            }
+            toml::Value::Table(given) if name == "range" => {
+                for (p, bounds) in given {
+                    let bounds: Vec<f64> = bounds.as_array()?.iter().map(|x| x.as_float()).collect::<Option<_>>()?;
+                    ranges.push(format!("{p}={:?},{:?}", bounds.first()?, bounds.get(1)?));
+                }
+                continue;
+            }
+            toml::Value::Table(mut rest) if name == "flight" => {
+                let planes: Option<Vec<f64>> =
+                    rest.remove("distances").map(|d| d.as_array().map(|a| a.iter().filter_map(toml::Value::as_float).collect())).flatten();
+                let rest: kick_flight::FlightSpec = toml::Value::Table(rest).try_into().ok()?;
+                flight = Some(match planes {
+                    Some(planes) => FlightPlan::planes(rest, planes).ok()?,
+                    None => FlightPlan::new(rest),
+                });
                 continue;
             }
             toml::Value::Float(x) => parameters::Value::Number(x),
@@ -175,7 +222,26 @@ pub(crate) fn sampled_sweep(text: &str, seed: u64, samples: u64) -> Option<Sampl
         };
         fixed.set_named(&name, value).ok()?;
     }
-    Some(SampledSweep3d { kicks: SampledKicks { seed, fixed }, samples })
+    let ranges = Ranges::parse(&ranges, |name| find_range(name, flight.is_some())).ok()?;
+    Some(SampledSweep3d::new(SampledKicks { seed, fixed, ranges }, samples, flight))
+}
+
+/// The parameter a `--range` of `kick sweep3d` names: one of the kick's
+/// (their levels), or with `--flight` one the flight after it takes.
+pub fn find_range(name: &str, flight: bool) -> Result<&'static parameters::ParameterDef, String> {
+    let kick = parameters::find_at(KickSpec::LEVELS, name);
+    match (kick, flight) {
+        (Ok(p), _) => Ok(p),
+        (Err(e), true) => kick_flight::FlightParameter::from_name(name)
+            .ok()
+            .filter(|&q| !kick_study::flight::After::Kick3d.sets(q))
+            .map(|q| q.def())
+            .ok_or_else(|| format!("{e}, nor a flight parameter the kick leaves")),
+        (Err(_), false) if kick_flight::FlightParameter::from_name(name).is_ok() => {
+            Err(format!("`{name}` is a parameter of the flight: add --flight to fly the kicks"))
+        }
+        (Err(e), false) => Err(e.to_string()),
+    }
 }
 
 /// User plus system CPU time of this process so far, s (None where it cannot be asked).
@@ -198,24 +264,20 @@ pub fn cpu_seconds() -> Option<f64> {
 fn write(
     target: &SweepTarget,
     provenance: &Provenance,
-    kicks: &SampledKicks,
+    level: &SampledSweep3d,
     compress: Compression,
-) -> Result<(PathBuf, Vec<(&'static str, u64)>), RunError> {
+) -> Result<(PathBuf, Vec<(&'static str, u64)>, Option<(u64, Vec<(&'static str, u64)>)>), RunError> {
     let out = target.path.as_path();
     let rows = target.rows.end - target.rows.start;
-    let level = SampledSweep3d { kicks: *kicks, samples: target.samples };
-    let mut writer = create_table(&level, out, provenance, rows, compress)?;
+    let mut writer = create_table(level, out, provenance, rows, compress)?;
     let file = writer.file().clone();
     write_str_attr(&file, out, "level", "3d")?;
-    write_u64_attr(&file, out, "seed", kicks.seed)?;
+    write_u64_attr(&file, out, "seed", level.kicks.seed)?;
     write_u64_attr(&file, out, "samples", target.samples)?;
     // Symbol and meaning of every parameter column, from its declaration.
-    for p in parameters::at_levels(KickSpec::ROW_LEVELS) {
-        let names: Vec<String> = match p.shape {
-            Shape::Vector3 => ["x", "y", "z"].map(|a| format!("{}_{a}", p.name)).to_vec(),
-            _ => vec![p.name.to_string()],
-        };
-        for name in names {
+    let flight: Vec<&'static parameters::ParameterDef> = level.kicks.flight_parameters();
+    for p in level.kicks.row_parameters().into_iter().chain(flight) {
+        for name in p.columns() {
             let d = file.dataset(&format!("parameters/{name}")).map_err(|e| H5Error::hdf5(out, &e))?;
             write_str_attr(&d, out, "symbol", p.symbol)?;
             write_str_attr(&d, out, "description", p.doc)?;
@@ -227,12 +289,20 @@ fn write(
     drop(file);
     let bar = crate::run::progress(rows, true);
     bar.set_message("sweep3d");
-    fill_table(&level, target.rows.clone(), &mut writer, &bar)?;
+    fill_table(level, target.rows.clone(), &mut writer, &bar)?;
     let counts = writer.status_counts(0);
-    finish_table(&level, writer, &bar)?;
-    let not_separated =
-        Status::ALL[1..].iter().copied().map(|s| (s.name(), counts[usize::from(s.code())])).filter(|&(_, n)| n > 0).collect();
-    Ok((out.to_path_buf(), not_separated))
+    let flight_counts = level.flight.as_ref().map(|_| writer.status_counts(1));
+    finish_table(level, writer, &bar)?;
+    let others = |counts: &[u64]| -> Vec<(&'static str, u64)> {
+        Status::ALL[1..]
+            .iter()
+            .copied()
+            .map(|s| (s.name(), counts[usize::from(s.code())]))
+            .filter(|&(_, n)| n > 0)
+            .collect()
+    };
+    let flown = flight_counts.map(|c| (c[usize::from(Status::Separated.code())], others(&c)));
+    Ok((out.to_path_buf(), others(&counts), flown))
 }
 
 impl Printable for Sweep3dReport {
@@ -260,6 +330,14 @@ impl Printable for Sweep3dReport {
         }
         for (status, n) in &self.not_separated {
             let _ = writeln!(w, "  {status}: {n}");
+        }
+        if let Some((flown, not)) = &self.flown {
+            let shown: Vec<String> = not.iter().map(|(s, n)| format!("{s} {n}")).collect();
+            let _ = writeln!(
+                w,
+                "flights: {flown} flown to the ground{}",
+                if shown.is_empty() { String::new() } else { format!(", not flown: {}", shown.join(", ")) }
+            );
         }
         if let Some(shard) = &self.shard {
             let _ = writeln!(w, "{shard} (join the parts with `kick merge`)");

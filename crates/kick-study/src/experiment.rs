@@ -108,7 +108,7 @@ struct RawExperiment {
     /// The 3D kick's own parameters (3D only).
     kick3d: Option<kick_3d::Kick3dSpec>,
     /// Flight outcomes on every row ([`flight`]).
-    flight: Option<Spanned<kick_flight::FlightSpec>>,
+    flight: Option<Spanned<toml::Table>>,
     /// Store the per-row datasets compressed ([`compression`]).
     compress: Option<Spanned<toml::Value>>,
 }
@@ -153,28 +153,58 @@ struct Keys3d {
     compress: IgnoredAny,
 }
 
-/// A `[base]` or `[[scenario]]` table: values of the declared 1D parameters
-/// (`kick_core::parameters`), with their spans; a `[[scenario]]` table also
-/// has its `name`. Any other key is refused at its line with the nearby names.
+/// A `[base]` or `[[scenario]]` table: values of declared parameters
+/// (`kick_core::parameters`, and kick-flight's), with their spans; a
+/// `[[scenario]]` table also has its `name`. Any other key is refused at its
+/// line with the nearby names; which keys a table of a level takes is the
+/// level's to check ([`RawSpec::outside`]).
 #[derive(Debug, Default)]
 struct RawSpec<const NAMED: bool> {
     name: Option<Spanned<String>>,
+    /// Numbers.
     values: Vec<(&'static ParameterDef, Spanned<f64>)>,
-    /// The switches among them (`leg`).
-    switches: Vec<(&'static ParameterDef, Spanned<bool>)>,
+    /// Three numbers or a switch (parameters of the 3D kick).
+    others: Vec<(&'static ParameterDef, Spanned<toml::Value>)>,
 }
 
-/// The keys of `[base]` and `[[scenario]]`: the 1D scenario's, the shell
-/// ball's (which apply under `law = "shell"`) and the foot's (the leg and
-/// the boot, `kick_core::Foot`).
+/// The keys of `[[scenario]]`, and of a 1D `[base]` beside the flight's:
+/// the 1D scenario's, the shell ball's (which apply under `law = "shell"`)
+/// and the foot's (the leg and the boot, `kick_core::Foot`).
 const TABLE_LEVELS: &[Level] = &[Level::Scenario, Level::Bounce, Level::Foot];
+
+/// The declared parameter a table key names: one of kick-core's list (the
+/// kick's), else the flight's.
+fn table_parameter(name: &str) -> Option<&'static ParameterDef> {
+    parameters::find(name).or_else(|| kick_flight::FlightParameter::from_name(name).ok().map(|p| p.def()))
+}
 
 type RawBase = RawSpec<false>;
 type RawNamed = RawSpec<true>;
 
 impl<const NAMED: bool> RawSpec<NAMED> {
     fn value(&self, parameter: &ParameterDef) -> Option<&Spanned<f64>> {
-        self.values.iter().find(|(p, _)| p.name == parameter.name).map(|(_, v)| v)
+        self.values.iter().find(|(p, _)| p.name == parameter.name && p.level == parameter.level).map(|(_, v)| v)
+    }
+    /// Every key given, with its declaration, value and span.
+    fn given(&self) -> impl Iterator<Item = (&'static ParameterDef, kick_core::parameters::Value, Span)> + '_ {
+        use kick_core::parameters::Value;
+        let numbers = self.values.iter().map(|(p, v)| (*p, Value::Number(*v.get_ref()), v.span()));
+        let others = self.others.iter().filter_map(|(p, v)| {
+            let value = match v.get_ref() {
+                toml::Value::Boolean(on) => Value::Switch(*on),
+                toml::Value::Array(xs) => {
+                    let xs: Vec<f64> = xs.iter().map(|x| x.as_float().or(x.as_integer().map(|i| i as f64))).collect::<Option<_>>()?;
+                    Value::Vector(xs.try_into().ok()?)
+                }
+                _ => return None,
+            };
+            Some((*p, value, v.span()))
+        });
+        numbers.chain(others)
+    }
+    /// The first key not of `levels` (nor, with `flight`, a flight parameter).
+    fn outside(&self, levels: &[Level], flight: bool) -> Option<(&'static ParameterDef, Span)> {
+        self.given().find(|(p, _, _)| !(levels.contains(&p.level) || (flight && p.level == Level::Flight))).map(|(p, _, span)| (p, span))
     }
     fn get(&self, p: Parameter) -> Option<&Spanned<f64>> {
         self.value(p.def())
@@ -182,8 +212,11 @@ impl<const NAMED: bool> RawSpec<NAMED> {
     fn restitution(&self) -> Option<&Spanned<f64>> {
         self.value(&parameters::RESTITUTION)
     }
-    fn switch(&self, parameter: &ParameterDef) -> Option<&Spanned<bool>> {
-        self.switches.iter().find(|(p, _)| p.name == parameter.name).map(|(_, v)| v)
+    fn switch(&self, parameter: &ParameterDef) -> Option<Spanned<bool>> {
+        self.others.iter().find(|(p, _)| p.name == parameter.name).and_then(|(_, v)| match v.get_ref() {
+            toml::Value::Boolean(on) => Some(Spanned::new(v.span(), *on)),
+            _ => None,
+        })
     }
     /// The table's name (`[[scenario]]` tables always have one).
     fn name(&self) -> &Spanned<String> {
@@ -206,21 +239,37 @@ impl<'de, const NAMED: bool> Deserialize<'de> for RawSpec<NAMED> {
                         table.name = Some(map.next_value()?);
                         continue;
                     }
-                    match parameters::find_at(TABLE_LEVELS, &key) {
-                        Ok(parameter) => {
-                            if table.value(parameter).is_some() || table.switch(parameter).is_some() {
+                    let found = if NAMED { parameters::find_at(TABLE_LEVELS, &key).ok() } else { table_parameter(&key) };
+                    match found {
+                        Some(parameter) => {
+                            if table.given().any(|(p, _, _)| p.name == parameter.name) {
                                 return Err(serde::de::Error::custom(format!("duplicate key `{key}`")));
                             }
-                            if parameter.shape == parameters::Shape::Switch {
-                                table.switches.push((parameter, map.next_value()?));
-                            } else {
-                                table.values.push((parameter, map.next_value()?));
+                            match parameter.shape {
+                                kick_core::parameters::Shape::Scalar => table.values.push((parameter, map.next_value()?)),
+                                shape => {
+                                    let value: Spanned<toml::Value> = map.next_value()?;
+                                    let fits = match (shape, value.get_ref()) {
+                                        (kick_core::parameters::Shape::Switch, toml::Value::Boolean(_)) => true,
+                                        (kick_core::parameters::Shape::Vector3, toml::Value::Array(xs)) => {
+                                            xs.len() == 3 && xs.iter().all(|x| x.is_float() || x.is_integer())
+                                        }
+                                        _ => false,
+                                    };
+                                    if !fits {
+                                        return Err(serde::de::Error::custom(format!("`{key}` takes {}", shape.describe())));
+                                    }
+                                    table.others.push((parameter, value));
+                                }
                             }
                         }
-                        Err(_) => {
+                        None => {
                             let mut valid: Vec<&str> = parameters::at_levels(TABLE_LEVELS).map(|p| p.name).collect();
                             if NAMED {
                                 valid.insert(0, "name");
+                            } else {
+                                let kick_3d = parameters::at_levels(&[Level::Kick3d, Level::Instep]).map(|p| p.name);
+                                valid.extend(kick_3d.chain(kick_flight::FLIGHT_PARAMETERS.iter().map(|p| p.name)));
                             }
                             return map.next_value_seed(parameters::Refuse(parameters::unknown_key(&key, &valid))).map(|()| table);
                         }
@@ -298,7 +347,7 @@ pub struct Experiment {
     pub output: Output,
     /// The `[flight]` table: every row's kick is flown (after each solver's
     /// kick) and the flight outcomes stored beside it.
-    pub flight: Option<kick_flight::FlightSpec>,
+    pub flight: Option<crate::flight::FlightPlan>,
     /// The `compress` key: how the result file stores its per-row datasets.
     pub compress: crate::columns::Compression,
     /// The level's kicks.
@@ -368,13 +417,25 @@ impl Scenarios {
         match self {
             Scenarios::Grid { base, grid } => {
                 let mut values = base.values();
-                // A 1D grid's axes are the eight `Parameter`s (checked when read).
+                // The eight `Parameter`s at once; the others (the target
+                // restitution, the ball's) after them; the flight's are the flight's.
+                let mut others = false;
+                grid.decode(index, |_, axis, value| match Parameter::ALL.iter().position(|p| p.name() == axis.parameter.name) {
+                    Some(slot) if axis.parameter.level == Level::Scenario => values[slot] = value,
+                    _ => others |= axis.parameter.level != Level::Flight,
+                });
+                let scenario = base.with_values(values)?;
+                if !others {
+                    return Ok(scenario);
+                }
+                let mut result = Ok(scenario);
                 grid.decode(index, |_, axis, value| {
-                    if let Some(slot) = Parameter::ALL.iter().position(|p| p.name() == axis.parameter.name) {
-                        values[slot] = value;
+                    let theirs = axis.parameter.level == Level::Flight || Parameter::from_name(axis.parameter.name).is_some();
+                    if let (Ok(s), false) = (&result, theirs) {
+                        result = s.with_parameter(axis.parameter, value);
                     }
                 });
-                base.with_values(values)
+                result
             }
             Scenarios::Named { scenarios, .. } => Ok(scenarios[index as usize]),
             Scenarios::Sampled(sweep) => sweep.scenario(index),
@@ -530,6 +591,7 @@ pub fn load(path: &Path) -> Result<Experiment, ExperimentError> {
 struct LevelProbe {
     level: Option<Spanned<String>>,
     kick3d: Option<toml::Value>,
+    base: Option<toml::Table>,
     sweep: Option<Vec<AxisProbe>>,
 }
 
@@ -557,21 +619,19 @@ fn file_level(at: &Locator, text: &str) -> Result<FileLevel, ExperimentError> {
             "bounce" => Ok(FileLevel::Bounce),
             other => Err(at.error(level.span(), "level", format!("`{other}`: expected \"1d\", \"3d\" or \"bounce\""))),
         },
-        Ok(probe) => Ok(
-            if probe.kick3d.is_some()
-                || probe.sweep.iter().flatten().any(|a| {
-                    a.parameter
-                        .as_ref()
-                        .and_then(|p| p.as_str())
-                        .and_then(parameters::find)
-                        .is_some_and(|p| matches!(p.level, Level::Kick3d | Level::Instep))
-                })
-            {
-                FileLevel::ThreeD
-            } else {
-                FileLevel::OneD
-            },
-        ),
+        Ok(probe) => {
+            let three_d = |name: &str| parameters::find(name).is_some_and(|p| matches!(p.level, Level::Kick3d | Level::Instep));
+            Ok(
+                if probe.kick3d.is_some()
+                    || probe.base.iter().flat_map(|b| b.keys()).any(|k| three_d(k))
+                    || probe.sweep.iter().flatten().any(|a| a.parameter.as_ref().and_then(|p| p.as_str()).is_some_and(three_d))
+                {
+                    FileLevel::ThreeD
+                } else {
+                    FileLevel::OneD
+                },
+            )
+        }
         // The 1D reader names the problem.
         Err(_) => Ok(FileLevel::OneD),
     }
@@ -608,15 +668,17 @@ pub fn parse(path: &Path, text: &str) -> Result<Experiment, ExperimentError> {
     let keys = if three_d { toml::from_str::<Keys3d>(text).map(drop) } else { toml::from_str::<Keys1d>(text).map(drop) };
     keys.map_err(|e| at.toml_error(&e))?;
     let raw: RawExperiment = toml::from_str(text).map_err(|e| at.toml_error(&e))?;
-    let swept_1d = if three_d { Vec::new() } else { one_d::axes(&at, &raw)? };
-    let name = experiment_name(&at, raw.name.as_ref(), stem)?;
-    let (kicks, output, after) = if three_d {
-        (Kicks::ThreeD(three_d::kicks(&at, text, &raw)?), Output::Summary, flight::After::ThreeD)
-    } else {
-        let (kicks, output) = one_d::kicks(&at, path, &raw, &swept_1d)?;
-        (Kicks::OneD(kicks), output, flight::After::OneD)
-    };
+    let after = if three_d { flight::After::ThreeD } else { flight::After::OneD };
     let flight = flight::parse(&at, text, raw.flight.as_ref(), after)?;
+    let flight = flight::with_base(&at, text, flight, raw.base.as_ref(), after)?;
+    let swept_1d = if three_d { Vec::new() } else { one_d::axes(&at, &raw, flight.as_ref())? };
+    let name = experiment_name(&at, raw.name.as_ref(), stem)?;
+    let (kicks, output) = if three_d {
+        (Kicks::ThreeD(three_d::kicks(&at, text, &raw, flight.as_ref())?), Output::Summary)
+    } else {
+        let (kicks, output) = one_d::kicks(&at, path, &raw, &swept_1d, flight.as_ref())?;
+        (Kicks::OneD(kicks), output)
+    };
     let compress = compression(&at, raw.compress.as_ref())?;
     let read = std::iter::once(path.to_path_buf()).chain(raw.table2.as_ref().map(|t2| one_d::table2_path(path, t2.get_ref()))).collect();
     Ok(Experiment {
@@ -762,7 +824,7 @@ fn on_foot<'a>(
     at: &Locator,
     scenario: Scenario,
     get: impl Fn(&'static ParameterDef) -> Option<(&'a Spanned<f64>, String)>,
-    switch: impl Fn(&'static ParameterDef) -> Option<(&'a Spanned<bool>, String)>,
+    switch: impl Fn(&'static ParameterDef) -> Option<(Spanned<bool>, String)>,
 ) -> Result<Scenario, ExperimentError> {
     use kick_core::parameters::{SetParameter, Value};
     let mut spec = kick_core::ScenarioSpec::default();
@@ -913,7 +975,7 @@ mod tests {
             assert_eq!((e.name.as_str(), e.description.as_str()), ("both", "one schema"));
             assert_eq!(e.compress, crate::columns::Compression::Deflate(6));
             assert_eq!(e.output, Output::Summary);
-            assert_eq!(e.flight.and_then(|f| f.distance), Some(11.0));
+            assert_eq!(e.flight.as_ref().and_then(|f| f.rest.distance), Some(11.0));
         }
         let Kicks::OneD(Kicks1d { scenarios: Scenarios::Grid { base, grid }, .. }) = &one.kicks else { panic!("{:?}", one.kicks) };
         let Kicks::ThreeD(kicks) = &three.kicks else { panic!("{:?}", three.kicks) };
@@ -946,10 +1008,15 @@ mod tests {
             e.message.starts_with("unknown field `kick3d`, expected one of `level`, `name`, `description`, `solver`, `solvers`, `dt`"),
             "{e}"
         );
-        // A 1D axis is one of the eight 1D parameters.
+        // A 1D axis is a parameter of the 1D scenario, its ball or its flight; one the law ignores is refused at its line.
         let e = parse_text("[[sweep]]\nparameter = \"restitution\"\nvalues = [0.5]\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (2, "sweep.restitution"), "{e}");
+        assert!(e.message.starts_with("`restitution` does not apply to law `power-law`"), "{e}");
+        let e = parse_text("[[sweep]]\nparameter = \"ofset\"\nvalues = [0.5]\n").unwrap_err();
         assert_eq!((e.line, e.key.as_str()), (2, "parameter"), "{e}");
-        assert!(e.message.starts_with("unknown variant `restitution`, expected one of `foot_mass`, `ball_mass`"), "{e}");
+        assert!(e.message.starts_with("unknown parameter `ofset` of the 1D scenario or its flight"), "{e}");
+        let e = parse_text("[[sweep]]\nparameter = \"air_density\"\nvalues = [1.1]\n").unwrap_err();
+        assert!(e.message.contains("add a [flight] table"), "{e}");
     }
 
     /// A linear range spanning more than f64 holds (-1e308 .. 1e308) gives

@@ -51,11 +51,94 @@ impl After {
     }
 }
 
-/// One solved flight: what was flown and what it gave.
+/// What a study flies after each kick: the flight parameters the kick
+/// leaves (`rest`; its `distance` is one crossing plane) and, instead of
+/// that one, several crossing planes (`planes`: `distances` in `[flight]`,
+/// `--distance` given more than once, Python's `distance=[...]`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct FlightPlan {
+    pub rest: FlightSpec,
+    /// Crossing planes x = d, m, each located in the one solve; their
+    /// columns carry the plane's index (`kick_flight::plane_columns`).
+    pub planes: Option<Vec<f64>>,
+}
+
+impl FlightPlan {
+    /// `rest` alone (its `distance`, if any, the one plane).
+    pub fn new(rest: FlightSpec) -> FlightPlan {
+        FlightPlan { rest, planes: None }
+    }
+
+    /// `rest` with the planes `distances` as a front end gives them: one
+    /// is `rest`'s `distance` (the columns as ever), several the planes;
+    /// `rest` may not give a distance too.
+    pub fn with_distances(rest: FlightSpec, distances: &[f64]) -> Result<FlightPlan, FlightError> {
+        match distances {
+            [] => Ok(FlightPlan::new(rest)),
+            [d] if rest.distance.is_none() => Ok(FlightPlan::new(FlightSpec { distance: Some(*d), ..rest })),
+            more => FlightPlan::planes(rest, more.to_vec()),
+        }
+    }
+
+    /// `rest` with the planes `planes` (checked: `kick_flight::check_planes`;
+    /// `rest` without a distance).
+    pub fn planes(rest: FlightSpec, planes: Vec<f64>) -> Result<FlightPlan, FlightError> {
+        if rest.distance.is_some() {
+            return Err(FlightError::Conflict { first: "distance", second: "distances" });
+        }
+        kick_flight::check_planes(&planes)?;
+        Ok(FlightPlan { rest, planes: Some(planes) })
+    }
+
+    /// The planes located, in order: `planes`, or `rest`'s one distance.
+    pub fn distances(&self) -> Vec<f64> {
+        match &self.planes {
+            Some(planes) => planes.clone(),
+            None => self.rest.distance.into_iter().collect(),
+        }
+    }
+
+    /// The outcome columns of a flight flown by this plan (name, unit).
+    pub fn columns(&self) -> Vec<(String, &'static str)> {
+        match &self.planes {
+            Some(planes) => kick_flight::plane_columns(planes.len()),
+            None => kick_flight::outcome_columns(self.rest.distance.is_some()).iter().map(|(n, u)| (n.to_string(), *u)).collect(),
+        }
+    }
+
+    /// Solve `flight` (its distance `rest`'s) and write the values of
+    /// [`FlightPlan::columns`] into `out` (no allocation); how many.
+    pub fn fly_into(&self, flight: &Flight, out: &mut [f64]) -> Result<usize, Failure> {
+        match &self.planes {
+            None => {
+                let values = solve(flight).map_err(flight_failure)?.values();
+                let n = kick_flight::outcome_columns(self.rest.distance.is_some()).len();
+                out[..n].copy_from_slice(&values[..n]);
+                Ok(n)
+            }
+            Some(planes) => {
+                let mut crossings = [None; kick_flight::MAX_PLANES];
+                let crossings = &mut crossings[..planes.len()];
+                let outcome = kick_flight::solve_planes(flight, planes, crossings).map_err(flight_failure)?;
+                Ok(kick_flight::plane_values(&outcome, crossings, out))
+            }
+        }
+    }
+}
+
+/// Most values of a flight's row ([`FlightPlan::columns`]).
+pub const MAX_FLIGHT_VALUES: usize =
+    kick_flight::OUTCOME_COLUMNS.len() + (kick_flight::OUTCOME_COLUMNS.len() - kick_flight::LANDING_COLUMNS) * kick_flight::MAX_PLANES;
+
+/// One solved flight: what was flown and what it gave, and the crossing
+/// of each plane of its plan (None where the ball lands first).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FlightRun {
     pub flight: Flight,
     pub outcome: FlightOutcome,
+    /// The planes asked for (empty: the flight's own distance only) and their crossings.
+    pub planes: Vec<f64>,
+    pub crossings: Vec<Option<kick_flight::Crossing>>,
 }
 
 /// The flag of the flight parameter `error` names, if it names one.
@@ -82,7 +165,17 @@ pub fn flight_failure(error: FlightError) -> Failure {
 /// Solve one flight.
 pub fn fly(flight: Flight) -> Result<FlightRun, Failure> {
     let outcome = solve(&flight).map_err(flight_failure)?;
-    Ok(FlightRun { flight, outcome })
+    Ok(FlightRun { flight, outcome, planes: Vec::new(), crossings: Vec::new() })
+}
+
+/// Solve one flight and locate its crossing of each of `planes` too.
+pub fn fly_planes(flight: Flight, planes: &[f64]) -> Result<FlightRun, Failure> {
+    if planes.is_empty() {
+        return fly(flight);
+    }
+    let mut crossings = vec![None; planes.len()];
+    let outcome = kick_flight::solve_planes(&flight, planes, &mut crossings).map_err(flight_failure)?;
+    Ok(FlightRun { flight, outcome, planes: planes.to_vec(), crossings })
 }
 
 /// `kick flight`: validate `spec` and fly it.
@@ -124,6 +217,26 @@ pub fn flight_report(spec: &FlightSpec, history: Option<&HistoryRequest>) -> Res
     let Some(request) = history else {
         return Ok(FlightReport { run: fly(f)?, written: Vec::new() });
     };
+    flight_history_report(f, request)
+}
+
+/// [`flight_report`] of a flight crossing several planes (`kick flight
+/// --distance A --distance B`): `plan`'s planes located in the one solve.
+pub fn flight_report_planes(plan: &FlightPlan, history: Option<&HistoryRequest>) -> Result<FlightReport, StudyError> {
+    let f = plan.rest.build()?;
+    match history {
+        None => Ok(FlightReport { run: fly_planes(f, plan.planes.as_deref().unwrap_or_default())?, written: Vec::new() }),
+        Some(request) => {
+            let mut report = flight_history_report(f, request)?;
+            if let Some(planes) = &plan.planes {
+                report.run = fly_planes(f, planes)?;
+            }
+            Ok(report)
+        }
+    }
+}
+
+fn flight_history_report(f: Flight, request: &HistoryRequest) -> Result<FlightReport, StudyError> {
     let sampling = match request.spacing {
         Spacing::Count(n) => Sampling::Samples(n),
         Spacing::Interval(dt) => Sampling::Interval(dt),
@@ -149,7 +262,7 @@ pub fn flight_report(spec: &FlightSpec, history: Option<&HistoryRequest>) -> Res
             Ok::<_, StudyError>((h.outcome, h.samples.len() as u64))
         },
     )?;
-    Ok(FlightReport { run: FlightRun { flight: f, outcome }, written: vec![path] })
+    Ok(FlightReport { run: FlightRun { flight: f, outcome, planes: Vec::new(), crossings: Vec::new() }, written: vec![path] })
 }
 
 impl Serialize for FlightReport {
@@ -171,17 +284,29 @@ impl Printable for FlightReport {
 /// spin, in the direction `rest`'s launch_angle (required) and azimuth give;
 /// `rest` gives the air, coefficients, ball radius, g and crossing plane.
 pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Result<FlightRun, Failure> {
+    fly(flight_after_1d(scenario, outcome, rest)?)
+}
+
+/// The validated flight [`after_1d`] flies.
+pub fn flight_after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Result<Flight, Failure> {
     After::Kick1d.refuse_set(rest)?;
     if !(outcome.v_ball_out > 0.0) {
         return Err(Failure::refused(format!("the ball leaves the 1D kick at {} m/s: nothing flies forward", outcome.v_ball_out)));
     }
     let spec = FlightSpec { speed: Some(outcome.v_ball_out), ball_mass: Some(scenario.ball_mass()), ..*rest };
-    flight(&spec)
+    spec.build().map_err(flight_failure)
 }
 
-/// The flight after a 3D kick: the ball leaves with the kick's launch velocity
-/// and spin; `rest` gives the air, coefficients and crossing plane.
+/// The flight after a 3D kick: the ball leaves from the ground (its centre
+/// at height R) with the kick's launch velocity and spin; `rest` gives the
+/// air, coefficients and crossing plane.
 pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result<FlightRun, Failure> {
+    fly(flight_after_3d(kick, outcome, rest)?)
+}
+
+/// The validated flight [`after_3d`] flies: refused when the ball does not
+/// leave the ground upward.
+pub fn flight_after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result<Flight, Failure> {
     After::Kick3d.refuse_set(rest)?;
     let spec = FlightSpec {
         ball_mass: Some(kick.base.ball_mass()),
@@ -191,11 +316,22 @@ pub fn after_3d(kick: &Kick3d, outcome: &Outcome3d, rest: &FlightSpec) -> Result
     };
     if !(outcome.launch_velocity[2] > 0.0) {
         return Err(Failure::refused(format!(
-            "the 3D kick launches the ball at {} m/s, not upward: nothing to fly (an --approach-angle > 0 lifts it)",
+            "the 3D kick launches the ball at {} m/s, not upward: it does not leave the ground (a contact_depth > 0, the \
+             foot's line of motion below the ball's centre, lifts it; so does a rising path, approach_angle > 0)",
             vector(&outcome.launch_velocity)
         )));
     }
-    fly(Flight::from_launch(outcome.launch_velocity, outcome.spin, &spec).map_err(flight_failure)?)
+    Flight::from_launch(outcome.launch_velocity, outcome.spin, &spec).map_err(flight_failure)
+}
+
+/// The flight after a 3D kick by `plan`: its planes located too.
+pub fn after_3d_plan(kick: &Kick3d, outcome: &Outcome3d, plan: &FlightPlan) -> Result<FlightRun, Failure> {
+    fly_planes(flight_after_3d(kick, outcome, &plan.rest)?, plan.planes.as_deref().unwrap_or_default())
+}
+
+/// The flight after a 1D kick by `plan`.
+pub fn after_1d_plan(scenario: &Scenario, outcome: &Outcome, plan: &FlightPlan) -> Result<FlightRun, Failure> {
+    fly_planes(flight_after_1d(scenario, outcome, &plan.rest)?, plan.planes.as_deref().unwrap_or_default())
 }
 
 /// The name of the flight outcome set that follows the kick set `solver`
@@ -204,17 +340,22 @@ pub fn flight_set_name(solver: &str) -> String {
     format!("{solver}+flight")
 }
 
-/// The flight outcome set after the kick set `solver`: [`kick_flight::outcome_columns`]
-/// and, as settings, every flight parameter the experiment gave (`rest`)
+/// The flight outcome set after the kick set `solver`: the plan's columns
+/// ([`FlightPlan::columns`]) and, as settings, every flight parameter the
+/// experiment gave (`rest`; several planes as `distance_0`, `distance_1`, ...)
 /// and the coefficient models and air the flight used.
-pub fn flight_set(solver: &str, rest: &FlightSpec, flown: Option<&Flight>) -> crate::columns::OutcomeSet {
+pub fn flight_set(solver: &str, plan: &FlightPlan, flown: Option<&Flight>) -> crate::columns::OutcomeSet {
     use crate::columns::{Column, Setting};
+    let rest = &plan.rest;
     let mut settings = Vec::new();
     let given = serde_json::to_value(rest).unwrap_or_default();
     for p in FlightParameter::ALL {
         if let Some(v) = given.get(p.name()).and_then(serde_json::Value::as_f64) {
             settings.push((p.name().to_string(), Setting::Number(v)));
         }
+    }
+    for (k, d) in plan.planes.iter().flatten().enumerate() {
+        settings.push((format!("distance_{k}"), Setting::Number(*d)));
     }
     if let Some(f) = flown {
         settings.push(("drag_model".into(), Setting::Text(f.drag().name().into())));
@@ -226,7 +367,7 @@ pub fn flight_set(solver: &str, rest: &FlightSpec, flown: Option<&Flight>) -> cr
     crate::columns::OutcomeSet {
         solver: flight_set_name(solver),
         settings,
-        columns: kick_flight::outcome_columns(rest.distance.is_some()).iter().map(|(n, u)| Column::new(n, u)).collect(),
+        columns: plan.columns().iter().map(|(n, u)| Column::new(n, u)).collect(),
     }
 }
 
@@ -241,6 +382,11 @@ impl Serialize for FlightRun {
         m.insert("launch_velocity".into(), self.flight.launch_velocity().to_vec().into());
         m.insert("spin".into(), self.flight.spin().to_vec().into());
         m.insert("air_density".into(), self.flight.air().density.into());
+        if !self.planes.is_empty() {
+            // One entry per plane, in the order given: the crossing, or null where the ball lands first.
+            let crossings: Vec<Value> = self.crossings.iter().map(|c| serde_json::to_value(c).unwrap_or(Value::Null)).collect();
+            m.insert("crossings".into(), crossings.into());
+        }
         m.serialize(serializer)
     }
 }
@@ -274,6 +420,20 @@ impl Printable for FlightRun {
                     let _ = writeln!(w, "{:<24} none: the ball lands before x = {} m", "crossing", sig(d));
                 }
             }
+        }
+        for (d, c) in self.planes.iter().zip(&self.crossings) {
+            let _ = match c {
+                Some(c) => writeln!(
+                    w,
+                    "{:<24} x = {} m at {} s: height {} m, lateral offset {} m",
+                    "crossing",
+                    sig(c.distance),
+                    sig(c.time),
+                    sig(c.height),
+                    sig(c.lateral_offset)
+                ),
+                None => writeln!(w, "{:<24} none: the ball lands before x = {} m", "crossing", sig(*d)),
+            };
         }
         let _ = writeln!(w, "{:<24} {}", "steps", o.steps);
         w

@@ -1,11 +1,8 @@
-//! Free kicks, from the foot to the goal (issue 14): the grid of lateral
-//! offset × friction and the kick at a contact (e, h) below and beside the
-//! ball's centre. kick-3d's offset is lateral only; with a horizontal path
-//! and no gravity during the contact (kick-3d's default) its kick is
-//! symmetric about the foot's path, so the kick at offset √(e² + h²),
-//! turned about the path by β = atan2(h, e), is the kick at (e, h): its
-//! launch velocity and spin are the lateral kick's, rotated by β about x
-//! ([`roll`]). kick-paper writes the file and figures.
+//! Free kicks, from the foot to the goal (issue 14): the grid of offset ×
+//! friction at a contact depth h: the foot's line of motion passes h below
+//! the ball's centre and e beside it (kick-3d's `offset` and
+//! `contact_depth`, one definition for every front end), on a horizontal
+//! path. kick-paper writes the file and figures.
 
 use crate::columns::{Column, OutcomeSet, Setting};
 use crate::level::{Failure, Level, Row};
@@ -13,17 +10,17 @@ use kick_3d::{Accurate3d, Kick3d, KickSpec, Outcome3d};
 use kick_core::parameters::{SetParameter, Value};
 use kick_flight::{Flight, FlightSpec};
 
-/// Depth of the contact below the ball's centre, h, m.
-pub const VERTICAL_OFFSET: f64 = 0.03;
-/// Lateral offsets of the grid, m.
-pub const LATERAL_OFFSETS: [f64; 10] = [0.0, 0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09];
+/// The ball's centre above the foot's line of motion, h, m (kick-3d's `contact_depth`).
+pub const CONTACT_DEPTH: f64 = 0.03;
+/// Offsets of the grid, m.
+pub const OFFSETS: [f64; 10] = [0.0, 0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09];
 /// Coulomb coefficients of the grid (∞: never slips).
 pub const FRICTIONS: [f64; 4] = [0.2, 0.5, 1.0, f64::INFINITY];
 /// The goal line from the ball, m (the issue's 25 m free kick).
 pub const GOAL_DISTANCE: f64 = 25.0;
 /// The wall, m (Law 13: 9.15 m), defined once in kick-flight.
 pub use kick_flight::models::WALL_DISTANCE;
-/// Columns of the `launch` set: the free kick's launch (rotated) and the contact.
+/// Columns of the `launch` set: the free kick's launch and the contact.
 pub const LAUNCH_COLUMNS: [(&str, &str); 12] = [
     ("launch_velocity_x", "m/s"),
     ("launch_velocity_y", "m/s"),
@@ -39,42 +36,24 @@ pub const LAUNCH_COLUMNS: [(&str, &str); 12] = [
     ("slip_time", "s"),
 ];
 
-/// The lateral kick (offset √(e² + h²)) at friction `friction`, solved.
-pub fn lateral_kick(lateral_offset: f64, friction: f64) -> Result<(Kick3d, Outcome3d), Failure> {
+/// The kick at offset e and the grid's contact depth, at friction `friction`, solved.
+pub fn kick(offset: f64, friction: f64) -> Result<(Kick3d, Outcome3d), Failure> {
     let mut spec = KickSpec::default();
     spec.set_named("friction", Value::Number(friction)).map_err(|e| Failure::refused(e.to_string()))?;
-    kick_at(&spec, lateral_offset, VERTICAL_OFFSET)
+    kick_at(&spec, offset, CONTACT_DEPTH)
 }
 
-/// `spec`'s kick at the contact (e, h), solved as the lateral kick at
-/// offset √(e² + h²) (its launch still to be turned by [`roll_at`]).
-pub fn kick_at(spec: &KickSpec, lateral_offset: f64, depth: f64) -> Result<(Kick3d, Outcome3d), Failure> {
+/// `spec`'s kick at offset e and contact depth h, solved on the accurate path.
+pub fn kick_at(spec: &KickSpec, offset: f64, depth: f64) -> Result<(Kick3d, Outcome3d), Failure> {
     let mut spec = *spec;
-    spec.set_named("offset", Value::Number(lateral_offset.hypot(depth))).map_err(|e| Failure::refused(e.to_string()))?;
+    spec.kick3d.offset = Some(offset);
+    spec.kick3d.contact_depth = Some(depth);
     let kick = spec.build()?;
     let outcome = Accurate3d::default().solve(&kick)?;
     Ok((kick, outcome))
 }
 
-/// `v` turned about x by −β, β = atan2(h, e): the lateral kick's +y side
-/// goes to (0, cos β, −sin β), below the centre, so a ball sent toward −y
-/// rises (see the module docs).
-pub fn roll(v: [f64; 3], lateral_offset: f64) -> [f64; 3] {
-    roll_at(v, lateral_offset, VERTICAL_OFFSET)
-}
-
-/// [`roll`] for a contact `depth` h below the centre (a central contact, e = h = 0, is not turned).
-pub fn roll_at(v: [f64; 3], lateral_offset: f64, depth: f64) -> [f64; 3] {
-    let r = lateral_offset.hypot(depth);
-    if r == 0.0 {
-        return v;
-    }
-    let (c, s) = (lateral_offset / r, depth / r);
-    // Rotation about x by −β: y' = y cos β + z sin β, z' = −y sin β + z cos β.
-    [v[0], v[1] * c + v[2] * s, -v[1] * s + v[2] * c]
-}
-
-/// One free kick: the kick, its rotated launch and the flight spec after it.
+/// One free kick: the kick, its launch and the flight spec after it.
 pub struct FreeKick {
     pub kick: Kick3d,
     pub outcome: Outcome3d,
@@ -83,14 +62,9 @@ pub struct FreeKick {
 }
 
 impl FreeKick {
-    pub fn new(lateral_offset: f64, friction: f64) -> Result<FreeKick, Failure> {
-        let (kick, outcome) = lateral_kick(lateral_offset, friction)?;
-        Ok(FreeKick {
-            launch_velocity: roll(outcome.launch_velocity, lateral_offset),
-            spin: roll(outcome.spin, lateral_offset),
-            kick,
-            outcome,
-        })
+    pub fn new(offset: f64, friction: f64) -> Result<FreeKick, Failure> {
+        let (kick, outcome) = kick(offset, friction)?;
+        Ok(FreeKick { launch_velocity: outcome.launch_velocity, spin: outcome.spin, kick, outcome })
     }
 
     /// The flight after it, crossing x = `distance` (kick-flight's defaults:
@@ -128,12 +102,12 @@ impl FreeKick {
     }
 }
 
-/// The rows of the grid: (lateral offset, friction), friction fastest.
+/// The rows of the grid: (offset, friction), friction fastest.
 pub fn grid() -> Vec<(f64, f64)> {
-    LATERAL_OFFSETS.iter().flat_map(|&e| FRICTIONS.iter().map(move |&mu| (e, mu))).collect()
+    OFFSETS.iter().flat_map(|&e| FRICTIONS.iter().map(move |&mu| (e, mu))).collect()
 }
 
-/// The free-kick grid as a [`Level`]: parameters `lateral_offset` (m) and
+/// The free-kick grid as a [`Level`]: parameters `offset` (m) and
 /// `friction` (1), grid order (friction fastest); outcome sets `launch`
 /// ([`LAUNCH_COLUMNS`]), `goal` and `wall` (the flight crossing x =
 /// [`GOAL_DISTANCE`] and x = [`WALL_DISTANCE`], kick-flight's columns).
@@ -146,11 +120,12 @@ fn columns(list: &[(&str, &str)]) -> Vec<Column> {
 
 impl Level for FreeKicks {
     fn rows(&self) -> u64 {
-        (LATERAL_OFFSETS.len() * FRICTIONS.len()) as u64
+        (OFFSETS.len() * FRICTIONS.len()) as u64
     }
 
     fn parameter_columns(&self) -> Vec<Column> {
-        vec![Column::new("lateral_offset", "m"), Column::new("friction", "1")]
+        let declared = |p: &kick_core::ParameterDef| Column::new(p.name, p.unit);
+        vec![declared(&kick_core::parameters::OFFSET), declared(&kick_core::parameters::FRICTION)]
     }
 
     fn outcome_sets(&self) -> Vec<OutcomeSet> {
@@ -162,7 +137,7 @@ impl Level for FreeKicks {
         vec![
             OutcomeSet {
                 solver: "launch".into(),
-                settings: vec![("vertical_offset".into(), Setting::Number(VERTICAL_OFFSET))],
+                settings: vec![(kick_core::parameters::CONTACT_DEPTH.name.into(), Setting::Number(CONTACT_DEPTH))],
                 columns: columns(&LAUNCH_COLUMNS),
             },
             flight_set("goal", GOAL_DISTANCE),
@@ -173,7 +148,7 @@ impl Level for FreeKicks {
     fn solve_row(&self, index: u64, row: &mut Row) {
         // Grid order, friction fastest (as `grid`), without building the grid.
         let i = index as usize;
-        let (e, mu) = (LATERAL_OFFSETS[i / FRICTIONS.len()], FRICTIONS[i % FRICTIONS.len()]);
+        let (e, mu) = (OFFSETS[i / FRICTIONS.len()], FRICTIONS[i % FRICTIONS.len()]);
         row.parameters.copy_from_slice(&[e, mu]);
         let kick = FreeKick::new(e, mu);
         row.put(0, kick.as_ref().map(FreeKick::launch_values).map_err(Clone::clone));

@@ -53,6 +53,42 @@ impl Grid {
         self.decode(index, |k, _, value| out[k] = value);
     }
 
+    /// `rest` with the values of the flight's axes (declared at
+    /// [`kick_core::Level::Flight`]) at cell `index`: the flight of that cell.
+    pub fn flight_spec(&self, index: u64, rest: &kick_flight::FlightSpec) -> kick_flight::FlightSpec {
+        let mut spec = *rest;
+        self.decode(index, |_, axis, value| {
+            let flight = axis.parameter.level == kick_core::Level::Flight;
+            if let Some(q) = kick_flight::FlightParameter::from_name(axis.parameter.name).ok().filter(|_| flight) {
+                // A scalar flight parameter (checked when the file was read): setting it cannot fail.
+                let _ = spec.set(q, &[value]);
+            }
+        });
+        spec
+    }
+
+    /// Call `visit(axis, value)` for every axis at cell `index`, first axis
+    /// first (as the columns are ordered), allocating nothing.
+    pub fn decode_forward(&self, index: u64, mut visit: impl FnMut(&Axis, f64)) {
+        let mut rest = index;
+        let mut positions = [0usize; 64];
+        for (k, axis) in self.axes.iter().enumerate().rev() {
+            let n = axis.values.len() as u64;
+            if k < positions.len() {
+                positions[k] = (rest % n) as usize;
+            }
+            rest /= n;
+        }
+        for (k, axis) in self.axes.iter().enumerate().take(positions.len()) {
+            visit(axis, axis.values[positions[k]]);
+        }
+    }
+
+    /// Whether an axis is the flight's.
+    pub fn has_flight_axes(&self) -> bool {
+        self.axes.iter().any(|a| a.parameter.level == kick_core::Level::Flight)
+    }
+
     /// Call `visit(k, axis, value)` for every axis `k` at cell `index`, last
     /// axis first, allocating nothing (it runs once per row of a sweep).
     pub fn decode(&self, index: u64, mut visit: impl FnMut(usize, &Axis, f64)) {

@@ -91,7 +91,7 @@ impl OutputSize {
         let mut per_row = 8 * kick_core::Parameter::ALL.len() as u64 + solvers * (8 * OBSERVABLES.len() as u64 + 1);
         if let Some(flight) = &experiment.flight {
             // A flight set per solver (`[flight]`).
-            per_row += solvers * (8 * kick_flight::outcome_columns(flight.distance.is_some()).len() as u64 + 1);
+            per_row += solvers * (8 * flight.columns().len() as u64 + 1);
         }
         let mut bytes = rows.saturating_mul(per_row);
         if let Output::History { interval } = experiment.output {

@@ -2,14 +2,13 @@
 //! its JSON and text forms.
 
 use crate::error::StudyError;
-use crate::flight::{self, FlightRun};
+use crate::flight::{self, FlightPlan, FlightRun};
 use crate::history::{self, HistoryMeta, HistoryRequest};
 use crate::printable::Printable;
 use kick_3d::{Kick3d, KickSpec, Outcome3d, Solver3d};
 use kick_compliant::SolverChoice;
 use kick_core::number::{sig, vector};
 use kick_core::{KickError, Outcome, Parameter, RecordingSolver, Scenario, ScenarioSpec, Solver, HISTORY_COLUMNS, OBSERVABLES};
-use kick_flight::FlightSpec;
 use serde::ser::{Serialize, Serializer};
 use serde_json::{Map, Value};
 use std::fmt::Write as _;
@@ -57,7 +56,7 @@ pub fn simulate(
     solver: &str,
     dt: Option<f64>,
     history: Option<&HistoryRequest>,
-    flight: Option<&FlightSpec>,
+    flight: Option<&FlightPlan>,
 ) -> Result<Simulation, StudyError> {
     let scenario = spec.build()?;
     let choice = SolverChoice::with_step(solver, dt)?;
@@ -78,7 +77,7 @@ pub fn simulate(
         }
         None => (choice.solve(&scenario)?, Vec::new()),
     };
-    let flight = flight.map(|rest| flight::after_1d(&scenario, &outcome, rest)).transpose()?;
+    let flight = flight.map(|plan| flight::after_1d_plan(&scenario, &outcome, plan)).transpose()?;
     Ok(Simulation { scenario, solver: choice.name(), outcome, flight, written })
 }
 
@@ -236,13 +235,13 @@ fn history_solver(solver: &Solver3d) -> Result<kick_3d::Accurate3d, StudyError> 
 /// scene path's step, refused with the others); with `history`, on the accurate path, its time history
 /// streamed into that file ([`crate::history`], columns
 /// [`kick_3d::HISTORY_COLUMNS_3D`]); with `flight` given, the ball's flight
-/// after it ([`flight::after_3d`]; not in `seconds`).
+/// after it from the ground, crossing the plan's planes ([`flight::after_3d_plan`]; not in `seconds`).
 pub fn simulate3d(
     spec: &KickSpec,
     solver: &str,
     dt: Option<f64>,
     history: Option<&HistoryRequest>,
-    flight: Option<&FlightSpec>,
+    flight: Option<&FlightPlan>,
 ) -> Result<Simulation3d, StudyError> {
     let kick = spec.build()?;
     let solver = Solver3d::with_step(solver, dt)?;
@@ -255,7 +254,7 @@ pub fn simulate3d(
         None => (solver.solve(&kick)?, Vec::new()),
     };
     let seconds = start.elapsed().as_secs_f64();
-    let flight = flight.map(|rest| flight::after_3d(&kick, &outcome, rest)).transpose()?;
+    let flight = flight.map(|plan| flight::after_3d_plan(&kick, &outcome, plan)).transpose()?;
     Ok(Simulation3d { kick, outcome, seconds, flight, written })
 }
 

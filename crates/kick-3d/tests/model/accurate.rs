@@ -207,9 +207,12 @@ fn bad_input_is_a_typed_error() {
         e(Kick3dSpec { foot_inertia: Some([1.0, 0.0, 1.0]), ..Default::default() }),
         Kick3dError::InvalidParameter { name: "foot_inertia", .. }
     ));
-    // The foot rises so steeply that it no longer closes on the ball.
+    // The foot rises so steeply past a vertical face (its line R sin α above
+    // the centre) that it no longer closes on the ball.
     let slow = b.with(Parameter::BallSpeed, 15.0).unwrap();
-    let err = Kick3d::new(slow, &Kick3dSpec { approach_angle_deg: Some(60.0), ..Default::default() }).unwrap_err();
+    let depth = -Kick3d::baseline().ball_radius * 60f64.to_radians().sin();
+    let err =
+        Kick3d::new(slow, &Kick3dSpec { approach_angle_deg: Some(60.0), contact_depth: Some(depth), ..Default::default() }).unwrap_err();
     assert!(matches!(err, Kick3dError::Core(KickError::NoContact { .. })), "{err}");
     let ground = kick(Kick3dSpec { ground: Some(true), ..Default::default() });
     assert!(matches!(Accurate3d::default().solve(&ground), Err(Kick3dError::UnsupportedScene { .. })));
@@ -236,11 +239,24 @@ fn auto_takes_the_cheapest_path() {
 #[test]
 fn approach_angle_sweep_solves_and_spin_grows() {
     // Regression: phases that start exactly on a grip/slip switch (16° and 28°
-    // once looped until MAX_PHASES).
-    let values = kick_3d::sweep::linspace(0.0, 40.0, 21);
-    let points =
-        kick_3d::sweep::sweep(&Scenario::baseline(), &Kick3dSpec::default(), kick_3d::sweep::Axis::ApproachAngle, &values).unwrap();
-    assert!(points.windows(2).all(|w| w[1].spin_rpm > w[0].spin_rpm), "{points:?}");
+    // once looped until MAX_PHASES), in the kick that sweep was: the foot's
+    // line R sin α above the centre, so its face is vertical and it slides
+    // up the ball's back (topspin growing with α).
+    let radius = Kick3d::baseline().ball_radius;
+    let spins: Vec<f64> = kick_3d::sweep::linspace(0.0, 40.0, 21)
+        .into_iter()
+        .map(|a: f64| {
+            let k = kick(Kick3dSpec {
+                approach_angle_deg: Some(a),
+                contact_depth: Some(-radius * a.to_radians().sin()),
+                ..Kick3dSpec::default()
+            });
+            let o = solve(&k);
+            assert!(o.spin[1] >= 0.0, "topspin at {a}: {:?}", o.spin);
+            o.spin_rpm
+        })
+        .collect();
+    assert!(spins.windows(2).all(|w| w[1] > w[0]), "{spins:?}");
 }
 
 /// A central kick (μ = 0.5) under Flores's law is the 1D kick with that
@@ -275,7 +291,8 @@ fn contact_stays_on_the_face_in_the_swept_range() {
 }
 
 /// A ball receding slower than the foot's path closes on it (v_n = cos φ
-/// (v_f cos α − v_b) > 0) and is kicked at any offset. Its 1D scenario along
+/// (v_f − v_b cos α) > 0, the knife edge's normal tilted with the path) and
+/// is kicked at any offset. Its 1D scenario along
 /// the normal was once built one speed at a time: the foot's normal speed
 /// (8.78 m/s here) met the ball's whole speed (9.49 m/s) and the kick was
 /// refused as "no contact" (42 of `kick sweep3d --samples 20000 --seed 1`,
@@ -290,9 +307,9 @@ fn a_receding_ball_is_kicked_off_center() {
     let cos_phi = (1.0 - (offset / k.ball_radius).powi(2)).sqrt();
     let alpha = alpha_deg.to_radians();
     let normal = k.normal_scenario().unwrap();
-    assert!(rel(normal.foot_speed(), v_f * alpha.cos() * cos_phi) < 1e-14, "{}", normal.foot_speed());
-    assert!(rel(normal.ball_speed(), v_b * cos_phi) < 1e-14, "{}", normal.ball_speed());
-    assert!(rel(k.normal_approach_speed(), cos_phi * (v_f * alpha.cos() - v_b)) < 1e-13);
+    assert!(rel(normal.foot_speed(), v_f * cos_phi) < 1e-14, "{}", normal.foot_speed());
+    assert!(rel(normal.ball_speed(), v_b * alpha.cos() * cos_phi) < 1e-14, "{}", normal.ball_speed());
+    assert!(rel(k.normal_approach_speed(), cos_phi * (v_f - v_b * alpha.cos())) < 1e-13);
     let o = solve(&k);
     // The ball leaves faster than it came, along +x, energy closing.
     assert!(o.launch_velocity[0] > v_b && o.contact_time > 0.0, "{:?}", o.launch_velocity);

@@ -230,9 +230,15 @@ fn paths_without_the_constraint_refuse_it() {
         let e = Solver3d::from_name("rapier", 1e-6).unwrap().solve(&k).unwrap_err();
         assert!(matches!(e, Kick3dError::UnsupportedScene { path: "rapier", .. }), "{e}");
     }
-    // A finite friction off the kick's plane: the slip would turn.
-    let turning =
-        kick(rigid(Kick3dSpec { offset: Some(0.05), approach_angle_deg: Some(10.0), friction: Some(0.5), ..Kick3dSpec::default() }));
+    // A finite friction off the kick's plane: the slip would turn (a level
+    // instep's face yawed on a rising path; the knife edge rolls with the path).
+    let turning = kick(rigid(Kick3dSpec {
+        offset: Some(0.05),
+        approach_angle_deg: Some(10.0),
+        friction: Some(0.5),
+        face_yaw_deg: Some(20.0),
+        ..Kick3dSpec::default()
+    }));
     let e = Accurate3d::default().solve(&turning).unwrap_err();
     assert!(e.to_string().contains("approach_angle = 0"), "{e}");
     // So is a pitched face struck off its line (the normal leaves the kick's
@@ -361,10 +367,14 @@ fn nothing_slides_at_the_patch_centroid_while_gripping() {
 fn patch_grip_closes_energy_momentum_and_angular_momentum() {
     for cap in [false, true] {
         for (friction, offset, approach) in [(f64::INFINITY, 0.05, 0.0), (0.8, 0.05, 0.0), (f64::INFINITY, 0.06, 12.0), (0.5, 0.0, 15.0)] {
+            // The face vertical, turned by asin(e/R): it slides on a rising path.
+            let yaw = f64::asin(offset / 0.11).to_degrees();
             let spec = rigid(Kick3dSpec {
                 offset: Some(offset),
                 approach_angle_deg: Some(approach),
                 friction: Some(friction),
+                face_yaw_deg: Some(yaw),
+                face_pitch_deg: Some(0.0),
                 ..Kick3dSpec::default()
             });
             let k = if cap { cap_kick(spec) } else { patch_kick(spec) };

@@ -6,6 +6,7 @@ mod checks;
 mod foot;
 mod grip;
 mod history;
+mod line;
 mod patch;
 mod peaks;
 mod scene;

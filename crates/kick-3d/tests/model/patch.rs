@@ -26,9 +26,9 @@ fn norm(v: [f64; 3]) -> f64 {
 /// asin(e/R) (in degrees, as a user types it) and no patch is today's kick,
 /// foot placed and turned by the new geometry, to 1e-12 (the degrees' round
 /// trip). With friction slipping and gripping, under two laws, and with a
-/// drive. (At an approach angle α the knife edge's face centre is on the
-/// swing line through (0, e, R cos φ tan α), not (0, e, 0), so there the
-/// two offsets differ by definition: the instep's is the distance itself.)
+/// drive. (Off a horizontal path or with a contact depth the knife edge's
+/// box is rolled about the line of motion, the instep's kept level: the
+/// same face on the same line, a foot turned otherwise about its normal.)
 #[test]
 fn the_knife_edge_is_one_configuration() {
     for base in [Scenario::baseline(), shell(), shell().with(kick_core::Parameter::DriveForce, 500.0).unwrap()] {
@@ -335,6 +335,7 @@ fn a_flatter_cap_tends_to_the_flat_face() {
             approach_angle_deg: Some(10.0),
             friction: Some(0.5),
             face_yaw_deg: Some(0.0),
+            face_pitch_deg: Some(0.0),
             instep_radius: radius,
             patch_contact: Some(true),
             ..Kick3dSpec::default()

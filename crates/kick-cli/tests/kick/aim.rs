@@ -32,7 +32,7 @@ fn the_printed_launch_flown_again_reaches_the_target() {
         assert_eq!(v["from"], from);
         let names: Vec<&str> = v["parameters"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
         let expected: &[&str] = if from == "kick" {
-            &["foot_speed", "lateral_offset", "contact_depth", "heading"]
+            &["foot_speed", "offset", "contact_depth", "heading"]
         } else {
             &["speed", "launch_angle", "azimuth"]
         };
@@ -59,14 +59,14 @@ fn bad_input_names_the_flag() {
         (&["aim", "--target", "25,0,1", "--wall", "9.15,-1,1"], "--wall"),
         (&["aim", "--target", "25,0,1", "--free", "speed,spinz"], "--free"),
         (&["aim", "--target", "25,0,1", "--free", "speed,speed"], "--free"),
-        (&["aim", "--target", "25,0,1", "--speed", "50"], "--speed"),
+        // A flag holds its parameter; a free one's start must lie in its range.
+        (&["aim", "--target", "25,0,1", "--free", "speed", "--speed", "50"], "--speed"),
         (&["aim", "--target", "25,0,1", "--distance", "20"], "--distance"),
         (&["aim", "--target", "25,0,1", "--launch-velocity", "20,0,5"], "--launch-velocity"),
         (&["aim", "--target", "25,0,1", "--from", "kick", "--speed", "20"], "--speed"),
         (&["aim", "--target", "25,0,1", "--from", "foot"], "--from"),
         (&["aim", "--target", "25,0,1", "--foot-mass", "5"], "--from kick"),
-        (&["aim", "--target", "25,0,1", "--from", "kick", "--offset", "0.02"], "--offset"),
-        (&["aim", "--target", "25,0,1", "--from", "kick", "--foot-speed", "50"], "--foot-speed"),
+        (&["aim", "--target", "25,0,1", "--from", "kick", "--free", "foot_speed", "--foot-speed", "50"], "--foot-speed"),
     ] {
         let out = kick(args);
         let stderr = String::from_utf8_lossy(&out.stderr);

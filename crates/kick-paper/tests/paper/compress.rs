@@ -14,6 +14,7 @@ use std::path::{Path, PathBuf};
 
 fn sweep_settings(samples: u64, out: PathBuf, compress: Compression) -> SweepSettings {
     SweepSettings {
+        ranges: Default::default(),
         samples,
         seed: 7,
         solver: "auto".into(),
@@ -100,7 +101,17 @@ fn a_compressed_sweep3d_reads_back_the_plain_sweeps_bits_in_a_smaller_file() {
     let settings = |out: PathBuf, compress| {
         let mut fixed = kick_3d::KickSpec::default();
         fixed.scenario.law = Some(kick_core::LawKind::PowerLaw);
-        Sweep3dSettings { samples: 3000, seed: 2, out, fixed, shard: None, threads: None, compress }
+        Sweep3dSettings {
+            ranges: Default::default(),
+            flight: None,
+            samples: 3000,
+            seed: 2,
+            out,
+            fixed,
+            shard: None,
+            threads: None,
+            compress,
+        }
     };
     let plain = sweep3d(&settings(dir.join("plain/k.h5"), Compression::None)).unwrap();
     let packed = sweep3d(&settings(dir.join("packed/k.h5"), Compression::Deflate(9))).unwrap();

@@ -50,10 +50,10 @@ fn simulate3d_refuses_settings_that_do_not_apply() {
 /// `kick sweep --law flores --restitution 0.6 --damping 5`: the held damping is refused.
 #[test]
 fn a_sweep_refuses_a_held_damping_its_law_ignores() {
-    let sweep = SampledSweep { samples: 2, seed: 1, fixed: spec(LawKind::Flores, Some(5.0), Some(0.6)) };
+    let sweep = SampledSweep { ranges: Default::default(), samples: 2, seed: 1, fixed: spec(LawKind::Flores, Some(5.0), Some(0.6)) };
     let e = sweep.scenario(0).unwrap_err().to_string();
     assert!(e.starts_with("`damping` does not apply to law `flores`"), "{e}");
-    let sweep = SampledSweep { samples: 2, seed: 1, fixed: spec(LawKind::Flores, None, Some(0.6)) };
+    let sweep = SampledSweep { ranges: Default::default(), samples: 2, seed: 1, fixed: spec(LawKind::Flores, None, Some(0.6)) };
     assert_eq!(sweep.scenario(0).unwrap().law_kind(), LawKind::Flores);
 }
 
@@ -119,6 +119,7 @@ fn a_sweep_records_the_shell_ball_it_solved_with() {
     let dir = crate::scratch("shell-ball-sweeps");
     let fixed = ScenarioSpec { law: Some(LawKind::Shell), inflation_pressure: Some(6.0e4), ..Default::default() };
     let settings = kick_store::sweep::SweepSettings {
+        ranges: Default::default(),
         samples: 4,
         seed: 3,
         solver: "accurate".into(),
@@ -133,6 +134,8 @@ fn a_sweep_records_the_shell_ball_it_solved_with() {
     let mut kick = KickSpec::default();
     kick.scenario = fixed;
     let three = kick_store::sweep3d::sweep3d(&kick_store::sweep3d::Sweep3dSettings {
+        ranges: Default::default(),
+        flight: None,
         samples: 2,
         seed: 3,
         out: dir.join("sweep3d.h5"),

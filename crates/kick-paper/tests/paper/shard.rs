@@ -269,6 +269,7 @@ fn a_sweep_in_three_shards_merges_to_the_unsharded_sweep() {
     use kick_store::sweep::{sweep, SweepSettings};
     let dir = scratch("sweep");
     let settings = |out: PathBuf, shard: Option<&str>| SweepSettings {
+        ranges: Default::default(),
         samples: 200,
         seed: 5,
         solver: "auto".into(),
@@ -312,7 +313,17 @@ fn a_sweep3d_in_three_shards_merges_to_the_unsharded_sweep() {
     let settings = |out: PathBuf, shard: Option<&str>| {
         let mut fixed = kick_3d::KickSpec::default();
         fixed.scenario.law = Some(kick_core::LawKind::PowerLaw);
-        Sweep3dSettings { samples: 40, seed: 3, out, fixed, shard: shard.map(String::from), threads: None, compress: Default::default() }
+        Sweep3dSettings {
+            ranges: Default::default(),
+            flight: None,
+            samples: 40,
+            seed: 3,
+            out,
+            fixed,
+            shard: shard.map(String::from),
+            threads: None,
+            compress: Default::default(),
+        }
     };
     let whole = sweep3d(&settings(dir.join("whole/k.h5"), None)).unwrap();
     assert_eq!(whole.kicks, 40);

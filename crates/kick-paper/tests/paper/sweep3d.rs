@@ -13,7 +13,17 @@ use std::path::Path;
 fn settings(samples: u64, seed: u64, out: &Path) -> Sweep3dSettings {
     let mut fixed = KickSpec::default();
     fixed.scenario.law = Some(LawKind::PowerLaw);
-    Sweep3dSettings { samples, seed, out: out.to_path_buf(), fixed, shard: None, threads: None, compress: Default::default() }
+    Sweep3dSettings {
+        ranges: Default::default(),
+        flight: None,
+        samples,
+        seed,
+        out: out.to_path_buf(),
+        fixed,
+        shard: None,
+        threads: None,
+        compress: Default::default(),
+    }
 }
 
 /// A parameter's rows as [x, y, z]: a vector from its `_x`, `_y`, `_z`
@@ -95,7 +105,14 @@ fn each_row_is_the_solve_of_its_stored_parameters() {
         }
         // The drawn kick is the stored one: the sampler's spec solves to the same row.
         assert_eq!(
-            Solver3d::Auto.solve(&SampledKicks { seed: 11, fixed: settings(1, 11, &out).fixed }.spec(i as u64).build().unwrap()).unwrap(),
+            Solver3d::Auto
+                .solve(
+                    &SampledKicks { ranges: Default::default(), seed: 11, fixed: settings(1, 11, &out).fixed }
+                        .spec(i as u64)
+                        .build()
+                        .unwrap()
+                )
+                .unwrap(),
             o
         );
     }
@@ -163,8 +180,8 @@ fn the_data_do_not_depend_on_the_thread_count() {
 /// A held parameter is held in every row and leaves the others' draws as they were.
 #[test]
 fn a_held_parameter_leaves_the_other_draws() {
-    let free = SampledKicks { seed: 3, fixed: KickSpec::default() };
-    let mut held = free;
+    let free = SampledKicks { ranges: Default::default(), seed: 3, fixed: KickSpec::default() };
+    let mut held = free.clone();
     held.fixed.kick3d.friction = Some(0.7);
     held.fixed.scenario.stiffness = Some(2e5);
     for i in 0..50 {
@@ -207,6 +224,7 @@ fn bad_settings_are_refused_by_name() {
         let error = sweep3d(&s).unwrap_err().to_string();
         assert!(error.starts_with(&format!("`--shard` = `{given}`")) && error.contains(says), "{error}");
         let error = kick_store::sweep::sweep(&kick_store::sweep::SweepSettings {
+            ranges: Default::default(),
             samples: 5,
             seed: 1,
             solver: "auto".into(),

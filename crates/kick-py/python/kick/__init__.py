@@ -234,17 +234,40 @@ def simulate3d(**params):
     return _kick.simulate3d(**params)
 
 
+_flight = _inspect.Parameter("flight", _KW, default=False)
+_distance = _inspect.Parameter("distance", _KW, default=None)
+#: The flight's keywords a 3D kick leaves to its flight (``flight=True``).
+_FLIGHT_SET_BY_KICK = ("speed", "launch_angle", "azimuth", "launch_velocity", "spin", "ball_mass", "ball_radius", "gravity", "distance")
+_flight_rest = [_inspect.Parameter(p["name"], _KW, default=None) for p in keywords("flight") if p["name"] not in _FLIGHT_SET_BY_KICK]
+_FLIGHT_AFTER_DOC = f"""
+flight : bool, default False
+    Then fly the ball from the ground (its centre at height R) with the kick's
+    launch velocity and spin, as ``kick simulate3d --flight``; the flight's
+    keywords ({", ".join(p.name for p in _flight_rest)}) are then taken too.
+distance : float or list of float, optional
+    With ``flight``: the plane x = distance (m) whose crossing is reported, or a
+    list of planes, each located in the one solve.
+
+Offset and contact depth: the ball's centre lies ``offset`` sideways of the
+foot's line of motion and ``contact_depth`` above it (perpendicular to the
+line; axes: x the foot's horizontal direction, y the kicker's left, z up).
+offset > 0 sends the ball toward -y spinning spin_z < 0 and curving further to
+-y; contact_depth > 0 lifts it with backspin spin_y < 0.
+"""
+
 _declare(
     simulate3d,
     "simulate3d",
     [],
-    [_solver, _law, _dt],
+    [_solver, _law, _dt, _flight, _distance] + _flight_rest,
     "Solve one off-center 3D kick (spin, friction), as ``kick simulate3d``.\n\n"
     "Returns the dict ``kick simulate3d --format json`` prints: launch_velocity\n"
     "and spin (arrays of 3: m/s, rad/s; x along the foot's path, z up), speed,\n"
     "spin_rpm, launch_angle and launch_azimuth (deg), contact_time (s), peak\n"
     "forces (N), max_compression (m), slip_time (s), impulses (N s), the energy\n"
-    "partition (J), energy_residual, evaluations, solver, law, law_parameters.\n" + _SOLVER3D_DOC,
+    "partition (J), energy_residual, evaluations, solver, law, law_parameters;\n"
+    "with ``flight``, ``flight`` (the dict ``flight`` returns, with ``crossings``,\n"
+    "one per plane of a list of distances, None where the ball lands first).\n" + _SOLVER3D_DOC + _FLIGHT_AFTER_DOC,
 )
 
 
@@ -256,10 +279,17 @@ _declare(
     simulate3d_many,
     "simulate3d_many",
     [],
-    [_solver, _law, _dt, _threads],
-    "Solve many off-center 3D kicks from arrays.\n" + _SOLVER3D_DOC + _MANY_DOC
+    [_solver, _law, _dt, _threads, _flight, _distance] + _flight_rest,
+    "Solve many off-center 3D kicks from arrays.\n" + _SOLVER3D_DOC + _MANY_DOC + _FLIGHT_AFTER_DOC
     + "\nThe outcomes are ``simulate3d``'s numbers, ``energy`` flattened to\n"
-    "``energy_<part>``; vectors (launch_velocity, spin, ...) have shape S + (3,).\n",
+    "``energy_<part>``; vectors (launch_velocity, spin, ...) have shape S + (3,).\n"
+    "With ``flight`` (its keywords broadcast too): flight_time, landing_point\n"
+    "(S + (2,)), apex_height, apex_time, landing_velocity, landing_spin, and with\n"
+    "``distance`` crossed, crossing_time, crossing_height, crossing_lateral_offset\n"
+    "and crossing_velocity (S + (3,)); a list of P distances adds a trailing axis\n"
+    "of P (S + (P,), crossing_velocity S + (P, 3)). ``flight_status`` is the\n"
+    "flight's code (0 flown; 3 refused: the ball does not leave the ground; its\n"
+    "flight outcomes then NaN, the kick's kept).\n",
 )
 
 
@@ -357,15 +387,20 @@ _declare(
     flight,
     "flight",
     [],
-    [],
+    [_inspect.Parameter("samples", _KW, default=None)],
     "The ball's flight after the kick (crate kick-flight): drag crisis in Re,\n"
     "Magnus lift, spin decay; landing, apex and the crossing of x = distance.\n\n"
+    "``distance`` is one plane, or a list of planes (each located in the one\n"
+    "solve: ``crossings``). ``samples`` (an int from 2 to 1e6) adds the trajectory.\n\n"
     "Returns a dict: flight_time (s), landing_point (array of 2: x, y in m),\n"
     "apex_height (m), apex_time (s), landing_velocity (array of 3, m/s),\n"
     "landing_spin (array of 3, rad/s), crossing (None, or a dict with\n"
-    "distance, time, height, lateral_offset, velocity when ``distance`` is\n"
-    "given and reached), launch (dict: reynolds, spin_parameter,\n"
-    "drag_coefficient, lift_coefficient at launch), steps, evaluations.",
+    "distance, time, height, lateral_offset, velocity when one ``distance`` is\n"
+    "given and reached), crossings (with a list of distances: one such dict or\n"
+    "None per plane), launch (dict: reynolds, spin_parameter,\n"
+    "drag_coefficient, lift_coefficient at launch), steps, evaluations; with\n"
+    "``samples`` N, trajectory (dict: time [N] s, position [N, 3] m, velocity\n"
+    "[N, 3] m/s, spin [N, 3] rad/s at uniform times from launch to landing).",
 )
 
 
@@ -382,6 +417,8 @@ _declare(
         _inspect.Parameter("from_", _KW, default="launch"),
         _inspect.Parameter("free", _KW, default=None),
         _inspect.Parameter("law", _KW, default="power-law"),
+        _inspect.Parameter("objective", _KW, default=None),
+        _inspect.Parameter("bounds", _KW, default=None),
     ],
     [],
     """Aim a free kick, as ``kick aim``: the launch (or the 3D kick) that clears
@@ -398,27 +435,40 @@ wall : (DIST, HEIGHT, HALF_WIDTH) [m], default (9.15, 1.8, 1)
     The wall's plane, the height of its top and its half-width.
 from_ : str, default "launch"
     "launch" (free: speed, launch_angle, azimuth, spin_x, spin_y, spin_z)
-    or "kick" (free: foot_speed, lateral_offset, contact_depth, heading;
+    or "kick" (free: any number parameter of the kick, e.g. foot_speed,
+    offset, contact_depth, approach_angle, inflation_pressure, and heading;
     Table 1's foot and kick-3d's defaults otherwise).
 free : list of str, optional
     The free parameters; default speed, launch_angle, azimuth (launch) or
-    all four (kick). The flight keywords below are fixed values, or the
-    starts of free launch parameters.
+    foot_speed, offset, contact_depth, heading (kick), less any given: a
+    keyword holds its parameter at that value, unless ``free`` names it (then
+    it is the start).
 law : str, default "power-law"
     With from_="kick": the kick's normal contact law (``kick aim --law``):
-    {laws}.
+    {laws} ("shell": the pressurised ball, its keywords inflation_pressure,
+    ... then apply).
+objective : str, optional
+    Which member of the family of solutions (more free parameters than
+    two): "min-foot-speed" (from_="kick"), "min-speed" (launch speed),
+    "min-time" (to the goal line), "max-clearance" (of the wall); default the
+    member the solve reaches from the starts.
+bounds : dict, optional
+    {name: (low, high)} of free parameters, instead of the aim's own.
 
 Returns a dict: from, scene, parameters (list of dicts: name, unit, value,
 low, high, sensitivity = d(y, z at the goal)/d parameter), launch_velocity,
-spin, crossing, miss (m), wall_clearance (m), wall_crossing, outcome (the
-flight's, as ``flight`` returns), evaluations, starts, kick (the kick's
-offset, contact_time, spin_rev_per_s with from_="kick", else None).
+spin, crossing, miss (m), wall_clearance (m), wall_crossing, wall_pass
+("over" its top or "beside" it), family (None with two free parameters, else
+dimension, pivots, members found, extent of each free parameter, goal_time,
+clearance and launch_speed ranges, objective), outcome (the flight's, as
+``flight`` returns), evaluations, starts, kick (with from_="kick": every
+parameter of the kick solved, heading, contact_time, spin_rev_per_s; else None).
 No solution within the ranges raises ValueError saying so.
 
 With ``from_="kick"`` the keywords of ``simulate3d`` that the flight does
 not declare too (foot_mass, foot_speed, friction, ...; not ball_mass,
 ball_radius, gravity) set the kick (Table 1's and kick-3d's defaults
-otherwise); ``foot_speed`` is the start when it is free.
+otherwise).
 """.replace("{laws}", ", ".join(LAWS)),
 )
 _flight_names = {p["name"] for p in keywords("flight")}

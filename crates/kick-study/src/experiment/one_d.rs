@@ -1,33 +1,55 @@
 //! 1D experiments in the one experiment format (see the parent module):
-//! solvers, and scenarios from a grid of the eight 1D parameters, named
-//! `[[scenario]]` tables or a Table 2 file; summaries or histories.
+//! solvers, and scenarios from a grid of declared parameters (the 1D
+//! scenario's, the target restitution, the shell ball's, and with
+//! `[flight]` the flight's), named `[[scenario]]` tables or a Table 2 file;
+//! summaries or histories.
 
 use super::{
     axis_values, build, contact_law, law_settings_apply, Axis, Experiment, ExperimentError, Grid, Kicks, Kicks1d, Located, Locator, Output,
     RawBase, RawExperiment, Scenarios, MAX_HISTORY_SAMPLES, MAX_HISTORY_SCENARIOS, MAX_SCENARIOS,
 };
+use crate::flight::FlightPlan;
 use kick_compliant::table2::Table2File;
 use kick_compliant::SolverChoice;
-use kick_core::{short, Parameter, Scenario};
+use kick_core::parameters::{self, Level, ParameterDef, SetParameter};
+use kick_core::{short, Parameter, Scenario, ScenarioSpec};
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
-/// The parameters of a 1D grid's axes: the eight [`Parameter`]s.
-pub(super) fn axes(at: &Locator, raw: &RawExperiment) -> Result<Vec<Parameter>, ExperimentError> {
+/// The parameters of a 1D grid's axes: any scalar of the 1D scenario and
+/// its ball (`ScenarioSpec::LEVELS`), or of the flight after it.
+pub(super) fn axes(at: &Locator, raw: &RawExperiment, flight: Option<&FlightPlan>) -> Result<Vec<&'static ParameterDef>, ExperimentError> {
     let mut swept = Vec::new();
     for axis in raw.sweep.iter().flatten() {
         let name = axis.parameter.get_ref();
-        let parameter = Parameter::from_name(name).ok_or_else(|| {
-            let expected: Vec<String> = Parameter::ALL.iter().map(|p| format!("`{}`", p.name())).collect();
-            at.error(axis.parameter.span(), "parameter", format!("unknown variant `{name}`, expected one of {}", expected.join(", ")))
-        })?;
+        let key = format!("sweep.{name}");
+        let parameter = match super::flight::axis_parameter(name, flight, super::flight::After::OneD) {
+            Some(found) => found.map_err(|message| at.error(axis.parameter.span(), &key, message))?,
+            None => parameters::find_at(ScenarioSpec::LEVELS, name).map_err(|e| {
+                let mut valid: Vec<&'static str> = parameters::at_levels(ScenarioSpec::LEVELS).map(|p| p.name).collect();
+                valid.extend(kick_flight::FLIGHT_PARAMETERS.iter().map(|p| p.name));
+                let message = match e {
+                    parameters::ParameterError::Unknown { nearby, .. } => {
+                        format!("unknown parameter `{name}` of the 1D scenario or its flight{}", parameters::did_you_mean(&nearby, &valid))
+                    }
+                    other => other.to_string(),
+                };
+                at.error(axis.parameter.span(), "parameter", message)
+            })?,
+        };
         swept.push(parameter);
     }
     Ok(swept)
 }
 
 /// The 1D part of an experiment: its solvers and scenarios, and what to record.
-pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Parameter]) -> Result<(Kicks1d, Output), ExperimentError> {
+pub(super) fn kicks(
+    at: &Locator,
+    path: &Path,
+    raw: &RawExperiment,
+    swept: &[&'static ParameterDef],
+    flight: Option<&FlightPlan>,
+) -> Result<(Kicks1d, Output), ExperimentError> {
     let dt = match &raw.dt {
         Some(dt) => {
             let v = *dt.get_ref();
@@ -63,6 +85,14 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
 
     let no_base = RawBase::default();
     let base_raw = raw.base.as_ref().unwrap_or(&no_base);
+    // A 1D file's [base]: the scenario's and its ball's keys, and the flight's (set on [flight]).
+    if let Some((p, span)) = base_raw.outside(super::TABLE_LEVELS, true) {
+        return Err(at.error(
+            span,
+            &format!("base.{}", p.name),
+            format!("`{}` is a parameter of the {}: give level = \"3d\"", p.name, p.level.name()),
+        ));
+    }
     let law = contact_law(at, raw)?;
     // The target restitution is a declared parameter: at the top level beside
     // `law`, or in a table ([[scenario]] over [base]), but not both.
@@ -92,9 +122,10 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
     // The base scenario of a grid; named scenarios build their own over [base].
     let base_damping = || base_raw.get(Parameter::Damping).map(|d| (d.span(), "base.damping".to_string()));
     let base_switch = |p: &'static kick_core::parameters::ParameterDef| base_raw.switch(p).map(|v| (v, format!("base.{}", p.name)));
-    let base = || {
+    // `swept`: a swept restitution's first value, the base's target (each cell sets its own).
+    let base = |swept: Option<&Spanned<f64>>| {
         let ball = super::shell_ball(at, law, base_key)?;
-        let scenario = with_law(build(at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution(), base_damping(), ball)?;
+        let scenario = with_law(build(at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution().or(swept), base_damping(), ball)?;
         super::on_foot(at, scenario, base_key, base_switch)
     };
 
@@ -105,20 +136,43 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
     }
 
     let scenarios = if let Some(axes_raw) = &raw.sweep {
-        let base = base()?;
+        let restitution_axis = axes_raw.iter().zip(swept).find(|(_, p)| p.name == parameters::RESTITUTION.name);
+        if let Some((axis, _)) = restitution_axis {
+            check_law(None, Some((axis.parameter.span(), "sweep.restitution".to_string())))?;
+        }
+        let swept_restitution = match restitution_axis {
+            Some((axis, _)) if top_restitution.is_none() && base_raw.restitution().is_none() => {
+                let (values, span, _) = axis_values(at, axis, "sweep.restitution")?;
+                Some(Spanned::new(span, values[0]))
+            }
+            _ => None,
+        };
+        let base = base(swept_restitution.as_ref())?;
         let mut axes: Vec<Axis> = Vec::new();
         let mut spans = Vec::new();
         let mut total: u64 = 1;
         for (axis, &parameter) in axes_raw.iter().zip(swept) {
-            let key = format!("sweep.{}", parameter.name());
-            if axes.iter().any(|a| a.parameter.name == parameter.name()) {
+            let key = format!("sweep.{}", parameter.name);
+            if axes.iter().any(|a| a.parameter.name == parameter.name) {
                 return Err(at.error(axis.parameter.span(), &key, "parameter swept twice"));
             }
-            if let Some(v) = base_raw.get(parameter) {
-                return Err(at.error(v.span(), &format!("base.{}", parameter.name()), "this parameter is also swept; set it in one place"));
+            if parameter.level != Level::Flight {
+                if let Some(v) = base_raw.value(parameter) {
+                    return Err(at.error(
+                        v.span(),
+                        &format!("base.{}", parameter.name),
+                        "this parameter is also swept; set it in one place",
+                    ));
+                }
             }
-            if parameter == Parameter::Damping {
+            if parameter.name == Parameter::Damping.name() {
                 check_law(Some((axis.parameter.span(), key.clone())), None)?;
+            }
+            if parameter.name == parameters::RESTITUTION.name {
+                if top_restitution.is_some() || base_raw.restitution().is_some() {
+                    return Err(at.error(axis.parameter.span(), &key, "`restitution` is also set; set it in one place"));
+                }
+                check_law(None, Some((axis.parameter.span(), key.clone())))?;
             }
             let (values, span, value_spans) = axis_values(at, axis, &key)?;
             total = total.saturating_mul(values.len() as u64);
@@ -127,9 +181,15 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
             }
             // Each value alone against the base, so the error names its line.
             for (&v, value_span) in values.iter().zip(&value_spans) {
-                base.with(parameter, v).map_err(|e| at.error(value_span.clone(), &key, format!("value {}: {e}", short(v))))?;
+                let checked = match (parameter.level, flight) {
+                    (Level::Flight, Some(plan)) => {
+                        super::flight::check_axis_value(&plan.rest, parameter, v, super::flight::After::OneD).map_err(|e| e.to_string())
+                    }
+                    _ => base.with_parameter(parameter, v).map(drop).map_err(|e| e.to_string()),
+                };
+                checked.map_err(|e| at.error(value_span.clone(), &key, format!("value {}: {e}", short(v))))?;
             }
-            axes.push(Axis { parameter: parameter.def(), values });
+            axes.push(Axis { parameter, values });
             spans.push(span);
         }
         let grid = Scenarios::Grid { base, grid: Grid { axes } };
@@ -145,6 +205,13 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
         let mut scenarios = Vec::new();
         for entry in list {
             let key = format!("scenario.{}", entry.name().get_ref());
+            if let Some((p, span)) = entry.outside(super::TABLE_LEVELS, false) {
+                return Err(at.error(
+                    span,
+                    &format!("{key}.{}", p.name),
+                    "a [[scenario]] table takes the 1D scenario's and its ball's parameters",
+                ));
+            }
             if names.contains(entry.name().get_ref()) {
                 return Err(at.error(entry.name().span(), &key, "scenario name used twice"));
             }
@@ -175,7 +242,7 @@ pub(super) fn kicks(at: &Locator, path: &Path, raw: &RawExperiment, swept: &[Par
         let (names, scenarios) = rows.into_iter().unzip();
         Scenarios::Named { names, scenarios }
     } else {
-        Scenarios::Grid { base: base()?, grid: Grid::default() }
+        Scenarios::Grid { base: base(None)?, grid: Grid::default() }
     };
 
     let output = match &raw.output {

@@ -1,16 +1,20 @@
 //! 3D experiments in the one experiment format (see the parent module).
 //!
 //! A file is a 3D experiment when it says `level = "3d"`, has a `[kick3d]`
-//! table, or sweeps a parameter of the 3D level; `level = "1d"` keeps it 1D.
-//! The keys are the 1D ones (`name`, `description`, `solver`, `law`,
-//! `restitution`, `compress`, `[base]`, `[[sweep]]`) plus `[kick3d]` (the declared 3D
-//! parameters, defaults as in `kick simulate3d`). A `[[sweep]]` axis may be
-//! any scalar parameter of either level; `solver` is a `kick simulate3d
-//! --solver` name (default `accurate`). Histories, `[[scenario]]` lists and
-//! `table2` are 1D only.
+//! table, or gives or sweeps a parameter of the 3D level; `level = "1d"`
+//! keeps it 1D. The keys are the 1D ones (`name`, `description`, `solver`,
+//! `law`, `restitution`, `compress`, `[base]`, `[[sweep]]`, `[flight]`) plus
+//! `[kick3d]` (the declared 3D parameters, defaults as in `kick
+//! simulate3d`). `[base]` takes every declared parameter of the kick (the
+//! 1D scenario's, the ball's, the 3D kick's and the instep's, as
+//! `[kick3d]` does) and of the flight (as `[flight]` does); a `[[sweep]]`
+//! axis may be any scalar of them. `solver` is a `kick simulate3d --solver`
+//! name (default `accurate`). Histories, `[[scenario]]` lists and `table2`
+//! are 1D only.
 
 use super::flight::key_span;
 use super::{axis_values, build, Axis, ExperimentError, Grid, Locator, RawBase, RawExperiment};
+use crate::flight::FlightPlan;
 use kick_3d::{Kick3d, Kick3dError, Kick3dSpec, Solver3d};
 use kick_core::parameters::{self, Level, SetParameter, Shape, Value};
 use kick_core::{short, Parameter, Scenario};
@@ -18,10 +22,10 @@ use kick_core::{short, Parameter, Scenario};
 /// Most cells one 3D grid may hold (~80 µs each on the accurate path).
 pub const MAX_CELLS_3D: u64 = 10_000_000;
 
-/// Parameter levels a 3D experiment takes.
-/// The parameters a 3D file sweeps: the 1D scenario's, the 3D kick's, the
-/// instep's and the foot's (the leg's pose, the boot).
-const LEVELS_3D: &[Level] = &[Level::Scenario, Level::Kick3d, Level::Instep, Level::Foot];
+/// The kick's parameters a 3D file gives and sweeps: the 1D scenario's and
+/// its ball's, the 3D kick's, the instep's and the foot's (the leg's pose,
+/// the boot) (and the flight's, with `[flight]`).
+const LEVELS_3D: &[Level] = &[Level::Scenario, Level::Bounce, Level::Kick3d, Level::Instep, Level::Foot];
 
 /// The 3D part of an experiment: its solver and a grid of kicks, the base
 /// kick and every combination of the axes' values (cell order: the last
@@ -51,30 +55,26 @@ impl Kicks3d {
 fn kick_at(mut scenario: Scenario, mut spec: Kick3dSpec, grid: &Grid, index: u64) -> Result<Kick3d, Kick3dError> {
     // In axis order: each step is validated, so the order names the error.
     for (axis, value) in grid.axes.iter().zip(grid.coordinates(index)) {
-        match Parameter::from_name(axis.parameter.name) {
-            Some(p) => scenario = scenario.with(p, value)?,
-            None if axis.parameter.level == Level::Scenario => {
-                // The target restitution, the one 1D parameter outside `Parameter`.
-                scenario = scenario.with_law(scenario.law_kind(), Some(value))?;
-            }
+        match axis.parameter.level {
+            // The flight's are the flight's (`Grid::flight_spec`).
+            Level::Flight => {}
+            Level::Scenario | Level::Bounce => scenario = scenario.with_parameter(axis.parameter, value)?,
             // The foot: its spec with the value, built again (a pose moves the leg's mass).
-            None if axis.parameter.level == Level::Foot => {
+            Level::Foot => {
                 let mut foot_spec = scenario.spec();
                 foot_spec
                     .set_parameter(axis.parameter, Value::Number(value))
                     .map_err(|e| Kick3dError::Experiment { reason: e.to_string() })?;
                 scenario = scenario.on_foot(foot_spec.foot()?)?;
             }
-            None => {
-                spec.set_parameter(axis.parameter, Value::Number(value)).map_err(|e| Kick3dError::Experiment { reason: e.to_string() })?
-            }
+            _ => spec.set_parameter(axis.parameter, Value::Number(value)).map_err(|e| Kick3dError::Experiment { reason: e.to_string() })?,
         }
     }
     Kick3d::new(scenario, &spec)
 }
 
 /// The 3D part of an experiment (the parent's `parse` decided it is one).
-pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kicks3d, ExperimentError> {
+pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment, flight: Option<&FlightPlan>) -> Result<Kicks3d, ExperimentError> {
     let (solver_name, solver) = match &raw.solver {
         Some(s) => {
             let solver = Solver3d::from_name(s.get_ref(), 1e-5).map_err(|e| at.error(s.span(), "solver", e.to_string()))?;
@@ -110,7 +110,14 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
         |p| base_raw.value(p).map(|v| (v, format!("base.{}", p.name))),
         |p| base_raw.switch(p).map(|v| (v, format!("base.{}", p.name))),
     )?;
-    let kick3d = raw.kick3d.unwrap_or_default();
+    let mut kick3d = raw.kick3d.unwrap_or_default();
+    // [base]'s keys of the 3D kick and the instep: as [kick3d]'s.
+    for (p, value, span) in base_raw.given().filter(|(p, _, _)| matches!(p.level, Level::Kick3d | Level::Instep)) {
+        if kick3d.value(p).is_some() {
+            return Err(at.error(span, &format!("base.{}", p.name), "also set in [kick3d]; set it in one place"));
+        }
+        kick3d.set_parameter(p, value).map_err(|e| at.error(span, &format!("base.{}", p.name), e.to_string()))?;
+    }
     // A problem of the fixed kick names its key in [kick3d] (or [base]).
     let locate = |e: &Kick3dError, fallback: &str| {
         let named = match e {
@@ -118,7 +125,12 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
             Kick3dError::OffsetOutsideBall { .. } => Some("offset"),
             _ => None,
         };
-        match named.and_then(|n| key_span(text, "kick3d", n).map(|s| (s, format!("kick3d.{n}")))) {
+        let in_table = |n: &str| {
+            key_span(text, "kick3d", n)
+                .map(|s| (s, format!("kick3d.{n}")))
+                .or_else(|| base_raw.given().find(|(p, _, _)| p.name == n).map(|(_, _, s)| (s, format!("base.{n}"))))
+        };
+        match named.and_then(in_table) {
             Some((span, key)) => at.error(span, &key, e.to_string()),
             None => at.error(0..0, fallback, e.to_string()),
         }
@@ -130,7 +142,13 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
     for axis in raw.sweep.iter().flatten() {
         let name = axis.parameter.get_ref();
         let key = format!("sweep.{name}");
-        let parameter = parameters::find_at(LEVELS_3D, name).map_err(|e| at.error(axis.parameter.span(), &key, e.to_string()))?;
+        let parameter = match parameters::find_at(LEVELS_3D, name) {
+            Ok(p) => p,
+            Err(e) => match super::flight::axis_parameter(name, flight, super::flight::After::ThreeD) {
+                Some(found) => found.map_err(|message| at.error(axis.parameter.span(), &key, message))?,
+                None => return Err(at.error(axis.parameter.span(), &key, e.to_string())),
+            },
+        };
         if parameter.shape != Shape::Scalar {
             return Err(at.error(
                 axis.parameter.span(),
@@ -142,8 +160,11 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
             return Err(at.error(axis.parameter.span(), &key, "parameter swept twice"));
         }
         let fixed_at = match parameter.level {
-            Level::Scenario | Level::Foot => base_raw.value(parameter).map(|v| (v.span(), format!("base.{name}"))),
-            _ => key_span(text, "kick3d", name).map(|s| (s, format!("kick3d.{name}"))),
+            Level::Flight => None,
+            Level::Scenario | Level::Bounce | Level::Foot => base_raw.value(parameter).map(|v| (v.span(), format!("base.{name}"))),
+            _ => key_span(text, "kick3d", name)
+                .map(|s| (s, format!("kick3d.{name}")))
+                .or_else(|| base_raw.given().find(|(p, _, _)| p.name == parameter.name).map(|(_, _, s)| (s, format!("base.{name}")))),
         };
         if let Some((span, key)) = fixed_at {
             return Err(at.error(span, &key, "this parameter is also swept; set it in one place"));
@@ -158,8 +179,16 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment) -> Result<Kic
         }
         // Each value alone against the base, so the error names its line.
         for (&v, value_span) in values.iter().zip(&value_spans) {
-            let one = Grid { axes: vec![Axis { parameter, values: vec![v] }] };
-            kick_at(scenario, kick3d, &one, 0).map_err(|e| at.error(value_span.clone(), &key, format!("value {}: {e}", short(v))))?;
+            let checked = match (parameter.level, flight) {
+                (Level::Flight, Some(plan)) => {
+                    super::flight::check_axis_value(&plan.rest, parameter, v, super::flight::After::ThreeD).map_err(|e| e.to_string())
+                }
+                _ => {
+                    let one = Grid { axes: vec![Axis { parameter, values: vec![v] }] };
+                    kick_at(scenario, kick3d, &one, 0).map(drop).map_err(|e| e.to_string())
+                }
+            };
+            checked.map_err(|e| at.error(value_span.clone(), &key, format!("value {}: {e}", short(v))))?;
         }
         axes.push(Axis { parameter, values });
         last_span = span;

@@ -4,8 +4,8 @@
 use super::{Failure, Level, Row};
 use crate::columns::{law_settings, Column, OutcomeSet};
 use crate::experiment::Kicks3d;
+use crate::flight::FlightPlan;
 use kick_3d::OBSERVABLES_3D;
-use kick_flight::FlightSpec;
 
 /// The 3D outcome set of a solver: its name (`NAME-3d`), the law and
 /// [`OBSERVABLES_3D`], kick-3d's columns.
@@ -21,7 +21,7 @@ pub fn outcome_set_3d(solver: &str, scenario: &kick_core::Scenario) -> OutcomeSe
 #[derive(Debug, Clone, Copy)]
 pub struct ThreeD<'a> {
     pub kicks: &'a Kicks3d,
-    pub flight: Option<&'a FlightSpec>,
+    pub flight: Option<&'a FlightPlan>,
 }
 
 impl Level for ThreeD<'_> {
@@ -37,10 +37,10 @@ impl Level for ThreeD<'_> {
     fn outcome_sets(&self) -> Vec<OutcomeSet> {
         let kick = outcome_set_3d(&self.kicks.solver_name, &self.kicks.scenario);
         let mut sets = vec![kick];
-        if let Some(rest) = self.flight {
-            let spec = kick_flight::FlightSpec { gravity: Some(kick_core::GRAVITY), ..*rest };
+        if let Some(plan) = self.flight {
+            let spec = kick_flight::FlightSpec { gravity: Some(kick_core::GRAVITY), ..plan.rest };
             let flown = kick_flight::Flight::from_launch([1.0, 0.0, 1.0], [0.0; 3], &spec).ok();
-            sets.push(crate::flight::flight_set(&sets[0].solver, rest, flown.as_ref()));
+            sets.push(crate::flight::flight_set(&sets[0].solver, plan, flown.as_ref()));
         }
         sets
     }
@@ -61,12 +61,16 @@ impl Level for ThreeD<'_> {
         if let Some(flag) = &outside {
             row.flag(0, flag.clone());
         }
-        if let Some(rest) = self.flight {
+        if let Some(plan) = self.flight {
+            let mut values = [0.0; crate::flight::MAX_FLIGHT_VALUES];
             let flown = match (&kick, &outcome) {
-                (Ok(k), Ok(o)) => crate::flight::after_3d(k, o, rest).map(|run| run.outcome.values()),
+                (Ok(k), Ok(o)) => {
+                    let rest = self.kicks.grid.flight_spec(index, &plan.rest);
+                    crate::flight::flight_after_3d(k, o, &rest).and_then(|f| plan.fly_into(&f, &mut values))
+                }
                 (Err(e), _) | (_, Err(e)) => Err(Failure::refused(format!("no flight: the kick failed: {e}"))),
             };
-            row.put(1, flown);
+            row.put(1, flown.map(|n| &values[..n]));
             if let Some(flag) = &outside {
                 row.flag_after(1, flag);
             }
