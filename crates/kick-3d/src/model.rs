@@ -260,6 +260,8 @@ impl KickSpec {
     pub fn value(&self, p: &ParameterDef) -> Option<Value> {
         match p.level {
             Level::Scenario | Level::Bounce => self.scenario.value(p).map(Value::Number),
+            Level::Foot if p.shape == kick_core::parameters::Shape::Switch => self.scenario.leg.map(Value::Switch),
+            Level::Foot => self.scenario.value(p).map(Value::Number),
             _ => self.kick3d.value(p),
         }
     }

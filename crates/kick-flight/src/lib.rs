@@ -59,7 +59,8 @@ pub mod spec;
 pub mod validation;
 
 pub use aim::{
-    aim_best, aim_launch, aim_launch_cancellable, aim_launch_with, aim_with, AimError, AimSolution, Family, LaunchFree, Objective, Scene, Wall, WallPass,
+    aim_best, aim_launch, aim_launch_cancellable, aim_launch_with, aim_with, AimError, AimSolution, Family, LaunchFree, Objective, Scene,
+    Wall, WallPass,
 };
 pub use air::Air;
 pub use coefficients::{DragModel, LiftModel};

@@ -392,7 +392,13 @@ fn run(
                         let t_cross = locate(|t| dense.component(X, t) - d, t0, t1);
                         if t_land.is_none_or(|t| t_cross <= t) {
                             let s = dense.at(t_cross);
-                            let c = Crossing { distance: d, time: t_cross, height: s[Z], lateral_offset: s[Y], velocity: vector(&s, 3) };
+                            let c = Crossing {
+                                distance: d,
+                                time: t_cross,
+                                height: radius + s[Z],
+                                lateral_offset: s[Y],
+                                velocity: vector(&s, 3),
+                            };
                             finite("crossing", &[c.time, c.height, c.lateral_offset], c.time)?;
                             finite("crossing velocity", &c.velocity, c.time)?;
                             crossings[k] = Some(c);

@@ -568,7 +568,20 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         kicks[8].0.median,
         kicks[9].0.median
     );
-    let other = Other { shell, paper_law, shell_cost, leg, leg_cost, flight_rows, flights_1, flights_2, flight_speed_up, aims, kicks, baseline_copy };
+    let other = Other {
+        shell,
+        paper_law,
+        shell_cost,
+        leg,
+        leg_cost,
+        flight_rows,
+        flights_1,
+        flights_2,
+        flight_speed_up,
+        aims,
+        kicks,
+        baseline_copy,
+    };
 
     let files = file_runs(args.quick)?;
     for run in &files {

@@ -294,12 +294,7 @@ fn write(
     let flight_counts = level.flight.as_ref().map(|_| writer.status_counts(1));
     finish_table(level, writer, &bar)?;
     let others = |counts: &[u64]| -> Vec<(&'static str, u64)> {
-        Status::ALL[1..]
-            .iter()
-            .copied()
-            .map(|s| (s.name(), counts[usize::from(s.code())]))
-            .filter(|&(_, n)| n > 0)
-            .collect()
+        Status::ALL[1..].iter().copied().map(|s| (s.name(), counts[usize::from(s.code())])).filter(|&(_, n)| n > 0).collect()
     };
     let flown = flight_counts.map(|c| (c[usize::from(Status::Separated.code())], others(&c)));
     Ok((out.to_path_buf(), others(&counts), flown))

@@ -154,10 +154,12 @@ impl SampledSweep {
         self.fixed.law.unwrap_or(LawKind::PowerLaw)
     }
 
-    /// The parameters the sweep's law uses (its file's columns), in declaration order.
+    /// The parameters the sweep's law uses (its file's columns), in
+    /// declaration order; the foot (leg, pose, boot) is held, and recorded
+    /// with the outcomes' settings.
     pub fn parameters(&self) -> impl Iterator<Item = &'static ParameterDef> + '_ {
         let law = self.law();
-        parameters::at_levels(ScenarioSpec::LEVELS).filter(move |p| law.uses(p))
+        parameters::at_levels(ScenarioSpec::LEVELS).filter(move |p| law.uses(p) && p.level != parameters::Level::Foot)
     }
 
     /// Refuse a range for a parameter held too, or one the law does not use.
@@ -166,6 +168,9 @@ impl SampledSweep {
             let refuse = |why: String| Err(StudyError::Flag { flag: "range", message: format!("--range {}: {why}", r.parameter.name) });
             if !self.law().uses(r.parameter) {
                 return refuse(format!("law `{}` does not use `{}`", self.law().name(), r.parameter.name));
+            }
+            if r.parameter.level == parameters::Level::Foot {
+                return refuse(format!("the foot (`{}`) is held in a sampled sweep; give it by its flag", r.parameter.name));
             }
             if self.fixed.value(r.parameter).is_some() {
                 return refuse(format!("`{}` is also held (flag {}); give one", r.parameter.name, r.parameter.flag()));

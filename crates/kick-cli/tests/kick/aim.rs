@@ -31,11 +31,8 @@ fn the_printed_launch_flown_again_reaches_the_target() {
         assert!(v["wall_clearance"].as_f64().unwrap() >= 0.0);
         assert_eq!(v["from"], from);
         let names: Vec<&str> = v["parameters"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
-        let expected: &[&str] = if from == "kick" {
-            &["foot_speed", "offset", "contact_depth", "heading"]
-        } else {
-            &["speed", "launch_angle", "azimuth"]
-        };
+        let expected: &[&str] =
+            if from == "kick" { &["foot_speed", "offset", "contact_depth", "heading"] } else { &["speed", "launch_angle", "azimuth"] };
         assert_eq!(names, expected);
     }
 }

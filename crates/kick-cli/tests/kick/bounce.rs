@@ -118,7 +118,7 @@ fn bounce_out_of_range_names_its_own_flags() {
 fn a_result_outside_its_law_is_flagged_and_exits_1() {
     for args in [
         &["bounce", "--speed", "100", "--format", "json"][..],
-        &["simulate", "--law", "shell", "--foot-speed", "1e4", "--format", "json"][..],
+        &["simulate", "--law", "shell", "--foot-speed", "1000", "--format", "json"][..],
         &["simulate", "--stiffness", "1e4", "--foot-speed", "100", "--format", "json"][..],
         &["simulate3d", "--law", "shell", "--foot-speed", "60", "--format", "json"][..],
     ] {

@@ -12,9 +12,12 @@ use kick_core::{AnyLaw, KickError, Outcome, ParameterDef, Scenario, ScenarioSpec
 
 /// The parameters of a 1D row under `law`: every parameter of the 1D
 /// scenario and its ball the law uses ([`kick_core::LawKind::uses`]; the
-/// eight [`Parameter`]s under the paper's law), in declaration order.
+/// eight [`Parameter`]s under the paper's law), in declaration order. The
+/// foot (leg, pose, boot) is not a column: the outcomes' settings record it.
 pub fn row_parameters(law: kick_core::LawKind) -> Vec<&'static ParameterDef> {
-    kick_core::parameters::at_levels(ScenarioSpec::LEVELS).filter(|p| law.uses(p)).collect()
+    kick_core::parameters::at_levels(ScenarioSpec::LEVELS)
+        .filter(|p| law.uses(p) && p.level != kick_core::parameters::Level::Foot)
+        .collect()
 }
 
 /// Parameter columns of the 1D model under `law` ([`row_parameters`]), names and units as declared.
@@ -87,7 +90,7 @@ impl OneD<'_> {
                 8
             } else {
                 let spec = s.spec();
-                let list = kick_core::parameters::at_levels(ScenarioSpec::LEVELS).filter(|p| law.uses(p));
+                let list = row_parameters(law);
                 let mut n = 0;
                 for (slot, p) in parameters.iter_mut().zip(list) {
                     *slot = spec.value(p).unwrap_or(f64::NAN);
@@ -96,7 +99,7 @@ impl OneD<'_> {
                 n
             }
         } else {
-            kick_core::parameters::at_levels(ScenarioSpec::LEVELS).filter(|p| law.uses(p)).count()
+            row_parameters(law).len()
         };
         if let Scenarios::Grid { grid, .. } = &self.kicks.scenarios {
             if grid.has_flight_axes() {

@@ -53,11 +53,14 @@ impl SampledKicks {
 
     /// The parameters of a row, in declaration order: every one of the
     /// kick's levels the law uses; the instep's only when one of them is
-    /// held or ranged (without, the kick has no instep).
+    /// held or ranged (without, the kick has no instep). The foot (leg,
+    /// pose, boot) is held, recorded with the outcomes' settings.
     pub fn row_parameters(&self) -> Vec<&'static ParameterDef> {
         let law = self.law();
         let instep = parameters::at_level(ParameterLevel::Instep).any(|p| self.fixed.value(p).is_some() || self.ranges.given(p).is_some());
-        parameters::at_levels(KickSpec::LEVELS).filter(|p| law.uses(p) && (p.level != ParameterLevel::Instep || instep)).collect()
+        parameters::at_levels(KickSpec::LEVELS)
+            .filter(|p| law.uses(p) && p.level != ParameterLevel::Foot && (p.level != ParameterLevel::Instep || instep))
+            .collect()
     }
 
     /// The flight parameters drawn (`--range` of a flight parameter).
@@ -79,6 +82,9 @@ impl SampledKicks {
             }
             if !self.law().uses(p) {
                 return refuse(format!("law `{}` does not use `{}`", self.law().name(), p.name));
+            }
+            if p.level == ParameterLevel::Foot {
+                return refuse(format!("the foot (`{}`) is held in a sampled sweep; give it by its flag", p.name));
             }
             if self.fixed.value(p).is_some() {
                 return refuse(format!("`{}` is also held (flag {}); give one", p.name, p.flag()));
