@@ -582,6 +582,9 @@ impl Kick3d {
     /// shell ball's but under law `shell`), an instep setting of a kick
     /// without an instep, or one of no level the kick has.
     pub fn parameter_value(&self, p: &ParameterDef) -> Option<Value> {
+        if !self.base.law_kind().uses(p) {
+            return None;
+        }
         if matches!(p.level, Level::Scenario | Level::Bounce) {
             return self.base.spec().value(p).map(Value::Number);
         }

@@ -80,6 +80,14 @@ impl Shape {
             Shape::Switch => "true or false",
         }
     }
+
+    /// A value of this shape given where another was wanted (a bool is named as one).
+    pub fn found(self) -> &'static str {
+        match self {
+            Shape::Switch => "a bool (true or false)",
+            other => other.describe(),
+        }
+    }
 }
 
 /// One end of a valid range.
@@ -322,7 +330,7 @@ impl Value {
 pub enum ParameterError {
     #[error("unknown parameter `{name}` of the {levels}{}", did_you_mean(.nearby, .valid))]
     Unknown { name: String, levels: String, nearby: Vec<&'static str>, valid: Vec<&'static str> },
-    #[error("`{name}` takes {}, got {}", .expected.describe(), .found.describe())]
+    #[error("`{name}` takes {}, got {}", .expected.describe(), .found.found())]
     WrongShape { name: &'static str, expected: Shape, found: Shape },
 }
 

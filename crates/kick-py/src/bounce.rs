@@ -45,7 +45,7 @@ pub fn bounce<'py>(py: Python<'py>, law: &str, params: Option<&Bound<'py, PyDict
 
 /// `bounce_many`'s rows: a spec per row through `kick_bounce::run`.
 struct ModelBounce {
-    columns: Vec<(String, usize)>,
+    columns: Vec<(String, Vec<usize>)>,
 }
 
 /// Output columns of `bounce_many`: (name, width, unit).
@@ -91,7 +91,7 @@ impl Model for ModelBounce {
     fn set(&self, spec: &mut BounceSpec, parameter: &'static ParameterDef, value: Value) {
         let _ = spec.set(parameter.name, value);
     }
-    fn columns(&self) -> &[(String, usize)] {
+    fn columns(&self) -> &[(String, Vec<usize>)] {
         &self.columns
     }
     fn solve(&self, spec: &BounceSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
@@ -115,7 +115,9 @@ pub fn bounce_many<'py>(
     guard(|| {
         let mut base = BounceSpec::default();
         base.law = Some(self::law(law)?);
-        let model = ModelBounce { columns: BOUNCE_COLUMNS.iter().map(|(n, w, _)| (n.to_string(), *w)).collect() };
+        let model = ModelBounce {
+            columns: BOUNCE_COLUMNS.iter().map(|(n, w, _)| (n.to_string(), if *w == 1 { vec![] } else { vec![*w] })).collect(),
+        };
         run_many(py, &model, base, crate::params::threads(threads)?, arrays)
     })
 }

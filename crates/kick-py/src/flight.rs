@@ -96,7 +96,9 @@ pub fn flight_many<'py>(
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let model = ModelFlight { columns: FLIGHT_COLUMNS.iter().map(|(n, w, _)| (n.to_string(), *w)).collect() };
+        let model = ModelFlight {
+            columns: FLIGHT_COLUMNS.iter().map(|(n, w, _)| (n.to_string(), if *w == 1 { vec![] } else { vec![*w] })).collect(),
+        };
         run_many(py, &model, FlightSpec::default(), crate::params::threads(threads)?, arrays)
     })
 }
@@ -126,7 +128,7 @@ const FLIGHT_COLUMNS: [(&str, usize, Get); 16] = [
 
 /// `flight_many`'s rows: a flight spec per row through `kick_flight::solve`.
 struct ModelFlight {
-    columns: Vec<(String, usize)>,
+    columns: Vec<(String, Vec<usize>)>,
 }
 
 impl Model for ModelFlight {
@@ -140,7 +142,7 @@ impl Model for ModelFlight {
             let _ = spec.set(p, &value.numbers());
         }
     }
-    fn columns(&self) -> &[(String, usize)] {
+    fn columns(&self) -> &[(String, Vec<usize>)] {
         &self.columns
     }
     fn solve(&self, spec: &FlightSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {

@@ -118,9 +118,9 @@ def test_keywords_are_the_flags_and_unknown_ones_are_refused(kick_bin):
             call(sped=3.0)
         with pytest.raises(ValueError, match="unknown parameter `foot_mass`"):
             call(speed=3.0, foot_mass=2.0)
-        with pytest.raises(ValueError, match="unknown contact law `hertz`: expected one of shell, power-law"):
+        with pytest.raises(ValueError, match="unknown contact law `hertz`: expected one of power-law, .*, shell"):
             call(speed=3.0, law="hertz")
-    with pytest.raises(ValueError, match="`speed` takes a number, got true or false"):
+    with pytest.raises(ValueError, match=r"`speed` takes a number, got a bool \(true or false\)"):
         kick.bounce(speed=True)  # a switch where a number belongs, as `simulate` says it
     with pytest.raises(ValueError, match="`stiffness`"):
         kick.bounce(speed=5.0, stiffness=1e5)  # a parameter of the kick's laws, not the shell's

@@ -206,7 +206,7 @@ def test_flight_many_rows_are_single_flights():
     for index in np.ndindex(2, 2):
         one = kick.flight(speed=speeds[index], launch_angle=45.0, spin=(0.0, 0.0, 20.0), distance=9.15)
         assert out["flight_time"][index] == one["flight_time"]
-        assert out["landing_velocity"][index].tolist() == one["landing_velocity"]
+        assert np.array_equal(out["landing_velocity"][index], one["landing_velocity"])
         assert out["evaluations"][index] == one["evaluations"]
     # Fault 6: 1e-9 m/s takes 2 v sin(45 deg) / g, not half of it.
     assert abs(out["flight_time"][1, 1] / (2e-9 * np.sin(np.pi / 4) / 9.81) - 1.0) < 1e-6

@@ -27,7 +27,7 @@ def test_rows_outside_their_law_keep_their_numbers_with_status_4(kick_bin):
     assert bounces["max_compression"][1] > 0.055 and bounces["max_compression"][0] < 0.055
     assert bounces["failure_index"].tolist() == [1, 2]
     assert all("outside the validity of law `shell`" in m for m in bounces["failure_message"])
-    shell = kick.simulate_many(law="shell", foot_speed=[20.0, 1e4])
+    shell = kick.simulate_many(law="shell", foot_speed=[20.0, 1000.0])
     assert shell["status"].tolist() == [0, 4] and np.isfinite(shell["v_ball_out"][1])
     paper = kick.simulate_many(stiffness=1e4, foot_speed=[20.0, 100.0])
     assert paper["status"].tolist() == [0, 4]
@@ -37,13 +37,13 @@ def test_rows_outside_their_law_keep_their_numbers_with_status_4(kick_bin):
         one = kick.bounce(speed=100.0)
     assert one["status"] == "outside_validity" and one["outside_validity"]["limit"] == "R/2"
     with pytest.warns(kick.OutsideValidityWarning):
-        one = kick.simulate(law="shell", foot_speed=1e4)
+        one = kick.simulate(law="shell", foot_speed=1000.0)
     assert one["status"] == "outside_validity"
     assert one["max_compression"] == shell["max_compression"][1]
     with pytest.warns(kick.OutsideValidityWarning):
         kick.simulate3d(law="shell", foot_speed=60.0)
     with pytest.warns(kick.OutsideValidityWarning):
-        kick.history(law="shell", foot_speed=1e4, samples=20)
+        kick.history(law="shell", foot_speed=1000.0, samples=20)
     assert kick.bounce(speed=20.0)["status"] == "separated"
 
 

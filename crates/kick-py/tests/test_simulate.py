@@ -128,7 +128,7 @@ def test_unknown_names_list_the_valid_ones():
 
 
 def test_unknown_keywords_name_the_nearby_ones():
-    with pytest.raises(ValueError, match=r"unknown parameter `foot_mas` of the 1D scenario or bounce: did you mean `foot_mass`\?"):
+    with pytest.raises(ValueError, match=r"unknown parameter `foot_mas` of the 1D scenario or bounce or foot: did you mean `foot_mass`\?"):
         kick.simulate(foot_mas=3.0)
     # A 3D parameter is not a keyword of the 1D function.
     with pytest.raises(ValueError, match="unknown parameter `offset` of the 1D scenario"):

@@ -11,6 +11,7 @@ PARAMETERS: tuple[dict[str, Any], ...]
 STATUS: dict[int, str]
 
 class NumericalError(RuntimeError): ...
+class OutsideValidityWarning(RuntimeWarning): ...
 
 OBSERVABLES: list[tuple[str, str]]
 HISTORY_COLUMNS: list[tuple[str, str]]
@@ -63,6 +64,7 @@ def simulate3d(
     drive_force: float | None = ...,
     restitution: float | None = ...,
     offset: float | None = ...,
+    contact_depth: float | None = ...,
     approach_angle: float | None = ...,
     friction: float | None = ...,
     ball_radius: float | None = ...,
@@ -91,6 +93,16 @@ def simulate3d(
     solver: str = ...,
     law: str = ...,
     dt: float | None = ...,
+    flight: bool = ...,
+    distance: float | Sequence[float] | None = ...,
+    air_density: float | None = ...,
+    temperature: float | None = ...,
+    pressure: float | None = ...,
+    altitude: float | None = ...,
+    drag_coefficient: float | None = ...,
+    ball_panels: float | None = ...,
+    lift_coefficient: float | None = ...,
+    spin_decay: float | None = ...,
 ) -> dict[str, Any]:
     """Solve one off-center 3D kick (spin, friction), as ``kick simulate3d``."""
 
@@ -134,6 +146,7 @@ def simulate3d_many(
     drive_force: ArrayLike | None = ...,
     restitution: ArrayLike | None = ...,
     offset: ArrayLike | None = ...,
+    contact_depth: ArrayLike | None = ...,
     approach_angle: ArrayLike | None = ...,
     friction: ArrayLike | None = ...,
     ball_radius: ArrayLike | None = ...,
@@ -163,6 +176,16 @@ def simulate3d_many(
     law: str = ...,
     dt: float | None = ...,
     threads: int | np.integer | None = ...,
+    flight: bool = ...,
+    distance: float | Sequence[float] | None = ...,
+    air_density: ArrayLike | None = ...,
+    temperature: ArrayLike | None = ...,
+    pressure: ArrayLike | None = ...,
+    altitude: ArrayLike | None = ...,
+    drag_coefficient: ArrayLike | None = ...,
+    ball_panels: ArrayLike | None = ...,
+    lift_coefficient: ArrayLike | None = ...,
+    spin_decay: ArrayLike | None = ...,
 ) -> dict[str, Any]:
     """Solve many off-center 3D kicks from arrays."""
 
@@ -207,6 +230,7 @@ def history3d(
     drive_force: float | None = ...,
     restitution: float | None = ...,
     offset: float | None = ...,
+    contact_depth: float | None = ...,
     approach_angle: float | None = ...,
     friction: float | None = ...,
     ball_radius: float | None = ...,
@@ -290,7 +314,8 @@ def flight(
     ball_panels: float | None = ...,
     lift_coefficient: float | None = ...,
     spin_decay: float | None = ...,
-    distance: float | None = ...,
+    distance: float | Sequence[float] | None = ...,
+    samples: int | np.integer | None = ...,
 ) -> dict[str, Any]:
     """The ball's flight after the kick (crate kick-flight): drag crisis in Re,"""
 
@@ -315,7 +340,7 @@ def flight_many(
     distance: ArrayLike | None = ...,
     threads: int | np.integer | None = ...,
 ) -> dict[str, Any]:
-    """Solve many flights, as ``flight`` does, from arrays (``kick_flight::flight_many``)."""
+    """Solve many flights, as ``flight`` does, from arrays (``kick_flight::solve`` per row)."""
 
 def bounce(
     *,
@@ -372,6 +397,9 @@ def aim(
     wall: tuple[float, float, float] | Sequence[float] | None = ...,
     from_: str = ...,
     free: Sequence[str] | None = ...,
+    law: str | None = ...,
+    objective: str | None = ...,
+    bounds: Mapping[str, tuple[float, float]] | None = ...,
     speed: float | None = ...,
     launch_angle: float | None = ...,
     azimuth: float | None = ...,
@@ -398,6 +426,7 @@ def aim(
     drive_force: float | None = ...,
     restitution: float | None = ...,
     offset: float | None = ...,
+    contact_depth: float | None = ...,
     approach_angle: float | None = ...,
     friction: float | None = ...,
     ball_inertia: float | None = ...,
