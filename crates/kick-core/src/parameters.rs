@@ -592,17 +592,7 @@ pub const TANGENTIAL_STIFFNESS: ParameterDef = scalar(
     Number(1.0e5),
     Valid::new(Bound::Open(0.0), Bound::Closed(f64::INFINITY), "> 0 (inf: rigid grip, solved as a constraint)"),
     SampleRange::log(1e4, 1e6),
-    "Tangential stiffness of the contact (Cundall-Strack spring; inf: rigid grip, a constraint with no spring)",
-);
-pub const TANGENTIAL_DAMPING: ParameterDef = scalar(
-    "tangential_damping",
-    "c_t",
-    "N s/m",
-    Kick3d,
-    Number(100.0),
-    Valid::POSITIVE,
-    SampleRange::log(10.0, 1000.0),
-    "Tangential damping of the contact",
+    "Tangential stiffness of the contact: the shell's tangential compliance, a spring in series with the Coulomb slider (inf: rigid grip, a constraint with no spring)",
 );
 pub const FOOT_INERTIA: ParameterDef = ParameterDef {
     name: "foot_inertia",
@@ -702,7 +692,7 @@ pub const PATCH_CONTACT: ParameterDef = ParameterDef {
 };
 
 /// Every parameter of the 1D and 3D levels, each once, lower levels first.
-pub static PARAMETERS: [ParameterDef; 29] = [
+pub static PARAMETERS: [ParameterDef; 28] = [
     FOOT_MASS,
     BALL_MASS,
     FOOT_SPEED,
@@ -718,7 +708,6 @@ pub static PARAMETERS: [ParameterDef; 29] = [
     BALL_RADIUS,
     BALL_INERTIA,
     TANGENTIAL_STIFFNESS,
-    TANGENTIAL_DAMPING,
     FOOT_INERTIA,
     FOOT_HALF_EXTENTS,
     BORDER_RADIUS,

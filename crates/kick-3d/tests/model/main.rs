@@ -9,4 +9,5 @@ mod patch;
 mod peaks;
 mod scene;
 mod support;
+mod tangential;
 mod validation;

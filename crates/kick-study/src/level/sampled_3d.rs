@@ -82,7 +82,6 @@ pub fn solved_value(p: &ParameterDef, spec: &KickSpec, kick: Option<&Kick3d>) ->
         ("ball_radius", Some(k)) => one(k.ball_radius),
         ("ball_inertia", Some(k)) => one(k.ball_inertia),
         ("tangential_stiffness", Some(k)) => one(k.tangential_stiffness),
-        ("tangential_damping", Some(k)) => one(k.tangential_damping),
         ("foot_inertia", Some(k)) => k.foot_inertia,
         ("border_radius", Some(k)) => one(k.foot_shape.border_radius()),
         ("gravity", Some(k)) => switch(k.gravity),
