@@ -21,7 +21,7 @@
 //! - I Ω̇ = p × (−F) − Ω × I Ω (Euler's equations),
 //! - q̇ = ½ q ⊗ Ω,
 //! - ω̇_b = (−R n) × F / I_b − Ω × ω_b,
-//! - ξ̇ = the spring–damper element's rate (see [`crate::dynamics`] for the law).
+//! - ξ̇ = the tangential element's rate (the law: [`crate::tangential`]).
 //!
 //! The right-hand side is the same law as [`crate::dynamics::Dynamics`]
 //! (which writes both bodies in the world frame), with each switch made

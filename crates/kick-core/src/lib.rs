@@ -1,8 +1,8 @@
 //! Core of the kick workspace: scenario parameters with validated construction,
 //! the contact-law abstraction, outcome types and errors shared by every model level.
 //!
-//! Equation numbers refer to "The Millisecond Physics of a Soccer Kick"
-//! (`shared/paper/millisecond-physics-of-a-soccer-kick.md`).
+//! Equation numbers refer to *The Millisecond Physics of a Soccer Kick*;
+//! each is stated, with the function that implements it, in `paper/model.md`.
 
 pub mod check;
 pub mod dop853;

@@ -8,6 +8,13 @@
 //! the source it stands, and how far it was checked ([`Checked`]). Code reads
 //! values in SI through [`Measurement::interval_si`]; nothing is converted by
 //! hand in the data file, so every number can be held against its source.
+//!
+//! A spread (`spread`) is the SD of a population (players, kicks, balls) and
+//! says nothing of how well the mean was measured; a measurement uncertainty
+//! ([`Uncertainty`]) is either stated by the source or, when it states none,
+//! only the rounding of the published digits (`resolution`), a lower bound.
+//! A [`Comparison`] normalises its residual by the uncertainty:
+//! z = (model − measured)/u.
 
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
@@ -40,19 +47,28 @@ pub enum Checked {
     Abstract,
     /// Read only as quoted by another work, named here.
     Secondary(String),
+    /// Read only in a code base's transcription (a digitised figure, copied
+    /// constants), named here: shown beside the model, never counted.
+    Transcription(String),
     /// Not found in any copy read.
     Unchecked,
 }
 
 impl Checked {
-    /// text > abstract > secondary > unchecked.
+    /// text > abstract > secondary > transcription > unchecked.
     fn rank(&self) -> u8 {
         match self {
-            Checked::Text => 3,
-            Checked::Abstract => 2,
-            Checked::Secondary(_) => 1,
+            Checked::Text => 4,
+            Checked::Abstract => 3,
+            Checked::Secondary(_) => 2,
+            Checked::Transcription(_) => 1,
             Checked::Unchecked => 0,
         }
+    }
+
+    /// Read in the source itself (its text or its abstract).
+    pub fn in_the_source(&self) -> bool {
+        matches!(self, Checked::Text | Checked::Abstract)
     }
 
     /// The less checked of two (the first on a tie).
@@ -69,11 +85,10 @@ impl Checked {
             "text" => Some(Checked::Text),
             "abstract" => Some(Checked::Abstract),
             "unchecked" => Some(Checked::Unchecked),
-            other => other
-                .strip_prefix("secondary:")
-                .map(str::trim)
-                .filter(|which| !which.is_empty())
-                .map(|which| Checked::Secondary(which.to_string())),
+            other => {
+                let named = |prefix: &str| other.strip_prefix(prefix).map(str::trim).filter(|which| !which.is_empty()).map(str::to_string);
+                named("secondary:").map(Checked::Secondary).or_else(|| named("transcription:").map(Checked::Transcription))
+            }
         }
     }
 }
@@ -84,6 +99,7 @@ impl std::fmt::Display for Checked {
             Checked::Text => write!(f, "text"),
             Checked::Abstract => write!(f, "abstract"),
             Checked::Secondary(which) => write!(f, "secondary: {which}"),
+            Checked::Transcription(which) => write!(f, "transcription: {which}"),
             Checked::Unchecked => write!(f, "unchecked"),
         }
     }
@@ -92,6 +108,58 @@ impl std::fmt::Display for Checked {
 impl From<Checked> for String {
     fn from(c: Checked) -> String {
         c.to_string()
+    }
+}
+
+/// The uncertainty of a published value, one standard uncertainty in its unit.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "basis", rename_all = "snake_case")]
+pub enum Uncertainty {
+    /// Stated by the source (a standard error, an instrument's uncertainty):
+    /// `what` says which.
+    Stated { u: f64, what: String },
+    /// The source states none: half a unit of the last published digit
+    /// (`resolution`), taken as uniform, u = resolution/√12. A lower bound
+    /// on the real uncertainty, never a measurement's own.
+    Rounding { u: f64, resolution: f64 },
+}
+
+impl Uncertainty {
+    pub fn u(&self) -> f64 {
+        match self {
+            Uncertainty::Stated { u, .. } | Uncertainty::Rounding { u, .. } => *u,
+        }
+    }
+    /// Stated by the source (not rounding alone).
+    pub fn is_stated(&self) -> bool {
+        matches!(self, Uncertainty::Stated { .. })
+    }
+    /// The same basis at another size (a conversion or a propagation).
+    fn with_u(&self, u: f64) -> Uncertainty {
+        match self {
+            Uncertainty::Stated { what, .. } => Uncertainty::Stated { u, what: what.clone() },
+            Uncertainty::Rounding { resolution, .. } => Uncertainty::Rounding { u, resolution: *resolution },
+        }
+    }
+    /// The combination of two relative uncertainties in quadrature (a ratio
+    /// or a product): stated only if both are.
+    fn combine(a: &Uncertainty, b: &Uncertainty, u: f64) -> Uncertainty {
+        match (a, b) {
+            (Uncertainty::Stated { what: x, .. }, Uncertainty::Stated { what: y, .. }) => {
+                Uncertainty::Stated { u, what: format!("{x}; {y}, in quadrature") }
+            }
+            _ => Uncertainty::Rounding { u, resolution: f64::NAN },
+        }
+    }
+    /// How the page describes it.
+    pub fn describe(&self) -> String {
+        match self {
+            Uncertainty::Stated { what, .. } => format!("stated: {what}"),
+            Uncertainty::Rounding { resolution, .. } if resolution.is_finite() => {
+                format!("rounding of the published {} only (a lower bound)", crate::short(*resolution))
+            }
+            Uncertainty::Rounding { .. } => "rounding of the published digits only (a lower bound)".into(),
+        }
     }
 }
 
@@ -218,6 +286,12 @@ struct RawMeasurement {
     #[serde(default)]
     spread: Option<f64>,
     #[serde(default)]
+    uncertainty: Option<f64>,
+    #[serde(default)]
+    uncertainty_basis: Option<String>,
+    #[serde(default)]
+    resolution: Option<f64>,
+    #[serde(default)]
     claim: Option<String>,
     unit: Unit,
     conditions: String,
@@ -248,8 +322,11 @@ pub struct Measurement {
     pub value: Option<f64>,
     /// A published range [low, high].
     pub range: Option<[f64; 2]>,
-    /// One standard deviation, same unit, when published with the value.
+    /// One standard deviation of a population (players, kicks, balls), same
+    /// unit, when published with the value: not a measurement uncertainty.
     pub spread: Option<f64>,
+    /// The value's uncertainty, same unit (stated, or the published rounding).
+    pub uncertainty: Option<Uncertainty>,
     /// A published statement without a number (a trend, a sign).
     pub claim: Option<String>,
     pub unit: Unit,
@@ -280,6 +357,11 @@ impl Measurement {
     /// The midpoint of [`Measurement::interval_si`].
     pub fn midpoint_si(&self) -> Option<f64> {
         self.interval_si().map(|[lo, hi]| 0.5 * (lo + hi))
+    }
+
+    /// [`Measurement::uncertainty`] in SI.
+    pub fn uncertainty_si(&self) -> Option<Uncertainty> {
+        self.uncertainty.as_ref().map(|x| x.with_u(self.unit.to_si(x.u())))
     }
 }
 
@@ -354,6 +436,25 @@ impl Measurements {
                     return Err(invalid(key, format!("spread {s}: must be finite, > 0 and go with a `value`")));
                 }
             }
+            let uncertainty = match (m.uncertainty, m.uncertainty_basis.as_deref(), m.resolution) {
+                (None, None, None) => None,
+                (_, _, _) if m.value.is_none() => {
+                    return Err(invalid(key, "`uncertainty` and `resolution` go with a single `value`, not a range or a claim".into()))
+                }
+                (Some(u), Some(what), None) if u.is_finite() && u > 0.0 && !what.trim().is_empty() => {
+                    Some(Uncertainty::Stated { u, what: what.trim().to_string() })
+                }
+                (Some(u), _, None) if !(u.is_finite() && u > 0.0) => {
+                    return Err(invalid(key, format!("uncertainty {u}: must be finite and > 0")))
+                }
+                (Some(_), _, None) => {
+                    return Err(invalid(key, "`uncertainty` needs an `uncertainty_basis` saying what the source states".into()))
+                }
+                (None, None, Some(r)) if r.is_finite() && r > 0.0 => Some(Uncertainty::Rounding { u: r / 12f64.sqrt(), resolution: r }),
+                (None, None, Some(r)) => return Err(invalid(key, format!("resolution {r}: must be finite and > 0"))),
+                (None, Some(_), None) => return Err(invalid(key, "`uncertainty_basis` without an `uncertainty`".into())),
+                (_, _, Some(_)) => return Err(invalid(key, "give a stated `uncertainty` or the published `resolution`, not both".into())),
+            };
             for (field, v) in [("quantity", &m.quantity), ("conditions", &m.conditions), ("location", &m.location)] {
                 if v.trim().is_empty() {
                     return Err(invalid(key, format!("empty `{field}`")));
@@ -362,7 +463,11 @@ impl Measurements {
             let checked = Checked::parse(&m.checked).ok_or_else(|| {
                 invalid(
                     key,
-                    format!("checked = \"{}\": expected \"text\", \"abstract\", \"secondary: <which>\" or \"unchecked\"", m.checked),
+                    format!(
+                        "checked = \"{}\": expected \"text\", \"abstract\", \"secondary: <which>\", \"transcription: <which>\" \
+                         or \"unchecked\"",
+                        m.checked
+                    ),
                 )
             })?;
             measurements.push(Measurement {
@@ -371,6 +476,7 @@ impl Measurements {
                 value: m.value,
                 range: m.range,
                 spread: m.spread,
+                uncertainty,
                 claim: m.claim,
                 unit: m.unit,
                 conditions: m.conditions,
@@ -410,6 +516,7 @@ impl Measurements {
             key: m.key.clone(),
             low: Some(low),
             high: Some(high),
+            uncertainty: m.uncertainty_si(),
             unit: m.unit.si(),
             source: m.source.clone(),
             checked: m.checked.clone(),
@@ -419,7 +526,15 @@ impl Measurements {
     /// A measurement that is a claim in words (any number it has is ignored).
     pub fn claimed(&self, key: &str, needed_by: &'static str) -> Result<Measured, MeasurementError> {
         let m = self.get(key, needed_by)?;
-        Ok(Measured { key: m.key.clone(), low: None, high: None, unit: m.unit.si(), source: m.source.clone(), checked: m.checked.clone() })
+        Ok(Measured {
+            key: m.key.clone(),
+            low: None,
+            high: None,
+            uncertainty: None,
+            unit: m.unit.si(),
+            source: m.source.clone(),
+            checked: m.checked.clone(),
+        })
     }
 }
 
@@ -430,6 +545,8 @@ pub struct Measured {
     pub key: String,
     pub low: Option<f64>,
     pub high: Option<f64>,
+    /// The uncertainty of a single value (low = high), in `unit`.
+    pub uncertainty: Option<Uncertainty>,
     pub unit: &'static str,
     /// Key of the source (or `a/b`).
     pub source: String,
@@ -445,10 +562,18 @@ impl Measured {
             return None;
         }
         let weaker = Checked::weaker(&a.checked, &b.checked);
+        let uncertainty = match (&a.uncertainty, &b.uncertainty) {
+            (Some(ua), Some(ub)) if al == ah && bl == bh => {
+                let r = al / bl;
+                Some(Uncertainty::combine(ua, ub, r * ((ua.u() / al).powi(2) + (ub.u() / bl).powi(2)).sqrt()))
+            }
+            _ => None,
+        };
         Some(Measured {
             key: format!("{}/{}", a.key, b.key),
             low: Some(al / bh),
             high: Some(ah / bl),
+            uncertainty,
             unit: "1",
             source: if a.source == b.source { a.source.clone() } else { format!("{}/{}", a.source, b.source) },
             checked: weaker,
@@ -467,6 +592,7 @@ impl Measured {
             key: format!("{}*{}", self.key, factor.key),
             low: Some(l * fl),
             high: Some(h * fh),
+            uncertainty: None,
             unit: self.unit,
             source: if self.source == factor.source { self.source.clone() } else { format!("{}*{}", self.source, factor.source) },
             checked: weaker,
@@ -475,6 +601,11 @@ impl Measured {
 
     pub fn midpoint(&self) -> Option<f64> {
         Some(0.5 * (self.low? + self.high?))
+    }
+
+    /// A single value (not a range, not a claim).
+    pub fn is_point(&self) -> bool {
+        matches!((self.low, self.high), (Some(lo), Some(hi)) if lo == hi)
     }
 }
 
@@ -490,6 +621,8 @@ pub struct Comparison {
     /// How far the model lies outside [low, high]: model − high above,
     /// model − low below, 0 inside (None for a claim in words).
     pub outside: Option<f64>,
+    /// (model − measured)/u for a single value with an uncertainty.
+    pub z: Option<f64>,
     /// Conditions of the model run and why it agrees or misses.
     pub note: String,
 }
@@ -507,7 +640,11 @@ impl Comparison {
             }),
             _ => None,
         };
-        Comparison { quantity: quantity.into(), measured, model, ratio, outside, note: note.into() }
+        let z = match (&measured.uncertainty, measured.is_point()) {
+            (Some(u), true) => measured.midpoint().map(|m| (model - m) / u.u()),
+            _ => None,
+        };
+        Comparison { quantity: quantity.into(), measured, model, ratio, outside, z, note: note.into() }
     }
 
     /// Inside the measured interval (bounds included).
@@ -597,5 +734,77 @@ checked = "secondary: B (2001), p. 2"
         assert!((below.ratio.unwrap() - 5.0 / 11.5).abs() < 1e-15);
         assert_eq!(Comparison::new("t", measured.clone(), 0.010, "").agrees(), Some(true));
         assert!((Comparison::new("t", measured, 0.020, "").outside.unwrap() - 0.006).abs() < 1e-15);
+    }
+
+    /// A stated uncertainty is kept with what the source states; a published
+    /// value without one gets its rounding, resolution/√12, marked as such;
+    /// a ratio of two values combines their relative uncertainties in
+    /// quadrature; z is (model − value)/u.
+    #[test]
+    fn uncertainties_convert_propagate_and_normalise() {
+        let two = MINIMAL.to_string()
+            + r#"
+[[measurement]]
+key = "v"
+quantity = "ball speed"
+value = 13.0
+resolution = 0.1
+unit = "m/s"
+conditions = "c"
+source = "a"
+location = "abstract"
+checked = "abstract"
+[[measurement]]
+key = "f"
+quantity = "foot speed"
+value = 9.1
+resolution = 0.1
+unit = "m/s"
+conditions = "c"
+source = "a"
+location = "abstract"
+checked = "abstract"
+[[measurement]]
+key = "d"
+quantity = "drift"
+value = 2.0
+uncertainty = 5.0
+uncertainty_basis = "standard error of the mean of 10 trials"
+unit = "cm"
+conditions = "c"
+source = "a"
+location = "table 1"
+checked = "text"
+"#;
+        let m = Measurements::parse(&two, "x.toml").unwrap();
+        let v = m.measured("v", "test").unwrap();
+        let u = v.uncertainty.clone().unwrap();
+        assert!(!u.is_stated() && (u.u() - 0.1 / 12f64.sqrt()).abs() < 1e-15, "{u:?}");
+        assert!(u.describe().contains("lower bound"));
+        let d = m.measured("d", "test").unwrap();
+        let ud = d.uncertainty.clone().unwrap();
+        assert!(ud.is_stated() && (ud.u() - 0.05).abs() < 1e-15, "{ud:?}");
+        // 13.0/9.1 with both rounded to 0.1.
+        let ratio = Measured::ratio(&v, &m.measured("f", "test").unwrap()).unwrap();
+        let r = 13.0 / 9.1;
+        let expected = r * ((0.1 / 12f64.sqrt() / 13.0).powi(2) + (0.1 / 12f64.sqrt() / 9.1).powi(2)).sqrt();
+        assert!((ratio.uncertainty.as_ref().unwrap().u() - expected).abs() < 1e-15);
+        let c = Comparison::new("ratio", ratio, 1.5, "");
+        assert!((c.z.unwrap() - (1.5 - r) / expected).abs() < 1e-9);
+        // A range has no z, whatever the model.
+        assert_eq!(Comparison::new("t", m.measured("t", "test").unwrap(), 0.02, "").z, None);
+        // Refusals name the key.
+        for (from, to, says) in [
+            ("resolution = 0.1\nunit = \"m/s\"\nconditions = \"c\"\nsource = \"a\"\nlocation = \"abstract\"\nchecked = \"abstract\"\n[[measurement]]\nkey = \"f\"", "resolution = -1.0\nunit = \"m/s\"\nconditions = \"c\"\nsource = \"a\"\nlocation = \"abstract\"\nchecked = \"abstract\"\n[[measurement]]\nkey = \"f\"", "resolution -1"),
+            ("uncertainty_basis = \"standard error of the mean of 10 trials\"\n", "", "needs an `uncertainty_basis`"),
+            ("uncertainty = 5.0\n", "", "without an `uncertainty`"),
+        ] {
+            let bad = two.replace(from, to);
+            assert_ne!(bad, two, "{from}");
+            let e = Measurements::parse(&bad, "x.toml").unwrap_err().to_string();
+            assert!(e.contains(says), "{e}");
+        }
+        let on_range = MINIMAL.replace("range = [9.0, 14.0]", "range = [9.0, 14.0]\nresolution = 1.0");
+        assert!(Measurements::parse(&on_range, "x.toml").unwrap_err().to_string().contains("single `value`"));
     }
 }

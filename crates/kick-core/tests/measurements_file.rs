@@ -49,3 +49,39 @@ fn published_units_reach_si() {
     let mean = m.get("mean_force_tol2002", "test").unwrap().value.unwrap();
     assert!((peak / mean - std::f64::consts::FRAC_PI_2).abs() < 1e-3, "{}", peak / mean);
 }
+
+/// Every source is a publication (or a test standard as published): the
+/// project's own issue tracker and task statements are not sources.
+#[test]
+fn no_source_is_the_project_itself() {
+    let m = load();
+    for s in &m.sources {
+        let text = format!("{} {} {}", s.authors, s.title, s.container).to_lowercase();
+        assert!(!text.contains("issue tracker") && !text.contains("task statement") && !text.contains("kick project"), "{}", s.key);
+        assert!(!s.citation_note.as_deref().unwrap_or("").contains("not a publication"), "{}", s.key);
+    }
+    for x in &m.measurements {
+        assert!(!x.location.contains("task statement"), "`{}`", x.key);
+    }
+}
+
+/// The mechanical limb's ratios are its paired published ends, 13.0/9.1 and
+/// 29.7/21.2, each with the rounding of its four published numbers.
+#[test]
+fn the_limb_ratios_pair_the_published_ends() {
+    use kick_core::measurements::Measured;
+    let m = load();
+    let get = |k: &str| m.measured(k, "test").unwrap();
+    for (ball, foot, ratio) in
+        [("ball_speed_limb_slow", "foot_speed_limb_slow", 13.0 / 9.1), ("ball_speed_limb_fast", "foot_speed_limb_fast", 29.7 / 21.2)]
+    {
+        let r = Measured::ratio(&get(ball), &get(foot)).unwrap();
+        assert!(r.is_point() && (r.low.unwrap() - ratio).abs() < 1e-14, "{r:?}");
+        let u = r.uncertainty.unwrap();
+        assert!(!u.is_stated() && u.u() > 0.0 && u.u() < 0.01, "{u:?}");
+    }
+    assert!((13.0_f64 / 9.1 - 1.43).abs() < 5e-3 && (29.7_f64 / 21.2 - 1.40).abs() < 5e-3);
+    // The pairing agrees with the published ratio band.
+    let [lo, hi] = m.get("speed_ratio_mechanical_limb", "test").unwrap().interval_si().unwrap();
+    assert!(lo <= 29.7 / 21.2 && 13.0 / 9.1 <= hi);
+}

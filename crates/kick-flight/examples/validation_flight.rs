@@ -4,7 +4,8 @@
 
 use kick_core::measurements::{Measurements, MEASUREMENTS_FILE};
 use kick_flight::validation::{
-    ball_comparisons, drag_crisis_comparisons, drag_crisis_model, free_kicks, FREE_KICK_DISTANCE, FREE_KICK_ELEVATION,
+    ball_comparisons, drag_crisis_comparisons, drag_crisis_model, free_kicks, lift_plateau_bends, measured_flights, spin_decay_bends,
+    FREE_KICK_DISTANCE, FREE_KICK_ELEVATION,
 };
 use std::path::Path;
 
@@ -12,7 +13,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(MEASUREMENTS_FILE);
     let m = Measurements::load(&path)?;
     println!("{:?}", drag_crisis_model());
-    for row in drag_crisis_comparisons(&m)?.iter().chain(&ball_comparisons(&m)?) {
+    for row in drag_crisis_comparisons(&m)?.iter().chain(&ball_comparisons(&m)?).chain(&measured_flights(&m)?) {
         println!("{row}\n    {}", row.note);
     }
     let kicks = free_kicks(&m, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE)?;
@@ -36,6 +37,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             k.height,
             k.time
         );
+    }
+    let tau = std::f64::consts::TAU;
+    for (v, w) in [(25.0, 10.0 * tau), (27.5, 9.0 * tau), (24.0, 106.0)] {
+        println!("\nfree kick {v} m/s, {w:.3} rad/s, {FREE_KICK_ELEVATION} deg: bend at {FREE_KICK_DISTANCE} m");
+        for b in lift_plateau_bends(v, w, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE, &[0.29, 0.24, 0.20])? {
+            println!("  C_L {:?} (launch {:.4}): {:.4} m, height {:.3} m", b.constant_lift, b.launch_lift, b.lateral_offset, b.height);
+        }
+        for b in spin_decay_bends(v, w, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE, &[0.9, 0.75, 0.5])? {
+            println!("  spin kept {:.3} (k_M {:.5}): {:.4} m", b.kept_at_landing, b.spin_decay, b.lateral_offset);
+        }
     }
     Ok(())
 }

@@ -4,13 +4,20 @@
 //! `SOURCES.md`).
 //!
 //! - [`drag_crisis_comparisons`]: where the default C_D(Re) drops, against
-//!   the critical Reynolds numbers of soccer balls;
+//!   the critical Reynolds numbers of soccer balls (one definition of the
+//!   critical Re: [`DragCrisis::critical_reynolds`]), per ball construction;
+//! - [`measured_flights`]: measured trajectories (Mencke et al. 2020, read
+//!   only in a code base's transcription) flown from their launch;
 //! - [`free_kicks`]: the lateral deflection at a distance of free kicks over
-//!   the launch speeds and spins the task names (no measured deflection was
-//!   found to set it beside; an independent estimate comes with each);
+//!   the launch speeds and spins of Physics World's free kick (no measured
+//!   deflection was found to set it beside; an independent estimate comes
+//!   with each);
+//! - [`lift_plateau_bends`], [`spin_decay_bends`]: what the bend owes to the
+//!   lift plateau (read only in transcriptions) and to spin decay (off: no
+//!   measured rate);
 //! - [`ball_comparisons`]: the default ball against Law 2.
 
-use crate::coefficients::{DragCrisis, DragLaw, SaturatingLift};
+use crate::coefficients::{BallConstruction, DragCrisis, DragLaw, SaturatingLift, BALL_CONSTRUCTIONS};
 use crate::{solve, Air, DragModel, FlightError, FlightSpec};
 use kick_core::measurements::{Comparison, Measured, MeasurementError, Measurements};
 use kick_core::{DEFAULT_BALL_MASS, DEFAULT_BALL_RADIUS};
@@ -30,6 +37,19 @@ pub mod keys {
     pub const DRAG_COEFFICIENT: &str = "drag_coefficient_goff_carre2009";
     pub const FREE_KICK_SPEED: &str = "free_kick_speed";
     pub const FREE_KICK_SPIN: &str = "free_kick_spin";
+    /// Barber & Carré's (2010) measured launch of curling free kicks.
+    pub const CURLING_SPEED: &str = "barber_carre2010_launch_speed";
+    pub const CURLING_SPIN: &str = "barber_carre2010_launch_spin";
+    /// Mencke et al.'s (2020) curveball: launch, spin, and its drift at a distance.
+    pub const CURVEBALL_LAUNCH: [&str; 3] =
+        ["mencke2020_curveball_launch_vx", "mencke2020_curveball_launch_vy", "mencke2020_curveball_launch_vz"];
+    pub const CURVEBALL_SPIN: &str = "mencke2020_curveball_spin";
+    pub const CURVEBALL_DISTANCE: &str = "mencke2020_curveball_distance";
+    pub const CURVEBALL_DRIFT: &str = "mencke2020_curveball_drift";
+    /// Mencke et al.'s kick without spin: launch, apex above the launch point, range.
+    pub const PLAIN_LAUNCH: [&str; 2] = ["mencke2020_plain_launch_vx", "mencke2020_plain_launch_vz"];
+    pub const PLAIN_APEX: &str = "mencke2020_plain_apex";
+    pub const PLAIN_RANGE: &str = "mencke2020_plain_range";
     pub const LAW2_MASS: &str = "law2_mass";
     pub const LAW2_CIRCUMFERENCE: &str = "law2_circumference";
 }
@@ -52,17 +72,21 @@ pub enum FlightValidationError {
     Flight(#[from] FlightError),
     #[error("a free kick at {speed} m/s with {spin} rad/s lands before x = {distance} m")]
     NoCrossing { speed: f64, spin: f64, distance: f64 },
+    #[error("no spin decay k_M in [1e-8, 10] leaves {share} of the spin at landing")]
+    NoDecay { share: f64 },
 }
 
 /// Where the default drag model's crisis lies.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DragCrisisModel {
-    /// Re at which C_D is halfway down (the logistic's centre).
-    pub midpoint: f64,
-    /// Re at which 95 % of the drop is done: Re_c + Re_s ln 19.
-    pub end: f64,
-    /// The midpoint as a speed of the default ball (R = 0.11 m) in default air, m/s.
-    pub midpoint_speed: f64,
+    /// Re at which C_D is halfway down (the logistic's centre, Eq. 3's v_c): not the critical Re.
+    pub centre: f64,
+    /// The critical Re ([`DragCrisis::critical_reynolds`]: 95 % of the drop done), default ball (14 panels).
+    pub critical: f64,
+    /// The critical Re as a speed of the default ball (R = 0.11 m) in default air, m/s.
+    pub critical_speed: f64,
+    /// The critical Re of each declared construction (panels, Re): the default's times its factor.
+    pub constructions: Vec<(u8, f64)>,
     /// C_D of the default ball in default air at [`SUPERCRITICAL_SPEED`].
     pub supercritical: f64,
 }
@@ -72,43 +96,40 @@ pub fn drag_crisis_model() -> DragCrisisModel {
     let air = Air::standard();
     let reynolds_per_speed = 2.0 * DEFAULT_BALL_RADIUS / air.kinematic_viscosity();
     let law = DragLaw::new(DragModel::DragCrisis { construction: Default::default() }, reynolds_per_speed);
+    let critical = DragCrisis::critical_reynolds();
     DragCrisisModel {
-        midpoint: DragCrisis::critical_reynolds(),
-        end: DragCrisis::critical_reynolds() + DragCrisis::reynolds_width() * 19f64.ln(),
-        midpoint_speed: DragCrisis::critical_reynolds() / reynolds_per_speed,
+        centre: DragCrisis::centre_reynolds(),
+        critical,
+        critical_speed: critical / reynolds_per_speed,
+        constructions: BALL_CONSTRUCTIONS.iter().map(|c| (c.0, critical * BallConstruction { panels: c.0 }.reynolds_scale())).collect(),
         supercritical: law.at_speed(SUPERCRITICAL_SPEED),
     }
 }
 
-/// The default C_D's crisis beside the published critical Reynolds numbers,
-/// transition speed and supercritical C_D.
+/// The default C_D's crisis beside the published critical Reynolds numbers
+/// (each construction's own crisis beside its published number), the
+/// transition and the supercritical C_D. Every critical Re of the model is
+/// [`DragCrisis::critical_reynolds`]'s definition.
 pub fn drag_crisis_comparisons(m: &Measurements) -> Result<Vec<Comparison>, FlightValidationError> {
     let model = drag_crisis_model();
     let get = |key: &str| m.measured(key, NEEDED_BY);
     let fit = "Goff & Carré's (2010) logistic fit to Asai et al.'s (2007) Teamgeist (14-panel) C_D, taken in Re";
-    let mut rows = vec![
-        Comparison::new("critical Reynolds number: C_D halfway down", get(keys::CRITICAL_RE)?, model.midpoint, fit),
-        Comparison::new(
-            "critical Reynolds number: 95 % of the drop done",
-            get(keys::CRITICAL_RE)?,
-            model.end,
-            "where the drop ends; a critical Re read where C_D bottoms out lies here, not at the midpoint",
-        ),
-    ];
+    let mut rows = vec![Comparison::new("critical Reynolds number", get(keys::CRITICAL_RE)?, model.critical, fit)];
     for (key, panels) in keys::PANELS {
+        let re = model.constructions.iter().find(|c| c.0 == panels).map_or(f64::NAN, |c| c.1);
         rows.push(Comparison::new(
-            format!("critical Reynolds number ({panels} panels): C_D halfway down"),
+            format!("critical Reynolds number, {panels} panels"),
             get(key)?,
-            model.midpoint,
-            "one curve for every ball: the model has no panel dependence",
+            re,
+            "the construction's factor on the crisis is its published critical Re over the 14-panel ball's",
         ));
     }
-    rows.push(Comparison::new("Reynolds number of the drag transition", get(keys::TRANSITION_RE)?, model.midpoint, "logistic centre"));
+    rows.push(Comparison::new("Reynolds number of the drag transition", get(keys::TRANSITION_RE)?, model.critical, "the critical Re"));
     rows.push(Comparison::new(
         "speed of the drag transition (R = 0.11 m, standard sea-level air)",
         get(keys::TRANSITION_SPEED)?,
-        model.midpoint_speed,
-        "Eq. 3's v_c exactly (the model is Eq. 3 for the default ball in default air)",
+        model.critical_speed,
+        "the critical Re as a speed of the default ball in default air",
     ));
     rows.push(Comparison::new(
         format!("drag coefficient above the crisis ({SUPERCRITICAL_SPEED} m/s, no spin)"),
@@ -201,4 +222,145 @@ pub fn free_kick(speed: f64, spin: f64, launch_angle: f64, distance: f64) -> Res
         time: crossing.time,
         circle_estimate: circle_estimate.copysign(spin),
     })
+}
+
+/// Mencke et al.'s (2020) measured flights, flown from their launch with the
+/// default ball, air and coefficients: the curveball's drift where its last
+/// point was digitised, and the plain kick's apex above its launch point and
+/// its range. Their numbers were read only in a code base's transcription
+/// of the paper's figures (the rows say so; the measurement file marks them).
+pub fn measured_flights(m: &Measurements) -> Result<Vec<Comparison>, FlightValidationError> {
+    let value = |key: &str| -> Result<f64, FlightValidationError> { Ok(m.measured(key, NEEDED_BY)?.midpoint().unwrap_or(f64::NAN)) };
+    let [vx, vy, vz] = [value(keys::CURVEBALL_LAUNCH[0])?, value(keys::CURVEBALL_LAUNCH[1])?, value(keys::CURVEBALL_LAUNCH[2])?];
+    let distance = value(keys::CURVEBALL_DISTANCE)?;
+    // The published sense: the ball curves toward −y (ω_z < 0 for a kick along +x).
+    let spin = -value(keys::CURVEBALL_SPIN)?.abs();
+    let curve =
+        FlightSpec { launch_velocity: Some([vx, vy, vz]), spin: Some([0.0, 0.0, spin]), distance: Some(distance), ..FlightSpec::default() }
+            .build()?;
+    let crossing =
+        solve(&curve)?.crossing.ok_or(FlightValidationError::NoCrossing { speed: (vx * vx + vy * vy + vz * vz).sqrt(), spin, distance })?;
+    // Drag and lift act in the vertical plane through v and across it; with no
+    // spin the horizontal path keeps the launch direction, y = x vy/vx.
+    let straight = distance * vy / vx;
+    let drift = value(keys::CURVEBALL_DRIFT)?;
+    let [px, pz] = [value(keys::PLAIN_LAUNCH[0])?, value(keys::PLAIN_LAUNCH[1])?];
+    let plain = solve(&FlightSpec { launch_velocity: Some([px, 0.0, pz]), ..FlightSpec::default() }.build()?)?;
+    let launch = format!("launched at ({}, {}, {}) m/s with {} rad/s about the vertical", vx, vy, vz, spin.abs());
+    Ok(vec![
+        Comparison::new(
+            format!("lateral drift at x = {} m, curveball", kick_core::short(distance)),
+            m.measured(keys::CURVEBALL_DRIFT, NEEDED_BY)?,
+            crossing.lateral_offset,
+            format!(
+                "{launch}; default ball, air, C_D and C_L; measured from the straight launch line (y = {} m there) the \
+                 model bends {} m, the digitised path {} m",
+                kick_core::short(straight),
+                kick_core::short(straight - crossing.lateral_offset),
+                kick_core::short(straight - drift)
+            ),
+        ),
+        Comparison::new(
+            "apex above the launch point, kick without spin",
+            m.measured(keys::PLAIN_APEX, NEEDED_BY)?,
+            plain.apex_height - DEFAULT_BALL_RADIUS,
+            format!("launched at ({px}, 0, {pz}) m/s, no spin; default ball, air and C_D"),
+        ),
+        Comparison::new(
+            "range back to the launch height, kick without spin",
+            m.measured(keys::PLAIN_RANGE, NEEDED_BY)?,
+            plain.landing_point[0],
+            format!("launched at ({px}, 0, {pz}) m/s, no spin; default ball, air and C_D"),
+        ),
+    ])
+}
+
+/// One free kick flown with one lift model.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LiftBend {
+    /// None: the default saturating C_L(S); Some(c): a constant C_L = c.
+    pub constant_lift: Option<f64>,
+    /// C_L at launch.
+    pub launch_lift: f64,
+    /// y of the centre where it crosses x = distance, m.
+    pub lateral_offset: f64,
+    /// Height of the centre there, m.
+    pub height: f64,
+}
+
+/// The free kick `speed` m/s at `launch_angle`° with sidespin `spin` rad/s
+/// about the vertical, crossing x = `distance`, flown with the default C_L(S)
+/// and then with each constant C_L of `constants` (the plateau's role in the
+/// bend: the default's seven points were read only in transcriptions).
+pub fn lift_plateau_bends(
+    speed: f64,
+    spin: f64,
+    launch_angle: f64,
+    distance: f64,
+    constants: &[f64],
+) -> Result<Vec<LiftBend>, FlightValidationError> {
+    std::iter::once(None)
+        .chain(constants.iter().map(|&c| Some(c)))
+        .map(|constant_lift| {
+            let spec = FlightSpec {
+                spin: Some([0.0, 0.0, spin]),
+                distance: Some(distance),
+                lift_coefficient: constant_lift,
+                ..FlightSpec::from_exit_speed(speed, launch_angle)
+            };
+            let out = solve(&spec.build()?)?;
+            let crossing = out.crossing.ok_or(FlightValidationError::NoCrossing { speed, spin, distance })?;
+            Ok(LiftBend {
+                constant_lift,
+                launch_lift: out.launch.lift_coefficient,
+                lateral_offset: crossing.lateral_offset,
+                height: crossing.height,
+            })
+        })
+        .collect()
+}
+
+/// One free kick flown with spin decay.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SpinDecayBend {
+    /// Share of the launch spin left at landing (1: no decay).
+    pub kept_at_landing: f64,
+    /// k_M that leaves that share (0: no decay).
+    pub spin_decay: f64,
+    /// y of the centre where it crosses x = distance, m.
+    pub lateral_offset: f64,
+}
+
+/// The free kick of [`lift_plateau_bends`] (default coefficients) with no spin
+/// decay and with the k_M that leaves each share of `kept` of its spin at
+/// landing (Brent on ln k_M, the landing spin falling monotonically with it).
+/// No measured decay rate of a soccer ball was reached: the shares are
+/// what-ifs, not a sourced range.
+pub fn spin_decay_bends(
+    speed: f64,
+    spin: f64,
+    launch_angle: f64,
+    distance: f64,
+    kept: &[f64],
+) -> Result<Vec<SpinDecayBend>, FlightValidationError> {
+    let fly = |k_m: f64| -> Result<(f64, f64), FlightValidationError> {
+        let spec = FlightSpec {
+            spin: Some([0.0, 0.0, spin]),
+            distance: Some(distance),
+            spin_decay: Some(k_m),
+            ..FlightSpec::from_exit_speed(speed, launch_angle)
+        };
+        let out = solve(&spec.build()?)?;
+        let crossing = out.crossing.ok_or(FlightValidationError::NoCrossing { speed, spin, distance })?;
+        Ok((out.landing_spin[2] / spin, crossing.lateral_offset))
+    };
+    let mut rows = vec![SpinDecayBend { kept_at_landing: 1.0, spin_decay: 0.0, lateral_offset: fly(0.0)?.1 }];
+    for &share in kept {
+        let f = |ln_k: f64| fly(ln_k.exp()).map_or(f64::NAN, |(k, _)| k - share);
+        let root = kick_core::roots::brent(f, 1e-8f64.ln(), 10f64.ln(), 1e-12, 200).ok_or(FlightValidationError::NoDecay { share })?;
+        let k_m = root.x.exp();
+        let (kept_at_landing, lateral_offset) = fly(k_m)?;
+        rows.push(SpinDecayBend { kept_at_landing, spin_decay: k_m, lateral_offset });
+    }
+    Ok(rows)
 }

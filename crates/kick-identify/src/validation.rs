@@ -42,7 +42,6 @@ pub mod keys {
     pub const MEAN_FORCE_PUNT: &str = "mean_force_punt";
     pub const BALL_SPEED: &str = "ball_speed_max_instep";
     pub const BALL_SPEED_NUNOME: &str = "ball_speed_instep_nunome2002";
-    pub const SPEED_RATIO: &str = "speed_ratio_instep";
 }
 
 /// Every way a contact validation can fail.
@@ -164,12 +163,6 @@ pub fn contact_comparisons(m: &Measurements, scenario: &Scenario) -> Result<Vec<
             "set by m_f, v_f and the restitution; the model's foot speed is Table 1's, not a measured one",
         ));
     }
-    rows.push(Comparison::new(
-        "ball speed / foot speed",
-        get(keys::SPEED_RATIO)?,
-        model.speed_ratio,
-        "a rigid foot with restitution e gives (1 + e) m_f/(m_f + m_b); a real foot-ankle gives way, lowering it",
-    ));
     rows.push(Comparison::new(
         "peak / mean force (pulse shape)",
         pulse,

@@ -48,6 +48,20 @@ pub use kick_flight::aim::{GOAL_HEIGHT, GOAL_WIDTH, WALL_HALF_WIDTH, WALL_HEIGHT
 pub const TRAJECTORY_COLUMNS: [(&str, &str); 7] =
     [("time", "s"), ("x", "m"), ("y", "m"), ("z", "m"), ("velocity_x", "m/s"), ("velocity_y", "m/s"), ("velocity_z", "m/s")];
 
+/// Physics World's free kick (Asai, Akatsuka & Haake 1998, as quoted:
+/// `free_kick_speed` and `free_kick_spin` of the measurement file, which a
+/// test holds these to): launch speeds, m/s...
+pub const ILLUSTRATED_SPEEDS: [f64; 2] = [25.0, 30.0];
+/// ...and spins, rad/s (8–10 rev/s).
+pub const ILLUSTRATED_SPINS: [f64; 2] = [8.0 * std::f64::consts::TAU, 10.0 * std::f64::consts::TAU];
+/// The kick whose bend paper/flight.md takes apart: the middle of those
+/// (speed m/s, sidespin rad/s), launched as the validation chapter's free kicks.
+pub const PLATEAU_KICK: (f64, f64) = (27.5, 9.0 * std::f64::consts::TAU);
+/// Constant lift coefficients it is flown with: the fit's plateau, and below it.
+pub const PLATEAU_LIFTS: [f64; 3] = [0.29, 0.24, 0.20];
+/// Shares of the spin left at landing it is flown with (what-ifs: no measured decay rate).
+pub const SPIN_KEPT: [f64; 3] = [0.9, 0.75, 0.5];
+
 /// The file's name under `OUT/flight/`.
 pub const FILE: &str = "free_kick.h5";
 
@@ -214,7 +228,7 @@ pub fn setup_note() -> String {
     let b = k.base;
     format!(
         "The kick: Table 1's foot (m_f = {} kg at V = {} m/s, ball {} kg at rest, the paper's contact law) with \
-         kick-3d's defaults (μ per row, tangential spring and damper, the instep box), the foot's path horizontal \
+         kick-3d's defaults (μ per row, the tangential spring and slider, the instep box), the foot's path horizontal \
          (α = 0). The contact lies h = {} cm below the ball's centre and e = 0–{} cm beside it, so the ball rises with \
          backspin and curves with sidespin, as a free kick over a wall does. kick-3d's offset is lateral only; with a \
          horizontal path and no gravity during the few milliseconds of contact (kick-3d's default) the kick is \

@@ -1,7 +1,8 @@
 //! kick-paper writes kick's paper: the plotting kit and Figures 1-7
 //! ([`figures`], bundled DejaVu Sans), the pages (`paper/README.md`:
 //! [`report`]; [`pages_3d`]; [`validation`]; the identification pages and
-//! figures: [`identify`]), the articulated leg's figure data ([`leg`]), the
+//! figures: [`identify`]; the model with the paper's equation numbers,
+//! `paper/model.md`: [`model`]), the articulated leg's figure data ([`leg`]), the
 //! work-precision benchmark ([`bench`]) and the reproduction pipeline
 //! ([`reproduce`], `--check` through kick-store's `compare`).
 //!
@@ -16,11 +17,13 @@ pub mod free_kick;
 pub mod identify;
 pub mod leg;
 pub mod links;
+pub mod model;
 pub mod pages_3d;
 pub mod patch;
 pub mod report;
 pub mod reproduce;
 pub mod three_d;
+pub mod units;
 pub mod validation;
 
 // The modules of kick-study and kick-store under the names this crate's files use.

@@ -594,7 +594,8 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
         w,
         "`{}` (`kick reproduce --only patch`): the shell ball (`--law shell`, its FIFA-calibrated defaults, \
          [ball.md](ball.md)) on Table 1's foot at 22 m/s, square approach, offsets 0–{} mm in {} mm steps, μ ∈ {{{}}}, \
-         solved on the accurate path. Two contacts: the rigid sphere's **point contact** on the knife-edge face (the \
+         solved on the accurate path. Every spin of this section is the shell ball's normal law (the sections above run \
+         the paper's law). Two contacts: the rigid sphere's **point contact** on the knife-edge face (the \
          normal force through the centre, the level below) and the **patch** on a cap (`--patch-contact \
          --instep-radius {} --face-yaw 0`): the normal force spread over the contact patch, whose moment about the \
          ball's centre need not vanish, friction at the patch's centroid (`kick_3d::patch`). The cap's radius {} m is \
@@ -619,24 +620,30 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
             let Some((e, s)) = k.largest(sense) else { continue };
             let last = k.offset.last().copied().unwrap_or(f64::NAN);
             let zero = data.curve(c, 0.0).and_then(|z| z.at(e, sense));
-            parts.push(format!(
-                "at μ = {} the sidespin is largest, {} rad/s, at e = {} mm{}{}",
-                short(mu),
-                sig3(s),
-                short(e * 1e3),
-                if e == last { " (the largest offset solved: no maximum inside the range)" } else { "" },
-                match zero {
-                    Some(z) => format!(", where μ = 0 gives {}, so friction 0 → {} adds {} rad/s there", spin3(z), short(mu), sig3(s - z)),
-                    None => String::new(),
-                }
-            ));
-            peaks.push(format!(
-                "{} mm for the {} at μ = {}{}",
-                short(e * 1e3),
-                contact.label,
-                short(mu),
-                if e == last { " (the end of the range)" } else { "" }
-            ));
+            let first = k.offset.first().copied().unwrap_or(0.0);
+            let range = format!("{}–{} mm", short(first * 1e3), short(last * 1e3));
+            let gain = match zero {
+                Some(z) => format!(", where μ = 0 gives {}, so friction 0 → {} adds {} rad/s there", spin3(z), short(mu), sig3(s - z)),
+                None => String::new(),
+            };
+            if e == last {
+                // The sweep's edge is no maximum: say so instead of scoring it.
+                parts.push(format!(
+                    "at μ = {} the sidespin has no maximum within {range}: it still rises at {} mm, {}{gain}",
+                    short(mu),
+                    short(e * 1e3),
+                    crate::units::spin(s)
+                ));
+                peaks.push(format!("no maximum within {range} for the {} at μ = {}", contact.label, short(mu)));
+            } else {
+                parts.push(format!(
+                    "at μ = {} the sidespin is largest, {}, at e = {} mm{gain}",
+                    short(mu),
+                    crate::units::spin(s),
+                    short(e * 1e3)
+                ));
+                peaks.push(format!("largest at {} mm for the {} at μ = {}", short(e * 1e3), contact.label, short(mu)));
+            }
         }
         let (e, g) = friction_gain(&data, c);
         let most = (0..g.len()).max_by(|&a, &b| g[a].total_cmp(&g[b]));
@@ -695,7 +702,7 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
         w,
         "\nBeside Asai et al.'s abstract, which gives three things and no curve (so the figure draws them as what they \
          are: a line at their offset, a bound on the gain; no curve of theirs): friction 0 → 1 adds at most {} rad/s \
-         there, against at most {} here; their spin is largest \"around {} mm\", here at {}; and their ball \
+         there, against at most {} here; their spin is largest \"around {} mm\", here {}; and their ball \
          spins at nearly zero friction (no number, and no sense, in the abstract), where here {}. Their offset runs \
          from the foot's axis to the ball's on a deforming finite-element ball, the model's from the swing line \
          through the instep's pole to the ball's centre, so the offsets compare only roughly.\n",
@@ -875,7 +882,7 @@ mod tests {
                 (best, at) = (-w, k.offset[i]);
             }
         }
-        let said = format!("at μ = 0.5 the sidespin is largest, {} rad/s, at e = {} mm", sig3(best), short(at * 1e3));
+        let said = format!("at μ = 0.5 the sidespin is largest, {}, at e = {} mm", crate::units::spin(best), short(at * 1e3));
         assert!(page.contains(&said), "{said}\n{page}");
         // The history's lever is M_z / |F| of its columns, friction's sense.
         let h = read_history(&dir.join(HISTORY_FILE), data.friction_sense()).unwrap();

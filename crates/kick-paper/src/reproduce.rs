@@ -26,7 +26,7 @@ pub struct ReproduceSettings {
 /// The steps of a reproduction to run ([`STEP_NAMES`]).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub enum Steps {
-    /// Everything: experiments, figures, checks, pages, 3D, leg, laws, fits, bench.
+    /// Everything: experiments, figures, checks, pages, 3D, leg, laws, fits, bench, the model page.
     #[default]
     All,
     /// These steps only, in the order of [`STEP_NAMES`] (`kick reproduce --only`).
@@ -83,6 +83,9 @@ fn say(log: &mut dyn Write, text: &str) {
 /// the same files alone, so the line and the call cannot disagree.
 #[derive(Debug, Clone)]
 pub enum Call {
+    /// `paper/model.md`, the model with the paper's equation numbers, from
+    /// its parts and the declarations (part of `kick reproduce` only).
+    Model,
     /// `kick run FILE --out OUT` for a 1D experiment file.
     Run { file: PathBuf, out: PathBuf },
     /// Figures 1-7 from the 1D result files (part of `kick reproduce` only).
@@ -132,7 +135,7 @@ pub struct Step {
 }
 
 /// The names of the steps, in the order they run.
-pub const STEP_NAMES: [&str; 18] = [
+pub const STEP_NAMES: [&str; 19] = [
     "experiments",
     "figures",
     "checks",
@@ -150,6 +153,7 @@ pub const STEP_NAMES: [&str; 18] = [
     "pages",
     "validation",
     "3d-pages",
+    "model",
     "report",
 ];
 
@@ -229,7 +233,14 @@ impl Call {
                 b.report.as_deref().map(|r| format!(" --report {}", d(r))).unwrap_or_default(),
                 b.solvers_report.as_deref().map(|r| format!(" --solvers-report {}", d(r))).unwrap_or_default()
             ),
-            Call::Figures { .. } | Call::Patch { .. } | Call::Ball | Call::Pages | Call::Validation | Call::Pages3d | Call::Report => {
+            Call::Model
+            | Call::Figures { .. }
+            | Call::Patch { .. }
+            | Call::Ball
+            | Call::Pages
+            | Call::Validation
+            | Call::Pages3d
+            | Call::Report => {
                 format!(
                     "kick reproduce --experiments {} --out {} --report {}{} --only {step}",
                     d(&args.experiments),
@@ -281,7 +292,7 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         truth,
         time_offset,
     };
-    let calls: [Vec<Call>; 18] = [
+    let calls: [Vec<Call>; 19] = [
         files.into_iter().map(|file| Call::Run { file, out: out.clone() }).collect(),
         vec![Call::Figures { out: out.clone(), figures: figures.clone() }],
         vec![Call::Checks],
@@ -313,6 +324,7 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         vec![Call::Pages],
         vec![Call::Validation],
         vec![Call::Pages3d],
+        vec![Call::Model],
         vec![Call::Report],
     ];
     Ok(STEP_NAMES.into_iter().zip(calls).map(|(name, calls)| Step { name, calls }).collect())
@@ -368,6 +380,10 @@ impl Call {
         let report_dir = args.report.parent().unwrap_or(Path::new("")).to_path_buf();
         let fits = args.out.join("identification");
         match self {
+            Call::Model => {
+                let written = crate::model::write(&report_dir.join(crate::model::PAGE)).map_err(|e| e.to_string())?;
+                say(log, &format!("the model: {}\n", written.display()));
+            }
             Call::Run { file, out } => {
                 let run = crate::shard::run_file(file, out, None)?;
                 say(log, &run.text());
@@ -481,6 +497,7 @@ impl Call {
                     .map_err(|e| e.to_string())?;
                 // Point the report at the sections written beside it.
                 let sections = [
+                    (crate::model::PAGE, "The model: the paper's equations by number, and what kick adds"),
                     ("solvers.md", "Solvers of the 1D model: precision, trust regions"),
                     (TIMING_PAGE, "Timing of the 1D solvers on the machine that ran the reproduction"),
                     ("3d.md", "Off-center 3D kicks: spin, friction, launch direction, the speed–spin trade-off"),

@@ -76,10 +76,11 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     };
     let symbol = kick_core::parameters::find(&axis.name).map_or(String::new(), |p| format!(" {}", p.symbol));
     let x_label = format!("{}{symbol} ({})", axis.name.replace('_', " "), axis.unit);
-    let (speed, rpm) = (column("speed")?, column("spin_rpm")?);
+    // Spin in rad/s, as every page quotes it (the file's column is in rpm).
+    let (speed, rad) = (column("speed")?, column("spin_rpm")?.iter().map(|r| r / crate::units::RPM_PER_RAD_PER_S).collect::<Vec<_>>());
     let mut panels = vec![
         Panel::new("ball speed", &x_label, "speed |v| (m/s)", series(&speed, x)),
-        Panel::new("ball spin", &x_label, "spin |ω| (rpm)", series(&rpm, x)),
+        Panel::new("ball spin", &x_label, "spin |ω| (rad/s)", series(&rad, x)),
     ];
     for (name, title, label) in [
         ("launch_angle", "launch elevation", "elevation above the ground (deg)"),
@@ -97,9 +98,9 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     if axis.name == "offset" {
         let trade = vec![Panel::new(
             "ball speed against spin across offsets (markers: the offsets of the grid)",
-            "spin |ω| (rpm)",
+            "spin |ω| (rad/s)",
             "speed |v| (m/s)",
-            series(&speed, &rpm),
+            series(&speed, &rad),
         )];
         written.extend(save_grid(dir, &format!("{name}_tradeoff"), &format!("{title}: the speed–spin trade-off"), (1, 1), &trade)?);
     }

@@ -3,4 +3,5 @@
 mod aim;
 mod closed_forms;
 mod robustness;
+mod sources;
 mod validation;

@@ -178,7 +178,21 @@ fn free_kicks_and_the_generated_3d_and_flight_pages() {
         assert!(!text.contains("NaN") && !text.contains("inf "), "{page}");
         // Timings live on timing.md only.
         assert!(!text.contains(" µs") && !text.contains(" ms per"), "{page}");
+        // One unit for spin (issue 34): rad/s, rpm only beside it in parentheses, no rev/s column.
+        for (i, _) in text.match_indices(" rpm") {
+            let before = &text[..i];
+            let open = before.rfind('(').unwrap_or(0);
+            assert!(
+                before[..open].ends_with("rad/s ") || before[open..].contains("rad/s"),
+                "{page}: rpm without rad/s at {}",
+                &text[i.saturating_sub(60)..i + 4]
+            );
+        }
+        assert!(!text.contains("(rev/s)") && !text.contains("(rpm)"), "{page}");
     }
+    // No "validated" without counted rows; the plateau's and spin decay's share of the bend is stated.
+    assert!(!flight_page.contains("validated"));
+    assert!(flight_page.contains("## What the bend owes to the lift plateau, and to spin decay"));
     if std::env::var("KICK_FIGURES_DIR").is_err() {
         let _ = std::fs::remove_dir_all(&dir);
     }

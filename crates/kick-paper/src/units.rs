@@ -1,0 +1,37 @@
+//! Spin as every page quotes it (issue 34: one unit across pages): rad/s,
+//! with rpm beside it wherever prose quotes a spin; tables carry rad/s only.
+
+use kick_core::number::Digits;
+
+/// rpm per rad/s: 60/2π.
+pub const RPM_PER_RAD_PER_S: f64 = 60.0 / std::f64::consts::TAU;
+
+/// |ω| below this is zero to rounding, rad/s.
+pub const ZERO_SPIN: f64 = 1e-12;
+
+/// `x` to three significant digits.
+pub fn three(x: f64) -> String {
+    Digits { x, digits: 3 }.to_string()
+}
+
+/// A spin in prose: "58.3 rad/s (557 rpm)"; zero to rounding below [`ZERO_SPIN`].
+pub fn spin(rad_per_s: f64) -> String {
+    if rad_per_s.abs() < ZERO_SPIN {
+        format!("0 rad/s (|ω| < {ZERO_SPIN:e} rad/s)")
+    } else {
+        format!("{} rad/s ({} rpm)", three(rad_per_s), three(rad_per_s * RPM_PER_RAD_PER_S))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spin_gives_both_units() {
+        // 2π rad/s is one revolution a second, 60 rpm.
+        assert_eq!(spin(std::f64::consts::TAU), "6.28 rad/s (60 rpm)");
+        assert_eq!(spin(58.3), "58.3 rad/s (557 rpm)");
+        assert!(spin(1e-14).starts_with("0 rad/s"));
+    }
+}
