@@ -443,7 +443,7 @@ fn friction_section() -> Result<String, String> {
     let header: Vec<String> = numbers_3d::SPIN_FRICTIONS.iter().map(|&mu| format!("μ = {}", value_label(mu))).collect();
     let _ = writeln!(
         w,
-        "Table 1's kick at e = {} cm, square approach, solved when this page is written: spin (rpm) against μ, for the \
+        "Table 1's kick at e = {} cm, square approach, solved when this page is written: spin (rad/s) against μ, for the \
          paper's ball and the shell ball (`--law shell`), at the default tangential stiffness and at a quarter and \
          four times it; T_t is the gripping contact's tangential vibration period 2π √(m_t / k_t), t_c the contact \
          time; in brackets the share of the contact that slips.\n",
@@ -452,7 +452,8 @@ fn friction_section() -> Result<String, String> {
     let _ = writeln!(w, "| ball | k_t (N/m) | T_t / t_c | {} |", header.join(" | "));
     let _ = writeln!(w, "| --- | --- | --- |{}", " --- |".repeat(header.len()));
     for r in &rows {
-        let cells: Vec<String> = r.points.iter().map(|&(_, rpm, slip)| format!("{} ({}%)", sig(rpm, 3), sig(100.0 * slip, 2))).collect();
+        let cells: Vec<String> =
+            r.points.iter().map(|&(_, rpm, slip)| format!("{} ({}%)", three(rpm / RPM_PER_RAD_PER_S), sig(100.0 * slip, 2))).collect();
         let _ = writeln!(
             w,
             "| {} | {} | {} | {} |",
@@ -462,7 +463,7 @@ fn friction_section() -> Result<String, String> {
             cells.join(" | ")
         );
     }
-    let rigid_text: Vec<String> = rigid.iter().map(|(law, rpm)| format!("{} rpm for the {law}", sig(*rpm, 3))).collect();
+    let rigid_text: Vec<String> = rigid.iter().map(|(law, rpm)| format!("{} for the {law}", spin(*rpm / RPM_PER_RAD_PER_S))).collect();
     // The default k_t's rows: where spin peaks against μ.
     let default_k = kick_3d::Kick3d::DEFAULT_TANGENTIAL_STIFFNESS;
     let peaks: Vec<String> = rows
@@ -472,11 +473,11 @@ fn friction_section() -> Result<String, String> {
             let best = r.points.iter().copied().fold((0.0, f64::NEG_INFINITY, 0.0), |m, p| if p.1 > m.1 { p } else { m });
             let last = r.points[r.points.len() - 1];
             format!(
-                "the {} peaks at μ = {} ({} rpm) and leaves at {} rpm when it never slips",
+                "the {} peaks at μ = {} ({}) and leaves at {} when it never slips",
                 r.law,
                 value_label(best.0),
-                sig(best.1, 3),
-                sig(last.1, 3)
+                spin(best.1 / RPM_PER_RAD_PER_S),
+                spin(last.1 / RPM_PER_RAD_PER_S)
             )
         })
         .collect();
