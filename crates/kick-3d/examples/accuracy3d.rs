@@ -17,7 +17,7 @@ fn main() {
         None => Accurate3d::default(),
     };
     let sample = OffCenterBox { seed: BENCH_SEED, law };
-    let mut errors: Vec<[f64; 8]> = Vec::new();
+    let mut errors: Vec<[f64; 9]> = Vec::new();
     let mut evaluations = Vec::new();
     let mut residuals = Vec::new();
     for i in 0..n {

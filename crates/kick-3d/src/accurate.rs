@@ -13,7 +13,10 @@
 //! δ̇ = 0 under a law that damps on both sides only marks a maximum compression.
 //! - separation: δ from + to −; contact onset is t = 0 by construction;
 //! - δ̇ changes sign (the damping switch of Eq. 20; + → − is max compression);
-//! - grip ↔ slip: μ F_n − |k_t ξ + c_t v_t| changes sign;
+//! - grip ↔ slip ([`crate::tangential`]): in grip μ F_n − k_t |ξ|, in slip
+//!   the slider's speed λ changes sign (another switch that makes the
+//!   slider's speed jump, such as δ̇ = 0 under the paper's law, is met at the
+//!   next phase's start, which is past it);
 //! - the ball centre leaves (or comes back over) the flat face: analytic
 //!   geometry on the face, parry's query on edges and rounded borders.
 //!
@@ -129,6 +132,8 @@ impl Switch {
             Switch::Separation => (phase.clock == Clock::Time).then_some(1.0),
             Switch::CompressionRate => Some(if phase.compressing { 1.0 } else { -1.0 }),
             Switch::GripSlip => match phase.friction {
+                // No normal force, no slider: nothing to switch until it comes back.
+                _ if phase.clamped && !system.rigid => None,
                 Friction::Grip if system.friction.is_finite() => Some(1.0),
                 Friction::Slip => Some(-1.0),
                 _ => None,
@@ -479,6 +484,18 @@ impl Accurate3d {
                 system = system.in_phase(Phase { slip_direction: sliding.normalize(), ..system.phase });
                 Friction::Slip
             }
+        } else if !system.rigid {
+            // ξ = 0: grip unless the cap starts at zero and grows slower than
+            // the spring would load (`crate::tangential`).
+            let slip = system.in_phase(Phase { friction: Friction::Slip, ..system.phase }).local(0.0, &y0);
+            if kick.friction.is_finite() && slip.normal_force == 0.0 && slip.grip_margin < 0.0 {
+                // The state holds the slider's direction (contact::SPRING), along the sliding.
+                let direction = contact::slip_direction_state(&slip, &y0);
+                contact::put_spring(&mut y0, direction);
+                Friction::Slip
+            } else {
+                Friction::Grip
+            }
         } else if system.local(0.0, &y0).grip_margin >= 0.0 {
             Friction::Grip
         } else {
@@ -577,8 +594,11 @@ impl Accurate3d {
                 let Some(sign) = switch.sign(&system) else { continue };
                 let mut crossed_by = x1;
                 let signed = sign * switch.value(&system, &c1, &y1);
-                // At separation a margin may reach zero with the force (μ F_n − 0 on a central kick).
-                if landed && signed == 0.0 {
+                // At separation a margin may reach zero with the force (μ F_n − 0 on a
+                // central kick); and a slip's direction state (contact::SPRING) reaches
+                // zero length there with δ, where its direction is the sliding's: a
+                // switch landing on separation changes nothing (the force is zero).
+                if landed && (signed == 0.0 || switch == Switch::GripSlip) {
                     continue;
                 }
                 if switch.holds(signed) {
@@ -647,7 +667,7 @@ impl Accurate3d {
             }
 
             // The stretch's end: a switch, or the accepted point.
-            let (x_end, y_end, dy_end, c_end) = match (end, dense.as_ref()) {
+            let (x_end, mut y_end, dy_end, c_end) = match (end, dense.as_ref()) {
                 (Some((x, _)), Some(d)) => {
                     let y = d.at(x);
                     extra_evaluations += 1;
@@ -779,6 +799,18 @@ impl Accurate3d {
                         phase.slip_start =
                             c_end.sliding_velocity.dot(phase.slip_direction).min(0.0) - 10.0 * absolute[contact::RELATIVE_VELOCITY];
                     }
+                    if !system.rigid && phase.friction == Friction::Slip {
+                        // Grip starts with the spring on the cap, k_t |ξ| = μ F_n, where the
+                        // grip's margin starts from zero with zero slope: put the spring
+                        // there, a hair inside (`tangential::GRIP_ENTRY`), so the grip
+                        // does not find its own start again.
+                        let spring = contact::spring_on_cap(&system, &c_end, &y_end);
+                        contact::put_spring(&mut y_end, spring);
+                    } else if !system.rigid {
+                        // A slip's state holds the slider's direction only (contact::SPRING).
+                        let direction = contact::slip_direction_state(&c_end, &y_end);
+                        contact::put_spring(&mut y_end, direction);
+                    }
                     phase.friction = if phase.friction == Friction::Grip { Friction::Slip } else { Friction::Grip };
                 }
                 Switch::Geometry if system.rigid && phase.geometry == Geometry::Face => {
@@ -834,7 +866,11 @@ mod tests {
         };
         let mut y = contact::initial_state(&kick);
         y[contact::DISPLACEMENT] -= 0.01;
-        (Relative::new(&kick, phase), y)
+        let system = Relative::new(&kick, phase);
+        // A slip's spring state: the slider's direction at the length δ (contact::SPRING).
+        let direction = contact::slip_direction_state(&system.local(0.0, &y), &y);
+        contact::put_spring(&mut y, direction);
+        (system, y)
     }
 
     /// The AVX2 copy of the run ([`contact::avx2`]) gives the baseline

@@ -8,11 +8,14 @@
 //!   paper's k δⁿ + c max(δ̇, 0), Eq. 20, or any law of `kick_core::laws`), δ
 //!   the overlap from parry's ball–box query, δ̇ = n·(v_foot − v_ball) at the
 //!   witness points (the exact rate of a convex distance);
-//! - tangential: a spring k_t and damper c_t in series with a Coulomb slider
-//!   capped by μ F_n (Cundall–Strack). The spring extension ξ is state. While
-//!   |k_t ξ + c_t v_t| ≤ μ F_n the contact grips (ξ̇ = v_t); otherwise it slips
-//!   and the element carries exactly μ F_n, which makes ξ̇ = (μ F_n û − k_t ξ)/c_t
-//!   an ordinary ODE, continuous across the grip/slip switch.
+//! - tangential: the spring k_t in series with a Coulomb slider capped by
+//!   μ F_n of [`crate::tangential`] (no viscous term). The spring's stretch ξ
+//!   is state; grip or slip is the phase's ([`Dynamics::slipping`]), switched
+//!   by the runs where the phase's switch function changes sign. The slip's
+//!   cap rate d(μ F_n)/dt is ∂F/∂δ δ̇ + ∂F/∂δ̇ δ̈, δ̈ from the accelerations
+//!   the force gives, written in the foot's frame: r = qᵀ(c_b − c_f),
+//!   r̈ = qᵀΔa − Ω × qᵀΔv − Ω̇ × r − Ω × ṙ, δ̈ = −n · r̈ − ṅ · ṙ with ṅ from
+//!   the nearest point of the core box (its clamped coordinates stay put).
 //!
 //! Both bodies take the force at one point p = c_b − R n, the undeformed
 //! ball's point nearest the foot: the lever of the friction about the ball
@@ -93,22 +96,99 @@ pub struct ContactEval {
     pub normal_force: f64,
     /// Tangential force on the ball.
     pub tangential_force: Vec3,
-    /// ξ̇ of the spring–damper element (without the co-rotation with the foot).
+    /// ξ̇ of the element (without the co-rotation with the foot).
     pub spring_rate: Vec3,
-    /// μ F_n − |k_t ξ + c_t v_t|: ≥ 0 grips, < 0 slips (+1 when μ = ∞, 0 when μ = 0).
+    /// The phase's switch function ([`crate::tangential::Response::margin`]):
+    /// in grip μ F_n − k_t |ξ| (+1 when μ = ∞), in slip −k_t λ; 0 when μ = 0
+    /// or no normal force caps the slider.
     pub grip_margin: f64,
     pub damping_power: f64,
     pub friction_power: f64,
     /// δ̇_b, the boot's compression rate (0 without a boot).
     pub boot_rate: f64,
+    /// dF_n/dt (computed in slip only; 0 otherwise).
+    pub normal_force_rate: f64,
+    /// The contact points' relative tangential velocity (zero in grip).
+    pub slip_velocity: Vec3,
+    /// The phase: slip (true) or grip.
+    pub slipping: bool,
 }
 
 impl ContactEval {
     pub fn force_on_ball(&self) -> Vec3 {
         self.normal * self.normal_force + self.tangential_force
     }
+    /// The phase is slip.
     pub fn is_slipping(&self) -> bool {
-        self.grip_margin < 0.0
+        self.slipping
+    }
+}
+
+/// The relative motion in the foot's body frame, for the normal's rates
+/// (the tangential law's cap rate and the spring's transport).
+struct FootFrame {
+    rotation: Rot3,
+    /// Ball centre from the foot's centre of mass, its rate, the relative
+    /// velocity, the foot's angular velocity and the normal, body frame.
+    r: Vec3,
+    r_dot: Vec3,
+    relative_velocity: Vec3,
+    omega: Vec3,
+    normal: Vec3,
+    /// ṅ (body frame, relative to the foot).
+    normal_rate: Vec3,
+}
+
+impl FootFrame {
+    fn of(d: &Dynamics, y: &State, c_b: Vec3, c_f: Vec3, n: Vec3) -> FootFrame {
+        let rotation = rot(y, FOOT_ROTATION);
+        let back = rotation.inverse();
+        let r = back * (c_b - c_f);
+        let relative_velocity = back * (vec3(y, BALL_VELOCITY) - vec3(y, FOOT_VELOCITY));
+        let omega = back * vec3(y, FOOT_ANGULAR_VELOCITY);
+        let r_dot = relative_velocity - omega.cross(r);
+        let normal = back * n;
+        // n = (r − P)/|r − P|, P the core box's nearest point: its clamped
+        // coordinates (where |r_i| > h_i) stay put, the others follow r.
+        let h = d.cuboid.half_extents;
+        let mut clamped = Vec3::ZERO;
+        let mut nearest = r;
+        for i in 0..3 {
+            if r[i].abs() > h[i] {
+                clamped[i] = r_dot[i];
+                nearest[i] = h[i].copysign(r[i]);
+            }
+        }
+        // (A ball centre inside the box is beyond the geometry, refused after the step.)
+        let distance = (r - nearest).length();
+        let normal_rate = if distance > 0.0 { (clamped - normal * normal.dot(r_dot)) / distance } else { Vec3::ZERO };
+        FootFrame { rotation, r, r_dot, relative_velocity, omega, normal, normal_rate }
+    }
+
+    /// ṅ relative to the foot, in world components.
+    fn normal_rate_world(&self) -> Vec3 {
+        self.rotation * self.normal_rate
+    }
+
+    /// δ̈ when `force` (world) acts on the ball and `torque` (world, about its
+    /// centre of mass) on the foot.
+    fn compression_acceleration(&self, d: &Dynamics, force: Vec3, torque: Vec3) -> f64 {
+        let back = self.rotation.inverse();
+        // Δa = a_b − a_f (gravity acts on both alike).
+        let omega = self.omega;
+        let (relative_acceleration, omega_dot) = match &d.leg {
+            // The leg's response to the wrench on the foot, as in `Dynamics::derivative`.
+            Some(leg) => {
+                let (turn, accel) = leg.response(torque, d.drive - force);
+                (back * (force * (1.0 / d.ball_mass) - accel), back * turn)
+            }
+            None => (
+                back * (force * (1.0 / d.ball_mass + 1.0 / d.foot_mass) - d.drive / d.foot_mass),
+                ((back * torque) - omega.cross(omega * d.foot_inertia)) / d.foot_inertia,
+            ),
+        };
+        let r_ddot = relative_acceleration - omega.cross(self.relative_velocity) - omega_dot.cross(self.r) - omega.cross(self.r_dot);
+        -self.normal.dot(r_ddot) - self.normal_rate.dot(self.r_dot)
     }
 }
 
@@ -127,7 +207,6 @@ pub struct Dynamics {
     pub border: f64,
     pub friction: f64,
     pub tangential_stiffness: f64,
-    pub tangential_damping: f64,
     pub drive: Vec3,
     pub gravity: Vec3,
     /// The leg behind the foot (its mobility about the foot's centre, world
@@ -135,6 +214,9 @@ pub struct Dynamics {
     pub leg: Option<crate::model::LegDynamics>,
     /// The boot in series.
     pub boot: Option<kick_core::Boot>,
+    /// The tangential element's phase: slip (true) or grip (μ = 0 and μ = ∞
+    /// keep it false: no slider, or one that never moves).
+    pub slipping: bool,
 }
 
 impl Dynamics {
@@ -152,12 +234,43 @@ impl Dynamics {
             border: kick.foot_shape.border_radius(),
             friction: kick.friction,
             tangential_stiffness: kick.tangential_stiffness,
-            tangential_damping: kick.tangential_damping,
             drive: kick.drive(),
             gravity: kick.gravity_vector(),
             leg: kick.leg,
             boot: kick.base.boot(),
+            slipping: false,
         }
+    }
+
+    /// This kick's right-hand side in the phase the element takes at first
+    /// touch (`y` the state there): grip unless the cap starts at zero and
+    /// grows slower than the spring would load ([`crate::tangential`]).
+    pub fn at_touch(self, y: &State) -> Dynamics {
+        if self.friction == 0.0 || self.friction.is_infinite() {
+            return self;
+        }
+        let c = Dynamics { slipping: true, ..self }.contact(y);
+        let cap_rate = self.friction * c.normal_force_rate;
+        let slips =
+            crate::tangential::slips_at_touch(self.tangential_stiffness, c.sliding_velocity, self.friction * c.normal_force, cap_rate);
+        Dynamics { slipping: slips, ..self }
+    }
+
+    /// `y` with the spring put on the cap where a slip ends in grip: along its
+    /// own direction in the tangent plane, k_t |ξ| = μ F_n (1 − `GRIP_ENTRY`).
+    pub fn spring_on_cap(&self, y: &State) -> State {
+        let c = self.contact(y);
+        let xi = vec3(y, SPRING);
+        let xi_t = xi - c.normal * c.normal.dot(xi);
+        let size = self.friction * c.normal_force / self.tangential_stiffness * (1.0 - crate::tangential::GRIP_ENTRY);
+        let mut out = *y;
+        put3(&mut out, SPRING, xi_t.normalize_or_zero() * size);
+        out
+    }
+
+    /// The same right-hand side in the other phase (a grip/slip switch).
+    pub fn switched(self) -> Dynamics {
+        Dynamics { slipping: !self.slipping, ..self }
     }
 
     pub fn foot_pose(y: &State) -> Pose3 {
@@ -217,30 +330,38 @@ impl Dynamics {
 
         let xi = vec3(y, SPRING);
         let xi_t = xi - n * xi.dot(n);
-        let (k_t, c_t) = (self.tangential_stiffness, self.tangential_damping);
-        let trial = xi_t * k_t + sliding * c_t;
-        let trial_size = trial.length();
+        let k_t = self.tangential_stiffness;
         let cap = if self.friction.is_infinite() { f64::INFINITY } else { self.friction * normal_force };
-        let (tangential_force, spring_rate, grip_margin, friction_power);
-        if self.friction == 0.0 {
-            // No friction element: nothing grips or slips (margin 0 raises no event).
-            tangential_force = Vec3::ZERO;
-            spring_rate = -xi_t * (k_t / c_t);
-            grip_margin = 0.0;
-            friction_power = c_t * spring_rate.length_squared();
-        } else if trial_size <= cap {
-            tangential_force = -trial;
-            spring_rate = sliding;
-            grip_margin = if cap.is_infinite() { 1.0 } else { cap - trial_size };
-            friction_power = c_t * sliding.length_squared();
+        let foot_frame = FootFrame::of(self, y, c_b, c_f, n);
+        let mut normal_force_rate = 0.0;
+        let element = if self.friction == 0.0 {
+            crate::tangential::free(sliding)
+        } else if normal_force == 0.0 && delta != 0.0 {
+            // A law clamped at zero force (or no contact): no slider to cap,
+            // nothing acts tangentially, and the phase holds (its margin keeps its sign).
+            crate::tangential::Response { margin: if self.slipping { -1.0 } else { 1.0 }, ..crate::tangential::free(sliding) }
+        } else if !self.slipping {
+            crate::tangential::grip(k_t, xi_t, sliding, cap)
         } else {
-            let u = trial / trial_size;
-            tangential_force = -u * cap;
-            spring_rate = (u * cap - xi_t * k_t) / c_t;
-            grip_margin = cap - trial_size;
-            // damper c_t |ξ̇|² plus slider μ F_n |v_t − ξ̇| = cap (|T| − cap)/c_t
-            friction_power = c_t * spring_rate.length_squared() + cap * (trial_size - cap) / c_t;
-        }
+            let s = crate::tangential::slip_direction(xi_t, sliding);
+            let friction = s * -cap;
+            // dF/dt = ∂F/∂δ δ̇ + ∂F/∂δ̇ δ̈ (the law's gradient: zero where it is
+            // clamped), through the boot's balance when there is one (δ̈ the approach's).
+            let (d_delta, d_rate) = self.law.force_gradient(delta, rate);
+            let (force_rate, per_acceleration) = match &self.boot {
+                None => (d_delta * rate, d_rate),
+                Some(boot) => boot.force_rate_parts(d_delta, d_rate, rate, boot_rate),
+            };
+            let force = n * normal_force + friction;
+            normal_force_rate =
+                force_rate + per_acceleration * foot_frame.compression_acceleration(self, force, lever_foot.cross(-force));
+            crate::tangential::slip(k_t, s, sliding, cap, self.friction * normal_force_rate)
+        };
+        // The spring is carried along the turning tangent plane: ξ̇ gains −n (ṅ · ξ)
+        // (ṅ relative to the foot; the co-rotation with the foot is in `derivative`).
+        let spring_rate =
+            if element.spring_rate == Vec3::ZERO { Vec3::ZERO } else { element.spring_rate - n * foot_frame.normal_rate_world().dot(xi) };
+        let (tangential_force, grip_margin, friction_power) = (element.force, element.margin, element.power);
         ContactEval {
             compression: delta,
             compression_rate: rate,
@@ -256,6 +377,9 @@ impl Dynamics {
             damping_power,
             friction_power,
             boot_rate,
+            slip_velocity: element.slip_velocity,
+            slipping: self.slipping,
+            normal_force_rate,
         }
     }
 

@@ -14,7 +14,8 @@
 //! - separation: δ from + to − (contact onset is t = 0 by construction:
 //!   free flight before touch is exact in a force-free world);
 //! - δ̇ changes sign (the damping switch of Eq. 20; + → − is max compression);
-//! - grip ↔ slip of the tangential element (μ F_n − |k_t ξ + c_t v_t| changes sign);
+//! - grip ↔ slip of the tangential element ([`crate::tangential`]: in grip
+//!   μ F_n − k_t |ξ|, in slip the slider's speed changes sign);
 //! - the clamp at F = 0 of a law that would pull (Kelvin–Voigt).
 //!
 //! Peaks (normal force, |tangential force|): every event point is a sample
@@ -166,7 +167,8 @@ struct Bracket {
 struct Watch {
     /// (t, y, event values, dQ/dt)
     previous: (f64, State, [f64; 4], [f64; 2]),
-    crossing: Option<(Event, f64, State, f64)>,
+    /// The events whose functions changed sign in the step (t0, y0) → t1.
+    crossing: Option<([bool; 4], f64, State, f64)>,
     peaks: [Peak; 2],
     brackets: Vec<Bracket>,
     difference_step: f64,
@@ -188,10 +190,13 @@ impl System<f64, State> for PhaseSystem<'_> {
             return false;
         }
         let g = event_values(&self.dynamics, y);
-        if let Some(event) = EVENTS.iter().zip(g0.iter().zip(g)).find_map(|(e, (&b, a))| e.crossed(b, a).then_some(*e)) {
-            // The phase ends inside this step: its last stretch is
-            // examined once the event is located.
-            self.watch.crossing = Some((event, t0, y0, t));
+        let crossed: [bool; 4] = std::array::from_fn(|i| EVENTS[i].crossed(g0[i], g[i]));
+        if crossed.contains(&true) {
+            // The phase ends inside this step, at the earliest of the events
+            // that crossed (located after the phase; the grip/slip phase is
+            // state, so a switch passed over would not be seen again): its
+            // last stretch is examined once the event is located.
+            self.watch.crossing = Some((crossed, t0, y0, t));
             return true;
         }
         let r = rates(&self.dynamics, y, dy, self.watch.difference_step, Side::Inside);
@@ -316,8 +321,15 @@ impl FullState3d {
             }
         };
         let mut hit = None;
-        if let Some((event, t0, y0, t1)) = watch.crossing {
-            let (time, state) = self.locate(dynamics, event, t0, y0, t1, evaluations)?;
+        if let Some((crossed, t0, y0, t1)) = watch.crossing {
+            let mut first: Option<(Event, f64, State)> = None;
+            for (event, _) in EVENTS.iter().zip(crossed).filter(|(_, c)| *c) {
+                let (time, state) = self.locate(dynamics, *event, t0, y0, t1, evaluations)?;
+                if first.is_none_or(|(_, t, _)| time < t) {
+                    first = Some((*event, time, state));
+                }
+            }
+            let Some((event, time, state)) = first else { unreachable!("a crossing names an event") };
             // The last stretch of the phase, from the last accepted point to the event.
             let dy = dynamics.derivative(&state);
             *evaluations += 1;
@@ -413,10 +425,10 @@ impl FullState3d {
                 reason: "a ground plane is a third body; use the rapier scene path",
             });
         }
-        let dynamics = Dynamics::new(kick);
         let horizon = kick.contact_horizon()?;
         let mut t = 0.0;
         let mut y = dynamics::initial_state(kick);
+        let mut dynamics = Dynamics::new(kick).at_touch(&y);
         // sup F includes the onset value F(0⁺) = c V_n.
         let mut peaks = WATCHED.map(|w| Peak { value: w.value(&dynamics, &y), time: 0.0 });
         let difference_step = DIFFERENCE_STEP * kick_compliant::events::Scales::of(&kick.normal_scenario()?).time;
@@ -435,10 +447,8 @@ impl FullState3d {
                 }
                 .into());
             };
-            // Grip or slip holds through a phase; its start may sit on the
-            // switch itself, so ask the middle.
-            let middle = self.advance(dynamics, t, y, 0.5 * (t + t_event), &mut evaluations)?;
-            if dynamics.contact(&middle).is_slipping() {
+            // Grip or slip holds through a phase.
+            if dynamics.slipping {
                 slip_time += t_event - t;
             }
             t = t_event;
@@ -451,6 +461,26 @@ impl FullState3d {
             }
             if let Some(r) = recorder.as_deref_mut() {
                 r.push(sample(&dynamics, t, &y));
+            }
+            if event == Event::GripSlip {
+                if dynamics.slipping {
+                    // Grip starts with the spring on the cap, a hair inside it
+                    // (`tangential::GRIP_ENTRY`): the grip's margin starts there
+                    // from zero with zero slope.
+                    y = dynamics.spring_on_cap(&y);
+                }
+                dynamics = dynamics.switched();
+            } else if event != Event::Separation {
+                // Another switch may bring grip or slip with it (at δ̇ = 0 the
+                // paper's law's dashpot stops, the cap's rate jumps, and so does
+                // the slider's speed): the next phase starts on its own side.
+                let margin = dynamics.contact(&y).grip_margin;
+                if (dynamics.slipping && margin > 0.0) || (!dynamics.slipping && margin < 0.0) {
+                    if dynamics.slipping {
+                        y = dynamics.spring_on_cap(&y);
+                    }
+                    dynamics = dynamics.switched();
+                }
             }
             match event {
                 Event::CompressionRate | Event::GripSlip | Event::Clamp => {

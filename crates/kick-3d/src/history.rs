@@ -30,9 +30,11 @@ use std::ops::ControlFlow;
 pub enum ContactState {
     /// The separation row (code 0).
     Separation,
-    /// The tangential element holds: |F_t| < μ F_n (code 1; always for μ = ∞).
+    /// The contact points move together (the ball's surface in contact and
+    /// the foot; the spring, the shell's compliance, takes the rest):
+    /// |F_t| ≤ μ F_n (code 1; always for μ = ∞). See [`crate::tangential`].
     Grip,
-    /// The tangential element slides on its cap: |F_t| = μ F_n (code 2; also μ = 0).
+    /// The contact points slide: |F_t| = μ F_n (code 2; also μ = 0, with no force).
     Slip,
 }
 
@@ -72,12 +74,18 @@ pub struct Sample3d {
     /// Where the tangential force acts, from the ball's centre, m: −R n at a
     /// point contact, the patch's centroid over a patch (friction's arm).
     pub contact_arm: [f64; 3],
+    /// The contact points' relative tangential velocity (ball's surface less
+    /// the foot's), m/s: zero while gripping, the slider's while slipping
+    /// ([`crate::tangential`]); with rigid grip and at μ = 0 the sliding of
+    /// the material points at the contact.
+    pub slip_velocity: [f64; 3],
 }
 
 /// Names and units of a 3D history's columns, in [`Sample3d::values`] order:
 /// vectors as `_x`, `_y`, `_z`; `contact_state` holds [`ContactState::code`]
-/// (0 separation, 1 grip, 2 slip).
-pub const HISTORY_COLUMNS_3D: [(&str, &str); 27] = [
+/// (0 separation, 1 grip, 2 slip); `slip_velocity` is what the state is
+/// named by (zero in grip).
+pub const HISTORY_COLUMNS_3D: [(&str, &str); 30] = [
     ("time", "s"),
     ("ball_position_x", "m"),
     ("ball_position_y", "m"),
@@ -105,12 +113,15 @@ pub const HISTORY_COLUMNS_3D: [(&str, &str); 27] = [
     ("tangential_force_y", "N"),
     ("tangential_force_z", "N"),
     ("contact_state", "1"),
+    ("slip_velocity_x", "m/s"),
+    ("slip_velocity_y", "m/s"),
+    ("slip_velocity_z", "m/s"),
 ];
 
 impl Sample3d {
     /// Values in [`HISTORY_COLUMNS_3D`] order.
-    pub fn values(&self) -> [f64; 27] {
-        let mut v = [0.0; 27];
+    pub fn values(&self) -> [f64; 30] {
+        let mut v = [0.0; 30];
         v[0] = self.time;
         for (i, a) in [
             self.ball_position,
@@ -129,6 +140,7 @@ impl Sample3d {
         v[20..23].copy_from_slice(&self.normal_force);
         v[23..26].copy_from_slice(&self.tangential_force);
         v[26] = self.contact_state.code();
+        v[27..30].copy_from_slice(&self.slip_velocity);
         v
     }
 }
@@ -191,6 +203,7 @@ pub(crate) fn sample(kick: &Kick3d, system: &Relative, x: f64, y: &State, t: f64
         contact_state,
         normal_moment: array(q * normal_moment),
         contact_arm: array(q * arm),
+        slip_velocity: array(q * c.slip_velocity),
     }
 }
 

@@ -1,6 +1,6 @@
 //! Off-center 3D kicks: a sphere and a rigid instep with the scenario's normal
 //! contact law (the paper's Eq. 20 or any law of `kick_core::laws`), Coulomb
-//! friction with tangential compliance, and the spin
+//! friction with the shell's tangential compliance ([`tangential`]), and the spin
 //! that an off-center contact gives (Eq. 61). Section 17 of the paper lists
 //! what its 1D model leaves out; this crate adds 17.4–17.5.
 //!
@@ -34,6 +34,7 @@ pub mod precision;
 #[cfg(feature = "rapier")]
 pub mod scene;
 pub mod sweep;
+pub mod tangential;
 pub mod validation;
 
 pub use accurate::Accurate3d;

@@ -123,8 +123,6 @@ pub struct Kick3dSpec {
     pub ball_inertia: Option<f64>,
     /// k_t, N/m [1e5]
     pub tangential_stiffness: Option<f64>,
-    /// c_t, N s/m [100]
-    pub tangential_damping: Option<f64>,
     /// Principal moments of the foot about its centre of mass, body axes, kg m²
     /// [uniform solid box of the instep's size and mass m_f]
     pub foot_inertia: Option<[f64; 3]>,
@@ -172,7 +170,6 @@ impl Kick3dSpec {
             "ball_radius" => number(self.ball_radius),
             "ball_inertia" => number(self.ball_inertia),
             "tangential_stiffness" => number(self.tangential_stiffness),
-            "tangential_damping" => number(self.tangential_damping),
             "foot_inertia" => self.foot_inertia.map(Value::Vector),
             "foot_half_extents" => self.foot_half_extents.map(Value::Vector),
             "border_radius" => number(self.border_radius),
@@ -202,7 +199,6 @@ impl SetParameter for Kick3dSpec {
             "ball_radius" => self.ball_radius = number()?,
             "ball_inertia" => self.ball_inertia = number()?,
             "tangential_stiffness" => self.tangential_stiffness = number()?,
-            "tangential_damping" => self.tangential_damping = number()?,
             "foot_inertia" => self.foot_inertia = vector()?,
             "foot_half_extents" => self.foot_half_extents = vector()?,
             "border_radius" => self.border_radius = number()?,
@@ -313,7 +309,6 @@ pub struct Kick3d {
     pub approach_angle: f64,
     pub friction: f64,
     pub tangential_stiffness: f64,
-    pub tangential_damping: f64,
     pub gravity: bool,
     pub ground: bool,
     /// The instep as a surface of its own ([`crate::patch`]); `None`: the
@@ -457,8 +452,6 @@ impl Kick3d {
     /// About 0.8 of the normal law's tangent stiffness n k δ^(n−1) at the
     /// baseline's δ_max (1.2e5 N/m), a Mindlin-like ratio. Assumed.
     pub const DEFAULT_TANGENTIAL_STIFFNESS: f64 = parameters::TANGENTIAL_STIFFNESS.default_number();
-    /// Damping ratio ≈ 0.4 of the tangential mode at the defaults. Assumed.
-    pub const DEFAULT_TANGENTIAL_DAMPING: f64 = parameters::TANGENTIAL_DAMPING.default_number();
 
     /// Validate; every problem is a typed error naming the parameter.
     pub fn new(base: Scenario, spec: &Kick3dSpec) -> Result<Kick3d, Kick3dError> {
@@ -509,7 +502,6 @@ impl Kick3d {
         let friction = check(&p::FRICTION, spec.friction.unwrap_or(Self::DEFAULT_FRICTION))?;
         let tangential_stiffness =
             check(&p::TANGENTIAL_STIFFNESS, spec.tangential_stiffness.unwrap_or(Self::DEFAULT_TANGENTIAL_STIFFNESS))?;
-        let tangential_damping = check(&p::TANGENTIAL_DAMPING, spec.tangential_damping.unwrap_or(Self::DEFAULT_TANGENTIAL_DAMPING))?;
         let mut kick = Kick3d {
             base,
             law: base.contact_law(),
@@ -522,7 +514,6 @@ impl Kick3d {
             approach_angle: alpha_deg.to_radians(),
             friction,
             tangential_stiffness,
-            tangential_damping,
             gravity: spec.gravity.unwrap_or(false),
             ground: spec.ground.unwrap_or(false),
             instep: None,
@@ -611,7 +602,6 @@ impl Kick3d {
             "ball_radius" => Value::Number(self.ball_radius),
             "ball_inertia" => Value::Number(self.ball_inertia),
             "tangential_stiffness" => Value::Number(self.tangential_stiffness),
-            "tangential_damping" => Value::Number(self.tangential_damping),
             "foot_inertia" => Value::Vector(self.foot_inertia),
             "foot_half_extents" => Value::Vector(self.foot_shape.outer_half_extents()),
             "border_radius" => Value::Number(self.foot_shape.border_radius()),

@@ -103,8 +103,13 @@ pub fn named_kicks() -> Result<Vec<(&'static str, Kick3d)>, Kick3dError> {
         (
             "onto the rounded border: soft ball rising 30 deg",
             soft,
+            // The line above the centre by R sin α (contact_depth −R sin α):
+            // the kick this was before the depth was declared, sliding up
+            // the ball onto the border (a central rising kick now pushes
+            // through the centre, with no tangential force to check).
             Kick3dSpec {
                 approach_angle_deg: Some(30.0),
+                contact_depth: Some(-kick_core::DEFAULT_BALL_RADIUS * 0.5),
                 friction: Some(0.05),
                 foot_half_extents: Some(ROUNDED_OUTER),
                 border_radius: Some(0.01),

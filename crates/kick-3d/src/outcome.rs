@@ -27,7 +27,7 @@ pub struct EnergyPartition {
     /// paper's law; a clamped Kelvin–Voigt also loses the spring energy left
     /// when its force reaches zero).
     pub normal_damping_loss: f64,
-    /// ∫ (c_t |ξ̇|² + μ F_n |slip speed|) dt: tangential damper and Coulomb slider.
+    /// ∫ μ F_n λ dt: the Coulomb slider's loss (λ its speed; [`crate::tangential`]).
     pub friction_loss: f64,
     /// ∫ F_drive · v_f dt.
     pub drive_work: f64,
@@ -71,7 +71,7 @@ pub struct Outcome3d {
     pub peak_tangential_force_time: f64,
     pub max_compression: f64,
     pub max_compression_time: f64,
-    /// Total time the tangential spring slides on its Coulomb cap, s.
+    /// Total time the contact points slip (the tangential force on its Coulomb cap), s.
     pub slip_time: f64,
     /// Contact impulse on the ball ∫F dt, N s (Eq. 1).
     pub impulse: [f64; 3],

@@ -198,7 +198,7 @@ impl Patch {
         elastic: f64,
         slope: f64,
     ) -> PatchForce {
-        self.resultant_on::<false>(surface, ball_radius, r, r_dot, turn, delta, n, elastic, slope).0
+        self.resultant_on::<false, false>(surface, ball_radius, r, r_dot, turn, delta, n, elastic, slope).0
     }
 
     /// [`Patch::resultant`] and, on a cap, the centroid height's rate dζ/dδ
@@ -225,12 +225,22 @@ impl Patch {
         elastic: f64,
         slope: f64,
     ) -> (PatchForce, f64) {
-        self.resultant_on::<true>(surface, ball_radius, r, r_dot, turn, delta, n, elastic, slope)
+        let (p, zeta_rate, _) = self.resultant_on::<true, false>(surface, ball_radius, r, r_dot, turn, delta, n, elastic, slope);
+        (p, zeta_rate)
     }
 
+    /// [`Patch::resultant`] and the ratio ρ of the normal force's loss to
+    /// the 1D law's, with its rate dρ/dδ, from the same rings: the normal
+    /// component is F_el + slope δ̇ ρ(δ), ρ = Σ g z² / (r_f Σ g z) on a cap (a
+    /// function of δ alone), 1 on the flat face (what a slipping contact's
+    /// cap μ F_n needs for its rate). dρ/dδ as [`Patch::resultant_and_centroid_rate`]
+    /// differentiates: the rule's sums of t = ∂g/∂δ at a fixed angle, in
+    /// y = z − x_f from the rim (no cancellation at a small patch):
+    /// r_f (Σ g z)² dρ/dδ = x_f² (T₁G₀ − T₀G₁) + x_f (T₂G₀ − T₀G₂) + T₂G₁ − T₁G₂,
+    /// G_k = Σ g y^k, T_k = Σ t y^k. A unit test holds it to a difference of ρ.
     #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
-    fn resultant_on<const RATE: bool>(
+    #[inline]
+    pub fn resultant_and_normal_ratio(
         &self,
         surface: Surface,
         ball_radius: f64,
@@ -241,18 +251,37 @@ impl Patch {
         n: Vec3,
         elastic: f64,
         slope: f64,
-    ) -> (PatchForce, f64) {
+    ) -> (PatchForce, (f64, f64)) {
+        let (p, _, ratio) = self.resultant_on::<false, true>(surface, ball_radius, r, r_dot, turn, delta, n, elastic, slope);
+        (p, ratio)
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn resultant_on<const RATE: bool, const NORMAL: bool>(
+        &self,
+        surface: Surface,
+        ball_radius: f64,
+        r: Vec3,
+        r_dot: Vec3,
+        turn: Vec3,
+        delta: f64,
+        n: Vec3,
+        elastic: f64,
+        slope: f64,
+    ) -> (PatchForce, f64, (f64, f64)) {
         let big_r = ball_radius;
         let r_n = n.dot(r_dot);
         let point = PatchForce { force: n * (elastic - slope * r_n), moment: Vec3::ZERO, centroid: r - n * big_r, rate_weight: 1.0 };
         if !(delta > 0.0) {
-            return (point, 0.0);
+            return (point, 0.0, (1.0, 0.0));
         }
         let r_t = r_dot - n * r_n;
         let Surface::Sphere { centre, radius: rf } = surface else {
-            return (flat(big_r, r, r_n, turn, delta, n, elastic, slope), 0.0);
+            return (flat(big_r, r, r_n, turn, delta, n, elastic, slope), 0.0, (1.0, 0.0));
         };
         let mut zeta_rate = 0.0;
+        let mut normal_ratio = (1.0, 0.0);
         let flat_a2 = delta * (2.0 * big_r - delta);
         // Sums over the rings, each already summed over θ (per N spokes).
         let (mut sum_g, mut sum_gz) = (0.0, 0.0);
@@ -287,6 +316,8 @@ impl Patch {
             // y = z − x_f taken from the rim (no cancellation against
             // ζ ≈ r_f at a small patch). No division per ring.
             let (mut sum_t, mut sum_ty, mut sum_gy) = (0.0, 0.0, 0.0);
+            // For dρ/dδ also Σ g y² and Σ t y².
+            let (mut sum_gyy, mut sum_tyy) = (0.0, 0.0);
             // ρ² = r_f² − z² = (R − S)(R + S)/κ², R − S = span (1 − u) from the rule's other end.
             let rho_scale = span * inv_kappa * inv_kappa;
             // Eight rings at a time into small arrays (not 64 slots cleared
@@ -308,7 +339,7 @@ impl Patch {
                     // z dz = S dS / κ².
                     gs[j] = w * h * s;
                     rhos[j] = rest[j] * (2.0 * big_r - span * rest[j]) * rho_scale;
-                    if RATE {
+                    if RATE || NORMAL {
                         ys[j] = span * v * ratio * inv_kappa;
                         ts[j] = w * (s * zs[j] + d * rhos[j] * inv_rf) * inv_rf;
                     }
@@ -320,16 +351,27 @@ impl Patch {
                     sum_gz += g * z;
                     sum_gzz += g * z * z;
                     spread += g * rhos[j];
-                    if RATE {
+                    if RATE || NORMAL {
                         sum_t += ts[j];
                         sum_ty += ts[j] * ys[j];
                         sum_gy += g * ys[j];
+                    }
+                    if NORMAL {
+                        sum_tyy += ts[j] * ys[j] * ys[j];
+                        sum_gyy += g * ys[j] * ys[j];
                     }
                 }
             }
             if RATE {
                 let mean_y = sum_gy / sum_g;
                 zeta_rate = (sum_ty - mean_y * sum_t) / sum_g;
+            }
+            if NORMAL {
+                // x_f, the rim's height: κ x_f = r_f + S₀.
+                let x_f = rim * inv_kappa;
+                let (g0, g1, g2, t0, t1, t2) = (sum_g, sum_gy, sum_gyy, sum_t, sum_ty, sum_tyy);
+                let top = x_f * x_f * (t1 * g0 - t0 * g1) + x_f * (t2 * g0 - t0 * g2) + (t2 * g1 - t1 * g2);
+                normal_ratio = (sum_gzz / (rf * sum_gz), top / (rf * sum_gz * sum_gz));
             }
             // ν · n = z/r_f; ḣ's part along n is −(z/r_f) ṙ_n.
             let total = sum_gz * inv_rf;
@@ -338,14 +380,14 @@ impl Patch {
             (total, elastic * total - slope * r_n * rated, -slope * spread * 0.5 * inv_rf * inv_rf, rated)
         };
         if !(total > 0.0) {
-            return (point, 0.0);
+            return (point, 0.0, (1.0, 0.0));
         }
         let v = r_t + n.cross(turn) * d;
         // lever q × ν = (d/r_f) ρ⃗ × n; Σ_θ (ρ⃗ × n)(ρ⃗·V) = ρ² (V × n)/2.
         let inv_total = 1.0 / total;
         let force = n * (along * inv_total) + v * (across * inv_total);
         let moment = v.cross(n) * (across * d * inv_total);
-        (PatchForce { force, moment, centroid: centre + n * (sum_gz / sum_g), rate_weight: rated * inv_total }, zeta_rate)
+        (PatchForce { force, moment, centroid: centre + n * (sum_gz / sum_g), rate_weight: rated * inv_total }, zeta_rate, normal_ratio)
     }
 }
 
@@ -783,6 +825,57 @@ mod tests {
             }
         }
         assert!(refused > 0);
+    }
+
+    /// The cap's normal-force ratio: the normal component of the resultant is
+    /// F_el + slope δ̇ ρ(δ) for any sliding and turn, and dρ/dδ is ρ's
+    /// five-point central difference (step 1e-3 δ) and, to 1e-11, a 40-ring
+    /// rule's, from a fraction of a millimetre to 3 cm (what a slipping
+    /// contact's cap rate d(μ F_n)/dt rests on).
+    #[test]
+    fn the_cap_normal_ratio_rate_is_its_derivative() {
+        let (big_r, rf, centre, n) = tilted_cap();
+        let patch = Patch::new(Quadrature::default());
+        let (elastic, slope) = (1000.0, 50.0);
+        let at = |delta: f64, rings: Patch| {
+            let r = centre + n * (big_r + rf - delta);
+            rings.resultant_and_normal_ratio(
+                Surface::Sphere { centre, radius: rf },
+                big_r,
+                r,
+                Vec3::ZERO,
+                Vec3::ZERO,
+                delta,
+                n,
+                elastic,
+                slope,
+            )
+        };
+        for delta in [3e-4, 0.003, 0.01, 0.03] {
+            let r = centre + n * (big_r + rf - delta);
+            // Sliding and turning: the normal component still follows ρ.
+            let r_dot = n * -7.0 + Vec3::new(0.0, 3.0, -2.0).reject_from(n);
+            let (p, (rho, rate)) = patch.resultant_and_normal_ratio(
+                Surface::Sphere { centre, radius: rf },
+                big_r,
+                r,
+                r_dot,
+                Vec3::new(20.0, -30.0, 50.0),
+                delta,
+                n,
+                elastic,
+                slope,
+            );
+            let normal = n.dot(p.force);
+            assert!((normal - (elastic + slope * 7.0 * rho)).abs() <= 1e-13 * normal, "δ {delta}: {normal} vs ρ {rho}");
+            let value = |d: f64| at(d, patch).1 .0;
+            let h = 1e-3 * delta;
+            let fd = (8.0 * (value(delta + h) - value(delta - h)) - (value(delta + 2.0 * h) - value(delta - 2.0 * h))) / (12.0 * h);
+            println!("δ {delta}: ρ {rho} dρ/dδ {rate} (difference {fd})");
+            assert!((rate - fd).abs() <= 1e-7 * rate.abs(), "δ {delta}: {rate} vs {fd}");
+            let fine = at(delta, Patch::new(Quadrature { rings: 40 })).1 .1;
+            assert!((rate - fine).abs() <= 1e-11 * fine.abs(), "δ {delta}: {rate} vs {fine} (40 rings)");
+        }
     }
 
     /// Gauss–Legendre on (0, 1) integrates polynomials of degree 2n − 1 exactly.

@@ -3,7 +3,8 @@
 //!
 //! - [`Errors3d`]: relative errors of the observables the accurate path
 //!   promises to 1e-9 (launch velocity, spin, contact time, peak forces and
-//!   their times, maximum compression).
+//!   their times, maximum compression, and the time the contact slips, which
+//!   sums the grip/slip switches' times).
 //! - [`reference`]: the full-state path tightened to rtol 1e-13.
 //! - [`cost_ratio`]: median seconds per kick of 3D `auto` and of the 1D
 //!   `auto` on the same kick's normal scenario, timed alternately in one run.
@@ -33,6 +34,8 @@ pub struct Errors3d {
     pub peak_tangential_force: f64,
     pub peak_tangential_force_time: f64,
     pub max_compression: f64,
+    /// |Δ slip time| / contact time: every grip/slip switch's time enters it.
+    pub slip_time: f64,
 }
 
 fn difference(a: [f64; 3], b: [f64; 3]) -> f64 {
@@ -43,7 +46,7 @@ fn norm(a: [f64; 3]) -> f64 {
 }
 
 impl Errors3d {
-    pub const NAMES: [&'static str; 8] = [
+    pub const NAMES: [&'static str; 9] = [
         "launch_velocity",
         "spin",
         "contact_time",
@@ -52,6 +55,7 @@ impl Errors3d {
         "peak_tangential_force",
         "peak_tangential_force_time",
         "max_compression",
+        "slip_time",
     ];
 
     pub fn of(kick: &Kick3d, solved: &Outcome3d, reference: &Outcome3d) -> Errors3d {
@@ -74,10 +78,11 @@ impl Errors3d {
                 0.0
             },
             max_compression: rel(solved.max_compression, r.max_compression, 0.0),
+            slip_time: (solved.slip_time - r.slip_time).abs() / r.contact_time,
         }
     }
 
-    pub fn values(&self) -> [f64; 8] {
+    pub fn values(&self) -> [f64; 9] {
         [
             self.launch_velocity,
             self.spin,
@@ -87,6 +92,7 @@ impl Errors3d {
             self.peak_tangential_force,
             self.peak_tangential_force_time,
             self.max_compression,
+            self.slip_time,
         ]
     }
 

@@ -141,8 +141,17 @@ impl Boot {
             return 0.0;
         }
         let (_, d_delta, d_rate) = law.branch_force_and_gradient(ball_compression, split.ball_rate, compressing);
+        let (rate, per_acceleration) = self.force_rate_parts(d_delta, d_rate, split.ball_rate, split.boot_rate);
+        rate + per_acceleration * acceleration
+    }
+
+    /// [`Boot::force_rate`] from the ball law's gradient (F_δ, F_v) at the
+    /// split, as Ḟ = `rate` + `per_acceleration` δ̈ (for a caller whose δ̈
+    /// depends on the force it is computing, or whose law is a patch's).
+    #[inline]
+    pub fn force_rate_parts(&self, d_delta: f64, d_rate: f64, ball_rate: f64, boot_rate: f64) -> (f64, f64) {
         let c = self.damping;
-        (c * d_delta * split.ball_rate + c * d_rate * acceleration + d_rate * self.stiffness * split.boot_rate) / (c + d_rate)
+        ((c * d_delta * ball_rate + d_rate * self.stiffness * boot_rate) / (c + d_rate), c * d_rate / (c + d_rate))
     }
 
     /// δ̈_b from Ḟ = k_b δ̇_b + c_b δ̈_b.

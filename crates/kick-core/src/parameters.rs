@@ -621,17 +621,7 @@ pub const TANGENTIAL_STIFFNESS: ParameterDef = scalar(
     Number(1.0e5),
     Valid::new(Bound::Open(0.0), Bound::Closed(f64::INFINITY), "> 0 (inf: rigid grip, solved as a constraint)"),
     SampleRange::log(1e4, 1e6),
-    "Tangential stiffness of the contact (Cundall-Strack spring; inf: rigid grip, a constraint with no spring)",
-);
-pub const TANGENTIAL_DAMPING: ParameterDef = scalar(
-    "tangential_damping",
-    "c_t",
-    "N s/m",
-    Kick3d,
-    Number(100.0),
-    Valid::POSITIVE,
-    SampleRange::log(10.0, 1000.0),
-    "Tangential damping of the contact",
+    "Tangential stiffness of the contact: the shell's tangential compliance, a spring in series with the Coulomb slider (inf: rigid grip, a constraint with no spring)",
 );
 pub const FOOT_INERTIA: ParameterDef = ParameterDef {
     name: "foot_inertia",
@@ -795,7 +785,7 @@ pub const BOOT_DAMPING: ParameterDef = scalar(
 );
 
 /// Every parameter of the 1D and 3D levels, each once, lower levels first.
-pub static PARAMETERS: [ParameterDef; 36] = [
+pub static PARAMETERS: [ParameterDef; 35] = [
     FOOT_MASS,
     BALL_MASS,
     FOOT_SPEED,
@@ -812,7 +802,6 @@ pub static PARAMETERS: [ParameterDef; 36] = [
     BALL_RADIUS,
     BALL_INERTIA,
     TANGENTIAL_STIFFNESS,
-    TANGENTIAL_DAMPING,
     FOOT_INERTIA,
     FOOT_HALF_EXTENTS,
     BORDER_RADIUS,

@@ -358,7 +358,7 @@ pub fn setup_note() -> String {
     let b = k.base;
     format!(
         "The kick: Table 1's foot (m_f = {} kg at V = {} m/s, ball {} kg at rest, the paper's contact law) with \
-         kick-3d's defaults (μ per row, tangential spring and damper, the instep box), the foot's path horizontal \
+         kick-3d's defaults (μ per row, the tangential spring and slider, the instep box), the foot's path horizontal \
          (α = 0). The foot's line of motion passes h = {} cm below the ball's centre and e = 0–{} cm beside it \
          (kick-3d's `contact_depth` and `offset`: the distances of the centre from the line, the one definition \
          of every front end, drawn on the first figure), so the ball rises with backspin and curves with sidespin, \

@@ -96,15 +96,15 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     let k = Kick3d::baseline();
     let b = k.base;
     let default_of = |name: &str| kick_core::parameters::find(name).map(|p| p.default_number()).unwrap_or(f64::NAN);
-    let (kt, ct) = (k.tangential_stiffness, k.tangential_damping);
+    let kt = k.tangential_stiffness;
     // Tangent stiffness of the normal law at the 1D baseline's δ_max, and
-    // the tangential damping ratio on the gripping contact's mass m_t.
+    // the gripping contact's tangential vibration period on its mass m_t.
     let one = numbers_3d::baseline_1d(&k)?;
     let (stiffness, exponent) = (b.get(kick_core::Parameter::Stiffness), b.get(kick_core::Parameter::Exponent));
     let tangent = stiffness * exponent * one.max_compression.powf(exponent - 1.0);
     let foot_mass = b.effective_foot_mass();
     let m_t = 1.0 / (1.0 / b.ball_mass() + k.ball_radius * k.ball_radius / k.ball_inertia + 1.0 / foot_mass);
-    let zeta = ct / (2.0 * (kt * m_t).sqrt());
+    let period = std::f64::consts::TAU * (m_t / kt).sqrt();
     // The instep's size as given (border included).
     let [hx, hy, hz] = k.foot_shape.outer_half_extents();
     let mut w = String::new();
@@ -134,12 +134,21 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
          - Normal force: the scenario's contact law — in every result here the paper's F_n = k δⁿ + c max(δ̇, 0) \
          (Eq. 20); any law of `kick_core::laws` with `--law`/`--restitution` or the experiment file's \
          `law`/`restitution` keys (see [laws.md](laws.md)).\n\
-         - Tangential force: Coulomb friction μ with tangential compliance: a spring k_t and damper c_t in series \
-         with a slider capped at μ F_n (Cundall–Strack). The spring extension is part of the state; grip ↔ slip \
-         switches are located events. Defaults k_t = {} N/m ({} of the normal law's tangent stiffness \
-         k n δ_max^(n−1) = {} N/m at the 1D baseline's δ_max = {} mm) and c_t = {} N s/m (damping ratio \
-         c_t / (2√(k_t m_t)) = {} on the gripping contact's mass m_t, 1/m_t = 1/m_b + R²/I_b + 1/m_f): \
-         **assumptions, not measurements**.\n",
+         - Tangential force (`kick_3d::tangential`): Coulomb friction μ with the shell's own tangential \
+         compliance, a spring k_t in series with a slider capped at μ F_n, no viscous term. The states are named \
+         by what the contact points do (the ball's surface where it touches the foot, and the foot): **grip** — \
+         they move together, the spring takes the sliding of the ball's body over its contact region and carries \
+         −k_t ξ, |k_t ξ| ≤ μ F_n; **slip** — they slide, the force is μ F_n and the spring stays on the cap. Grip \
+         ends where the spring reaches μ F_n; slip ends where slipping has brought the contact points' relative \
+         velocity to zero, the picture of Cross (2002) in which the bottom of the ball comes to rest and the \
+         deformed contact region then lets the ball vibrate tangentially. The tangential force rises from zero at \
+         first touch and is continuous through every switch; histories report the slip velocity \
+         (`slip_velocity_*`, zero in grip). The gripping spring is elastic (only slipping loses energy; no \
+         measurement of a ball's tangential damping was found). Default k_t = {} N/m ({} of the normal law's \
+         tangent stiffness k n δ_max^(n−1) = {} N/m at the 1D baseline's δ_max = {} mm), so the gripping contact \
+         vibrates with the period T_t = 2π √(m_t / k_t) = {} ms on its tangential mass m_t \
+         (1/m_t = 1/m_b + R²/I_b + 1/m_f): **an assumption, not a measurement**, and the spin's trend against \
+         μ hangs on it (below).\n",
         sig(k.ball_radius, 3),
         sig(b.ball_mass(), 3),
         sig(k.ball_inertia, 4),
@@ -152,8 +161,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
         sig(kt / tangent, 2),
         sig(tangent, 3),
         sig(one.max_compression * 1e3, 3),
-        sig(default_of("tangential_damping"), 3),
-        sig(zeta, 2),
+        sig(period * 1e3, 3),
     );
 
     // Paths and their accuracy, computed now.
@@ -170,6 +178,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
         "peak tangential force",
         "its time",
         "max compression",
+        "slip time (of the contact time)",
     ];
     let listed: Vec<String> = names.iter().zip(worst).map(|(n, e)| format!("{n} {:.1e}", e)).collect();
     let _ = writeln!(w, "## Paths and their accuracy\n");
@@ -374,9 +383,10 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
         w,
         "The kick at e = 5 cm, μ = 0.5 (baseline otherwise), solved when this page is written: contact {} ms; peak \
          normal force {} kN at {} ms, peak tangential force {} kN at {} ms (the two peaks at different times; their \
-         ratio {} against μ = 0.5). The tangential force sits on its Coulomb cap μ F_n (slip) for {} ms, {}% of the \
-         contact; for the rest the contact grips and the force is the tangential spring and damper's, \
-         |k_t ξ + c_t v_t| < μ F_n. Launch: {} m/s, {}.\n",
+         ratio {} against μ = 0.5). The contact points slip, the tangential force on its Coulomb cap μ F_n, for {} \
+         ms, {}% of the contact; for the rest they grip and the force is the tangential spring's, k_t |ξ| < μ F_n, \
+         rising from zero at first touch (the paper's law pushes c V_n at once, so the relaxed spring holds until \
+         it reaches μ c V_n) and reversing as the ball vibrates on it. Launch: {} m/s, {}.\n",
         sig(o.contact_time * 1e3, 3),
         sig(o.peak_normal_force * 1e-3, 3),
         sig(o.peak_normal_force_time * 1e3, 3),
@@ -409,20 +419,109 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
          quotes the same kick). The patch section's point contact runs the shell ball's law on a 5 mm grid: a \
          different kick, whose maximum it gives with its law named. That \
          optimum is not Asai et al.'s near 100 mm: their offset runs from the foot's axis to the ball's on a deforming \
-         ball, the model's tilts a knife-edge normal by asin(e/R), and their ball leaves fast. The tangential constants \
-         are assumed (above), so details of the spin's dependence on μ near grip are properties of the assumed \
-         compliance, not predictions.\n\n\
-         ## Checks (`kick check`, `cargo test -p kick-3d`)\n\n\
-         Central frictionless = 1D to ≤ 1e-9; zero offset with friction: zero spin; I_b Δω = ∫ r × F dt (Eq. 61); the \
-         energy partition (ball translation, ball spin, foot, elastic, normal damping, friction) closes; mechanical \
-         energy never rises along the run; mirrored offsets give mirrored spin exactly; μ = ∞ matches the closed-form \
-         damped tangential oscillator and, with a stiff critically damped spring, the rigid gripping limit \
-         ω = R m_t |v_t0| / I_b; the scene path converges at order 1.\n",
+         ball, the model's tilts a knife-edge normal by asin(e/R), and their ball leaves fast. The tangential \
+         stiffness is assumed (above); how it sets the spin's trend against μ is the next section.\n",
         kick_core::short(optimum.friction),
         spin(optimum.spin),
         crate::units::three(1e3 * optimum.offset),
         sig(1e3 * k.ball_radius, 3),
         sig(optimum.speed, 3),
+    );
+    w.push_str(&friction_section()?);
+    let _ = writeln!(
+        w,
+        "## Checks (`kick check`, `cargo test -p kick-3d`)\n\n\
+         Central frictionless = 1D to ≤ 1e-9; zero offset with friction: zero spin; I_b Δω = ∫ r × F dt (Eq. 61); the \
+         energy partition (ball translation, ball spin, foot, elastic, normal damping, friction) closes; mechanical \
+         energy never rises along the run; mirrored offsets give mirrored spin exactly; a shell ball sliding \
+         throughout at μ = 0.01 spins R μ J_n / I_b; μ = ∞ matches the closed form of the elastic tangential \
+         oscillator, and rigid grip (a constraint) the gripping limit ω = R m_t |v_t0| / I_b; the scene path \
+         converges at order 1.\n"
+    );
+    Ok(w)
+}
+
+/// The 3D page's spin against friction beside Asai et al.'s trend, and what
+/// in the model sets it ([`numbers_3d::friction_spin`]).
+fn friction_section() -> Result<String, String> {
+    let (rows, rigid) = numbers_3d::friction_spin().map_err(err)?;
+    let mut w = String::new();
+    let _ = writeln!(w, "## Spin against friction, beside Asai et al.\n");
+    let header: Vec<String> = numbers_3d::SPIN_FRICTIONS.iter().map(|&mu| format!("μ = {}", value_label(mu))).collect();
+    let _ = writeln!(
+        w,
+        "Table 1's kick at e = {} cm, square approach, solved when this page is written: spin (rad/s) against μ, for the \
+         paper's ball and the shell ball (`--law shell`), at the default tangential stiffness and at a quarter and \
+         four times it; T_t is the gripping contact's tangential vibration period 2π √(m_t / k_t), t_c the contact \
+         time; in brackets the share of the contact that slips.\n",
+        sig(numbers_3d::SPIN_OFFSET * 100.0, 2)
+    );
+    let _ = writeln!(w, "| ball | k_t (N/m) | T_t / t_c | {} |", header.join(" | "));
+    let _ = writeln!(w, "| --- | --- | --- |{}", " --- |".repeat(header.len()));
+    for r in &rows {
+        let cells: Vec<String> =
+            r.points.iter().map(|&(_, rpm, slip)| format!("{} ({}%)", three(rpm / RPM_PER_RAD_PER_S), sig(100.0 * slip, 2))).collect();
+        let _ = writeln!(
+            w,
+            "| {} | {} | {} | {} |",
+            r.law,
+            kick_core::short(r.tangential_stiffness),
+            sig(r.period / r.contact_time, 2),
+            cells.join(" | ")
+        );
+    }
+    let rigid_text: Vec<String> = rigid.iter().map(|(law, rpm)| format!("{} for the {law}", spin(*rpm / RPM_PER_RAD_PER_S))).collect();
+    // The default k_t's rows: where spin peaks against μ.
+    let default_k = kick_3d::Kick3d::DEFAULT_TANGENTIAL_STIFFNESS;
+    let peaks: Vec<String> = rows
+        .iter()
+        .filter(|r| r.tangential_stiffness == default_k)
+        .map(|r| {
+            let best = r.points.iter().copied().fold((0.0, f64::NEG_INFINITY, 0.0), |m, p| if p.1 > m.1 { p } else { m });
+            let last = r.points[r.points.len() - 1];
+            format!(
+                "the {} peaks at μ = {} ({}) and leaves at {} when it never slips",
+                r.law,
+                value_label(best.0),
+                spin(best.1 / RPM_PER_RAD_PER_S),
+                spin(last.1 / RPM_PER_RAD_PER_S)
+            )
+        })
+        .collect();
+    let rising: Vec<String> = rows
+        .iter()
+        .filter(|r| r.points.windows(2).all(|p| p[1].1 >= p[0].1))
+        .map(|r| {
+            format!(
+                "the {} at k_t = {} N/m (T_t/t_c = {})",
+                r.law,
+                kick_core::short(r.tangential_stiffness),
+                sig(r.period / r.contact_time, 2)
+            )
+        })
+        .collect();
+    let _ = writeln!(
+        w,
+        "\nRigid grip (k_t = ∞, μ = ∞: the sliding stopped at first touch by an impulse) gives {}.\n\n\
+         Asai et al. (2002) found, in finite-element kicks, spin rising with friction (0 → 1 adding at most about 13 \
+         rad/s). In this model the spin rises with μ for as long as the contact slips from first touch to release: \
+         the friction is μ F_n throughout and the spin is R μ J_n / I_b, in proportion to μ. Beyond that, slipping \
+         brings the contact points to rest and the contact grips; the shell's tangential spring then carries the \
+         force, and the ball vibrates tangentially on it with the period T_t, so the friction force reverses during \
+         the contact (Cross 2002 measured this on bouncing balls). What the ball keeps depends on where in that \
+         vibration it leaves: a contact that grips from first touch to release (a foot that cannot turn, μ = ∞) \
+         leaves with the gripping limit times 1 − cos(2π t_c / T_t) (`kick check` holds this closed form), twice the \
+         limit at T_t = 2 t_c and nothing at T_t = t_c. More friction means earlier and longer grip, so once the \
+         contact grips the spin follows T_t / t_c: at the default k_t {}; the spin rises with μ all the way to μ = ∞ \
+         for {}. Nothing viscous acts: no force proportional to a sliding speed caps the friction below μ F_n while \
+         the contact slides, so where the spin falls with μ it is because the elastic grip hands tangential momentum \
+         back. Whether spin rises or falls with μ above about 0.3 is therefore a property of the assumed tangential \
+         stiffness and of the gripping spring being elastic, not a prediction: a soccer ball's tangential vibration \
+         frequency, or the spin of an oblique impact on a plate (measurements.md lists a finite-element and \
+         experimental study at 13.9 m/s and 15°), would fix k_t; no such number was reached.\n",
+        rigid_text.join(" and "),
+        peaks.join(", and "),
+        if rising.is_empty() { "none of the stiffnesses shown".to_string() } else { rising.join(" and ") },
     );
     Ok(w)
 }

@@ -1,7 +1,8 @@
 //! The numbers kick-paper's 3D page states, computed here so the page only
 //! writes them: the accurate path's error over the off-center box, its gap
 //! to the 1D solver on a central kick, the scene path's error and order, the
-//! force-history kick and the 1D baseline it is compared with.
+//! force-history kick and the 1D baseline it is compared with, and the spin
+//! against friction beside Asai et al. (2002) with what sets its trend.
 
 use kick_3d::{Accurate3d, Kick3d, KickSpec, Outcome3d, Solver3d};
 use kick_core::parameters::{SetParameter, Value};
@@ -20,9 +21,9 @@ pub fn history_kick() -> Result<Kick3d, StudyError> {
 /// Largest relative error of the accurate path against the tightened
 /// full-state reference over the first `kicks` kicks of the box, per
 /// observable (kick_3d::precision::Errors3d order).
-pub fn box_errors(kicks: u64) -> Result<[f64; 8], StudyError> {
+pub fn box_errors(kicks: u64) -> Result<[f64; 9], StudyError> {
     let sample = kick_3d::models::OffCenterBox::new(kick_3d::models::BENCH_SEED);
-    let mut worst = [0.0f64; 8];
+    let mut worst = [0.0f64; 9];
     for i in 0..kicks {
         let kick = sample.kick(i)?;
         let solved = Accurate3d::default().solve(&kick)?;
@@ -89,4 +90,70 @@ pub fn baseline_1d(kick: &Kick3d) -> Result<Outcome, StudyError> {
 /// The force-history kick solved on the default (auto) path.
 pub fn history_outcome() -> Result<Outcome3d, StudyError> {
     Ok(Solver3d::Auto.solve(&history_kick()?)?)
+}
+
+/// The frictions of [`friction_spin`] (∞: the contact never slips).
+pub const SPIN_FRICTIONS: [f64; 7] = [0.1, 0.2, 0.3, 0.5, 1.0, 2.0, f64::INFINITY];
+/// The tangential stiffnesses of [`friction_spin`], N/m: a quarter of the
+/// default, the default, four times it.
+pub const SPIN_STIFFNESSES: [f64; 3] = [2.5e4, 1.0e5, 4.0e5];
+/// The offset of [`friction_spin`]'s kicks, m.
+pub const SPIN_OFFSET: f64 = 0.05;
+
+/// Spin against friction at one tangential stiffness, for one ball.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionSpin {
+    /// The normal law's name.
+    pub law: &'static str,
+    /// k_t, N/m.
+    pub tangential_stiffness: f64,
+    /// The gripping contact's tangential vibration period 2π √(m_t / k_t), s
+    /// (m_t the contact point's tangential mass, the foot's turn included).
+    pub period: f64,
+    /// Contact time at the largest μ, s.
+    pub contact_time: f64,
+    /// (μ, spin rpm, slip time / contact time) at each of [`SPIN_FRICTIONS`].
+    pub points: Vec<(f64, f64, f64)>,
+}
+
+/// Table 1's kick at [`SPIN_OFFSET`] against μ ([`SPIN_FRICTIONS`]) for the
+/// paper's ball and the shell ball, at each of [`SPIN_STIFFNESSES`]; and rigid
+/// grip's spin (μ = ∞, k_t = ∞) per ball, rpm.
+pub fn friction_spin() -> Result<(Vec<FrictionSpin>, Vec<(&'static str, f64)>), StudyError> {
+    let shell = kick_core::Scenario::baseline().with_law(kick_core::LawKind::Shell, None)?;
+    let mut rows = Vec::new();
+    let mut rigid = Vec::new();
+    for (law, base) in [("paper's law (Eq. 20)", kick_core::Scenario::baseline()), ("shell ball", shell)] {
+        let at = |friction: f64, k_t: f64| -> Result<(Kick3d, Outcome3d), StudyError> {
+            let spec = kick_3d::Kick3dSpec {
+                offset: Some(SPIN_OFFSET),
+                friction: Some(friction),
+                tangential_stiffness: Some(k_t),
+                ..kick_3d::Kick3dSpec::default()
+            };
+            let kick = Kick3d::new(base, &spec)?;
+            let o = Accurate3d::default().solve(&kick)?;
+            Ok((kick, o))
+        };
+        for k_t in SPIN_STIFFNESSES {
+            let mut points = Vec::new();
+            let mut last = None;
+            for mu in SPIN_FRICTIONS {
+                let (kick, o) = at(mu, k_t)?;
+                points.push((mu, o.spin_rpm, o.slip_time / o.contact_time));
+                last = Some((kick, o));
+            }
+            let Some((kick, o)) = last else { continue };
+            let m_t = kick_3d::checks::tangential_mass(&kick, kick.foot_inertia[2]);
+            rows.push(FrictionSpin {
+                law,
+                tangential_stiffness: k_t,
+                period: std::f64::consts::TAU * (m_t / k_t).sqrt(),
+                contact_time: o.contact_time,
+                points,
+            });
+        }
+        rigid.push((law, at(f64::INFINITY, f64::INFINITY)?.1.spin_rpm));
+    }
+    Ok((rows, rigid))
 }

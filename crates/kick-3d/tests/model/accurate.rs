@@ -157,11 +157,17 @@ fn momentum_and_angular_momentum_of_the_pair_are_conserved() {
     }
 }
 
+/// A finite μ grips as μ = ∞ does once the cap is out of the spring's reach,
+/// except near separation, where μ F_n → 0 and the spring's load must slip
+/// off: that last slip shortens as μ grows, so the spin tends to μ = ∞'s.
+/// From μ = 1 on the distance falls at every step and by over tenfold to
+/// μ = 1000 (below μ ≈ 1 it is not monotone: slips during compression
+/// change the phase at which the elastic grip rings).
 #[test]
 fn grip_approaches_the_closed_form_as_friction_grows() {
     let spec = Kick3dSpec { offset: Some(0.05), foot_inertia: Some([1e12; 3]), ..Kick3dSpec::default() };
     let limit = solve(&kick(Kick3dSpec { friction: Some(f64::INFINITY), ..spec })).spin[2];
-    let errors: Vec<f64> = [0.3, 1.0, 3.0, 10.0, 100.0]
+    let errors: Vec<f64> = [1.0, 3.0, 10.0, 100.0, 1000.0]
         .iter()
         .map(|&mu| rel(solve(&kick(Kick3dSpec { friction: Some(mu), ..spec })).spin[2], limit))
         .collect();
@@ -202,7 +208,10 @@ fn bad_input_is_a_typed_error() {
         e(Kick3dSpec { ball_radius: Some(-1.0), ..Default::default() }),
         Kick3dError::InvalidParameter { name: "ball_radius", .. }
     ));
-    assert!(matches!(e(Kick3dSpec { tangential_damping: Some(0.0), ..Default::default() }), Kick3dError::InvalidParameter { .. }));
+    assert!(matches!(
+        e(Kick3dSpec { tangential_stiffness: Some(0.0), ..Default::default() }),
+        Kick3dError::InvalidParameter { name: "tangential_stiffness", .. }
+    ));
     assert!(matches!(
         e(Kick3dSpec { foot_inertia: Some([1.0, 0.0, 1.0]), ..Default::default() }),
         Kick3dError::InvalidParameter { name: "foot_inertia", .. }

@@ -36,7 +36,7 @@ fn cases() -> Vec<(String, Kick3d)> {
 }
 
 /// The columns of a reference state (world frame, as `Sample3d`).
-fn reference_values(d: &Dynamics, t: f64, y: &dynamics::State) -> [f64; 27] {
+fn reference_values(d: &Dynamics, t: f64, y: &dynamics::State) -> [f64; 30] {
     let c = d.contact(y);
     let v = |i: usize| [y[i], y[i + 1], y[i + 2]];
     let n = c.normal * c.normal_force;
@@ -55,6 +55,7 @@ fn reference_values(d: &Dynamics, t: f64, y: &dynamics::State) -> [f64; 27] {
         contact_state: if c.is_slipping() { ContactState::Slip } else { ContactState::Grip },
         normal_moment: [0.0; 3],
         contact_arm: [0.0; 3],
+        slip_velocity: [c.slip_velocity.x, c.slip_velocity.y, c.slip_velocity.z],
     }
     .values()
 }
@@ -68,15 +69,14 @@ fn samples_match_an_independent_fine_rk4_reference() {
         let (outcome, samples) = history(&kick, Spacing::Count(61));
         let grid = &samples[..samples.len() - 1];
         let times: Vec<f64> = grid.iter().map(|s| s.time).collect();
-        let d = Dynamics::new(&kick);
         let reference = fine_rk4::states_at(&kick, &times, outcome.contact_time, REFERENCE_STEPS);
         // Columns in groups of one quantity: (first column, width).
-        let groups = [(1, 3), (4, 3), (7, 3), (10, 3), (13, 3), (16, 3), (19, 1), (20, 3), (23, 3)];
-        let rows: Vec<([f64; 27], [f64; 27])> =
-            grid.iter().zip(&reference).map(|(s, y)| (s.values(), reference_values(&d, s.time, y))).collect();
+        let groups = [(1, 3), (4, 3), (7, 3), (10, 3), (13, 3), (16, 3), (19, 1), (20, 3), (23, 3), (27, 3)];
+        let rows: Vec<([f64; 30], [f64; 30])> =
+            grid.iter().zip(&reference).map(|(s, (y, d))| (s.values(), reference_values(d, s.time, y))).collect();
         let mut slipped = false;
         for (first, width) in groups {
-            let size = |v: &[f64; 27]| v[first..first + width].iter().map(|x| x * x).sum::<f64>().sqrt();
+            let size = |v: &[f64; 30]| v[first..first + width].iter().map(|x| x * x).sum::<f64>().sqrt();
             let scale = rows.iter().map(|(_, r)| size(r)).fold(0.0, f64::max);
             let worst =
                 rows.iter().map(|(a, r)| (first..first + width).map(|i| (a[i] - r[i]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
@@ -84,7 +84,7 @@ fn samples_match_an_independent_fine_rk4_reference() {
             println!("{name}: {column}: {:.2e} of {scale:.3e}", worst / scale);
             assert!(worst <= SAMPLE_TOLERANCE * scale, "{name}: {column} off by {:.3e} of its scale {scale:.3e}", worst / scale);
         }
-        for ((a, r), (s, y)) in rows.iter().zip(grid.iter().zip(&reference)) {
+        for ((a, r), (s, (y, d))) in rows.iter().zip(grid.iter().zip(&reference)) {
             let c = d.contact(y);
             slipped |= a[26] == ContactState::Slip.code();
             if kick.friction.is_finite() && kick.friction > 0.0 && c.grip_margin.abs() > 1e-6 * kick.friction * c.normal_force {

@@ -11,4 +11,5 @@ mod patch;
 mod peaks;
 mod scene;
 mod support;
+mod tangential;
 mod validation;

