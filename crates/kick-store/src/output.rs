@@ -437,7 +437,7 @@ impl Staged {
     /// (HDF5 result files pass [`crate::compare::same_content`], which leaves
     /// out the provenance of the checkout).
     pub fn commit_unless(mut self, same: impl FnOnce(&Path, &Path) -> bool) -> Result<PathBuf, OutputError> {
-        if std::fs::symlink_metadata(&self.target).is_ok_and(|m| m.is_file()) && same(&self.target, &self.temporary) {
+        if self.target_holds(same) {
             return Ok(self.target.clone());
         }
         File::open(&self.temporary).and_then(|f| f.sync_all()).map_err(io(&self.temporary))?;
@@ -453,6 +453,14 @@ impl Staged {
             let _ = File::open(dir).and_then(|d| d.sync_all());
         }
         Ok(self.target.clone())
+    }
+}
+
+impl Staged {
+    /// True when the target is a file that already holds what was written
+    /// (`same` compares the two): a clean rerun leaves it as it was.
+    fn target_holds(&self, same: impl FnOnce(&Path, &Path) -> bool) -> bool {
+        std::fs::symlink_metadata(&self.target).is_ok_and(|m| m.is_file()) && same(&self.target, &self.temporary)
     }
 }
 
@@ -476,7 +484,7 @@ impl Drop for Staged {
 pub fn commit_all(mut files: Vec<Staged>) -> Result<Vec<PathBuf>, OutputError> {
     let targets: Vec<PathBuf> = files.iter().map(|s| s.target.clone()).collect();
     // A target that already holds its new bytes is left as it was (a clean rerun; the dropped temporary goes).
-    files.retain(|s| !(std::fs::symlink_metadata(&s.target).is_ok_and(|m| m.is_file()) && same_bytes(&s.target, &s.temporary)));
+    files.retain(|s| !s.target_holds(same_bytes));
     for s in &files {
         File::open(&s.temporary).and_then(|f| f.sync_all()).map_err(io(&s.target))?;
     }

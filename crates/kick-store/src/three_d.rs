@@ -12,6 +12,7 @@
 //! its unit, and the root attribute `level = "3d"`.
 
 use crate::experiment::{Experiment, Kicks3d, KicksBounce};
+use kick_study::grid::Grid;
 use crate::h5::{new_group, write_column, write_grid, write_str_attr, Column, H5Error};
 use crate::provenance::Provenance;
 use crate::run::{create_table, fill_table, finish_table, progress, Part, RunError, RunSummary};
@@ -29,33 +30,18 @@ pub(crate) fn run_part(
     part: &Part,
     attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>,
 ) -> Result<RunSummary, RunError> {
-    let grid = &kicks.grid;
-    let path = part.path.clone();
-    let out_dir = path.parent().unwrap_or(Path::new("."));
-    let rows = part.rows.end - part.rows.start;
-    crate::limits::check(experiment, &part.rows, out_dir)?;
-    let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
-    let mut writer = create_table(experiment, &path, &provenance, rows, experiment.compress)?;
-    let file = writer.file().clone();
-    write_str_attr(&file, &path, "description", &experiment.description)?;
-    write_str_attr(&file, &path, "level", "3d")?;
-    let axes = experiment.parameter_columns();
-    let coordinates: Vec<(Column, &[f64])> = axes.into_iter().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
-    write_grid(&file, &path, &coordinates)?;
     // Every parameter not swept, as the first cell was built with it.
-    let fixed = new_group(&file, "fixed").map_err(|e| H5Error::hdf5(&path, &e))?;
-    let first = kicks.kick(0).map_err(|e| H5Error::Layout { path: path.clone(), message: e.to_string() })?;
-    for (def, value) in first.parameter_values() {
-        if grid.axes.iter().any(|a| a.parameter.name == def.name) {
-            continue;
+    let fixed = |group: &hdf5::Group, path: &Path| -> Result<(), RunError> {
+        let first = kicks.kick(0).map_err(|e| H5Error::Layout { path: path.to_path_buf(), message: e.to_string() })?;
+        for (def, value) in first.parameter_values() {
+            if kicks.grid.axes.iter().any(|a| a.parameter.name == def.name) {
+                continue;
+            }
+            write_column(group, path, &Column::new(def.name, def.unit), &value.numbers())?;
         }
-        write_column(&fixed, &path, &Column::new(def.name, def.unit), &value.numbers())?;
-    }
-    attributes(&file)?;
-    drop(file);
-    let bar = progress(rows, false);
-    fill_table(experiment, part.rows.clone(), &mut writer, &bar)?;
-    finish_table(experiment, writer, &bar)
+        Ok(())
+    };
+    grid_part(experiment, &kicks.grid, part, "3d", &fixed, attributes)
 }
 
 /// The bounce part of [`crate::run::run_part`]: the grid layout of
@@ -69,7 +55,26 @@ pub(crate) fn run_bounce_part(
     part: &Part,
     attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>,
 ) -> Result<RunSummary, RunError> {
-    let grid = &kicks.grid;
+    let fixed = |group: &hdf5::Group, path: &Path| -> Result<(), RunError> {
+        for (def, value) in kicks.fixed() {
+            write_column(group, path, &Column::new(def.name, def.unit), &value)?;
+        }
+        Ok(())
+    };
+    grid_part(experiment, &kicks.grid, part, "bounce", &fixed, attributes)
+}
+
+/// The layout both grid parts share: the table, its description and
+/// `level`, the grid's coordinates, `/fixed` (written by `fixed`), the
+/// caller's attributes, then the rows.
+fn grid_part(
+    experiment: &Experiment,
+    grid: &Grid,
+    part: &Part,
+    level: &str,
+    fixed: &dyn Fn(&hdf5::Group, &Path) -> Result<(), RunError>,
+    attributes: &dyn Fn(&hdf5::File) -> Result<(), H5Error>,
+) -> Result<RunSummary, RunError> {
     let path = part.path.clone();
     let out_dir = path.parent().unwrap_or(Path::new("."));
     let rows = part.rows.end - part.rows.start;
@@ -78,14 +83,12 @@ pub(crate) fn run_bounce_part(
     let mut writer = create_table(experiment, &path, &provenance, rows, experiment.compress)?;
     let file = writer.file().clone();
     write_str_attr(&file, &path, "description", &experiment.description)?;
-    write_str_attr(&file, &path, "level", "bounce")?;
+    write_str_attr(&file, &path, "level", level)?;
     let axes = experiment.parameter_columns();
     let coordinates: Vec<(Column, &[f64])> = axes.into_iter().zip(grid.axes.iter().map(|a| a.values.as_slice())).collect();
     write_grid(&file, &path, &coordinates)?;
-    let fixed = new_group(&file, "fixed").map_err(|e| H5Error::Hdf5 { path: path.clone(), message: e.to_string() })?;
-    for (def, value) in kicks.fixed() {
-        write_column(&fixed, &path, &Column::new(def.name, def.unit), &value)?;
-    }
+    let group = new_group(&file, "fixed").map_err(|e| H5Error::hdf5(&path, &e))?;
+    fixed(&group, &path)?;
     attributes(&file)?;
     drop(file);
     let bar = progress(rows, false);
