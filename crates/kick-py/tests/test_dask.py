@@ -74,9 +74,10 @@ def test_values_are_checked_as_the_local_call_checks_them(client):
     assert_same(kick.dask.simulate3d_many(client, chunks=1, offset=0.03, gravity=np.array([False, True])), local)
 
 
-def test_progress_is_checked_on_the_client_and_drawn_by_no_worker(client):
+def test_progress_is_checked_on_the_client_and_drawn_by_no_worker(client, capsys):
     local = kick.simulate_many(foot_mass=[1.0, 2.0, 3.0])
     assert_same(kick.dask.simulate_many(client, chunks=2, foot_mass=[1.0, 2.0, 3.0], progress=True), local)
+    assert "rows" not in capsys.readouterr().err  # the client's check of the options draws none either
     _, options, _ = kick.dask._split("simulate_many", {"foot_mass": [1.0], "progress": True, "law": "hertz"})
     assert options == {"law": "hertz", "threads": 1}  # what every task is given
     with pytest.raises(TypeError, match="`progress` takes true or false, got int 1"):

@@ -87,6 +87,12 @@ def test_numpy_bools_and_none_are_taken(capfd):
     assert_same(a, b)
 
 
+def test_no_rows_no_bar(capfd):
+    out = kick.simulate_many(foot_mass=np.empty(0), progress=True)
+    assert out["status"].shape == (0,)
+    assert capfd.readouterr().err == ""
+
+
 def test_progress_is_not_an_attribute_of_the_result():
     pytest.importorskip("xarray")
     ds = kick.to_xarray(kick.simulate_many(foot_mass=[1.0, 2.0], progress=True))
