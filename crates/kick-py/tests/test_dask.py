@@ -7,6 +7,7 @@ distributed = pytest.importorskip("distributed")
 
 import kick  # noqa: E402
 import kick.dask  # noqa: E402
+from conftest import assert_same  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -15,15 +16,6 @@ def client():
         with distributed.Client(cluster) as c:
             yield c
 
-
-def assert_same(a: dict, b: dict):
-    assert sorted(a) == sorted(b)
-    for key in a:
-        if key == "failure_message":
-            assert a[key] == b[key]
-        else:
-            assert a[key].dtype == b[key].dtype and a[key].shape == b[key].shape, key
-            np.testing.assert_array_equal(a[key], b[key], err_msg=key)  # NaN where NaN
 
 
 def test_1d_chunks_equal_the_local_call(client):

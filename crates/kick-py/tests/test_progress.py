@@ -1,17 +1,16 @@
 """``progress=True`` on every ``*_many`` function: a bar on stderr counting
 the rows done, the same rows as without it, nothing printed without it, and
-Ctrl-C still heard at once."""
+Ctrl-C still heard at once (tests/test_interrupt.py, "simulate3d_many with a bar")."""
 
 import re
-import signal
 import subprocess
 import sys
-import time
 
 import numpy as np
 import pytest
 
 import kick
+from conftest import assert_same
 
 # Each function on a grid of rows more than one chunk (1024 rows) long, with
 # a row that fails among them (its NaN and message must survive the bar).
@@ -25,15 +24,6 @@ CALLS = {
 }
 ROWS = {"simulate_many": 3000, "simulate3d_many": 1200, "flight_many": 1500, "bounce_many": 1100}
 
-
-def assert_same(a, b):
-    assert sorted(a) == sorted(b)
-    for key in a:
-        if key == "failure_message":
-            assert a[key] == b[key]
-        else:
-            assert a[key].dtype == b[key].dtype and a[key].shape == b[key].shape, key
-            np.testing.assert_array_equal(a[key], b[key], err_msg=key)  # NaN where NaN
 
 
 @pytest.mark.parametrize("function", sorted(CALLS))
@@ -97,32 +87,3 @@ def test_progress_is_not_an_attribute_of_the_result():
     pytest.importorskip("xarray")
     ds = kick.to_xarray(kick.simulate_many(foot_mass=[1.0, 2.0], progress=True))
     assert "progress" not in ds.attrs
-
-
-@pytest.mark.skipif(sys.platform == "win32", reason="SIGINT to a child process")
-def test_ctrl_c_stops_a_call_with_a_bar():
-    """As tests/test_interrupt.py, with the bar drawn: the KeyboardInterrupt
-    within moments, the bar left at the rows done, below the total."""
-    script = (
-        "import numpy as np, kick\nx = np.linspace(0.0, 0.05, 2_000_000)\nprint('solving', flush=True)\n"
-        "kick.simulate3d_many(offset=x, threads=1, progress=True)\nprint('returned', flush=True)\n"
-    )
-    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        assert child.stdout.readline() == "solving\n"
-        time.sleep(1.5)
-        child.send_signal(signal.SIGINT)
-        sent = time.monotonic()
-        out, err = child.communicate(timeout=10)
-    except subprocess.TimeoutExpired:
-        child.kill()
-        child.communicate()
-        pytest.fail("a call with progress=True ignored Ctrl-C for 10 s")
-    waited = time.monotonic() - sent
-    assert "returned" not in out
-    assert err.rstrip().endswith("KeyboardInterrupt"), err[-2000:]
-    assert waited < 5.0
-    counts = [int(n) for n in re.findall(r"(\d+)/2000000 rows", err)]
-    assert counts and 0 < counts[-1] < 2_000_000, err[-2000:]
-    # The traceback starts on a line of its own.
-    assert "\nTraceback" in err
