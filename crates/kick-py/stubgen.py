@@ -22,6 +22,7 @@ OPTIONS = {
     "law": "str",
     "dt": "float | None",
     "threads": "int | np.integer | None",
+    "progress": "bool",
     "samples": "int | np.integer | None",
     "interval": "float | None",
     "time": "ArrayLike",

@@ -3,7 +3,7 @@
 //! (`kick_bounce::BOUNCE_PARAMETERS`, named as the CLI's flags), one call to
 //! `kick_bounce::run`; `bounce_many` the same per row of arrays.
 
-use crate::many::{run_many, Model, Solved};
+use crate::many::{run_many, Model, Run, Solved};
 use crate::{guard, library_error, value_error};
 use kick_bounce::{BounceOutcome, BounceSpec, LawChoice, Tangential};
 use kick_core::parameters::{ParameterDef, Value};
@@ -105,11 +105,12 @@ impl Model for ModelBounce {
 /// Many bounces: `bounce`'s keywords, each a scalar or an array (`spin`
 /// with a trailing axis of 3), broadcast by numpy's rules.
 #[pyfunction]
-#[pyo3(signature = (*, law = "shell", threads = None, **arrays))]
+#[pyo3(signature = (*, law = "shell", threads = None, progress = None, **arrays))]
 pub fn bounce_many<'py>(
     py: Python<'py>,
     law: &str,
     threads: Option<&Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
@@ -118,6 +119,6 @@ pub fn bounce_many<'py>(
         let model = ModelBounce {
             columns: BOUNCE_COLUMNS.iter().map(|(n, w, _)| (n.to_string(), if *w == 1 { vec![] } else { vec![*w] })).collect(),
         };
-        run_many(py, &model, base, crate::params::threads(threads)?, arrays)
+        run_many(py, &model, base, Run::new("bounce_many", threads, progress)?, arrays)
     })
 }

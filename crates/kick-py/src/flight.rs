@@ -1,7 +1,7 @@
 //! `flight`: the ball's flight after the kick (crate kick-flight), keywords
 //! from its declared list (`kick_flight::spec::FLIGHT_PARAMETERS`).
 
-use crate::many::{run_many, Model, Solved};
+use crate::many::{run_many, Model, Run, Solved};
 use crate::{guard, library_error, value_error};
 use kick_core::parameters::{self, ParameterDef, Value};
 use kick_core::Status;
@@ -89,17 +89,18 @@ pub fn flight<'py>(
 /// status code (`FlightError::status`), NaN outcomes and a message when it
 /// failed.
 #[pyfunction]
-#[pyo3(signature = (*, threads = None, **arrays))]
+#[pyo3(signature = (*, threads = None, progress = None, **arrays))]
 pub fn flight_many<'py>(
     py: Python<'py>,
     threads: Option<&Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let model = ModelFlight {
             columns: FLIGHT_COLUMNS.iter().map(|(n, w, _)| (n.to_string(), if *w == 1 { vec![] } else { vec![*w] })).collect(),
         };
-        run_many(py, &model, FlightSpec::default(), crate::params::threads(threads)?, arrays)
+        run_many(py, &model, FlightSpec::default(), Run::new("flight_many", threads, progress)?, arrays)
     })
 }
 

@@ -16,6 +16,7 @@ mod fit;
 mod flight;
 mod many;
 mod params;
+mod progress;
 
 use kick_compliant::SolverChoice;
 use kick_core::{LawKind, RecordingSolver, Spacing, Status, HISTORY_COLUMNS, MAX_HISTORY_SAMPLES};
@@ -115,6 +116,13 @@ const SIGNAL_CHECK: Duration = Duration::from_millis(50);
 /// (`KeyboardInterrupt` on Ctrl-C), `cancel` is set, `work` returns at its
 /// next look at it, and the exception is the answer.
 pub(crate) fn interruptible<T: Send>(py: Python<'_>, work: impl FnOnce(&AtomicBool) -> T + Send) -> PyResult<T> {
+    watched(py, work, || {})
+}
+
+/// [`interruptible`], calling `watch` after each check for signals (the
+/// `*_many` functions' progress bar draws from there: on the calling
+/// thread, never from the workers).
+pub(crate) fn watched<T: Send>(py: Python<'_>, work: impl FnOnce(&AtomicBool) -> T + Send, mut watch: impl FnMut() + Send) -> PyResult<T> {
     let cancel = AtomicBool::new(false);
     let (answer, raised) = py.detach(|| {
         std::thread::scope(|scope| {
@@ -134,6 +142,7 @@ pub(crate) fn interruptible<T: Send>(py: Python<'_>, work: impl FnOnce(&AtomicBo
                         raised = Some(e);
                     }
                 }
+                watch();
             }
             (worker.join(), raised)
         })

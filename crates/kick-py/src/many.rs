@@ -21,10 +21,12 @@ use pyo3::exceptions::{PyMemoryError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use rayon::prelude::*;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
 /// Rows one parallel task solves in turn (as `kick run` chunks its rows).
 const CHUNK: usize = 1024;
+/// Rows a task solves between additions to the rows-done count (`progress`).
+const COUNT_BATCH: usize = 64;
 
 /// A model the rows are solved with: its keywords, its output columns and one solve.
 pub(crate) trait Model: Sync {
@@ -349,6 +351,7 @@ struct Chunk<'a> {
 
 /// Solve rows `chunk.start..` into the chunk's outputs; the failures (row,
 /// message). Returns early, rows unsolved, once `cancel` is set (Ctrl-C).
+/// Each row solved adds one to `done`, the progress bar's count.
 fn solve_chunk<M: Model>(
     model: &M,
     base: &M::Spec,
@@ -356,6 +359,7 @@ fn solve_chunk<M: Model>(
     shape: &[usize],
     chunk: Chunk,
     cancel: &AtomicBool,
+    done: &AtomicU64,
 ) -> Vec<(usize, String)> {
     let Chunk { start, rows, mut columns, status, evaluations } = chunk;
     let widths: Vec<usize> = model.columns().iter().map(|(_, axes)| width(axes)).collect();
@@ -363,6 +367,7 @@ fn solve_chunk<M: Model>(
     let mut index = vec![0usize; shape.len()];
     let mut scratch = Vec::with_capacity(shape.len() + 1);
     let mut failures = Vec::new();
+    let mut solved = 0usize;
     for j in 0..rows {
         if cancel.load(Ordering::Relaxed) {
             break;
@@ -399,7 +404,13 @@ fn solve_chunk<M: Model>(
                 failures.push((start + j, message));
             }
         }
+        // Counted in batches: one shared counter bumped per row would cost the cheap 1D rows.
+        solved += 1;
+        if solved % COUNT_BATCH == 0 {
+            done.fetch_add(COUNT_BATCH as u64, Ordering::Relaxed);
+        }
     }
+    done.fetch_add((solved % COUNT_BATCH) as u64, Ordering::Relaxed);
     failures
 }
 
@@ -452,15 +463,32 @@ pub fn many_input<'py>(function: &str, name: &str, value: &Bound<'py, PyAny>) ->
     input_array(parameter, value)
 }
 
+/// How a `*_many` call runs: its worker threads, and the label of its
+/// progress bar (`progress=True`: the function's name; None, no bar).
+pub(crate) struct Run {
+    pub threads: Option<usize>,
+    pub progress: Option<&'static str>,
+}
+
+impl Run {
+    /// The `threads` and `progress` keywords of `function`, each checked.
+    pub fn new(function: &'static str, threads: Option<&Bound<'_, PyAny>>, progress: Option<&Bound<'_, PyAny>>) -> PyResult<Run> {
+        let threads = crate::params::threads(threads)?;
+        let progress = crate::params::switch("progress", progress)?.then_some(function);
+        Ok(Run { threads, progress })
+    }
+}
+
 /// The whole call: inputs from the keywords, outputs allocated, rows solved
 /// without the GIL, the dict of arrays.
 pub(crate) fn run_many<'py, M: Model>(
     py: Python<'py>,
     model: &M,
     base: M::Spec,
-    threads: Option<usize>,
+    run: Run,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let Run { threads, progress } = run;
     let numpy = py.import("numpy")?;
     let mut given: Vec<(&'static ParameterDef, Bound<'py, PyArrayDyn<f64>>)> = Vec::new();
     if let Some(arrays) = arrays {
@@ -563,14 +591,29 @@ pub(crate) fn run_many<'py, M: Model>(
     let shape_ref = &shape;
     let inputs_ref = &inputs;
     let base_ref = &base;
+    let done = AtomicU64::new(0);
+    let done_ref = &done;
     let solve = |cancel: &AtomicBool| {
         in_pool(threads, || {
-            chunks.into_par_iter().flat_map_iter(|chunk| solve_chunk(model, base_ref, inputs_ref, shape_ref, chunk, cancel)).collect()
+            chunks
+                .into_par_iter()
+                .flat_map_iter(|chunk| solve_chunk(model, base_ref, inputs_ref, shape_ref, chunk, cancel, done_ref))
+                .collect()
         })
     };
     // One chunk is over in moments: no watching thread (it doubled a one-row call's 24 us).
-    let failures: Vec<(usize, String)> =
-        if rows <= CHUNK { py.detach(|| solve(&AtomicBool::new(false)))? } else { crate::interruptible(py, solve)?? };
+    // No rows, no bar (kick.dask checks its options on a call of none).
+    let progress = progress.filter(|_| rows > 0);
+    let failures: Vec<(usize, String)> = match progress {
+        None if rows <= CHUNK => py.detach(|| solve(&AtomicBool::new(false)))?,
+        None => crate::interruptible(py, solve)??,
+        Some(label) => {
+            let bar = crate::progress::bar(py, rows as u64, label);
+            let answer = crate::watched(py, solve, || bar.set_position(done.load(Ordering::Relaxed)));
+            crate::progress::end(py, &bar, done.load(Ordering::Relaxed));
+            answer??
+        }
+    };
     drop(output_guards);
     drop(status_guard);
     drop(evaluations_guard);
@@ -605,13 +648,14 @@ fn check_law_keywords(law: kick_core::LawKind, arrays: Option<&Bound<'_, PyDict>
 
 /// Many 1D contacts: `simulate`'s keywords, each a scalar or an array.
 #[pyfunction]
-#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, threads = None, **arrays))]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, threads = None, progress = None, **arrays))]
 pub fn simulate_many<'py>(
     py: Python<'py>,
     solver: &str,
     law: &str,
     dt: Option<&Bound<'py, PyAny>>,
     threads: Option<&Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
@@ -620,7 +664,7 @@ pub fn simulate_many<'py>(
         let law = crate::law(law)?;
         check_law_keywords(law, arrays)?;
         let base: ScenarioSpec = crate::params::spec(None, law)?;
-        run_many(py, &model, base, crate::params::threads(threads)?, arrays)
+        run_many(py, &model, base, Run::new("simulate_many", threads, progress)?, arrays)
     })
 }
 
@@ -629,7 +673,7 @@ pub fn simulate_many<'py>(
 /// the ground after its kick, the flight's keywords broadcast too and
 /// `distance` one plane or a list of them (a trailing axis of the planes).
 #[pyfunction]
-#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, threads = None, flight = false, distance = None, **arrays))]
+#[pyo3(signature = (*, solver = "auto", law = "power-law", dt = None, threads = None, progress = None, flight = false, distance = None, **arrays))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate3d_many<'py>(
     py: Python<'py>,
@@ -637,6 +681,7 @@ pub fn simulate3d_many<'py>(
     law: &str,
     dt: Option<&Bound<'py, PyAny>>,
     threads: Option<&Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
     flight: bool,
     distance: Option<&Bound<'py, PyAny>>,
     arrays: Option<&Bound<'py, PyDict>>,
@@ -651,6 +696,6 @@ pub fn simulate3d_many<'py>(
         let law = crate::law(law)?;
         check_law_keywords(law, arrays)?;
         let base: KickSpec = crate::params::spec(None, law)?;
-        run_many(py, &model, (base, base_flight), crate::params::threads(threads)?, arrays)
+        run_many(py, &model, (base, base_flight), Run::new("simulate3d_many", threads, progress)?, arrays)
     })
 }

@@ -147,6 +147,18 @@ pub fn threads(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
     optional_whole_number("threads", value, 1..=max_threads(), &limit)
 }
 
+/// A true-or-false keyword (`progress`): a bool or numpy bool, None for
+/// false; anything else (a 1, a string) a `TypeError` naming the keyword.
+pub fn switch(name: &str, value: Option<&Bound<'_, PyAny>>) -> PyResult<bool> {
+    let Some(value) = value.filter(|v| !v.is_none()) else { return Ok(false) };
+    let refused = || PyTypeError::new_err(format!("`{name}` takes true or false, got {}", described(value)));
+    let (array, switches) = real_array(name, "true or false", value).map_err(|_| refused())?;
+    if !switches || array.ndim() != 0 {
+        return Err(refused());
+    }
+    Ok(array.readonly().as_array().iter().any(|&x| x != 0.0))
+}
+
 /// The `samples` keyword of a history: None or 2 to [`kick_core::MAX_HISTORY_SAMPLES`].
 pub fn samples(value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
     optional_whole_number("samples", value, 2..=kick_core::MAX_HISTORY_SAMPLES, "")

@@ -60,3 +60,16 @@ def same(python, cli_value, path="") -> None:
             same(a, b, f"{path}[{i}]")
     else:
         assert python == cli_value and type(python) is type(cli_value), (path, python, cli_value)
+
+
+def assert_same(a: dict, b: dict) -> None:
+    """Two `*_many` results equal key for key: arrays bit for bit (NaN where NaN), same dtype and shape."""
+    import numpy as np
+
+    assert sorted(a) == sorted(b)
+    for key in a:
+        if key == "failure_message":
+            assert a[key] == b[key]
+        else:
+            assert a[key].dtype == b[key].dtype and a[key].shape == b[key].shape, key
+            np.testing.assert_array_equal(a[key], b[key], err_msg=key)  # NaN where NaN

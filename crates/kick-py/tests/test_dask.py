@@ -7,6 +7,7 @@ distributed = pytest.importorskip("distributed")
 
 import kick  # noqa: E402
 import kick.dask  # noqa: E402
+from conftest import assert_same  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -15,15 +16,6 @@ def client():
         with distributed.Client(cluster) as c:
             yield c
 
-
-def assert_same(a: dict, b: dict):
-    assert sorted(a) == sorted(b)
-    for key in a:
-        if key == "failure_message":
-            assert a[key] == b[key]
-        else:
-            assert a[key].dtype == b[key].dtype and a[key].shape == b[key].shape, key
-            np.testing.assert_array_equal(a[key], b[key], err_msg=key)  # NaN where NaN
 
 
 def test_1d_chunks_equal_the_local_call(client):
@@ -72,6 +64,16 @@ def test_values_are_checked_as_the_local_call_checks_them(client):
     # Switches travel as bools.
     local = kick.simulate3d_many(offset=0.03, gravity=np.array([False, True]))
     assert_same(kick.dask.simulate3d_many(client, chunks=1, offset=0.03, gravity=np.array([False, True])), local)
+
+
+def test_progress_is_checked_on_the_client_and_drawn_by_no_worker(client, capsys):
+    local = kick.simulate_many(foot_mass=[1.0, 2.0, 3.0])
+    assert_same(kick.dask.simulate_many(client, chunks=2, foot_mass=[1.0, 2.0, 3.0], progress=True), local)
+    assert "rows" not in capsys.readouterr().err  # the client's check of the options draws none either
+    _, options, _ = kick.dask._split("simulate_many", {"foot_mass": [1.0], "progress": True, "law": "hertz"})
+    assert options == {"law": "hertz", "threads": 1}  # what every task is given
+    with pytest.raises(TypeError, match="`progress` takes true or false, got int 1"):
+        kick.dask.simulate_many(client, foot_mass=[1.0], progress=1)
 
 
 def test_flights_equal_the_local_call(client):

@@ -1,6 +1,7 @@
 """Ctrl-C during a long call stops it within moments: the calls solve
 without the GIL and check for signals while they run."""
 
+import re
 import signal
 import subprocess
 import sys
@@ -21,6 +22,8 @@ CALLS = {
     ),
     # Issue 33, fault 8: these two ignored Ctrl-C until they finished (46.5 s, 11.8 s).
     "flight_many": ("np.linspace(20.0, 30.0, 5_000_000)", "kick.flight_many(speed=x, launch_angle=20.0, threads=1)"),
+    # Issue 32: the progress bar draws from the loop that listens for Ctrl-C.
+    "simulate3d_many with a bar": ("np.linspace(0.0, 0.05, 2_000_000)", "kick.simulate3d_many(offset=x, threads=1, progress=True)"),
     "aim": ("(25.0, -2.0, 1.8)", "[kick.aim(x, from_='kick', wall=(9.15, 1.9, 1.0), law=law) for _ in range(20) for law in ('power-law', 'shell')]"),
 }
 # Seconds between the start of a call and Ctrl-C (the fit is the shortest call).
@@ -48,3 +51,8 @@ def test_ctrl_c_interrupts_a_long_call(call):
     assert err.rstrip().endswith("KeyboardInterrupt"), err[-2000:]
     print(f"\n{call}: interrupted {waited:.2f} s after SIGINT")
     assert waited < 5.0
+    if "progress=True" in solve:
+        # The bar left at the rows done, below the total; the traceback on a line of its own.
+        counts = [int(n) for n in re.findall(r"(\d+)/2000000 rows", err)]
+        assert counts and 0 < counts[-1] < 2_000_000, err[-2000:]
+        assert "\nTraceback" in err

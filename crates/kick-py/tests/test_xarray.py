@@ -74,6 +74,23 @@ def test_flight_axes_and_units():
     np.testing.assert_array_equal(ds["flight_time"].values, out["flight_time"])
 
 
+def test_flown_kicks_label_their_planes():
+    """Two crossing planes are a `distance` axis, not `xy` (an axis of 2 is not a point)."""
+    offset = np.array([0.0, 0.03, 0.06])
+    out = kick.simulate3d_many(offset=offset, contact_depth=0.03, flight=True, distance=[9.15, 25.0])
+    ds = kick.to_xarray(out)
+    assert ds["crossing_height"].dims == ("offset", "distance")
+    assert ds["crossing_velocity"].dims == ("offset", "distance", "xyz")
+    assert ds["landing_point"].dims == ("offset", "xy")
+    np.testing.assert_array_equal(ds["distance"].values, [9.15, 25.0])
+    assert ds["distance"].attrs["units"] == "m" and "distance" not in ds.attrs
+    assert ds["crossing_height"].attrs["units"] == "m" and ds["flight_time"].attrs["units"] == "s"
+    np.testing.assert_array_equal(ds["crossing_lateral_offset"].sel(distance=25.0).values, out["crossing_lateral_offset"][:, 1])
+    # One plane: no plane axis.
+    one = kick.to_xarray(kick.simulate3d_many(offset=offset, contact_depth=0.03, flight=True, distance=25.0))
+    assert one["crossing_height"].dims == ("offset",) and one.attrs["distance"] == 25.0
+
+
 def test_two_inputs_along_one_axis_and_a_plain_dict():
     mass = np.array([2.0, 4.0, 8.0])
     stiffness = np.array([2e5, 4e5, 8e5])

@@ -11,7 +11,8 @@ Functions
 simulate, simulate3d      one contact; the dict ``kick simulate[3d] --format json`` prints
 simulate_many, simulate3d_many
                           many contacts from arrays (numpy broadcasting), solved in
-                          parallel in Rust; a status per row instead of exceptions
+                          parallel in Rust; a status per row instead of exceptions;
+                          ``progress=True`` (every ``*_many``) draws a bar on stderr
 history                   uniform time history of one 1D contact (dict of 1-D arrays)
 history3d                 uniform time history of one 3D kick, accurate path (dict of 1-D arrays)
 fit                       identify parameters from a measured history (``kick fit data``)
@@ -98,7 +99,8 @@ def _labelled(function: str, values: dict, arrays: dict) -> ManyResult:
     """A ``*_many`` answer that remembers its call, for ``to_xarray``."""
     names = {p["name"] for p in keywords(function)}
     inputs = {k: v for k, v in arrays.items() if k in names}
-    options = {k: v for k, v in arrays.items() if k not in names}
+    # How the call ran, not what it computed: no attribute of the result.
+    options = {k: v for k, v in arrays.items() if k not in names and k != "progress"}
     return ManyResult(values, function, inputs, options)
 
 
@@ -156,6 +158,7 @@ _solver = _inspect.Parameter("solver", _KW, default="auto")
 _law = _inspect.Parameter("law", _KW, default="power-law")
 _dt = _inspect.Parameter("dt", _KW, default=None)
 _threads = _inspect.Parameter("threads", _KW, default=None)
+_progress = _inspect.Parameter("progress", _KW, default=False)
 
 _STATUS_DOC = ", ".join(f"{code} {name}" for code, name in sorted(STATUS.items()))
 _SOLVER_DOC = f"""
@@ -184,6 +187,14 @@ _MANY_DOC = f"""
 threads : int, optional
     Worker threads (an own pool of that many, 1 to 4 per core; an int or numpy
     integer, not a float or bool); default: rayon's pool, one per core.
+progress : bool, default False
+    Draw a bar on ``sys.stderr`` counting the rows done (its label the
+    function, then done/total rows, elapsed time and an estimate of the time
+    left); redrawn 10 times a second on a terminal, once a second off one (a
+    log file). The rows are the same with or without it, and Ctrl-C still
+    stops the call within moments. A bool only (a 1 or a string is a
+    ``TypeError`` naming ``progress``). ``kick.dask`` draws no bar on its
+    workers: use ``distributed``'s own progress there.
 
 Every parameter is a scalar or an array; they broadcast by numpy's rules to
 the rows' shape S (a vector parameter has a trailing axis of 3). The rows are
@@ -224,7 +235,7 @@ _declare(
     simulate_many,
     "simulate_many",
     [],
-    [_solver, _law, _dt, _threads],
+    [_solver, _law, _dt, _threads, _progress],
     "Solve many 1D contacts, as ``kick sweep`` does, from arrays.\n" + _SOLVER_DOC + _MANY_DOC,
     "Outcomes\n--------\n" + _outputs_docs(list(OBSERVABLES) + [("energy_residual", "J")]),
 )
@@ -279,7 +290,7 @@ _declare(
     simulate3d_many,
     "simulate3d_many",
     [],
-    [_solver, _law, _dt, _threads, _flight, _distance] + _flight_rest,
+    [_solver, _law, _dt, _threads, _progress, _flight, _distance] + _flight_rest,
     "Solve many off-center 3D kicks from arrays.\n" + _SOLVER3D_DOC + _MANY_DOC + _FLIGHT_AFTER_DOC
     + "\nThe outcomes are ``simulate3d``'s numbers, ``energy`` flattened to\n"
     "``energy_<part>``; vectors (launch_velocity, spin, ...) have shape S + (3,).\n"
@@ -505,7 +516,7 @@ _declare(
     flight_many,
     "flight_many",
     [],
-    [_threads],
+    [_threads, _progress],
     "Solve many flights, as ``flight`` does, from arrays "
     "(``kick_flight::solve`` per row).\n" + _MANY_DOC.replace("1 numerical failure, 2 trapped", "1 numerical failure")
     .replace("0 separated", "0 landed"),
@@ -547,7 +558,7 @@ _declare(
     bounce_many,
     "bounce_many",
     [_bounce_law],
-    [_threads],
+    [_threads, _progress],
     "Solve many bounces, as ``bounce`` does, from arrays.\n" + _BOUNCE_LAW_DOC + _MANY_DOC.replace(", 2 trapped", ""),
     "Outcomes\n--------\n" + _outputs_docs(BOUNCE_COLUMNS),
 )

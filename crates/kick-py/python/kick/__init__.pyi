@@ -130,6 +130,7 @@ def simulate_many(
     law: str = ...,
     dt: float | None = ...,
     threads: int | np.integer | None = ...,
+    progress: bool = ...,
 ) -> dict[str, Any]:
     """Solve many 1D contacts, as ``kick sweep`` does, from arrays."""
 
@@ -174,6 +175,7 @@ def simulate3d_many(
     law: str = ...,
     dt: float | None = ...,
     threads: int | np.integer | None = ...,
+    progress: bool = ...,
     flight: bool = ...,
     distance: float | Sequence[float] | None = ...,
     air_density: ArrayLike | None = ...,
@@ -336,6 +338,7 @@ def flight_many(
     spin_decay: ArrayLike | None = ...,
     distance: ArrayLike | None = ...,
     threads: int | np.integer | None = ...,
+    progress: bool = ...,
 ) -> dict[str, Any]:
     """Solve many flights, as ``flight`` does, from arrays (``kick_flight::solve`` per row)."""
 
@@ -385,6 +388,7 @@ def bounce_many(
     shell_stiffness: ArrayLike | None = ...,
     shell_damping: ArrayLike | None = ...,
     threads: int | np.integer | None = ...,
+    progress: bool = ...,
 ) -> dict[str, Any]:
     """Solve many bounces, as ``bounce`` does, from arrays."""
 

@@ -5,7 +5,10 @@ exactly one input varies (its other axes of length 1, as ``x[:, None]``)
 takes that input's name and values as its coordinate; an axis no single
 input spans is ``dim_K``. Inputs that vary along several axes are
 coordinates over those axes; scalar inputs are 0-d coordinates. Vectors
-have a trailing ``xyz`` (``xy`` for ``landing_point``) dimension. Every
+have a trailing ``xyz`` (``xy`` for ``landing_point``) dimension; the
+crossings of a flown kick at a list of planes (``simulate3d_many(flight=True,
+distance=[...])``) a ``distance`` dimension, the planes' distances its
+coordinate. Every
 input and output carries ``units`` (the declared unit, ``kick.PARAMETERS``;
 the outputs' units from the library's column lists).
 """
@@ -34,7 +37,8 @@ def output_units(function: str) -> dict:
     if function == "simulate_many":
         table = list(_kick.OBSERVABLES) + [("energy_residual", "J")]
     elif function == "simulate3d_many":
-        table = list(_kick.OBSERVABLES_3D)
+        # With flight=True, the flight's columns follow the kick's.
+        table = list(_kick.OBSERVABLES_3D) + list(_kick.FLIGHT_COLUMNS) + [("flight_status", "1")]
     elif function == "flight_many":
         table = list(_kick.FLIGHT_COLUMNS) + [
             ("launch_reynolds", "1"),
@@ -122,13 +126,24 @@ def to_xarray(result, function: str | None = None, **inputs):
         coords[name] = (cdims, values, attrs(name))
     coords["xyz"] = ("xyz", ["x", "y", "z"])
 
+    # simulate3d_many(flight=True, distance=[...]): the crossing columns have
+    # a trailing axis of the planes, labelled by their distances.
+    planes = options.get("distance")
+    planes = None if function != "simulate3d_many" or planes is None or np.ndim(planes) == 0 else np.asarray(planes, dtype=float)
+    if planes is not None:
+        coords["distance"] = ("distance", planes, {"units": "m", "long_name": "the plane x = distance whose crossing is reported"})
+        options.pop("distance")
+
     data = {}
     for key, value in result.items():
         if key in ("failure_index", "failure_message"):
             continue
         v = np.asarray(value)
         extra = v.shape[ndim:]
-        vdims = list(dims) + (["xyz"] if extra == (3,) else ["xy"] if extra == (2,) else [f"{key}_{i}" for i in range(len(extra))])
+        if planes is not None and (key == "crossed" or key.startswith("crossing_")):
+            vdims = list(dims) + ["distance"] + (["xyz"] if extra[1:] == (3,) else [])
+        else:
+            vdims = list(dims) + (["xyz"] if extra == (3,) else ["xy"] if extra == (2,) else [f"{key}_{i}" for i in range(len(extra))])
         data[key] = (vdims, v, {"units": units.get(key, "")})
     if any("xy" in d[0] for d in data.values()):
         coords["xy"] = ("xy", ["x", "y"])

@@ -55,7 +55,8 @@ def _split(function, arrays):
     if function not in _FUNCTIONS:
         raise ValueError(f"`function` = {function!r}: one of {', '.join(_FUNCTIONS)}")
     shapes = {p["name"]: p["shape"] for p in kick.keywords(function)}
-    options = {k: v for k, v in arrays.items() if k not in shapes and k != "threads"}
+    # No bar on the workers (`progress` is checked on the client, then dropped).
+    options = {k: v for k, v in arrays.items() if k not in shapes and k not in ("threads", "progress")}
     options["threads"] = arrays.get("threads", 1)
     given = {}
     row_shapes = []
