@@ -136,8 +136,10 @@ impl FitParameter {
     /// takes (`ScenarioSpec::LEVELS`: the shell ball's, and what is declared
     /// there later); at a bounce any scalar of `kick_bounce::BOUNCE_PARAMETERS`.
     pub fn from_name_at(level: FitLevel, name: &str) -> Result<FitParameter, IdentifyError> {
-        let scalar =
-            |p: &&'static ParameterDef| p.shape == Shape::Scalar && matches!(p.default, DefaultValue::Number(_) | DefaultValue::Unset(_));
+        // A derived default (the boot's, set by the leg) is a number once given.
+        let scalar = |p: &&'static ParameterDef| {
+            p.shape == Shape::Scalar && matches!(p.default, DefaultValue::Number(_) | DefaultValue::Unset(_) | DefaultValue::Derived(_))
+        };
         let found = match level {
             FitLevel::Kick => FitParameter::ALL.into_iter().find(|p| p.name() == name).or_else(|| {
                 parameters::at_levels(ScenarioSpec::LEVELS).filter(scalar).find(|p| p.name == name).map(FitParameter::Declared)
