@@ -329,29 +329,49 @@ fn draw_grid<DB: DrawingBackend>(
     layout: (usize, usize),
     panels: &[Panel],
     equal_scale_panels: &[usize],
+    tall: bool,
 ) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     let root = root.titled(title, (FAMILY, 26)).map_err(|e| e.to_string())?;
-    for (i, (area, panel)) in root.split_evenly(layout).iter().zip(panels).enumerate() {
+    let areas = if tall && layout.1 == 1 {
+        // A tall figure in one column: an equal-scale row (a plan view) takes
+        // twice the height of the others, so its data fill it rather than a widened range.
+        let weight = |i: usize| if equal_scale_panels.contains(&i) { 2 } else { 1 };
+        let total: i32 = (0..layout.0).map(weight).sum();
+        let height = root.dim_in_pixel().1 as i32;
+        let mut breaks = Vec::new();
+        let mut at = 0;
+        for i in 0..layout.0.saturating_sub(1) {
+            at += weight(i);
+            breaks.push(height * at / total);
+        }
+        root.split_by_breakpoints(Vec::<i32>::new(), breaks)
+    } else {
+        root.split_evenly(layout)
+    };
+    for (i, (area, panel)) in areas.iter().zip(panels).enumerate() {
         draw_panel(area, panel, equal_scale_panels.contains(&i))?;
     }
     root.present().map_err(|e| e.to_string())
 }
 
-/// The PNG backend of every figure: [`SIZE`], text by [`text::TextBackend`].
-fn png_backend(path: &Path) -> Result<text::TextBackend<'_>, FigureError> {
-    text::TextBackend::new(BitMapBackend::new(path, SIZE), FONT)
+/// The PNG backend of every figure (`size`: [`SIZE`] but for a tall plan view), text by [`text::TextBackend`].
+fn png_backend(path: &Path, size: (u32, u32)) -> Result<text::TextBackend<'_>, FigureError> {
+    text::TextBackend::new(BitMapBackend::new(path, size), FONT)
         .map_err(|_| FigureError::Draw { figure: path.display().to_string(), message: "bundled font DejaVuSans.ttf is invalid".into() })
 }
 
 /// Write `name.png` and `name.svg` of a grid of panels.
 pub fn save_grid(dir: &Path, name: &str, title: &str, layout: (usize, usize), panels: &[Panel]) -> Result<Vec<PathBuf>, FigureError> {
-    save_grid_equal_scale(dir, name, title, layout, panels, &[])
+    save_grid_equal_scale(dir, name, title, layout, panels, &[], None)
 }
 
 /// [`save_grid`], the panels numbered in `equal_scale` (linear axes, both in
 /// the same unit, e.g. a plan view in metres) drawn at equal scale: a unit
 /// along x takes as many pixels as a unit along y ([`equal_scale`]).
+/// `height` [px]: a taller figure than [`SIZE`] for a plan view about as
+/// wide as long (same width; in one column such a row then takes twice the
+/// others' height).
 pub fn save_grid_equal_scale(
     dir: &Path,
     name: &str,
@@ -359,12 +379,16 @@ pub fn save_grid_equal_scale(
     layout: (usize, usize),
     panels: &[Panel],
     equal_scale: &[usize],
+    height: Option<u32>,
 ) -> Result<Vec<PathBuf>, FigureError> {
     register_font()?;
+    let size = (SIZE.0, height.unwrap_or(SIZE.1));
     let png = Staged::begin(&dir.join(format!("{name}.png")))?;
     let svg = Staged::begin(&dir.join(format!("{name}.svg")))?;
-    draw_grid(png_backend(png.temporary())?.into_drawing_area(), title, layout, panels, equal_scale).map_err(draw_err(name))?;
-    draw_grid(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), title, layout, panels, equal_scale).map_err(draw_err(name))?;
+    let tall = height.is_some();
+    draw_grid(png_backend(png.temporary(), size)?.into_drawing_area(), title, layout, panels, equal_scale, tall).map_err(draw_err(name))?;
+    draw_grid(SVGBackend::new(svg.temporary(), size).into_drawing_area(), title, layout, panels, equal_scale, tall)
+        .map_err(draw_err(name))?;
     // The two forms of one figure: both or neither.
     Ok(crate::output::commit_all(vec![png, svg])?)
 }
@@ -744,7 +768,7 @@ pub fn figure7(results: &Path, out: &Path) -> Result<Vec<PathBuf>, FigureError> 
     }
     let png = Staged::begin(&out.join("figure7.png"))?;
     let svg = Staged::begin(&out.join("figure7.svg"))?;
-    draw_bars(png_backend(png.temporary())?.into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
+    draw_bars(png_backend(png.temporary(), SIZE)?.into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
     draw_bars(SVGBackend::new(svg.temporary(), SIZE).into_drawing_area(), &names, &groups).map_err(draw_err("figure7"))?;
     // The two forms of one figure: both or neither.
     Ok(crate::output::commit_all(vec![png, svg])?)

@@ -178,6 +178,8 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
         (2, 1),
         &[top_panel, side_panel],
         &[0],
+        // The plan is about as wide as it is long (the 6 cm kicks bend 14 m in 21 m).
+        Some(1500),
     )?;
 
     // Against the lateral offset, one curve per friction.
@@ -476,5 +478,6 @@ pub fn aim_figure(aims: &[kick_study::aim::AimReport], dir: &Path) -> Result<Vec
         (2, 1),
         &[top_panel, side_panel],
         &[0],
+        None,
     )
 }
