@@ -181,21 +181,11 @@ impl Boot {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::laws::{AnyLaw, LawKind, LawParameters};
+    use crate::laws::AnyLaw;
     use crate::ShellBall;
 
     fn laws() -> Vec<AnyLaw> {
-        let p = LawParameters {
-            stiffness: 4.2e5,
-            exponent: 1.35,
-            damping: 120.0,
-            restitution: 0.7,
-            impact_speed: 22.0,
-            reduced_mass: 0.43 * 3.0 / 3.43,
-            linear_stiffness: 1.0e5,
-            shell: None,
-        };
-        let mut laws: Vec<AnyLaw> = LawKind::ALL.iter().map(|&k| AnyLaw::new(k, &p).unwrap()).collect();
+        let mut laws = crate::test_support::laws();
         laws.push(AnyLaw::Shell(ShellBall::default_with_radius(crate::DEFAULT_BALL_RADIUS).unwrap()));
         laws
     }

@@ -621,19 +621,7 @@ mod uses_tests {
 mod tests {
     use super::*;
 
-    fn laws() -> Vec<AnyLaw> {
-        let p = LawParameters {
-            stiffness: 4.2e5,
-            exponent: 1.35,
-            damping: 120.0,
-            restitution: 0.7,
-            impact_speed: 22.0,
-            reduced_mass: 0.43 * 3.0 / 3.43,
-            linear_stiffness: 1.0e5,
-            shell: None,
-        };
-        LawKind::ALL.iter().map(|&k| AnyLaw::new(k, &p).unwrap()).collect()
-    }
+    use crate::test_support::{laws, simpson};
 
     /// Analytic gradients against central differences of the force itself,
     /// away from the kinks (δ = 0, the clamp, δ̇ = 0 for Eq. 20).
@@ -689,20 +677,7 @@ mod tests {
         // at 0, so the error is O(h^(n+1)) ≈ 1e-8 relative with 20 000 panels.
         for law in laws() {
             let d = 0.02;
-            let m = 20_000;
-            let h = d / m as f64;
-            let mut sum = 0.0;
-            for i in 0..=m {
-                let w = if i == 0 || i == m {
-                    1.0
-                } else if i % 2 == 1 {
-                    4.0
-                } else {
-                    2.0
-                };
-                sum += w * law.force(i as f64 * h, 0.0);
-            }
-            let integral = sum * h / 3.0;
+            let integral = simpson(|s| law.force(s, 0.0), d, 20_000);
             let u = law.potential(d);
             assert!((integral - u).abs() <= 1e-6 * u, "{:?}: {integral} vs {u}", law.kind());
         }

@@ -26,6 +26,10 @@ pub mod special;
 pub mod threads;
 pub mod validity;
 
+/// Laws and rules the unit tests of several modules share.
+#[cfg(test)]
+pub(crate) mod test_support;
+
 pub use boot::Boot;
 pub use error::{KickError, Status};
 pub use law::{ContactLaw, PowerLawContact};

@@ -429,20 +429,7 @@ mod tests {
     fn potential_is_the_integral_of_the_elastic_force() {
         for b in [ball(), ShellBall::new(6.0e4, 0.1, 1.0, 0.0, 0.0).unwrap()] {
             for d in [0.01, 0.04, 0.08] {
-                let m = 2000;
-                let h = d / m as f64;
-                let mut sum = 0.0;
-                for i in 0..=m {
-                    let w = if i == 0 || i == m {
-                        1.0
-                    } else if i % 2 == 1 {
-                        4.0
-                    } else {
-                        2.0
-                    };
-                    sum += w * b.force(i as f64 * h, 0.0);
-                }
-                let integral = sum * h / 3.0;
+                let integral = crate::test_support::simpson(|s| b.force(s, 0.0), d, 2000);
                 let u = b.potential(d);
                 assert!((integral - u).abs() <= 1e-11 * u, "{b:?} δ={d}: {integral} vs {u}");
             }
