@@ -83,7 +83,7 @@ enum Command {
     Check(FormatOnly),
     /// Effective mass of the articulated leg (Eq. 11) and the exit speed it gives.
     ///
-    /// With no arguments, the default pose (`kick_paper::leg::LegSettings::default`):
+    /// With no arguments, the default pose (`kick_study::leg::LegSettings::default`):
     /// knee flexed 30°, ankle plantarflexed 60°, thigh 10° forward of vertical;
     /// free knee and ankle, pinned hip, planar leg; contact at 0.65 of the
     /// foot's length, horizontal impact; de Leva's (1996) reference male.
@@ -282,7 +282,7 @@ struct Table2 {
 }
 
 /// `kick leg`'s defaults: the library's documented default pose.
-static POSE: std::sync::LazyLock<kick_paper::leg::LegSettings> = std::sync::LazyLock::new(Default::default);
+static POSE: std::sync::LazyLock<kick_study::leg::LegSettings> = std::sync::LazyLock::new(Default::default);
 
 #[derive(Args)]
 struct Leg {
@@ -693,7 +693,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             }
         }
         Command::Leg(a) => {
-            let settings = leg::LegSettings {
+            let settings = kick_study::leg::LegSettings {
                 knee: a.knee,
                 ankle: a.ankle,
                 hip: a.hip,
@@ -709,10 +709,9 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
                 direction: a.direction,
                 body_mass: a.body_mass,
                 height: a.height,
-                sweep_out: a.sweep_out,
-                command: std::env::args().collect::<Vec<_>>().join(" "),
             };
-            out.print(a.format, &leg::leg(&settings)?)
+            let run = leg::LegRun { settings, sweep_out: a.sweep_out, command: std::env::args().collect::<Vec<_>>().join(" ") };
+            out.print(a.format, &leg::leg(&run)?)
         }
         Command::Laws(a) => {
             let settings = identify::LawsSettings { scenarios: a.scenarios, out: a.out, samples: a.samples };

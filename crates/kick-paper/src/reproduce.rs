@@ -128,7 +128,7 @@ pub enum Call {
     /// kick's patch over time, their files and figures (part of `kick reproduce` only).
     Patch { out: PathBuf, figures: PathBuf },
     /// `kick leg --knee K --ankle A --sweep-out OUT`.
-    Leg(crate::leg::LegSettings),
+    Leg(crate::leg::LegRun),
     /// `kick laws`.
     Laws(crate::identify::LawsSettings),
     /// `kick fit profile`.
@@ -234,8 +234,8 @@ impl Call {
             Call::Leg(leg) => {
                 format!(
                     "kick leg --knee {} --ankle {} --sweep-out {}",
-                    number(leg.knee),
-                    number(leg.ankle),
+                    number(leg.settings.knee),
+                    number(leg.settings.ankle),
                     leg.sweep_out.as_deref().map(d).unwrap_or_default()
                 )
             }
@@ -293,7 +293,7 @@ impl Call {
 
 /// The leg's call: the default pose, its figure data into OUT.
 fn leg_call(args: &ReproduceSettings) -> Call {
-    Call::Leg(crate::leg::LegSettings { sweep_out: Some(args.out.clone()), ..crate::leg::LegSettings::default() })
+    Call::Leg(crate::leg::LegRun { sweep_out: Some(args.out.clone()), ..Default::default() })
 }
 
 /// The steps of a reproduction with `args`, every call's arguments filled
@@ -471,8 +471,8 @@ impl Call {
             }
             Call::Leg(settings) => {
                 // The command goes into the files' provenance.
-                let settings = crate::leg::LegSettings { command: self.command(args, "leg"), ..settings.clone() };
-                say(log, &crate::leg::leg(&settings)?.text());
+                let run = crate::leg::LegRun { command: self.command(args, "leg"), ..settings.clone() };
+                say(log, &crate::leg::leg(&run)?.text());
             }
             Call::Laws(settings) => say(log, &crate::identify::laws(settings)?.text()),
             Call::Profile(settings) => say(log, &crate::identify::profile(settings)?.text()),

@@ -274,6 +274,22 @@ pub fn fill_table<L: Level + ?Sized>(level: &L, rows: Range<u64>, writer: &mut S
     run_rows(level, rows, writer, &|n| bar.inc(n))
 }
 
+/// Whole levels as tables `dir/NAME.h5` (a command's own figure data, e.g.
+/// `kick leg --sweep-out`), one after the other, each recording `source`
+/// and `command` as its provenance.
+pub fn write_levels(dir: &Path, tables: &[(&str, &dyn Level)], source: &str, command: &str) -> Result<Vec<PathBuf>, RunError> {
+    let mut written = Vec::new();
+    for &(name, level) in tables {
+        let path = dir.join(format!("{name}.h5"));
+        let provenance = Provenance::now(name, source, command);
+        let bar = ProgressBar::hidden();
+        let mut writer = create_table(level, &path, &provenance, level.rows(), Compression::default())?;
+        fill_table(level, 0..level.rows(), &mut writer, &bar)?;
+        written.push(finish_table(level, writer, &bar)?.path);
+    }
+    Ok(written)
+}
+
 /// Close the table and count each set's rows without values.
 pub fn finish_table<L: Level + ?Sized>(level: &L, writer: SweepWriter, bar: &ProgressBar) -> Result<RunSummary, RunError> {
     bar.finish_and_clear();

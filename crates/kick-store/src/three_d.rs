@@ -12,10 +12,10 @@
 //! its unit, and the root attribute `level = "3d"`.
 
 use crate::experiment::{Experiment, Kicks3d, KicksBounce};
-use kick_study::grid::Grid;
 use crate::h5::{new_group, write_column, write_grid, write_str_attr, Column, H5Error};
 use crate::provenance::Provenance;
 use crate::run::{create_table, fill_table, finish_table, progress, Part, RunError, RunSummary};
+use kick_study::grid::Grid;
 use kick_study::level::Level;
 use std::path::Path;
 

@@ -26,6 +26,8 @@ pub enum StudyError {
     #[error(transparent)]
     Parameter(#[from] ParameterError),
     #[error(transparent)]
+    Leg(#[from] kick_core::leg::LegError),
+    #[error(transparent)]
     Failure(#[from] Failure),
     #[error(transparent)]
     Limit(#[from] LimitError),
@@ -68,6 +70,7 @@ impl StudyError {
         match self {
             StudyError::Kick(e) | StudyError::Row { source: e, .. } => e.status(),
             StudyError::Kick3d(e) => e.status(),
+            StudyError::Leg(e) => e.status(),
             StudyError::Flight { source, .. } => source.status(),
             StudyError::Aim { .. } => Status::Refused,
             StudyError::Failure(f) => f.status,

@@ -26,6 +26,7 @@ pub mod flight;
 pub mod free_kick;
 pub mod grid;
 pub mod history;
+pub mod leg;
 pub mod level;
 pub mod limits;
 pub mod numbers_3d;

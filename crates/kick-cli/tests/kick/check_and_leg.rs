@@ -83,7 +83,7 @@ fn leg_without_arguments_is_the_documented_default_pose() {
     let out = kick(&["leg", "--format", "json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let cli: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let library = kick_study::json(&kick_paper::leg::leg(&kick_paper::leg::LegSettings::default()).unwrap()).unwrap();
+    let library = kick_study::json(&kick_study::leg::leg(&kick_study::leg::LegSettings::default()).unwrap()).unwrap();
     let library: serde_json::Value = serde_json::from_str(&library).unwrap();
     for key in ["effective_mass", "locked_ankle", "free_ankle", "leg_mass", "v_ball_out", "contact_time", "knee", "hip", "ankle"] {
         assert_eq!(cli[key], library[key], "{key}");

@@ -54,7 +54,7 @@ fn simulate_prints_values_in_the_one_form() {
 
 #[test]
 fn leg_laws_and_table2_print_values_in_the_one_form() {
-    let leg = kick_paper::leg::leg(&kick_paper::leg::LegSettings::default()).unwrap();
+    let leg = kick_study::leg::leg(&kick_study::leg::LegSettings::default()).unwrap();
     assert_one_form(&leg.text());
     assert_printed(&leg.text(), "effective_mass", leg.mass.effective_mass);
     let default = Path::new(kick_study::table2::DEFAULT_PATH);
