@@ -4,7 +4,7 @@
 //! cross-model checks passed in); only the paper's printed Table 2 comes from
 //! `kick_core::paper`.
 
-use crate::h5::{read_f64_attr, read_str_attr, H5Error, SetData, SweepData};
+use crate::h5::{file_f64_attr, file_str_attr, H5Error, SetData, SweepData};
 use kick_core::paper::{TABLE2, TABLE2_DECIMALS};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -58,15 +58,14 @@ pub fn write(results: &Path, figures: &str, checks: Option<&[CheckLine]>, out: &
 pub fn render(results: &Path, figures: &str, checks: Option<&[CheckLine]>) -> Result<String, ReportError> {
     let table2_path = results.join("table2.h5");
     let t2 = SweepData::read(&table2_path)?;
-    let file = hdf5::File::open(&table2_path).map_err(|e| content(format!("{}: {e}", table2_path.display())))?;
-    let version = read_str_attr(&file, "tool_version").unwrap_or_default();
-    let dt = read_f64_attr(&file, "dt").ok_or_else(|| content("table2.h5: the seed solver's `dt` attribute is missing"))?;
+    let version = file_str_attr(&table2_path, "", "tool_version").unwrap_or_default();
+    let dt = file_f64_attr(&table2_path, "", "dt").ok_or_else(|| content("table2.h5: the seed solver's `dt` attribute is missing"))?;
     let seed = t2.sets.first().ok_or_else(|| content("table2.h5 has no outcomes"))?;
     let accurate = t2.set("accurate")?;
-    let accurate_settings = hdf5::File::open(&table2_path)
-        .ok()
-        .and_then(|f| f.group("solvers/accurate").ok())
-        .map(|g| (read_f64_attr(&g, "relative_tolerance"), read_f64_attr(&g, "absolute_tolerance")));
+    let accurate_settings = Some((
+        file_f64_attr(&table2_path, "solvers/accurate", "relative_tolerance"),
+        file_f64_attr(&table2_path, "solvers/accurate", "absolute_tolerance"),
+    ));
     let names = t2.names.clone().ok_or_else(|| content("table2.h5 has no scenario_names"))?;
 
     let mut md = String::new();

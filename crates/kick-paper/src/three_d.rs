@@ -95,7 +95,7 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     }
     let layout = if panels.len() > 2 { (2, 2) } else { (1, 2) };
     let name = h5.file_stem().and_then(|s| s.to_str()).unwrap_or("3d");
-    let title = hdf5::File::open(h5).ok().and_then(|f| kick_store::h5::read_str_attr(&f, "description")).unwrap_or_default();
+    let title = kick_store::h5::file_str_attr(h5, "", "description").unwrap_or_default();
     let mut written = save_grid(dir, name, &title, layout, &panels)?;
     if axis.name == "offset" && curves.len() > 1 {
         let trade = vec![Panel::new(

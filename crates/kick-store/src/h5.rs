@@ -151,6 +151,30 @@ pub fn read_f64_attr(location: &hdf5::Location, name: &str) -> Option<f64> {
     location.attr(name).ok()?.read_scalar::<f64>().ok()
 }
 
+/// An attribute of the file at `path`, of its root (`group` "") or of a
+/// group, read on its own: None when the file, the group or the attribute
+/// is missing (for readers that hold no HDF5 handle, e.g. kick-paper).
+pub fn file_str_attr(path: &Path, group: &str, name: &str) -> Option<String> {
+    let file = hdf5::File::open(path).ok()?;
+    if group.is_empty() {
+        read_str_attr(&file, name)
+    } else {
+        let group = file.group(group).ok()?;
+        read_str_attr(&group, name)
+    }
+}
+
+/// [`file_str_attr`] for a scalar f64 attribute.
+pub fn file_f64_attr(path: &Path, group: &str, name: &str) -> Option<f64> {
+    let file = hdf5::File::open(path).ok()?;
+    if group.is_empty() {
+        read_f64_attr(&file, name)
+    } else {
+        let group = file.group(group).ok()?;
+        read_f64_attr(&group, name)
+    }
+}
+
 /// A new group `name` in `parent`, without HDF5's time stamps.
 pub fn new_group(parent: &Group, name: &str) -> hdf5::Result<Group> {
     parent.create_group_builder().obj_track_times(false).create(name)
