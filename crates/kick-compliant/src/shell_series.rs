@@ -63,6 +63,18 @@ pub(crate) const STEP_SCALE: f64 = 1e-5;
 pub(crate) const SAMPLES: usize = 4;
 pub(crate) const K: usize = ORDER;
 
+/// 1/k for k = 0..=K (INVERSE[0] unused): the recurrences multiply by it,
+/// a division being the slowest link of their order-by-order chain.
+pub(crate) const INVERSE: [f64; K + 1] = {
+    let mut table = [0.0; K + 1];
+    let mut k = 1;
+    while k <= K {
+        table[k] = 1.0 / k as f64;
+        k += 1;
+    }
+    table
+};
+
 /// True when this path solves the scenario: the shell law with a drive that
 /// pushes the foot on (or none).
 pub fn applies(scenario: &Scenario) -> bool {
@@ -86,6 +98,9 @@ pub(crate) struct ElasticJet {
     absolute: f64,
     gamma: f64,
     shell_stiffness: f64,
+    /// 1/(4R³) and 1/f_0: multiplied by, not divided by, on the chain.
+    inverse_volume: f64,
+    inverse_f0: f64,
     q: [f64; K + 1],
     cube: [f64; K + 1],
     f: [f64; K + 1],
@@ -106,6 +121,8 @@ impl ElasticJet {
             absolute,
             gamma,
             shell_stiffness: ball.shell_stiffness,
+            inverse_volume: 1.0 / (4.0 * r * r * r),
+            inverse_f0: 0.0,
             q: [0.0; K + 1],
             cube: [0.0; K + 1],
             f: [0.0; K + 1],
@@ -119,6 +136,7 @@ impl ElasticJet {
         if !(jet.f[0] > 0.0) {
             return Err(KickError::Integration { time: 0.0, reason: format!("compression {delta0} m leaves no gas in the ball") });
         }
+        jet.inverse_f0 = 1.0 / jet.f[0];
         // (1 − c)^(−γ) and the gauge pressure with the digits of a small cap.
         let log_ratio = -(-cap0).ln_1p();
         jet.w[0] = (gamma * log_ratio).exp();
@@ -134,9 +152,9 @@ impl ElasticJet {
         self.q[k] = (0..=k).map(|i| d[i] * d[k - i]).sum();
         self.cube[k] = (0..=k).map(|i| self.q[i] * d[k - i]).sum();
         if k > 0 {
-            self.f[k] = -(3.0 * r * self.q[k] - self.cube[k]) / (4.0 * r * r * r);
+            self.f[k] = -(3.0 * r * self.q[k] - self.cube[k]) * self.inverse_volume;
             let s: f64 = (1..=k).map(|j| ((a + 1.0) * j as f64 - k as f64) * self.f[j] * self.w[k - j]).sum();
-            self.w[k] = s / (k as f64 * self.f[0]);
+            self.w[k] = s * self.inverse_f0 * INVERSE[k];
             self.g[k] = self.absolute * self.w[k];
         }
         self.area[k] = std::f64::consts::PI * (2.0 * r * d[k] - self.q[k]);
