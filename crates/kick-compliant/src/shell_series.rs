@@ -42,8 +42,9 @@
 
 use crate::events::proves_trapped;
 use crate::events::ContactSystem;
-use crate::reduced::{reconstruct, RelativeOde, RelativeState};
-use kick_core::{roots, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath, StopReason};
+use crate::ode::Extremes;
+use crate::reduced::{separated, RelativeOde, RelativeState};
+use kick_core::{roots, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath};
 
 /// Order K of the Taylor steps (δ to t^K).
 pub const ORDER: usize = 20;
@@ -300,24 +301,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, tolerance: f64) -> Result<Out
         }
     }
     let end = RelativeState::new(0.0, rate, dissipated);
-    let r = reconstruct(scenario, t, &end);
-    let system = RelativeOde::new(scenario, ball);
-    let outcome = Outcome {
-        v_ball_out: r.ball_velocity,
-        v_foot_out: r.foot_velocity,
-        speed_ratio: Outcome::ratio(r.ball_velocity, scenario.foot_speed()),
-        peak_force,
-        peak_force_time,
-        contact_time: t,
-        max_compression,
-        max_compression_time,
-        impulse: scenario.ball_mass() * (r.ball_velocity - scenario.ball_speed()), // Eq. 2
-        restitution: -rate / v0,
-        energy: system.budget(scenario, t, &end),
-        stop: StopReason::Separated { t },
-        evaluations: u64::from(steps),
-        method: SolverPath::Series,
-    };
-    crate::ode::check_finite(&outcome)?;
-    Ok(outcome)
+    let energy = RelativeOde::new(scenario, ball).budget(scenario, t, &end);
+    let extremes = Extremes { peak_force, peak_force_time, max_compression, max_compression_time };
+    separated(scenario, t, &end, extremes, energy, u64::from(steps), SolverPath::Series)
 }

@@ -28,9 +28,10 @@
 use super::{BootedOde, BootedState};
 use crate::events::proves_trapped;
 use crate::events::ContactSystem;
-use crate::reduced::{reconstruct, RelativeState};
+use crate::ode::Extremes;
+use crate::reduced::{separated, RelativeState};
 use crate::shell_series::{derivative, first_fall, integral, poly, ElasticJet, INVERSE, K, STEP_SCALE};
-use kick_core::{Boot, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath, StopReason};
+use kick_core::{Boot, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath};
 
 /// Bound on steps in one contact (typical: 20 to 40).
 pub const MAX_STEPS: u32 = 20_000;
@@ -192,25 +193,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
             });
         }
     }
-    let end = BootedState::new(delta, rate, layer, dissipated);
-    let r = reconstruct(scenario, t, &RelativeState::new(delta, rate, dissipated));
-    let system = BootedOde::new(scenario, ball, boot);
-    let outcome = Outcome {
-        v_ball_out: r.ball_velocity,
-        v_foot_out: r.foot_velocity,
-        speed_ratio: Outcome::ratio(r.ball_velocity, scenario.foot_speed()),
-        peak_force,
-        peak_force_time,
-        contact_time: t,
-        max_compression,
-        max_compression_time,
-        impulse: scenario.ball_mass() * (r.ball_velocity - scenario.ball_speed()), // Eq. 2
-        restitution: -rate / v0,
-        energy: system.budget(scenario, t, &end),
-        stop: StopReason::Separated { t },
-        evaluations: u64::from(steps),
-        method: SolverPath::Series,
-    };
-    crate::ode::check_finite(&outcome)?;
-    Ok(outcome)
+    let energy = BootedOde::new(scenario, ball, boot).budget(scenario, t, &BootedState::new(delta, rate, layer, dissipated));
+    let extremes = Extremes { peak_force, peak_force_time, max_compression, max_compression_time };
+    separated(scenario, t, &RelativeState::new(delta, rate, dissipated), extremes, energy, u64::from(steps), SolverPath::Series)
 }
