@@ -29,10 +29,10 @@
 
 use crate::events::{ContactSystem, Engine, Method, Recorder, Scales, StopAt};
 use crate::history::{self, Sampler};
-use crate::reduced::{reconstruct, RelativeState};
+use crate::reduced::{reconstruct, separated, RelativeState};
 use kick_core::boot::Split;
 use kick_core::{
-    AnyLaw, Boot, ContactLaw, ContactPhase, EnergyBudget, KickError, Outcome, Sample, Scenario, SolverPath, Spacing, StopReason, Streamed,
+    AnyLaw, Boot, ContactLaw, ContactPhase, EnergyBudget, KickError, Outcome, Sample, Scenario, SolverPath, Spacing, Streamed,
 };
 use nalgebra::SVector;
 use std::ops::ControlFlow;
@@ -219,24 +219,9 @@ pub fn solve_engine<L: ContactLaw + Copy>(
         }
         None => engine.run(scenario, &booted, y0, StopAt::Separation, None)?,
     };
-    let r = reconstruct(scenario, end.time, &RelativeState::new(end.state[0], end.state[1], end.state[DISSIPATED]));
-    let outcome = Outcome {
-        v_ball_out: r.ball_velocity,
-        v_foot_out: r.foot_velocity,
-        speed_ratio: Outcome::ratio(r.ball_velocity, scenario.foot_speed()),
-        peak_force: end.peak_force,
-        peak_force_time: end.peak_force_time,
-        contact_time: end.time,
-        max_compression: end.max_compression,
-        max_compression_time: end.max_compression_time,
-        impulse: scenario.ball_mass() * (r.ball_velocity - scenario.ball_speed()), // Eq. 2
-        restitution: -end.state[1] / scenario.approach_speed(),
-        energy: ContactSystem::budget(&system, scenario, end.time, &end.state),
-        stop: StopReason::Separated { t: end.time },
-        evaluations: engine.evaluations,
-        method: path,
-    };
-    crate::ode::check_finite(&outcome)?;
+    let relative = RelativeState::new(end.state[0], end.state[1], end.state[DISSIPATED]);
+    let energy = ContactSystem::budget(&system, scenario, end.time, &end.state);
+    let outcome = separated(scenario, end.time, &relative, end.extremes(), energy, engine.evaluations, path)?;
     if let Some(step) = method.fixed_step() {
         crate::stability::check_energy(scenario, &booted, &outcome.energy, step, outcome.contact_time)?;
     }

@@ -539,6 +539,18 @@ pub struct RunEnd<const N: usize> {
     pub max_compression_time: f64,
 }
 
+impl<const N: usize> RunEnd<N> {
+    /// The peaks the run located.
+    pub fn extremes(&self) -> crate::ode::Extremes {
+        crate::ode::Extremes {
+            peak_force: self.peak_force,
+            peak_force_time: self.peak_force_time,
+            max_compression: self.max_compression,
+            max_compression_time: self.max_compression_time,
+        }
+    }
+}
+
 /// Where to stop.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum StopAt {

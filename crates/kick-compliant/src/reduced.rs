@@ -14,6 +14,7 @@
 use crate::closed::{undamped_return, CompressionEnd};
 use crate::events::{ContactSystem, Engine, Method, Recorder, Scales, StopAt};
 use crate::history::{self, Sampler};
+use crate::ode::Extremes;
 use kick_core::{
     AnyLaw, ContactLaw, ContactPhase, EnergyBudget, KickError, LawKind, Outcome, RecordingSolver, Sample, Scenario, Solver, SolverPath,
     Spacing, StopReason, Streamed,
@@ -134,6 +135,40 @@ pub(crate) fn reconstruct(scenario: &Scenario, t: f64, y: &RelativeState) -> Rec
     }
 }
 
+/// The summary of a contact solved in relative coordinates (`reduced`, the
+/// booted engine, the shell and the booted series): the state `end` (δ, δ̇
+/// and the energy dissipated) at separation time `t`, the extremes located
+/// along the way and the path's own energy budget. Exit velocities by
+/// [`reconstruct`], Eq. 2's impulse, and Eq. 36 from δ̇ itself (v_b − v_f =
+/// −δ̇, without the cancellation of two lab-frame speeds). Checked finite.
+pub(crate) fn separated(
+    scenario: &Scenario,
+    t: f64,
+    end: &RelativeState,
+    extremes: Extremes,
+    energy: EnergyBudget,
+    evaluations: u64,
+    method: SolverPath,
+) -> Result<Outcome, KickError> {
+    let r = reconstruct(scenario, t, end);
+    crate::ode::check_finite(&Outcome {
+        v_ball_out: r.ball_velocity,
+        v_foot_out: r.foot_velocity,
+        speed_ratio: Outcome::ratio(r.ball_velocity, scenario.foot_speed()),
+        peak_force: extremes.peak_force,
+        peak_force_time: extremes.peak_force_time,
+        contact_time: t,
+        max_compression: extremes.max_compression,
+        max_compression_time: extremes.max_compression_time,
+        impulse: scenario.ball_mass() * (r.ball_velocity - scenario.ball_speed()), // Eq. 2
+        restitution: -end[1] / scenario.approach_speed(),                          // Eq. 36
+        energy,
+        stop: StopReason::Separated { t },
+        evaluations,
+        method,
+    })
+}
+
 fn sample<L: ContactLaw>(scenario: &Scenario, law: &L, t: f64, y: &RelativeState, phase: ContactPhase) -> Sample {
     let r = reconstruct(scenario, t, y);
     Sample {
@@ -188,26 +223,8 @@ impl Reduced {
             }
             None => engine.run(scenario, &law, y0, StopAt::Separation, None)?,
         };
-        let r = reconstruct(scenario, end.time, &end.state);
-        let outcome = Outcome {
-            v_ball_out: r.ball_velocity,
-            v_foot_out: r.foot_velocity,
-            speed_ratio: Outcome::ratio(r.ball_velocity, scenario.foot_speed()),
-            peak_force: end.peak_force,
-            peak_force_time: end.peak_force_time,
-            contact_time: end.time,
-            max_compression: end.max_compression,
-            max_compression_time: end.max_compression_time,
-            impulse: scenario.ball_mass() * (r.ball_velocity - scenario.ball_speed()), // Eq. 2
-            // Eq. 36 from δ̇ itself: v_b − v_f = −δ̇ without the cancellation
-            // of two lab-frame speeds.
-            restitution: -end.state[1] / scenario.approach_speed(),
-            energy: ContactSystem::budget(&system, scenario, end.time, &end.state),
-            stop: StopReason::Separated { t: end.time },
-            evaluations: engine.evaluations,
-            method: SolverPath::Reduced,
-        };
-        crate::ode::check_finite(&outcome)?;
+        let energy = ContactSystem::budget(&system, scenario, end.time, &end.state);
+        let outcome = separated(scenario, end.time, &end.state, end.extremes(), energy, engine.evaluations, SolverPath::Reduced)?;
         if let Some(step) = self.method.fixed_step() {
             crate::stability::check_energy(scenario, &law, &outcome.energy, step, outcome.contact_time)?;
         }

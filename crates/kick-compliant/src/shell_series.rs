@@ -42,8 +42,9 @@
 
 use crate::events::proves_trapped;
 use crate::events::ContactSystem;
-use crate::reduced::{reconstruct, RelativeOde, RelativeState};
-use kick_core::{roots, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath, StopReason};
+use crate::ode::Extremes;
+use crate::reduced::{separated, RelativeOde, RelativeState};
+use kick_core::{roots, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath};
 
 /// Order K of the Taylor steps (δ to t^K).
 pub const ORDER: usize = 20;
@@ -62,6 +63,18 @@ pub(crate) const STEP_SCALE: f64 = 1e-5;
 /// Points per step at which δ, δ̇ and dF/dt are sampled for sign changes.
 pub(crate) const SAMPLES: usize = 4;
 pub(crate) const K: usize = ORDER;
+
+/// 1/k for k = 0..=K (INVERSE[0] unused): the recurrences multiply by it,
+/// a division being the slowest link of their order-by-order chain.
+pub(crate) const INVERSE: [f64; K + 1] = {
+    let mut table = [0.0; K + 1];
+    let mut k = 1;
+    while k <= K {
+        table[k] = 1.0 / k as f64;
+        k += 1;
+    }
+    table
+};
 
 /// True when this path solves the scenario: the shell law with a drive that
 /// pushes the foot on (or none).
@@ -86,6 +99,9 @@ pub(crate) struct ElasticJet {
     absolute: f64,
     gamma: f64,
     shell_stiffness: f64,
+    /// 1/(4R³) and 1/f_0: multiplied by, not divided by, on the chain.
+    inverse_volume: f64,
+    inverse_f0: f64,
     q: [f64; K + 1],
     cube: [f64; K + 1],
     f: [f64; K + 1],
@@ -106,6 +122,8 @@ impl ElasticJet {
             absolute,
             gamma,
             shell_stiffness: ball.shell_stiffness,
+            inverse_volume: 1.0 / (4.0 * r * r * r),
+            inverse_f0: 0.0,
             q: [0.0; K + 1],
             cube: [0.0; K + 1],
             f: [0.0; K + 1],
@@ -119,6 +137,7 @@ impl ElasticJet {
         if !(jet.f[0] > 0.0) {
             return Err(KickError::Integration { time: 0.0, reason: format!("compression {delta0} m leaves no gas in the ball") });
         }
+        jet.inverse_f0 = 1.0 / jet.f[0];
         // (1 − c)^(−γ) and the gauge pressure with the digits of a small cap.
         let log_ratio = -(-cap0).ln_1p();
         jet.w[0] = (gamma * log_ratio).exp();
@@ -134,9 +153,9 @@ impl ElasticJet {
         self.q[k] = (0..=k).map(|i| d[i] * d[k - i]).sum();
         self.cube[k] = (0..=k).map(|i| self.q[i] * d[k - i]).sum();
         if k > 0 {
-            self.f[k] = -(3.0 * r * self.q[k] - self.cube[k]) / (4.0 * r * r * r);
+            self.f[k] = -(3.0 * r * self.q[k] - self.cube[k]) * self.inverse_volume;
             let s: f64 = (1..=k).map(|j| ((a + 1.0) * j as f64 - k as f64) * self.f[j] * self.w[k - j]).sum();
-            self.w[k] = s / (k as f64 * self.f[0]);
+            self.w[k] = s * self.inverse_f0 * INVERSE[k];
             self.g[k] = self.absolute * self.w[k];
         }
         self.area[k] = std::f64::consts::PI * (2.0 * r * d[k] - self.q[k]);
@@ -282,24 +301,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, tolerance: f64) -> Result<Out
         }
     }
     let end = RelativeState::new(0.0, rate, dissipated);
-    let r = reconstruct(scenario, t, &end);
-    let system = RelativeOde::new(scenario, ball);
-    let outcome = Outcome {
-        v_ball_out: r.ball_velocity,
-        v_foot_out: r.foot_velocity,
-        speed_ratio: Outcome::ratio(r.ball_velocity, scenario.foot_speed()),
-        peak_force,
-        peak_force_time,
-        contact_time: t,
-        max_compression,
-        max_compression_time,
-        impulse: scenario.ball_mass() * (r.ball_velocity - scenario.ball_speed()), // Eq. 2
-        restitution: -rate / v0,
-        energy: system.budget(scenario, t, &end),
-        stop: StopReason::Separated { t },
-        evaluations: u64::from(steps),
-        method: SolverPath::Series,
-    };
-    crate::ode::check_finite(&outcome)?;
-    Ok(outcome)
+    let energy = RelativeOde::new(scenario, ball).budget(scenario, t, &end);
+    let extremes = Extremes { peak_force, peak_force_time, max_compression, max_compression_time };
+    separated(scenario, t, &end, extremes, energy, u64::from(steps), SolverPath::Series)
 }

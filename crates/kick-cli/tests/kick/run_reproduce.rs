@@ -67,6 +67,15 @@ fn reproduce_writes_results_figures_and_report() {
     ] {
         assert!(timing.contains("## Sweeps into result files") && timing.contains(command), "{command}: {timing}");
     }
+    // The flown 3D sweep's rate beside the same kicks unflown (issue 32), and the booted 1D kick's cost (issue 31).
+    for needle in [
+        "Flown 3D kicks into a file (`kick sweep3d --samples 200 --seed 1 --threads 2 --law shell --range contact_depth=0,0.05",
+        "rows/s on 2 threads**",
+        "the flown rows cost",
+        "the shell ball's cost (`kick_compliant::boot::series`",
+    ] {
+        assert!(timing.contains(needle), "{needle}: {timing}");
+    }
     // The machine and the build named; every ratio with its range; the aims of flight.md.
     for needle in ["Build: rustc ", "; profile ", "clock ", "x (range ", "--target 25,2.6,2 --spin 0,0,50", "--target 25,2.6,2 --from kick"]
     {
