@@ -572,6 +572,12 @@ impl<const N: usize> Stepper<N> {
         self.h = h;
     }
 
+    /// Absolute tolerance per component from the next step on (a component
+    /// whose meaning changes with the phase).
+    pub fn set_absolute_tolerance(&mut self, absolute_tolerance: SVector<f64, N>) {
+        self.absolute_tolerance = absolute_tolerance;
+    }
+
     /// Bound later steps to `h_max` (to land on a known end of the independent variable).
     pub fn set_max_step(&mut self, h_max: f64) {
         self.h_max = h_max;
