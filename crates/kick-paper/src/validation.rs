@@ -35,9 +35,8 @@ const NEEDED_BY: &str = "the validation chapter (kick_paper::validation)";
 /// Drop height of the FIFA rebound test, m.
 pub const FIFA_DROP_HEIGHT: f64 = 2.0;
 
-/// The foot every kick of the chapter runs with: the one place to switch
-/// the kick rows to another foot (issue 31's leg: its apparent inertia and a
-/// compliant boot).
+/// The foot every kick of the chapter runs with but the realistic foot's
+/// own 1D rows ([`laws`]): Table 1's, the paper's level.
 pub const VALIDATION_FOOT: Foot = Foot::Table1;
 
 /// A foot the kick rows can run with.
@@ -47,25 +46,37 @@ pub enum Foot {
     /// Table 1's rigid foot: 3 kg of effective mass at 22 m/s, the paper's
     /// values, set for none of these kicks.
     Table1,
+    /// The realistic foot (`leg = true`): the leg's apparent mass along the
+    /// line of motion at its default pose (Eq. 11) and the boot identified
+    /// from the mechanical limb's fastest kick in series.
+    Leg,
 }
 
 impl Foot {
     pub fn name(self) -> &'static str {
         match self {
             Foot::Table1 => "Table 1's rigid foot, 3 kg effective mass (assumed)",
+            Foot::Leg => {
+                "the leg at its default pose (knee 30°, ankle 60°, thigh 10°: assumed; its apparent mass along the line of motion, Eq. 11) \
+                 with the boot identified from the limb's fastest kick in series"
+            }
         }
     }
     /// Not measured or derived for the kicks compared: rows whose verdict
     /// hinges on it are sensitivity statements.
     pub fn assumed(self) -> bool {
         match self {
-            Foot::Table1 => true,
+            // The leg's pose is assumed, and no kick compared measured its foot.
+            Foot::Table1 | Foot::Leg => true,
         }
     }
     /// `s` with this foot.
     pub fn apply(self, s: &Scenario) -> Result<Scenario, String> {
         match self {
             Foot::Table1 => Ok(*s),
+            Foot::Leg => s
+                .on_foot(kick_core::Foot { leg: Some(kick_core::leg::LegPose::DEFAULT), boot: Some(kick_core::boot::IDENTIFIED) })
+                .map_err(error),
         }
     }
 }
@@ -76,29 +87,41 @@ pub fn patch_offsets() -> Vec<f64> {
     crate::patch::offsets().into_iter().filter(|&e| e < DEFAULT_BALL_RADIUS).collect()
 }
 
-/// One law the 1D kick is run with.
+/// One law the 1D kick is run with, on its foot.
 #[derive(Debug, Clone, Copy)]
 struct Law {
     name: &'static str,
     scenario: Scenario,
     pressure: Option<f64>,
+    foot: Foot,
 }
 
-/// The two normal laws of the 1D kick, each with [`VALIDATION_FOOT`].
-fn laws() -> Result<[Law; 2], String> {
+/// The two normal laws of the 1D kick, each with [`VALIDATION_FOOT`], and
+/// the shell ball on the realistic foot ([`Foot::Leg`]), whose boot the
+/// limb's fastest kick set (those rows are its calibration).
+fn laws() -> Result<[Law; 3], String> {
     let base = VALIDATION_FOOT.apply(&Scenario::baseline())?;
     let ball = ShellBall::default_with_radius(DEFAULT_BALL_RADIUS).map_err(|e| e.to_string())?;
+    let leg = Foot::Leg.apply(&Scenario::baseline())?;
     Ok([
-        Law { name: "paper's law (Table 1)", scenario: base, pressure: None },
-        Law { name: "shell ball (FIFA-calibrated)", scenario: base.with_shell(ball), pressure: Some(ball.pressure) },
+        Law { name: "paper's law (Table 1)", scenario: base, pressure: None, foot: VALIDATION_FOOT },
+        Law { name: "shell ball (FIFA-calibrated)", scenario: base.with_shell(ball), pressure: Some(ball.pressure), foot: VALIDATION_FOOT },
+        Law {
+            name: "shell ball (FIFA-calibrated) on the leg and its boot",
+            scenario: leg.with_shell(ball),
+            pressure: Some(ball.pressure),
+            foot: Foot::Leg,
+        },
     ])
 }
 
 /// The conditions of a 1D model run, in words.
 fn conditions(law: &Law, s: &Scenario, why_speed: &str) -> String {
     let pressure = law.pressure.map_or(String::new(), |p| format!(", {} bar", short(p / 1e5)));
+    let boot =
+        s.boot().map_or(String::new(), |b| format!(" through the boot (k_b {} N/m, c_b {} N s/m)", short(b.stiffness), short(b.damping)));
     format!(
-        "instep, foot {} kg at {:.2} m/s{why_speed}; ball {} kg, R {} m{pressure}, at rest",
+        "instep, foot {} kg{boot} at {:.2} m/s{why_speed}; ball {} kg, R {} m{pressure}, at rest",
         short(s.effective_foot_mass()),
         s.foot_speed(),
         short(s.ball_mass()),
@@ -232,14 +255,13 @@ fn ball_rows(m: &Measurements) -> Result<Vec<Row>, String> {
 
 /// The 1D instep kick beside every contact measurement, under both laws.
 fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
-    let foot = VALIDATION_FOOT;
     let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error);
     let mid = |key: &str| -> Result<f64, String> { get(key)?.midpoint().ok_or_else(|| format!("`{key}` has no number")) };
     let tol_speed = mid("ball_speed_tol2002")?;
     let nunome_speed = mid("ball_speed_instep_nunome2002")?;
     let mut rows = Vec::new();
     for law in laws()? {
-        let s = law.scenario;
+        let (s, foot) = (law.scenario, law.foot);
         let run = |s: &Scenario| contact_model(s).map_err(error);
         let at_speed = |s: &Scenario, v: f64| -> Result<(Scenario, ContactModel), String> {
             let matched = with_ball_speed(s, v).map_err(error)?;
@@ -250,9 +272,10 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
         let base = run(&s)?;
         let assumed = "the assumed foot (mass and speed): no foot speed goes with the pooled range";
         let pooled = "pooled over soccer instep kicks and rugby and Australian-football punts";
-        let short_contact = match law.pressure {
-            None => "a rigid sphere on a rigid instep through Table 1's stiff power law; a real ball wraps around the instep and its shell bends, which is softer and lasts longer",
-            Some(_) => "the pressurised ball flattens on a flat, rigid instep (pressure times patch area); the foot's soft tissue and a curved instep, not modelled, lengthen a real contact",
+        let short_contact = match (law.pressure, foot) {
+            (None, _) => "a rigid sphere on a rigid instep through Table 1's stiff power law; a real ball wraps around the instep and its shell bends, which is softer and lasts longer",
+            (Some(_), Foot::Table1) => "the pressurised ball flattens on a flat, rigid instep (pressure times patch area); the foot's soft tissue and a curved instep, not modelled, lengthen a real contact",
+            (Some(_), Foot::Leg) => "the pressurised ball flattens on a flat instep behind the boot's layer, which the limb's fastest kick set (a linear layer, so the contact time hardly moves with speed); a curved instep is not modelled",
         };
         rows.push(
             row(
@@ -293,9 +316,19 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
             let ratio = Measured::ratio(&get(ball_key)?, &get(foot_key)?).ok_or("limb speeds must be > 0")?;
             let target = ratio.midpoint().unwrap_or(f64::NAN);
             let e = k.speed_ratio * (c.effective_foot_mass() + c.ball_mass()) / c.effective_foot_mass() - 1.0;
-            rows.push(
+            // On the leg, the fastest kick's contact time and restitution set the boot.
+            let sets_boot = foot == Foot::Leg && end == "fastest";
+            let role = if sets_boot { Role::Calibration } else { Role::Prediction };
+            let calibrated = |r: Row| {
+                if sets_boot {
+                    r.sets("the boot's k_b and c_b (kick_compliant::boot::identify: this contact time and the COR band's centre 0.725)")
+                } else {
+                    r
+                }
+            };
+            rows.push(calibrated(
                 row(
-                    Role::Prediction,
+                    role,
                     &c,
                     &why,
                     Comparison::new(
@@ -308,12 +341,15 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
                     ),
                 )
                 .hinges_on(foot, limb_mass, mass_meeting(target, |mass| Ok(run(&with_mass(&c, mass)?)?.speed_ratio))),
-            );
+            ));
             let t = mid(time_key)?;
-            rows.push(
-                row(Role::Prediction, &c, &why, Comparison::new(format!("contact time, limb, {end}"), get(time_key)?, k.contact_time, af))
-                    .hinges_on(foot, limb_mass, mass_meeting(t, |mass| Ok(run(&with_mass(&c, mass)?)?.contact_time))),
-            );
+            rows.push(calibrated(
+                row(role, &c, &why, Comparison::new(format!("contact time, limb, {end}"), get(time_key)?, k.contact_time, af)).hinges_on(
+                    foot,
+                    limb_mass,
+                    mass_meeting(t, |mass| Ok(run(&with_mass(&c, mass)?)?.contact_time)),
+                ),
+            ));
             let d = mid(travel_key)?;
             rows.push(
                 row(Role::Prediction, &c, &why, Comparison::new(format!("ball travel, limb, {end}"), get(travel_key)?, k.ball_travel, af))
@@ -986,13 +1022,16 @@ impl Validation {
              normalised residual z = (model − measured)/u. A population's spread (players, kicks) is not a measurement \
              uncertainty; where a source states none, the row's note gives the rounding of its published digits, a lower \
              bound on u, the table gives model/measured instead of z, and the row is not counted. Every kick runs with one declared foot, **{}** \
-             (`kick_paper::validation::VALIDATION_FOOT`); a row whose verdict hinges on that assumption is a *sensitivity* \
-             statement and says which foot mass or speed would meet the measurement. A finite-element result is a *model \
+             (`kick_paper::validation::VALIDATION_FOOT`), but for the 1D shell ball's rows run again on the realistic foot (`--leg`): \
+             **{}**, whose boot the limb's fastest kick set, so its two rows there are calibrations. A row whose verdict hinges on \
+             either foot is a *sensitivity* statement (neither was measured with the kicks compared) and says which foot mass or \
+             speed would meet the measurement. A finite-element result is a *model \
              comparison*, not a measurement. Values in SI units; spins in rad/s.\n",
             h.counted,
             if h.counted == 1 { "" } else { "s" },
             h.within_two_u,
-            self.foot.name()
+            self.foot.name(),
+            Foot::Leg.name()
         );
         let _ = writeln!(w, "| rows | number |\n|---|---|");
         for (role, n) in &h.by_role {
