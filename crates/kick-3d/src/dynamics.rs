@@ -353,8 +353,7 @@ impl Dynamics {
                 Some(boot) => boot.force_rate_parts(d_delta, d_rate, rate, boot_rate),
             };
             let force = n * normal_force + friction;
-            normal_force_rate =
-                force_rate + per_acceleration * foot_frame.compression_acceleration(self, force, lever_foot.cross(-force));
+            normal_force_rate = force_rate + per_acceleration * foot_frame.compression_acceleration(self, force, lever_foot.cross(-force));
             crate::tangential::slip(k_t, s, sliding, cap, self.friction * normal_force_rate)
         };
         // The spring is carried along the turning tangent plane: ξ̇ gains −n (ṅ · ξ)

@@ -213,6 +213,33 @@ pub(crate) fn integral(c: &[f64], t: f64) -> f64 {
     t * c.iter().enumerate().rev().fold(0.0, |acc, (k, &x)| acc * t + x / (k + 1) as f64)
 }
 
+/// True when the force reaches its clamp at zero within a step of length
+/// `h` while the compression is on (sampled at SAMPLES points).
+pub(crate) fn reaches_clamp(compression: &[f64], force: &[f64], h: f64, length: f64) -> bool {
+    (1..=SAMPLES).any(|j| {
+        let x = h * j as f64 / SAMPLES as f64;
+        poly(compression, x) > 1e-9 * length && poly(force, x) <= 0.0
+    })
+}
+
+/// The step's largest compression (at its turn inside the step) and force
+/// (at its turn or the step's end) into the running `extremes`; `t` is the
+/// step's start.
+pub(crate) fn step_extremes(compression: &[f64], force: &[f64], t: f64, h: f64, extremes: &mut Extremes) {
+    if let Some(turn) = first_fall(|x| derivative(compression, x), h) {
+        let reached = poly(compression, turn);
+        if reached > extremes.max_compression {
+            (extremes.max_compression, extremes.max_compression_time) = (reached, t + turn);
+        }
+    }
+    for candidate in [first_fall(|x| derivative(force, x), h), Some(h)].into_iter().flatten() {
+        let value = poly(force, candidate);
+        if value > extremes.peak_force {
+            (extremes.peak_force, extremes.peak_force_time) = (value, t + candidate);
+        }
+    }
+}
+
 /// The first time in (0, h] where `f` changes sign from positive to
 /// non-positive, sampled at SAMPLES points and refined by Brent's method.
 pub(crate) fn first_fall(f: impl Fn(f64) -> f64, h: f64) -> Option<f64> {
@@ -237,7 +264,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, tolerance: f64) -> Result<Out
     let time_unit = (mu / ball.small_compression_stiffness()).sqrt();
     let length = v0 * time_unit;
     let (mut t, mut delta, mut rate, mut dissipated) = (0.0, 0.0, v0, 0.0);
-    let (mut peak_force, mut peak_force_time, mut max_compression, mut max_compression_time) = (0.0_f64, 0.0, 0.0, 0.0);
+    let mut extremes = Extremes::new(0.0);
     let mut steps = 0u32;
     loop {
         steps += 1;
@@ -259,29 +286,13 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, tolerance: f64) -> Result<Out
             h = end;
         }
         // The clamp (module docs): F > 0 wherever δ > 0 within the step.
-        for j in 1..=SAMPLES {
-            let x = h * j as f64 / SAMPLES as f64;
-            if poly(&s.delta, x) > 1e-9 * length && poly(&s.force, x) <= 0.0 {
-                return Err(KickError::NotApplicable {
-                    solver: "series",
-                    reason: "the shell's loss reaches the clamp F = 0 on this rebound (faster than p0/β); `reduced` solves it",
-                });
-            }
+        if reaches_clamp(&s.delta, &s.force, h, length) {
+            return Err(KickError::NotApplicable {
+                solver: "series",
+                reason: "the shell's loss reaches the clamp F = 0 on this rebound (faster than p0/β); `reduced` solves it",
+            });
         }
-        let rate_at = |x: f64| derivative(&s.delta, x);
-        if let Some(turn) = first_fall(rate_at, h) {
-            let reached = poly(&s.delta, turn);
-            if reached > max_compression {
-                (max_compression, max_compression_time) = (reached, t + turn);
-            }
-        }
-        let force_rate = |x: f64| derivative(&s.force, x);
-        for candidate in [first_fall(force_rate, h), Some(h)].into_iter().flatten() {
-            let value = poly(&s.force, candidate);
-            if value > peak_force {
-                (peak_force, peak_force_time) = (value, t + candidate);
-            }
-        }
+        step_extremes(&s.delta, &s.force, t, h, &mut extremes);
         dissipated += integral(&s.dissipation, h);
         t += h;
         rate = derivative(&s.delta, h);
@@ -302,6 +313,5 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, tolerance: f64) -> Result<Out
     }
     let end = RelativeState::new(0.0, rate, dissipated);
     let energy = RelativeOde::new(scenario, ball).budget(scenario, t, &end);
-    let extremes = Extremes { peak_force, peak_force_time, max_compression, max_compression_time };
     separated(scenario, t, &end, extremes, energy, u64::from(steps), SolverPath::Series)
 }

@@ -155,23 +155,21 @@ pub fn read_f64_attr(location: &hdf5::Location, name: &str) -> Option<f64> {
 /// group, read on its own: None when the file, the group or the attribute
 /// is missing (for readers that hold no HDF5 handle, e.g. kick-paper).
 pub fn file_str_attr(path: &Path, group: &str, name: &str) -> Option<String> {
-    let file = hdf5::File::open(path).ok()?;
-    if group.is_empty() {
-        read_str_attr(&file, name)
-    } else {
-        let group = file.group(group).ok()?;
-        read_str_attr(&group, name)
-    }
+    file_attr(path, group, |at| read_str_attr(at, name))
 }
 
 /// [`file_str_attr`] for a scalar f64 attribute.
 pub fn file_f64_attr(path: &Path, group: &str, name: &str) -> Option<f64> {
+    file_attr(path, group, |at| read_f64_attr(at, name))
+}
+
+fn file_attr<T>(path: &Path, group: &str, read: impl Fn(&hdf5::Location) -> Option<T>) -> Option<T> {
     let file = hdf5::File::open(path).ok()?;
     if group.is_empty() {
-        read_f64_attr(&file, name)
+        read(&file)
     } else {
         let group = file.group(group).ok()?;
-        read_f64_attr(&group, name)
+        read(&group)
     }
 }
 

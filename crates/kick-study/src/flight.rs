@@ -403,25 +403,9 @@ impl Printable for FlightRun {
         let _ = writeln!(w, "{:<24} {}", "landing_point", v(&o.landing_point, "m"));
         let _ = writeln!(w, "{:<24} {} m (at {} s)", "apex_height", sig(o.apex_height), sig(o.apex_time));
         let _ = writeln!(w, "{:<24} {}", "landing_velocity", v(&o.landing_velocity, "m/s"));
-        match &o.crossing {
-            Some(c) => {
-                let _ = writeln!(
-                    w,
-                    "{:<24} x = {} m at {} s: height {} m, lateral offset {} m",
-                    "crossing",
-                    sig(c.distance),
-                    sig(c.time),
-                    sig(c.height),
-                    sig(c.lateral_offset)
-                );
-            }
-            None => {
-                if let Some(d) = f.distance() {
-                    let _ = writeln!(w, "{:<24} none: the ball lands before x = {} m", "crossing", sig(d));
-                }
-            }
-        }
-        for (d, c) in self.planes.iter().zip(&self.crossings) {
+        // One line per plane: the single crossing's, then the other planes'.
+        let single = f.distance().map(|d| (d, o.crossing.as_ref()));
+        for (d, c) in single.into_iter().chain(self.planes.iter().copied().zip(self.crossings.iter().map(Option::as_ref))) {
             let _ = match c {
                 Some(c) => writeln!(
                     w,
@@ -432,7 +416,7 @@ impl Printable for FlightRun {
                     sig(c.height),
                     sig(c.lateral_offset)
                 ),
-                None => writeln!(w, "{:<24} none: the ball lands before x = {} m", "crossing", sig(*d)),
+                None => writeln!(w, "{:<24} none: the ball lands before x = {} m", "crossing", sig(d)),
             };
         }
         let _ = writeln!(w, "{:<24} {}", "steps", o.steps);

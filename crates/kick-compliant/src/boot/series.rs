@@ -30,7 +30,7 @@ use crate::events::proves_trapped;
 use crate::events::ContactSystem;
 use crate::ode::Extremes;
 use crate::reduced::{separated, RelativeState};
-use crate::shell_series::{derivative, first_fall, integral, poly, ElasticJet, INVERSE, K};
+use crate::shell_series::{derivative, first_fall, integral, poly, reaches_clamp, step_extremes, ElasticJet, INVERSE, K};
 use kick_core::{Boot, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath};
 
 /// The step's last terms of δ and b are held to BOOTED_STEP_SCALE ×
@@ -126,7 +126,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
     let time_unit = (mu * (1.0 / k0 + 1.0 / boot.stiffness)).sqrt();
     let length = v0 * time_unit;
     let (mut t, mut delta, mut rate, mut layer, mut dissipated) = (0.0, 0.0, v0, 0.0, 0.0);
-    let (mut peak_force, mut peak_force_time, mut max_compression, mut max_compression_time) = (0.0_f64, 0.0, 0.0, 0.0);
+    let mut extremes = Extremes::new(0.0);
     let mut steps = 0u32;
     let trap_floor = drive_share * drive_share / (2.0 * boot.stiffness);
     loop {
@@ -160,27 +160,13 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
             h = end;
         }
         // The clamp within the step (module docs): F > 0 wherever β > 0, sampled as the bare series does.
-        for j in 1..=crate::shell_series::SAMPLES {
-            let x = h * j as f64 / crate::shell_series::SAMPLES as f64;
-            if poly(ball_poly, x) > 1e-9 * length && poly(&s.force, x) <= 0.0 {
-                return Err(KickError::NotApplicable {
-                    solver: "series",
-                    reason: "the ball's force reaches its clamp at zero (E + s A dδ_B/dt <= 0)",
-                });
-            }
+        if reaches_clamp(ball_poly, &s.force, h, length) {
+            return Err(KickError::NotApplicable {
+                solver: "series",
+                reason: "the ball's force reaches its clamp at zero (E + s A dδ_B/dt <= 0)",
+            });
         }
-        if let Some(turn) = first_fall(|x| derivative(ball_poly, x), h) {
-            let reached = poly(ball_poly, turn);
-            if reached > max_compression {
-                (max_compression, max_compression_time) = (reached, t + turn);
-            }
-        }
-        for candidate in [first_fall(|x| derivative(&s.force, x), h), Some(h)].into_iter().flatten() {
-            let value = poly(&s.force, candidate);
-            if value > peak_force {
-                (peak_force, peak_force_time) = (value, t + candidate);
-            }
-        }
+        step_extremes(ball_poly, &s.force, t, h, &mut extremes);
         dissipated += integral(&s.dissipation, h);
         t += h;
         rate = derivative(&s.delta, h);
@@ -206,6 +192,5 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
         }
     }
     let energy = BootedOde::new(scenario, ball, boot).budget(scenario, t, &BootedState::new(delta, rate, layer, dissipated));
-    let extremes = Extremes { peak_force, peak_force_time, max_compression, max_compression_time };
     separated(scenario, t, &RelativeState::new(delta, rate, dissipated), extremes, energy, u64::from(steps), SolverPath::Series)
 }

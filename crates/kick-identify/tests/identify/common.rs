@@ -4,6 +4,15 @@ use kick_identify::{FitReport, ModelPoint};
 
 /// |estimate − truth| < 3σ for each parameter, and s² within four standard
 /// deviations of its expectation 1 (s² ~ χ²_ν/ν has sd √(2/ν)).
+/// From exact data every estimate is the truth to 1e-6 (relative).
+pub fn assert_exact(truth: &ModelPoint, report: &FitReport) {
+    assert!(report.converged, "{}", report.termination);
+    for e in &report.estimates {
+        let t = truth.get(e.parameter).unwrap();
+        assert!((e.value / t - 1.0).abs() < 1e-6, "{}: {} vs {t}", e.parameter.name(), e.value);
+    }
+}
+
 pub fn assert_recovered(truth: &ModelPoint, report: &FitReport) {
     assert!(report.converged, "{}", report.termination);
     for e in &report.estimates {
