@@ -314,6 +314,11 @@ impl ModelPoint {
                 match (spec.get(def.name).and_then(|v| v.as_f64()), def.default) {
                     (Some(x), _) => Ok(x),
                     (None, DefaultValue::Number(x)) => Ok(x),
+                    // A derived default (the boot's: none on the rigid foot) has no number to start from.
+                    (None, DefaultValue::Derived(text)) => Err(IdentifyError::data(
+                        def.name,
+                        format!("no finite value to start the fit from: give one (its default: {text})"),
+                    )),
                     _ => Err(IdentifyError::data(def.name, "no value: give it (it has no default)")),
                 }
             }

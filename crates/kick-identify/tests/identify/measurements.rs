@@ -212,8 +212,11 @@ fn kick_measurements_fit_the_boot_by_name() {
             assert_recovered(&truth, &report);
         }
     }
-    // Table 1's rigid foot has no layer: its loss is refused, named.
+    // Table 1's rigid foot has no layer: its loss is refused, named, and its
+    // stiffness (infinite) is no start for a fit.
     let rigid = ModelPoint::from(kick_core::ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() }.build().unwrap());
+    let e = rigid.get(stiffness).unwrap_err().to_string();
+    assert!(e.contains("boot_stiffness") && e.contains("no finite value to start the fit from"), "{e}");
     let e = rigid.check_fittable(damping, false).unwrap_err().to_string();
     assert!(e.contains("boot_damping"), "{e}");
 }
