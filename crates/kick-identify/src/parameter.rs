@@ -315,10 +315,9 @@ impl ModelPoint {
                     (Some(x), _) => Ok(x),
                     (None, DefaultValue::Number(x)) => Ok(x),
                     // A derived default (the boot's: none on the rigid foot) has no number to start from.
-                    (None, DefaultValue::Derived(text)) => Err(IdentifyError::data(
-                        def.name,
-                        format!("no finite value to start the fit from: give one (its default: {text})"),
-                    )),
+                    (None, DefaultValue::Derived(text)) => {
+                        Err(IdentifyError::data(def.name, format!("no finite value to start the fit from: give one (its default: {text})")))
+                    }
                     _ => Err(IdentifyError::data(def.name, "no value: give it (it has no default)")),
                 }
             }
