@@ -2,7 +2,7 @@
 //! and µs per kick of the shell ball's cap patch kick at 5 cm, μ = 0.5, with no
 //! foot model, the leg without a boot, the boot alone, and the leg with its boot,
 //! timed in alternation (ratios within one run):
-//! `cargo run --release -p kick-3d --example leg_cost [SECONDS]`.
+//! `cargo run --release -p kick-3d --example leg_cost_3d [SECONDS]`.
 use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
 use kick_core::ScenarioSpec;
 use std::hint::black_box;

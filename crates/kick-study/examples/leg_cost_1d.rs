@@ -1,6 +1,6 @@
 //! Same-run cost of the 1D shell kick with and without the leg and its boot
 //! (what `kick bench` reports), with step counts: `cargo run --release -p
-//! kick-study --example leg_cost [SAMPLES]`.
+//! kick-study --example leg_cost_1d [SAMPLES]`.
 use kick_core::Solver;
 use kick_study::sample::SampledSweep;
 use std::time::Instant;
