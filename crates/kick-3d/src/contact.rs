@@ -218,6 +218,29 @@ pub struct Local {
     pub patch: Option<PatchForce>,
     /// δ̇_b, the boot's compression rate (0 without a boot).
     pub boot_rate: f64,
+    /// The bodies' rates a slip phase computed for δ̈ (the slider's cap
+    /// rate), and the loads they were computed under: the right-hand side
+    /// takes them when its own loads are these, bit for bit, instead of
+    /// computing them again (with the leg, a 6×6 product and four turns).
+    pub(crate) body_rates: Option<BodyRates>,
+}
+
+/// ẇ, Ω̇ and the foot's world acceleration under `force` and `torque`
+/// ([`Relative::body_rates`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct BodyRates {
+    force: Vec3,
+    torque: Vec3,
+    rates: (Vec3, Vec3, Vec3),
+}
+
+impl BodyRates {
+    /// The rates, if they were computed under exactly these loads.
+    #[inline(always)]
+    fn under(&self, force: Vec3, torque: Vec3) -> Option<(Vec3, Vec3, Vec3)> {
+        let same = |a: Vec3, b: Vec3| a.x.to_bits() == b.x.to_bits() && a.y.to_bits() == b.y.to_bits() && a.z.to_bits() == b.z.to_bits();
+        (same(self.force, force) && same(self.torque, torque)).then_some(self.rates)
+    }
 }
 
 impl Local {
@@ -422,6 +445,7 @@ impl Relative {
         // The slider's cap moves with the normal force: its rate is wanted while slipping.
         let slipping = !self.rigid && self.phase.friction == Friction::Slip && !self.phase.clamped;
         let mut boot_rate = 0.0;
+        let mut body_rates = None;
         let (point, rate, sliding, normal_force, unclamped_force, damping_power, patch, zeta_rate, force_rate) = match &self.patch {
             Some(patch) => {
                 let normal = self.patch_normal::<FACE>(patch, y, delta, n, slipping);
@@ -520,10 +544,9 @@ impl Relative {
                 Friction::Slip => {
                     // The state holds the slider's direction only (see [`SPRING`]).
                     let s = friction_law::slip_direction(xi_t, sliding);
-                    let cap_rate = self.friction
-                        * (force_rate.rate
-                            + force_rate.per_acceleration
-                                * self.compression_acceleration::<FACE>(y, n, normal_force, &patch, point, s * -cap));
+                    let (acceleration, rates) = self.compression_acceleration::<FACE>(y, n, normal_force, &patch, point, s * -cap);
+                    body_rates = Some(rates);
+                    let cap_rate = self.friction * (force_rate.rate + force_rate.per_acceleration * acceleration);
                     let mut element = friction_law::slip(k_t, s, sliding, cap, cap_rate);
                     element.spring_rate = friction_law::direction_rate(k_t, xi_t, sliding, cap, rate);
                     element
@@ -553,6 +576,7 @@ impl Relative {
             slip_velocity: element.slip_velocity,
             patch,
             boot_rate,
+            body_rates,
         }
     }
 
@@ -579,11 +603,16 @@ impl Relative {
         let rate = -n.dot(r_dot);
         // The shell law (the patch's only law; others are refused when the kick
         // is built): F(δ, v) = F_el(δ) + β A(δ) v, slope β A exactly.
-        let (elastic, slope) = match &self.law {
-            AnyLaw::Shell(ball) => (ball.elastic_force(delta), ball.loss_slope(delta)),
+        // While slipping, the gradients too (`ShellBall::slip_terms`: one gas pressure for all four).
+        let (elastic, slope, slip_gradient) = match &self.law {
+            AnyLaw::Shell(ball) if slipping && !self.phase.clamped => {
+                let (elastic, slope, d_elastic, d_slope) = ball.slip_terms(delta);
+                (elastic, slope, Some((d_elastic, d_slope)))
+            }
+            AnyLaw::Shell(ball) => (ball.elastic_force(delta), ball.loss_slope(delta), None),
             law => {
                 let (elastic, f1) = law.unclamped_force(delta, 1.0);
-                (elastic, f1 - elastic)
+                (elastic, f1 - elastic, None)
             }
         };
         // A boot moves the foot's surface back by δ_b along n: the ball's
@@ -678,8 +707,10 @@ impl Relative {
         // dF_n/dt of F_el(δ) + S(δ) δ̇ ρ(δ) (S = slope, affine in the rate as
         // above; δ the ball's), through the boot's balance when there is one.
         let force_rate = if slipping && !self.phase.clamped {
-            let (d_elastic, _) = self.law.force_gradient(delta, 0.0);
-            let d_slope = self.law.force_gradient(delta, 1.0).0 - d_elastic;
+            let (d_elastic, d_slope) = slip_gradient.unwrap_or_else(|| {
+                let (d_elastic, _) = self.law.force_gradient(delta, 0.0);
+                (d_elastic, self.law.force_gradient(delta, 1.0).0 - d_elastic)
+            });
             let (rho, d_rho) = ratio;
             let (d_delta, d_rate) = (d_elastic + (d_slope * rho + slope * d_rho) * ball_rate, slope * rho);
             match &self.boot {
@@ -709,7 +740,7 @@ impl Relative {
         patch: &Option<PatchForce>,
         point: Vec3,
         friction: Vec3,
-    ) -> f64 {
+    ) -> (f64, BodyRates) {
         let r = self.centre(y);
         let w = vec3(y, RELATIVE_VELOCITY);
         let omega = vec3(y, FOOT_ANGULAR_VELOCITY);
@@ -720,14 +751,12 @@ impl Relative {
             }
             Some(p) => (p.force + friction, -(r.cross(p.force) + p.moment) - point.cross(friction)),
         };
-        let (w_dot, omega_dot, _) = self.body_rates::<FACE>(y, force, torque);
+        let rates = self.body_rates::<FACE>(y, force, torque);
+        let (w_dot, omega_dot, _) = rates;
         let r_dot = w - omega.cross(r);
         let r_ddot = w_dot - omega_dot.cross(r) - omega.cross(r_dot);
-        if FACE {
-            -r_ddot.x
-        } else {
-            -n.dot(r_ddot) - self.normal_rate(r, r_dot, n).dot(r_dot)
-        }
+        let acceleration = if FACE { -r_ddot.x } else { -n.dot(r_ddot) - self.normal_rate(r, r_dot, n).dot(r_dot) };
+        (acceleration, BodyRates { force, torque, rates })
     }
 
     /// ẇ and Ω̇ (body frame) under `force` on the ball and `torque` on the
@@ -845,7 +874,10 @@ impl Relative {
         let spin = vec3(y, BALL_ANGULAR_VELOCITY);
         let mut dy = State::zeros();
         put3(&mut dy, DISPLACEMENT, w - omega.cross(r));
-        let (w_dot, omega_dot, foot_acceleration) = self.body_rates::<FACE>(y, force, torque);
+        let (w_dot, omega_dot, foot_acceleration) = match c.body_rates.and_then(|b| b.under(force, torque)) {
+            Some(rates) => rates,
+            None => self.body_rates::<FACE>(y, force, torque),
+        };
         put3(&mut dy, RELATIVE_VELOCITY, w_dot);
         put3(&mut dy, FOOT_ANGULAR_VELOCITY, omega_dot);
         if self.leg.is_some() {

@@ -320,6 +320,51 @@ impl ShellBall {
         self.shell_damping * self.patch_area(compression)
     }
 
+    /// (F_el, β A, ∂F/∂δ at δ̇ = 0, ∂(β A)/∂δ) at δ: what a slipping patch
+    /// needs (kick-3d), the gas pressure computed once where
+    /// `elastic_force`, `loss_slope` and two `force_gradient` calls (at
+    /// δ̇ = 0 and 1, the second less the first) computed it seven times.
+    /// The same operations in the same order: equal to theirs to the bit
+    /// (test `slip_terms_are_the_separate_calls_to_the_bit`).
+    #[inline(always)]
+    pub fn slip_terms(&self, compression: f64) -> (f64, f64, f64, f64) {
+        let d = compression.clamp(0.0, 2.0 * self.radius);
+        let slope = self.loss_slope(d);
+        if !(compression > 0.0) {
+            // `elastic` gives the small-compression slope here, `elastic_and_unclamped` zeros.
+            let gradient = self.small_compression_stiffness();
+            let at = |rate: f64| {
+                let d_compression = gradient + self.shell_damping * 2.0 * PI * (self.radius - d) * rate;
+                if d_compression <= 0.0 {
+                    0.0
+                } else {
+                    d_compression
+                }
+            };
+            let d_elastic = at(0.0);
+            return (0.0, slope, d_elastic, at(1.0) - d_elastic);
+        }
+        let r = self.radius;
+        let d_max = compression.min(2.0 * r);
+        let area = PI * d_max * (2.0 * r - d_max);
+        let gauge = self.gauge_pressure(d_max);
+        let shell = self.shell_stiffness * d_max;
+        let elastic = area * gauge + shell;
+        let d_pressure = self.gas_exponent * (gauge + self.atmospheric_pressure) * area / self.gas_volume(d_max);
+        let gradient = d_pressure * area + gauge * 2.0 * PI * (r - d_max) + self.shell_stiffness;
+        let at = |rate: f64| {
+            let force = area * (gauge + self.shell_damping * rate) + shell;
+            let d_compression = gradient + self.shell_damping * 2.0 * PI * (self.radius - d) * rate;
+            if force < 0.0 || (force == 0.0 && d_compression <= 0.0) {
+                0.0
+            } else {
+                d_compression
+            }
+        };
+        let d_elastic = at(0.0);
+        (elastic, slope, d_elastic, at(1.0) - d_elastic)
+    }
+
     /// Hunt–Crossley's χ of the small-compression limit, β/(p0 + k_s/(2πR)),
     /// s/m: restitution there is `laws::exact_restitution(χ V)`.
     pub fn small_compression_hysteresis(&self) -> f64 {
@@ -391,6 +436,22 @@ mod tests {
 
     fn ball() -> ShellBall {
         ShellBall::new(8.0e4, 0.11, 1.4, 2.0e3, 3.6e3).unwrap()
+    }
+
+    /// `slip_terms` is `elastic_force`, `loss_slope` and the two
+    /// `force_gradient` calls it replaces, bit for bit, from before touch to
+    /// past the ball's diameter (where every clamp and branch is met).
+    #[test]
+    fn slip_terms_are_the_separate_calls_to_the_bit() {
+        for b in [ball(), ShellBall::new(6.0e4, 0.11, 1.0, 0.0, 3.6e3).unwrap()] {
+            for i in -20..=500 {
+                let delta = f64::from(i) * 5e-4 + if i % 3 == 0 { 1e-7 } else { 0.0 };
+                let (d_elastic, _) = b.force_gradient(delta, 0.0);
+                let separate = (b.elastic_force(delta), b.loss_slope(delta), d_elastic, b.force_gradient(delta, 1.0).0 - d_elastic);
+                let joint = b.slip_terms(delta);
+                assert_eq!(format!("{joint:?}"), format!("{separate:?}"), "δ = {delta}");
+            }
+        }
     }
 
     /// Small δ: F ≈ (2πR p0 + k_s) δ, the pressure over the patch (the
