@@ -112,6 +112,13 @@ const DIFFERENCE_STEP: f64 = 2e-5;
 /// 0–8 cm) −4.1 %, −2.4 % and −5.0 % at the same tolerances.
 const FIRST_STEP_TIME: f64 = 0.1;
 const FIRST_STEP_ONSET: f64 = 0.05;
+/// With a boot in series, the first step on the time clock is at most this
+/// share of the layer's time constant at touch, c_b/(k_b + k(0))
+/// (`kick_core::Boot::time_constant`): the layer's rate starts from zero
+/// and relaxes on that scale, which holds the first steps to about 0.07 of
+/// it at the default tolerance; from δ*/V_n the cap patch kick with the
+/// leg and its boot paid two rejected steps (22 evaluations) to get there.
+const FIRST_STEP_BOOT: f64 = 0.06;
 
 /// The factor on the absolute tolerance of the slip's direction state
 /// (contact::SPRING) at the law `c`: T/τ with τ = max(|ξ|, ℓ)/(ŝ · v_t) the
@@ -570,8 +577,15 @@ impl Accurate3d {
         // Units of u = δ^(1/p) and of the differences along x.
         let u_unit = length.powf(1.0 / f64::from(contact::CLOCK_POWER));
         let step_of = |clock: Clock| DIFFERENCE_STEP * if clock == Clock::Time { scales.time } else { u_unit };
-        let first_step =
-            (rtol / DEFAULT_TOLERANCE).powf(1.0 / 8.0) * if singular { FIRST_STEP_ONSET * u_unit } else { FIRST_STEP_TIME * scales.time };
+        let first_clock_step = match kick.base.boot() {
+            Some(boot) if !singular => {
+                let touch_stiffness = kick.law.force_gradient(0.0, 0.0).0;
+                (FIRST_STEP_TIME * scales.time).min(FIRST_STEP_BOOT * boot.time_constant(touch_stiffness))
+            }
+            _ if singular => FIRST_STEP_ONSET * u_unit,
+            _ => FIRST_STEP_TIME * scales.time,
+        };
+        let first_step = (rtol / DEFAULT_TOLERANCE).powf(1.0 / 8.0) * first_clock_step;
         let mut stepper = Stepper::starting_with(&system, 0.0, y0, rtol, absolute, if singular { u_unit } else { horizon }, first_step);
         let v_n = kick.normal_approach_speed();
 

@@ -291,8 +291,25 @@ impl ShellBall {
         (area * gauge + shell, area * (gauge + self.shell_damping * compression_rate) + shell)
     }
 
-    /// (F_elastic, dF_elastic/dδ) at δ ≥ 0.
-    #[inline]
+    /// (A, P − p_atm, k_s δ, dF_el/dδ) at δ > 0 (`elastic`'s and
+    /// `elastic_and_unclamped`'s terms, the same operations), None at δ ≤ 0.
+    #[inline(always)]
+    fn pressure_terms(&self, compression: f64) -> Option<(f64, f64, f64, f64)> {
+        if !(compression > 0.0) {
+            return None;
+        }
+        let r = self.radius;
+        let d = compression.min(2.0 * r);
+        let area = PI * d * (2.0 * r - d);
+        let gauge = self.gauge_pressure(d);
+        let d_pressure = self.gas_exponent * (gauge + self.atmospheric_pressure) * area / self.gas_volume(d);
+        let gradient = d_pressure * area + gauge * 2.0 * PI * (r - d) + self.shell_stiffness;
+        Some((area, gauge, self.shell_stiffness * d, gradient))
+    }
+
+    /// (F_elastic, dF_elastic/dδ) at δ ≥ 0 (the gradient's former path,
+    /// which the test of `slip_terms` holds `pressure_terms` to).
+    #[cfg(test)]
     fn elastic(&self, compression: f64) -> (f64, f64) {
         if !(compression > 0.0) {
             return (0.0, self.small_compression_stiffness());
@@ -330,28 +347,10 @@ impl ShellBall {
     pub fn slip_terms(&self, compression: f64) -> (f64, f64, f64, f64) {
         let d = compression.clamp(0.0, 2.0 * self.radius);
         let slope = self.loss_slope(d);
-        if !(compression > 0.0) {
-            // `elastic` gives the small-compression slope here, `elastic_and_unclamped` zeros.
-            let gradient = self.small_compression_stiffness();
-            let at = |rate: f64| {
-                let d_compression = gradient + self.shell_damping * 2.0 * PI * (self.radius - d) * rate;
-                if d_compression <= 0.0 {
-                    0.0
-                } else {
-                    d_compression
-                }
-            };
-            let d_elastic = at(0.0);
-            return (0.0, slope, d_elastic, at(1.0) - d_elastic);
-        }
-        let r = self.radius;
-        let d_max = compression.min(2.0 * r);
-        let area = PI * d_max * (2.0 * r - d_max);
-        let gauge = self.gauge_pressure(d_max);
-        let shell = self.shell_stiffness * d_max;
+        // At δ ≤ 0 `elastic` gives the small-compression slope, `elastic_and_unclamped` zeros.
+        let (area, gauge, shell, gradient) =
+            self.pressure_terms(compression).unwrap_or((0.0, 0.0, 0.0, self.small_compression_stiffness()));
         let elastic = area * gauge + shell;
-        let d_pressure = self.gas_exponent * (gauge + self.atmospheric_pressure) * area / self.gas_volume(d_max);
-        let gradient = d_pressure * area + gauge * 2.0 * PI * (r - d_max) + self.shell_stiffness;
         let at = |rate: f64| {
             let force = area * (gauge + self.shell_damping * rate) + shell;
             let d_compression = gradient + self.shell_damping * 2.0 * PI * (self.radius - d) * rate;
@@ -414,11 +413,13 @@ impl ContactLaw for ShellBall {
     /// where the clamp holds F at 0 (at δ ≤ 0, the one-sided slope while approaching).
     #[inline]
     fn force_and_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64, f64) {
-        let (_, gradient) = self.elastic(compression);
+        // `elastic`'s gradient and the force as `contact_force` computes it, to the bit, from one gas pressure.
+        let (force, gradient) = match self.pressure_terms(compression) {
+            Some((area, gauge, shell, gradient)) => (area * (gauge + self.shell_damping * compression_rate) + shell, gradient),
+            None => (0.0, self.small_compression_stiffness()),
+        };
         let d = compression.clamp(0.0, 2.0 * self.radius);
         let slope = self.loss_slope(d);
-        // The force as `contact_force` computes it, to the bit.
-        let force = self.elastic_and_unclamped(compression, compression_rate).1;
         let d_compression = gradient + self.shell_damping * 2.0 * PI * (self.radius - d) * compression_rate;
         if force < 0.0 || (force == 0.0 && d_compression <= 0.0) {
             return (0.0, 0.0, 0.0); // clamped: F ≡ 0 nearby
@@ -450,6 +451,15 @@ mod tests {
                 let separate = (b.elastic_force(delta), b.loss_slope(delta), d_elastic, b.force_gradient(delta, 1.0).0 - d_elastic);
                 let joint = b.slip_terms(delta);
                 assert_eq!(format!("{joint:?}"), format!("{separate:?}"), "δ = {delta}");
+                // `force_and_gradient` from one gas pressure is its former two-call self.
+                for rate in [-3.0, 0.0, 1.0, 7.5] {
+                    let d = delta.clamp(0.0, 0.22);
+                    let force = b.elastic_and_unclamped(delta, rate).1;
+                    let gradient = b.elastic(delta).1 + b.shell_damping * 2.0 * PI * (b.radius - d) * rate;
+                    let former =
+                        if force < 0.0 || (force == 0.0 && gradient <= 0.0) { (0.0, 0.0, 0.0) } else { (force, gradient, b.loss_slope(d)) };
+                    assert_eq!(format!("{:?}", b.force_and_gradient(delta, rate)), format!("{former:?}"), "δ = {delta}, δ̇ = {rate}");
+                }
             }
         }
     }
