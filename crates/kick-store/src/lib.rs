@@ -15,6 +15,7 @@ pub mod h5;
 pub mod history;
 pub mod layouts;
 pub mod output;
+pub mod patch;
 pub mod provenance;
 pub mod run;
 pub mod shard;

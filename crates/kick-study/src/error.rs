@@ -45,6 +45,12 @@ pub enum StudyError {
     /// An input or output file the user named, and what is wrong with it.
     #[error("{}: {message}", .path.display())]
     File { path: PathBuf, message: String },
+    /// One named 3D kick of a study whose solve failed.
+    #[error("{name}: {source}")]
+    Kick3dRow { name: String, source: Kick3dError },
+    /// A measurement file that cannot be read, or lacks what a study needs.
+    #[error(transparent)]
+    Measurements(#[from] kick_core::measurements::MeasurementError),
     /// One named row of a table (Table 2's) whose solve failed.
     #[error("{name}: {source}")]
     Row { name: String, source: KickError },
@@ -69,7 +75,7 @@ impl StudyError {
     pub fn status(&self) -> Status {
         match self {
             StudyError::Kick(e) | StudyError::Row { source: e, .. } => e.status(),
-            StudyError::Kick3d(e) => e.status(),
+            StudyError::Kick3d(e) | StudyError::Kick3dRow { source: e, .. } => e.status(),
             StudyError::Leg(e) => e.status(),
             StudyError::Flight { source, .. } => source.status(),
             StudyError::Aim { .. } => Status::Refused,
@@ -81,6 +87,7 @@ impl StudyError {
             | StudyError::HistoryRows { .. }
             | StudyError::Flag { .. }
             | StudyError::File { .. }
+            | StudyError::Measurements(_)
             | StudyError::Deflate { .. } => Status::Refused,
         }
     }

@@ -30,6 +30,7 @@ pub mod leg;
 pub mod level;
 pub mod limits;
 pub mod numbers_3d;
+pub mod patch;
 pub mod printable;
 pub mod sample;
 pub mod shard;
