@@ -242,12 +242,12 @@ pub fn write(out: &Path, figures: &Path, measurements: &Path, command: &str) -> 
 /// The runs of a state, total time (ms).
 /// Three significant digits, as the 3D page prints.
 fn sig3(x: f64) -> String {
-    crate::pages_3d::sig(x, 3)
+    crate::units::sig(x, 3)
 }
 
-/// A spin: zero to rounding below [`crate::validation::ZERO_SPIN`].
+/// A spin: zero to rounding below [`crate::units::ZERO_SPIN`].
 fn spin3(x: f64) -> String {
-    if x.abs() < crate::validation::ZERO_SPIN {
+    if x.abs() < crate::units::ZERO_SPIN {
         "zero (to rounding)".into()
     } else {
         format!("{} rad/s", sig3(x))
@@ -336,9 +336,9 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
             (0..s.len()).max_by(|&a, &b| s[a].abs().total_cmp(&s[b].abs())).map(|i| (z.offset[i], s[i]))
         });
         let zero_text = match zero {
-            Some((_, s0)) if s0.abs() < crate::validation::ZERO_SPIN => {
+            Some((_, s0)) if s0.abs() < crate::units::ZERO_SPIN => {
                 zeros.push(format!("the {} does not", contact.label));
-                format!("at μ = 0 it does not spin (|ω_z| < {} rad/s at every offset)", short(crate::validation::ZERO_SPIN))
+                format!("at μ = 0 it does not spin (|ω_z| < {} rad/s at every offset)", short(crate::units::ZERO_SPIN))
             }
             Some((e0, s0)) => {
                 let sense_text = if s0 > 0.0 { "in" } else { "against" };
@@ -538,5 +538,4 @@ mod tests {
         assert!((h.lever_mm[i] - lever).abs() <= 1e-12 * lever.abs(), "{} vs {lever}", h.lever_mm[i]);
         let _ = std::fs::remove_dir_all(&dir);
     }
-
 }

@@ -145,10 +145,7 @@ mod tests {
         let dir = scratch("file");
         let written = run(&dir, &measurements(), "kick reproduce --only patch").unwrap();
         let names: Vec<String> = written.iter().map(|p| p.file_name().unwrap().to_string_lossy().into_owned()).collect();
-        assert_eq!(
-            names,
-["3d_patch_spin.h5", "3d_patch_history.h5"]
-        );
+        assert_eq!(names, ["3d_patch_spin.h5", "3d_patch_history.h5"]);
         let data = read_spin(&dir.join(SPIN_FILE)).unwrap();
         assert_eq!(data.curves.len(), CONTACTS.len() * FRICTIONS.len());
         let base = Scenario::baseline().with_law(LawKind::Shell, None).unwrap();

@@ -36,6 +36,8 @@ pub mod sample;
 pub mod shard;
 pub mod simulate;
 pub mod table2;
+pub mod units;
+pub mod validation;
 
 pub use error::StudyError;
 pub use experiment::{Experiment, ExperimentError, Kicks, Kicks1d, Kicks3d, Output, Scenarios};
