@@ -9,11 +9,8 @@
 use crate::figures::{color, save_grid, Panel, Series};
 use crate::links::relative;
 use crate::SweepData;
-use kick_bounce::{run, BounceSpec};
-use kick_core::parameters::Value;
-use kick_core::shell::{SEA_LEVEL_PRESSURE, SHELL_DAMPING};
-use kick_core::{short, sig, GRAVITY};
-use kick_identify::{FitParameter, ModelPoint, Observable};
+use kick_core::{short, sig};
+pub use kick_study::ball::*;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -25,42 +22,6 @@ pub const PRESSURE_FILE: &str = "ball_pressure.h5";
 /// The figures' names, below the figures directory.
 pub const FIGURE: &str = "ball_bounce";
 pub const PRESSURE_FIGURE: &str = "ball_pressure";
-/// The synthetic plate tests and their fit, below the results directory.
-pub const FIT_SPEC: &str = "identification/ball_plate.toml";
-pub const FIT_REPORT: &str = "identification/ball_plate_fit.h5";
-/// Drop height of the FIFA Quality Programme's rebound test, m.
-const FIFA_DROP: f64 = 2.0;
-/// Its band of rebound heights (FIFA Quality), m: see crates/kick-bounce/SOURCES.md.
-const FIFA_REBOUND: (f64, f64) = (1.15, 1.65);
-/// FIFA Quality Pro's lower end, m.
-const FIFA_PRO_FLOOR: f64 = 1.20;
-/// The test's pressure, Pa gauge.
-const FIFA_PRESSURE: f64 = 8.0e4;
-/// Dowell & Krebs (1991): compression of a dropped soccer ball, d = 2.80 v
-/// (mm, v in m/s), from the diameter of the ball's imprint (their
-/// abstract: heights, ball size and pressure not stated).
-const DOWELL_KREBS_MM_PER_MPS: f64 = 2.80;
-/// The highest speed their line is drawn to, m/s: our choice (a drop from
-/// 3.3 m), not theirs.
-const DROP_LINE_END: f64 = 8.0;
-/// Mills et al. (2026), abstract: a contact-time error of 2.8 % stated as 0.3 ms.
-const MILLS_ERROR: (f64, f64) = (0.028, 0.3e-3);
-/// Mills et al.'s low impact speed, m/s (abstract: 5.93 ± 0.06).
-const MILLS_LOW_SPEED: f64 = 5.93;
-
-/// The truth of the synthetic plate tests: the calibrated loss and a shell
-/// stiffness of 5 kN/m (the default is 0, unidentified; a value the tests
-/// can find), and where the fit starts.
-const FIT_TRUTH: [(&str, f64, f64); 2] = [("shell_damping", SHELL_DAMPING.default_number(), 1.4), ("shell_stiffness", 5.0e3, 0.4)];
-/// Their speeds (m/s) and pressures (atm, gauge).
-const FIT_SPEEDS: [f64; 4] = [3.0, 6.264, 12.0, 19.2];
-const FIT_PRESSURES_ATM: [f64; 3] = [0.6, 0.8, 1.1];
-/// Their standard uncertainties: a restitution to 0.01, a contact time to
-/// 0.1 ms (10 kHz film), a compression to 1 mm.
-const FIT_SIGMA: [(Observable, f64); 3] =
-    [(Observable::Restitution, 0.01), (Observable::ContactTime, 1e-4), (Observable::MaxCompression, 1e-3)];
-const FIT_SEED: u64 = 31;
-
 /// Draw both figures from the result files, write the synthetic plate
 /// tests and fit them, and write the page; returns every file written.
 pub fn write(out: &Path, figures: &Path, page: &Path, command: &str) -> Result<Vec<PathBuf>, String> {
@@ -155,10 +116,6 @@ fn small_cap_compression(delta: f64, radius: f64) -> f64 {
 
 fn mm(x: &[f64]) -> Vec<f64> {
     x.iter().map(|v| 1e3 * v).collect()
-}
-
-fn fifa_speed() -> f64 {
-    (2.0 * GRAVITY * FIFA_DROP).sqrt()
 }
 
 /// Restitution, contact time and compression against impact speed at 0.8
@@ -261,23 +218,6 @@ fn draw_pressures(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, Stri
         .map_err(|e| e.to_string())
 }
 
-/// A bounce with these values (the default ball otherwise).
-fn bounce(values: &[(&str, f64)]) -> Result<kick_bounce::BounceOutcome, String> {
-    let mut spec = BounceSpec::default();
-    for &(name, value) in values {
-        spec.set(name, Value::Number(value)).map_err(|e| e.to_string())?;
-    }
-    run(&spec).map_err(|e| e.to_string())
-}
-
-/// β that makes the 2 m drop rebound to `height` (Brent's method on the bounce).
-fn damping_for_rebound(height: f64) -> Result<f64, String> {
-    let rebound = |beta: f64| {
-        bounce(&[("drop_height", FIFA_DROP), ("shell_damping", beta)]).ok().and_then(|o| o.rebound_height).unwrap_or(f64::NAN) - height
-    };
-    kick_core::roots::brent(rebound, 10.0, 2.0e4, 1e-13, 200).map(|r| r.x).ok_or_else(|| format!("no β rebounds {height} m"))
-}
-
 /// The pressure (Pa) at which `column` at the rows of one speed crosses
 /// `target`, by linear interpolation; `None` when it stays on one side.
 fn crossing(pressure: &[f64], rows: &[usize], column: &[f64], target: f64) -> Option<f64> {
@@ -287,62 +227,11 @@ fn crossing(pressure: &[f64], rows: &[usize], column: &[f64], target: f64) -> Op
     })
 }
 
-/// The synthetic plate tests: the truth at each speed and pressure with
-/// seeded noise, written as a fit specification; then fitted back.
+/// The synthetic plate tests (`kick_study::ball::plate_test_spec`) written
+/// as a fit specification, then fitted back (kick-store).
 fn fit_plate_tests(out: &Path) -> Result<(crate::identify::DataFit, Vec<PathBuf>), String> {
-    let text = |e: kick_identify::IdentifyError| e.to_string();
-    let mut spec = BounceSpec::default();
-    spec.set("speed", Value::Number(FIT_SPEEDS[0])).map_err(|e| e.to_string())?;
-    for (name, value, _) in FIT_TRUTH {
-        spec.set(name, Value::Number(value)).map_err(|e| e.to_string())?;
-    }
-    let truth = ModelPoint::bounce(spec).map_err(text)?;
-    let named = |name: &str| FitParameter::from_name_at(kick_identify::FitLevel::Bounce, name).map_err(text);
-    let (speed, pressure) = (named("speed")?, named("inflation_pressure")?);
-    let conditions: Vec<Vec<(FitParameter, f64)>> = FIT_SPEEDS
-        .iter()
-        .flat_map(|&v| FIT_PRESSURES_ATM.iter().map(move |&p| vec![(speed, v), (pressure, p * SEA_LEVEL_PRESSURE)]))
-        .collect();
-    let data =
-        kick_identify::synthetic::measurements(&Default::default(), &truth, &conditions, &FIT_SIGMA, Some(FIT_SEED)).map_err(text)?;
     let spec_path = out.join(FIT_SPEC);
-    let mut file = format!(
-        "# Synthetic plate tests: the default shell ball with shell_damping = {} Pa s/m and\n\
-         # shell_stiffness = {} N/m fired square at a rigid plate at {} speeds and {} pressures,\n\
-         # restitution, contact time and compression plus Gaussian noise (seed {FIT_SEED}), written by\n\
-         # `kick reproduce --only ball`. Fit back with `kick fit data {}`.\n\
-         level = \"bounce\"\nfree = [{}]\n\n[bounce] # starting guesses\n",
-        FIT_TRUTH[0].1,
-        FIT_TRUTH[1].1,
-        FIT_SPEEDS.len(),
-        FIT_PRESSURES_ATM.len(),
-        spec_path.display(),
-        FIT_TRUTH.map(|(n, _, _)| format!("\"{n}\"")).join(", ")
-    );
-    for (name, value, start) in FIT_TRUTH {
-        let _ = writeln!(file, "{name} = {:e}", value * start);
-    }
-    for m in &data.measurements {
-        let _ = write!(file, "\n[[measurement]]\nname = \"{}\"\n", m.name);
-        for (p, v) in &m.conditions {
-            let _ = writeln!(file, "{} = {v:e}", p.name());
-        }
-        for s in &m.observations.scalars {
-            let _ = write!(
-                file,
-                "[[measurement.scalar]]\nobservable = \"{}\"\nvalue = {:e}\nsigma = {:e}\n",
-                s.observable.name(),
-                s.value,
-                s.sigma
-            );
-        }
-    }
-    let _ = write!(file, "\n[truth] # the values the data were made with\n");
-    for (name, value, _) in FIT_TRUTH {
-        let _ = writeln!(file, "{name} = {value:e}");
-    }
-    std::fs::create_dir_all(spec_path.parent().unwrap_or(out)).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    crate::output::write(&spec_path, file).map_err(|e| e.to_string())?;
+    crate::output::write(&spec_path, plate_test_spec(&spec_path)?).map_err(|e| e.to_string())?;
     let fit = crate::identify::data(&spec_path, Some(&out.join(FIT_REPORT)))?;
     fit.converged()?;
     let mut written = vec![spec_path];

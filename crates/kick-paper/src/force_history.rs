@@ -1,17 +1,14 @@
 //! The force history of one off-center kick (Figure `3d_force_history`):
 //! written by kick-store's history writer, then drawn from that file.
 
-use kick_core::Spacing;
 use kick_store::h5::H5Error;
-use kick_store::history::HistoryRequest;
 use kick_store::ResultFile;
+use kick_study::history::ContactState;
 use plotters::style::RGBColor;
 use std::path::{Path, PathBuf};
 
-/// The off-center kick of the force-history figure: 5 cm off centre, μ 0.5
-/// (the 3D defaults otherwise), which grips, slips and grips again.
-pub const FIGURE_OFFSET: f64 = 0.05;
-pub const FIGURE_FRICTION: f64 = 0.5;
+/// The off-center kick of the force-history figure (kick-study's).
+pub use kick_study::numbers_3d::{HISTORY_FRICTION as FIGURE_FRICTION, HISTORY_OFFSET as FIGURE_OFFSET};
 /// Rows of its history: phase boundaries shaded to 1/2000 of the contact.
 pub const FIGURE_SAMPLES: usize = 2001;
 
@@ -28,13 +25,9 @@ pub fn force_history_command(out: &Path) -> String {
 /// file into `figures/3d_force_history.{png,svg}`. Returns the command that
 /// writes the same file alone, the summary and the files.
 pub fn reproduce_force_history(out: &Path, figures: &Path) -> Result<(String, String, Vec<PathBuf>), String> {
-    let path = out.join("3d_force_history.h5");
+    let path = out.join(kick_store::force_history::FILE);
     let command = force_history_command(out);
-    let mut spec = kick_3d::KickSpec::default();
-    spec.kick3d.offset = Some(FIGURE_OFFSET);
-    spec.kick3d.friction = Some(FIGURE_FRICTION);
-    let request = HistoryRequest { path: path.clone(), spacing: Spacing::Count(FIGURE_SAMPLES), open: kick_store::history::open };
-    let run = kick_study::simulate::simulate3d(&spec, "accurate", None, Some(&request), None)?;
+    let run = kick_store::force_history::run(out, FIGURE_SAMPLES).map_err(|e| e.to_string())?;
     let mut written = run.written.clone();
     written.extend(force_history_figure(&path, figures).map_err(|e| e.to_string())?);
     Ok((command, kick_study::Printable::text(&run), written))
@@ -79,7 +72,7 @@ pub fn force_history_figure(h5: &Path, figures: &Path) -> Result<Vec<PathBuf>, c
     let mu = file.values("fixed/friction")?.first().copied().unwrap_or(f64::NAN);
     let offset = file.values("fixed/offset")?.first().copied().unwrap_or(f64::NAN);
     let cap: Vec<f64> = normal.iter().map(|f| mu * f).collect();
-    let (grip, slip) = (kick_3d::ContactState::Grip.code(), kick_3d::ContactState::Slip.code());
+    let (grip, slip) = (ContactState::Grip.code(), ContactState::Slip.code());
     let panel = Panel::new(
         &format!("Off-center kick: offset {:.0} cm, μ = {mu}", offset * 100.0),
         "time t (ms)",
@@ -130,13 +123,10 @@ mod tests {
         let time = file.values("history/time").unwrap();
         let state = file.values("history/contact_state").unwrap();
         assert_eq!(time.len(), FIGURE_SAMPLES);
-        let slipping = phases(&time, &state, kick_3d::ContactState::Slip.code());
-        let gripping = phases(&time, &state, kick_3d::ContactState::Grip.code());
+        let slipping = phases(&time, &state, ContactState::Slip.code());
+        let gripping = phases(&time, &state, ContactState::Grip.code());
         assert!(!slipping.is_empty() && !gripping.is_empty());
-        let mut spec = kick_3d::KickSpec::default();
-        spec.kick3d.offset = Some(FIGURE_OFFSET);
-        spec.kick3d.friction = Some(FIGURE_FRICTION);
-        let outcome = kick_3d::Accurate3d::default().solve(&spec.build().unwrap()).unwrap();
+        let outcome = kick_3d::Accurate3d::default().solve(&kick_study::numbers_3d::history_kick().unwrap()).unwrap();
         let shaded: f64 = slipping.iter().map(|(a, b)| b - a).sum();
         let step = outcome.contact_time / (FIGURE_SAMPLES - 1) as f64;
         // Each end of a slip phase is placed within half a step of the switch.

@@ -19,91 +19,13 @@
 //! `solvers/goal/histories/<row>` ([`TRAJECTORY_COLUMNS`], uniform in time).
 
 use crate::figures::{color, save_grid, save_grid_equal_scale, FigureError, Panel, Series};
-use crate::h5::{write_grid, write_str_attr, Column, H5Error, SweepData};
-use crate::provenance::Provenance;
-use crate::run::{create_table, fill_table};
-use kick_3d::Kick3d;
-use kick_flight::{history, Sampling};
-use kick_study::level::Level;
+use crate::h5::SweepData;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::path::{Path, PathBuf};
 
-/// The physics (the grid, the kick at (e, h)) is kick-study's.
+/// The physics (the grid, the kick at (e, h)) is kick-study's, the file kick-store's.
+pub use kick_store::free_kick::{write, FILE, TRAJECTORY_COLUMNS, TRAJECTORY_FRICTIONS, TRAJECTORY_OFFSETS, TRAJECTORY_SAMPLES};
 pub use kick_study::free_kick::*;
-
-/// Rows whose trajectories are kept: these offsets...
-pub const TRAJECTORY_OFFSETS: [f64; 4] = [0.0, 0.02, 0.04, 0.06];
-/// ...at these frictions.
-pub const TRAJECTORY_FRICTIONS: [f64; 2] = [0.5, f64::INFINITY];
-/// Samples per trajectory.
-pub const TRAJECTORY_SAMPLES: usize = 301;
-/// The wall drawn and the goal (Law 1): one definition, kick-flight's aim scene.
-pub use kick_flight::aim::{GOAL_HEIGHT, GOAL_WIDTH, WALL_HALF_WIDTH, WALL_HEIGHT};
-
-/// Columns of a stored trajectory.
-pub const TRAJECTORY_COLUMNS: [(&str, &str); 7] =
-    [("time", "s"), ("x", "m"), ("y", "m"), ("z", "m"), ("velocity_x", "m/s"), ("velocity_y", "m/s"), ("velocity_z", "m/s")];
-
-/// Physics World's free kick (Asai, Akatsuka & Haake 1998, as quoted:
-/// `free_kick_speed` and `free_kick_spin` of the measurement file, which a
-/// test holds these to): launch speeds, m/s...
-pub const ILLUSTRATED_SPEEDS: [f64; 2] = [25.0, 30.0];
-/// ...and spins, rad/s (8–10 rev/s).
-pub const ILLUSTRATED_SPINS: [f64; 2] = [8.0 * std::f64::consts::TAU, 10.0 * std::f64::consts::TAU];
-/// The kick whose bend paper/flight.md takes apart: the middle of those
-/// (speed m/s, sidespin rad/s), launched as the validation chapter's free kicks.
-pub const PLATEAU_KICK: (f64, f64) = (27.5, 9.0 * std::f64::consts::TAU);
-/// Constant lift coefficients it is flown with: the fit's plateau, and below it.
-pub const PLATEAU_LIFTS: [f64; 3] = [0.29, 0.24, 0.20];
-/// Shares of the spin left at landing it is flown with (what-ifs: no measured decay rate).
-pub const SPIN_KEPT: [f64; 3] = [0.9, 0.75, 0.5];
-
-/// The file's name under `OUT/flight/`.
-pub const FILE: &str = "free_kick.h5";
-
-fn columns(list: &[(&str, &str)]) -> Vec<Column> {
-    list.iter().map(|(n, u)| Column::new(n, u)).collect()
-}
-
-/// Solve the grid and write `out/flight/free_kick.h5`.
-pub fn write(out: &Path) -> Result<PathBuf, String> {
-    let dir = out.join("flight");
-    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    let path = dir.join(FILE);
-    let text = format!(
-        "kick_paper::free_kick: offsets {OFFSETS:?} m x friction {FRICTIONS:?}, contact_depth {CONTACT_DEPTH} m (the foot's line \
-         below the centre), Table 1 foot, horizontal path; flights to x = {GOAL_DISTANCE} m and {WALL_DISTANCE} m"
-    );
-    let provenance = Provenance::now("free_kick", "kick_paper::free_kick", &text);
-    let rows = grid();
-    let mut writer = create_table(&FreeKicks, &path, &provenance, rows.len() as u64, Default::default()).map_err(|e| e.to_string())?;
-    let file = writer.file().clone();
-    let h5 = |e: H5Error| e.to_string();
-    let parameters = FreeKicks.parameter_columns();
-    write_str_attr(&file, &path, "description", "Free kicks: the 3D kick (contact below and beside the centre) chained into the flight")
-        .map_err(h5)?;
-    write_grid(&file, &path, &[(parameters[0].clone(), &OFFSETS[..]), (parameters[1].clone(), &FRICTIONS[..])]).map_err(h5)?;
-    fill_table(&FreeKicks, 0..rows.len() as u64, &mut writer, &indicatif::ProgressBar::hidden()).map_err(h5)?;
-    for (row, &(e, mu)) in rows.iter().enumerate() {
-        let keep = TRAJECTORY_OFFSETS.contains(&e) && TRAJECTORY_FRICTIONS.iter().any(|m| m.to_bits() == mu.to_bits());
-        if keep {
-            let f = FreeKick::new(e, mu)?.flight(GOAL_DISTANCE)?;
-            let h = history(&f, Sampling::Samples(TRAJECTORY_SAMPLES)).map_err(crate::flight::flight_error)?;
-            let values: Vec<Vec<f64>> = vec![
-                h.samples.iter().map(|s| s.time).collect(),
-                h.samples.iter().map(|s| s.position[0]).collect(),
-                h.samples.iter().map(|s| s.position[1]).collect(),
-                h.samples.iter().map(|s| s.position[2]).collect(),
-                h.samples.iter().map(|s| s.velocity[0]).collect(),
-                h.samples.iter().map(|s| s.velocity[1]).collect(),
-                h.samples.iter().map(|s| s.velocity[2]).collect(),
-            ];
-            let named: Vec<(Column, &[f64])> = columns(&TRAJECTORY_COLUMNS).into_iter().zip(values.iter().map(Vec::as_slice)).collect();
-            writer.write_history(1, row, &named).map_err(h5)?;
-        }
-    }
-    writer.finish().map_err(h5)
-}
 
 /// Trajectories are drawn up to this x, m (a little past the goal line).
 pub const SHOWN_TO: f64 = GOAL_DISTANCE + 3.0;
@@ -251,7 +173,7 @@ pub fn axes_figure(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     let h = crate::h5::read_history(h5, &goal.group, row)?;
     let column = |name: &str| h.iter().find(|(c, _)| c.name == name).map(|(_, v)| v.clone()).ok_or_else(|| missing(name));
     let (x, y, z) = (column("x")?, column("y")?, column("z")?);
-    let (e, depth, big_r) = (offsets[row] * 100.0, CONTACT_DEPTH * 100.0, Kick3d::baseline().ball_radius * 100.0);
+    let (e, depth, big_r) = (offsets[row] * 100.0, CONTACT_DEPTH * 100.0, kick_study::numbers_3d::baseline_kick().ball_radius * 100.0);
     let ink = RGBColor(0, 0, 0);
     // The ball's outline, and a frame that keeps it round in a panel about 1.7 times as wide as high.
     let circle = |label: &str| {
@@ -356,7 +278,7 @@ pub fn axes_figure(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
 
 /// The free-kick setup in words, with the numbers it uses (for the page).
 pub fn setup_note() -> String {
-    let k = Kick3d::baseline();
+    let k = kick_study::numbers_3d::baseline_kick();
     let b = k.base;
     format!(
         "The kick: Table 1's foot (m_f = {} kg at V = {} m/s, ball {} kg at rest, the paper's contact law) with \
@@ -383,40 +305,6 @@ pub fn setup_note() -> String {
     )
 }
 
-/// The aimed free kick of paper/flight.md: the ball's centre 2.6 m to the
-/// +y side of the goal's centre and 2 m up at the goal line (under the bar
-/// by the post), past the default wall.
-pub const AIM_TARGET: [f64; 3] = [GOAL_DISTANCE, 2.6, 2.0];
-/// Its launch aim holds this sidespin (about 8 rev/s, curving toward +y).
-pub const AIM_SPIN: [f64; 3] = [0.0, 0.0, 50.0];
-
-/// The two aims of the page: the launch (speed, elevation, azimuth free,
-/// [`AIM_SPIN`] held) and the 3D kick (foot speed, e, h, heading free, the
-/// member of their family with the most room at the wall), to
-/// [`AIM_TARGET`]; `kick bench` times the same two.
-pub fn aim_requests() -> [kick_study::aim::AimRequest; 2] {
-    use kick_study::aim::{AimFrom, AimRequest};
-    let launch = AimRequest {
-        target: Some(AIM_TARGET),
-        from: Some(AimFrom::Launch),
-        flight: kick_flight::FlightSpec { spin: Some(AIM_SPIN), ..kick_flight::FlightSpec::default() },
-        ..AimRequest::default()
-    };
-    let kick = AimRequest {
-        target: Some(AIM_TARGET),
-        from: Some(AimFrom::Kick),
-        objective: Some(kick_flight::Objective::MaxClearance),
-        ..AimRequest::default()
-    };
-    [launch, kick]
-}
-
-/// The page's two aims ([`aim_requests`]) solved.
-pub fn aims() -> Result<[kick_study::aim::AimReport; 2], String> {
-    let [launch, kick] = aim_requests();
-    Ok([kick_study::aim::aim(&launch)?, kick_study::aim::aim(&kick)?])
-}
-
 /// The target's marker: apart from the trajectories' colours.
 const TARGET_GREEN: RGBColor = RGBColor(0, 140, 60);
 
@@ -428,11 +316,9 @@ pub fn aim_figure(aims: &[kick_study::aim::AimReport], dir: &Path) -> Result<Vec
     let mut side = Vec::new();
     for (i, report) in aims.iter().enumerate() {
         let s = &report.solution;
-        let h = history(&s.flight, Sampling::Samples(TRAJECTORY_SAMPLES)).map_err(|e| draw_error(e.to_string()))?;
-        let shown: Vec<_> = h.samples.iter().take_while(|p| p.position[0] <= SHOWN_TO).collect();
-        let x: Vec<f64> = shown.iter().map(|p| p.position[0]).collect();
-        let y: Vec<f64> = shown.iter().map(|p| p.position[1]).collect();
-        let z: Vec<f64> = shown.iter().map(|p| p.position[2]).collect();
+        let [_, x, y, z, ..] = flight_columns(&s.flight, TRAJECTORY_SAMPLES).map_err(|e| draw_error(e.to_string()))?;
+        let shown = x.iter().take_while(|&&x| x <= SHOWN_TO).count();
+        let (x, y, z) = (&x[..shown], &y[..shown], &z[..shown]);
         let label = match report.from {
             kick_study::aim::AimFrom::Launch => format!("launch aimed ({} rad/s sidespin held)", kick_core::short(AIM_SPIN[2])),
             kick_study::aim::AimFrom::Kick => "3D kick aimed (foot speed, e, h, heading; max clearance)".to_string(),

@@ -22,7 +22,7 @@
 //! below keep the committed page current, make every equation number the
 //! workspace cites a label of the page, and every code path it names exist.
 
-use kick_core::parameters::{DefaultValue, ParameterDef, Shape};
+use kick_study::parameters::{DefaultValue, ParameterDef, Shape, BOUNCE_PARAMETERS, FLIGHT_PARAMETERS, PARAMETERS};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -107,9 +107,9 @@ impl List {
     }
     fn all(self) -> &'static [ParameterDef] {
         match self {
-            List::Kick => &kick_core::parameters::PARAMETERS,
-            List::Flight => &kick_flight::FLIGHT_PARAMETERS,
-            List::Bounce => &kick_bounce::BOUNCE_PARAMETERS,
+            List::Kick => &PARAMETERS,
+            List::Flight => &FLIGHT_PARAMETERS,
+            List::Bounce => &BOUNCE_PARAMETERS,
         }
     }
     fn prefix(self) -> &'static str {
@@ -128,13 +128,13 @@ fn lookup(name: &str) -> Option<&'static ParameterDef> {
 
 /// The bounce's own parameters: those that are not the kick's declarations.
 fn bounce_own() -> impl Iterator<Item = &'static ParameterDef> {
-    kick_bounce::BOUNCE_PARAMETERS.iter().filter(|b| !kick_core::parameters::PARAMETERS.iter().any(|k| k == *b))
+    BOUNCE_PARAMETERS.iter().filter(|b| !PARAMETERS.iter().any(|k| k == *b))
 }
 
 /// Every declared parameter the page must name, as `{{p}}` takes it.
 pub fn declared_names() -> Vec<String> {
-    let kick = kick_core::parameters::PARAMETERS.iter().map(|p| p.name.to_string());
-    let flight = kick_flight::FLIGHT_PARAMETERS.iter().map(|p| format!("flight.{}", p.name));
+    let kick = PARAMETERS.iter().map(|p| p.name.to_string());
+    let flight = FLIGHT_PARAMETERS.iter().map(|p| format!("flight.{}", p.name));
     let bounce = bounce_own().map(|p| format!("bounce.{}", p.name));
     kick.chain(flight).chain(bounce).collect()
 }

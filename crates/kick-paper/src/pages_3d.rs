@@ -10,7 +10,6 @@ use crate::links::relative;
 use crate::three_d::{curves, value_label};
 use crate::units::sig;
 use crate::units::{spin, three, RPM_PER_RAD_PER_S};
-use kick_3d::Kick3d;
 use kick_core::short;
 use kick_study::numbers_3d;
 use std::fmt::Write as _;
@@ -81,7 +80,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     let fig = relative(report_dir, &figures);
     let res = relative(report_dir, out).trim_end_matches('/').to_string();
     let res = if res.is_empty() { ".".to_string() } else { res };
-    let k = Kick3d::baseline();
+    let k = kick_study::numbers_3d::baseline_kick();
     let b = k.base;
     let default_of = |name: &str| kick_core::parameters::find(name).map(|p| p.default_number()).unwrap_or(f64::NAN);
     let kt = k.tangential_stiffness;
@@ -191,7 +190,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
          `auto` takes `1d` for central square kicks, `rapier` when the scene has a ground, `accurate` otherwise. The \
          cost of each path, and the 3D/1D cost ratio, are measured on the machine that runs the reproduction: \
          [timing.md](timing.md).\n",
-        kick_3d::models::BENCH_SEED,
+        numbers_3d::BENCH_SEED,
         listed.join(", "),
         reference_error,
         worst.iter().copied().fold(0.0, f64::max) + reference_error,
@@ -263,15 +262,11 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     }
     let elevation = g.column("launch_angle")?.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     // Spin added by friction 0 -> 1 at 5 cm, solved here (Table 1's kick, as the validation chapter's sweep).
-    let base = kick_core::Scenario::baseline();
-    let spin_at = |mu: f64| kick_3d::validation::spin_point(&base, 0.05, mu).map(|p| p.spin).map_err(|e| e.to_string());
-    let (spin0, spin1) = (spin_at(0.0)?, spin_at(1.0)?);
+    let (spin0, spin1, optimum) = numbers_3d::friction_at_five_cm().map_err(err)?;
     if spin0.abs() >= crate::units::ZERO_SPIN {
         return Err(format!("the frictionless kick at 5 cm spins at {spin0} rad/s: the page says zero to rounding"));
     }
     let gain5 = spin1 - spin0;
-    let sweep = kick_3d::validation::spin_curve(&base, kick_3d::validation::REFERENCE_FRICTION).map_err(|e| e.to_string())?;
-    let optimum = kick_3d::validation::largest_spin(&base, &sweep).map_err(|e| e.to_string())?;
     let tilt5 = (0.05 / k.ball_radius).asin().to_degrees();
     let _ = writeln!(w, "{}\n", lines.join("\n"));
     let rad = |rpm: f64| rpm / RPM_PER_RAD_PER_S;
@@ -460,7 +455,7 @@ fn friction_section() -> Result<String, String> {
     }
     let rigid_text: Vec<String> = rigid.iter().map(|(law, rpm)| format!("{} for the {law}", spin(*rpm / RPM_PER_RAD_PER_S))).collect();
     // The default k_t's rows: where spin peaks against μ.
-    let default_k = kick_3d::Kick3d::DEFAULT_TANGENTIAL_STIFFNESS;
+    let default_k = numbers_3d::DEFAULT_TANGENTIAL_STIFFNESS;
     let peaks: Vec<String> = rows
         .iter()
         .filter(|r| r.tangential_stiffness == default_k)
@@ -584,8 +579,7 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
         realistic
             .iter()
             .map(|&r| -> Result<String, String> {
-                let flight = free_kick::FreeKick::new(offsets[r], frictions[r])?.flight(d)?;
-                let a = kick_flight::solve(&flight).map_err(crate::flight::flight_error)?.launch;
+                let a = numbers_3d::free_kick_launch(offsets[r], frictions[r], d).map_err(err)?;
                 Ok(format!(
                     "{} ({} m/s, {}; at launch Re = {}, S = {}, C_D = {}, C_L = {})",
                     describe(r),
@@ -690,11 +684,10 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
 /// free kicks, flown when the page is written
 /// (`kick_flight::validation::{lift_plateau_bends, spin_decay_bends}`).
 pub fn lift_and_decay_section() -> Result<String, String> {
-    use kick_flight::validation::{lift_plateau_bends, spin_decay_bends, FREE_KICK_DISTANCE, FREE_KICK_ELEVATION};
+    use numbers_3d::{FREE_KICK_DISTANCE, FREE_KICK_ELEVATION};
     let (v, w) = free_kick::PLATEAU_KICK;
     let d = FREE_KICK_DISTANCE;
-    let bends = lift_plateau_bends(v, w, FREE_KICK_ELEVATION, d, &free_kick::PLATEAU_LIFTS).map_err(err)?;
-    let decays = spin_decay_bends(v, w, FREE_KICK_ELEVATION, d, &free_kick::SPIN_KEPT).map_err(err)?;
+    let (bends, decays) = numbers_3d::plateau_and_decay((v, w), &free_kick::PLATEAU_LIFTS, &free_kick::SPIN_KEPT).map_err(err)?;
     let base = &bends[0];
     let mut t = String::new();
     let _ = writeln!(
@@ -764,7 +757,7 @@ pub fn write_all(out: &Path, report_dir: &Path, log: &mut dyn Write) -> Result<V
 
 /// The aimed free kicks on `paper/flight.md` (`kick aim`), from [`free_kick::aims`].
 pub fn aim_section(aims: &[kick_study::aim::AimReport], fig: &str) -> String {
-    use kick_flight::aim::{MISS_TOLERANCE, WALL_MARGIN};
+    use kick_study::aim::{MISS_TOLERANCE, WALL_MARGIN};
     let mut w = String::new();
     let [x, y, z] = free_kick::AIM_TARGET;
     let _ = writeln!(

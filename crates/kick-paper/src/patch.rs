@@ -8,9 +8,9 @@
 use crate::figures::{color, save_grid, FigureError, Panel, Series};
 use crate::links::relative;
 use crate::ResultFile;
-use kick_3d::ContactState;
 use kick_core::short;
 pub use kick_store::patch::{read_asai, read_spin, HISTORY_FILE, SPIN_FILE};
+use kick_study::history::ContactState;
 pub use kick_study::patch::{
     friction_gain, offsets, AsaiClaims, Curve, SpinData, CAP_RADIUS, CONTACTS, FRICTIONS, HISTORY_FRICTION, HISTORY_OFFSET,
     HISTORY_SAMPLES, OFFSET_STEP,

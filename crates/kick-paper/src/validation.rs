@@ -287,7 +287,7 @@ pub fn markdown(v: &Validation, data: &str, file: &str, notes: &str) -> String {
             three(1e3 * p.offset),
             short(1e3 * DEFAULT_BALL_RADIUS),
             three(p.speed),
-            short(1e3 * kick_3d::validation::OFFSET_TOLERANCE)
+            short(1e3 * OFFSET_TOLERANCE)
         );
     }
     let _ = writeln!(w, "\n## Flight: the drag crisis\n");

@@ -11,6 +11,8 @@
 
 pub mod compare;
 pub mod error;
+pub mod force_history;
+pub mod free_kick;
 pub mod h5;
 pub mod held;
 pub mod history;

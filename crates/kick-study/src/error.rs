@@ -48,6 +48,9 @@ pub enum StudyError {
     /// One named 3D kick of a study whose solve failed.
     #[error("{name}: {source}")]
     Kick3dRow { name: String, source: Kick3dError },
+    /// A flight of kick-flight's validation scenes that could not be flown as asked.
+    #[error(transparent)]
+    FlightValidation(#[from] kick_flight::validation::FlightValidationError),
     /// A measurement file that cannot be read, or lacks what a study needs.
     #[error(transparent)]
     Measurements(#[from] kick_core::measurements::MeasurementError),
@@ -81,6 +84,11 @@ impl StudyError {
             StudyError::Aim { .. } => Status::Refused,
             StudyError::Failure(f) => f.status,
             StudyError::Sink(_) | StudyError::ShortHistory { .. } | StudyError::Json(_) => Status::NumericalFailure,
+            StudyError::FlightValidation(e) => match e {
+                kick_flight::validation::FlightValidationError::Flight(f) => f.status(),
+                kick_flight::validation::FlightValidationError::Measurements(_) => Status::Refused,
+                _ => Status::NumericalFailure,
+            },
             StudyError::Parameter(_)
             | StudyError::Limit(_)
             | StudyError::Spacing { .. }

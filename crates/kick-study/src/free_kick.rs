@@ -2,7 +2,7 @@
 //! friction at a contact depth h: the foot's line of motion passes h below
 //! the ball's centre and e beside it (kick-3d's `offset` and
 //! `contact_depth`, one definition for every front end), on a horizontal
-//! path. kick-paper writes the file and figures.
+//! path. kick-store writes the file, kick-paper the figures.
 
 use crate::columns::{Column, OutcomeSet, Setting};
 use crate::level::{Failure, Level, Row};
@@ -18,6 +18,8 @@ pub const OFFSETS: [f64; 10] = [0.0, 0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0
 pub const FRICTIONS: [f64; 4] = [0.2, 0.5, 1.0, f64::INFINITY];
 /// The goal line from the ball, m (the 25 m free kick).
 pub const GOAL_DISTANCE: f64 = 25.0;
+/// The wall drawn and the goal (Law 1): one definition, kick-flight's aim scene.
+pub use kick_flight::aim::{GOAL_HEIGHT, GOAL_WIDTH, WALL_HALF_WIDTH, WALL_HEIGHT};
 /// The wall, m (Law 13: 9.15 m), defined once in kick-flight.
 pub use kick_flight::models::WALL_DISTANCE;
 /// Columns of the `launch` set: the free kick's launch and the contact.
@@ -162,4 +164,74 @@ impl Level for FreeKicks {
             row.put(set, flown);
         }
     }
+}
+
+/// Physics World's free kick (Asai, Akatsuka & Haake 1998, as quoted:
+/// `free_kick_speed` and `free_kick_spin` of the measurement file, which a
+/// test holds these to): launch speeds, m/s...
+pub const ILLUSTRATED_SPEEDS: [f64; 2] = [25.0, 30.0];
+/// ...and spins, rad/s (8–10 rev/s).
+pub const ILLUSTRATED_SPINS: [f64; 2] = [8.0 * std::f64::consts::TAU, 10.0 * std::f64::consts::TAU];
+/// The kick whose bend paper/flight.md takes apart: the middle of those
+/// (speed m/s, sidespin rad/s), launched as the validation chapter's free kicks.
+pub const PLATEAU_KICK: (f64, f64) = (27.5, 9.0 * std::f64::consts::TAU);
+/// Constant lift coefficients it is flown with: the fit's plateau, and below it.
+pub const PLATEAU_LIFTS: [f64; 3] = [0.29, 0.24, 0.20];
+/// Shares of the spin left at landing it is flown with (what-ifs: no measured decay rate).
+pub const SPIN_KEPT: [f64; 3] = [0.9, 0.75, 0.5];
+
+/// The aimed free kick of paper/flight.md: the ball's centre 2.6 m to the
+/// +y side of the goal's centre and 2 m up at the goal line (under the bar
+/// by the post), past the default wall.
+pub const AIM_TARGET: [f64; 3] = [GOAL_DISTANCE, 2.6, 2.0];
+/// Its launch aim holds this sidespin (about 8 rev/s, curving toward +y).
+pub const AIM_SPIN: [f64; 3] = [0.0, 0.0, 50.0];
+
+/// The two aims of the page: the launch (speed, elevation, azimuth free,
+/// [`AIM_SPIN`] held) and the 3D kick (foot speed, e, h, heading free, the
+/// member of their family with the most room at the wall), to
+/// [`AIM_TARGET`]; `kick bench` times the same two.
+pub fn aim_requests() -> [crate::aim::AimRequest; 2] {
+    use crate::aim::{AimFrom, AimRequest};
+    let launch = AimRequest {
+        target: Some(AIM_TARGET),
+        from: Some(AimFrom::Launch),
+        flight: kick_flight::FlightSpec { spin: Some(AIM_SPIN), ..kick_flight::FlightSpec::default() },
+        ..AimRequest::default()
+    };
+    let kick = AimRequest {
+        target: Some(AIM_TARGET),
+        from: Some(AimFrom::Kick),
+        objective: Some(kick_flight::Objective::MaxClearance),
+        ..AimRequest::default()
+    };
+    [launch, kick]
+}
+
+/// The page's two aims ([`aim_requests`]) solved.
+pub fn aims() -> Result<[crate::aim::AimReport; 2], String> {
+    let [launch, kick] = aim_requests();
+    Ok([crate::aim::aim(&launch)?, crate::aim::aim(&kick)?])
+}
+
+/// The ball's trajectory after the kick at (e, μ) to the goal line:
+/// `samples` rows uniform in time, as columns time, x, y, z (m) and
+/// velocity x, y, z (m/s).
+pub fn trajectory(offset: f64, friction: f64, samples: usize) -> Result<[Vec<f64>; 7], Failure> {
+    flight_columns(&FreeKick::new(offset, friction)?.flight(GOAL_DISTANCE)?, samples)
+}
+
+/// A flight's trajectory as [`trajectory`]'s columns.
+pub fn flight_columns(flight: &Flight, samples: usize) -> Result<[Vec<f64>; 7], Failure> {
+    let h = kick_flight::history(flight, kick_flight::Sampling::Samples(samples)).map_err(crate::flight::flight_failure)?;
+    let column = |f: &dyn Fn(&kick_flight::FlightSample) -> f64| h.samples.iter().map(f).collect::<Vec<f64>>();
+    Ok([
+        column(&|s| s.time),
+        column(&|s| s.position[0]),
+        column(&|s| s.position[1]),
+        column(&|s| s.position[2]),
+        column(&|s| s.velocity[0]),
+        column(&|s| s.velocity[1]),
+        column(&|s| s.velocity[2]),
+    ])
 }

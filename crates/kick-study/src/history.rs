@@ -5,6 +5,8 @@
 
 pub use crate::error::SinkError;
 use crate::error::StudyError;
+/// The codes of a 3D history's `contact_state` column.
+pub use kick_3d::ContactState;
 use kick_core::parameters::Value;
 use kick_core::Spacing;
 use std::ops::ControlFlow;

@@ -18,6 +18,7 @@
 //! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 
 pub mod aim;
+pub mod ball;
 pub mod checks;
 pub mod columns;
 pub mod error;
@@ -30,6 +31,7 @@ pub mod leg;
 pub mod level;
 pub mod limits;
 pub mod numbers_3d;
+pub mod parameters;
 pub mod patch;
 pub mod printable;
 pub mod sample;

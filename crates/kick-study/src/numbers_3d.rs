@@ -10,12 +10,28 @@ use kick_core::{Outcome, Solver};
 
 use crate::error::StudyError;
 
-/// The kick the force-history figure shows: offset 5 cm, μ 0.5, baseline otherwise.
-pub fn history_kick() -> Result<Kick3d, StudyError> {
+/// The force-history kick's offset (m) and friction: 5 cm off the swing
+/// line, μ 0.5, which grips, slips and grips again.
+pub const HISTORY_OFFSET: f64 = 0.05;
+pub const HISTORY_FRICTION: f64 = 0.5;
+
+/// The kick the force-history figure shows, as a spec: [`HISTORY_OFFSET`],
+/// [`HISTORY_FRICTION`], the 3D defaults otherwise.
+pub fn history_spec() -> KickSpec {
     let mut spec = KickSpec::default();
-    spec.set_named("offset", Value::Number(0.05))?;
-    spec.set_named("friction", Value::Number(0.5))?;
-    Ok(spec.build()?)
+    spec.kick3d.offset = Some(HISTORY_OFFSET);
+    spec.kick3d.friction = Some(HISTORY_FRICTION);
+    spec
+}
+
+/// The kick the force-history figure shows ([`history_spec`]).
+pub fn history_kick() -> Result<Kick3d, StudyError> {
+    Ok(history_spec().build()?)
+}
+
+/// Table 1's kick in 3D: kick-3d's defaults (its ball, foot and scene).
+pub fn baseline_kick() -> Kick3d {
+    Kick3d::baseline()
 }
 
 /// Largest relative error of the accurate path against the tightened
@@ -157,3 +173,46 @@ pub fn friction_spin() -> Result<(Vec<FrictionSpin>, Vec<(&'static str, f64)>), 
     }
     Ok((rows, rigid))
 }
+
+/// The seed of kick-3d's test box (the kicks the page's accuracy is stated over).
+pub use kick_3d::models::BENCH_SEED;
+
+/// kick-3d's default tangential stiffness k_t, N/m.
+pub const DEFAULT_TANGENTIAL_STIFFNESS: f64 = Kick3d::DEFAULT_TANGENTIAL_STIFFNESS;
+
+/// Spin against friction at 5 cm on Table 1's kick (the paper's law, the
+/// validation chapter's sweep): |ω| at μ = 0 and μ = 1 (rad/s), and the
+/// kick of the largest spin at the reference friction.
+pub fn friction_at_five_cm() -> Result<(f64, f64, kick_3d::validation::SpinPoint), StudyError> {
+    use kick_3d::validation::{largest_spin, spin_curve, spin_point, REFERENCE_FRICTION};
+    let base = kick_core::Scenario::baseline();
+    let spin_at = |mu: f64| spin_point(&base, 0.05, mu).map(|p| p.spin);
+    let (spin0, spin1) = (spin_at(0.0)?, spin_at(1.0)?);
+    let optimum = largest_spin(&base, &spin_curve(&base, REFERENCE_FRICTION)?)?;
+    Ok((spin0, spin1, optimum))
+}
+
+/// The flight's own report at launch (Re, S, C_D, C_L) of the free kick at
+/// (e, μ) flown to `distance`.
+pub fn free_kick_launch(offset: f64, friction: f64, distance: f64) -> Result<kick_flight::Aerodynamics, StudyError> {
+    let flight = crate::free_kick::FreeKick::new(offset, friction)?.flight(distance)?;
+    Ok(kick_flight::solve(&flight)?.launch)
+}
+
+/// The free kick whose bend paper/flight.md takes apart, flown at each
+/// constant lift coefficient of `lifts` and with each share of its spin
+/// kept at landing of `kept` (kick-flight's validation scene).
+pub fn plateau_and_decay(
+    kick: (f64, f64),
+    lifts: &[f64],
+    kept: &[f64],
+) -> Result<(Vec<kick_flight::validation::LiftBend>, Vec<kick_flight::validation::SpinDecayBend>), StudyError> {
+    use kick_flight::validation::{lift_plateau_bends, spin_decay_bends, FREE_KICK_DISTANCE, FREE_KICK_ELEVATION};
+    let (v, w) = kick;
+    let bends = lift_plateau_bends(v, w, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE, lifts)?;
+    let decays = spin_decay_bends(v, w, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE, kept)?;
+    Ok((bends, decays))
+}
+
+/// The validation scene's free kicks: distance to the goal (m) and launch elevation (deg).
+pub use kick_flight::validation::{FREE_KICK_DISTANCE, FREE_KICK_ELEVATION};

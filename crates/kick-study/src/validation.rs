@@ -17,6 +17,9 @@
 
 pub mod rows;
 
+/// How close a patch kick's offset is found to the one asked for, m.
+pub use kick_3d::validation::OFFSET_TOLERANCE;
+
 use crate::printable::Printable;
 use crate::units::three;
 /// |ω| below this is printed as zero to rounding, rad/s.

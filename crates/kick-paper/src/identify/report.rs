@@ -353,10 +353,10 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, String> {
          singular value of J falls below {:e} of the largest, or there are no more residuals than \
          parameters, no uncertainty or correlation is reported (the data do not determine that \
          combination).\n",
-        (1.0 / kick_identify::model::RECORD_FRACTION).round(),
-        kick_identify::fit::JACOBIAN_STEP,
-        kick_identify::fit::MAX_ONSET_RESTARTS,
-        kick_identify::fit::RANK_TOLERANCE,
+        (1.0 / kick_store::identify::fit::RECORD_FRACTION).round(),
+        kick_store::identify::fit::JACOBIAN_STEP,
+        kick_store::identify::fit::MAX_ONSET_RESTARTS,
+        kick_store::identify::fit::RANK_TOLERANCE,
     );
 
     let sigma: Vec<String> = profiles.history_sigma.iter().map(|(c, s, u)| format!("{} {} {u}", c.replace('_', " "), num(*s, 2))).collect();

@@ -16,6 +16,10 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+/// The fit's settings a report states (kick-identify's).
+pub use kick_identify::fit::{JACOBIAN_STEP, MAX_ONSET_RESTARTS, RANK_TOLERANCE};
+pub use kick_identify::model::RECORD_FRACTION;
+
 fn text(e: IdentifyError) -> String {
     e.to_string()
 }
