@@ -114,15 +114,12 @@ pub(crate) struct ElasticJet {
 impl ElasticJet {
     /// At compression δ0 (the step's start).
     pub(crate) fn new(ball: &ShellBall, delta0: f64) -> Result<ElasticJet, KickError> {
-        let r = ball.radius;
-        let absolute = ball.pressure + ball.atmospheric_pressure;
-        let gamma = ball.gas_exponent;
         let mut jet = ElasticJet {
-            radius: r,
-            absolute,
-            gamma,
-            shell_stiffness: ball.shell_stiffness,
-            inverse_volume: 1.0 / (4.0 * r * r * r),
+            radius: 0.0,
+            absolute: 0.0,
+            gamma: 0.0,
+            shell_stiffness: 0.0,
+            inverse_volume: 0.0,
             inverse_f0: 0.0,
             q: [0.0; K + 1],
             cube: [0.0; K + 1],
@@ -132,17 +129,29 @@ impl ElasticJet {
             area: [0.0; K + 1],
             elastic: [0.0; K + 1],
         };
+        jet.restart(ball, delta0)?;
+        Ok(jet)
+    }
+
+    /// [`ElasticJet::new`] in place, for a loop of steps that keeps one jet
+    /// (orders above 0 are overwritten by [`ElasticJet::next`] before they are read).
+    pub(crate) fn restart(&mut self, ball: &ShellBall, delta0: f64) -> Result<(), KickError> {
+        let r = ball.radius;
+        let absolute = ball.pressure + ball.atmospheric_pressure;
+        let gamma = ball.gas_exponent;
+        (self.radius, self.absolute, self.gamma, self.shell_stiffness) = (r, absolute, gamma, ball.shell_stiffness);
+        self.inverse_volume = 1.0 / (4.0 * r * r * r);
         let cap0 = delta0 * delta0 * (3.0 * r - delta0) / (4.0 * r * r * r);
-        jet.f[0] = 1.0 - cap0;
-        if !(jet.f[0] > 0.0) {
+        self.f[0] = 1.0 - cap0;
+        if !(self.f[0] > 0.0) {
             return Err(KickError::Integration { time: 0.0, reason: format!("compression {delta0} m leaves no gas in the ball") });
         }
-        jet.inverse_f0 = 1.0 / jet.f[0];
+        self.inverse_f0 = 1.0 / self.f[0];
         // (1 − c)^(−γ) and the gauge pressure with the digits of a small cap.
         let log_ratio = -(-cap0).ln_1p();
-        jet.w[0] = (gamma * log_ratio).exp();
-        jet.g[0] = ball.pressure + absolute * (gamma * log_ratio).exp_m1();
-        Ok(jet)
+        self.w[0] = (gamma * log_ratio).exp();
+        self.g[0] = ball.pressure + absolute * (gamma * log_ratio).exp_m1();
+        Ok(())
     }
 
     /// E_k from δ_0..δ_k (`d`).

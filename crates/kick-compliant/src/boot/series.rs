@@ -53,10 +53,11 @@ use kick_core::{Boot, ContactLaw, KickError, Outcome, Scenario, ShellBall, Solve
 /// BOOTED_STEP_SCALE × tolerance × L (T, L the scenario's time and length).
 /// Measured worst error against the engine at 1e-14 over the test's box
 /// (`tests/solvers/boot.rs`, 268 kicks, shell losses up to 2x the FIFA
-/// one): 4.4e-14 with the bare series' 1e-5 (14.9 steps per kick of the 1D
-/// sweep with `--leg`), 1.9e-13 with 1e-4 (13.4 steps), 2.5e-12 with 1e-3
-/// (chosen: 11.9 steps, the documented 1e-10 with a margin of 40), 1.6e-11
-/// with 3e-3 (11.4 steps). In t, before σ, 1e-3 took 18.5 steps.
+/// one): 1.4e-12 with 1e-3 (chosen: 11.9 steps per kick of the 1D sweep
+/// with `--leg`, the documented 1e-10 with a margin of 70); with the force
+/// peak found on N and D themselves, 4.4e-14 with the bare series' 1e-5
+/// (14.9 steps), 1.9e-13 with 1e-4 (13.4), 2.5e-12 with 1e-3, 1.6e-11 with
+/// 3e-3 (11.4). In t, before σ, 1e-3 took 18.5 steps.
 const BOOTED_STEP_SCALE: f64 = 1e-3;
 
 /// Bound on steps in one contact (typical: 10 to 20).
@@ -69,7 +70,8 @@ pub fn applies(scenario: &Scenario) -> bool {
 }
 
 /// One step's coefficients in σ from its start (module docs): β, b, v and
-/// t − t_start to σ^K; N = D F and D to σ^(K−1); D P to σ^(K−2).
+/// t − t_start to σ^K; N = D F and D to σ^(K−1); D P and N' D − N D' (the
+/// sign of dF/dσ) to σ^(K−2). Filled in place, step after step.
 struct Step {
     ball: [f64; K + 1],
     boot: [f64; K + 1],
@@ -78,42 +80,68 @@ struct Step {
     force: [f64; K],
     divisor: [f64; K],
     dissipation: [f64; K - 1],
+    force_turn: [f64; K - 1],
+    jet: ElasticJet,
 }
 
-fn step(ball: &ShellBall, boot: &Boot, mu: f64, drive_share: f64, state: (f64, f64, f64)) -> Result<Step, KickError> {
-    let (ball0, rate0, boot0) = state;
-    let s = ball.shell_damping;
-    let (kb, cb) = (boot.stiffness, boot.damping);
-    let (mut beta, mut b, mut v, mut time) = ([0.0; K + 1], [0.0; K + 1], [0.0; K + 1], [0.0; K + 1]);
-    let (mut force, mut divisor) = ([0.0; K], [0.0; K]);
-    // A v and E − k_b b, for the products of the loss power.
-    let (mut area_rate, mut relaxing) = ([0.0; K], [0.0; K]);
-    beta[0] = ball0;
-    b[0] = boot0;
-    v[0] = rate0;
-    let mut jet = ElasticJet::new(ball, ball0)?;
-    let inverse_mu = 1.0 / mu;
-    for k in 0..K {
-        jet.next(k, &beta);
-        let (e, a) = (jet.elastic()[k], jet.area());
-        let av: f64 = (0..=k).map(|i| a[i] * v[k - i]).sum();
-        let ab: f64 = (0..=k).map(|i| a[i] * b[k - i]).sum();
-        let d = s * a[k] + if k == 0 { cb } else { 0.0 };
-        let n = cb * e + s * (kb * ab + cb * av);
-        let inverse = INVERSE[k + 1];
-        beta[k + 1] = (cb * v[k] + kb * b[k] - e) * inverse;
-        b[k + 1] = (e + s * av - kb * b[k]) * inverse;
-        v[k + 1] = (drive_share * d - n) * inverse_mu * inverse;
-        time[k + 1] = d * inverse;
-        (force[k], divisor[k], area_rate[k], relaxing[k]) = (n, d, av, e - kb * b[k]);
+impl Step {
+    fn new(ball: &ShellBall) -> Result<Step, KickError> {
+        Ok(Step {
+            ball: [0.0; K + 1],
+            boot: [0.0; K + 1],
+            rate: [0.0; K + 1],
+            time: [0.0; K + 1],
+            force: [0.0; K],
+            divisor: [0.0; K],
+            dissipation: [0.0; K - 1],
+            force_turn: [0.0; K - 1],
+            jet: ElasticJet::new(ball, 0.0)?,
+        })
     }
-    let mut dissipation = [0.0; K - 1];
-    for (k, slot) in dissipation.iter_mut().enumerate() {
-        let layer: f64 = (0..=k).map(|i| relaxing[i] * relaxing[k - i]).sum();
-        let shell: f64 = (0..=k).map(|i| area_rate[i] * v[k - i]).sum();
-        *slot = layer + cb * s * shell;
+
+    /// The coefficients from (β, v, b) at the step's start.
+    fn expand(&mut self, ball: &ShellBall, boot: &Boot, mu: f64, drive_share: f64, state: (f64, f64, f64)) -> Result<(), KickError> {
+        let Step { ball: beta, boot: b, rate: v, time, force, divisor, dissipation, force_turn, jet } = self;
+        let s = ball.shell_damping;
+        let (kb, cb) = (boot.stiffness, boot.damping);
+        // A v and E − k_b b, for the products of the loss power; N' and D'.
+        let (mut area_rate, mut relaxing) = ([0.0; K], [0.0; K]);
+        let (mut force_rate, mut divisor_rate) = ([0.0; K - 1], [0.0; K - 1]);
+        (beta[0], v[0], b[0]) = state;
+        jet.restart(ball, beta[0])?;
+        let inverse_mu = 1.0 / mu;
+        for k in 0..K {
+            jet.next(k, &beta[..]);
+            let (e, a) = (jet.elastic()[k], jet.area());
+            let (mut av, mut ab) = (0.0, 0.0);
+            for i in 0..k + 1 {
+                av += a[i] * v[k - i];
+                ab += a[i] * b[k - i];
+            }
+            let d = s * a[k] + if k == 0 { cb } else { 0.0 };
+            let n = cb * e + s * (kb * ab + cb * av);
+            let inverse = INVERSE[k + 1];
+            beta[k + 1] = (cb * v[k] + kb * b[k] - e) * inverse;
+            b[k + 1] = (e + s * av - kb * b[k]) * inverse;
+            v[k + 1] = (drive_share * d - n) * inverse_mu * inverse;
+            time[k + 1] = d * inverse;
+            (force[k], divisor[k], area_rate[k], relaxing[k]) = (n, d, av, e - kb * b[k]);
+            if k > 0 {
+                (force_rate[k - 1], divisor_rate[k - 1]) = (k as f64 * n, k as f64 * d);
+            }
+        }
+        for k in 0..K - 1 {
+            let (mut layer, mut shell, mut turn) = (0.0, 0.0, 0.0);
+            for i in 0..k + 1 {
+                layer += relaxing[i] * relaxing[k - i];
+                shell += area_rate[i] * v[k - i];
+                turn += force_rate[i] * divisor[k - i] - force[i] * divisor_rate[k - i];
+            }
+            dissipation[k] = layer + cb * s * shell;
+            force_turn[k] = turn;
+        }
+        Ok(())
     }
-    Ok(Step { ball: beta, boot: b, rate: v, time, force, divisor, dissipation })
 }
 
 /// The booted contact of `scenario` with `ball` (module docs); `tolerance`
@@ -130,6 +158,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
     let mut extremes = Extremes::new(0.0);
     let mut steps = 0u32;
     let trap_floor = drive_share * drive_share / (2.0 * boot.stiffness);
+    let mut s = Step::new(&ball)?;
     loop {
         steps += 1;
         if steps > MAX_STEPS {
@@ -138,7 +167,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
                 reason: format!("the booted series took more than {MAX_STEPS} steps without separation"),
             });
         }
-        let s = step(&ball, &boot, mu, drive_share, (compression, rate, layer))?;
+        s.expand(&ball, &boot, mu, drive_share, (compression, rate, layer))?;
         // The clamp: the force at the step's start, with the ball compressed.
         if s.ball[0] > 0.0 && s.force[0] <= 0.0 {
             return Err(KickError::NotApplicable {
@@ -175,10 +204,7 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, boot: Boot, tolerance: f64) -
             h,
             |x| t + poly(&s.time, x),
             (|x| poly(ball_poly, x), |x| derivative(ball_poly, x)),
-            (
-                |x| poly(&s.force, x) / poly(&s.divisor, x),
-                |x| derivative(&s.force, x) * poly(&s.divisor, x) - poly(&s.force, x) * derivative(&s.divisor, x),
-            ),
+            (|x| poly(&s.force, x) / poly(&s.divisor, x), |x| poly(&s.force_turn, x)),
             &mut extremes,
         );
         dissipated += integral(&s.dissipation, h);
