@@ -733,7 +733,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(format, &identify::profile(&settings)?)
         }
         Command::Run(a) => {
-            set_threads(a.threads)?;
+            set_threads(a.threads).map_err(|e| e.to_string())?;
             out.print(Format::Text, &shard::run_file(&a.file, &a.out, a.shard.as_deref())?)
         }
         Command::Merge(a) => out.print(Format::Text, &shard::merge(&a.out, &a.parts).map_err(|e| e.to_string())?),
@@ -779,7 +779,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
             out.print(Format::Text, &sweep3d::sweep3d(&settings)?)
         }
         Command::Reproduce(a) => {
-            set_threads(a.threads)?;
+            set_threads(a.threads).map_err(|e| e.to_string())?;
             let settings = reproduce::ReproduceSettings {
                 experiments: a.experiments,
                 out: a.out,

@@ -541,8 +541,8 @@ pub struct RunEnd<const N: usize> {
 
 impl<const N: usize> RunEnd<N> {
     /// The peaks the run located.
-    pub fn extremes(&self) -> crate::ode::Extremes {
-        crate::ode::Extremes {
+    pub fn extremes(&self) -> Extremes {
+        Extremes {
             peak_force: self.peak_force,
             peak_force_time: self.peak_force_time,
             max_compression: self.max_compression,
@@ -842,6 +842,32 @@ fn check_release<L: ContactLaw>(scenario: &Scenario, law: &L, max_compression: f
         });
     }
     Ok(())
+}
+
+/// Running extremes taken along a solution.
+#[derive(Debug, Clone, Copy)]
+pub struct Extremes {
+    pub peak_force: f64,
+    pub peak_force_time: f64,
+    pub max_compression: f64,
+    pub max_compression_time: f64,
+}
+
+impl Extremes {
+    pub fn new(initial_force: f64) -> Self {
+        Extremes { peak_force: initial_force, peak_force_time: 0.0, max_compression: 0.0, max_compression_time: 0.0 }
+    }
+    #[inline]
+    pub fn observe(&mut self, t: f64, force: f64, compression: f64) {
+        if force > self.peak_force {
+            self.peak_force = force;
+            self.peak_force_time = t;
+        }
+        if compression > self.max_compression {
+            self.max_compression = compression;
+            self.max_compression_time = t;
+        }
+    }
 }
 
 #[cfg(test)]

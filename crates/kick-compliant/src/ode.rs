@@ -192,31 +192,7 @@ pub fn compression_rate(y: &State) -> f64 {
     y[FOOT_VELOCITY] - y[BALL_VELOCITY]
 }
 
-/// Running extremes taken along a solution.
-#[derive(Debug, Clone, Copy)]
-pub struct Extremes {
-    pub peak_force: f64,
-    pub peak_force_time: f64,
-    pub max_compression: f64,
-    pub max_compression_time: f64,
-}
-
-impl Extremes {
-    pub fn new(initial_force: f64) -> Self {
-        Extremes { peak_force: initial_force, peak_force_time: 0.0, max_compression: 0.0, max_compression_time: 0.0 }
-    }
-    #[inline]
-    pub fn observe(&mut self, t: f64, force: f64, compression: f64) {
-        if force > self.peak_force {
-            self.peak_force = force;
-            self.peak_force_time = t;
-        }
-        if compression > self.max_compression {
-            self.max_compression = compression;
-            self.max_compression_time = t;
-        }
-    }
-}
+pub use crate::events::Extremes;
 
 /// Assemble the summary from the final state; checks that nothing is NaN.
 pub fn outcome<L: ContactLaw + Copy>(

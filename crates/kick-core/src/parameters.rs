@@ -784,6 +784,86 @@ pub const BOOT_DAMPING: ParameterDef = scalar(
     "Damping of the compliant layer in series, F = k_b δ_b + c_b dδ_b/dt",
 );
 
+// The shell ball's (law `shell`, crate::shell).
+
+/// Standard atmosphere at sea level, Pa (Law 2 states the pressure "at sea level").
+pub const SEA_LEVEL_PRESSURE: f64 = 101_325.0;
+
+const fn ball(
+    name: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+    default: f64,
+    valid: Valid,
+    sample: Option<SampleRange>,
+    doc: &'static str,
+) -> ParameterDef {
+    ParameterDef {
+        name,
+        symbol,
+        unit,
+        level: Level::Bounce,
+        shape: Shape::Scalar,
+        default: DefaultValue::Number(default),
+        valid,
+        sample,
+        doc,
+    }
+}
+
+/// p0 = 0.8 bar, the FIFA Quality Programme's test pressure; sampled over
+/// Law 2's 0.6–1.1 atm.
+pub const INFLATION_PRESSURE: ParameterDef = ball(
+    "inflation_pressure",
+    "p0",
+    "Pa",
+    8.0e4,
+    Valid {
+        low: Bound::Closed(1.0e3),
+        high: Bound::Closed(1.0e7),
+        requirement: "in [1e3, 1e7] Pa gauge (0.01-100 bar: a ball neither flat nor burst)",
+    },
+    Some(SampleRange { spacing: Spacing::Linear, from: 0.6 * SEA_LEVEL_PRESSURE, to: 1.1 * SEA_LEVEL_PRESSURE, zero_probability: 0.0 }),
+    "Gauge inflation pressure of the shell ball (Law 2: 0.6-1.1 atm; FIFA tests at 0.8 bar)",
+);
+/// γ of air (c_p/c_v = 1.40); a ~10 ms impact leaves no time for heat to flow.
+pub const GAS_EXPONENT: ParameterDef = ball(
+    "gas_exponent",
+    "γ",
+    "1",
+    1.4,
+    Valid { low: Bound::Closed(1.0), high: Bound::Closed(5.0 / 3.0), requirement: "in [1, 5/3] (1: isothermal, 1.4: adiabatic air)" },
+    None,
+    "Polytropic exponent of the gas, P V^γ constant (1.4: air compressed adiabatically)",
+);
+/// k_s: not identified from a checked measurement (kick-bounce SOURCES.md);
+/// 0 leaves the pressure alone to carry the ball.
+pub const SHELL_STIFFNESS: ParameterDef = ball(
+    "shell_stiffness",
+    "k_s",
+    "N/m",
+    0.0,
+    Valid { low: Bound::Closed(0.0), high: Bound::Closed(1.0e8), requirement: "in [0, 1e8] N/m (a shell, not a rigid sphere)" },
+    None,
+    "Linear stiffness of the shell itself (bending), beside the gas",
+);
+/// β identified from the FIFA rebound test: the default ball dropped 2 m
+/// (gravity on during contact, as in the test) rebounds to 1.40 m, the
+/// middle of 115–165 cm; `shell_damping_is_the_fifa_rebound` in kick-bounce
+/// recomputes it.
+pub const SHELL_DAMPING: ParameterDef = ball(
+    "shell_damping",
+    "β",
+    "Pa s/m",
+    SHELL_DAMPING_FIFA,
+    Valid { low: Bound::Closed(0.0), high: Bound::Closed(1.0e6), requirement: "in [0, 1e6] Pa s/m (about 270x the FIFA-calibrated loss)" },
+    None,
+    "Loss of the shell: a viscous stress β δ̇ over the contact patch, F = A(δ)(P − p_atm + β δ̇) + k_s δ (calibrated on the FIFA rebound test)",
+);
+
+/// β of the FIFA calibration, Pa s/m ([`SHELL_DAMPING`]'s default).
+pub const SHELL_DAMPING_FIFA: f64 = 3_759.624_857_9;
+
 /// Every parameter of the 1D and 3D levels, each once, lower levels first.
 pub static PARAMETERS: [ParameterDef; 35] = [
     FOOT_MASS,
@@ -811,11 +891,11 @@ pub static PARAMETERS: [ParameterDef; 35] = [
     FACE_PITCH,
     INSTEP_RADIUS,
     PATCH_CONTACT,
-    // Law `shell`'s ball (kick-core's shell.rs), taken by 1D kicks under it.
-    crate::shell::INFLATION_PRESSURE,
-    crate::shell::GAS_EXPONENT,
-    crate::shell::SHELL_STIFFNESS,
-    crate::shell::SHELL_DAMPING,
+    // Law `shell`'s ball (crate::shell), taken by 1D kicks under it.
+    INFLATION_PRESSURE,
+    GAS_EXPONENT,
+    SHELL_STIFFNESS,
+    SHELL_DAMPING,
     // The foot (leg and boot), taken by 1D and 3D kicks alike.
     LEG,
     KNEE,

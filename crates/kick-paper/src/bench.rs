@@ -8,13 +8,14 @@
 //! evaluation counts do not depend on the clock: they make the solvers page.
 
 use crate::figures::{save_grid, Panel, Series};
-use crate::h5::{write_f64_attr, write_strings, Column, OutcomeSet, Setting, SweepData, SweepWriter};
+use crate::h5::{write_f64_attr, write_strings, Column, OutcomeSet, Setting, SweepData};
 use crate::printable::Printable;
 use crate::sample::SampledSweep;
 use crate::Provenance;
 use kick_compliant::precision::{self, PrecisionPoint};
 use kick_compliant::SolverChoice;
 use kick_core::Solver;
+use kick_store::SweepWriter;
 use plotters::prelude::SeriesLabelPosition;
 use rayon::prelude::*;
 use serde::Serialize;

@@ -23,10 +23,9 @@ pub mod patch;
 pub mod report;
 pub mod reproduce;
 pub mod three_d;
-pub mod units;
 pub mod validation;
 
 // The modules of kick-study and kick-store under the names this crate's files use.
 pub(crate) use kick_store::{compare, h5, output, provenance, run, shard, sweep, sweep3d};
-pub(crate) use kick_store::{Provenance, ResultFile, ResultWriter, SweepData};
-pub(crate) use kick_study::{checks, flight, printable, sample, table2};
+pub(crate) use kick_store::{Provenance, ResultFile, SweepData};
+pub(crate) use kick_study::{checks, flight, printable, sample, units};

@@ -8,6 +8,7 @@ use crate::free_kick;
 use crate::h5::SweepData;
 use crate::links::relative;
 use crate::three_d::{curves, value_label};
+use crate::units::sig;
 use crate::units::{spin, three, RPM_PER_RAD_PER_S};
 use kick_3d::Kick3d;
 use kick_core::short;
@@ -25,19 +26,6 @@ pub const ACCURACY_KICKS: u64 = 200;
 
 fn err(e: impl std::fmt::Display) -> String {
     e.to_string()
-}
-
-/// `x` to `digits` significant digits, as text.
-pub(crate) fn sig(x: f64, digits: usize) -> String {
-    if !x.is_finite() {
-        return "—".into();
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let magnitude = x.abs().log10().floor() as i32;
-    let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;
-    format!("{x:.decimals$}")
 }
 
 /// The scene path's launch-velocity error against `accurate` on the
@@ -278,7 +266,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     let base = kick_core::Scenario::baseline();
     let spin_at = |mu: f64| kick_3d::validation::spin_point(&base, 0.05, mu).map(|p| p.spin).map_err(|e| e.to_string());
     let (spin0, spin1) = (spin_at(0.0)?, spin_at(1.0)?);
-    if spin0.abs() >= crate::validation::ZERO_SPIN {
+    if spin0.abs() >= crate::units::ZERO_SPIN {
         return Err(format!("the frictionless kick at 5 cm spins at {spin0} rad/s: the page says zero to rounding"));
     }
     let gain5 = spin1 - spin0;

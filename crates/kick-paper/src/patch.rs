@@ -1,336 +1,31 @@
-//! The contact patch on the 3D page (issue 22, item 8): spin against offset
-//! for the shell ball's point contact and its patch on a cap, beside Asai et
-//! al. (2002), and one off-center kick's patch over time. Both are written
-//! to HDF5 first (`OUT/3d_patch_spin.h5`, layout `patch-spin`;
-//! `OUT/3d_patch_history.h5`, the history layout with the patch's columns),
-//! then drawn and discussed from those files: every number on the page is
-//! read from them when it is written.
+//! The contact patch on the 3D page (issue 22, item 8), drawn and discussed
+//! from its two files: spin against offset for the shell ball's point
+//! contact and its patch on a cap, beside Asai et al. (2002), and one
+//! off-center kick's patch over time. kick-study solves them
+//! (`kick_study::patch`), kick-store writes and reads them
+//! (`kick_store::patch`); every number on the page is read from the files.
 
 use crate::figures::{color, save_grid, FigureError, Panel, Series};
 use crate::links::relative;
-use crate::{Provenance, ResultFile, ResultWriter};
-use kick_3d::{ContactState, Kick3d, Kick3dError, Kick3dSpec, KickSpec};
-use kick_core::measurements::Measurements;
-use kick_core::{short, LawKind, Scenario, Spacing};
-use kick_store::h5::Column;
-use kick_store::history::HistoryRequest;
+use crate::ResultFile;
+use kick_3d::ContactState;
+use kick_core::short;
+pub use kick_store::patch::{read_asai, read_spin, HISTORY_FILE, SPIN_FILE};
+pub use kick_study::patch::{
+    friction_gain, offsets, AsaiClaims, Curve, SpinData, CAP_RADIUS, CONTACTS, FRICTIONS, HISTORY_FRICTION, HISTORY_OFFSET,
+    HISTORY_SAMPLES, OFFSET_STEP,
+};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// The spin file and figure, below the results and figures directories.
-pub const SPIN_FILE: &str = "3d_patch_spin.h5";
+/// The spin figure, below the figures directory.
 pub const SPIN_FIGURE: &str = "3d_patch_spin";
-/// The history file and figure.
-pub const HISTORY_FILE: &str = "3d_patch_history.h5";
+/// The history figure.
 pub const HISTORY_FIGURE: &str = "3d_patch_history";
-
-/// The cap's radius of curvature, m: an assumption (no published instep
-/// curvature was found, `kick_3d::patch`), of the order of the ball's
-/// radius and at least the face's half-extents, as the instep requires.
-pub const CAP_RADIUS: f64 = kick_3d::validation::ASSUMED_INSTEP_RADIUS;
-/// Friction coefficients of the curves (Asai et al. compare 0 and 1).
-pub const FRICTIONS: [f64; 3] = [0.0, 0.5, 1.0];
-/// Offsets: 0 to 110 mm (the ball's radius) in 5 mm steps.
-pub const OFFSET_STEP: f64 = 0.005;
-pub const OFFSETS: usize = 23;
-/// The history's kick: 5 cm off the swing line, μ = 0.5, patch on the cap.
-pub const HISTORY_OFFSET: f64 = 0.05;
-pub const HISTORY_FRICTION: f64 = 0.5;
-/// Rows of the history: grip/slip shaded to 1/2000 of the contact.
-pub const HISTORY_SAMPLES: usize = 2001;
-
-/// One contact model of the spin figure.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Contact {
-    /// Its group below `/curves`.
-    pub key: &'static str,
-    pub label: &'static str,
-    pub patch: bool,
-    /// r_i, m (None: the flat face).
-    pub instep_radius: Option<f64>,
-    /// ψ, degrees (None: asin(e/R), the knife edge).
-    pub face_yaw_deg: Option<f64>,
-}
-
-/// The level below (the rigid sphere's point contact on the knife-edge
-/// face, with the shell ball's law) and the patch on a cap square to the swing.
-pub const CONTACTS: [Contact; 2] = [
-    Contact { key: "point", label: "point contact (knife edge)", patch: false, instep_radius: None, face_yaw_deg: None },
-    Contact { key: "patch_cap", label: "patch on a cap", patch: true, instep_radius: Some(CAP_RADIUS), face_yaw_deg: Some(0.0) },
-];
-
-/// The shell ball (FIFA-calibrated defaults) on Table 1's foot.
-pub fn shell() -> Result<Scenario, String> {
-    Scenario::baseline().with_law(LawKind::Shell, None).map_err(|e| e.to_string())
-}
-
-impl Contact {
-    /// The kick's spec at offset `e`, friction `mu`.
-    pub fn spec(&self, offset: f64, friction: f64) -> Kick3dSpec {
-        Kick3dSpec {
-            offset: Some(offset),
-            friction: Some(friction),
-            patch_contact: self.patch.then_some(true),
-            instep_radius: self.instep_radius,
-            face_yaw_deg: self.face_yaw_deg,
-            ..Kick3dSpec::default()
-        }
-    }
-    /// What the contact is, in words (the file's `contact` attribute).
-    pub fn description(&self) -> String {
-        match (self.patch, self.instep_radius) {
-            (true, Some(r)) => format!(
-                "normal force spread over the patch, instep a sphere cap of radius {} m (an assumption) square to the swing (face_yaw 0)",
-                short(r)
-            ),
-            (true, None) => "normal force spread over the patch on the flat knife-edge face".into(),
-            (false, _) => {
-                "point contact (rigid sphere: the normal force through the centre), flat face tilted by asin(e/R) (knife edge)".into()
-            }
-        }
-    }
-}
-
-/// The offsets asked for, m.
-pub fn offsets() -> Vec<f64> {
-    (0..OFFSETS).map(|i| OFFSET_STEP * i as f64).collect()
-}
-
-/// One curve: the kicks of one contact model and friction that were solved.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Curve {
-    /// Index into [`CONTACTS`].
-    pub contact: usize,
-    pub friction: f64,
-    pub offset: Vec<f64>,
-    /// ω_z, rad/s (z up).
-    pub spin_z: Vec<f64>,
-    /// |ω|, rad/s.
-    pub spin: Vec<f64>,
-    pub speed: Vec<f64>,
-    /// deg.
-    pub launch_azimuth: Vec<f64>,
-    pub contact_time: Vec<f64>,
-    /// Offsets left out and why.
-    pub refused: Vec<(f64, String)>,
-}
-
-/// The spin file's content.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SpinData {
-    pub offsets: Vec<f64>,
-    pub curves: Vec<Curve>,
-}
-
-fn solve(base: Scenario, contact: &Contact, offset: f64, friction: f64) -> Result<kick_3d::Outcome3d, Kick3dError> {
-    kick_3d::Accurate3d::default().solve(&Kick3d::new(base, &contact.spec(offset, friction))?)
-}
-
-/// Every kick of the figure, solved (accurate path); a refused kick is
-/// left out of its curve with its reason. A numerical failure is an error.
-pub fn compute() -> Result<SpinData, String> {
-    let offsets = offsets();
-    let base = shell()?;
-    let mut curves = Vec::new();
-    for (c, contact) in CONTACTS.iter().enumerate() {
-        for &friction in &FRICTIONS {
-            let mut curve = Curve {
-                contact: c,
-                friction,
-                offset: Vec::new(),
-                spin_z: Vec::new(),
-                spin: Vec::new(),
-                speed: Vec::new(),
-                launch_azimuth: Vec::new(),
-                contact_time: Vec::new(),
-                refused: Vec::new(),
-            };
-            for &e in &offsets {
-                match solve(base, contact, e, friction) {
-                    Ok(o) => {
-                        let [x, y, z] = o.spin;
-                        curve.offset.push(e);
-                        curve.spin_z.push(z);
-                        curve.spin.push((x * x + y * y + z * z).sqrt());
-                        curve.speed.push(o.speed);
-                        curve.launch_azimuth.push(o.launch_azimuth);
-                        curve.contact_time.push(o.contact_time);
-                    }
-                    Err(err) if err.status() == kick_core::Status::Refused => curve.refused.push((e, err.to_string())),
-                    Err(err) => return Err(format!("{}, e = {e} m, μ = {friction}: {err}", contact.label)),
-                }
-            }
-            curves.push(curve);
-        }
-    }
-    Ok(SpinData { offsets, curves })
-}
 
 fn h5(e: impl std::fmt::Display) -> String {
     e.to_string()
-}
-
-fn curve_group(curve: &Curve) -> String {
-    format!("curves/{}/mu_{}", CONTACTS[curve.contact].key, short(curve.friction))
-}
-
-/// Write `data` to `path` (whole or not at all), with the parameters the
-/// kicks share under `/fixed` and `command` in the provenance.
-pub fn write_spin(path: &Path, data: &SpinData, asai: &AsaiClaims, command: &str) -> Result<PathBuf, String> {
-    let provenance = Provenance::now("3d_patch_spin", "kick reproduce (patch)", command);
-    let w = ResultWriter::create(path, &provenance, &kick_store::layouts::PATCH_SPIN).map_err(h5)?;
-    w.text("", "description", "spin against offset, shell ball on Table 1's foot: point contact against the patch on a cap").map_err(h5)?;
-    w.text("", "law", LawKind::Shell.name()).map_err(h5)?;
-    w.text("", "solver", "accurate-3d").map_err(h5)?;
-    // The parameters every kick shares: those equal in both contacts' kicks, offset and friction aside.
-    let base = shell()?;
-    let metas: Vec<_> = CONTACTS
-        .iter()
-        .map(|c| Kick3d::new(base, &c.spec(HISTORY_OFFSET, HISTORY_FRICTION)).map(|k| kick_study::simulate::meta_3d(&k).fixed))
-        .collect::<Result<_, _>>()
-        .map_err(h5)?;
-    for (name, unit, values) in &metas[0] {
-        let shared = metas[1..].iter().all(|m| m.iter().any(|(n, _, v)| n == name && v == values));
-        if shared && name != "offset" && name != "friction" {
-            w.column("fixed", &Column::new(name, unit), values).map_err(h5)?;
-        }
-    }
-    w.column("grid", &Column::new("offset", "m"), &data.offsets).map_err(h5)?;
-    // What the figure is drawn beside: Asai et al.'s (2002) published numbers.
-    w.scalar("asai2002", "friction_gain", "rad/s", asai.friction_gain).map_err(h5)?;
-    w.scalar("asai2002", "peak_offset", "m", asai.peak_offset).map_err(h5)?;
-    w.text("asai2002", "source", &asai.source).map_err(h5)?;
-    for curve in &data.curves {
-        let g = curve_group(curve);
-        let contact = &CONTACTS[curve.contact];
-        w.text(&g, "contact", &contact.description()).map_err(h5)?;
-        w.scalar(&g, "friction", "1", curve.friction).map_err(h5)?;
-        w.scalar(&g, "patch_contact", "1", if contact.patch { 1.0 } else { 0.0 }).map_err(h5)?;
-        w.scalar(&g, "instep_radius", "m", contact.instep_radius.unwrap_or(0.0)).map_err(h5)?;
-        for (name, unit, values) in [
-            ("offset", "m", &curve.offset),
-            ("spin_z", "rad/s", &curve.spin_z),
-            ("spin", "rad/s", &curve.spin),
-            ("speed", "m/s", &curve.speed),
-            ("launch_azimuth", "deg", &curve.launch_azimuth),
-            ("contact_time", "s", &curve.contact_time),
-        ] {
-            w.column(&g, &Column::new(name, unit), values).map_err(h5)?;
-        }
-        let (at, why): (Vec<f64>, Vec<String>) = curve.refused.iter().cloned().unzip();
-        w.column(&g, &Column::new("refused_offset", "m"), &at).map_err(h5)?;
-        w.strings(&g, "refused_reason", &why).map_err(h5)?;
-    }
-    w.finish().map_err(h5)
-}
-
-/// The spin file read back.
-pub fn read_spin(path: &Path) -> Result<SpinData, String> {
-    let f = ResultFile::open(path).map_err(h5)?;
-    let offsets = f.values("grid/offset").map_err(h5)?;
-    let mut curves = Vec::new();
-    for (c, contact) in CONTACTS.iter().enumerate() {
-        let group = format!("curves/{}", contact.key);
-        let mut found = Vec::new();
-        for member in f.members(&group).map_err(h5)? {
-            let g = format!("{group}/{member}");
-            let v = |name: &str| f.values(&format!("{g}/{name}")).map_err(h5);
-            let refused_at = v("refused_offset")?;
-            let reasons = f.strings(&format!("{g}/refused_reason")).map_err(h5)?;
-            found.push(Curve {
-                contact: c,
-                friction: f.scalar(&format!("{g}/friction")).map_err(h5)?,
-                offset: v("offset")?,
-                spin_z: v("spin_z")?,
-                spin: v("spin")?,
-                speed: v("speed")?,
-                launch_azimuth: v("launch_azimuth")?,
-                contact_time: v("contact_time")?,
-                refused: refused_at.into_iter().zip(reasons).collect(),
-            });
-        }
-        found.sort_by(|a, b| a.friction.total_cmp(&b.friction));
-        curves.extend(found);
-    }
-    Ok(SpinData { offsets, curves })
-}
-
-impl SpinData {
-    /// The curve of contact `c` at friction `mu`.
-    pub fn curve(&self, contact: usize, friction: f64) -> Option<&Curve> {
-        self.curves.iter().find(|k| k.contact == contact && k.friction == friction)
-    }
-
-    /// The sign of ω_z that friction gives (+1 or −1): that of the point
-    /// contact's spin at the largest friction, where all of it is friction's.
-    pub fn friction_sense(&self) -> f64 {
-        let mu = FRICTIONS[FRICTIONS.len() - 1];
-        let sum: f64 = self.curve(0, mu).map_or(0.0, |k| k.spin_z.iter().sum());
-        if sum < 0.0 {
-            -1.0
-        } else {
-            1.0
-        }
-    }
-}
-
-impl Curve {
-    /// Sidespin in friction's sense, s ω_z (s = [`SpinData::friction_sense`]).
-    pub fn sidespin(&self, sense: f64) -> Vec<f64> {
-        self.spin_z.iter().map(|w| sense * w).collect()
-    }
-
-    /// The solved offset of the largest sidespin and that spin (on the grid).
-    pub fn largest(&self, sense: f64) -> Option<(f64, f64)> {
-        let s = self.sidespin(sense);
-        (0..s.len()).max_by(|&a, &b| s[a].total_cmp(&s[b])).map(|i| (self.offset[i], s[i]))
-    }
-
-    /// The sidespin at offset `e`, if it was solved.
-    pub fn at(&self, e: f64, sense: f64) -> Option<f64> {
-        self.offset.iter().position(|&x| x == e).map(|i| sense * self.spin_z[i])
-    }
-}
-
-/// Sidespin added by friction 0 → 1 for contact `c` at each offset solved
-/// on both curves: (offsets, gains), friction's sense.
-pub fn friction_gain(data: &SpinData, contact: usize) -> (Vec<f64>, Vec<f64>) {
-    let sense = data.friction_sense();
-    let (Some(zero), Some(one)) = (data.curve(contact, 0.0), data.curve(contact, 1.0)) else { return (Vec::new(), Vec::new()) };
-    one.offset.iter().filter_map(|&e| Some((e, one.at(e, sense)? - zero.at(e, sense)?))).unzip()
-}
-
-/// Asai et al.'s (2002) abstract, as published in the measurement file:
-/// the largest gain from friction 0 → 1 (rad/s) and the offset of largest spin (m).
-#[derive(Debug, Clone, PartialEq)]
-pub struct AsaiClaims {
-    pub friction_gain: f64,
-    pub peak_offset: f64,
-    /// The measurement file and keys they were read from.
-    pub source: String,
-}
-
-/// The claims as the spin file holds them.
-pub fn read_asai(path: &Path) -> Result<AsaiClaims, String> {
-    let f = ResultFile::open(path).map_err(h5)?;
-    Ok(AsaiClaims {
-        friction_gain: f.scalar("asai2002/friction_gain").map_err(h5)?,
-        peak_offset: f.scalar("asai2002/peak_offset").map_err(h5)?,
-        source: f.text("asai2002", "source").map_err(h5)?,
-    })
-}
-
-pub fn asai_claims(measurements: &Path) -> Result<AsaiClaims, String> {
-    use kick_3d::validation::keys;
-    let m = Measurements::load(measurements).map_err(h5)?;
-    let needed = "the patch spin figure (kick_paper::patch)";
-    let gain = m.measured(keys::FRICTION_GAIN, needed).map_err(h5)?;
-    let peak = m.measured(keys::PEAK_OFFSET, needed).map_err(h5)?;
-    let friction_gain = gain.high.ok_or("no friction gain")?;
-    let peak_offset = peak.midpoint().ok_or("no peak offset")?;
-    let source = format!("{}: {}, {}", measurements.display(), keys::FRICTION_GAIN, keys::PEAK_OFFSET);
-    Ok(AsaiClaims { friction_gain, peak_offset, source })
 }
 
 fn line_style(contact: usize, s: Series) -> Series {
@@ -420,14 +115,6 @@ pub fn history_command(out: &Path) -> String {
          --friction {HISTORY_FRICTION} --history {} --samples {HISTORY_SAMPLES}",
         out.join(HISTORY_FILE).display()
     )
-}
-
-/// The history's kick as a spec.
-pub fn history_spec() -> KickSpec {
-    let mut spec = KickSpec::default();
-    spec.scenario.law = Some(LawKind::Shell);
-    spec.kick3d = CONTACTS[1].spec(HISTORY_OFFSET, HISTORY_FRICTION);
-    spec
 }
 
 /// The history of the patch kick, as the page and figure read it (ms, mm, kN).
@@ -542,32 +229,25 @@ pub fn draw_history(h: &PatchHistory, figures: &Path) -> Result<Vec<PathBuf>, Fi
     )
 }
 
-/// `kick reproduce`'s step: both files and both figures; returns the files written.
+/// `kick reproduce`'s step: both files (kick-store) and both figures; returns the files written.
 pub fn write(out: &Path, figures: &Path, measurements: &Path, command: &str) -> Result<Vec<PathBuf>, String> {
-    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    let data = compute()?;
-    let mut written = vec![write_spin(&out.join(SPIN_FILE), &data, &asai_claims(measurements)?, command)?];
-    let data = read_spin(&out.join(SPIN_FILE))?;
-    let asai = read_asai(&out.join(SPIN_FILE))?;
+    let mut written = kick_store::patch::run(out, measurements, command).map_err(h5)?;
+    let data = read_spin(&out.join(SPIN_FILE)).map_err(h5)?;
+    let asai = read_asai(&out.join(SPIN_FILE)).map_err(h5)?;
     written.extend(draw_spin(&data, &asai, figures).map_err(h5)?);
-    let path = out.join(HISTORY_FILE);
-    let request = HistoryRequest { path: path.clone(), spacing: Spacing::Count(HISTORY_SAMPLES), open: kick_store::history::open };
-    let run = kick_study::simulate::simulate3d(&history_spec(), "accurate", None, Some(&request), None)?;
-    written.extend(run.written);
-    let history = read_history(&path, data.friction_sense())?;
+    let history = read_history(&out.join(HISTORY_FILE), data.friction_sense())?;
     written.extend(draw_history(&history, figures).map_err(h5)?);
     Ok(written)
 }
-
 /// The runs of a state, total time (ms).
 /// Three significant digits, as the 3D page prints.
 fn sig3(x: f64) -> String {
-    crate::pages_3d::sig(x, 3)
+    crate::units::sig(x, 3)
 }
 
-/// A spin: zero to rounding below [`crate::validation::ZERO_SPIN`].
+/// A spin: zero to rounding below [`crate::units::ZERO_SPIN`].
 fn spin3(x: f64) -> String {
-    if x.abs() < crate::validation::ZERO_SPIN {
+    if x.abs() < crate::units::ZERO_SPIN {
         "zero (to rounding)".into()
     } else {
         format!("{} rad/s", sig3(x))
@@ -656,9 +336,9 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
             (0..s.len()).max_by(|&a, &b| s[a].abs().total_cmp(&s[b].abs())).map(|i| (z.offset[i], s[i]))
         });
         let zero_text = match zero {
-            Some((_, s0)) if s0.abs() < crate::validation::ZERO_SPIN => {
+            Some((_, s0)) if s0.abs() < crate::units::ZERO_SPIN => {
                 zeros.push(format!("the {} does not", contact.label));
-                format!("at μ = 0 it does not spin (|ω_z| < {} rad/s at every offset)", short(crate::validation::ZERO_SPIN))
+                format!("at μ = 0 it does not spin (|ω_z| < {} rad/s at every offset)", short(crate::units::ZERO_SPIN))
             }
             Some((e0, s0)) => {
                 let sense_text = if s0 > 0.0 { "in" } else { "against" };
@@ -804,7 +484,6 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use kick_3d::Accurate3d;
 
     fn scratch(name: &str) -> PathBuf {
         let dir = std::env::temp_dir().join(format!("kick-patch-{name}-{}", std::process::id()));
@@ -816,17 +495,12 @@ mod tests {
         Path::new(env!("CARGO_MANIFEST_DIR")).join("../../experiments/validation/measurements.toml")
     }
 
-    fn rel(a: f64, b: f64) -> f64 {
-        (a - b).abs() / b.abs().max(1e-300)
-    }
-
-    /// The spin file's kicks are the solver's: at a few offsets each curve's
-    /// spin, speed and azimuth equal a kick built here from its parameters
-    /// (the shell ball, Table 1's foot, the instep spelled out) to 1e-12;
-    /// every offset of the grid is either solved or refused with its
-    /// reason; the figures and the history file are written.
+    /// The step writes both files and both figures, and the page states the
+    /// files' numbers: the largest sidespin of the point contact at μ = 0.5
+    /// and its offset, found here by hand, and the history's lever is
+    /// M_z / |F| of its columns in friction's sense.
     #[test]
-    fn the_spin_file_holds_the_solvers_kicks() {
+    fn the_page_states_the_files_numbers() {
         let dir = scratch("file");
         let written = write(&dir, &dir.join("figures"), &measurements(), "kick reproduce --only patch").unwrap();
         let names: Vec<String> = written.iter().map(|p| p.file_name().unwrap().to_string_lossy().into_owned()).collect();
@@ -834,44 +508,14 @@ mod tests {
             names,
             [
                 "3d_patch_spin.h5",
+                "3d_patch_history.h5",
                 "3d_patch_spin.png",
                 "3d_patch_spin.svg",
-                "3d_patch_history.h5",
                 "3d_patch_history.png",
                 "3d_patch_history.svg"
             ]
         );
         let data = read_spin(&dir.join(SPIN_FILE)).unwrap();
-        assert_eq!(data.curves.len(), CONTACTS.len() * FRICTIONS.len());
-        let base = Scenario::baseline().with_law(LawKind::Shell, None).unwrap();
-        for k in &data.curves {
-            let mut all: Vec<f64> = k.offset.iter().copied().chain(k.refused.iter().map(|r| r.0)).collect();
-            all.sort_by(f64::total_cmp);
-            assert_eq!(all, data.offsets, "{:?} μ = {}", CONTACTS[k.contact].key, k.friction);
-            assert!(k.refused.iter().all(|(_, why)| !why.is_empty()));
-            for e in [0.02, 0.05, 0.08] {
-                let i = k.offset.iter().position(|&x| x == e).expect("solved");
-                let spec = if k.contact == 0 {
-                    Kick3dSpec { offset: Some(e), friction: Some(k.friction), ..Kick3dSpec::default() }
-                } else {
-                    Kick3dSpec {
-                        offset: Some(e),
-                        friction: Some(k.friction),
-                        patch_contact: Some(true),
-                        instep_radius: Some(0.15),
-                        face_yaw_deg: Some(0.0),
-                        ..Kick3dSpec::default()
-                    }
-                };
-                let o = Accurate3d::default().solve(&Kick3d::new(base, &spec).unwrap()).unwrap();
-                let size = (o.spin[0].powi(2) + o.spin[1].powi(2) + o.spin[2].powi(2)).sqrt();
-                // ω_z against |ω| (zero at μ = 0 on the point contact).
-                assert!((k.spin_z[i] - o.spin[2]).abs() <= 1e-12 * size.max(1.0), "{e} {}: {} vs {}", k.friction, k.spin_z[i], o.spin[2]);
-                assert!((k.spin[i] - size).abs() <= 1e-12 * size.max(1.0));
-                assert!(rel(k.speed[i], o.speed) <= 1e-12 && rel(k.contact_time[i], o.contact_time) <= 1e-12);
-                assert!((k.launch_azimuth[i] - o.launch_azimuth).abs() <= 1e-12 * o.launch_azimuth.abs().max(1.0));
-            }
-        }
         // The page's section states the file's numbers: the largest sidespin of
         // the point contact at μ = 0.5 and its offset, found here by hand.
         let page = page_section(&dir, &dir).unwrap();
@@ -893,55 +537,5 @@ mod tests {
         let lever = data.friction_sense() * 1e3 * mz[i] / (fx[i] * fx[i] + fy[i] * fy[i] + fz[i] * fz[i]).sqrt();
         assert!((h.lever_mm[i] - lever).abs() <= 1e-12 * lever.abs(), "{} vs {lever}", h.lever_mm[i]);
         let _ = std::fs::remove_dir_all(&dir);
-    }
-
-    fn curve(contact: usize, friction: f64, offset: &[f64], spin_z: &[f64]) -> Curve {
-        let n = offset.len();
-        Curve {
-            contact,
-            friction,
-            offset: offset.to_vec(),
-            spin_z: spin_z.to_vec(),
-            spin: spin_z.iter().map(|w| w.abs()).collect(),
-            speed: vec![20.0; n],
-            launch_azimuth: vec![0.0; n],
-            contact_time: vec![0.008; n],
-            refused: Vec::new(),
-        }
-    }
-
-    /// What the figure and page compute, on curves made up by hand:
-    /// friction's sense is the point contact's sign at μ = 1, the largest
-    /// sidespin and its offset, and the gain μ 0 → 1 only where both solved.
-    #[test]
-    fn sidespin_largest_and_gain_by_hand() {
-        let e = [0.0, 0.01, 0.02, 0.03];
-        let data = SpinData {
-            offsets: e.to_vec(),
-            curves: vec![
-                curve(0, 0.0, &e, &[0.0, 0.0, 0.0, 0.0]),
-                curve(0, 1.0, &e, &[0.0, -3.0, -7.0, -5.0]),
-                // The patch: μ = 0 spins against friction; μ = 1 misses 0.02.
-                curve(1, 0.0, &e, &[0.0, 1.0, 2.0, 4.0]),
-                curve(1, 1.0, &[0.0, 0.01, 0.03], &[0.0, -2.0, -6.0]),
-            ],
-        };
-        let s = data.friction_sense();
-        assert_eq!(s, -1.0);
-        assert_eq!(data.curves[1].largest(s), Some((0.02, 7.0)));
-        assert_eq!(data.curves[2].largest(s), Some((0.0, 0.0)));
-        assert_eq!(data.curves[3].largest(s), Some((0.03, 6.0)));
-        // Gains: (2 − (−1)) at 0.01 and (6 − (−4)) at 0.03; 0.02 left out.
-        assert_eq!(friction_gain(&data, 1), (vec![0.0, 0.01, 0.03], vec![0.0, 3.0, 10.0]));
-        assert_eq!(friction_gain(&data, 0), (e.to_vec(), vec![0.0, 3.0, 7.0, 5.0]));
-    }
-
-    /// Asai et al.'s numbers as published (their abstract: at most 13 rad/s,
-    /// around 100 mm), read from the measurement file.
-    #[test]
-    fn asai_claims_are_the_published_ones() {
-        let a = asai_claims(&measurements()).unwrap();
-        assert_eq!((a.friction_gain, a.peak_offset), (13.0, 0.1));
-        assert!(a.source.contains("spin_friction_gain_asai2002") && a.source.contains("spin_peak_offset_asai2002"));
     }
 }

@@ -1,857 +1,16 @@
-//! The validation chapter: every comparison of the model with a published
-//! measurement (`experiments/validation/measurements.toml`), written to
-//! `results/validation/validation.json` and drawn as `paper/validation.md`.
-//!
-//! The rules ([`rows`], issues 23 and 31): every row has a role
-//! (calibration, check, prediction, sensitivity statement, model
-//! comparison); the model runs at the measurement's own conditions (a force
-//! or contact time at the measured ball speed, through
-//! [`kick_identify::validation::with_ball_speed`]; the mechanical limb at its
-//! own paired foot and ball speeds; a spin where the ball leaves at the
-//! measured speed) and the row says them; every kick runs with the declared
-//! foot [`VALIDATION_FOOT`], and a row whose verdict hinges on that assumed
-//! foot is a sensitivity statement; the count takes each distinct
-//! measurement and model once, predictions read in the source with an
-//! uncertainty it states, by z = (model − measured)/u. The reasons each
-//! comparison agrees or misses are in `experiments/validation/NOTES.md`.
+//! The validation chapter's page, `paper/validation.md`, from the
+//! comparisons kick-study makes (`kick_study::validation`: every comparison
+//! of the model with a published measurement, and the rules each row
+//! follows) and writes to `results/validation/validation.json`. The reasons
+//! each comparison agrees or misses are in `experiments/validation/NOTES.md`.
 
-pub mod rows;
-
-use crate::printable::Printable;
-use crate::units::three;
-/// |ω| below this is printed as zero to rounding, rad/s.
-pub use crate::units::ZERO_SPIN;
-use kick_3d::validation::{largest_spin, patch_spin_point, spin_curve, spin_point, SpinPoint, ASSUMED_INSTEP_RADIUS, REFERENCE_FRICTION};
-use kick_core::measurements::{Checked, Comparison, Measured, Measurements};
-use kick_core::{short, LawKind, Parameter, Scenario, ShellBall, Value, DEFAULT_BALL_RADIUS};
-use kick_flight::validation::{DragCrisisModel, FreeKicks, FREE_KICK_DISTANCE, FREE_KICK_ELEVATION};
-use kick_identify::validation::{contact_model, with_ball_speed, ContactModel};
-use rows::{estimate_cell, headline, Headline, Role, Row};
-use serde::Serialize;
+use crate::units::{three, ZERO_SPIN};
+use kick_core::measurements::{Checked, Measured};
+use kick_core::{short, Scenario, DEFAULT_BALL_RADIUS};
+pub use kick_study::validation::rows::{self, headline, Headline, Role, Row};
+pub use kick_study::validation::*;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
-
-const NEEDED_BY: &str = "the validation chapter (kick_paper::validation)";
-/// Drop height of the FIFA rebound test, m.
-pub const FIFA_DROP_HEIGHT: f64 = 2.0;
-
-/// The foot every kick of the chapter runs with but the realistic foot's
-/// own 1D rows ([`laws`]): Table 1's, the paper's level.
-pub const VALIDATION_FOOT: Foot = Foot::Table1;
-
-/// A foot the kick rows can run with.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Foot {
-    /// Table 1's rigid foot: 3 kg of effective mass at 22 m/s, the paper's
-    /// values, set for none of these kicks.
-    Table1,
-    /// The realistic foot (`leg = true`): the leg's apparent mass along the
-    /// line of motion at its default pose (Eq. 11) and the boot identified
-    /// from the mechanical limb's fastest kick in series.
-    Leg,
-}
-
-impl Foot {
-    pub fn name(self) -> &'static str {
-        match self {
-            Foot::Table1 => "Table 1's rigid foot, 3 kg effective mass (assumed)",
-            Foot::Leg => {
-                "the leg at its default pose (knee 30°, ankle 60°, thigh 10°: assumed; its apparent mass along the line of motion, Eq. 11) \
-                 with the boot identified from the limb's fastest kick in series"
-            }
-        }
-    }
-    /// Not measured or derived for the kicks compared: rows whose verdict
-    /// hinges on it are sensitivity statements.
-    pub fn assumed(self) -> bool {
-        match self {
-            // The leg's pose is assumed, and no kick compared measured its foot.
-            Foot::Table1 | Foot::Leg => true,
-        }
-    }
-    /// `s` with this foot.
-    pub fn apply(self, s: &Scenario) -> Result<Scenario, String> {
-        match self {
-            Foot::Table1 => Ok(*s),
-            Foot::Leg => s
-                .on_foot(kick_core::Foot { leg: Some(kick_core::leg::LegPose::DEFAULT), boot: Some(kick_core::boot::IDENTIFIED) })
-                .map_err(error),
-        }
-    }
-}
-
-/// The patch kicks' offsets: [`crate::patch`]'s grid inside the ball, so
-/// the validation page and paper/3d.md quote the same kicks.
-pub fn patch_offsets() -> Vec<f64> {
-    crate::patch::offsets().into_iter().filter(|&e| e < DEFAULT_BALL_RADIUS).collect()
-}
-
-/// One law the 1D kick is run with, on its foot.
-#[derive(Debug, Clone, Copy)]
-struct Law {
-    name: &'static str,
-    scenario: Scenario,
-    pressure: Option<f64>,
-    foot: Foot,
-}
-
-/// The two normal laws of the 1D kick, each with [`VALIDATION_FOOT`], and
-/// the shell ball on the realistic foot ([`Foot::Leg`]), whose boot the
-/// limb's fastest kick set (those rows are its calibration).
-fn laws() -> Result<[Law; 3], String> {
-    let base = VALIDATION_FOOT.apply(&Scenario::baseline())?;
-    let ball = ShellBall::default_with_radius(DEFAULT_BALL_RADIUS).map_err(|e| e.to_string())?;
-    let leg = Foot::Leg.apply(&Scenario::baseline())?;
-    Ok([
-        Law { name: "paper's law (Table 1)", scenario: base, pressure: None, foot: VALIDATION_FOOT },
-        Law { name: "shell ball (FIFA-calibrated)", scenario: base.with_shell(ball), pressure: Some(ball.pressure), foot: VALIDATION_FOOT },
-        Law {
-            name: "shell ball (FIFA-calibrated) on the leg and its boot",
-            scenario: leg.with_shell(ball),
-            pressure: Some(ball.pressure),
-            foot: Foot::Leg,
-        },
-    ])
-}
-
-/// The conditions of a 1D model run, in words.
-fn conditions(law: &Law, s: &Scenario, why_speed: &str) -> String {
-    let pressure = law.pressure.map_or(String::new(), |p| format!(", {} bar", short(p / 1e5)));
-    let boot =
-        s.boot().map_or(String::new(), |b| format!(" through the boot (k_b {} N/m, c_b {} N s/m)", short(b.stiffness), short(b.damping)));
-    format!(
-        "instep, foot {} kg{boot} at {:.2} m/s{why_speed}; ball {} kg, R {} m{pressure}, at rest",
-        short(s.effective_foot_mass()),
-        s.foot_speed(),
-        short(s.ball_mass()),
-        DEFAULT_BALL_RADIUS
-    )
-}
-
-/// An identified parameter (or why it is not).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Identified {
-    pub law: String,
-    pub parameter: String,
-    pub unit: String,
-    /// None: not identified.
-    pub value: Option<f64>,
-    /// One standard uncertainty, when the targets carry one.
-    pub sigma: Option<f64>,
-    /// The targets used (like-for-like soccer instep measurements only).
-    pub targets: String,
-    pub note: String,
-}
-
-/// The free kicks with the aerodynamics at launch of each.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct FreeKicksAtLaunch {
-    #[serde(flatten)]
-    pub kicks: FreeKicks,
-    /// Re, S, C_D, C_L at launch of each kick (the flight's own launch report), in `kicks.kicks` order.
-    pub launch: Vec<kick_flight::Aerodynamics>,
-    /// The circle estimate's role: a check of the integrator (same C_L), not a measurement.
-    pub circle_estimate_role: Role,
-}
-
-/// The curve kicks: the sweep and the rows.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct CurveKicks {
-    /// Spin against offset at μ = 0, 0.5 and 1 (the paper's law, [`VALIDATION_FOOT`] at 22 m/s).
-    pub curves: Vec<Vec<SpinPoint>>,
-    /// The largest spin at μ = 0.5 and at μ = 1 (paper's law).
-    pub largest: Vec<SpinPoint>,
-    /// The kicks at the offsets where the μ = 0.5 ball leaves at the measured speeds.
-    pub at_measured_speed: Vec<SpinPoint>,
-    pub rows: Vec<Row>,
-}
-
-/// Every comparison and the model runs behind them.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Validation {
-    /// The measurement file read.
-    pub measurements_file: String,
-    /// Sources listed (every source of the file; each row's sources among them).
-    pub sources: usize,
-    pub measurements: usize,
-    /// The foot every kick ran with.
-    pub foot: Foot,
-    /// The count: distinct (measurement, model) predictions counted, and the rows by role.
-    pub headline: Headline,
-    /// The ball alone: the FIFA rebound (calibration) and Law 2 (checks).
-    pub ball: Vec<Row>,
-    /// The 1D instep kick under both laws.
-    pub contact: Vec<Row>,
-    /// Stiffness and foot mass from like-for-like soccer instep targets.
-    pub implied: Vec<Identified>,
-    pub curve_kicks: CurveKicks,
-    /// The default C_D(Re)'s crisis.
-    pub drag_crisis_model: DragCrisisModel,
-    pub flight: Vec<Row>,
-    /// Measured trajectories flown from their launch.
-    pub measured_flights: Vec<Row>,
-    pub free_kicks: FreeKicksAtLaunch,
-    /// Every source of the file: (key, citation).
-    pub citations: Vec<(String, String)>,
-    /// Measurement keys by how far they were checked: (status, keys).
-    pub checked: Vec<(String, Vec<String>)>,
-    #[serde(skip)]
-    pub written: Vec<PathBuf>,
-}
-
-fn error(e: impl std::fmt::Display) -> String {
-    e.to_string()
-}
-
-/// The value of `input` in [`low`, `high`] (searched in its logarithm) at
-/// which `model(input)` meets `target`, when one does.
-fn meeting(target: f64, low: f64, high: f64, model: impl Fn(f64) -> Result<f64, String>) -> Option<f64> {
-    let f = |ln_x: f64| model(ln_x.exp()).map_or(f64::NAN, |y| y - target);
-    kick_core::roots::brent(f, low.ln(), high.ln(), 1e-10, 200).map(|r| r.x.exp())
-}
-
-/// "m_f = 1.234 kg meets it" or why none does.
-fn mass_meeting(target: f64, model: impl Fn(f64) -> Result<f64, String>) -> Option<String> {
-    Some(match meeting(target, 0.1, 100.0, model) {
-        Some(m) => format!("m_f = {} kg meets it", three(m)),
-        None => "no foot mass in 0.1–100 kg meets it".into(),
-    })
-}
-
-/// The ball alone: the FIFA rebound of the shell ball (what its loss β was
-/// set on) and the default ball against Law 2.
-fn ball_rows(m: &Measurements) -> Result<Vec<Row>, String> {
-    let mut spec = kick_bounce::BounceSpec::default();
-    spec.set("drop_height", Value::Number(FIFA_DROP_HEIGHT)).map_err(error)?;
-    let bounce = kick_bounce::run(&spec).map_err(error)?;
-    let ball = ShellBall::default_with_radius(DEFAULT_BALL_RADIUS).map_err(error)?;
-    let rebound = bounce.rebound_height.ok_or("the FIFA drop gave no rebound height")?;
-    let mut rows = vec![Row::new(
-        m,
-        Role::Calibration,
-        "shell ball (kick_bounce::run)",
-        format!(
-            "dropped {FIFA_DROP_HEIGHT} m onto a rigid plate ({:.3} m/s), {} bar, gravity on; contact {:.2} ms, peak {} N",
-            bounce.impact_velocity[2].abs(),
-            short(ball.pressure / 1e5),
-            1e3 * bounce.contact_time,
-            short(bounce.peak_force)
-        ),
-        Comparison::new(
-            "rebound height",
-            m.measured("fifa_rebound_height", NEEDED_BY).map_err(error)?,
-            rebound,
-            "β was identified from the band's middle: the 2 m drop, gravity on during contact as in the test, \
-             rebounds 140 cm",
-        ),
-    )
-    .sets(format!("shell loss β = {} Pa s/m (crates/kick-bounce/SOURCES.md)", short(ball.shell_damping)))];
-    for r in kick_flight::validation::ball_comparisons(m).map_err(error)? {
-        rows.push(Row::new(m, Role::Check, "default ball", "Table 1's ball, R = 0.11 m", r));
-    }
-    Ok(rows)
-}
-
-/// The 1D instep kick beside every contact measurement, under both laws.
-fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
-    let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error);
-    let mid = |key: &str| -> Result<f64, String> { get(key)?.midpoint().ok_or_else(|| format!("`{key}` has no number")) };
-    let tol_speed = mid("ball_speed_tol2002")?;
-    let nunome_speed = mid("ball_speed_instep_nunome2002")?;
-    let mut rows = Vec::new();
-    for law in laws()? {
-        let (s, foot) = (law.scenario, law.foot);
-        let run = |s: &Scenario| contact_model(s).map_err(error);
-        let at_speed = |s: &Scenario, v: f64| -> Result<(Scenario, ContactModel), String> {
-            let matched = with_ball_speed(s, v).map_err(error)?;
-            Ok((matched, run(&matched)?))
-        };
-        let with_mass = |s: &Scenario, mass: f64| s.with(Parameter::FootMass, mass).map_err(error);
-        let row = |role, c: &Scenario, why: &str, comparison| Row::new(m, role, law.name, conditions(&law, c, why), comparison);
-        let base = run(&s)?;
-        let assumed = "the assumed foot (mass and speed): no foot speed goes with the pooled range";
-        let pooled = "pooled over soccer instep kicks and rugby and Australian-football punts";
-        let short_contact = match (law.pressure, foot) {
-            (None, _) => "a rigid sphere on a rigid instep through Table 1's stiff power law; a real ball wraps around the instep and its shell bends, which is softer and lasts longer",
-            (Some(_), Foot::Table1) => "the pressurised ball flattens on a flat, rigid instep (pressure times patch area); the foot's soft tissue and a curved instep, not modelled, lengthen a real contact",
-            (Some(_), Foot::Leg) => "the pressurised ball flattens on a flat instep behind the boot's layer, which the limb's fastest kick set (a linear layer, so the contact time hardly moves with speed); a curved instep is not modelled",
-        };
-        rows.push(
-            row(
-                Role::Prediction,
-                &s,
-                " (Table 1's)",
-                Comparison::new("contact time", get("contact_time_instep")?, base.contact_time, short_contact),
-            )
-            .hinges_on(foot, assumed, None)
-            .not_counted(pooled),
-        );
-        rows.push(
-            row(
-                Role::Prediction,
-                &s,
-                " (Table 1's)",
-                Comparison::new(
-                    "ball travel on the foot",
-                    get("ball_travel_instep")?,
-                    base.ball_travel,
-                    "the centre-of-mass drift m_f v_f t_c/(m_f + m_b) (no drive): it scales with the assumed foot speed and the contact time",
-                ),
-            )
-            .hinges_on(foot, assumed, None)
-            .not_counted(pooled),
-        );
-        // The mechanical kicking limb at its paired foot and ball speeds.
-        for (end, foot_key, ball_key, time_key, travel_key) in [
-            ("slowest", "foot_speed_limb_slow", "ball_speed_limb_slow", "contact_time_limb_slow", "contact_distance_limb_slow"),
-            ("fastest", "foot_speed_limb_fast", "ball_speed_limb_fast", "contact_time_limb_fast", "contact_distance_limb_fast"),
-        ] {
-            let v = mid(foot_key)?;
-            let c = s.with(Parameter::FootSpeed, v).map_err(error)?;
-            let k = run(&c)?;
-            let why = format!(" (the limb's {end} foot)");
-            let af = "an Australian-football ball in the limb, the model's soccer ball here";
-            let limb_mass = "the foot's mass (the limb's own effective mass was not read)";
-            let ratio = Measured::ratio(&get(ball_key)?, &get(foot_key)?).ok_or("limb speeds must be > 0")?;
-            let target = ratio.midpoint().unwrap_or(f64::NAN);
-            let e = k.speed_ratio * (c.effective_foot_mass() + c.ball_mass()) / c.effective_foot_mass() - 1.0;
-            // On the leg, the fastest kick's contact time and restitution set the boot.
-            let sets_boot = foot == Foot::Leg && end == "fastest";
-            let role = if sets_boot { Role::Calibration } else { Role::Prediction };
-            let calibrated = |r: Row| {
-                if sets_boot {
-                    r.sets("the boot's k_b and c_b (kick_compliant::boot::identify: this contact time and the COR band's centre 0.725)")
-                } else {
-                    r
-                }
-            };
-            rows.push(calibrated(
-                row(
-                    role,
-                    &c,
-                    &why,
-                    Comparison::new(
-                        format!("ball/foot speed, limb, {end}"),
-                        ratio,
-                        k.speed_ratio,
-                        format!(
-                            "a rigid foot gives (1 + e) m_f/(m_f + m_b): model e = {e:.3} (the limb's measured COR 0.66-0.79, no pairing with speed published); {af}"
-                        ),
-                    ),
-                )
-                .hinges_on(foot, limb_mass, mass_meeting(target, |mass| Ok(run(&with_mass(&c, mass)?)?.speed_ratio))),
-            ));
-            let t = mid(time_key)?;
-            rows.push(calibrated(
-                row(role, &c, &why, Comparison::new(format!("contact time, limb, {end}"), get(time_key)?, k.contact_time, af)).hinges_on(
-                    foot,
-                    limb_mass,
-                    mass_meeting(t, |mass| Ok(run(&with_mass(&c, mass)?)?.contact_time)),
-                ),
-            ));
-            let d = mid(travel_key)?;
-            rows.push(
-                row(Role::Prediction, &c, &why, Comparison::new(format!("ball travel, limb, {end}"), get(travel_key)?, k.ball_travel, af))
-                    .hinges_on(foot, limb_mass, mass_meeting(d, |mass| Ok(run(&with_mass(&c, mass)?)?.ball_travel))),
-            );
-        }
-        // Forces at the ball speed measured with them.
-        let (tol, tol_model) = at_speed(&s, tol_speed)?;
-        let tol_why = format!(" (lowered so the ball leaves at Tol et al.'s {tol_speed} m/s)");
-        let tol_force = mid("mean_force_tol2002")?;
-        rows.push(
-            row(
-                Role::Prediction,
-                &tol,
-                &tol_why,
-                Comparison::new(
-                    "mean force over contact",
-                    get("mean_force_tol2002")?,
-                    tol_model.mean_force,
-                    format!(
-                        "the impulse matches theirs (m_b x {tol_speed} m/s), so the force ratio is the inverse contact-time ratio (model {:.2} ms, theirs m_b v/F = {:.2} ms)",
-                        1e3 * tol_model.contact_time,
-                        1e3 * tol.ball_mass() * tol_speed / tol_force
-                    ),
-                ),
-            )
-            .hinges_on(
-                foot,
-                "the foot's mass (none was measured with these kicks; the foot speed is matched to the ball speed)",
-                mass_meeting(tol_force, |mass| Ok(at_speed(&with_mass(&s, mass)?, tol_speed)?.1.mean_force)),
-            ),
-        );
-        let (nunome, nunome_model) = at_speed(&s, nunome_speed)?;
-        let nunome_why =
-            format!(" (the source read gives no ball speed with this force: lowered so the ball leaves at Nunome et al.'s (2002) instep {nunome_speed} m/s)");
-        rows.push(
-            row(
-                Role::ModelComparison,
-                &nunome,
-                &nunome_why,
-                Comparison::new(
-                    "peak force",
-                    get("peak_force_instep_asai2002")?,
-                    nunome_model.peak_force,
-                    "from 4500 Hz video and a finite-element simulation, not a force measurement",
-                ),
-            )
-            .with_foot(foot),
-        );
-        rows.push(
-            row(
-                Role::Prediction,
-                &nunome,
-                &nunome_why,
-                Comparison::new(
-                    "peak force",
-                    get("peak_force_shinkai2009")?,
-                    nunome_model.peak_force,
-                    "from the motion of the ball's centre of gravity in ultra-high-speed video",
-                ),
-            )
-            .hinges_on(foot, "the ball speed (none was read with this force) and the foot's mass", None),
-        );
-        for key in ["ball_speed_max_instep", "ball_speed_instep_nunome2002"] {
-            let middle = mid(key)?;
-            let foot_speed = with_ball_speed(&s, middle).map_err(error)?.foot_speed();
-            rows.push(
-                row(
-                    Role::Prediction,
-                    &s,
-                    " (Table 1's)",
-                    Comparison::new("ball speed after contact", get(key)?, base.ball_speed, "set by m_f, v_f and the restitution"),
-                )
-                .hinges_on(
-                    foot,
-                    "the foot's speed (none was measured with these ball speeds)",
-                    Some(format!("v_f = {} m/s meets the middle, {} m/s", three(foot_speed), short(middle))),
-                ),
-            );
-        }
-        let pulse = Measured::ratio(&get("peak_force_punt")?, &get("mean_force_punt")?).ok_or("mean_force_punt must be > 0")?;
-        rows.push(
-            row(
-                Role::Check,
-                &s,
-                " (Table 1's)",
-                Comparison::new(
-                    "peak / mean force (pulse shape)",
-                    pulse,
-                    base.peak_to_mean,
-                    "measured in rugby-league punt kicks, not a soccer instep kick: a check of the pulse's shape only (a half sine gives pi/2)",
-                ),
-            )
-            .with_foot(foot),
-        );
-    }
-    Ok(rows)
-}
-
-/// k from Tol et al.'s soccer instep kicks: the contact time m_b v/F̄ at
-/// their ball speed, the foot speed lowered until the ball leaves at it, the
-/// foot's mass [`VALIDATION_FOOT`]'s.
-fn identify(m: &Measurements) -> Result<Vec<Identified>, String> {
-    let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error)?.midpoint().ok_or_else(|| format!("`{key}` has no number"));
-    let (speed, force) = (get("ball_speed_tol2002")?, get("mean_force_tol2002")?);
-    let base = VALIDATION_FOOT.apply(&Scenario::baseline())?;
-    let target = base.ball_mass() * speed / force;
-    use kick_core::Solver as _;
-    let restitution = kick_compliant::Accurate::default().solve(&base).map_err(error)?.restitution;
-    let hunt_crossley = base.with_law(LawKind::HuntCrossleyExact, Some(restitution)).map_err(error)?;
-    let targets = format!(
-        "Tol et al. (2002), 150 instep kicks by 15 elite players: ball {speed} m/s, mean force {force} N, so a contact of m_b v/F = {:.3} ms",
-        1e3 * target
-    );
-    let mut out = Vec::new();
-    for (name, s) in [("paper's law, c = 120 N s/m", base), (&*format!("Hunt-Crossley (exact), e = {}", short(restitution)), hunt_crossley)]
-    {
-        let contact = |ln_k: f64| -> f64 {
-            let run = || -> Result<f64, String> {
-                let c = s.with(Parameter::Stiffness, ln_k.exp()).map_err(error)?;
-                Ok(contact_model(&with_ball_speed(&c, speed).map_err(error)?).map_err(error)?.contact_time - target)
-            };
-            run().unwrap_or(f64::NAN)
-        };
-        let k = kick_core::roots::brent(contact, 1e3f64.ln(), 1e7f64.ln(), 1e-12, 200).map(|r| r.x.exp());
-        out.push(Identified {
-            law: name.to_string(),
-            parameter: "stiffness k".into(),
-            unit: "N/m^1.35".into(),
-            value: k,
-            sigma: None,
-            targets: targets.clone(),
-            note: format!(
-                "{} Table 1's k, with m_f held at {} kg ({}); one target, no spread published with it",
-                k.map_or("no k in [1e3, 1e7] meets it;".into(), |k| format!("{} x", short(k / base.get(Parameter::Stiffness)))),
-                short(base.effective_foot_mass()),
-                VALIDATION_FOOT.name()
-            ),
-        });
-        out.push(Identified {
-            law: name.to_string(),
-            parameter: "foot mass m_f".into(),
-            unit: "kg".into(),
-            value: None,
-            sigma: None,
-            targets: targets.clone(),
-            note: "no foot speed was measured with these kicks: the ball speed fixes only (1 + e) v_f m_f/(m_f + m_b)".into(),
-        });
-    }
-    Ok(out)
-}
-
-/// The offset at which the μ = `friction` ball of `curve` leaves at `speed`
-/// (speed falls with the offset up to the largest spin).
-fn offset_at_speed(base: &Scenario, curve: &[SpinPoint], speed: f64) -> Result<SpinPoint, String> {
-    let i = curve
-        .windows(2)
-        .position(|w| w[0].speed >= speed && w[1].speed < speed)
-        .ok_or(format!("no offset sends the ball off at {speed} m/s"))?;
-    let mu = curve[i].friction;
-    let f = |e: f64| spin_point(base, e, mu).map_or(f64::NAN, |p| p.speed - speed);
-    let root = kick_core::roots::brent(f, curve[i].offset, curve[i + 1].offset, 1e-12, 200).ok_or("offset search failed")?;
-    spin_point(base, root.x, mu).map_err(error)
-}
-
-/// The offset–friction sweep of the paper's 3D kick beside Asai et al. (2002) and the measured swerve and free kicks.
-fn curve_kicks(m: &Measurements) -> Result<CurveKicks, String> {
-    let foot = VALIDATION_FOOT;
-    let base = foot.apply(&Scenario::baseline())?;
-    let curves: Vec<Vec<SpinPoint>> =
-        [0.0, REFERENCE_FRICTION, 1.0].iter().map(|&mu| spin_curve(&base, mu)).collect::<Result<_, _>>().map_err(error)?;
-    let largest = vec![largest_spin(&base, &curves[1]).map_err(error)?, largest_spin(&base, &curves[2]).map_err(error)?];
-    let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error);
-    let swerve = get("ball_speed_swerve_instep")?.midpoint().ok_or("no swerve speed")?;
-    let curling = get("barber_carre2010_launch_speed")?.midpoint().ok_or("no curling free-kick speed")?;
-    let at_swerve = offset_at_speed(&base, &curves[1], swerve)?;
-    let at_curling = offset_at_speed(&base, &curves[1], curling)?;
-    let model = "3D rigid sphere, paper's law";
-    let cond = |p: &SpinPoint, why: &str| {
-        format!(
-            "foot {} kg at {} m/s, knife-edge face tilted by asin(e/R), e = {:.1} mm{why}, mu = {}; ball leaves at {:.2} m/s",
-            short(base.effective_foot_mass()),
-            short(base.foot_speed()),
-            1e3 * p.offset,
-            short(p.friction),
-            p.speed
-        )
-    };
-    let offset_caveat =
-        "Asai et al.'s offset (foot axis to ball axis, on a deforming ball) is not the model's (a knife-edge normal tilted by asin(e/R))";
-    let chosen = "the assumed foot, and the offset, chosen so the mu = 0.5 ball leaves at the measured speed";
-    let mut rows = vec![
-        Row::new(
-            m,
-            Role::Prediction,
-            model,
-            cond(&at_curling, &format!(" (where the mu = 0.5 ball leaves at Barber & Carré's {curling} m/s)")),
-            Comparison::new(
-                "spin of a curling free kick",
-                get("barber_carre2010_launch_spin")?,
-                at_curling.spin,
-                "spin from friction alone (the normal passes through the centre); their kicks' offsets and feet are not known",
-            ),
-        )
-        .hinges_on(foot, chosen, None),
-        Row::new(
-            m,
-            Role::Prediction,
-            model,
-            cond(&at_swerve, &format!(" (where the mu = 0.5 ball leaves at the swerve kicks' {swerve} m/s)")),
-            Comparison::new(
-                "spin of a swerve kick",
-                get("spin_max_professional")?,
-                at_swerve.spin,
-                "the measured number is the largest recorded, not a mean",
-            ),
-        )
-        .hinges_on(foot, chosen, None),
-    ];
-    let (zero, one) = (spin_point(&base, at_swerve.offset, 0.0).map_err(error)?, spin_point(&base, at_swerve.offset, 1.0).map_err(error)?);
-    rows.push(
-        Row::new(
-            m,
-            Role::ModelComparison,
-            model,
-            cond(&at_swerve, &format!(" (where the mu = 0.5 ball leaves at {swerve} m/s)")),
-            Comparison::new(
-                "spin added by friction 0 -> 1",
-                get("spin_friction_gain_asai2002")?,
-                one.spin - zero.spin,
-                format!("a rigid sphere spins from friction alone, so all of its spin is friction's; {offset_caveat}"),
-            ),
-        )
-        .with_foot(foot),
-    );
-    let zero_spin = curves[0].iter().map(|p| p.spin).fold(0.0, f64::max);
-    rows.push(
-        Row::new(
-            m,
-            Role::ModelComparison,
-            model,
-            "mu = 0, every offset of the sweep",
-            Comparison::new(
-                "spin without friction (largest over offsets)",
-                m.claimed("spin_zero_friction_asai2002", NEEDED_BY).map_err(error)?,
-                zero_spin,
-                "the rigid sphere's normal passes through its centre: no spin without friction; Asai et al.'s wrapping spin has no number in their abstract",
-            ),
-        )
-        .with_foot(foot),
-    );
-    for p in &largest {
-        rows.push(
-            Row::new(
-                m,
-                Role::ModelComparison,
-                model,
-                cond(p, " (the largest spin over offsets, golden-section search)"),
-                Comparison::new(
-                    format!("offset of largest spin, mu = {}", short(p.friction)),
-                    get("spin_peak_offset_asai2002")?,
-                    p.offset,
-                    format!(
-                        "{} there; beyond it the tilted normal lets the foot glance off; the ball leaves at {:.1} m/s there; {offset_caveat}",
-                        crate::units::spin(p.spin),
-                        p.speed
-                    ),
-                ),
-            )
-            .with_foot(foot),
-        );
-    }
-    rows.push(
-        Row::new(
-            m,
-            Role::ModelComparison,
-            model,
-            "mu = 0.5 and 1, the sweep",
-            Comparison::new(
-                "spin growth with offset",
-                m.claimed("spin_trend_asai2002", NEEDED_BY).map_err(error)?,
-                largest[0].spin,
-                format!(
-                    "spin rises at every step of the sweep up to its largest value (mu = 0.5: {}, mu = 1: {}); speed falls with the offset",
-                    rises(&curves[1]),
-                    rises(&curves[2])
-                ),
-            ),
-        )
-        .with_foot(foot),
-    );
-    rows.extend(patch_rows(m)?);
-    Ok(CurveKicks { curves, largest, at_measured_speed: vec![at_swerve, at_curling], rows })
-}
-
-/// The same claims set beside the level above the rigid sphere: the shell
-/// ball's force spread over its patch on a convex instep, with Asai et al.'s
-/// own offset (ball centre to the swing line through the instep's apex).
-fn patch_rows(m: &Measurements) -> Result<Vec<Row>, String> {
-    let foot = VALIDATION_FOOT;
-    let shell = laws()?[1].scenario;
-    let radius = ASSUMED_INSTEP_RADIUS;
-    let model = format!("3D shell ball (FIFA-calibrated), patch contact on a convex instep, r_i = {radius} m (assumed)");
-    let cond = |what: &str| {
-        format!(
-            "foot {} kg at {} m/s, face square to the swing, offset = ball centre to the swing line through the instep's apex, {what}",
-            short(shell.effective_foot_mass()),
-            shell.foot_speed()
-        )
-    };
-    let kick = |e: f64, mu: f64, r_i: f64| patch_spin_point(&shell, e, mu, r_i).map_err(error);
-    let offsets = patch_offsets();
-    let gain_at = |e: f64, r_i: f64| -> Result<f64, String> { Ok(kick(e, 1.0, r_i)?.0.spin - kick(e, 0.0, r_i)?.0.spin) };
-    let mut gains = Vec::with_capacity(offsets.len());
-    for &e in &offsets {
-        gains.push((e, gain_at(e, radius)?));
-    }
-    let (gain_offset, gain) = gains.iter().copied().fold((0.0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-    let flatter = 2.0 * radius;
-    let gain_flatter = gain_at(gain_offset, flatter)?;
-    let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error);
-    let last = offsets[offsets.len() - 1];
-    let (zero, zero_spin) = kick(last, 0.0, radius)?;
-    let (_, rubbed) = kick(last, REFERENCE_FRICTION, radius)?;
-    let same_sense = zero_spin.iter().zip(&rubbed).map(|(a, b)| a * b).sum::<f64>() > 0.0;
-    let mut reference = Vec::with_capacity(offsets.len());
-    for &e in &offsets {
-        reference.push(kick(e, REFERENCE_FRICTION, radius)?.0);
-    }
-    let peak = reference.iter().copied().fold(reference[0], |a, b| if b.spin > a.spin { b } else { a });
-    let rising = rises(&reference);
-    let sweep = format!("0–{} mm", short(1e3 * last));
-    let mut peak_row = Row::new(
-        m,
-        Role::ModelComparison,
-        &model,
-        cond(&format!("mu = {}, e = {sweep} in 5 mm steps", short(REFERENCE_FRICTION))),
-        Comparison::new(
-            format!("offset of largest spin, mu = {}", short(REFERENCE_FRICTION)),
-            get("spin_peak_offset_asai2002")?,
-            peak.offset,
-            format!("spin rises at every step up to {} mm: {rising}; {} there", short(1e3 * peak.offset), crate::units::spin(peak.spin)),
-        ),
-    )
-    .with_foot(foot);
-    if peak.offset >= last {
-        // The sweep's edge is no maximum: say so instead of scoring it.
-        peak_row = peak_row.model_text(format!("no maximum within {sweep}"));
-        peak_row.comparison.outside = None;
-        peak_row.comparison.ratio = None;
-    }
-    Ok(vec![
-        Row::new(
-            m,
-            Role::ModelComparison,
-            &model,
-            cond(&format!("e = {sweep}")),
-            Comparison::new(
-                "spin added by friction 0 -> 1 (largest over offsets)",
-                get("spin_friction_gain_asai2002")?,
-                gain,
-                format!(
-                    "largest at e = {} mm; the gain grows with the instep's curvature, which no measurement fixes: \
-                     {:.3} rad/s there on a cap of r_i = {} m",
-                    short(1e3 * gain_offset),
-                    gain_flatter,
-                    short(flatter)
-                ),
-            ),
-        )
-        .with_foot(foot),
-        Row::new(
-            m,
-            Role::ModelComparison,
-            &model,
-            cond(&format!("mu = 0, e = {} mm", short(1e3 * last))),
-            Comparison::new(
-                "spin without friction",
-                m.claimed("spin_zero_friction_asai2002", NEEDED_BY).map_err(error)?,
-                zero.spin,
-                format!(
-                    "in friction's sense (as friction's spin at mu = {}): {same_sense}; sliding over the convex instep \
-                     presses the trailing side of the patch faster, so the force passes behind the centre",
-                    short(REFERENCE_FRICTION)
-                ),
-            ),
-        )
-        .with_foot(foot),
-        peak_row,
-    ])
-}
-
-fn rises(curve: &[SpinPoint]) -> bool {
-    let peak = (0..curve.len()).max_by(|&a, &b| curve[a].spin.total_cmp(&curve[b].spin)).unwrap_or(0);
-    curve[..=peak].windows(2).all(|w| w[1].spin > w[0].spin)
-}
-
-/// The flight's crisis: calibrations (the crisis and each construction's
-/// factor were set from these numbers) and the transition beside them.
-fn flight_rows(m: &Measurements) -> Result<Vec<Row>, String> {
-    let model = "kick-flight's default C_D(Re)";
-    let cond = "no spin, standard sea-level air, R = 0.11 m; critical Re: 95 % of the drop done";
-    let mut rows = Vec::new();
-    for c in kick_flight::validation::drag_crisis_comparisons(m).map_err(error)? {
-        let key = c.measured.key.clone();
-        let panels = kick_flight::validation::keys::PANELS.iter().find(|p| p.0 == key).map(|p| p.1);
-        let row = Row::new(m, Role::Prediction, model, cond, c);
-        rows.push(match (key.as_str(), panels) {
-            ("critical_re_asai2007", _) => Row { role: Role::Calibration, ..row }
-                .sets("the drag crisis: Goff & Carré's (2010) logistic fit to Asai et al.'s (2007) Teamgeist C_D"),
-            (_, Some(n)) => {
-                let factor = kick_flight::coefficients::BallConstruction { panels: n }.reynolds_scale();
-                Row { role: Role::Calibration, ..row }.sets(format!(
-                    "the {n}-panel ball's factor on the crisis, {} (its published critical Re over the 14-panel ball's)",
-                    short(factor)
-                ))
-            }
-            _ => row,
-        });
-    }
-    Ok(rows)
-}
-
-/// Mencke et al.'s measured flights beside the default flight model.
-fn measured_flight_rows(m: &Measurements) -> Result<Vec<Row>, String> {
-    let model = "kick-flight's defaults (C_D(Re, S), C_L(S))";
-    Ok(kick_flight::validation::measured_flights(m)
-        .map_err(error)?
-        .into_iter()
-        .map(|c| {
-            let note = c.note.clone();
-            Row::new(m, Role::Prediction, model, note, c)
-        })
-        .collect())
-}
-
-fn free_kicks(m: &Measurements) -> Result<FreeKicksAtLaunch, String> {
-    let kicks = kick_flight::validation::free_kicks(m, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE).map_err(error)?;
-    // The same flights as kick_flight::validation::free_kick, for their launch report.
-    let launch = kicks
-        .kicks
-        .iter()
-        .map(|k| {
-            let flight = kick_flight::FlightSpec {
-                spin: Some([0.0, 0.0, k.spin]),
-                distance: Some(FREE_KICK_DISTANCE),
-                ..kick_flight::FlightSpec::from_exit_speed(k.speed, FREE_KICK_ELEVATION)
-            }
-            .build()
-            .map_err(error)?;
-            Ok(kick_flight::solve(&flight).map_err(error)?.launch)
-        })
-        .collect::<Result<_, String>>()?;
-    Ok(FreeKicksAtLaunch { kicks, launch, circle_estimate_role: Role::Check })
-}
-
-/// Measurement keys by check status, strongest first.
-fn by_status(m: &Measurements) -> Vec<(String, Vec<String>)> {
-    let kinds: [(&str, fn(&Checked) -> bool); 5] = [
-        ("text", |c| matches!(c, Checked::Text)),
-        ("abstract", |c| matches!(c, Checked::Abstract)),
-        ("secondary", |c| matches!(c, Checked::Secondary(_))),
-        ("transcription", |c| matches!(c, Checked::Transcription(_))),
-        ("unchecked", |c| matches!(c, Checked::Unchecked)),
-    ];
-    kinds
-        .iter()
-        .map(|(name, is)| (name.to_string(), m.measurements.iter().filter(|x| is(&x.checked)).map(|x| x.key.clone()).collect()))
-        .collect()
-}
-
-/// Compare the model with the measurements in `measurements`.
-pub fn validate(measurements: &Path) -> Result<Validation, String> {
-    let m = Measurements::load(measurements).map_err(error)?;
-    let ball = ball_rows(&m)?;
-    let contact = contact_rows(&m)?;
-    let implied = identify(&m)?;
-    let curve_kicks = curve_kicks(&m)?;
-    let flight = flight_rows(&m)?;
-    let measured_flights = measured_flight_rows(&m)?;
-    let free_kicks = free_kicks(&m)?;
-    let citations: Vec<(String, String)> = m.sources.iter().map(|s| (s.key.clone(), s.citation())).collect();
-    let headline = headline(ball.iter().chain(&contact).chain(&curve_kicks.rows).chain(&flight).chain(&measured_flights));
-    Ok(Validation {
-        measurements_file: measurements.display().to_string(),
-        sources: citations.len(),
-        measurements: m.measurements.len(),
-        foot: VALIDATION_FOOT,
-        headline,
-        ball,
-        contact,
-        implied,
-        curve_kicks,
-        drag_crisis_model: kick_flight::validation::drag_crisis_model(),
-        flight,
-        measured_flights,
-        free_kicks,
-        checked: by_status(&m),
-        citations,
-        written: Vec::new(),
-    })
-}
+use std::path::Path;
 
 /// [`validate`], then write `out/validation.json` and `page` (links relative to the page).
 pub fn write(measurements: &Path, out: &Path, page: &Path, notes: &Path) -> Result<Validation, String> {
@@ -863,7 +22,8 @@ pub fn write(measurements: &Path, out: &Path, page: &Path, notes: &Path) -> Resu
     // folder (`reproduce --check`): link them from the page's folder name, so
     // both give the same bytes.
     let input_from = if page_dir.is_absolute() { page_dir.file_name().map_or(Path::new("."), Path::new) } else { page_dir };
-    let text = v.markdown(
+    let text = markdown(
+        &v,
         &crate::links::relative(page_dir, &json_path),
         &crate::links::relative(input_from, measurements),
         &crate::links::relative(input_from, notes),
@@ -871,6 +31,16 @@ pub fn write(measurements: &Path, out: &Path, page: &Path, notes: &Path) -> Resu
     crate::output::write(page, text).map_err(|e| e.to_string())?;
     v.written = vec![json_path, page.to_path_buf()];
     Ok(v)
+}
+
+/// An estimate as the page prints it: "not identified" when its σ exceeds it.
+pub fn estimate_cell(value: Option<f64>, sigma: Option<f64>) -> String {
+    match (value, sigma) {
+        (None, _) => "not identified".into(),
+        (Some(v), Some(s)) if s > v.abs() => format!("not identified (σ = {} > {})", kick_core::short(s), kick_core::short(v)),
+        (Some(v), Some(s)) => format!("{} ± {}", kick_core::short(v), kick_core::short(s)),
+        (Some(v), None) => format!("{} (no σ: the source gives means only)", kick_core::short(v)),
+    }
 }
 
 /// A number in a table cell: a spin zero to rounding below [`ZERO_SPIN`].
@@ -994,224 +164,209 @@ fn tables(w: &mut String, rows: &[Row], first: &mut usize) {
     }
 }
 
-impl Validation {
-    /// All comparison rows.
-    pub fn rows(&self) -> impl Iterator<Item = &Row> {
-        self.ball.iter().chain(&self.contact).chain(&self.curve_kicks.rows).chain(&self.flight).chain(&self.measured_flights)
+/// The page of `v`; `data`, `file` and `notes` are the JSON, the measurement
+/// file and the notes as links from the page.
+pub fn markdown(v: &Validation, data: &str, file: &str, notes: &str) -> String {
+    let mut w = String::new();
+    let h = &v.headline;
+    let _ = writeln!(w, "# Validation: the model beside published measurements\n");
+    let _ = writeln!(
+        w,
+        "Generated by `kick reproduce` from [{file}]({file}) ({} measurements from the {} sources listed at the end, each \
+         with its citation, where it stands in the source and how far it was checked: *text*, *abstract*, *secondary*, \
+         *transcription* or *unchecked*). Data: [{data}]({data}). Why each row agrees or misses, and what stays \
+         unchecked: [the notes]({notes}).\n",
+        v.measurements, v.sources
+    );
+    let _ = writeln!(
+        w,
+        "**Counted: {} prediction{} ({} within 2u).** A row is counted when it is a prediction (the measurement set \
+         nothing), like for like with the model run, read in the source itself (text or abstract), and its value comes \
+         with a measurement uncertainty u the source states; each distinct measurement and model counts once, by its \
+         normalised residual z = (model − measured)/u. A population's spread (players, kicks) is not a measurement \
+         uncertainty; where a source states none, the row's note gives the rounding of its published digits, a lower \
+         bound on u, the table gives model/measured instead of z, and the row is not counted. Every kick runs with one declared foot, **{}** \
+         (`kick_paper::validation::VALIDATION_FOOT`), but for the 1D shell ball's rows run again on the realistic foot (`--leg`): \
+         **{}**, whose boot the limb's fastest kick set, so its two rows there are calibrations. A row whose verdict hinges on \
+         either foot is a *sensitivity* statement (neither was measured with the kicks compared) and says which foot mass or \
+         speed would meet the measurement. A finite-element result is a *model \
+         comparison*, not a measurement. Values in SI units; spins in rad/s.\n",
+        h.counted,
+        if h.counted == 1 { "" } else { "s" },
+        h.within_two_u,
+        v.foot.name(),
+        Foot::Leg.name()
+    );
+    let _ = writeln!(w, "| rows | number |\n|---|---|");
+    for (role, n) in &h.by_role {
+        let _ = writeln!(w, "| {} | {n} |", role.name());
     }
-
-    /// The page; `data`, `file` and `notes` are the JSON, the measurement
-    /// file and the notes as links from the page.
-    pub fn markdown(&self, data: &str, file: &str, notes: &str) -> String {
-        let mut w = String::new();
-        let h = &self.headline;
-        let _ = writeln!(w, "# Validation: the model beside published measurements\n");
-        let _ = writeln!(
-            w,
-            "Generated by `kick reproduce` from [{file}]({file}) ({} measurements from the {} sources listed at the end, each \
-             with its citation, where it stands in the source and how far it was checked: *text*, *abstract*, *secondary*, \
-             *transcription* or *unchecked*). Data: [{data}]({data}). Why each row agrees or misses, and what stays \
-             unchecked: [the notes]({notes}).\n",
-            self.measurements, self.sources
-        );
-        let _ = writeln!(
-            w,
-            "**Counted: {} prediction{} ({} within 2u).** A row is counted when it is a prediction (the measurement set \
-             nothing), like for like with the model run, read in the source itself (text or abstract), and its value comes \
-             with a measurement uncertainty u the source states; each distinct measurement and model counts once, by its \
-             normalised residual z = (model − measured)/u. A population's spread (players, kicks) is not a measurement \
-             uncertainty; where a source states none, the row's note gives the rounding of its published digits, a lower \
-             bound on u, the table gives model/measured instead of z, and the row is not counted. Every kick runs with one declared foot, **{}** \
-             (`kick_paper::validation::VALIDATION_FOOT`), but for the 1D shell ball's rows run again on the realistic foot (`--leg`): \
-             **{}**, whose boot the limb's fastest kick set, so its two rows there are calibrations. A row whose verdict hinges on \
-             either foot is a *sensitivity* statement (neither was measured with the kicks compared) and says which foot mass or \
-             speed would meet the measurement. A finite-element result is a *model \
-             comparison*, not a measurement. Values in SI units; spins in rad/s.\n",
-            h.counted,
-            if h.counted == 1 { "" } else { "s" },
-            h.within_two_u,
-            self.foot.name(),
-            Foot::Leg.name()
-        );
-        let _ = writeln!(w, "| rows | number |\n|---|---|");
-        for (role, n) in &h.by_role {
-            let _ = writeln!(w, "| {} | {n} |", role.name());
+    for (why, n) in &h.not_counted {
+        let _ = writeln!(w, "| prediction not counted: {why} | {n} |");
+    }
+    let _ = writeln!(w);
+    let mut first = 1;
+    let _ = writeln!(w, "## The ball alone\n");
+    let _ = writeln!(
+        w,
+        "The shell ball (`--law shell`, `kick_core::ShellBall`) is calibrated on the FIFA rebound test only: its loss \
+         β is set there, its pressure is the test's 0.8 bar, and nothing about a kick went into it.\n"
+    );
+    tables(&mut w, &v.ball, &mut first);
+    let _ = writeln!(w, "## The 1D instep kick\n");
+    let _ = writeln!(
+        w,
+        "Both laws, `accurate` solver, one table each. A force is compared at the ball speed measured with it: the foot \
+         speed is lowered until the ball leaves at that speed (`kick_identify::validation::with_ball_speed`). The \
+         nearly rigid mechanical kicking limb (Peacock & Ball 2016) is run at its paired published ends: foot 9.1 m/s \
+         with ball 13.0 m/s (ratio 1.43), foot 21.2 m/s with ball 29.7 m/s (ratio 1.40), paired by the published \
+         correlation of ball with foot speed. What each law was calibrated on: the paper's law takes Table 1's k, n and \
+         c (the paper's values, fitted to none of these measurements); the shell ball takes the FIFA rebound's β and \
+         the test's 0.8 bar, and nothing else.\n"
+    );
+    tables(&mut w, &v.contact, &mut first);
+    let _ = writeln!(w, "## Stiffness and foot mass implied by the measurements\n");
+    let _ = writeln!(
+        w,
+        "Identified only from like-for-like soccer instep targets measured together in one experiment: Tol et al.'s \
+         ball speed and mean force. Not used: contact times pooled with rugby and Australian-football punts, a \
+         between-player range of ball speeds without a measured foot speed, Tol et al.'s 1610 N (their mean × π/2, \
+         not a measured peak), and Asai et al.'s 2439 N (from video and a simulation). An estimate whose σ exceeds \
+         it is printed as not identified.\n"
+    );
+    let _ = writeln!(w, "| law | parameter | estimate | unit | targets | note |");
+    let _ = writeln!(w, "|---|---|---|---|---|---|");
+    for i in &v.implied {
+        let _ =
+            writeln!(w, "| {} | {} | {} | {} | {} | {} |", i.law, i.parameter, estimate_cell(i.value, i.sigma), i.unit, i.targets, i.note);
+    }
+    let ck = &v.curve_kicks;
+    let _ = writeln!(w, "\n## Curve kicks: spin against offset and friction\n");
+    let _ = writeln!(
+        w,
+        "Two models, each named with its normal law: the paper's law on the rigid sphere (`kick_3d`, a knife-edge face \
+         tilted by asin(e/R)), and the shell ball's force spread over its patch on a convex instep. A spin is compared \
+         where the model's ball leaves at the measured ball speed: the offset is chosen for that speed at μ = 0.5 \
+         (kick-3d's default friction and tangential spring, assumed, calibrated on nothing here). Asai et al.'s (2002) \
+         numbers are finite-element results: model comparisons.\n"
+    );
+    tables(&mut w, &ck.rows, &mut first);
+    let frictions: Vec<String> = ck.curves.iter().map(|c| c.first().map_or("?".into(), |p| format!("{}", short(p.friction)))).collect();
+    let _ = writeln!(
+        w,
+        "Spin (rad/s) and ball speed (m/s) against offset, the paper's law on the rigid sphere, {} at {} m/s, by friction μ:\n",
+        VALIDATION_FOOT.name(),
+        short(Scenario::baseline().foot_speed())
+    );
+    let _ = write!(w, "| offset (mm) |");
+    for mu in &frictions {
+        let _ = write!(w, " spin μ={mu} |");
+    }
+    for mu in &frictions {
+        let _ = write!(w, " speed μ={mu} |");
+    }
+    let _ = writeln!(w, "\n|---|{}", "---|".repeat(2 * frictions.len()));
+    let n = ck.curves.first().map_or(0, Vec::len);
+    for i in 0..n {
+        let _ = write!(w, "| {} |", short(1e3 * ck.curves[0][i].offset));
+        for c in &ck.curves {
+            let _ = write!(w, " {} |", spin_text(c[i].spin));
         }
-        for (why, n) in &h.not_counted {
-            let _ = writeln!(w, "| prediction not counted: {why} | {n} |");
+        for c in &ck.curves {
+            let _ = write!(w, " {} |", short(c[i].speed));
         }
         let _ = writeln!(w);
-        let mut first = 1;
-        let _ = writeln!(w, "## The ball alone\n");
-        let _ = writeln!(
-            w,
-            "The shell ball (`--law shell`, `kick_core::ShellBall`) is calibrated on the FIFA rebound test only: its loss \
-             β is set there, its pressure is the test's 0.8 bar, and nothing about a kick went into it.\n"
-        );
-        tables(&mut w, &self.ball, &mut first);
-        let _ = writeln!(w, "## The 1D instep kick\n");
-        let _ = writeln!(
-            w,
-            "Both laws, `accurate` solver, one table each. A force is compared at the ball speed measured with it: the foot \
-             speed is lowered until the ball leaves at that speed (`kick_identify::validation::with_ball_speed`). The \
-             nearly rigid mechanical kicking limb (Peacock & Ball 2016) is run at its paired published ends: foot 9.1 m/s \
-             with ball 13.0 m/s (ratio 1.43), foot 21.2 m/s with ball 29.7 m/s (ratio 1.40), paired by the published \
-             correlation of ball with foot speed. What each law was calibrated on: the paper's law takes Table 1's k, n and \
-             c (the paper's values, fitted to none of these measurements); the shell ball takes the FIFA rebound's β and \
-             the test's 0.8 bar, and nothing else.\n"
-        );
-        tables(&mut w, &self.contact, &mut first);
-        let _ = writeln!(w, "## Stiffness and foot mass implied by the measurements\n");
-        let _ = writeln!(
-            w,
-            "Identified only from like-for-like soccer instep targets measured together in one experiment: Tol et al.'s \
-             ball speed and mean force. Not used: contact times pooled with rugby and Australian-football punts, a \
-             between-player range of ball speeds without a measured foot speed, Tol et al.'s 1610 N (their mean × π/2, \
-             not a measured peak), and Asai et al.'s 2439 N (from video and a simulation). An estimate whose σ exceeds \
-             it is printed as not identified.\n"
-        );
-        let _ = writeln!(w, "| law | parameter | estimate | unit | targets | note |");
-        let _ = writeln!(w, "|---|---|---|---|---|---|");
-        for i in &self.implied {
-            let _ = writeln!(
-                w,
-                "| {} | {} | {} | {} | {} | {} |",
-                i.law,
-                i.parameter,
-                estimate_cell(i.value, i.sigma),
-                i.unit,
-                i.targets,
-                i.note
-            );
-        }
-        let ck = &self.curve_kicks;
-        let _ = writeln!(w, "\n## Curve kicks: spin against offset and friction\n");
-        let _ = writeln!(
-            w,
-            "Two models, each named with its normal law: the paper's law on the rigid sphere (`kick_3d`, a knife-edge face \
-             tilted by asin(e/R)), and the shell ball's force spread over its patch on a convex instep. A spin is compared \
-             where the model's ball leaves at the measured ball speed: the offset is chosen for that speed at μ = 0.5 \
-             (kick-3d's default friction and tangential spring, assumed, calibrated on nothing here). Asai et al.'s (2002) \
-             numbers are finite-element results: model comparisons.\n"
-        );
-        tables(&mut w, &ck.rows, &mut first);
-        let frictions: Vec<String> = ck.curves.iter().map(|c| c.first().map_or("?".into(), |p| format!("{}", short(p.friction)))).collect();
-        let _ = writeln!(
-            w,
-            "Spin (rad/s) and ball speed (m/s) against offset, the paper's law on the rigid sphere, {} at {} m/s, by friction μ:\n",
-            VALIDATION_FOOT.name(),
-            short(Scenario::baseline().foot_speed())
-        );
-        let _ = write!(w, "| offset (mm) |");
-        for mu in &frictions {
-            let _ = write!(w, " spin μ={mu} |");
-        }
-        for mu in &frictions {
-            let _ = write!(w, " speed μ={mu} |");
-        }
-        let _ = writeln!(w, "\n|---|{}", "---|".repeat(2 * frictions.len()));
-        let n = ck.curves.first().map_or(0, Vec::len);
-        for i in 0..n {
-            let _ = write!(w, "| {} |", short(1e3 * ck.curves[0][i].offset));
-            for c in &ck.curves {
-                let _ = write!(w, " {} |", spin_text(c[i].spin));
-            }
-            for c in &ck.curves {
-                let _ = write!(w, " {} |", short(c[i].speed));
-            }
-            let _ = writeln!(w);
-        }
-        for p in &ck.largest {
-            let _ = writeln!(
-                w,
-                "\nLargest spin at μ = {}, paper's law: {} at e = {} mm, inside the ball (R = {} mm), where the ball leaves \
-                 at {} m/s (golden-section search to {} mm).",
-                short(p.friction),
-                crate::units::spin(p.spin),
-                three(1e3 * p.offset),
-                short(1e3 * DEFAULT_BALL_RADIUS),
-                three(p.speed),
-                short(1e3 * kick_3d::validation::OFFSET_TOLERANCE)
-            );
-        }
-        let _ = writeln!(w, "\n## Flight: the drag crisis\n");
-        let d = &self.drag_crisis_model;
-        let _ = writeln!(
-            w,
-            "One definition of the critical Reynolds number throughout: where 95 % of the drag crisis's drop is done \
-             (`kick_flight::coefficients::DragCrisis::critical_reynolds`); for the default 14-panel ball in sea-level air it \
-             is {} ({} m/s for R = 0.11 m). Eq. 3's centre, where C_D is halfway down, lies at {} and is not called \
-             critical. The sources' own definition was not read (crates/kick-flight/SOURCES.md). Each construction's \
-             factor on the crisis was set from its published critical Re: those rows are calibrations. The constants \
-             of Goff & Carré's Eq. 3 and Eq. 4 themselves were read only in code bases' transcriptions.\n",
-            short(d.critical),
-            three(d.critical_speed),
-            short(d.centre)
-        );
-        tables(&mut w, &self.flight, &mut first);
-        let _ = writeln!(w, "## Flight: measured trajectories\n");
-        let _ = writeln!(
-            w,
-            "Mencke et al. (2020) filmed kicked soccer balls with phones and report, in their abstract, that a simulation \
-             with the Magnus force predicts their 3D curveball trajectories accurately. Their launch conditions and \
-             trajectories were read only in a public code base's digitisation of their figures, whose units and axes could \
-             not be checked against the paper: the rows are shown, not counted.\n"
-        );
-        tables(&mut w, &self.measured_flights, &mut first);
-        let f = &self.free_kicks.kicks;
-        let _ = writeln!(w, "## Free kicks\n");
-        let _ = writeln!(
-            w,
-            "Launched at {}° (assumed) with sidespin about the vertical, kick-flight's defaults (drag crisis joined to \
-             the spinning ball's drag of Goff & Carré 2010 Eq. 4, saturating lift); lateral offset where the ball crosses \
-             x = {} m. Re, S, C_D and C_L are the flight's own launch report. The circle estimate is a *check* of the \
-             integrator, not a comparison with a measurement: the horizontal path as a circle of the launch curvature \
-             with the same C_L. No measured deflection was found to set these beside, and the lift plateau they fly with \
-             was read only in transcriptions ([flight.md](flight.md) shows what the bend owes to it). Speeds from `{}` \
-             ({}), spins from `{}` ({}): an illustration in Physics World, not a measurement.\n",
-            short(f.launch_angle),
-            short(f.distance),
-            f.launch_speed.key,
-            short_status(&f.launch_speed.checked),
-            f.launch_spin.key,
-            short_status(&f.launch_spin.checked)
-        );
-        let _ = writeln!(
-            w,
-            "| speed (m/s) | spin (rad/s) | Re at launch | S at launch | C_D at launch | C_L at launch | lateral offset (m) | circle estimate (check, m) | height (m) | time (s) |"
-        );
-        let _ = writeln!(w, "|---|---|---|---|---|---|---|---|---|---|");
-        for (k, a) in f.kicks.iter().zip(&self.free_kicks.launch) {
-            let _ = writeln!(
-                w,
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-                short(k.speed),
-                three(k.spin),
-                short(a.reynolds),
-                short(a.spin_parameter),
-                short(a.drag_coefficient),
-                short(a.lift_coefficient),
-                short(k.lateral_offset),
-                short(k.circle_estimate),
-                short(k.height),
-                short(k.time)
-            );
-        }
-        let _ = writeln!(w, "\n## How far each number was checked\n");
-        let _ = writeln!(w, "From the measurement file's `checked` field (each entry's note says where it was read):\n");
-        for (status, keys) in &self.checked {
-            if !keys.is_empty() {
-                let list: Vec<String> = keys.iter().map(|k| format!("`{k}`")).collect();
-                let _ = writeln!(w, "- **{status}** ({}): {}", keys.len(), list.join(", "));
-            }
-        }
-        let _ = writeln!(w, "\n## Sources\n");
-        let _ = writeln!(w, "All {} sources of the measurement file:\n", self.citations.len());
-        for (key, citation) in &self.citations {
-            let _ = writeln!(w, "- `{key}`: {citation}");
-        }
-        w
     }
+    for p in &ck.largest {
+        let _ = writeln!(
+            w,
+            "\nLargest spin at μ = {}, paper's law: {} at e = {} mm, inside the ball (R = {} mm), where the ball leaves \
+             at {} m/s (golden-section search to {} mm).",
+            short(p.friction),
+            crate::units::spin(p.spin),
+            three(1e3 * p.offset),
+            short(1e3 * DEFAULT_BALL_RADIUS),
+            three(p.speed),
+            short(1e3 * kick_3d::validation::OFFSET_TOLERANCE)
+        );
+    }
+    let _ = writeln!(w, "\n## Flight: the drag crisis\n");
+    let d = &v.drag_crisis_model;
+    let _ = writeln!(
+        w,
+        "One definition of the critical Reynolds number throughout: where 95 % of the drag crisis's drop is done \
+         (`kick_flight::coefficients::DragCrisis::critical_reynolds`); for the default 14-panel ball in sea-level air it \
+         is {} ({} m/s for R = 0.11 m). Eq. 3's centre, where C_D is halfway down, lies at {} and is not called \
+         critical. The sources' own definition was not read (crates/kick-flight/SOURCES.md). Each construction's \
+         factor on the crisis was set from its published critical Re: those rows are calibrations. The constants \
+         of Goff & Carré's Eq. 3 and Eq. 4 themselves were read only in code bases' transcriptions.\n",
+        short(d.critical),
+        three(d.critical_speed),
+        short(d.centre)
+    );
+    tables(&mut w, &v.flight, &mut first);
+    let _ = writeln!(w, "## Flight: measured trajectories\n");
+    let _ = writeln!(
+        w,
+        "Mencke et al. (2020) filmed kicked soccer balls with phones and report, in their abstract, that a simulation \
+         with the Magnus force predicts their 3D curveball trajectories accurately. Their launch conditions and \
+         trajectories were read only in a public code base's digitisation of their figures, whose units and axes could \
+         not be checked against the paper: the rows are shown, not counted.\n"
+    );
+    tables(&mut w, &v.measured_flights, &mut first);
+    let f = &v.free_kicks.kicks;
+    let _ = writeln!(w, "## Free kicks\n");
+    let _ = writeln!(
+        w,
+        "Launched at {}° (assumed) with sidespin about the vertical, kick-flight's defaults (drag crisis joined to \
+         the spinning ball's drag of Goff & Carré 2010 Eq. 4, saturating lift); lateral offset where the ball crosses \
+         x = {} m. Re, S, C_D and C_L are the flight's own launch report. The circle estimate is a *check* of the \
+         integrator, not a comparison with a measurement: the horizontal path as a circle of the launch curvature \
+         with the same C_L. No measured deflection was found to set these beside, and the lift plateau they fly with \
+         was read only in transcriptions ([flight.md](flight.md) shows what the bend owes to it). Speeds from `{}` \
+         ({}), spins from `{}` ({}): an illustration in Physics World, not a measurement.\n",
+        short(f.launch_angle),
+        short(f.distance),
+        f.launch_speed.key,
+        short_status(&f.launch_speed.checked),
+        f.launch_spin.key,
+        short_status(&f.launch_spin.checked)
+    );
+    let _ = writeln!(
+        w,
+        "| speed (m/s) | spin (rad/s) | Re at launch | S at launch | C_D at launch | C_L at launch | lateral offset (m) | circle estimate (check, m) | height (m) | time (s) |"
+    );
+    let _ = writeln!(w, "|---|---|---|---|---|---|---|---|---|---|");
+    for (k, a) in f.kicks.iter().zip(&v.free_kicks.launch) {
+        let _ = writeln!(
+            w,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            short(k.speed),
+            three(k.spin),
+            short(a.reynolds),
+            short(a.spin_parameter),
+            short(a.drag_coefficient),
+            short(a.lift_coefficient),
+            short(k.lateral_offset),
+            short(k.circle_estimate),
+            short(k.height),
+            short(k.time)
+        );
+    }
+    let _ = writeln!(w, "\n## How far each number was checked\n");
+    let _ = writeln!(w, "From the measurement file's `checked` field (each entry's note says where it was read):\n");
+    for (status, keys) in &v.checked {
+        if !keys.is_empty() {
+            let list: Vec<String> = keys.iter().map(|k| format!("`{k}`")).collect();
+            let _ = writeln!(w, "- **{status}** ({}): {}", keys.len(), list.join(", "));
+        }
+    }
+    let _ = writeln!(w, "\n## Sources\n");
+    let _ = writeln!(w, "All {} sources of the measurement file:\n", v.citations.len());
+    for (key, citation) in &v.citations {
+        let _ = writeln!(w, "- `{key}`: {citation}");
+    }
+    w
 }
 
 /// A check status without the "which" of a secondary source (for prose).
@@ -1222,18 +377,6 @@ fn short_status(c: &Checked) -> &'static str {
         Checked::Secondary(_) => "secondary",
         Checked::Transcription(_) => "transcription",
         Checked::Unchecked => "unchecked",
-    }
-}
-
-impl Printable for Validation {
-    fn text(&self) -> String {
-        format!(
-            "validation: {} measurements from {} sources; {} counted predictions ({} within 2u)\n",
-            self.measurements, self.sources, self.headline.counted, self.headline.within_two_u
-        )
-    }
-    fn written(&self) -> &[PathBuf] {
-        &self.written
     }
 }
 

@@ -296,8 +296,9 @@ pub fn files_below(dir: &Path, skip: &[&Path]) -> Vec<PathBuf> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::h5::{read_str_attr, write_u64_attr, Column, ResultWriter};
+    use crate::h5::{read_str_attr, write_u64_attr, Column};
     use crate::provenance::Provenance;
+    use crate::writer::ResultWriter;
 
     fn scratch(name: &str) -> PathBuf {
         let dir = std::env::temp_dir().join(format!("kick-compare-{name}-{}", std::process::id()));

@@ -4,13 +4,29 @@
 
 use crate::h5::H5Error;
 use crate::output::OutputError;
-use crate::run::RunError;
-use crate::shard::ShardError;
+use crate::table::RunError;
 use kick_study::experiment::ExperimentError;
 use kick_study::limits::LimitError;
 use kick_study::shard::ShardFlagError;
 use kick_study::StudyError;
 use std::path::PathBuf;
+
+/// Why a shard could not be run or the parts not merged.
+#[derive(Debug, thiserror::Error)]
+pub enum ShardError {
+    #[error(transparent)]
+    Flag(#[from] kick_study::shard::ShardFlagError),
+    #[error("{}: {message}", path.display())]
+    Part { path: PathBuf, message: String },
+    #[error("cannot merge: {0}")]
+    Merge(String),
+    #[error(transparent)]
+    Run(#[from] RunError),
+    #[error(transparent)]
+    H5(#[from] H5Error),
+    #[error(transparent)]
+    Output(#[from] OutputError),
+}
 
 #[derive(Debug, thiserror::Error)]
 pub enum StoreError {

@@ -26,9 +26,10 @@
 //! No wall-clock time is written: the same run writes the same bytes.
 
 use crate::error::StoreError;
-use crate::h5::{self, Column, H5Error, ResultWriter, CHUNK_ROWS};
+use crate::h5::{self, Column, H5Error, CHUNK_ROWS};
 use crate::output::{OutputError, Staged};
 use crate::provenance::Provenance;
+use crate::writer::ResultWriter;
 use hdf5::Dataset;
 use kick_core::Spacing;
 pub use kick_study::history::*;

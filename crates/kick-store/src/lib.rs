@@ -12,27 +12,34 @@
 pub mod compare;
 pub mod error;
 pub mod h5;
+pub mod held;
 pub mod history;
 pub mod layouts;
 pub mod output;
+pub mod patch;
 pub mod provenance;
 pub mod run;
 pub mod shard;
 pub mod sweep;
 pub mod sweep3d;
+pub mod table;
 pub mod three_d;
+pub mod writer;
 
 /// Files of `kick fit` and `kick laws`.
 pub mod identify {
     pub mod files;
+    pub mod fit;
+    pub mod laws;
 }
 
 // kick-study's modules under the names this crate's files use.
-pub(crate) use kick_study::{experiment, limits, printable, sample};
+pub(crate) use kick_study::{experiment, limits, printable, sample, table2};
 pub(crate) use kick_study::{Experiment, Output, Printable, Scenarios};
 
 pub use error::StoreError;
-pub use h5::{Column, OutcomeSet, ResultFile, ResultWriter, Setting, SweepData, SweepWriter};
+pub use h5::{Column, OutcomeSet, ResultFile, Setting, SweepData};
 pub use provenance::Provenance;
 pub use run::{run, RunReport, RunSummary};
 pub use shard::run_file;
+pub use writer::{ResultWriter, SweepWriter};

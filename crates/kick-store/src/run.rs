@@ -3,13 +3,14 @@
 //! groups are [`crate::three_d`]'s).
 
 use crate::experiment::{Experiment, Kicks, Output, Scenarios};
-use crate::h5::{Column, Compression, H5Error, SweepWriter, CHUNK_ROWS};
+use crate::h5::{Column, Compression, H5Error, CHUNK_ROWS};
 use crate::provenance::Provenance;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use crate::table::progress;
+use crate::writer::SweepWriter;
+use indicatif::ProgressBar;
 use kick_core::{KickError, Outcome, RecordingSolver, Spacing, HISTORY_COLUMNS};
 use kick_study::level::one_d::OneD;
-use kick_study::level::{run_rows, Level, RowSink};
-use std::io::IsTerminal;
+use kick_study::level::{Level, RowSink};
 use std::ops::ControlFlow;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -17,42 +18,8 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
 use std::sync::Mutex;
 
-#[derive(Debug, thiserror::Error)]
-pub enum RunError {
-    #[error(transparent)]
-    H5(#[from] H5Error),
-    #[error("the worker solving row {row} stopped without its result")]
-    Worker { row: usize },
-    #[error(transparent)]
-    Limit(#[from] crate::limits::LimitError),
-}
-
-/// What a run produced.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
-pub struct RunSummary {
-    pub path: PathBuf,
-    pub scenarios: u64,
-    /// Failed scenarios per solver, in the experiment's solver order.
-    pub failures: Vec<(String, u64)>,
-    /// Scenarios per solver whose numbers are kept but lie outside their
-    /// contact law's validity (status 4), in the same order.
-    pub outside_validity: Vec<(String, u64)>,
-}
-
+pub use crate::table::{create_table, fill_table, finish_table, Part, RunError, RunSummary};
 pub use kick_study::level::one_d::{outcome_columns, outcome_set, parameter_columns};
-
-/// A progress bar on a terminal, nothing otherwise.
-pub(crate) fn progress(total: u64, show: bool) -> ProgressBar {
-    if show && std::io::stderr().is_terminal() {
-        let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
-        if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} scenarios, {elapsed} (eta {eta})") {
-            bar.set_style(style.progress_chars("=> "));
-        }
-        bar
-    } else {
-        ProgressBar::hidden()
-    }
-}
 
 /// Samples per streamed block of a history, and per HDF5 chunk of a long one.
 const HISTORY_BLOCK: usize = CHUNK_ROWS;
@@ -198,15 +165,6 @@ pub fn run(experiment: &Experiment, out_dir: &Path, show_progress: bool) -> Resu
     run_part(experiment, &part, show_progress, &|_| Ok(()))
 }
 
-/// Rows of an experiment and the file they go to (a shard: [`crate::shard`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Part {
-    /// Experiment rows, written as the file's rows 0.. (histories and
-    /// failures numbered by file row).
-    pub rows: Range<u64>,
-    pub path: PathBuf,
-}
-
 /// [`run`] of the rows `part.rows` into `part.path`; `attributes` adds root
 /// attributes of the caller's to the open file.
 pub fn run_part(
@@ -222,7 +180,7 @@ pub fn run_part(
     };
     let level = OneD { kicks, flight: experiment.flight.as_ref() };
     let out_dir = part.path.parent().unwrap_or(Path::new("."));
-    let size = crate::limits::check(experiment, &part.rows, out_dir)?;
+    let size = kick_study::limits::OutputSize::check(experiment, &part.rows, out_dir)?;
     let path = part.path.clone();
     if show_progress && size.is_large() {
         eprintln!("{}: {} -> {}", experiment.name, size.describe(), path.display());
@@ -256,24 +214,6 @@ pub fn run_part(
     finish_table(experiment, writer, &bar)
 }
 
-/// A new sweep table at `path` shaped as `level`'s rows: its parameter
-/// columns and outcome sets ([`SweepWriter`], chunks sized for `rows`).
-pub fn create_table<L: Level + ?Sized>(
-    level: &L,
-    path: &Path,
-    provenance: &Provenance,
-    rows: u64,
-    compress: Compression,
-) -> Result<SweepWriter, H5Error> {
-    SweepWriter::create_with(path, provenance, &level.parameter_columns(), &level.outcome_sets(), rows, compress)
-}
-
-/// Solve rows `rows` of `level` and push them to `writer`: the one run loop
-/// ([`kick_study::level::run_rows`]), the bar counting rows written.
-pub fn fill_table<L: Level + ?Sized>(level: &L, rows: Range<u64>, writer: &mut SweepWriter, bar: &ProgressBar) -> Result<(), H5Error> {
-    run_rows(level, rows, writer, &|n| bar.inc(n))
-}
-
 /// Whole levels as tables `dir/NAME.h5` (a command's own figure data, e.g.
 /// `kick leg --sweep-out`), one after the other, each recording `source`
 /// and `command` as its provenance.
@@ -288,17 +228,6 @@ pub fn write_levels(dir: &Path, tables: &[(&str, &dyn Level)], source: &str, com
         written.push(finish_table(level, writer, &bar)?.path);
     }
     Ok(written)
-}
-
-/// Close the table and count each set's rows without values.
-pub fn finish_table<L: Level + ?Sized>(level: &L, writer: SweepWriter, bar: &ProgressBar) -> Result<RunSummary, RunError> {
-    bar.finish_and_clear();
-    let names: Vec<String> = level.outcome_sets().into_iter().map(|s| s.solver).collect();
-    let failures = names.iter().cloned().zip(writer.failure_counts()).collect();
-    let outside_validity = names.into_iter().zip(writer.outside_validity_counts()).collect();
-    let scenarios = writer.rows() as u64;
-    let path = writer.finish()?;
-    Ok(RunSummary { path, scenarios, failures, outside_validity })
 }
 
 /// What `kick_store::shard::run_file` did: the file given, the result file and the counts.

@@ -34,12 +34,9 @@
 
 use crate::error::StoreError;
 use crate::experiment::Experiment;
-use crate::h5::{
-    close_file, create_staged, disable_file_locking, new_group, read_str_attr, read_u64_attr, write_str_attr, write_u64_attr, H5Error,
-    CHUNK_ROWS,
-};
-use crate::output::OutputError;
-use crate::run::{run_part, Part, RunError, RunReport};
+use crate::h5::{disable_file_locking, new_group, read_str_attr, read_u64_attr, write_str_attr, write_u64_attr, H5Error, CHUNK_ROWS};
+use crate::run::{run_part, Part, RunReport};
+use crate::writer::{close_file, create_staged};
 use hdf5::types::{FloatSize, IntSize, TypeDescriptor, VarLenUnicode};
 use hdf5::{File, Group, Location};
 use kick_study::level::Level;
@@ -52,21 +49,7 @@ use std::path::{Path, PathBuf};
 pub const SHARD_ATTRIBUTES: [&str; 6] =
     ["shard_index", "shard_count", "shard_row_start", "shard_row_end", "experiment_rows", "experiment_fingerprint"];
 
-#[derive(Debug, thiserror::Error)]
-pub enum ShardError {
-    #[error(transparent)]
-    Flag(#[from] kick_study::shard::ShardFlagError),
-    #[error("{}: {message}", path.display())]
-    Part { path: PathBuf, message: String },
-    #[error("cannot merge: {0}")]
-    Merge(String),
-    #[error(transparent)]
-    Run(#[from] RunError),
-    #[error(transparent)]
-    H5(#[from] H5Error),
-    #[error(transparent)]
-    Output(#[from] OutputError),
-}
+pub use crate::error::ShardError;
 
 /// Write the root attributes of shard `shard` of an experiment (or sweep)
 /// of `total` rows whose text is `text` to the open shard file `file`.
@@ -418,7 +401,7 @@ fn experiment_of(piece: &Piece) -> Option<Box<dyn Level>> {
     if Path::new(&path).extension().and_then(|e| e.to_str()) != Some("toml") {
         let (seed, samples) = (read_u64_attr(&file, "seed")?, read_u64_attr(&file, "samples")?);
         let sweep =
-            (read_str_attr(&file, "level").as_deref() == Some("3d")).then(|| crate::sweep3d::sampled_sweep(&text, seed, samples))??;
+            (read_str_attr(&file, "level").as_deref() == Some("3d")).then(|| crate::held::sampled_sweep(&text, seed, samples))??;
         return (sweep.rows() == piece.total).then(|| Box::new(sweep) as Box<dyn Level>);
     }
     let level: Box<dyn Level> = Box::new(crate::experiment::parse(Path::new(&path), &text).ok()?);

@@ -14,7 +14,7 @@
 use crate::experiment::{Experiment, Kicks3d, KicksBounce};
 use crate::h5::{new_group, write_column, write_grid, write_str_attr, Column, H5Error};
 use crate::provenance::Provenance;
-use crate::run::{create_table, fill_table, finish_table, progress, Part, RunError, RunSummary};
+use crate::table::{create_table, fill_table, finish_table, progress, Part, RunError, RunSummary};
 use kick_study::grid::Grid;
 use kick_study::level::Level;
 use std::path::Path;
@@ -78,7 +78,7 @@ fn grid_part(
     let path = part.path.clone();
     let out_dir = path.parent().unwrap_or(Path::new("."));
     let rows = part.rows.end - part.rows.start;
-    crate::limits::check(experiment, &part.rows, out_dir)?;
+    kick_study::limits::OutputSize::check(experiment, &part.rows, out_dir)?;
     let provenance = Provenance::now(&experiment.name, &experiment.path.display().to_string(), &experiment.text);
     let mut writer = create_table(experiment, &path, &provenance, rows, experiment.compress)?;
     let file = writer.file().clone();

@@ -2,13 +2,13 @@
 //! model crates' errors and names the flag, key or file where one applies;
 //! its `Display` is the message the front ends print.
 
-use crate::level::Failure;
 use crate::limits::LimitError;
 use kick_3d::Kick3dError;
 use kick_core::parameters::ParameterError;
 use kick_core::{KickError, Status};
-use kick_flight::FlightError;
+use kick_flight::{FlightError, FlightParameter};
 use std::path::PathBuf;
+use std::sync::Arc;
 
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum StudyError {
@@ -45,13 +45,19 @@ pub enum StudyError {
     /// An input or output file the user named, and what is wrong with it.
     #[error("{}: {message}", .path.display())]
     File { path: PathBuf, message: String },
+    /// One named 3D kick of a study whose solve failed.
+    #[error("{name}: {source}")]
+    Kick3dRow { name: String, source: Kick3dError },
+    /// A measurement file that cannot be read, or lacks what a study needs.
+    #[error(transparent)]
+    Measurements(#[from] kick_core::measurements::MeasurementError),
     /// One named row of a table (Table 2's) whose solve failed.
     #[error("{name}: {source}")]
     Row { name: String, source: KickError },
     /// A history's sink (kick-store's file, an in-memory sink) failed: its
     /// own error inside.
     #[error(transparent)]
-    Sink(#[from] crate::history::SinkError),
+    Sink(#[from] SinkError),
     /// A history whose solve reported more rows than reached its sink.
     #[error("{}: {written} of {total} rows written", .path.display())]
     ShortHistory { path: PathBuf, written: u64, total: u64 },
@@ -69,7 +75,7 @@ impl StudyError {
     pub fn status(&self) -> Status {
         match self {
             StudyError::Kick(e) | StudyError::Row { source: e, .. } => e.status(),
-            StudyError::Kick3d(e) => e.status(),
+            StudyError::Kick3d(e) | StudyError::Kick3dRow { source: e, .. } => e.status(),
             StudyError::Leg(e) => e.status(),
             StudyError::Flight { source, .. } => source.status(),
             StudyError::Aim { .. } => Status::Refused,
@@ -81,6 +87,7 @@ impl StudyError {
             | StudyError::HistoryRows { .. }
             | StudyError::Flag { .. }
             | StudyError::File { .. }
+            | StudyError::Measurements(_)
             | StudyError::Deflate { .. } => Status::Refused,
         }
     }
@@ -89,8 +96,82 @@ impl StudyError {
 impl From<FlightError> for StudyError {
     /// With the flag of the parameter the error names ([`crate::flight::flight_error`]'s message).
     fn from(source: FlightError) -> StudyError {
-        let flag = crate::flight::flight_flag(&source);
+        let flag = flight_flag(&source);
         StudyError::Flight { source, flag }
+    }
+}
+
+/// The flag of the flight parameter `error` names, if it names one.
+pub fn flight_flag(error: &FlightError) -> Option<String> {
+    let name = match error {
+        FlightError::InvalidParameter { name, .. } | FlightError::Missing { name } | FlightError::WrongLength { name, .. } => Some(*name),
+        FlightError::Conflict { second, .. } => Some(*second),
+        _ => None,
+    };
+    name.and_then(|n| FlightParameter::from_name(n).ok()).map(|p| p.def().flag())
+}
+
+/// Why a row of an outcome set has no values: its status and the message.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{message}")]
+pub struct Failure {
+    pub status: Status,
+    pub message: String,
+}
+
+impl Failure {
+    pub fn new(status: Status, message: impl Into<String>) -> Failure {
+        Failure { status, message: message.into() }
+    }
+
+    /// Bad input or a request that does not apply.
+    pub fn refused(message: impl Into<String>) -> Failure {
+        Failure::new(Status::Refused, message)
+    }
+}
+
+impl From<kick_core::OutsideValidity> for Failure {
+    fn from(e: kick_core::OutsideValidity) -> Failure {
+        Failure::new(Status::OutsideValidity, e.to_string())
+    }
+}
+
+impl From<kick_core::KickError> for Failure {
+    fn from(e: kick_core::KickError) -> Failure {
+        Failure::new(e.status(), e.to_string())
+    }
+}
+
+impl From<kick_3d::Kick3dError> for Failure {
+    fn from(e: kick_3d::Kick3dError) -> Failure {
+        Failure::new(e.status(), e.to_string())
+    }
+}
+
+/// Why a [`HistorySink`] failed: the sink's own error (kick-store's
+/// `StoreError` for a file), kept typed behind the trait, which knows no
+/// file format: [`SinkError::downcast_ref`] gives it back. Its message is
+/// the sink's.
+#[derive(Debug, Clone, thiserror::Error)]
+#[error(transparent)]
+pub struct SinkError(Arc<dyn std::error::Error + Send + Sync>);
+
+impl SinkError {
+    pub fn new(source: impl std::error::Error + Send + Sync + 'static) -> SinkError {
+        SinkError(Arc::new(source))
+    }
+
+    /// The sink's error, when it is an `E`.
+    pub fn downcast_ref<E: std::error::Error + 'static>(&self) -> Option<&E> {
+        self.0.downcast_ref()
+    }
+}
+
+/// Equal when the same error or the same message (errors of a sink need not
+/// compare).
+impl PartialEq for SinkError {
+    fn eq(&self, other: &SinkError) -> bool {
+        Arc::ptr_eq(&self.0, &other.0) || self.0.to_string() == other.0.to_string()
     }
 }
 

@@ -66,8 +66,7 @@ impl ExperimentError {
     }
 }
 
-/// Most scenarios one experiment may hold.
-pub const MAX_SCENARIOS: u64 = 100_000_000;
+pub use crate::limits::MAX_SCENARIOS;
 /// Most scenarios whose time histories one file may hold.
 pub const MAX_HISTORY_SCENARIOS: u64 = 1000;
 /// Most samples per recorded history (interval versus contact horizon).

@@ -2,9 +2,9 @@
 //! `kick simulate` and `kick simulate3d`): a kick-flight solve with its JSON
 //! and text forms, and the chaining of a kick's launch into it.
 
+use crate::error::Failure;
 use crate::error::StudyError;
 use crate::history::{flight_values as sample_values, HistoryMeta, HistoryRequest, FLIGHT_HISTORY_COLUMNS};
-use crate::level::Failure;
 use crate::printable::Printable;
 use kick_3d::{Kick3d, Outcome3d};
 use kick_core::number::{sig, vector};
@@ -141,15 +141,7 @@ pub struct FlightRun {
     pub crossings: Vec<Option<kick_flight::Crossing>>,
 }
 
-/// The flag of the flight parameter `error` names, if it names one.
-pub fn flight_flag(error: &FlightError) -> Option<String> {
-    let name = match error {
-        FlightError::InvalidParameter { name, .. } | FlightError::Missing { name } | FlightError::WrongLength { name, .. } => Some(*name),
-        FlightError::Conflict { second, .. } => Some(*second),
-        _ => None,
-    };
-    name.and_then(|n| FlightParameter::from_name(n).ok()).map(|p| p.def().flag())
-}
+pub use crate::error::flight_flag;
 
 /// A flight error as front ends show it: the parameter's name and its flag.
 pub fn flight_error(error: FlightError) -> String {

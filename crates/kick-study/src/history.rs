@@ -3,12 +3,12 @@
 //! ([`HistoryMeta`]), and the [`HistorySink`] the rows stream into. The file
 //! formats (CSV, HDF5) are kick-store's `history` module.
 
+pub use crate::error::SinkError;
 use crate::error::StudyError;
 use kick_core::parameters::Value;
 use kick_core::Spacing;
 use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 
 /// `--samples`' default: 201 rows (200 intervals over the contact or flight).
 pub const DEFAULT_SAMPLES: usize = 201;
@@ -28,33 +28,6 @@ pub trait HistorySink {
     fn rows(&self) -> u64;
     /// The last rows written; the sink's name (a file's path).
     fn finish(self: Box<Self>) -> Result<PathBuf, SinkError>;
-}
-
-/// Why a [`HistorySink`] failed: the sink's own error (kick-store's
-/// `StoreError` for a file), kept typed behind the trait, which knows no
-/// file format: [`SinkError::downcast_ref`] gives it back. Its message is
-/// the sink's.
-#[derive(Debug, Clone, thiserror::Error)]
-#[error(transparent)]
-pub struct SinkError(Arc<dyn std::error::Error + Send + Sync>);
-
-impl SinkError {
-    pub fn new(source: impl std::error::Error + Send + Sync + 'static) -> SinkError {
-        SinkError(Arc::new(source))
-    }
-
-    /// The sink's error, when it is an `E`.
-    pub fn downcast_ref<E: std::error::Error + 'static>(&self) -> Option<&E> {
-        self.0.downcast_ref()
-    }
-}
-
-/// Equal when the same error or the same message (errors of a sink need not
-/// compare).
-impl PartialEq for SinkError {
-    fn eq(&self, other: &SinkError) -> bool {
-        Arc::ptr_eq(&self.0, &other.0) || self.0.to_string() == other.0.to_string()
-    }
 }
 
 /// The failure of a sink that has only a message (an in-memory sink, a test's).

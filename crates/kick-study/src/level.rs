@@ -25,49 +25,18 @@ pub mod sampled_3d;
 pub mod three_d;
 
 use crate::columns::{Column, OutcomeSet};
+use crate::experiment::{Experiment, Kicks, Kicks1d, Output, Scenarios, MAX_SCENARIOS};
+use crate::limits::{LimitError, OutputSize};
 use kick_core::Status;
+use kick_core::{Spacing, HISTORY_COLUMNS, OBSERVABLES};
 use rayon::prelude::*;
 use std::ops::Range;
+use std::path::Path;
 
 /// Rows solved together: a chunk is solved while the one before it is written.
 pub const CHUNK_ROWS: usize = 4096;
 
-/// Why a row of an outcome set has no values: its status and the message.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{message}")]
-pub struct Failure {
-    pub status: Status,
-    pub message: String,
-}
-
-impl Failure {
-    pub fn new(status: Status, message: impl Into<String>) -> Failure {
-        Failure { status, message: message.into() }
-    }
-
-    /// Bad input or a request that does not apply.
-    pub fn refused(message: impl Into<String>) -> Failure {
-        Failure::new(Status::Refused, message)
-    }
-}
-
-impl From<kick_core::OutsideValidity> for Failure {
-    fn from(e: kick_core::OutsideValidity) -> Failure {
-        Failure::new(Status::OutsideValidity, e.to_string())
-    }
-}
-
-impl From<kick_core::KickError> for Failure {
-    fn from(e: kick_core::KickError) -> Failure {
-        Failure::new(e.status(), e.to_string())
-    }
-}
-
-impl From<kick_3d::Kick3dError> for Failure {
-    fn from(e: kick_3d::Kick3dError) -> Failure {
-        Failure::new(e.status(), e.to_string())
-    }
-}
+pub use crate::error::Failure;
 
 impl From<Failure> for String {
     fn from(f: Failure) -> String {
@@ -209,6 +178,52 @@ impl Level for crate::experiment::Experiment {
     }
     fn parameters_into(&self, index: u64, parameters: &mut [f64]) -> bool {
         self.with_level(|l| l.parameters_into(index, parameters))
+    }
+}
+
+impl OutputSize {
+    /// The file of the experiment's rows `part` (all its rows, or a shard's):
+    /// a shard is sized by its own rows and histories.
+    pub fn of(experiment: &Experiment, part: &Range<u64>) -> OutputSize {
+        let rows = part.end.saturating_sub(part.start);
+        let Some(kicks) = experiment.one_d() else {
+            // A 3D or bounce row: its values and status bytes.
+            return OutputSize { rows, bytes: rows.saturating_mul(experiment.bytes_per_row()) };
+        };
+        let solvers = kicks.solvers.len() as u64;
+        let mut per_row = 8 * kick_core::Parameter::ALL.len() as u64 + solvers * (8 * OBSERVABLES.len() as u64 + 1);
+        if let Some(flight) = &experiment.flight {
+            // A flight set per solver (`[flight]`).
+            per_row += solvers * (8 * flight.columns().len() as u64 + 1);
+        }
+        let mut bytes = rows.saturating_mul(per_row);
+        if let Output::History { interval } = experiment.output {
+            let per_sample = 8 * HISTORY_COLUMNS.len() as u64;
+            for row in part.clone() {
+                if let Ok(s) = kicks.scenarios.scenario(row) {
+                    let end = s.elastic_contact_time();
+                    let samples = Spacing::Interval(interval).grid(end).samples_until(end);
+                    bytes = bytes.saturating_add(solvers.saturating_mul(samples).saturating_mul(per_sample));
+                }
+            }
+        }
+        OutputSize { rows, bytes }
+    }
+
+    /// Refuse a run beyond the row bound, or whose file of rows `part` (the
+    /// whole experiment's, or a shard's) would not fit the free space of
+    /// `directory`; otherwise that file's estimated size.
+    pub fn check(experiment: &Experiment, part: &Range<u64>, directory: &Path) -> Result<OutputSize, LimitError> {
+        let rows = experiment.rows();
+        if rows > MAX_SCENARIOS {
+            let what = match &experiment.kicks {
+                Kicks::OneD(Kicks1d { scenarios: Scenarios::Sampled(_), .. }) => "samples",
+                Kicks::OneD(_) => "scenarios",
+                Kicks::ThreeD(_) | Kicks::Bounce(_) => "cells",
+            };
+            return Err(LimitError::TooManyRows { what, rows });
+        }
+        crate::limits::check_space(OutputSize::of(experiment, part), directory, crate::limits::free_space(directory))
     }
 }
 

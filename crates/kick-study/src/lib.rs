@@ -30,11 +30,14 @@ pub mod leg;
 pub mod level;
 pub mod limits;
 pub mod numbers_3d;
+pub mod patch;
 pub mod printable;
 pub mod sample;
 pub mod shard;
 pub mod simulate;
 pub mod table2;
+pub mod units;
+pub mod validation;
 
 pub use error::StudyError;
 pub use experiment::{Experiment, ExperimentError, Kicks, Kicks1d, Kicks3d, Output, Scenarios};

@@ -4,13 +4,13 @@
 //! machine can use, more rows than [`MAX_SCENARIOS`], or a file larger than
 //! the free space where it goes; a large run states its size first.
 
-use crate::experiment::{Experiment, Kicks, Kicks1d, Output, Scenarios, MAX_SCENARIOS};
-use crate::level::Level;
-use kick_core::{short, Spacing, HISTORY_COLUMNS, OBSERVABLES};
-use std::ops::Range;
+use kick_core::short;
 use std::path::Path;
 
 pub use kick_core::threads::{cores, max_threads, MAX_THREADS, THREADS_PER_CORE};
+
+/// The most rows (scenarios, samples or cells) one run may hold.
+pub const MAX_SCENARIOS: u64 = 100_000_000;
 
 /// Runs from this many estimated bytes, or [`LARGE_OUTPUT_ROWS`] rows, on
 /// state their size before starting.
@@ -64,8 +64,8 @@ pub fn use_threads(requested: Option<usize>, name: &str) -> Result<(), LimitErro
 }
 
 /// Use `threads` rayon workers for the rest of the process (if given).
-pub fn set_threads(threads: Option<usize>) -> Result<(), crate::error::StudyError> {
-    Ok(use_threads(threads, "--threads")?)
+pub fn set_threads(threads: Option<usize>) -> Result<(), LimitError> {
+    use_threads(threads, "--threads")
 }
 
 /// The size of a run's result file, estimated before it runs.
@@ -79,34 +79,6 @@ pub struct OutputSize {
 }
 
 impl OutputSize {
-    /// The file of the experiment's rows `part` (all its rows, or a shard's):
-    /// a shard is sized by its own rows and histories.
-    pub fn of(experiment: &Experiment, part: &Range<u64>) -> OutputSize {
-        let rows = part.end.saturating_sub(part.start);
-        let Some(kicks) = experiment.one_d() else {
-            // A 3D or bounce row: its values and status bytes.
-            return OutputSize { rows, bytes: rows.saturating_mul(experiment.bytes_per_row()) };
-        };
-        let solvers = kicks.solvers.len() as u64;
-        let mut per_row = 8 * kick_core::Parameter::ALL.len() as u64 + solvers * (8 * OBSERVABLES.len() as u64 + 1);
-        if let Some(flight) = &experiment.flight {
-            // A flight set per solver (`[flight]`).
-            per_row += solvers * (8 * flight.columns().len() as u64 + 1);
-        }
-        let mut bytes = rows.saturating_mul(per_row);
-        if let Output::History { interval } = experiment.output {
-            let per_sample = 8 * HISTORY_COLUMNS.len() as u64;
-            for row in part.clone() {
-                if let Ok(s) = kicks.scenarios.scenario(row) {
-                    let end = s.elastic_contact_time();
-                    let samples = Spacing::Interval(interval).grid(end).samples_until(end);
-                    bytes = bytes.saturating_add(solvers.saturating_mul(samples).saturating_mul(per_sample));
-                }
-            }
-        }
-        OutputSize { rows, bytes }
-    }
-
     pub fn is_large(&self) -> bool {
         self.bytes >= LARGE_OUTPUT_BYTES || self.rows >= LARGE_OUTPUT_ROWS
     }
@@ -117,23 +89,7 @@ impl OutputSize {
     }
 }
 
-/// Refuse a run beyond the row bound, or whose file of rows `part` (the
-/// whole experiment's, or a shard's) would not fit the free space of
-/// `directory`; otherwise that file's estimated size.
-pub fn check(experiment: &Experiment, part: &Range<u64>, directory: &Path) -> Result<OutputSize, LimitError> {
-    let rows = experiment.rows();
-    if rows > MAX_SCENARIOS {
-        let what = match &experiment.kicks {
-            Kicks::OneD(Kicks1d { scenarios: Scenarios::Sampled(_), .. }) => "samples",
-            Kicks::OneD(_) => "scenarios",
-            Kicks::ThreeD(_) | Kicks::Bounce(_) => "cells",
-        };
-        return Err(LimitError::TooManyRows { what, rows });
-    }
-    check_space(OutputSize::of(experiment, part), directory, free_space(directory))
-}
-
-/// [`check`] for a table of `rows` rows of `bytes_per_row` data bytes each
+/// [`OutputSize::check`] for a table of `rows` rows of `bytes_per_row` data bytes each
 /// (`what` names the row count in a refusal).
 pub fn check_rows(what: &'static str, total: u64, rows: u64, bytes_per_row: u64, directory: &Path) -> Result<OutputSize, LimitError> {
     if total > MAX_SCENARIOS {
@@ -143,7 +99,7 @@ pub fn check_rows(what: &'static str, total: u64, rows: u64, bytes_per_row: u64,
 }
 
 /// The size, or refused when more than `free` bytes (None: not known).
-fn check_space(size: OutputSize, directory: &Path, free: Option<u64>) -> Result<OutputSize, LimitError> {
+pub(crate) fn check_space(size: OutputSize, directory: &Path, free: Option<u64>) -> Result<OutputSize, LimitError> {
     match free {
         Some(free) if size.bytes > free => {
             Err(LimitError::NoSpace { rows: size.rows, needed: size.bytes, free, directory: directory.display().to_string() })
@@ -179,6 +135,7 @@ pub fn free_space(_path: &Path) -> Option<u64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::experiment::{Experiment, Kicks, Scenarios};
 
     #[test]
     fn byte_counts_read_short() {
@@ -207,7 +164,7 @@ mod tests {
 
     #[test]
     fn rows_and_bytes_are_bounded_before_a_run() {
-        let e = check(&sweep(1_000_000_000_000), &(0..1), Path::new(".")).unwrap_err();
+        let e = OutputSize::check(&sweep(1_000_000_000_000), &(0..1), Path::new(".")).unwrap_err();
         assert_eq!(e.to_string(), "samples = 1000000000000: more than the 100000000 scenarios one run may hold; split the run");
         // 8 parameters, 15 outcomes and a status byte of one solver: 185 bytes a row.
         let size = OutputSize::of(&sweep(100_000), &(0..100_000));

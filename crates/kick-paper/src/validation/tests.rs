@@ -1,8 +1,11 @@
 //! The chapter's rules, checked on the committed measurements: each test
 //! reads the JSON (or solves the model) independently of the code that wrote it.
 
-use super::rows::{estimate_cell, Role, Row};
 use super::*;
+use super::{estimate_cell, Role, Row};
+use kick_core::measurements::Measurements;
+use kick_core::{Parameter, ShellBall};
+use std::path::PathBuf;
 use std::sync::OnceLock;
 
 fn file() -> PathBuf {
@@ -14,7 +17,7 @@ fn validation() -> &'static (Validation, String, serde_json::Value) {
     static V: OnceLock<(Validation, String, serde_json::Value)> = OnceLock::new();
     V.get_or_init(|| {
         let v = validate(&file()).expect("the committed measurements validate");
-        let page = v.markdown("v.json", "m.toml", "NOTES.md");
+        let page = markdown(&v, "v.json", "m.toml", "NOTES.md");
         let json = serde_json::to_value(&v).unwrap();
         (v, page, json)
     })
@@ -243,7 +246,7 @@ fn not_identified_when_sigma_exceeds_the_value() {
         targets: "t".into(),
         note: "n".into(),
     });
-    let page = v.markdown("v.json", "m.toml", "NOTES.md");
+    let page = markdown(&v, "v.json", "m.toml", "NOTES.md");
     assert!(page.contains("| test | foot mass m_f | not identified (σ = 40.035 > 13.96) |"));
     assert!(!page.contains("13.96 ±"));
 }

@@ -293,3 +293,21 @@ impl Level for SampledSweep3d {
         true
     }
 }
+
+/// The parameter a `--range` of `kick sweep3d` names: one of the kick's
+/// (their levels), or with `--flight` one the flight after it takes.
+pub fn find_range(name: &str, flight: bool) -> Result<&'static parameters::ParameterDef, String> {
+    let kick = parameters::find_at(KickSpec::LEVELS, name);
+    match (kick, flight) {
+        (Ok(p), _) => Ok(p),
+        (Err(e), true) => kick_flight::FlightParameter::from_name(name)
+            .ok()
+            .filter(|&q| !crate::flight::After::Kick3d.sets(q))
+            .map(|q| q.def())
+            .ok_or_else(|| format!("{e}, nor a flight parameter the kick leaves")),
+        (Err(_), false) if kick_flight::FlightParameter::from_name(name).is_ok() => {
+            Err(format!("`{name}` is a parameter of the flight: add --flight to fly the kicks"))
+        }
+        (Err(e), false) => Err(e.to_string()),
+    }
+}

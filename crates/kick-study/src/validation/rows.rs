@@ -195,13 +195,3 @@ pub fn headline<'a>(rows: impl IntoIterator<Item = &'a Row>) -> Headline {
     h.not_counted = reasons.into_iter().collect();
     h
 }
-
-/// An estimate as the page prints it: "not identified" when its σ exceeds it.
-pub fn estimate_cell(value: Option<f64>, sigma: Option<f64>) -> String {
-    match (value, sigma) {
-        (None, _) => "not identified".into(),
-        (Some(v), Some(s)) if s > v.abs() => format!("not identified (σ = {} > {})", kick_core::short(s), kick_core::short(v)),
-        (Some(v), Some(s)) => format!("{} ± {}", kick_core::short(v), kick_core::short(s)),
-        (Some(v), None) => format!("{} (no σ: the source gives means only)", kick_core::short(v)),
-    }
-}

@@ -1,6 +1,6 @@
 //! `kick laws`: the contact-law family on Table 2's scenarios, written to
-//! `DIR/laws.h5` (layout in [`crate::identify::files`]) with its figure
-//! drawn from that file.
+//! `DIR/laws.h5` (layout in [`crate::identify::files`]); kick-paper draws
+//! its figure from that file.
 
 use crate::printable::Printable;
 use crate::Provenance;
@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 pub struct LawsSettings {
     /// Table 2 scenario file with the rows' parameters.
     pub scenarios: PathBuf,
-    /// Write laws.h5 and laws.png/svg (drawn from laws.h5) here.
+    /// Write laws.h5 here (and kick-paper laws.png/svg, drawn from it).
     pub out: Option<PathBuf>,
     /// Pulse samples per undamped contact time (at most).
     pub samples: u32,
@@ -31,10 +31,13 @@ pub struct LawsReport {
     pub written: Vec<PathBuf>,
 }
 
-/// The contact laws on Table 2's scenarios; with `out`, laws.h5 and its figure.
+/// The contact laws' file, below `--out`.
+pub const LAWS_FILE: &str = "laws.h5";
+
+/// The contact laws on Table 2's scenarios; with `out`, laws.h5.
 pub fn laws(settings: &LawsSettings) -> Result<LawsReport, String> {
     if let Some(dir) = &settings.out {
-        let files = ["laws.h5", "laws.png", "laws.svg"].map(|f| dir.join(f));
+        let files = [dir.join(LAWS_FILE)];
         let targets = files.each_ref().map(|path| crate::output::Target::File { flag: "--out", path });
         crate::output::check_paths(&targets, &[&settings.scenarios]).map_err(|e| e.to_string())?;
     }
@@ -62,7 +65,7 @@ fn comparisons(args: &LawsSettings) -> Result<Vec<LawComparison>, String> {
 /// Targets of the restitution table (how far each χ formula misses its target).
 pub const FORMULA_TARGETS: [f64; 7] = [0.99, 0.95, 0.9, 0.8, 0.7, 0.5, 0.3];
 
-/// Write `dir/laws.h5` and draw `dir/laws.{png,svg}` from it.
+/// Write `dir/laws.h5`.
 fn write(args: &LawsSettings, all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let scenarios = crate::table2::read_text(&args.scenarios)?;
@@ -74,10 +77,7 @@ fn write(args: &LawsSettings, all: &[LawComparison], dir: &Path) -> Result<Vec<P
     );
     let provenance = Provenance::now("laws", &args.scenarios.display().to_string(), &text);
     let formulas = restitution_table(&Scenario::baseline(), &FORMULA_TARGETS, &Accurate::default()).map_err(|e| e.to_string())?;
-    let h5 = crate::identify::files::write_laws(&dir.join("laws.h5"), &provenance, all, args.samples, &FORMULA_TARGETS, &formulas)?;
-    let mut written = vec![h5.clone()];
-    written.extend(crate::identify::figures::laws(&h5, dir)?);
-    Ok(written)
+    Ok(vec![crate::identify::files::write_laws(&dir.join(LAWS_FILE), &provenance, all, args.samples, &FORMULA_TARGETS, &formulas)?])
 }
 
 impl Printable for LawsReport {

@@ -1,5 +1,6 @@
 //! `kick fit`: Table 2 by least squares, fits of specification files,
-//! synthetic data and the identifiability study, with their result files.
+//! synthetic data and the identifiability study, with their result files
+//! (the identifiability figure is kick-paper's, drawn from its file).
 
 use crate::identify::files;
 use crate::printable::Printable;
@@ -19,10 +20,13 @@ fn text(e: IdentifyError) -> String {
     e.to_string()
 }
 
+/// The identifiability study's file, below `--out`.
+pub const IDENTIFIABILITY_FILE: &str = "identifiability.h5";
+
 /// The identifiability study's settings (`kick fit profile`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ProfileSettings {
-    /// Write identifiability.h5 and its figure here.
+    /// Write identifiability.h5 here (and kick-paper its figure).
     pub out: Option<PathBuf>,
     /// Profile over [1/spread, spread] x the truth.
     pub spread: f64,
@@ -52,14 +56,12 @@ pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, String> {
     let mut written = Vec::new();
     if let Some(dir) = out {
         // Reads nothing: the files themselves are checked.
-        let files = ["identifiability.h5", "identifiability.png", "identifiability.svg"].map(|f| dir.join(f));
+        let files = [dir.join(IDENTIFIABILITY_FILE)];
         crate::output::check_paths(&files.each_ref().map(|path| crate::output::Target::File { flag: "--out", path }), &[])
             .map_err(|e| e.to_string())?;
         let command = format!("kick fit profile --spread {spread} --points {points} --map-points {map_points} --seed {seed}");
         let provenance = Provenance::now("identifiability", "kick fit profile (command line)", &command);
-        let h5 = files::write_identifiability(&dir.join("identifiability.h5"), &provenance, &study)?;
-        written.push(h5.clone());
-        written.extend(crate::identify::figures::identifiability(&h5, &dir)?);
+        written.push(files::write_identifiability(&dir.join(IDENTIFIABILITY_FILE), &provenance, &study)?);
     }
     Ok(ProfileReport { study, written })
 }
@@ -235,7 +237,7 @@ pub fn data(spec_path: &Path, out: Option<&Path>) -> Result<DataFit, String> {
         let spec_text = kick_core::input::read_text(spec_path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| format!("{name}: {e}"))?;
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("fit");
         let provenance = Provenance::now(stem, &name, &spec_text);
-        let w = ResultWriter::create(path, &provenance, &kick_store::layouts::FIT).map_err(|e| e.to_string())?;
+        let w = ResultWriter::create(path, &provenance, &crate::layouts::FIT).map_err(|e| e.to_string())?;
         files::write_fit(&w, "fit", &report, &problem.observations, &truth)?;
         written.push(w.finish().map_err(|e| e.to_string())?);
     }
