@@ -322,8 +322,11 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, tolerance: f64) -> Result<Out
         if let Some(end) = separates {
             h = end;
         }
-        // The clamp (module docs): F > 0 wherever δ > 0 within the step.
-        if reaches_clamp(&s.delta, &s.force, h, length) {
+        // The clamp (module docs): F > 0 wherever δ > 0 within the step, and
+        // just before separation, where sampling may step over it.
+        if reaches_clamp(&s.delta, &s.force, h, length)
+            || separates.is_some_and(|end| separates_past_clamp(&ball, derivative(&s.delta, end)))
+        {
             return Err(KickError::NotApplicable {
                 solver: "series",
                 reason: "the shell's loss reaches the clamp F = 0 on this rebound (faster than p0/β); `reduced` solves it",
