@@ -29,7 +29,7 @@
 
 use crate::events::{ContactSystem, Engine, Method, Recorder, Scales, StopAt};
 use crate::history::{self, Sampler};
-use crate::reduced::{reconstruct, separated, RelativeState};
+use crate::relative::{reconstruct, separated, RelativeState};
 use kick_core::boot::Split;
 use kick_core::{
     AnyLaw, Boot, ContactLaw, ContactPhase, EnergyBudget, KickError, Outcome, Sample, Scenario, SolverPath, Spacing, Streamed,

@@ -43,7 +43,7 @@
 use crate::events::proves_trapped;
 use crate::events::ContactSystem;
 use crate::ode::Extremes;
-use crate::reduced::{separated, RelativeOde, RelativeState};
+use crate::relative::{separated, RelativeOde, RelativeState};
 use kick_core::{roots, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath};
 
 /// Order K of the Taylor steps (δ to t^K).

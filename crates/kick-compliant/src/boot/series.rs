@@ -43,7 +43,7 @@ use super::{BootedOde, BootedState};
 use crate::events::proves_trapped;
 use crate::events::ContactSystem;
 use crate::ode::Extremes;
-use crate::reduced::{separated, RelativeState};
+use crate::relative::{separated, RelativeState};
 use crate::shell_series::{
     derivative, extremes_along, first_fall, integral, poly, reaches_clamp, separates_past_clamp, ElasticJet, INVERSE, K,
 };
