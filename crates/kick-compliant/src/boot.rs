@@ -14,8 +14,8 @@
 //!   [`kick_core::Boot::force_rate`]). A law that would pull is held at
 //!   F ≥ 0 and the layer then relaxes on its own.
 //! - [`series`]: the shell ball (drive ≥ 0) by Taylor steps, as
-//!   [`crate::shell_series`], with δ_b's coefficients from the force balance
-//!   order by order: the `series` and `auto` path.
+//!   [`crate::shell_series`], taken in σ with dt = (c_b + s A) dσ so that
+//!   the force balance needs no division: the `series` and `auto` path.
 //!
 //! Outcome: `max_compression` is the ball's δ_B (its deformation, as
 //! without a boot), the restitution and speeds those of the bodies; the
@@ -29,7 +29,7 @@
 
 use crate::events::{ContactSystem, Engine, Method, Recorder, Scales, StopAt};
 use crate::history::{self, Sampler};
-use crate::reduced::{reconstruct, separated, RelativeState};
+use crate::relative::{reconstruct, separated, RelativeState};
 use kick_core::boot::Split;
 use kick_core::{
     AnyLaw, Boot, ContactLaw, ContactPhase, EnergyBudget, KickError, Outcome, Sample, Scenario, SolverPath, Spacing, Streamed,

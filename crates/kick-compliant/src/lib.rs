@@ -24,6 +24,7 @@ pub mod history;
 pub mod ode;
 pub mod precision;
 pub mod reduced;
+pub mod relative;
 pub mod seed;
 pub mod series;
 pub mod shell_series;

@@ -43,7 +43,7 @@
 use crate::events::proves_trapped;
 use crate::events::ContactSystem;
 use crate::ode::Extremes;
-use crate::reduced::{separated, RelativeOde, RelativeState};
+use crate::relative::{separated, RelativeOde, RelativeState};
 use kick_core::{roots, ContactLaw, KickError, Outcome, Scenario, ShellBall, SolverPath};
 
 /// Order K of the Taylor steps (δ to t^K).
@@ -114,15 +114,12 @@ pub(crate) struct ElasticJet {
 impl ElasticJet {
     /// At compression δ0 (the step's start).
     pub(crate) fn new(ball: &ShellBall, delta0: f64) -> Result<ElasticJet, KickError> {
-        let r = ball.radius;
-        let absolute = ball.pressure + ball.atmospheric_pressure;
-        let gamma = ball.gas_exponent;
         let mut jet = ElasticJet {
-            radius: r,
-            absolute,
-            gamma,
-            shell_stiffness: ball.shell_stiffness,
-            inverse_volume: 1.0 / (4.0 * r * r * r),
+            radius: 0.0,
+            absolute: 0.0,
+            gamma: 0.0,
+            shell_stiffness: 0.0,
+            inverse_volume: 0.0,
             inverse_f0: 0.0,
             q: [0.0; K + 1],
             cube: [0.0; K + 1],
@@ -132,17 +129,29 @@ impl ElasticJet {
             area: [0.0; K + 1],
             elastic: [0.0; K + 1],
         };
+        jet.restart(ball, delta0)?;
+        Ok(jet)
+    }
+
+    /// [`ElasticJet::new`] in place, for a loop of steps that keeps one jet
+    /// (orders above 0 are overwritten by [`ElasticJet::next`] before they are read).
+    pub(crate) fn restart(&mut self, ball: &ShellBall, delta0: f64) -> Result<(), KickError> {
+        let r = ball.radius;
+        let absolute = ball.pressure + ball.atmospheric_pressure;
+        let gamma = ball.gas_exponent;
+        (self.radius, self.absolute, self.gamma, self.shell_stiffness) = (r, absolute, gamma, ball.shell_stiffness);
+        self.inverse_volume = 1.0 / (4.0 * r * r * r);
         let cap0 = delta0 * delta0 * (3.0 * r - delta0) / (4.0 * r * r * r);
-        jet.f[0] = 1.0 - cap0;
-        if !(jet.f[0] > 0.0) {
+        self.f[0] = 1.0 - cap0;
+        if !(self.f[0] > 0.0) {
             return Err(KickError::Integration { time: 0.0, reason: format!("compression {delta0} m leaves no gas in the ball") });
         }
-        jet.inverse_f0 = 1.0 / jet.f[0];
+        self.inverse_f0 = 1.0 / self.f[0];
         // (1 − c)^(−γ) and the gauge pressure with the digits of a small cap.
         let log_ratio = -(-cap0).ln_1p();
-        jet.w[0] = (gamma * log_ratio).exp();
-        jet.g[0] = ball.pressure + absolute * (gamma * log_ratio).exp_m1();
-        Ok(jet)
+        self.w[0] = (gamma * log_ratio).exp();
+        self.g[0] = ball.pressure + absolute * (gamma * log_ratio).exp_m1();
+        Ok(())
     }
 
     /// E_k from δ_0..δ_k (`d`).
@@ -222,20 +231,48 @@ pub(crate) fn reaches_clamp(compression: &[f64], force: &[f64], h: f64, length: 
     })
 }
 
+/// True when the shell's force is ≤ 0 just before it separates at the
+/// compression rate `rate` (< 0): as δ → 0⁺, F/A → p0 + k_s/(2πR) + β δ̇
+/// (A ≈ 2πR δ), so a rebound faster than (p0 + k_s/(2πR))/β has reached the
+/// clamp however close to separation, where sampling may step over it.
+pub(crate) fn separates_past_clamp(ball: &ShellBall, rate: f64) -> bool {
+    ball.pressure + ball.shell_stiffness / (2.0 * std::f64::consts::PI * ball.radius) + ball.shell_damping * rate <= 0.0
+}
+
 /// The step's largest compression (at its turn inside the step) and force
 /// (at its turn or the step's end) into the running `extremes`; `t` is the
 /// step's start.
 pub(crate) fn step_extremes(compression: &[f64], force: &[f64], t: f64, h: f64, extremes: &mut Extremes) {
-    if let Some(turn) = first_fall(|x| derivative(compression, x), h) {
-        let reached = poly(compression, turn);
+    extremes_along(
+        h,
+        |x| t + x,
+        (|x| poly(compression, x), |x| derivative(compression, x)),
+        (|x| poly(force, x), |x| derivative(force, x)),
+        extremes,
+    );
+}
+
+/// [`step_extremes`] along a step parametrised by x in [0, h] (the time
+/// from the step's start, or another variable that grows with it): `time`
+/// maps x to the time, each pair is a value and a function of x with the
+/// sign of its rate.
+pub(crate) fn extremes_along(
+    h: f64,
+    time: impl Fn(f64) -> f64,
+    compression: (impl Fn(f64) -> f64, impl Fn(f64) -> f64),
+    force: (impl Fn(f64) -> f64, impl Fn(f64) -> f64),
+    extremes: &mut Extremes,
+) {
+    if let Some(turn) = first_fall(&compression.1, h) {
+        let reached = compression.0(turn);
         if reached > extremes.max_compression {
-            (extremes.max_compression, extremes.max_compression_time) = (reached, t + turn);
+            (extremes.max_compression, extremes.max_compression_time) = (reached, time(turn));
         }
     }
-    for candidate in [first_fall(|x| derivative(force, x), h), Some(h)].into_iter().flatten() {
-        let value = poly(force, candidate);
+    for candidate in [first_fall(&force.1, h), Some(h)].into_iter().flatten() {
+        let value = force.0(candidate);
         if value > extremes.peak_force {
-            (extremes.peak_force, extremes.peak_force_time) = (value, t + candidate);
+            (extremes.peak_force, extremes.peak_force_time) = (value, time(candidate));
         }
     }
 }
@@ -285,8 +322,11 @@ pub fn solve(scenario: &Scenario, ball: ShellBall, tolerance: f64) -> Result<Out
         if let Some(end) = separates {
             h = end;
         }
-        // The clamp (module docs): F > 0 wherever δ > 0 within the step.
-        if reaches_clamp(&s.delta, &s.force, h, length) {
+        // The clamp (module docs): F > 0 wherever δ > 0 within the step, and
+        // just before separation, where sampling may step over it.
+        if reaches_clamp(&s.delta, &s.force, h, length)
+            || separates.is_some_and(|end| separates_past_clamp(&ball, derivative(&s.delta, end)))
+        {
             return Err(KickError::NotApplicable {
                 solver: "series",
                 reason: "the shell's loss reaches the clamp F = 0 on this rebound (faster than p0/β); `reduced` solves it",

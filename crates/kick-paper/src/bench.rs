@@ -8,20 +8,14 @@
 //! evaluation counts do not depend on the clock: they make the solvers page.
 
 use crate::figures::{save_grid, Panel, Series};
-use crate::h5::{write_f64_attr, write_strings, Column, OutcomeSet, Setting, SweepData};
+use crate::h5::SweepData;
 use crate::printable::Printable;
-use crate::sample::SampledSweep;
-use crate::Provenance;
-use kick_compliant::precision::{self, PrecisionPoint};
-use kick_compliant::SolverChoice;
-use kick_core::Solver;
-use kick_store::SweepWriter;
+pub use kick_store::bench::{file_runs, flown_command, flown_rates, FileRun, FlownRates};
+pub use kick_study::bench::*;
 use plotters::prelude::SeriesLabelPosition;
-use rayon::prelude::*;
 use serde::Serialize;
 use std::io::Write;
 use std::path::PathBuf;
-use std::time::Instant;
 
 /// What to measure and where to write it.
 #[derive(Debug, Clone, PartialEq)]
@@ -83,574 +77,13 @@ impl Printable for BenchReport {
     }
 }
 
-const COLUMNS: [(&str, &str); 5] = [
-    ("max_error", "1"),
-    ("max_error_closed_form", "1"),
-    ("max_error_tight_reference", "1"),
-    ("seconds_per_scenario", "s"),
-    ("evaluations_per_scenario", "1"),
-];
-
-/// A timing repeated in one run: its median and range.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Spread {
-    pub median: f64,
-    pub low: f64,
-    pub high: f64,
-}
-
-impl Spread {
-    /// Of `values` (at least one).
-    pub fn of(values: &[f64]) -> Spread {
-        let mut sorted = values.to_vec();
-        sorted.sort_by(f64::total_cmp);
-        Spread { median: sorted[sorted.len() / 2], low: sorted[0], high: sorted[sorted.len() - 1] }
-    }
-
-    /// Of the ratios a_i / b_i of measurements taken in alternation.
-    pub fn of_ratios(a: &[f64], b: &[f64]) -> Spread {
-        Spread::of(&a.iter().zip(b).map(|(x, y)| x / y).collect::<Vec<_>>())
-    }
-
-    /// `median (range low–high)` with `decimals` decimals, `unit` after each number.
-    fn show(&self, decimals: usize, unit: &str) -> String {
-        format!("{:.decimals$}{unit} (range {:.decimals$}–{:.decimals$}{unit})", self.median, self.low, self.high)
-    }
-}
-
-/// Scenarios per second of `solver` on the sweep, on a pool of `threads`.
-fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) -> Result<f64, String> {
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| e.to_string())?;
-    let started = Instant::now();
-    let solved = pool.install(|| {
-        (0..sweep.samples).into_par_iter().map(|i| sweep.scenario(i).and_then(|s| solver.solve(&s)).is_ok() as u64).sum::<u64>()
-    });
-    std::hint::black_box(solved);
-    Ok(sweep.samples as f64 / started.elapsed().as_secs_f64())
-}
-
-/// Flights per second through `kick_flight::flight_many` on a pool of
-/// `threads`: `rows` free kicks of `kick_flight::models::free_kick_speeds`
-/// (the criterion bench's flights), outcomes only.
-fn flights_per_second(rows: usize, threads: usize) -> Result<f64, String> {
-    let (base, speeds) = kick_flight::models::free_kick_speeds(rows);
-    let columns = [kick_flight::Column { parameter: kick_flight::FlightParameter::Speed, values: &speeds }];
-    let started = Instant::now();
-    let out = kick_flight::flight_many(&base, &columns, rows, Some(threads)).map_err(|e| e.to_string())?;
-    let seconds = started.elapsed().as_secs_f64();
-    if let Some(Err(e)) = out.iter().find(|r| r.is_err()) {
-        return Err(format!("a bench flight failed: {e}"));
-    }
-    Ok(rows as f64 / seconds)
-}
-
-/// Seconds of each aim solve of paper/flight.md ([`crate::free_kick::aim_requests`]:
-/// the launch, then through the 3D kick), `repeats` times in alternation.
-fn aim_seconds(repeats: usize) -> Result<[Vec<f64>; 2], String> {
-    let requests = crate::free_kick::aim_requests();
-    let mut seconds: [Vec<f64>; 2] = Default::default();
-    for _ in 0..repeats {
-        for (request, out) in requests.iter().zip(seconds.iter_mut()) {
-            let started = Instant::now();
-            std::hint::black_box(kick_study::aim::aim(request).map_err(|e| e.to_string())?);
-            out.push(started.elapsed().as_secs_f64());
-        }
-    }
-    Ok(seconds)
-}
-
-/// How many forms [`kick_costs`] times.
-pub const KICK_FORMS: usize = 10;
-
-/// One off-center 3D kick (Table 1, 5 cm offset, `accurate`, one core) in
-/// [`KICK_FORMS`] forms, µs per kick and evaluations, timed in alternation,
-/// medians: the default spring at μ = ∞, a stiff spring at μ = 0.5
-/// (k_t = 1e9 N/m, which tends to rigid grip at that μ), rigid grip as a
-/// constraint (k_t = ∞), the shell ball at μ = 0.5; then the shell ball's
-/// patch (issue 22's ≤ 100 µs at any μ): on the knife-edge face at μ = 0.5
-/// and in rigid grip at μ = ∞, and on a convex instep (the assumed cap,
-/// face square) likewise; that rigid kick again on the baseline x86-64 copy
-/// (`Accurate3d::solve_baseline`: what a CPU without AVX2 runs); and the
-/// realistic foot (`--leg`: the leg's 6×6 apparent inertia and its boot) on
-/// the cap's patch at μ = 0.5 (issue 31: ≤ 120 µs).
-fn kick_costs(min_seconds: f64) -> Result<[(Vec<f64>, u64); KICK_FORMS], String> {
-    use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
-    let at = |scenario: kick_core::ScenarioSpec, kick3d: Kick3dSpec| KickSpec { scenario, kick3d }.build().map_err(|e| e.to_string());
-    let spec = Kick3dSpec { offset: Some(0.05), friction: Some(f64::INFINITY), ..Kick3dSpec::default() };
-    let shell = kick_core::ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() };
-    let cap = Kick3dSpec {
-        patch_contact: Some(true),
-        instep_radius: Some(kick_3d::validation::ASSUMED_INSTEP_RADIUS),
-        face_yaw_deg: Some(0.0),
-        ..spec
-    };
-    let kicks = [
-        at(Default::default(), spec)?,
-        at(Default::default(), Kick3dSpec { tangential_stiffness: Some(1e9), friction: Some(0.5), ..spec })?,
-        at(Default::default(), Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..spec })?,
-        at(shell, Kick3dSpec { friction: Some(0.5), ..spec })?,
-        at(shell, Kick3dSpec { friction: Some(0.5), patch_contact: Some(true), ..spec })?,
-        at(shell, Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), patch_contact: Some(true), ..spec })?,
-        at(shell, Kick3dSpec { friction: Some(0.5), ..cap })?,
-        at(shell, Kick3dSpec { tangential_stiffness: Some(f64::INFINITY), ..cap })?,
-        at(kick_core::ScenarioSpec { leg: Some(true), ..shell }, Kick3dSpec { friction: Some(0.5), ..cap })?,
-    ];
-    let solver = Accurate3d::default();
-    let mut times: [Vec<f64>; KICK_FORMS] = Default::default();
-    let mut evaluations = [0u64; KICK_FORMS];
-    let forms: Vec<(&kick_3d::Kick3d, bool)> =
-        kicks[..8].iter().map(|k| (k, false)).chain([(&kicks[7], true), (&kicks[8], false)]).collect();
-    for _ in 0..5 {
-        for (i, &(kick, baseline)) in forms.iter().enumerate() {
-            let (mut runs, started) = (0u32, Instant::now());
-            while runs == 0 || started.elapsed().as_secs_f64() < min_seconds {
-                let solved = if baseline { solver.solve_baseline(kick) } else { solver.solve(kick) };
-                evaluations[i] = std::hint::black_box(solved.map_err(|e| e.to_string())?).evaluations;
-                runs += 1;
-            }
-            times[i].push(started.elapsed().as_secs_f64() / f64::from(runs));
-        }
-    }
-    let mut out: [(Vec<f64>, u64); KICK_FORMS] = Default::default();
-    for i in 0..KICK_FORMS {
-        out[i] = (times[i].iter().map(|t| t * 1e6).collect(), evaluations[i]);
-    }
-    Ok(out)
-}
-
-/// The most accurate point of the fixed-step family (`rk4-events`) and the
-/// cheapest `auto` point at least as accurate, from the ladder: the pair
-/// whose cost ratio is the cost at equal accuracy.
-pub fn equal_accuracy_pair(points: &[PrecisionPoint]) -> Option<(&PrecisionPoint, &PrecisionPoint)> {
-    let fixed = points.iter().filter(|p| p.solver == "rk4-events").min_by(|a, b| a.max_error.total_cmp(&b.max_error))?;
-    let auto = points
-        .iter()
-        .filter(|p| p.solver == "auto" && p.max_error <= fixed.max_error)
-        .max_by(|a, b| a.setting.total_cmp(&b.setting).then(b.seconds_per_scenario.total_cmp(&a.seconds_per_scenario)))?;
-    Some((fixed, auto))
-}
-
-/// Largest errors over the first `samples` scenarios of the sweep's box
-/// (`kick sweep --seed 1`) of the solvers `auto` chooses among, at their
-/// defaults, against `accurate` at the reference tolerance.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct BoxErrors {
-    pub samples: u64,
-    /// Scenarios the reference finds trapped (no separation): left out.
-    pub trapped: u64,
-    /// (solver, largest error as `precision::max_relative_error`, scenarios it applies to).
-    pub errors: Vec<(&'static str, f64, u64)>,
-}
-
-/// The solvers [`box_errors`] measures.
-pub const BOX_SOLVERS: [&str; 4] = ["series", "reduced-return", "reduced", "auto"];
-
-/// [`BoxErrors`] over `samples` scenarios; a solver that fails where the
-/// reference separates is an error naming it.
-pub fn box_errors(samples: u64) -> Result<BoxErrors, String> {
-    let sweep = SampledSweep::new(samples, 1);
-    let tight = kick_compliant::Accurate::new(precision::REFERENCE_TOLERANCE, precision::REFERENCE_TOLERANCE).map_err(|e| e.to_string())?;
-    let solvers: Vec<SolverChoice> =
-        BOX_SOLVERS.iter().map(|n| SolverChoice::from_name(n, 5e-6)).collect::<Result<_, _>>().map_err(|e| e.to_string())?;
-    let mut errors: Vec<(&'static str, f64, u64)> = BOX_SOLVERS.iter().map(|&n| (n, 0.0, 0)).collect();
-    let mut trapped = 0;
-    for i in 0..samples {
-        let scenario = sweep.scenario(i).map_err(|e| e.to_string())?;
-        let reference = match tight.solve(&scenario) {
-            Ok(o) => o,
-            Err(kick_core::KickError::Trapped { .. }) => {
-                trapped += 1;
-                continue;
-            }
-            Err(e) => return Err(format!("box scenario {i}: the reference: {e}")),
-        };
-        for (solver, entry) in solvers.iter().zip(errors.iter_mut()) {
-            match solver.solve(&scenario) {
-                Ok(o) => {
-                    entry.1 = entry.1.max(precision::max_relative_error(&o, &reference));
-                    entry.2 += 1;
-                }
-                Err(kick_core::KickError::NotApplicable { .. }) => {}
-                Err(e) => return Err(format!("box scenario {i}: {}: {e}", entry.0)),
-            }
-        }
-    }
-    Ok(BoxErrors { samples, trapped, errors })
-}
-
-/// One sweep written to its HDF5 file as `kick sweep`/`kick sweep3d --out`
-/// write it, plain or compressed: wall time and the file's size.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FileRun {
-    /// The command that does the same run alone.
-    pub command: String,
-    pub rows: u64,
-    pub seconds: f64,
-    pub bytes: u64,
-}
-
-/// `kick sweep` and `kick sweep3d` into files on 2 threads, plain and with
-/// shuffle + deflate at the default level: the throughput with the file
-/// written, and what compression costs and saves. Files go to a scratch
-/// directory removed afterwards.
-fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
-    use crate::h5::Compression;
-    let (samples_1d, samples_3d) = if quick { (2_000, 200) } else { (200_000, 20_000) };
-    let dir = std::env::temp_dir().join(format!("kick-bench-files-{}", std::process::id()));
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build().map_err(|e| e.to_string())?;
-    let mut runs = Vec::new();
-    let mut measure = || -> Result<(), String> {
-        for compress in [Compression::None, Compression::Deflate(Compression::DEFAULT_LEVEL)] {
-            let flag = match compress {
-                Compression::None => String::new(),
-                Compression::Deflate(level) => format!(" --compress {level}"),
-            };
-            let settings = crate::sweep::SweepSettings {
-                samples: samples_1d,
-                seed: 1,
-                solver: "auto".into(),
-                dt: None,
-                out: dir.join("sweep.h5"),
-                fixed: Default::default(),
-                ranges: Default::default(),
-                shard: None,
-                threads: None,
-                compress,
-            };
-            let report = pool.install(|| crate::sweep::sweep(&settings))?;
-            let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
-            let command = format!("kick sweep --samples {samples_1d} --seed 1 --threads 2 --out sweep.h5{flag}");
-            runs.push(FileRun { command, rows: samples_1d, seconds: report.seconds, bytes });
-            let _ = std::fs::remove_file(&report.path);
-            let settings = crate::sweep3d::Sweep3dSettings {
-                samples: samples_3d,
-                seed: 1,
-                out: dir.join("sweep3d.h5"),
-                fixed: Default::default(),
-                ranges: Default::default(),
-                flight: None,
-                shard: None,
-                threads: None,
-                compress,
-            };
-            let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
-            let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
-            let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --out sweep3d.h5{flag}");
-            runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
-            let _ = std::fs::remove_file(&report.path);
-        }
-        // The shell ball in 3D (issue 22: at least 10,000 kicks/s on 2 threads).
-        let mut fixed = kick_3d::KickSpec::default();
-        fixed.scenario.law = Some(kick_core::LawKind::Shell);
-        let settings = crate::sweep3d::Sweep3dSettings {
-            samples: samples_3d,
-            seed: 1,
-            out: dir.join("sweep3d.h5"),
-            fixed,
-            ranges: Default::default(),
-            flight: None,
-            shard: None,
-            threads: None,
-            compress: Compression::None,
-        };
-        let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
-        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
-        let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --out sweep3d.h5");
-        runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
-        let _ = std::fs::remove_file(&report.path);
-        // The realistic foot, the leg and its boot (issue 31: at least 10,000 kicks/s on 2 threads).
-        let shell = settings.clone();
-        let mut fixed = kick_3d::KickSpec::default();
-        (fixed.scenario.law, fixed.scenario.leg) = (Some(kick_core::LawKind::Shell), Some(true));
-        let settings = crate::sweep3d::Sweep3dSettings { out: dir.join("sweep3d.h5"), fixed, ..settings.clone() };
-        let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
-        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
-        let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --leg --out sweep3d.h5");
-        runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
-        let _ = std::fs::remove_file(&report.path);
-        // ... and the shell ball's kicks flown from the ground across the
-        // wall's and the goal line's planes (issue 32: at least 10,000 rows/s
-        // on 2 threads; [`flown_rates`] gives its median).
-        let settings = flown_settings(shell, true)?;
-        let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
-        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
-        let flown = report.flown.as_ref().map_or(0, |(n, _)| *n);
-        let command = format!("{} --out sweep3d.h5 ({flown} of the rows flown)", flown_command(samples_3d, true));
-        runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
-        let _ = std::fs::remove_file(&report.path);
-        Ok(())
-    };
-    let result = measure();
-    let _ = std::fs::remove_dir_all(&dir);
-    result.map(|()| runs)
-}
-
-/// The ranges of the flown sweep: the foot's line below the centre on a
-/// rising path, so the balls fly.
-const FLOWN_RANGES: [&str; 2] = ["contact_depth=0,0.05", "approach_angle=0,20"];
-
-/// `kick sweep3d` on the shell ball over [`FLOWN_RANGES`], each kick flown
-/// across the wall's and the goal line's planes (`flight`) or not.
-fn flown_settings(shell: crate::sweep3d::Sweep3dSettings, flight: bool) -> Result<crate::sweep3d::Sweep3dSettings, String> {
-    let ranges = FLOWN_RANGES.map(String::from);
-    let plan = kick_study::flight::FlightPlan::planes(Default::default(), vec![9.15, 25.0]).map_err(|e| e.to_string())?;
-    Ok(crate::sweep3d::Sweep3dSettings {
-        ranges: kick_study::sample::Ranges::parse(&ranges, |n| crate::sweep3d::find_range(n, true)).map_err(|e| e.to_string())?,
-        flight: flight.then_some(plan),
-        ..shell
-    })
-}
-
-/// The command [`flown_settings`] runs, without its `--out`.
-fn flown_command(samples: u64, flight: bool) -> String {
-    format!(
-        "kick sweep3d --samples {samples} --seed 1 --threads 2 --law shell --range {} --range {}{}",
-        FLOWN_RANGES[0],
-        FLOWN_RANGES[1],
-        if flight { " --flight --distance 9.15 --distance 25" } else { "" }
-    )
-}
-
-/// Flown 3D kicks into a file on 2 threads (issue 32: at least 10,000
-/// rows/s), and the same kicks unflown, alternated: rows/s of each and the
-/// flown rows' cost over the unflown (what the flight adds).
-#[derive(Debug, Clone, Copy)]
-struct FlownRates {
-    samples: u64,
-    flown: Spread,
-    unflown: Spread,
-    cost: Spread,
-}
-
-fn flown_rates(quick: bool) -> Result<FlownRates, String> {
-    let samples = if quick { 200 } else { 5_000 };
-    let dir = std::env::temp_dir().join(format!("kick-bench-flown-{}", std::process::id()));
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build().map_err(|e| e.to_string())?;
-    let mut fixed = kick_3d::KickSpec::default();
-    fixed.scenario.law = Some(kick_core::LawKind::Shell);
-    let shell = crate::sweep3d::Sweep3dSettings {
-        samples,
-        seed: 1,
-        out: dir.join("flown.h5"),
-        fixed,
-        ranges: Default::default(),
-        flight: None,
-        shard: None,
-        threads: None,
-        compress: crate::h5::Compression::None,
-    };
-    let (mut flown, mut unflown) = (Vec::new(), Vec::new());
-    let mut measure = || -> Result<(), String> {
-        for _ in 0..3 {
-            for (flight, rates) in [(true, &mut flown), (false, &mut unflown)] {
-                let settings = flown_settings(shell.clone(), flight)?;
-                let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
-                rates.push(samples as f64 / report.seconds);
-                let _ = std::fs::remove_file(&report.path);
-            }
-        }
-        Ok(())
-    };
-    let result = measure();
-    let _ = std::fs::remove_dir_all(&dir);
-    result?;
-    Ok(FlownRates { samples, flown: Spread::of(&flown), unflown: Spread::of(&unflown), cost: Spread::of_ratios(&unflown, &flown) })
-}
-
 /// Measure every solver's work and precision, the headline ratios and the
-/// sweep throughput (one run, one binary); write work_precision.h5, its
-/// figure and, if asked, the Markdown section. Progress lines go to `log`.
+/// sweep throughput (one run, one binary: kick-study times, kick-store
+/// writes the timed sweeps and work_precision.h5); draw its figure and, if
+/// asked, the pages. Progress lines go to `log`.
 pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, String> {
-    let cases = precision::cases().map_err(|e| e.to_string())?;
-    let mut ladder = precision::ladder();
     let min_time = if args.quick { 0.02 } else { args.min_time };
-    if args.quick {
-        ladder.retain(|(name, setting)| matches!((*name, *setting), ("seed-rk4", s) if s == 5e-6) || *setting == 1e-12 || *setting == 1e-8);
-    }
-    let mut points: Vec<PrecisionPoint> = Vec::new();
-    for (name, setting) in ladder {
-        let solver = precision::solver(name, setting).map_err(|e| e.to_string())?;
-        let point = precision::measure(name, setting, &solver, &cases, min_time).map_err(|e| format!("{name}: {e}"))?;
-        let _ = writeln!(
-            log,
-            "{:<16} {:>9.2e}  error {:>9.2e}  {:>9.2} µs/scenario  {:>7.0} evaluations",
-            point.solver,
-            point.setting,
-            point.max_error,
-            point.seconds_per_scenario * 1e6,
-            point.evaluations_per_scenario
-        );
-        points.push(point);
-    }
-    // Headline ratio: the default path against the paper's method, same
-    // binary, measured in alternation and the median taken (the machine is shared).
-    let seed_rk4 = SolverChoice::from_name("seed-rk4", 5e-6).map_err(|e| e.to_string())?;
-    let default_auto = SolverChoice::from_name("auto", 5e-6).map_err(|e| e.to_string())?;
-    let (mut seed_times, mut auto_times) = (Vec::new(), Vec::new());
-    let (mut seed, mut auto) = (None, None);
-    for _ in 0..5 {
-        let s = precision::measure("seed-rk4", 5e-6, &seed_rk4, &cases, min_time).map_err(|e| e.to_string())?;
-        let a = precision::measure("auto", kick_compliant::series::DEFAULT_TOLERANCE, &default_auto, &cases, min_time)
-            .map_err(|e| e.to_string())?;
-        seed_times.push(s.seconds_per_scenario);
-        auto_times.push(a.seconds_per_scenario);
-        (seed, auto) = (Some(s), Some(a));
-    }
-    let headline = Spread::of_ratios(&seed_times, &auto_times);
-    let (seed, auto) = (seed.ok_or("no seed point")?, auto.ok_or("no auto point")?);
-    let _ = writeln!(
-        log,
-        "\nauto (default) vs seed-rk4 at 5 µs: error {:.2e} vs {:.2e}; cost ratio {} (5 alternating runs)",
-        auto.max_error,
-        seed.max_error,
-        headline.show(1, "x")
-    );
-    // The same ratio at equal accuracy: the fixed-step family's most accurate
-    // point against the cheapest `auto` point at least as accurate, alternated.
-    let equal = match equal_accuracy_pair(&points) {
-        None => None,
-        Some((fixed, cheap)) => {
-            let (fixed_solver, auto_solver) = (
-                precision::solver(fixed.solver, fixed.setting).map_err(|e| e.to_string())?,
-                precision::solver(cheap.solver, cheap.setting).map_err(|e| e.to_string())?,
-            );
-            let (mut f, mut a) = (Vec::new(), Vec::new());
-            for _ in 0..5 {
-                f.push(
-                    precision::measure(fixed.solver, fixed.setting, &fixed_solver, &cases, min_time)
-                        .map_err(|e| e.to_string())?
-                        .seconds_per_scenario,
-                );
-                a.push(
-                    precision::measure(cheap.solver, cheap.setting, &auto_solver, &cases, min_time)
-                        .map_err(|e| e.to_string())?
-                        .seconds_per_scenario,
-                );
-            }
-            let ratio = Spread::of_ratios(&f, &a);
-            let _ = writeln!(
-                log,
-                "at equal accuracy: rk4-events at {:.2e} s (error {:.2e}) vs auto at {:.0e} (error {:.2e}): {}",
-                fixed.setting,
-                fixed.max_error,
-                cheap.setting,
-                cheap.max_error,
-                ratio.show(0, "x")
-            );
-            Some(EqualAccuracy { fixed: fixed.clone(), auto: cheap.clone(), ratio })
-        }
-    };
-    let reference_error = precision::reference_error(&cases).map_err(|e| e.to_string())?;
-    let box_errors = box_errors(if args.quick { 200 } else { 2000 })?;
-    let sweep = SampledSweep::new(if args.quick { 2_000 } else { args.sweep_samples }, 1);
-    // 1 and 2 threads in alternation, three times; the medians (shared machine).
-    let (mut ones, mut twos) = (Vec::new(), Vec::new());
-    for _ in 0..3 {
-        ones.push(throughput(&default_auto, sweep.clone(), 1)?);
-        twos.push(throughput(&default_auto, sweep.clone(), 2)?);
-    }
-    let (one, two, speed_up) = (Spread::of(&ones), Spread::of(&twos), Spread::of_ratios(&twos, &ones));
-    let _ = writeln!(
-        log,
-        "sweep of {} sampled scenarios (auto, summary only): {}/s on 1 thread, {}/s on 2 threads, speed-up {} (3 alternating runs)",
-        sweep.samples,
-        one.show(0, ""),
-        two.show(0, ""),
-        speed_up.show(2, "x")
-    );
-    let kicks = if args.quick { 20 } else { 200 };
-    let mut costs = Vec::new();
-    for _ in 0..3 {
-        costs.push(kick_3d::precision::cost_ratio(kicks, kick_3d::models::BENCH_SEED, min_time / 30.0).map_err(|e| e.to_string())?);
-    }
-    let cost_3d = Spread::of(&costs.iter().map(|c| c.ratio).collect::<Vec<_>>());
-    // The run whose ratio is the median, for its times and counts.
-    let cost = costs.iter().find(|c| c.ratio == cost_3d.median).copied().ok_or("no 3D cost run")?;
-    let _ = writeln!(
-        log,
-        "off-center 3D kick (auto) vs the same kick's 1D contact (auto): {:.1} µs vs {:.2} µs, ratio {} \
-         (3 runs, each medians over {kicks} kicks of kick_3d::models::OffCenterBox, timed alternately)",
-        cost.seconds_3d * 1e6,
-        cost.seconds_1d * 1e6,
-        cost_3d.show(1, "x")
-    );
-
-    // The shell ball's 1D cost beside the paper's law: the same sampled
-    // scenarios with `law = shell`, auto, one thread, alternated, medians.
-    let mut shell_sweep = sweep.clone();
-    shell_sweep.fixed.law = Some(kick_core::LawKind::Shell);
-    // The realistic foot on the shell ball: the leg's mass and its boot (issue 31: at most 2x the shell ball's cost).
-    let mut leg_sweep = shell_sweep.clone();
-    leg_sweep.fixed.leg = Some(true);
-    let (mut paper_law, mut shell, mut leg) = (Vec::new(), Vec::new(), Vec::new());
-    for _ in 0..3 {
-        paper_law.push(throughput(&default_auto, sweep.clone(), 1)?);
-        shell.push(throughput(&default_auto, shell_sweep.clone(), 1)?);
-        leg.push(throughput(&default_auto, leg_sweep.clone(), 1)?);
-    }
-    let shell_cost = Spread::of_ratios(&paper_law, &shell);
-    let leg_cost = Spread::of_ratios(&shell, &leg);
-    let (paper_law, shell, leg) = (Spread::of(&paper_law), Spread::of(&shell), Spread::of(&leg));
-    let _ = writeln!(
-        log,
-        "shell ball, 1D (auto, 1 thread): {:.0} scenarios/s against {:.0} with the paper's law, {} the cost; \
-         with the leg and its boot {:.0} scenarios/s, {} the shell ball's cost",
-        shell.median,
-        paper_law.median,
-        shell_cost.show(2, "x"),
-        leg.median,
-        leg_cost.show(2, "x")
-    );
-    // Flights through `flight_many`, 1 and 2 threads alternated, medians.
-    let flight_rows = if args.quick { 1_000 } else { 50_000 };
-    let (mut flights_1, mut flights_2) = (Vec::new(), Vec::new());
-    for _ in 0..3 {
-        flights_1.push(flights_per_second(flight_rows, 1)?);
-        flights_2.push(flights_per_second(flight_rows, 2)?);
-    }
-    let flight_speed_up = Spread::of_ratios(&flights_2, &flights_1);
-    let (flights_1, flights_2) = (Spread::of(&flights_1), Spread::of(&flights_2));
-    let _ = writeln!(
-        log,
-        "flight_many of {flight_rows} free kicks: {:.0} flights/s on 1 thread, {:.0} on 2 threads",
-        flights_1.median, flights_2.median
-    );
-    let aims = aim_seconds(if args.quick { 1 } else { 5 })?.map(|t| Spread::of(&t.iter().map(|s| s * 1e3).collect::<Vec<_>>()));
-    let _ = writeln!(log, "aim solve: {} ms for the launch, {} ms through the 3D kick", aims[0].show(2, ""), aims[1].show(2, ""));
-    let kick_runs = kick_costs(min_time / 30.0)?;
-    let kicks: [(Spread, u64); KICK_FORMS] = std::array::from_fn(|i| (Spread::of(&kick_runs[i].0), kick_runs[i].1));
-    let baseline_copy = Spread::of_ratios(&kick_runs[8].0, &kick_runs[7].0);
-    let _ = writeln!(
-        log,
-        "5 cm kick, one core: default spring {:.1} µs, stiff spring {:.1} µs, rigid grip {:.1} µs, shell ball {:.1} µs; \
-         patch: knife edge {:.1} µs, rigid {:.1} µs; cap {:.1} µs, rigid {:.1} µs (baseline copy {:.1} µs); \
-         the leg and its boot on the cap {:.1} µs",
-        kicks[0].0.median,
-        kicks[1].0.median,
-        kicks[2].0.median,
-        kicks[3].0.median,
-        kicks[4].0.median,
-        kicks[5].0.median,
-        kicks[6].0.median,
-        kicks[7].0.median,
-        kicks[8].0.median,
-        kicks[9].0.median
-    );
-    let other = Other {
-        shell,
-        paper_law,
-        shell_cost,
-        leg,
-        leg_cost,
-        flight_rows,
-        flights_1,
-        flights_2,
-        flight_speed_up,
-        aims,
-        kicks,
-        baseline_copy,
-    };
-
+    let t = kick_study::bench::measure(args.quick, args.min_time, args.sweep_samples, log)?;
     let files = file_runs(args.quick)?;
     let flown = flown_rates(args.quick)?;
     let _ = writeln!(
@@ -672,76 +105,28 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         );
     }
 
-    // Results file, then the figure drawn from it.
-    std::fs::create_dir_all(&args.out).map_err(|e| format!("cannot create {}: {e}", args.out.display()))?;
-    let path = args.out.join("work_precision.h5");
     let text = format!("kick bench{} --min-time {min_time}", if args.quick { " --quick" } else { "" });
-    let provenance = Provenance::now("work_precision", "kick bench", &text);
     let machine = Machine::this();
-    let set = OutcomeSet {
-        solver: "bench".into(),
-        // References: closed forms, else accurate at this tolerance.
-        settings: Setting::numbers([("reference_tolerance", precision::REFERENCE_TOLERANCE)]),
-        columns: COLUMNS.iter().map(|(n, u)| Column::new(n, u)).collect(),
-    };
-    let parameters = [Column::new("setting", "tolerance (1) or step (s)")];
-    let mut writer = SweepWriter::create(&path, &provenance, &parameters, &[set], points.len() as u64).map_err(|e| e.to_string())?;
-    for p in &points {
-        writer.push_parameters(&[p.setting]).map_err(|e| e.to_string())?;
-        writer
-            .push_outcome(
-                0,
-                Ok(&[p.max_error, p.max_error_closed_form, p.max_error_tight, p.seconds_per_scenario, p.evaluations_per_scenario]),
-            )
-            .map_err(|e| e.to_string())?;
-    }
-    let names: Vec<String> = points.iter().map(|p| p.solver.to_string()).collect();
-    write_strings(writer.file(), &path, "scenario_names", &names).map_err(|e| e.to_string())?;
-    for (name, value) in [
-        ("auto_vs_seed_cost_ratio", headline.median),
-        ("auto_vs_rk4_events_cost_ratio_at_equal_accuracy", equal.as_ref().map_or(f64::NAN, |e| e.ratio.median)),
-        ("auto_max_error", auto.max_error),
-        ("reference_error_against_closed_forms", reference_error.against_closed_forms),
-        ("reference_error_against_series", reference_error.against_series),
-        ("sweep_per_second_1_thread", one.median),
-        ("sweep_per_second_2_threads", two.median),
-        ("sweep_samples", sweep.samples as f64),
-        ("off_center_3d_vs_1d_cost_ratio", cost_3d.median),
-        ("shell_vs_paper_law_1d_cost_ratio", shell_cost.median),
-        ("leg_boot_vs_shell_1d_cost_ratio", leg_cost.median),
-        ("sweep3d_flown_rows_per_second_2_threads", flown.flown.median),
-        ("sweep3d_flown_vs_unflown_cost_ratio", flown.cost.median),
-        ("flights_per_second_1_thread", flights_1.median),
-        ("flights_per_second_2_threads", flights_2.median),
-        ("aim_launch_seconds", aims[0].median * 1e-3),
-        ("aim_kick_seconds", aims[1].median * 1e-3),
-    ] {
-        write_f64_attr(writer.file(), &path, name, value).map_err(|e| e.to_string())?;
-    }
-    crate::h5::write_str_attr(writer.file(), &path, "machine_cpu", &machine.cpu).map_err(|e| e.to_string())?;
-    write_f64_attr(writer.file(), &path, "machine_cores", machine.cores as f64).map_err(|e| e.to_string())?;
-    write_f64_attr(writer.file(), &path, "machine_clock_mhz", machine.clock_mhz.unwrap_or(f64::NAN)).map_err(|e| e.to_string())?;
-    crate::h5::write_str_attr(writer.file(), &path, "build", BUILD).map_err(|e| e.to_string())?;
-    let path = writer.finish().map_err(|e| e.to_string())?;
+    let path = kick_store::bench::write_work_precision(&args.out.join("work_precision.h5"), &t, &flown, &machine, BUILD, &text)?;
     let mut written = vec![path.clone()];
     written.extend(draw(&path, &args.out.join("figures"))?);
     let measured = Measured {
-        points: &points,
-        seed: &seed,
-        auto: &auto,
-        headline,
-        equal: equal.as_ref(),
-        reference_error,
-        box_errors: &box_errors,
-        one,
-        two,
-        speed_up,
-        samples: sweep.samples,
-        cost: &cost,
-        cost_3d,
+        points: &t.points,
+        seed: &t.seed,
+        auto: &t.auto,
+        headline: t.headline,
+        equal: t.equal.as_ref(),
+        reference_error: t.reference_error,
+        box_errors: &t.box_errors,
+        one: t.one,
+        two: t.two,
+        speed_up: t.speed_up,
+        samples: t.samples,
+        cost: &t.cost,
+        cost_3d: t.cost_3d,
         files: &files,
         flown: &flown,
-        other: &other,
+        other: &t.other,
     };
     if let Some(report) = &args.report {
         let report_dir = report.parent().unwrap_or(std::path::Path::new(""));
@@ -756,15 +141,15 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         written.push(report.clone());
     }
     Ok(BenchReport {
-        cost_ratio: headline.median,
-        auto_max_error: auto.max_error,
-        seed_max_error: seed.max_error,
-        sweep_per_second_1_thread: one.median,
-        sweep_per_second_2_threads: two.median,
-        off_center_3d_vs_1d_cost_ratio: cost_3d.median,
-        shell_vs_paper_law_1d_cost_ratio: shell_cost.median,
-        leg_boot_vs_shell_1d_cost_ratio: leg_cost.median,
-        flights_per_second_2_threads: flights_2.median,
+        cost_ratio: t.headline.median,
+        auto_max_error: t.auto.max_error,
+        seed_max_error: t.seed.max_error,
+        sweep_per_second_1_thread: t.one.median,
+        sweep_per_second_2_threads: t.two.median,
+        off_center_3d_vs_1d_cost_ratio: t.cost_3d.median,
+        shell_vs_paper_law_1d_cost_ratio: t.other.shell_cost.median,
+        leg_boot_vs_shell_1d_cost_ratio: t.other.leg_cost.median,
+        flights_per_second_2_threads: t.other.flights_2.median,
         sweep3d_flown_rows_per_second_2_threads: flown.flown.median,
         written,
     })
@@ -784,15 +169,6 @@ fn error(x: f64) -> String {
 /// features, RUSTFLAGS), from kick-paper's build script.
 pub const BUILD: &str = env!("KICK_BUILD");
 
-/// The cost ratio at equal accuracy ([`equal_accuracy_pair`]), re-timed in alternation.
-#[derive(Debug, Clone)]
-struct EqualAccuracy {
-    fixed: PrecisionPoint,
-    auto: PrecisionPoint,
-    /// fixed / auto, seconds per scenario.
-    ratio: Spread,
-}
-
 struct Measured<'a> {
     points: &'a [PrecisionPoint],
     seed: &'a PrecisionPoint,
@@ -800,7 +176,7 @@ struct Measured<'a> {
     /// seed-rk4 / auto (default).
     headline: Spread,
     equal: Option<&'a EqualAccuracy>,
-    reference_error: precision::ReferenceError,
+    reference_error: ReferenceError,
     box_errors: &'a BoxErrors,
     /// Scenarios per second on 1 and 2 threads, and 2 over 1.
     one: Spread,
@@ -808,70 +184,11 @@ struct Measured<'a> {
     speed_up: Spread,
     samples: u64,
     /// The 3D cost run whose ratio is the median of [`Measured::cost_3d`].
-    cost: &'a kick_3d::precision::CostRatio,
+    cost: &'a CostRatio,
     cost_3d: Spread,
     files: &'a [FileRun],
     flown: &'a FlownRates,
     other: &'a Other,
-}
-
-/// The shell ball's cost, flights and aims.
-struct Other {
-    /// Scenarios/s, auto, one thread: the shell ball and the paper's law, and the cost ratio.
-    shell: Spread,
-    paper_law: Spread,
-    shell_cost: Spread,
-    /// The shell ball with the leg and its boot, and its cost over the shell ball's.
-    leg: Spread,
-    leg_cost: Spread,
-    flight_rows: usize,
-    flights_1: Spread,
-    flights_2: Spread,
-    flight_speed_up: Spread,
-    /// Milliseconds per aim solve: the launch, through the 3D kick.
-    aims: [Spread; 2],
-    /// µs and evaluations per kick ([`kick_costs`]).
-    kicks: [(Spread, u64); KICK_FORMS],
-    /// The baseline x86-64 copy over the AVX2 copy, the last form.
-    baseline_copy: Spread,
-}
-
-/// The machine a timing was taken on.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Machine {
-    /// CPU model (`model name` of /proc/cpuinfo), or "unknown".
-    pub cpu: String,
-    /// Cores this process may use.
-    pub cores: usize,
-    /// `cpu MHz` of /proc/cpuinfo when the run started (the kernel's figure for the first core).
-    pub clock_mhz: Option<f64>,
-    /// The largest frequency the kernel may set (cpufreq), MHz, when it exposes one.
-    pub max_mhz: Option<f64>,
-}
-
-impl Machine {
-    pub fn this() -> Machine {
-        let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
-        let field =
-            |name: &str| cpuinfo.lines().find(|l| l.starts_with(name)).and_then(|l| l.split_once(':')).map(|(_, v)| v.trim().to_string());
-        let cpu = field("model name").unwrap_or_else(|| "unknown".into());
-        let clock_mhz = field("cpu MHz").and_then(|v| v.parse().ok());
-        let max_mhz = std::fs::read_to_string("/sys/devices/system/cpu/cpu0/cpufreq/cpuinfo_max_freq")
-            .ok()
-            .and_then(|v| v.trim().parse::<f64>().ok())
-            .map(|khz| khz / 1e3);
-        let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
-        Machine { cpu, cores, clock_mhz, max_mhz }
-    }
-
-    fn describe(&self) -> String {
-        let clock = match (self.clock_mhz, self.max_mhz) {
-            (Some(now), Some(max)) => format!("clock {now:.0} MHz at the start (cpufreq maximum {max:.0} MHz)"),
-            (Some(now), None) => format!("clock {now:.0} MHz at the start (/proc/cpuinfo; no frequency scaling exposed)"),
-            (None, _) => "clock unknown".into(),
-        };
-        format!("{}, {}, {} cores available, {} {}", self.cpu, clock, self.cores, std::env::consts::OS, std::env::consts::ARCH)
-    }
 }
 
 impl Measured<'_> {
@@ -945,10 +262,10 @@ impl Measured<'_> {
              - A drive that keeps the ball pressed ends in a typed `NoSeparation` error: proved at the first maximum \
              compression for the paper's law, or after the documented horizon (1000 undriven contact times, or 100 000 \
              steps in one phase).\n",
-            ref_tol = precision::REFERENCE_TOLERANCE,
+            ref_tol = REFERENCE_TOLERANCE,
             closed = r.against_closed_forms,
             series = r.against_series,
-            series_tol = precision::SERIES_CHECK_TOLERANCE,
+            series_tol = SERIES_CHECK_TOLERANCE,
             auto_tol = self.auto.setting,
             auto_closed = error(self.auto.max_error_closed_form),
             auto_tight = self.auto.max_error_tight,
@@ -1010,7 +327,7 @@ impl Measured<'_> {
             "the patch on the knife-edge face, rigid grip at μ = ∞".into(),
             format!(
                 "the patch on a convex instep (`--instep-radius {} --face-yaw 0`), μ = 0.5",
-                kick_3d::validation::ASSUMED_INSTEP_RADIUS
+                ASSUMED_INSTEP_RADIUS
             ),
             "the patch on the convex instep, rigid grip at μ = ∞".into(),
             "the same, on the baseline x86-64 copy".into(),

@@ -25,6 +25,7 @@ use std::path::{Path, PathBuf};
 
 /// The physics (the grid, the kick at (e, h)) is kick-study's, the file kick-store's.
 pub use kick_store::free_kick::{write, FILE, TRAJECTORY_COLUMNS, TRAJECTORY_FRICTIONS, TRAJECTORY_OFFSETS, TRAJECTORY_SAMPLES};
+pub use kick_study::aimed::*;
 pub use kick_study::free_kick::*;
 
 /// Trajectories are drawn up to this x, m (a little past the goal line).

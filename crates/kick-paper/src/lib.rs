@@ -26,6 +26,6 @@ pub mod three_d;
 pub mod validation;
 
 // The modules of kick-study and kick-store under the names this crate's files use.
-pub(crate) use kick_store::{compare, h5, output, provenance, run, shard, sweep, sweep3d};
-pub(crate) use kick_store::{Provenance, ResultFile, SweepData};
-pub(crate) use kick_study::{checks, printable, sample, units};
+pub(crate) use kick_store::{compare, h5, output, provenance, run, shard};
+pub(crate) use kick_store::{ResultFile, SweepData};
+pub(crate) use kick_study::{checks, printable, units};

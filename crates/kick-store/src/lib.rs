@@ -9,6 +9,7 @@
 //! Depends on kick-study and the model crates (and hdf5); never the reverse.
 //! No plotting: figures and pages are kick-paper's.
 
+pub mod bench;
 pub mod compare;
 pub mod error;
 pub mod force_history;

@@ -180,40 +180,6 @@ pub const PLATEAU_LIFTS: [f64; 3] = [0.29, 0.24, 0.20];
 /// Shares of the spin left at landing it is flown with (what-ifs: no measured decay rate).
 pub const SPIN_KEPT: [f64; 3] = [0.9, 0.75, 0.5];
 
-/// The aimed free kick of paper/flight.md: the ball's centre 2.6 m to the
-/// +y side of the goal's centre and 2 m up at the goal line (under the bar
-/// by the post), past the default wall.
-pub const AIM_TARGET: [f64; 3] = [GOAL_DISTANCE, 2.6, 2.0];
-/// Its launch aim holds this sidespin (about 8 rev/s, curving toward +y).
-pub const AIM_SPIN: [f64; 3] = [0.0, 0.0, 50.0];
-
-/// The two aims of the page: the launch (speed, elevation, azimuth free,
-/// [`AIM_SPIN`] held) and the 3D kick (foot speed, e, h, heading free, the
-/// member of their family with the most room at the wall), to
-/// [`AIM_TARGET`]; `kick bench` times the same two.
-pub fn aim_requests() -> [crate::aim::AimRequest; 2] {
-    use crate::aim::{AimFrom, AimRequest};
-    let launch = AimRequest {
-        target: Some(AIM_TARGET),
-        from: Some(AimFrom::Launch),
-        flight: kick_flight::FlightSpec { spin: Some(AIM_SPIN), ..kick_flight::FlightSpec::default() },
-        ..AimRequest::default()
-    };
-    let kick = AimRequest {
-        target: Some(AIM_TARGET),
-        from: Some(AimFrom::Kick),
-        objective: Some(kick_flight::Objective::MaxClearance),
-        ..AimRequest::default()
-    };
-    [launch, kick]
-}
-
-/// The page's two aims ([`aim_requests`]) solved.
-pub fn aims() -> Result<[crate::aim::AimReport; 2], String> {
-    let [launch, kick] = aim_requests();
-    Ok([crate::aim::aim(&launch)?, crate::aim::aim(&kick)?])
-}
-
 /// The ball's trajectory after the kick at (e, μ) to the goal line:
 /// `samples` rows uniform in time, as columns time, x, y, z (m) and
 /// velocity x, y, z (m/s).

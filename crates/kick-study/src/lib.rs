@@ -18,7 +18,9 @@
 //! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 
 pub mod aim;
+pub mod aimed;
 pub mod ball;
+pub mod bench;
 pub mod checks;
 pub mod columns;
 pub mod error;
