@@ -48,6 +48,8 @@
 //! exactly the 1D scenario.
 
 use crate::error::Kick3dError;
+
+pub mod instep;
 use kick_core::parameters::{self, Level, ParameterDef, ParameterError, SetParameter, Value};
 use kick_core::{AnyLaw, Parameter, Scenario, ScenarioSpec};
 use parry3d_f64::math::{Rot3, Vec3};
@@ -402,7 +404,7 @@ pub struct Instep {
     /// θ, radians.
     pub pitch: f64,
     /// The patch's quadrature when the normal force is spread over it.
-    pub patch: Option<crate::patch::Quadrature>,
+    pub patch: Option<instep::Quadrature>,
 }
 
 impl Instep {
@@ -519,7 +521,7 @@ impl Kick3d {
             instep: None,
             leg: None,
         };
-        kick.instep = crate::patch::instep(&kick, spec)?;
+        kick.instep = instep::instep(&kick, spec)?;
         let v_n = kick.normal_approach_speed();
         // NaN-safe: anything not strictly positive refuses.
         if v_n.is_nan() || v_n <= 0.0 {
@@ -723,7 +725,7 @@ impl Kick3d {
     /// [`Instep`], the normal where it touches the ball).
     pub fn initial_normal(&self) -> Vec3 {
         if let Some(instep) = &self.instep {
-            return crate::patch::first_touch(self, instep).normal;
+            return instep::first_touch(self, instep).normal;
         }
         self.knife_edge().0
     }
@@ -750,7 +752,7 @@ impl Kick3d {
     /// ball where the line of motion meets it.
     pub fn initial_state(&self) -> InitialState {
         if let Some(instep) = &self.instep {
-            let touch = crate::patch::first_touch(self, instep);
+            let touch = instep::first_touch(self, instep);
             let q = instep.orientation();
             return InitialState {
                 foot_position: -(q * touch.centre),
@@ -828,7 +830,7 @@ impl Kick3d {
             // cap damps each element at its own rate, which differs from δ̇
             // off its axis (a flat face's patch is the 1D law exactly).
             Some(instep) => {
-                let r0 = crate::patch::first_touch(self, instep).centre;
+                let r0 = instep::first_touch(self, instep).centre;
                 r0.y == 0.0 && r0.z == 0.0 && !(instep.is_curved() && instep.patch.is_some())
             }
             None => true,
@@ -841,7 +843,7 @@ impl Kick3d {
     /// frame: (R + h_x, 0, 0) on the knife-edge face.
     pub fn touch(&self) -> Vec3 {
         match &self.instep {
-            Some(instep) => crate::patch::first_touch(self, instep).centre,
+            Some(instep) => instep::first_touch(self, instep).centre,
             None => Vec3::new(self.ball_radius + self.face_distance(), 0.0, 0.0),
         }
     }
