@@ -1,11 +1,11 @@
 //! `flight`: the ball's flight after the kick (crate kick-flight), keywords
 //! from its declared list (`kick_flight::spec::FLIGHT_PARAMETERS`).
 
-use crate::many::{run_many, Model, Run, Solved};
+use crate::many::{run_many, Keywords, Run};
 use crate::{guard, library_error, value_error};
-use kick_core::parameters::{self, ParameterDef, Value};
-use kick_core::Status;
+use kick_core::parameters::{self, ParameterDef};
 use kick_flight::spec::{FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
+use kick_study::many::ManyFlights;
 use numpy::{PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -96,65 +96,12 @@ pub fn flight_many<'py>(
     progress: Option<&Bound<'py, PyAny>>,
     arrays: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    guard(|| {
-        let model = ModelFlight {
-            columns: FLIGHT_COLUMNS.iter().map(|(n, w, _)| (n.to_string(), if *w == 1 { vec![] } else { vec![*w] })).collect(),
-        };
-        run_many(py, &model, FlightSpec::default(), Run::new("flight_many", threads, progress)?, arrays)
-    })
+    guard(|| run_many(py, &ManyFlights::default(), FlightSpec::default(), Run::new("flight_many", threads, progress)?, arrays))
 }
 
-type Get = fn(&kick_flight::FlightOutcome) -> Vec<f64>;
-
-/// Output columns of `flight_many`: name, width (vectors with a trailing
-/// axis of 2 or 3) and the outcome's numbers.
-const FLIGHT_COLUMNS: [(&str, usize, Get); 16] = [
-    ("flight_time", 1, |o| vec![o.flight_time]),
-    ("landing_point", 2, |o| o.landing_point.to_vec()),
-    ("apex_height", 1, |o| vec![o.apex_height]),
-    ("apex_time", 1, |o| vec![o.apex_time]),
-    ("landing_velocity", 3, |o| o.landing_velocity.to_vec()),
-    ("landing_spin", 3, |o| o.landing_spin.to_vec()),
-    ("crossed", 1, |o| vec![if o.crossing.is_some() { 1.0 } else { 0.0 }]),
-    ("crossing_time", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.time])),
-    ("crossing_height", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.height])),
-    ("crossing_lateral_offset", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.lateral_offset])),
-    ("crossing_velocity", 3, |o| o.crossing.map_or(vec![f64::NAN; 3], |c| c.velocity.to_vec())),
-    ("launch_reynolds", 1, |o| vec![o.launch.reynolds]),
-    ("launch_spin_parameter", 1, |o| vec![o.launch.spin_parameter]),
-    ("launch_drag_coefficient", 1, |o| vec![o.launch.drag_coefficient]),
-    ("launch_lift_coefficient", 1, |o| vec![o.launch.lift_coefficient]),
-    ("steps", 1, |o| vec![o.steps as f64]),
-];
-
-/// `flight_many`'s rows: a flight spec per row through `kick_flight::solve`.
-struct ModelFlight {
-    columns: Vec<(String, Vec<usize>)>,
-}
-
-impl Model for ModelFlight {
-    type Spec = FlightSpec;
+impl Keywords for ManyFlights {
     fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef> {
         flight_parameter(name).map(FlightParameter::def)
-    }
-    fn set(&self, spec: &mut FlightSpec, parameter: &'static ParameterDef, value: Value) {
-        // A declared flight parameter of the shape its input was checked for: cannot fail.
-        if let Ok(p) = FlightParameter::from_name(parameter.name) {
-            let _ = spec.set(p, &value.numbers());
-        }
-    }
-    fn columns(&self) -> &[(String, Vec<usize>)] {
-        &self.columns
-    }
-    fn solve(&self, spec: &FlightSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
-        let failed = |e: kick_flight::FlightError| (e.status(), e.to_string());
-        let o = kick_flight::solve(&spec.build().map_err(failed)?).map_err(failed)?;
-        let mut at = 0;
-        for (_, width, get) in &FLIGHT_COLUMNS {
-            row[at..at + width].copy_from_slice(&get(&o));
-            at += width;
-        }
-        Ok(Solved::new(o.evaluations, None))
     }
 }
 

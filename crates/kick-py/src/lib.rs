@@ -314,7 +314,7 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SOLVERS_3D", kick_3d::Solver3d::NAMES.to_vec())?;
     // Every law a `law` keyword takes, the shell included: the one list.
     m.add("LAWS", LawKind::SELECTABLE.map(LawKind::name).to_vec())?;
-    m.add("BOUNCE_COLUMNS", bounce::BOUNCE_COLUMNS.iter().map(|(n, _, u)| (*n, *u)).collect::<Vec<_>>())?;
+    m.add("BOUNCE_COLUMNS", kick_study::many::BOUNCE_COLUMNS.iter().map(|(n, _, u)| (*n, *u)).collect::<Vec<_>>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -2,8 +2,8 @@
 //! the same [`run_many`] `bounce_many` and `flight_many`): every parameter a
 //! scalar or an array, each through the one argument guard
 //! ([`crate::params::real_array`]), broadcast by numpy's rules; the rows
-//! solved in parallel (rayon) with the GIL released, straight into
-//! preallocated numpy arrays, Ctrl-C heard by the one interruptible runner
+//! solved by kick-study's run loop ([`kick_study::many`]) with the GIL
+//! released, into preallocated numpy arrays, Ctrl-C heard by the one interruptible runner
 //! ([`crate::interruptible`]). A row that fails gets a status code
 //! (`kick_core::Status::code`), NaN outcomes and its message, not an
 //! exception; a row outside its contact law's validity keeps its numbers
@@ -11,297 +11,42 @@
 
 use crate::params::{described, real_array, MAX_AXES};
 use crate::{guard, library_error, value_error};
-use kick_3d::{KickSpec, Outcome3d, Solver3d};
-use kick_compliant::SolverChoice;
-use kick_core::parameters::{self, ParameterDef, SetParameter, Shape, Value};
-use kick_core::{ScenarioSpec, Solver, Status, OBSERVABLES};
-use numpy::ndarray::{ArrayViewD, IxDyn};
+use kick_3d::{KickSpec, Solver3d};
+use kick_core::parameters::{self, ParameterDef, SetParameter, Shape};
+use kick_core::ScenarioSpec;
+use kick_study::many::{width, Broadcast, Flown, Input, Many1d, Many3d, RowModel, Slots};
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyMemoryError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
-use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
-/// Rows one parallel task solves in turn (as `kick run` chunks its rows).
-const CHUNK: usize = 1024;
-/// Rows a task solves between additions to the rows-done count (`progress`).
-const COUNT_BATCH: usize = 64;
+/// Rows solved without a thread watching for Ctrl-C: one chunk of the run
+/// loop is over in moments (a watching thread doubled a one-row call's 24 us).
+const UNWATCHED_ROWS: usize = kick_study::level::CHUNK_ROWS;
 
-/// A model the rows are solved with: its keywords, its output columns and one solve.
-pub(crate) trait Model: Sync {
-    type Spec: Clone + Send + Sync;
-    /// The declaration a keyword names, or the library's error naming the nearby ones.
+/// A model's keywords: the declaration a keyword names, or the library's
+/// error naming the nearby ones. The rows themselves are kick-study's
+/// ([`kick_study::many`]).
+pub(crate) trait Keywords: RowModel {
     fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef>;
-    /// Set a declared parameter; shapes were checked when the inputs were made.
-    fn set(&self, spec: &mut Self::Spec, parameter: &'static ParameterDef, value: Value);
-    /// Output columns: name and trailing axes ([]: one number a row; [3]: a
-    /// vector; [P] or [P, 3]: one per crossing plane).
-    fn columns(&self) -> &[(String, Vec<usize>)];
-    /// Solve one row into `row` (the columns' values, vectors expanded);
-    /// the evaluations spent (and a flag on the kept numbers), or the
-    /// status and message of a failure.
-    fn solve(&self, spec: &Self::Spec, row: &mut [f64]) -> Result<Solved, (Status, String)>;
 }
 
-/// A row solved: its evaluations, and why its numbers lie outside their
-/// contact law's validity, if they do (status 4, the numbers kept).
-pub(crate) struct Solved {
-    pub evaluations: u64,
-    pub outside_validity: Option<String>,
-}
-
-impl Solved {
-    pub fn new(evaluations: u64, outside_validity: Option<kick_core::OutsideValidity>) -> Solved {
-        Solved { evaluations, outside_validity: outside_validity.map(|o| o.to_string()) }
+impl Keywords for Many1d {
+    fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef> {
+        parameters::find_at(<ScenarioSpec as SetParameter>::LEVELS, name).map_err(value_error)
     }
 }
 
-/// The numbers a row of columns with these trailing axes takes.
-fn width(axes: &[usize]) -> usize {
-    axes.iter().product()
-}
-
-struct Model1d {
-    solver: SolverChoice,
-    columns: Vec<(String, Vec<usize>)>,
-}
-
-impl Model1d {
-    fn new(solver: SolverChoice) -> Model1d {
-        let mut columns: Vec<(String, Vec<usize>)> = OBSERVABLES.iter().map(|(n, _)| (n.to_string(), vec![])).collect();
-        columns.push(("energy_residual".into(), vec![]));
-        Model1d { solver, columns }
-    }
-}
-
-/// A model whose spec holds declared levels of kick-core's list.
-macro_rules! declared_levels {
-    ($spec:ty) => {
-        fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef> {
-            parameters::find_at(<$spec as SetParameter>::LEVELS, name).map_err(value_error)
-        }
-        fn set(&self, spec: &mut $spec, parameter: &'static ParameterDef, value: Value) {
-            let _ = spec.set_parameter(parameter, value);
-        }
-    };
-}
-
-impl Model for Model1d {
-    type Spec = ScenarioSpec;
-    declared_levels!(ScenarioSpec);
-    fn columns(&self) -> &[(String, Vec<usize>)] {
-        &self.columns
-    }
-    fn solve(&self, spec: &ScenarioSpec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
-        let failed = |e: kick_core::KickError| (e.status(), e.to_string());
-        let scenario = spec.build().map_err(failed)?;
-        let outcome = self.solver.solve(&scenario).map_err(failed)?;
-        row[..OBSERVABLES.len()].copy_from_slice(&outcome.observable_values());
-        row[OBSERVABLES.len()] = outcome.energy.residual();
-        Ok(Solved::new(outcome.evaluations, scenario.check_validity(&outcome).err()))
-    }
-}
-
-/// The 3D outcome's numbers as `simulate3d` names them: its serde fields,
-/// vectors as width-3 columns, `energy.x` as `energy_x`, plus `energy_residual`.
-fn flatten3d(outcome: &Outcome3d, out: &mut Vec<(String, Vec<f64>)>) {
-    fn walk(prefix: &str, value: &serde_json::Value, out: &mut Vec<(String, Vec<f64>)>) {
-        use serde_json::Value as J;
-        match value {
-            J::Number(n) => out.push((prefix.to_string(), vec![n.as_f64().unwrap_or(f64::NAN)])),
-            J::Array(items) if items.iter().all(J::is_number) => {
-                out.push((prefix.to_string(), items.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect()))
-            }
-            J::Object(map) => {
-                for (k, v) in map {
-                    let name = if prefix.is_empty() { k.clone() } else { format!("{prefix}_{k}") };
-                    walk(&name, v, out);
-                }
-            }
-            _ => {} // names (solver, law) are per call, not per row
-        }
-    }
-    out.clear();
-    walk("", &serde_json::to_value(outcome).unwrap_or_default(), out);
-    out.push(("energy_residual".into(), vec![outcome.energy.residual()]));
-}
-
-/// The flight after each 3D kick of `simulate3d_many(flight=True)`: its
-/// plan and whether `distance` was a list (a trailing plane axis).
-struct Flown {
-    plan: kick_study::flight::FlightPlan,
-    planes: Option<usize>,
-}
-
-/// The flight's outputs after a kick, in [`kick_flight::plane_values`]'
-/// order: the landing and apex, then the crossing columns (per plane with a
-/// plane axis), and `flight_status` (the flight's status code: 0 flown,
-/// 3 refused: a ball that does not leave the ground; 1 a numerical failure).
-fn flight_columns(planes: Option<usize>, single: bool) -> Vec<(String, Vec<usize>)> {
-    let mut columns: Vec<(String, Vec<usize>)> = vec![
-        ("flight_time".into(), vec![]),
-        ("landing_point".into(), vec![2]),
-        ("apex_height".into(), vec![]),
-        ("apex_time".into(), vec![]),
-        ("landing_velocity".into(), vec![3]),
-        ("landing_spin".into(), vec![3]),
-    ];
-    let crossing = |axes: Vec<usize>, vector: Vec<usize>| -> Vec<(String, Vec<usize>)> {
-        vec![
-            ("crossed".into(), axes.clone()),
-            ("crossing_time".into(), axes.clone()),
-            ("crossing_height".into(), axes.clone()),
-            ("crossing_lateral_offset".into(), axes),
-            ("crossing_velocity".into(), vector),
-        ]
-    };
-    match planes {
-        Some(p) => columns.extend(crossing(vec![p], vec![p, 3])),
-        None if single => columns.extend(crossing(vec![], vec![3])),
-        None => {}
-    }
-    columns.push(("flight_status".into(), vec![]));
-    columns
-}
-
-struct Model3d {
-    solver: Solver3d,
-    columns: Vec<(String, Vec<usize>)>,
-    /// Numbers of the kick's own columns (before the flight's).
-    kick_width: usize,
-    flight: Option<Flown>,
-}
-
-impl Model3d {
-    fn new(solver: Solver3d, flight: Option<Flown>) -> PyResult<Model3d> {
-        // The columns of a solved kick (the baseline on the cheap 1D path).
-        let baseline = kick_3d::one_d::solve(&kick_3d::Kick3d::baseline()).map_err(library_error)?;
-        let mut flat = Vec::new();
-        flatten3d(&baseline, &mut flat);
-        let mut columns: Vec<(String, Vec<usize>)> = flat
-            .into_iter()
-            .filter(|(n, _)| n != "evaluations")
-            .map(|(n, v)| {
-                let axes = if v.len() == 1 { vec![] } else { vec![v.len()] };
-                (n, axes)
-            })
-            .collect();
-        let kick_width = columns.iter().map(|(_, a)| width(a)).sum();
-        if let Some(f) = &flight {
-            columns.extend(flight_columns(f.planes, f.plan.rest.distance.is_some()));
-        }
-        Ok(Model3d { solver, columns, kick_width, flight })
-    }
-}
-
-impl Model for Model3d {
-    type Spec = (KickSpec, kick_flight::FlightSpec);
+impl Keywords for Many3d {
     fn parameter(&self, name: &str) -> PyResult<&'static ParameterDef> {
         match parameters::find_at(KickSpec::LEVELS, name) {
             Ok(p) => Ok(p),
             Err(e) => match crate::params::flight_rest(name) {
-                Some(q) if self.flight.is_some() => Ok(q.def()),
+                Some(q) if self.flies() => Ok(q.def()),
                 Some(_) => Err(value_error(format!("`{name}` is a parameter of the flight: give flight=True"))),
                 None => Err(value_error(e)),
             },
-        }
-    }
-    fn set(&self, spec: &mut Self::Spec, parameter: &'static ParameterDef, value: Value) {
-        match kick_flight::FlightParameter::from_name(parameter.name) {
-            Ok(q) if parameter.level == kick_core::Level::Flight => {
-                let _ = match value {
-                    Value::Number(x) => spec.1.set(q, &[x]),
-                    Value::Vector(v) => spec.1.set(q, &v),
-                    Value::Switch(_) => Ok(()),
-                };
-            }
-            _ => {
-                let _ = spec.0.set_parameter(parameter, value);
-            }
-        }
-    }
-    fn columns(&self) -> &[(String, Vec<usize>)] {
-        &self.columns
-    }
-    fn solve(&self, spec: &Self::Spec, row: &mut [f64]) -> Result<Solved, (Status, String)> {
-        let failed = |e: kick_3d::Kick3dError| (e.status(), e.to_string());
-        let kick = spec.0.build().map_err(failed)?;
-        let outcome = self.solver.solve(&kick).map_err(failed)?;
-        let mut flat = Vec::with_capacity(self.columns.len() + 1);
-        flatten3d(&outcome, &mut flat);
-        let mut at = 0;
-        for (name, values) in flat.iter().filter(|(n, _)| n != "evaluations") {
-            debug_assert!(self.columns.iter().any(|(c, _)| c == name));
-            row[at..at + values.len()].copy_from_slice(values);
-            at += values.len();
-        }
-        if let Some(f) = &self.flight {
-            let out = &mut row[self.kick_width..];
-            let plan = kick_study::flight::FlightPlan { rest: spec.1, planes: f.plan.planes.clone() };
-            let flown = kick_study::flight::flight_after_3d(&kick, &outcome, &spec.1).and_then(|flight| plan.fly_into(&flight, out));
-            let last = out.len() - 1;
-            match flown {
-                Ok(_) => out[last] = 0.0,
-                Err(failure) => {
-                    out.fill(f64::NAN);
-                    out[last] = f64::from(failure.status.code());
-                }
-            }
-            // `crossed` and the crossing's columns come plane by plane in
-            // `plane_values`; the outputs want each quantity over the planes.
-            if let Some(p) = f.planes {
-                regroup_planes(&mut out[kick_flight::LANDING_COLUMNS..last], p);
-            }
-        }
-        Ok(Solved::new(outcome.evaluations, kick.check_validity(&outcome).err()))
-    }
-}
-
-/// `plane_values`' crossings (plane by plane, 7 numbers each) as the
-/// outputs hold them: `crossed`, `crossing_time`, `crossing_height`,
-/// `crossing_lateral_offset` each over the planes, then `crossing_velocity`
-/// plane by plane (3 each).
-fn regroup_planes(values: &mut [f64], planes: usize) {
-    let per = kick_flight::OUTCOME_COLUMNS.len() - kick_flight::LANDING_COLUMNS;
-    let by_plane: Vec<f64> = values[..per * planes].to_vec();
-    let mut at = 0;
-    for q in 0..4 {
-        for k in 0..planes {
-            values[at] = by_plane[k * per + q];
-            at += 1;
-        }
-    }
-    for k in 0..planes {
-        values[at..at + 3].copy_from_slice(&by_plane[k * per + 4..k * per + 7]);
-        at += 3;
-    }
-}
-
-/// One parameter given as an array, broadcast to the rows' shape (plus the
-/// trailing axis of 3 for a vector).
-struct Input<'a> {
-    parameter: &'static ParameterDef,
-    view: ArrayViewD<'a, f64>,
-}
-
-impl Input<'_> {
-    /// The value at row index `index` (`scratch`: room for index plus one axis).
-    fn value(&self, index: &[usize], scratch: &mut Vec<usize>) -> Value {
-        match self.parameter.shape {
-            Shape::Scalar => Value::Number(self.view[index]),
-            Shape::Switch => Value::Switch(self.view[index] != 0.0),
-            Shape::Vector3 => {
-                scratch.clear();
-                scratch.extend_from_slice(index);
-                scratch.push(0);
-                let mut v = [0.0; 3];
-                for (k, slot) in v.iter_mut().enumerate() {
-                    *scratch.last_mut().unwrap_or(&mut 0) = k;
-                    *slot = self.view[scratch.as_slice()];
-                }
-                Value::Vector(v)
-            }
         }
     }
 }
@@ -330,103 +75,6 @@ fn broadcast_shapes(shapes: &[(&str, Vec<usize>)]) -> PyResult<Vec<usize>> {
         }
     }
     Ok(out)
-}
-
-/// Row `i` (C order) of `shape` as an index.
-fn unravel(mut i: usize, shape: &[usize], index: &mut [usize]) {
-    for (slot, &n) in index.iter_mut().zip(shape).rev() {
-        *slot = i % n;
-        i /= n;
-    }
-}
-
-/// One chunk of rows and its part of every output.
-struct Chunk<'a> {
-    start: usize,
-    rows: usize,
-    columns: Vec<&'a mut [f64]>,
-    status: &'a mut [u8],
-    evaluations: &'a mut [u64],
-}
-
-/// Solve rows `chunk.start..` into the chunk's outputs; the failures (row,
-/// message). Returns early, rows unsolved, once `cancel` is set (Ctrl-C).
-/// Each row solved adds one to `done`, the progress bar's count.
-fn solve_chunk<M: Model>(
-    model: &M,
-    base: &M::Spec,
-    inputs: &[Input],
-    shape: &[usize],
-    chunk: Chunk,
-    cancel: &AtomicBool,
-    done: &AtomicU64,
-) -> Vec<(usize, String)> {
-    let Chunk { start, rows, mut columns, status, evaluations } = chunk;
-    let widths: Vec<usize> = model.columns().iter().map(|(_, axes)| width(axes)).collect();
-    let mut row = vec![0.0; widths.iter().sum()];
-    let mut index = vec![0usize; shape.len()];
-    let mut scratch = Vec::with_capacity(shape.len() + 1);
-    let mut failures = Vec::new();
-    let mut solved = 0usize;
-    for j in 0..rows {
-        if cancel.load(Ordering::Relaxed) {
-            break;
-        }
-        unravel(start + j, shape, &mut index);
-        let mut spec = base.clone();
-        for input in inputs {
-            model.set(&mut spec, input.parameter, input.value(&index, &mut scratch));
-        }
-        let result = model.solve(&spec, &mut row);
-        let mut at = 0;
-        for (column, &w) in columns.iter_mut().zip(&widths) {
-            let target = &mut column[j * w..(j + 1) * w];
-            match result {
-                Ok(_) => target.copy_from_slice(&row[at..at + w]),
-                Err(_) => target.fill(f64::NAN),
-            }
-            at += w;
-        }
-        match result {
-            Ok(Solved { evaluations: n, outside_validity }) => {
-                evaluations[j] = n;
-                status[j] = match outside_validity {
-                    None => Status::Separated.code(),
-                    Some(message) => {
-                        failures.push((start + j, message));
-                        Status::OutsideValidity.code()
-                    }
-                };
-            }
-            Err((s, message)) => {
-                status[j] = s.code();
-                evaluations[j] = 0;
-                failures.push((start + j, message));
-            }
-        }
-        // Counted in batches: one shared counter bumped per row would cost the cheap 1D rows.
-        solved += 1;
-        if solved % COUNT_BATCH == 0 {
-            done.fetch_add(COUNT_BATCH as u64, Ordering::Relaxed);
-        }
-    }
-    done.fetch_add((solved % COUNT_BATCH) as u64, Ordering::Relaxed);
-    failures
-}
-
-/// Run `f` on `threads` workers of its own pool (a count `params::threads`
-/// checked), or on rayon's global pool.
-fn in_pool<T: Send>(threads: Option<usize>, f: impl FnOnce() -> T + Send) -> PyResult<T> {
-    match threads {
-        None => Ok(f()),
-        Some(n) => {
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(n)
-                .build()
-                .map_err(|e| PyValueError::new_err(format!("cannot start {n} threads: {e}")))?;
-            Ok(pool.install(f))
-        }
-    }
 }
 
 /// A keyword's value as a float64 array (a switch's bools as 0 and 1), by
@@ -481,7 +129,7 @@ impl Run {
 
 /// The whole call: inputs from the keywords, outputs allocated, rows solved
 /// without the GIL, the dict of arrays.
-pub(crate) fn run_many<'py, M: Model>(
+pub(crate) fn run_many<'py, M: Keywords>(
     py: Python<'py>,
     model: &M,
     base: M::Spec,
@@ -539,16 +187,23 @@ pub(crate) fn run_many<'py, M: Model>(
         )));
     };
 
-    let guards: Vec<PyReadonlyArrayDyn<'py, f64>> = given.iter().map(|(_, a)| a.readonly()).collect();
-    let bases: Vec<ArrayViewD<f64>> = guards.iter().map(|g| g.as_array()).collect();
+    // Each input as C-ordered values, which kick-study reads by its own shape
+    // (`require`, not `ascontiguousarray`, which makes a scalar's 0-d array 1-d).
+    let mut contiguous_inputs = Vec::with_capacity(given.len());
+    for (p, array) in &given {
+        let array: Bound<'py, PyArrayDyn<f64>> =
+            numpy.call_method1("require", (array, py.None(), "C"))?.cast_into().map_err(value_error)?;
+        contiguous_inputs.push((*p, array));
+    }
+    let guards: Vec<PyReadonlyArrayDyn<'py, f64>> = contiguous_inputs.iter().map(|(_, a)| a.readonly()).collect();
     let mut inputs = Vec::with_capacity(guards.len());
-    for ((p, _), g) in given.iter().zip(&bases) {
-        let mut target = shape.clone();
-        if p.shape == Shape::Vector3 {
-            target.push(3);
-        }
-        let view = g.broadcast(IxDyn(&target)).ok_or_else(|| value_error("broadcast failed"))?;
-        inputs.push(Input { parameter: p, view });
+    for ((p, _), g) in contiguous_inputs.iter().zip(&guards) {
+        inputs.push(Input { parameter: p, data: g.as_slice().map_err(value_error)?, shape: g.shape().to_vec() });
+    }
+    let done = AtomicU64::new(0);
+    let mut level = Broadcast::new(model, base, inputs, &shape).map_err(value_error)?;
+    if progress.is_some() {
+        level = level.counting(&done);
     }
 
     // Outputs, filled in place.
@@ -571,49 +226,31 @@ pub(crate) fn run_many<'py, M: Model>(
     let mut status_guard = status.readwrite();
     let mut evaluations_guard = evaluations.readwrite();
     let contiguous = |e: numpy::AsSliceError| value_error(e);
-    let mut column_chunks: Vec<std::slice::ChunksMut<f64>> = Vec::new();
-    for (guard, (_, axes)) in output_guards.iter_mut().zip(model.columns()) {
-        column_chunks.push(guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK * width(axes)));
+    let mut columns = Vec::with_capacity(output_guards.len());
+    for guard in output_guards.iter_mut() {
+        columns.push(guard.as_slice_mut().map_err(contiguous)?);
     }
-    let mut status_chunks = status_guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK);
-    let mut evaluation_chunks = evaluations_guard.as_slice_mut().map_err(contiguous)?.chunks_mut(CHUNK);
-    let mut chunks = Vec::with_capacity(rows.div_ceil(CHUNK));
-    for start in (0..rows).step_by(CHUNK) {
-        chunks.push(Chunk {
-            start,
-            rows: CHUNK.min(rows - start),
-            columns: column_chunks.iter_mut().map(|c| c.next().unwrap_or_default()).collect(),
-            status: status_chunks.next().unwrap_or_default(),
-            evaluations: evaluation_chunks.next().unwrap_or_default(),
-        });
-    }
+    let mut slots =
+        Slots::new(model, columns, status_guard.as_slice_mut().map_err(contiguous)?, evaluations_guard.as_slice_mut().map_err(contiguous)?);
 
-    let shape_ref = &shape;
-    let inputs_ref = &inputs;
-    let base_ref = &base;
-    let done = AtomicU64::new(0);
-    let done_ref = &done;
-    let solve = |cancel: &AtomicBool| {
-        in_pool(threads, || {
-            chunks
-                .into_par_iter()
-                .flat_map_iter(|chunk| solve_chunk(model, base_ref, inputs_ref, shape_ref, chunk, cancel, done_ref))
-                .collect()
-        })
-    };
-    // One chunk is over in moments: no watching thread (it doubled a one-row call's 24 us).
+    let level_ref = &level;
+    let slots_ref = &mut slots;
+    let mut solve = move |cancel: &AtomicBool| kick_study::many::run(level_ref, slots_ref, threads, cancel);
     // No rows, no bar (kick.dask checks its options on a call of none).
     let progress = progress.filter(|_| rows > 0);
-    let failures: Vec<(usize, String)> = match progress {
-        None if rows <= CHUNK => py.detach(|| solve(&AtomicBool::new(false)))?,
-        None => crate::interruptible(py, solve)??,
+    // A cancelled run raised KeyboardInterrupt in `interruptible`: its rows are never returned.
+    match progress {
+        None if rows <= UNWATCHED_ROWS => py.detach(move || solve(&AtomicBool::new(false))).map_err(library_error)?,
+        None => crate::interruptible(py, solve)?.map_err(library_error)?,
         Some(label) => {
             let bar = crate::progress::bar(py, rows as u64, label);
             let answer = crate::watched(py, solve, || bar.set_position(done.load(Ordering::Relaxed)));
             crate::progress::end(py, &bar, done.load(Ordering::Relaxed));
-            answer??
+            answer?.map_err(library_error)?
         }
     };
+    let failures = std::mem::take(&mut slots.failures);
+    drop(slots);
     drop(output_guards);
     drop(status_guard);
     drop(evaluations_guard);
@@ -660,7 +297,7 @@ pub fn simulate_many<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let dt = crate::params::optional_number("dt", dt)?;
-        let model = Model1d::new(crate::solver_1d(solver, dt)?);
+        let model = Many1d::new(crate::solver_1d(solver, dt)?);
         let law = crate::law(law)?;
         check_law_keywords(law, arrays)?;
         let base: ScenarioSpec = crate::params::spec(None, law)?;
@@ -692,7 +329,7 @@ pub fn simulate3d_many<'py>(
         let plan = crate::params::flight_plan(flight, None, distance)?;
         let flown = plan.map(|plan| Flown { planes: plan.planes.as_ref().map(Vec::len), plan });
         let base_flight = flown.as_ref().map(|f| f.plan.rest).unwrap_or_default();
-        let model = Model3d::new(solver, flown)?;
+        let model = Many3d::new(solver, flown).map_err(library_error)?;
         let law = crate::law(law)?;
         check_law_keywords(law, arrays)?;
         let base: KickSpec = crate::params::spec(None, law)?;

@@ -32,6 +32,7 @@ use kick_core::{Spacing, HISTORY_COLUMNS, OBSERVABLES};
 use rayon::prelude::*;
 use std::ops::Range;
 use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Rows solved together: a chunk is solved while the one before it is written.
 pub const CHUNK_ROWS: usize = 4096;
@@ -233,6 +234,16 @@ pub trait RowSink {
     fn push_row(&mut self, row: &Row) -> Result<(), Self::Error>;
 }
 
+/// Why the run loop stopped (a sink's error aside).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stop {
+    /// Every row was solved and pushed.
+    Finished,
+    /// `cancel` was set: the rows pushed before it are whole, the rest were
+    /// not solved or not pushed.
+    Cancelled,
+}
+
 /// The run loop: rows `rows` of `level`, solved in chunks of [`CHUNK_ROWS`]
 /// on rayon's current pool and pushed to `sink` in order. While a chunk goes
 /// to the sink (one writer: HDF5 is serial), the next is solved on the rest
@@ -240,6 +251,24 @@ pub trait RowSink {
 /// `progress` hears the number of rows pushed after each chunk. Stops at the
 /// sink's first error.
 pub fn run_rows<L, S>(level: &L, rows: Range<u64>, sink: &mut S, progress: &(dyn Fn(u64) + Sync)) -> Result<(), S::Error>
+where
+    L: Level + ?Sized,
+    S: RowSink + Send,
+    S::Error: Send,
+{
+    run_rows_until(level, rows, sink, progress, &AtomicBool::new(false)).map(|_| ())
+}
+
+/// [`run_rows`], stopping once `cancel` is set (Ctrl-C in Python's
+/// `*_many`): a row not yet begun is skipped, and no row of the chunk being
+/// solved reaches the sink.
+pub fn run_rows_until<L, S>(
+    level: &L,
+    rows: Range<u64>,
+    sink: &mut S,
+    progress: &(dyn Fn(u64) + Sync),
+    cancel: &AtomicBool,
+) -> Result<Stop, S::Error>
 where
     L: Level + ?Sized,
     S: RowSink + Send,
@@ -263,16 +292,23 @@ where
                 Ok(())
             },
             || {
-                solving[..n].par_iter_mut().enumerate().for_each(|(j, row)| level.solve_row(start + j as u64, row));
+                solving[..n].par_iter_mut().enumerate().for_each(|(j, row)| {
+                    if !cancel.load(Ordering::Relaxed) {
+                        level.solve_row(start + j as u64, row)
+                    }
+                });
             },
         );
         written?;
         progress(pending.len() as u64);
+        if cancel.load(Ordering::Relaxed) {
+            return Ok(Stop::Cancelled);
+        }
         std::mem::swap(&mut solving, &mut writing);
         pending = 0..n;
         start = end;
     }
-    Ok(())
+    Ok(Stop::Finished)
 }
 
 /// A table kept in memory: what a [`RowSink`] receives, column by column.
@@ -385,6 +421,43 @@ mod tests {
             let expected: Vec<u64> = (3..n).enumerate().filter(|(_, i)| i % 7 == 3).map(|(j, _)| j as u64).collect();
             assert_eq!(failed, expected);
         }
+    }
+
+    /// Cancelled in the second chunk: the first chunk's rows arrive whole
+    /// and in order, none of the second, and the loop says why it stopped.
+    #[test]
+    fn a_cancel_stops_the_run_between_chunks() {
+        struct Cancels<'a>(&'a AtomicBool);
+        impl Level for Cancels<'_> {
+            fn rows(&self) -> u64 {
+                3 * CHUNK_ROWS as u64
+            }
+            fn parameter_columns(&self) -> Vec<Column> {
+                vec![Column::new("i", "1")]
+            }
+            fn outcome_sets(&self) -> Vec<OutcomeSet> {
+                Squares(0).outcome_sets()
+            }
+            fn solve_row(&self, index: u64, row: &mut Row) {
+                if index == CHUNK_ROWS as u64 + 10 {
+                    self.0.store(true, Ordering::Relaxed);
+                }
+                Squares(0).solve_row(index, row)
+            }
+        }
+        let cancel = AtomicBool::new(false);
+        let level = Cancels(&cancel);
+        let mut table = Table::of(&level);
+        let pushed = std::sync::atomic::AtomicU64::new(0);
+        let stop = run_rows_until(&level, 0..level.rows(), &mut table, &|n| _ = pushed.fetch_add(n, Ordering::Relaxed), &cancel);
+        assert_eq!(stop, Ok(Stop::Cancelled));
+        assert_eq!(table.rows(), CHUNK_ROWS);
+        assert_eq!(pushed.load(Ordering::Relaxed), CHUNK_ROWS as u64);
+        assert!((0..CHUNK_ROWS).filter(|i| i % 7 != 3).all(|i| table.outcomes[0][0][i] == (i * i) as f64));
+        // Not cancelled: every row.
+        let mut table = Table::of(&Squares(10));
+        assert_eq!(run_rows_until(&Squares(10), 0..10, &mut table, &|_| {}, &AtomicBool::new(false)), Ok(Stop::Finished));
+        assert_eq!(table.rows(), 10);
     }
 
     /// The loop stops at the sink's first error and reports it.

@@ -15,6 +15,7 @@
 //! - [`columns`]: named columns with units, outcome sets, the compression a file asks for.
 //! - [`history`]: what a time history samples and the sink its rows stream into.
 //! - [`level`]: the `Level` trait every model level implements, and the one run loop over row ranges.
+//! - [`many`]: Python's `*_many` calls as a level: rows broadcast over arrays, run by the one loop into the caller's columns.
 //! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 
 pub mod aim;
@@ -32,6 +33,7 @@ pub mod history;
 pub mod leg;
 pub mod level;
 pub mod limits;
+pub mod many;
 pub mod numbers_3d;
 pub mod parameters;
 pub mod patch;
