@@ -97,6 +97,7 @@ def render() -> str:
         "LAWS: list[str]",
         "BOUNCE_PARAMETERS: tuple[dict[str, Any], ...]",
         "BOUNCE_COLUMNS: list[tuple[str, str]]",
+        "STUDIES: list[dict[str, Any]]",
         "",
         "def keywords(function: str) -> list[dict[str, Any]]: ...",
     ]

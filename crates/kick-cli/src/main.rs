@@ -807,3 +807,29 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every command line the study registry (`kick_study::studies`) names
+    /// runs: its subcommands (`kick fit data`) and its long flags exist.
+    #[test]
+    fn the_study_registry_names_real_commands() {
+        let cli = Cli::command();
+        for study in kick_study::studies::STUDIES {
+            for line in study.commands {
+                let words: Vec<&str> = line.split_whitespace().skip(1).collect();
+                let (mut command, mut depth) = (&cli, 0);
+                while let Some(sub) = words.get(depth).and_then(|w| command.find_subcommand(w)) {
+                    command = sub;
+                    depth += 1;
+                }
+                assert!(depth > 0, "{line}: no such subcommand");
+                for flag in words[depth..].iter().filter_map(|w| w.strip_prefix("--")) {
+                    assert!(command.get_arguments().any(|a| a.get_long() == Some(flag)), "{line}: no flag --{flag}");
+                }
+            }
+        }
+    }
+}

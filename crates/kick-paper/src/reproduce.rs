@@ -23,13 +23,13 @@ pub struct ReproduceSettings {
     pub steps: Steps,
 }
 
-/// The steps of a reproduction to run ([`STEP_NAMES`]).
+/// The steps of a reproduction to run ([`step_names`]).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub enum Steps {
     /// Everything: experiments, figures, checks, pages, 3D, leg, laws, fits, bench, the model page.
     #[default]
     All,
-    /// These steps only, in the order of [`STEP_NAMES`] (`kick reproduce --only`).
+    /// These steps only, in the order of [`step_names`] (`kick reproduce --only`).
     Only(Vec<String>),
 }
 
@@ -171,28 +171,11 @@ pub struct Step {
     pub calls: Vec<Call>,
 }
 
-/// The names of the steps, in the order they run.
-pub const STEP_NAMES: [&str; 19] = [
-    "experiments",
-    "figures",
-    "checks",
-    "3d",
-    "force-history",
-    "patch",
-    "leg",
-    "ball",
-    "laws",
-    "profile",
-    "synthesize",
-    "fit",
-    "table2-fit",
-    "bench",
-    "pages",
-    "validation",
-    "3d-pages",
-    "model",
-    "report",
-];
+/// The names of the steps, in the order they run: the studies
+/// `kick_study::studies` declares as reproduced.
+pub fn step_names() -> Vec<&'static str> {
+    kick_study::studies::reproduce_steps().map(|s| s.name).collect()
+}
 
 /// A number in a command line: the shorter of plain and scientific form,
 /// both of which read back to the same `f64`.
@@ -332,50 +315,82 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         time_offset,
         other_law,
     };
-    let calls: [Vec<Call>; 19] = [
-        files.into_iter().map(|file| Call::Run { file, out: out.clone() }).collect(),
-        vec![Call::Figures { out: out.clone(), figures: figures.clone() }],
-        vec![Call::Checks],
-        three_d.into_iter().map(|file| Call::Run3d { file, out: out.clone(), figures: figures.clone() }).collect(),
-        vec![Call::ForceHistory { out: out.clone(), figures: figures.clone() }],
-        vec![Call::Patch { out: out.clone(), figures: figures.clone() }],
-        vec![leg_call(args)],
-        ball.into_iter().map(|file| Call::Run { file, out: out.clone() }).chain([Call::Ball]).collect(),
-        vec![Call::Laws(crate::identify::LawsSettings {
-            scenarios: args.experiments.join("table2.toml"),
-            out: Some(fits.clone()),
-            samples: 200,
-        })],
-        vec![Call::Profile(crate::identify::ProfileSettings { out: Some(fits.clone()), spread: 1.5, points: 9, map_points: 21, seed: 5 })],
+    // Each step's calls, by the name the study registry gives it.
+    let mut calls: Vec<(&str, Vec<Call>)> = vec![
+        ("experiments", files.into_iter().map(|file| Call::Run { file, out: out.clone() }).collect()),
+        ("figures", vec![Call::Figures { out: out.clone(), figures: figures.clone() }]),
+        ("checks", vec![Call::Checks]),
+        ("3d", three_d.into_iter().map(|file| Call::Run3d { file, out: out.clone(), figures: figures.clone() }).collect()),
+        ("force-history", vec![Call::ForceHistory { out: out.clone(), figures: figures.clone() }]),
+        ("patch", vec![Call::Patch { out: out.clone(), figures: figures.clone() }]),
+        ("leg", vec![leg_call(args)]),
+        ("ball", ball.into_iter().map(|file| Call::Run { file, out: out.clone() }).chain([Call::Ball]).collect()),
+        (
+            "laws",
+            vec![Call::Laws(crate::identify::LawsSettings {
+                scenarios: args.experiments.join("table2.toml"),
+                out: Some(fits.clone()),
+                samples: 200,
+            })],
+        ),
+        (
+            "profile",
+            vec![Call::Profile(crate::identify::ProfileSettings {
+                out: Some(fits.clone()),
+                spread: 1.5,
+                points: 9,
+                map_points: 21,
+                seed: 5,
+            })],
+        ),
         // Synthetic data (the paper's law; Hunt-Crossley with a late first touch), fitted back;
         // the Hunt-Crossley data fitted with the paper's law too (a wrong law: model error).
-        vec![
-            synthesize("synthetic", 1, kick_core::ScenarioSpec::default(), 0.0, None),
-            synthesize(law_name, 2, hunt_crossley, 2.5e-4, Some(kick_core::LawKind::PowerLaw)),
-        ],
-        [
-            ("synthetic".to_string(), SYNTHETIC_FIT),
-            (law_name.to_string(), SYNTHETIC_LAW_FIT),
-            (crate::identify::other_law_name(law_name, kick_core::LawKind::PowerLaw), SYNTHETIC_WRONG_LAW_FIT),
-        ]
-        .into_iter()
-        .map(|(spec, fit)| Call::FitData { spec: fits.join(format!("{spec}.toml")), out: fits.join(fit) })
-        .collect(),
-        vec![Call::FitTable2 { scenarios: args.experiments.join("table2.toml"), out: fits.join(TABLE2_FIT) }],
-        vec![Call::Bench(crate::bench::BenchSettings {
-            out: args.out.join(TIMING_DIRECTORY),
-            report: Some(report_dir.join(TIMING_PAGE)),
-            solvers_report: Some(report_dir.join("solvers.md")),
-            quick: args.quick_bench,
-            ..Default::default()
-        })],
-        vec![Call::Pages],
-        vec![Call::Validation],
-        vec![Call::Pages3d],
-        vec![Call::Model],
-        vec![Call::Report],
+        (
+            "synthesize",
+            vec![
+                synthesize("synthetic", 1, kick_core::ScenarioSpec::default(), 0.0, None),
+                synthesize(law_name, 2, hunt_crossley, 2.5e-4, Some(kick_core::LawKind::PowerLaw)),
+            ],
+        ),
+        (
+            "fit",
+            [
+                ("synthetic".to_string(), SYNTHETIC_FIT),
+                (law_name.to_string(), SYNTHETIC_LAW_FIT),
+                (crate::identify::other_law_name(law_name, kick_core::LawKind::PowerLaw), SYNTHETIC_WRONG_LAW_FIT),
+            ]
+            .into_iter()
+            .map(|(spec, fit)| Call::FitData { spec: fits.join(format!("{spec}.toml")), out: fits.join(fit) })
+            .collect(),
+        ),
+        ("table2-fit", vec![Call::FitTable2 { scenarios: args.experiments.join("table2.toml"), out: fits.join(TABLE2_FIT) }]),
+        (
+            "bench",
+            vec![Call::Bench(crate::bench::BenchSettings {
+                out: args.out.join(TIMING_DIRECTORY),
+                report: Some(report_dir.join(TIMING_PAGE)),
+                solvers_report: Some(report_dir.join("solvers.md")),
+                quick: args.quick_bench,
+                ..Default::default()
+            })],
+        ),
+        ("pages", vec![Call::Pages]),
+        ("validation", vec![Call::Validation]),
+        ("3d-pages", vec![Call::Pages3d]),
+        ("model", vec![Call::Model]),
+        ("report", vec![Call::Report]),
     ];
-    Ok(STEP_NAMES.into_iter().zip(calls).map(|(name, calls)| Step { name, calls }).collect())
+    // In the registry's order; a step the registry names without calls here (or the reverse) is a bug.
+    let mut steps = Vec::with_capacity(calls.len());
+    for study in kick_study::studies::reproduce_steps() {
+        let at = calls.iter().position(|(name, _)| *name == study.name);
+        let at = at.ok_or_else(|| format!("kick_study::studies names the step `{}`, which kick-paper cannot run", study.name))?;
+        steps.push(Step { name: study.name, calls: calls.swap_remove(at).1 });
+    }
+    if let Some((name, _)) = calls.first() {
+        return Err(format!("kick-paper runs a step `{name}` that kick_study::studies does not declare"));
+    }
+    Ok(steps)
 }
 
 /// The steps `args.steps` selects, in the order they run; an unknown name
@@ -383,8 +398,8 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
 pub fn selected(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
     let all = steps(args)?;
     let Steps::Only(names) = &args.steps else { return Ok(all) };
-    if let Some(unknown) = names.iter().find(|n| !STEP_NAMES.contains(&n.as_str())) {
-        return Err(format!("--only: no step `{unknown}`; the steps are {}", STEP_NAMES.join(", ")));
+    for name in names {
+        kick_study::studies::reproduce_step(name, "--only").map_err(|e| e.to_string())?;
     }
     Ok(all.into_iter().filter(|s| names.iter().any(|n| n == s.name)).collect())
 }

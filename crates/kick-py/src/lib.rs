@@ -315,6 +315,9 @@ fn _kick(m: &Bound<'_, PyModule>) -> PyResult<()> {
     // Every law a `law` keyword takes, the shell included: the one list.
     m.add("LAWS", LawKind::SELECTABLE.map(LawKind::name).to_vec())?;
     m.add("BOUNCE_COLUMNS", kick_study::many::BOUNCE_COLUMNS.iter().map(|(n, _, u)| (*n, *u)).collect::<Vec<_>>())?;
+    // Every study, declared once in kick-study: what `kick.dask` runs, what each function belongs to.
+    let studies = serde_json::to_value(kick_study::studies::STUDIES).map_err(value_error)?;
+    m.add("STUDIES", convert::json_to_py(m.py(), &studies)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

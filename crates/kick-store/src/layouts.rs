@@ -24,8 +24,9 @@ pub struct Layout {
     pub name: &'static str,
     /// The root attribute `layout_version`; bumped on incompatible changes.
     pub version: u64,
-    /// The commands (and library writers) that write it.
-    pub written_by: &'static str,
+    /// The library code that writes it (the studies that do, and their
+    /// commands, are `kick_study::studies`').
+    pub writer: &'static str,
     /// What a file of this layout is.
     pub summary: &'static str,
     /// Its objects: path, type, meaning.
@@ -46,9 +47,7 @@ impl Layout {
 pub const SWEEP: Layout = Layout {
     name: "sweep",
     version: 3,
-    written_by: "`kick run` (1D and 3D experiments, shards), `kick sweep`, `kick sweep3d`, `kick merge`, `kick laws`, `kick leg`, \
-                 `kick reproduce` (free kicks, bench points); `kick_store::h5::SweepWriter`, filled by the one run loop \
-                 `kick_study::level::run_rows`",
+    writer: "`kick_store::h5::SweepWriter`, filled by the one run loop `kick_study::level::run_rows`",
     summary: "A table: named parameter columns and one or more outcome sets (one per solver, one per chained flight), \
               every per-row dataset 1-D of length `rows` (attribute `rows`), rows in input order (grids in C order, the \
               last axis fastest).",
@@ -116,7 +115,7 @@ pub const SWEEP: Layout = Layout {
 pub const HISTORY: Layout = Layout {
     name: "history",
     version: 1,
-    written_by: "`kick simulate`, `kick simulate3d`, `kick flight` with `--history FILE.h5`; `kick_store::history`",
+    writer: "`kick_store::history`",
     summary: "Rows uniform in time from first touch (launch, for a flight), then the separation (landing) row.",
     objects: &[
         (
@@ -141,7 +140,7 @@ pub const HISTORY: Layout = Layout {
 pub const FIT: Layout = Layout {
     name: "kick-fit",
     version: 2,
-    written_by: "`kick fit data --out`, `kick fit synthesize`; kick-paper's identification",
+    writer: "`kick_store::identify::fit`",
     summary: "The estimates of one identification from a measured history, with what they rest on.",
     objects: &[
         ("/", "attributes", "provenance"),
@@ -182,7 +181,7 @@ pub const FIT: Layout = Layout {
 pub const FIT_TABLE2: Layout = Layout {
     name: "kick-fit-table2",
     version: 1,
-    written_by: "`kick fit table2 --out`",
+    writer: "`kick_store::identify::files`",
     summary: "Each free parameter of Table 2 identified from the paper's rounded outputs, beside the unrounded ones.",
     objects: &[
         ("/", "attributes", "provenance"),
@@ -201,7 +200,7 @@ pub const FIT_TABLE2: Layout = Layout {
 pub const IDENTIFIABILITY: Layout = Layout {
     name: "kick-identifiability",
     version: 1,
-    written_by: "kick-paper's identification step of `kick reproduce`",
+    writer: "`kick_store::identify::files`",
     summary: "Whether a history identifies the parameters: profiles of the misfit along each parameter and maps over pairs.",
     objects: &[
         ("/", "attributes", "provenance"),
@@ -232,7 +231,7 @@ pub const IDENTIFIABILITY: Layout = Layout {
 pub const PATCH_SPIN: Layout = Layout {
     name: "patch-spin",
     version: 1,
-    written_by: "`kick reproduce` (step `patch`, `kick_paper::patch`)",
+    writer: "`kick_store::patch`",
     summary: "Off-center 3D kicks of one ball and foot against the offset, one curve per contact model and friction \
               coefficient; a kick the solver refuses is left out of its curve (no NaN), its offset and the reason kept.",
     objects: &[
@@ -275,6 +274,29 @@ pub fn find(name: &str) -> Option<&'static Layout> {
     LAYOUTS.iter().copied().find(|l| l.name == name)
 }
 
+/// Who writes layout `l`: the file-writing command lines of the studies
+/// that write it (`kick_study::studies`), the `kick reproduce` steps among
+/// them, and the library code.
+pub fn written_by(l: &Layout) -> String {
+    let mut commands: Vec<String> = Vec::new();
+    let mut steps: Vec<String> = Vec::new();
+    for study in kick_study::studies::writing(l.name) {
+        for c in study.commands.iter().filter(|c| c.contains("-out") || c.contains(".h5")) {
+            let c = format!("`{c}`");
+            if !commands.contains(&c) {
+                commands.push(c);
+            }
+        }
+        if study.reproduced {
+            steps.push(format!("`{}`", study.name));
+        }
+    }
+    if !steps.is_empty() {
+        commands.push(format!("`kick reproduce` (step{} {})", if steps.len() > 1 { "s" } else { "" }, steps.join(", ")));
+    }
+    format!("{}; {}", commands.join(", "), l.writer)
+}
+
 /// The reference page of result files (markdown), from [`LAYOUTS`].
 pub fn markdown() -> String {
     let mut w = String::new();
@@ -300,7 +322,7 @@ pub fn markdown() -> String {
     }
     let _ = writeln!(w, "\n| layout | version | written by |\n| --- | --- | --- |");
     for l in LAYOUTS {
-        let _ = writeln!(w, "| [`{}`](#{}) | {} | {} |", l.name, l.name, l.version, l.written_by);
+        let _ = writeln!(w, "| [`{}`](#{}) | {} | {} |", l.name, l.name, l.version, written_by(l));
     }
     for l in LAYOUTS {
         let _ = writeln!(w, "\n## {}\n\n`layout = \"{}\"`, `layout_version = {}`. {}\n", l.name, l.name, l.version, l.summary);
@@ -318,6 +340,22 @@ pub fn markdown() -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every layout is written by a declared study, and every layout a study
+    /// declares exists.
+    #[test]
+    fn studies_and_layouts_name_each_other() {
+        for l in LAYOUTS {
+            assert!(kick_study::studies::writing(l.name).next().is_some(), "no study writes `{}`", l.name);
+        }
+        for study in kick_study::studies::STUDIES {
+            for name in study.layouts {
+                assert!(find(name).is_some(), "study `{}` writes an undeclared layout `{name}`", study.name);
+            }
+        }
+        assert!(written_by(&SWEEP).contains("`kick sweep3d --out FILE.h5`"), "{}", written_by(&SWEEP));
+        assert!(written_by(&PATCH_SPIN).contains("`kick reproduce` (step `patch`)"), "{}", written_by(&PATCH_SPIN));
+    }
 
     /// Names are unique and each layout has its section on the page.
     #[test]

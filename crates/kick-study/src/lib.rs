@@ -16,6 +16,7 @@
 //! - [`history`]: what a time history samples and the sink its rows stream into.
 //! - [`level`]: the `Level` trait every model level implements, and the one run loop over row ranges.
 //! - [`many`]: Python's `*_many` calls as a level: rows broadcast over arrays, run by the one loop into the caller's columns.
+//! - [`studies`]: every study declared once (name, commands, Python and Dask functions, layouts, `kick reproduce`'s steps).
 //! - [`limits`]: bounds on threads, rows and bytes of a run, checked before it starts.
 
 pub mod aim;
@@ -41,6 +42,7 @@ pub mod printable;
 pub mod sample;
 pub mod shard;
 pub mod simulate;
+pub mod studies;
 pub mod table2;
 pub mod units;
 pub mod validation;

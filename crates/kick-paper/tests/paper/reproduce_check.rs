@@ -1,7 +1,7 @@
 //! `kick reproduce --check` on a small experiment: a second run writes the
 //! same bytes, and a changed value, page or stale file is named.
 
-use kick_paper::reproduce::{check, list, reproduce, ReproduceSettings, Steps, STEP_NAMES};
+use kick_paper::reproduce::{check, list, reproduce, ReproduceSettings, Steps};
 use std::path::{Path, PathBuf};
 
 const SMALL: &str = r#"
@@ -94,7 +94,7 @@ fn only_runs_the_named_steps_in_order() {
     settings.steps = Steps::only(&["checks", "chekcs"]);
     let error = reproduce(&settings, &mut std::io::sink()).expect_err("an unknown step");
     assert!(error.starts_with("--only: no step `chekcs`"), "{error}");
-    assert!(STEP_NAMES.iter().all(|name| error.contains(name)), "{error}");
+    assert!(kick_paper::reproduce::step_names().iter().all(|name| error.contains(name)), "{error}");
 
     let _ = std::fs::remove_dir_all(dir.join("results"));
     settings.steps = Steps::only(&["checks"]);

@@ -38,7 +38,8 @@ from kick._labelled import ManyResult
 
 __all__ = ["simulate_many", "simulate3d_many", "flight_many", "bounce_many", "to_zarr"]
 
-_FUNCTIONS = ("simulate_many", "simulate3d_many", "flight_many", "bounce_many")
+# What runs on a cluster is declared with the studies (kick_study::studies).
+_FUNCTIONS = tuple(f for study in kick.STUDIES for f in study["dask"])
 _DEFAULT_CHUNKS = {"simulate_many": 100_000, "simulate3d_many": 1_000, "flight_many": 10_000, "bounce_many": 1_000}
 
 
