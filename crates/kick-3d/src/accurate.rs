@@ -443,41 +443,209 @@ impl Accurate3d {
         self.run_on::<SAMPLE, true>(kick, recorder, sampler)
     }
 
+    /// The run as a sequence of named phases ([`Run`]): the scene checked
+    /// and the first touch set up ([`refuse_scene`], [`first_touch`],
+    /// [`Run::start`]), then per step the contact integrated
+    /// ([`Run::integrate_step`]), its switches located
+    /// ([`Run::locate_switches`]), the stretch closed with its peaks and
+    /// records ([`Run::close_stretch`]), and what comes next
+    /// ([`Run::next`]: advance, a change of clock, a switch of regime, or
+    /// separation and the summary, [`Run::separate`]).
     #[inline(always)]
     fn run_on<const SAMPLE: bool, const AVX2: bool>(
         &self,
         kick: &Kick3d,
-        mut recorder: Option<&mut Vec<EnergySample>>,
-        mut sampler: Option<&mut Sampler3d>,
+        recorder: Option<&mut Vec<EnergySample>>,
+        sampler: Option<&mut Sampler3d>,
     ) -> Result<(Outcome3d, EndState), Kick3dError> {
-        if kick.ground {
-            return Err(Kick3dError::UnsupportedScene {
-                path: "accurate",
-                reason: "a ground plane is a third body; use the rapier scene path",
-            });
-        }
-        // One plane: the foot's path (x–z at an approach angle), the ball's
-        // (x), the face's normal and the foot's mirror plane. The knife edge
-        // is the lateral kick rolled about the path: one plane with a
-        // horizontal path, a ball at rest, or no offset. An instep keeps its
-        // box level: a yaw needs a horizontal path and the pole at the
-        // centre's height, a pitch no offset and no yaw.
-        let planar = match kick.instep {
-            None => kick.approach_angle == 0.0 || kick.base.ball_speed() == 0.0 || kick.offset == 0.0,
-            Some(i) => (kick.approach_angle == 0.0 && i.pitch == 0.0 && kick.contact_depth == 0.0) || (kick.offset == 0.0 && i.yaw == 0.0),
-        };
-        if kick.rigid_grip() && kick.friction.is_finite() && kick.friction > 0.0 && !planar {
-            return Err(Kick3dError::UnsupportedScene {
-                path: "accurate",
-                reason: "rigid grip (tangential_stiffness = inf) with a finite friction keeps each slip in one direction, \
-                         exact for a kick in one plane: on the knife edge give approach_angle = 0, ball_speed = 0 or \
-                         offset = 0; on an instep approach_angle = 0, face_pitch = 0 and contact_depth = 0, or offset = 0 \
-                         and face_yaw = 0 (or friction = inf)",
-            });
-        }
+        refuse_scene(kick)?;
         let horizon = kick.contact_horizon()?;
         let scales = kick_compliant::events::Scales::of(&kick.normal_scenario()?);
-        let y0 = contact::initial_state(kick);
+        let (system, y0) = first_touch::<AVX2>(kick);
+        let mut run = Run::<SAMPLE>::start(self.relative_tolerance, kick, system, y0, horizon, scales, recorder, sampler)?;
+        loop {
+            let (x1, y1, c1) = run.integrate_step()?;
+            let dx = run.step_of(run.system.phase.clock);
+            let rates_1 = rates_after_step(&run.system, x1, &y1, run.stepper.end_derivative(), dx, &c1, run.point.x, &run.point.rates);
+            let mut dense: Option<Dense<DIM>> = None;
+            // Landed on u = 0 (to rounding of the last step's end): separation.
+            let landed = matches!(run.system.phase.clock, Clock::Release { start } if x1 >= start * (1.0 - 1e-14));
+            let end = run.locate_switches(x1, &y1, &c1, &rates_1, dx, landed, &mut dense);
+            let stretch = run.close_stretch(end, (x1, y1, c1, rates_1), dx, &mut dense)?;
+            match run.next(end, landed, &c1) {
+                Next::Advance => run.advance(&c1, x1, stretch.rates),
+                Next::Clock(clock) => run.change_clock(clock, x1, &y1, stretch.t),
+                Next::Switch(switch) => {
+                    run.end_phase(stretch.t);
+                    if switch == Switch::Separation {
+                        return run.separate(&stretch);
+                    }
+                    run.switch_phase(switch, stretch, dx)?;
+                }
+            }
+        }
+    }
+}
+
+/// Scenes this path refuses: a ground plane, and rigid grip at a finite
+/// friction out of one plane.
+#[inline(always)]
+fn refuse_scene(kick: &Kick3d) -> Result<(), Kick3dError> {
+    if kick.ground {
+        return Err(Kick3dError::UnsupportedScene {
+            path: "accurate",
+            reason: "a ground plane is a third body; use the rapier scene path",
+        });
+    }
+    // One plane: the foot's path (x–z at an approach angle), the ball's
+    // (x), the face's normal and the foot's mirror plane. The knife edge
+    // is the lateral kick rolled about the path: one plane with a
+    // horizontal path, a ball at rest, or no offset. An instep keeps its
+    // box level: a yaw needs a horizontal path and the pole at the
+    // centre's height, a pitch no offset and no yaw.
+    let planar = match kick.instep {
+        None => kick.approach_angle == 0.0 || kick.base.ball_speed() == 0.0 || kick.offset == 0.0,
+        Some(i) => (kick.approach_angle == 0.0 && i.pitch == 0.0 && kick.contact_depth == 0.0) || (kick.offset == 0.0 && i.yaw == 0.0),
+    };
+    if kick.rigid_grip() && kick.friction.is_finite() && kick.friction > 0.0 && !planar {
+        return Err(Kick3dError::UnsupportedScene {
+            path: "accurate",
+            reason: "rigid grip (tangential_stiffness = inf) with a finite friction keeps each slip in one direction, \
+                     exact for a kick in one plane: on the knife edge give approach_angle = 0, ball_speed = 0 or \
+                     offset = 0; on an instep approach_angle = 0, face_pitch = 0 and contact_depth = 0, or offset = 0 \
+                     and face_yaw = 0 (or friction = inf)",
+        });
+    }
+    Ok(())
+}
+
+/// The system at first touch, on the branches the contact starts on
+/// (compressing; grip or slip; face, border or cap; the clock), and the
+/// state at touch (a rigid grip's impulse, or a slip's direction state, applied).
+#[inline(always)]
+fn first_touch<const AVX2: bool>(kick: &Kick3d) -> (Relative, State) {
+    let y0 = contact::initial_state(kick);
+    let singular = singular_exponent(&kick.law).is_some();
+    let clock = if singular { Clock::Onset } else { Clock::Time };
+    let mut system = Relative::new(
+        kick,
+        Phase {
+            compressing: true,
+            friction: Friction::Grip,
+            geometry: if kick.instep.is_some_and(|i| i.is_curved()) { Geometry::Curved } else { Geometry::Face },
+            clamped: false,
+            clock: Clock::Time,
+            slip_direction: parry3d_f64::math::Vec3::ZERO,
+            slip_start: 0.0,
+        },
+    )
+    .on_avx2(AVX2);
+    let mut y0 = y0;
+    let sliding = system.local(0.0, &y0).sliding_velocity;
+    let friction = if kick.friction == 0.0 {
+        Friction::None
+    } else if system.rigid && sliding != parry3d_f64::math::Vec3::ZERO {
+        // Rigid grip: μ = ∞ stops the sliding at once; a finite μ starts
+        // in slip, against the sliding.
+        if kick.friction.is_infinite() {
+            y0 = system.grip_impulse(&y0);
+            Friction::Grip
+        } else {
+            system = system.in_phase(Phase { slip_direction: sliding.normalize(), ..system.phase });
+            Friction::Slip
+        }
+    } else if !system.rigid {
+        // ξ = 0: grip unless the cap starts at zero and grows slower than
+        // the spring would load (`crate::tangential`).
+        let slip = system.in_phase(Phase { friction: Friction::Slip, ..system.phase }).local(0.0, &y0);
+        if kick.friction.is_finite() && slip.normal_force == 0.0 && slip.grip_margin < 0.0 {
+            // The state holds the slider's direction (contact::SPRING), along the sliding.
+            let direction = contact::slip_direction_state(&slip, &y0);
+            contact::put_spring(&mut y0, direction);
+            Friction::Slip
+        } else {
+            Friction::Grip
+        }
+    } else if system.local(0.0, &y0).grip_margin >= 0.0 {
+        Friction::Grip
+    } else {
+        if system.rigid {
+            let needed = system.local(0.0, &y0).tangential_force;
+            system = system.in_phase(Phase { slip_direction: -needed.normalize_or_zero(), ..system.phase });
+        }
+        Friction::Slip
+    };
+    (system.in_phase(Phase { friction, clock, ..system.phase }), y0)
+}
+
+/// What the run does after a stretch (the stop reasons of a phase).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Next {
+    /// The step was accepted inside the phase: on to the next.
+    Advance,
+    /// The same phase goes on on another clock (onset → time, time → release, release → time).
+    Clock(Clock),
+    /// A switch ends the phase; [`Switch::Separation`] ends the run.
+    Switch(Switch),
+}
+
+/// A stretch's end: a switch, or the accepted point.
+struct Stretch {
+    x: f64,
+    y: State,
+    t: f64,
+    c: Local,
+    rates: Rates,
+}
+
+/// The state of one run: the system on its current phase, the stepper, the
+/// settings fixed at touch and the running record (peaks, maximum
+/// compression, slip time, evaluations).
+struct Run<'a, 's, const SAMPLE: bool> {
+    kick: &'a Kick3d,
+    system: Relative,
+    stepper: Stepper<DIM>,
+    recorder: Option<&'a mut Vec<EnergySample>>,
+    sampler: Option<&'a mut Sampler3d<'s>>,
+    /// Absolute tolerance per component (module docs).
+    absolute: SVector<f64, DIM>,
+    scales: kick_compliant::events::Scales,
+    horizon: f64,
+    /// The unit of u = δ^(1/p).
+    u_unit: f64,
+    v_n: f64,
+    /// Whether the ends of the contact are integrated on the release clock.
+    release: bool,
+    release_scale: f64,
+    com: contact::CentreOfMass,
+    ball_velocity0: parry3d_f64::math::Vec3,
+    peaks: [Peak; 2],
+    max_compression: (f64, f64),
+    slip_time: f64,
+    phase_start: f64,
+    extra_evaluations: u64,
+    /// Dense outputs made for the history alone (not in the outcome's count).
+    history_evaluations: u64,
+    phases: usize,
+    /// The last accepted point or switch.
+    point: Point,
+}
+
+impl<'a, 's, const SAMPLE: bool> Run<'a, 's, SAMPLE> {
+    /// First touch: tolerances in each component's unit, the first step,
+    /// the stepper, the first samples.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn start(
+        rtol: f64,
+        kick: &'a Kick3d,
+        system: Relative,
+        y0: State,
+        horizon: f64,
+        scales: kick_compliant::events::Scales,
+        recorder: Option<&'a mut Vec<EnergySample>>,
+        sampler: Option<&'a mut Sampler3d<'s>>,
+    ) -> Result<Self, Kick3dError> {
         let singular = singular_exponent(&kick.law).is_some();
         // The shell law is smooth at touch (F ∝ δ), but its force stops at
         // δ = 0 with a kink (F_el = 0 below, F ∝ δ above), which a step across
@@ -494,68 +662,6 @@ impl Accurate3d {
         // never reached 0.4 V_n: its separation, on the time clock, straddled
         // the kink and cost 1.1e-9 in spin); its clock's thresholds are halved.
         let release_scale = if kick.base.boot().is_some() { 0.5 } else { 1.0 };
-        let clock = if singular { Clock::Onset } else { Clock::Time };
-        let mut system = Relative::new(
-            kick,
-            Phase {
-                compressing: true,
-                friction: Friction::Grip,
-                geometry: if kick.instep.is_some_and(|i| i.is_curved()) { Geometry::Curved } else { Geometry::Face },
-                clamped: false,
-                clock: Clock::Time,
-                slip_direction: parry3d_f64::math::Vec3::ZERO,
-                slip_start: 0.0,
-            },
-        )
-        .on_avx2(AVX2);
-        let mut y0 = y0;
-        let sliding = system.local(0.0, &y0).sliding_velocity;
-        let friction = if kick.friction == 0.0 {
-            Friction::None
-        } else if system.rigid && sliding != parry3d_f64::math::Vec3::ZERO {
-            // Rigid grip: μ = ∞ stops the sliding at once; a finite μ starts
-            // in slip, against the sliding.
-            if kick.friction.is_infinite() {
-                y0 = system.grip_impulse(&y0);
-                Friction::Grip
-            } else {
-                system = system.in_phase(Phase { slip_direction: sliding.normalize(), ..system.phase });
-                Friction::Slip
-            }
-        } else if !system.rigid {
-            // ξ = 0: grip unless the cap starts at zero and grows slower than
-            // the spring would load (`crate::tangential`).
-            let slip = system.in_phase(Phase { friction: Friction::Slip, ..system.phase }).local(0.0, &y0);
-            if kick.friction.is_finite() && slip.normal_force == 0.0 && slip.grip_margin < 0.0 {
-                // The state holds the slider's direction (contact::SPRING), along the sliding.
-                let direction = contact::slip_direction_state(&slip, &y0);
-                contact::put_spring(&mut y0, direction);
-                Friction::Slip
-            } else {
-                Friction::Grip
-            }
-        } else if system.local(0.0, &y0).grip_margin >= 0.0 {
-            Friction::Grip
-        } else {
-            if system.rigid {
-                let needed = system.local(0.0, &y0).tangential_force;
-                system = system.in_phase(Phase { slip_direction: -needed.normalize_or_zero(), ..system.phase });
-            }
-            Friction::Slip
-        };
-        system = system.in_phase(Phase { friction, clock, ..system.phase });
-        let com = contact::CentreOfMass::of(kick);
-        let ball_velocity0 = kick.initial_state().ball_velocity;
-        let energy_of = |system: &Relative, x: f64, y: &State| -> EnergySample {
-            let t = system.time(x, y);
-            let mechanical = match &system.leg {
-                Some(leg) => system.leg_mechanical_energy(leg, x, y, t, ball_velocity0),
-                None => 0.5 * com.mass * com.velocity_at(t).length_squared() + system.internal_energy(x, y),
-            };
-            (t, mechanical, y[contact::DAMPING_LOSS], y[contact::FRICTION_LOSS])
-        };
-
-        let rtol = self.relative_tolerance;
         let (length, speed) = (scales.length, scales.speed);
         let mut units = [0.0; DIM];
         for (i, unit) in units.iter_mut().enumerate() {
@@ -576,7 +682,6 @@ impl Accurate3d {
         let absolute = SVector::<f64, DIM>::from(units) * rtol;
         // Units of u = δ^(1/p) and of the differences along x.
         let u_unit = length.powf(1.0 / f64::from(contact::CLOCK_POWER));
-        let step_of = |clock: Clock| DIFFERENCE_STEP * if clock == Clock::Time { scales.time } else { u_unit };
         let first_clock_step = match kick.base.boot() {
             Some(boot) if !singular => {
                 let touch_stiffness = kick.law.force_gradient(0.0, 0.0).0;
@@ -586,315 +691,414 @@ impl Accurate3d {
             _ => FIRST_STEP_TIME * scales.time,
         };
         let first_step = (rtol / DEFAULT_TOLERANCE).powf(1.0 / 8.0) * first_clock_step;
-        let mut stepper = Stepper::starting_with(&system, 0.0, y0, rtol, absolute, if singular { u_unit } else { horizon }, first_step);
-        let v_n = kick.normal_approach_speed();
-
+        let stepper = Stepper::starting_with(&system, 0.0, y0, rtol, absolute, if singular { u_unit } else { horizon }, first_step);
         let first = system.local(0.0, &y0);
-        let mut peaks = watched(&first).map(|value| Peak { value, time: 0.0 });
-        let mut max_compression = (0.0f64, 0.0);
-        let mut slip_time = 0.0;
-        let mut phase_start = 0.0;
-        let mut extra_evaluations = 0u64;
-        let mut point = Point { x: 0.0, rates: rates(&system, 0.0, &y0, stepper.start_derivative(), step_of(system.phase.clock)) };
-        if let Some(r) = recorder.as_deref_mut() {
-            r.push(energy_of(&system, 0.0, &y0));
+        let mut run = Run {
+            kick,
+            system,
+            stepper,
+            recorder,
+            sampler,
+            absolute,
+            scales,
+            horizon,
+            u_unit,
+            v_n: kick.normal_approach_speed(),
+            release,
+            release_scale,
+            com: contact::CentreOfMass::of(kick),
+            ball_velocity0: kick.initial_state().ball_velocity,
+            peaks: watched(&first).map(|value| Peak { value, time: 0.0 }),
+            max_compression: (0.0f64, 0.0),
+            slip_time: 0.0,
+            phase_start: 0.0,
+            extra_evaluations: 0,
+            history_evaluations: 0,
+            phases: 0,
+            point: Point { x: 0.0, rates: [0.0; 4] },
+        };
+        let dx = run.step_of(run.system.phase.clock);
+        run.point = Point { x: 0.0, rates: rates(&run.system, 0.0, &y0, run.stepper.start_derivative(), dx) };
+        let sample = run.energy(0.0, &y0);
+        if let Some(r) = run.recorder.as_deref_mut() {
+            r.push(sample);
         }
-        if let Some(s) = sampler.as_deref_mut().filter(|_| SAMPLE) {
-            s.fill(0.0, true, |t, _| Ok::<_, Kick3dError>(history::sample(kick, &system, 0.0, &y0, t, None)))?;
+        if let Some(s) = run.sampler.as_deref_mut().filter(|_| SAMPLE) {
+            let system = &run.system;
+            s.fill(0.0, true, |t, _| Ok::<_, Kick3dError>(history::sample(kick, system, 0.0, &y0, t, None)))?;
         }
-        // Dense outputs made for the history alone (not in the outcome's count).
-        let mut history_evaluations = 0u64;
-        let mut phases = 0;
-        loop {
-            if stepper.accepted + stepper.rejected >= MAX_STEPS {
-                let t = system.time(point.x, stepper.state());
-                return Err(KickError::NoSeparation { time: t, reason: format!("more than {MAX_STEPS} steps") }.into());
-            }
-            if let Clock::Release { start } = system.phase.clock {
-                stepper.set_max_step(start - stepper.time());
-            }
-            let remembering = Remembering::new(&system);
-            stepper.step(&remembering).map_err(|e| {
-                let (time, reason) = match e {
-                    StepFailure::StepSizeUnderflow { time } => (time, "step size underflow"),
-                    StepFailure::Rejections { time } => (time, "too many rejected steps"),
-                };
-                Kick3dError::Core(KickError::Integration { time, reason: reason.to_string() })
-            })?;
-            let x1 = stepper.time();
-            let y1 = *stepper.state();
-            let c1 = remembering.local_at(x1, &y1);
-            let dx = step_of(system.phase.clock);
-            let rates_1 = rates_after_step(&system, x1, &y1, stepper.end_derivative(), dx, &c1, point.x, &point.rates);
-            let mut dense: Option<Dense<DIM>> = None;
+        Ok(run)
+    }
 
-            // The earliest switch that ends the phase in this step; switches
-            // that do not change the right-hand side are marked on the way.
-            let mut end: Option<(f64, Switch)> = None;
-            let mut marker: Option<f64> = None;
-            let kinked = kick.law.damps_compression_only();
-            // Landed on u = 0 (to rounding of the last step's end): separation.
-            let landed = matches!(system.phase.clock, Clock::Release { start } if x1 >= start * (1.0 - 1e-14));
-            for switch in SWITCHES {
-                let Some(sign) = switch.sign(&system) else { continue };
-                let mut crossed_by = x1;
-                let signed = sign * switch.value(&system, &c1, &y1);
-                // At separation a margin may reach zero with the force (μ F_n − 0 on a
-                // central kick); and a slip's direction state (contact::SPRING) reaches
-                // zero length there with δ, where its direction is the sliding's: a
-                // switch landing on separation changes nothing (the force is zero).
-                if landed && (signed == 0.0 || switch == Switch::GripSlip) {
+    /// The step of the differences along x on `clock`.
+    #[inline(always)]
+    fn step_of(&self, clock: Clock) -> f64 {
+        DIFFERENCE_STEP * if clock == Clock::Time { self.scales.time } else { self.u_unit }
+    }
+
+    /// (t, kinetic + elastic energy, losses) at (x, y).
+    fn energy(&self, x: f64, y: &State) -> EnergySample {
+        let system = &self.system;
+        let t = system.time(x, y);
+        let mechanical = match &system.leg {
+            Some(leg) => system.leg_mechanical_energy(leg, x, y, t, self.ball_velocity0),
+            None => 0.5 * self.com.mass * self.com.velocity_at(t).length_squared() + system.internal_energy(x, y),
+        };
+        (t, mechanical, y[contact::DAMPING_LOSS], y[contact::FRICTION_LOSS])
+    }
+
+    /// Contact integration: one accepted step on the phase's branch (the
+    /// release clock's steps end at u = 0 at the latest); the point, state
+    /// and law at its end.
+    #[inline(always)]
+    fn integrate_step(&mut self) -> Result<(f64, State, Local), Kick3dError> {
+        let stepper = &mut self.stepper;
+        if stepper.accepted + stepper.rejected >= MAX_STEPS {
+            let t = self.system.time(self.point.x, stepper.state());
+            return Err(KickError::NoSeparation { time: t, reason: format!("more than {MAX_STEPS} steps") }.into());
+        }
+        if let Clock::Release { start } = self.system.phase.clock {
+            stepper.set_max_step(start - stepper.time());
+        }
+        let remembering = Remembering::new(&self.system);
+        stepper.step(&remembering).map_err(|e| {
+            let (time, reason) = match e {
+                StepFailure::StepSizeUnderflow { time } => (time, "step size underflow"),
+                StepFailure::Rejections { time } => (time, "too many rejected steps"),
+            };
+            Kick3dError::Core(KickError::Integration { time, reason: reason.to_string() })
+        })?;
+        let x1 = stepper.time();
+        let y1 = *stepper.state();
+        let c1 = remembering.local_at(x1, &y1);
+        Ok((x1, y1, c1))
+    }
+
+    /// Event location: the earliest switch that ends the phase in the step
+    /// to x1, located on the dense output; δ̇ = 0 where it does not change
+    /// the right-hand side is a marker only, applied here unless a switch
+    /// ends the phase before it.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn locate_switches(
+        &mut self,
+        x1: f64,
+        y1: &State,
+        c1: &Local,
+        rates_1: &Rates,
+        dx: f64,
+        landed: bool,
+        dense: &mut Option<Dense<DIM>>,
+    ) -> Option<(f64, Switch)> {
+        let (system, stepper, point) = (&self.system, &mut self.stepper, self.point);
+        // The earliest switch that ends the phase in this step; switches
+        // that do not change the right-hand side are marked on the way.
+        let mut end: Option<(f64, Switch)> = None;
+        let mut marker: Option<f64> = None;
+        let kinked = self.kick.law.damps_compression_only();
+        for switch in SWITCHES {
+            let Some(sign) = switch.sign(system) else { continue };
+            let mut crossed_by = x1;
+            let signed = sign * switch.value(system, c1, y1);
+            // At separation a margin may reach zero with the force (μ F_n − 0 on a
+            // central kick); and a slip's direction state (contact::SPRING) reaches
+            // zero length there with δ, where its direction is the sliding's: a
+            // switch landing on separation changes nothing (the force is zero).
+            if landed && (signed == 0.0 || switch == Switch::GripSlip) {
+                continue;
+            }
+            if switch.holds(signed) {
+                // Both ends on the phase's side: a margin may still dip
+                // through zero and back between them, at its minimum.
+                let i = match switch {
+                    Switch::GripSlip => GRIP_RATE,
+                    Switch::Geometry => FACE_RATE,
+                    _ => continue,
+                };
+                if !(sign * point.rates[i] < 0.0 && sign * rates_1[i] > 0.0) {
                     continue;
                 }
-                if switch.holds(signed) {
-                    // Both ends on the phase's side: a margin may still dip
-                    // through zero and back between them, at its minimum.
-                    let i = match switch {
-                        Switch::GripSlip => GRIP_RATE,
-                        Switch::Geometry => FACE_RATE,
-                        _ => continue,
-                    };
-                    if !(sign * point.rates[i] < 0.0 && sign * rates_1[i] > 0.0) {
-                        continue;
-                    }
-                    let d = dense.get_or_insert_with(|| stepper.dense(&system));
-                    let least = roots::brent_from(
-                        |x| {
-                            let y = d.at(x);
-                            rate_for_root(&system, x, &y, &d.derivative_at(x), dx, i)
-                        },
-                        (point.x, point.rates[i]),
-                        (x1, rates_1[i]),
-                        rate_root_tolerance(point.x, x1, dx),
-                        200,
-                    );
-                    let Some(least) = least else { continue };
-                    let y = d.at(least.x);
-                    if sign * switch.value(&system, &system.local(least.x, &y), &y) > 0.0 {
-                        continue;
-                    }
-                    crossed_by = least.x;
-                }
-                let d = dense.get_or_insert_with(|| stepper.dense(&system));
-                let x = locate_switch(
+                let d = dense.get_or_insert_with(|| stepper.dense(system));
+                let least = roots::brent_from(
                     |x| {
                         let y = d.at(x);
-                        switch.value(&system, &system.local(x, &y), &y)
+                        rate_for_root(system, x, &y, &d.derivative_at(x), dx, i)
                     },
-                    sign,
-                    point.x,
-                    crossed_by,
+                    (point.x, point.rates[i]),
+                    (x1, rates_1[i]),
+                    rate_root_tolerance(point.x, x1, dx),
+                    200,
                 );
-                if switch == Switch::CompressionRate && !kinked {
-                    // A marker only, applied below unless a switch ends the phase before it.
-                    marker = Some(x);
+                let Some(least) = least else { continue };
+                let y = d.at(least.x);
+                if sign * switch.value(system, &system.local(least.x, &y), &y) > 0.0 {
                     continue;
                 }
-                if end.is_none_or(|(xe, _)| x < xe) {
-                    end = Some((x, switch));
-                }
+                crossed_by = least.x;
             }
-
-            // δ̇ = 0 where the right-hand side does not change: the phase goes on
-            // with the other sign expected. Past a switch that ends the phase
-            // first, the phase's continuation is not the motion (there δ_max
-            // was read off it: 6.5e-8 of δ_max where a slip began within the
-            // step); the next phase finds it again.
-            if let Some(x) = marker.filter(|&x| end.is_none_or(|(xe, _)| x <= xe)) {
-                if system.phase.compressing {
-                    let y = dense.as_ref().map_or(y1, |d| d.at(x));
-                    let delta = system.local(x, &y).compression;
-                    if delta > max_compression.0 {
-                        max_compression = (delta, system.time(x, &y));
-                    }
-                }
-                system = system.in_phase(Phase { compressing: !system.phase.compressing, ..system.phase });
-            }
-
-            // The stretch's end: a switch, or the accepted point.
-            let (x_end, mut y_end, dy_end, c_end) = match (end, dense.as_ref()) {
-                (Some((x, _)), Some(d)) => {
+            let d = dense.get_or_insert_with(|| stepper.dense(system));
+            let x = locate_switch(
+                |x| {
                     let y = d.at(x);
-                    extra_evaluations += 1;
-                    let (dy, c) = system.derivative_and_local(x, &y);
-                    (x, y, dy, c)
-                }
-                _ => (x1, y1, *stepper.end_derivative(), c1),
-            };
-            let t_end = system.time(x_end, &y_end);
-            outcome::within_geometry(kick, c_end.compression, t_end)?;
-            let rates_end = if x_end == x1 { rates_1 } else { rates(&system, x_end, &y_end, &dy_end, dx) };
-            for k in 0..2 {
-                if point.rates[k] > 0.0 && rates_end[k] <= 0.0 {
-                    let d = dense.get_or_insert_with(|| stepper.dense(&system));
-                    // The ends' rates are known, their signs trusted (`rates_after_step`).
-                    let root = roots::brent_from(
-                        |x| {
-                            let y = d.at(x);
-                            rate_for_root(&system, x, &y, &d.derivative_at(x), dx, k)
-                        },
-                        (point.x, point.rates[k]),
-                        (x_end, rates_end[k]),
-                        rate_root_tolerance(point.x, x_end, dx),
-                        200,
-                    );
-                    // No sign change between the ends as evaluated on the
-                    // dense output: the maximum is an end, sampled there.
-                    if let Some(root) = root {
-                        let y = d.at(root.x);
-                        peaks[k].observe(watched(&system.local(root.x, &y))[k], system.time(root.x, &y));
-                    }
-                }
+                    switch.value(system, &system.local(x, &y), &y)
+                },
+                sign,
+                point.x,
+                crossed_by,
+            );
+            if switch == Switch::CompressionRate && !kinked {
+                // A marker only, applied below unless a switch ends the phase before it.
+                marker = Some(x);
+                continue;
             }
-            let q_end = watched(&c_end);
-            for k in 0..2 {
-                peaks[k].observe(q_end[k], t_end);
+            if end.is_none_or(|(xe, _)| x < xe) {
+                end = Some((x, switch));
             }
-            if let Some(r) = recorder.as_deref_mut() {
-                r.push(energy_of(&system, x_end, &y_end));
-            }
-            // The history's grid times in this stretch, [t(point), t_end), on its phase.
-            if let Some(s) = sampler.as_deref_mut().filter(|_| SAMPLE) {
-                if s.due(t_end, false) {
-                    let d = match dense.as_ref() {
-                        Some(d) => *d,
-                        None => {
-                            history_evaluations += 3;
-                            stepper.dense(&system)
-                        }
-                    };
-                    s.fill(t_end, false, |t, _| Ok::<_, Kick3dError>(history::sample_in(kick, &system, &d, point.x, x_end, t)))?;
-                }
-            }
-            if t_end > horizon {
-                return Err(KickError::NoSeparation {
-                    time: horizon,
-                    reason: format!("3D contact outlasted the horizon of {horizon:.6e} s"),
-                }
-                .into());
-            }
+        }
 
-            let mut phase = system.phase;
-            let switch = match end {
-                Some((_, switch)) => switch,
-                None if landed => Switch::Separation,
-                None => {
-                    // A change of clock needs no location: any accepted point serves.
-                    let c = &c1;
-                    let next = match phase.clock {
-                        Clock::Onset if c.compression >= ONSET_SHARE * length || c.compression_rate <= CLOCK_RATE * v_n => {
-                            Some(Clock::Time)
-                        }
-                        Clock::Release { .. } if c.compression_rate >= -CLOCK_RATE * release_scale * v_n => Some(Clock::Time),
-                        Clock::Time
-                            if release
-                                && !phase.compressing
-                                && c.compression_rate < -2.0 * CLOCK_RATE * release_scale * v_n
-                                && c.compression <= RELEASE_SHARE * max_compression.0 =>
-                        {
-                            Some(Clock::Release { start: c.compression.powf(1.0 / f64::from(contact::CLOCK_POWER)) })
-                        }
-                        _ => None,
-                    };
-                    match next {
-                        Some(clock) => {
-                            let rate_before = system.clock_rate(x1, &y1);
-                            let h = stepper.next_step() * rate_before;
-                            system = system.in_phase(Phase { clock, ..phase });
-                            let x = if clock == Clock::Time { t_end } else { 0.0 };
-                            let rate_after = system.clock_rate(x, &y1);
-                            stepper.restart(&system, x, y1);
-                            stepper.set_next_step(0.7 * h / rate_after);
-                            stepper.set_max_step(if let Clock::Release { start } = clock { start } else { horizon });
-                            point = Point { x, rates: rates(&system, x, &y1, stepper.start_derivative(), step_of(clock)) };
-                        }
-                        None => {
-                            let mut widened = absolute;
-                            let factor = slip_direction_widening(&system, c, scales.time);
-                            for i in contact::SPRING..contact::SPRING + 3 {
-                                widened[i] *= factor;
-                            }
-                            stepper.set_absolute_tolerance(widened);
-                            stepper.advance();
-                            point = Point { x: x1, rates: rates_end };
-                        }
-                    }
-                    continue;
+        // δ̇ = 0 where the right-hand side does not change: the phase goes on
+        // with the other sign expected. Past a switch that ends the phase
+        // first, the phase's continuation is not the motion (there δ_max
+        // was read off it: 6.5e-8 of δ_max where a slip began within the
+        // step); the next phase finds it again.
+        if let Some(x) = marker.filter(|&x| end.is_none_or(|(xe, _)| x <= xe)) {
+            if self.system.phase.compressing {
+                let y = dense.as_ref().map_or(*y1, |d| d.at(x));
+                let delta = self.system.local(x, &y).compression;
+                if delta > self.max_compression.0 {
+                    self.max_compression = (delta, self.system.time(x, &y));
                 }
-            };
-            // A switch: the phase ends here.
-            if phase.friction == Friction::Slip {
-                slip_time += t_end - phase_start;
             }
-            match switch {
-                Switch::Separation => {
-                    let end_state = contact::end_state(kick, &system, x_end, &y_end, t_end);
-                    let peaks = Peaks { normal: peaks[0], tangential: peaks[1], compression: max_compression, slip_time };
-                    let evaluations = stepper.evaluations + extra_evaluations - history_evaluations;
-                    let out = outcome::assemble(kick, &end_state, peaks, evaluations, "accurate-3d")?;
-                    if let Some(s) = sampler.as_deref_mut().filter(|_| SAMPLE) {
-                        s.finish(history::sample(kick, &system, x_end, &y_end, t_end, Some(ContactState::Separation)));
-                    }
-                    return Ok((out, end_state));
+            self.system = self.system.in_phase(Phase { compressing: !self.system.phase.compressing, ..self.system.phase });
+        }
+        end
+    }
+
+    /// The stretch to the phase's end or the accepted point: its end, the
+    /// peaks inside it located, the records (energy, history) taken.
+    #[inline(always)]
+    fn close_stretch(
+        &mut self,
+        end: Option<(f64, Switch)>,
+        (x1, y1, c1, rates_1): (f64, State, Local, Rates),
+        dx: f64,
+        dense: &mut Option<Dense<DIM>>,
+    ) -> Result<Stretch, Kick3dError> {
+        let (kick, system, stepper, point) = (self.kick, &self.system, &mut self.stepper, self.point);
+        let (x_end, y_end, dy_end, c_end) = match (end, dense.as_ref()) {
+            (Some((x, _)), Some(d)) => {
+                let y = d.at(x);
+                self.extra_evaluations += 1;
+                let (dy, c) = system.derivative_and_local(x, &y);
+                (x, y, dy, c)
+            }
+            _ => (x1, y1, *stepper.end_derivative(), c1),
+        };
+        let t_end = system.time(x_end, &y_end);
+        outcome::within_geometry(kick, c_end.compression, t_end)?;
+        let rates_end = if x_end == x1 { rates_1 } else { rates(system, x_end, &y_end, &dy_end, dx) };
+        for k in 0..2 {
+            if point.rates[k] > 0.0 && rates_end[k] <= 0.0 {
+                let d = dense.get_or_insert_with(|| stepper.dense(system));
+                // The ends' rates are known, their signs trusted (`rates_after_step`).
+                let root = roots::brent_from(
+                    |x| {
+                        let y = d.at(x);
+                        rate_for_root(system, x, &y, &d.derivative_at(x), dx, k)
+                    },
+                    (point.x, point.rates[k]),
+                    (x_end, rates_end[k]),
+                    rate_root_tolerance(point.x, x_end, dx),
+                    200,
+                );
+                // No sign change between the ends as evaluated on the
+                // dense output: the maximum is an end, sampled there.
+                if let Some(root) = root {
+                    let y = d.at(root.x);
+                    self.peaks[k].observe(watched(&system.local(root.x, &y))[k], system.time(root.x, &y));
                 }
-                Switch::CompressionRate => {
-                    if phase.compressing && c_end.compression > max_compression.0 {
-                        max_compression = (c_end.compression, t_end);
+            }
+        }
+        let q_end = watched(&c_end);
+        for k in 0..2 {
+            self.peaks[k].observe(q_end[k], t_end);
+        }
+        if self.recorder.is_some() {
+            let sample = self.energy(x_end, &y_end);
+            if let Some(r) = self.recorder.as_deref_mut() {
+                r.push(sample);
+            }
+        }
+        // The history's grid times in this stretch, [t(point), t_end), on its phase.
+        if let Some(s) = self.sampler.as_deref_mut().filter(|_| SAMPLE) {
+            if s.due(t_end, false) {
+                let d = match dense.as_ref() {
+                    Some(d) => *d,
+                    None => {
+                        self.history_evaluations += 3;
+                        self.stepper.dense(&self.system)
                     }
-                    phase.compressing = !phase.compressing;
+                };
+                let system = &self.system;
+                s.fill(t_end, false, |t, _| Ok::<_, Kick3dError>(history::sample_in(kick, system, &d, point.x, x_end, t)))?;
+            }
+        }
+        if t_end > self.horizon {
+            return Err(KickError::NoSeparation {
+                time: self.horizon,
+                reason: format!("3D contact outlasted the horizon of {:.6e} s", self.horizon),
+            }
+            .into());
+        }
+        Ok(Stretch { x: x_end, y: y_end, t: t_end, c: c_end, rates: rates_end })
+    }
+
+    /// What ends the stretch: the switch located, separation landed on by
+    /// the release clock, a change of clock (needing no location: any
+    /// accepted point serves), or nothing.
+    #[inline(always)]
+    fn next(&self, end: Option<(f64, Switch)>, landed: bool, c: &Local) -> Next {
+        let phase = self.system.phase;
+        let (length, v_n, release_scale) = (self.scales.length, self.v_n, self.release_scale);
+        match end {
+            Some((_, switch)) => Next::Switch(switch),
+            None if landed => Next::Switch(Switch::Separation),
+            None => match phase.clock {
+                Clock::Onset if c.compression >= ONSET_SHARE * length || c.compression_rate <= CLOCK_RATE * v_n => Next::Clock(Clock::Time),
+                Clock::Release { .. } if c.compression_rate >= -CLOCK_RATE * release_scale * v_n => Next::Clock(Clock::Time),
+                Clock::Time
+                    if self.release
+                        && !phase.compressing
+                        && c.compression_rate < -2.0 * CLOCK_RATE * release_scale * v_n
+                        && c.compression <= RELEASE_SHARE * self.max_compression.0 =>
+                {
+                    Next::Clock(Clock::Release { start: c.compression.powf(1.0 / f64::from(contact::CLOCK_POWER)) })
                 }
-                Switch::GripSlip => {
-                    if system.rigid && phase.friction == Friction::Grip {
-                        // Sliding starts against the force that could no longer hold it.
-                        phase.slip_direction = -c_end.tangential_force.normalize_or_zero();
-                        phase.slip_start =
-                            c_end.sliding_velocity.dot(phase.slip_direction).min(0.0) - 10.0 * absolute[contact::RELATIVE_VELOCITY];
-                    }
-                    if !system.rigid && phase.friction == Friction::Slip {
-                        // Grip starts with the spring on the cap, k_t |ξ| = μ F_n, where the
-                        // grip's margin starts from zero with zero slope: put the spring
-                        // there, a hair inside (`tangential::GRIP_ENTRY`), so the grip
-                        // does not find its own start again.
-                        let spring = contact::spring_on_cap(&system, &c_end, &y_end);
-                        contact::put_spring(&mut y_end, spring);
-                    } else if !system.rigid {
-                        // A slip's state holds the slider's direction only (contact::SPRING).
-                        let direction = contact::slip_direction_state(&c_end, &y_end);
-                        contact::put_spring(&mut y_end, direction);
-                    }
-                    phase.friction = if phase.friction == Friction::Grip { Friction::Slip } else { Friction::Grip };
+                _ => Next::Advance,
+            },
+        }
+    }
+
+    /// On within the phase from the accepted point x1, the slip direction's
+    /// tolerance read there ([`slip_direction_widening`]).
+    #[inline(always)]
+    fn advance(&mut self, c: &Local, x1: f64, rates_end: Rates) {
+        let mut widened = self.absolute;
+        let factor = slip_direction_widening(&self.system, c, self.scales.time);
+        for i in contact::SPRING..contact::SPRING + 3 {
+            widened[i] *= factor;
+        }
+        self.stepper.set_absolute_tolerance(widened);
+        self.stepper.advance();
+        self.point = Point { x: x1, rates: rates_end };
+    }
+
+    /// The phase goes on on `clock` from the accepted point (x1, y1) at
+    /// time `t_end`, its next step the same in time.
+    #[inline(always)]
+    fn change_clock(&mut self, clock: Clock, x1: f64, y1: &State, t_end: f64) {
+        let rate_before = self.system.clock_rate(x1, y1);
+        let h = self.stepper.next_step() * rate_before;
+        self.system = self.system.in_phase(Phase { clock, ..self.system.phase });
+        let x = if clock == Clock::Time { t_end } else { 0.0 };
+        let rate_after = self.system.clock_rate(x, y1);
+        self.stepper.restart(&self.system, x, *y1);
+        self.stepper.set_next_step(0.7 * h / rate_after);
+        self.stepper.set_max_step(if let Clock::Release { start } = clock { start } else { self.horizon });
+        let dx = self.step_of(clock);
+        self.point = Point { x, rates: rates(&self.system, x, y1, self.stepper.start_derivative(), dx) };
+    }
+
+    /// A phase ends at `t_end`: its slip time counted.
+    #[inline(always)]
+    fn end_phase(&mut self, t_end: f64) {
+        if self.system.phase.friction == Friction::Slip {
+            self.slip_time += t_end - self.phase_start;
+        }
+    }
+
+    /// A switch of regime (damping, grip/slip, geometry, clamp) at the
+    /// stretch's end: the next phase starts there, on the plain tolerance.
+    #[inline(always)]
+    fn switch_phase(&mut self, switch: Switch, stretch: Stretch, dx: f64) -> Result<(), Kick3dError> {
+        let Stretch { x: x_end, y: mut y_end, t: t_end, c: c_end, .. } = stretch;
+        let system = &self.system;
+        let mut phase = system.phase;
+        match switch {
+            Switch::Separation => unreachable!("separation ends the run (Run::separate)"),
+            Switch::CompressionRate => {
+                if phase.compressing && c_end.compression > self.max_compression.0 {
+                    self.max_compression = (c_end.compression, t_end);
                 }
-                Switch::Geometry if system.rigid && phase.geometry == Geometry::Face => {
+                phase.compressing = !phase.compressing;
+            }
+            Switch::GripSlip => {
+                if system.rigid && phase.friction == Friction::Grip {
+                    // Sliding starts against the force that could no longer hold it.
+                    phase.slip_direction = -c_end.tangential_force.normalize_or_zero();
+                    phase.slip_start =
+                        c_end.sliding_velocity.dot(phase.slip_direction).min(0.0) - 10.0 * self.absolute[contact::RELATIVE_VELOCITY];
+                }
+                if !system.rigid && phase.friction == Friction::Slip {
+                    // Grip starts with the spring on the cap, k_t |ξ| = μ F_n, where the
+                    // grip's margin starts from zero with zero slope: put the spring
+                    // there, a hair inside (`tangential::GRIP_ENTRY`), so the grip
+                    // does not find its own start again.
+                    let spring = contact::spring_on_cap(system, &c_end, &y_end);
+                    contact::put_spring(&mut y_end, spring);
+                } else if !system.rigid {
+                    // A slip's state holds the slider's direction only (contact::SPRING).
+                    let direction = contact::slip_direction_state(&c_end, &y_end);
+                    contact::put_spring(&mut y_end, direction);
+                }
+                phase.friction = if phase.friction == Friction::Grip { Friction::Slip } else { Friction::Grip };
+            }
+            Switch::Geometry if system.rigid && phase.geometry == Geometry::Face => {
+                return Err(Kick3dError::UnsupportedScene {
+                    path: "accurate",
+                    reason: "rigid grip (tangential_stiffness = inf) is a constraint on the flat face; the ball reached \
+                             the instep's edge or rounded border, where the normal turns under the contact",
+                });
+            }
+            Switch::Geometry => {
+                if system.patch.is_some() {
                     return Err(Kick3dError::UnsupportedScene {
                         path: "accurate",
-                        reason: "rigid grip (tangential_stiffness = inf) is a constraint on the flat face; the ball reached \
-                                 the instep's edge or rounded border, where the normal turns under the contact",
+                        reason: "the patch contact left the instep's flat face, and an edge under a patch is not modelled: a smaller \
+                                 offset, a convex instep (instep_radius: a cap over the whole face) or the point contact \
+                                 (patch_contact = false) keeps the kick on one surface",
                     });
                 }
-                Switch::Geometry => {
-                    if system.patch.is_some() {
-                        return Err(Kick3dError::UnsupportedScene {
-                            path: "accurate",
-                            reason: "the patch contact left the instep's flat face, and an edge under a patch is not modelled: a smaller \
-                                     offset, a convex instep (instep_radius: a cap over the whole face) or the point contact \
-                                     (patch_contact = false) keeps the kick on one surface",
-                        });
-                    }
-                    phase.geometry = if phase.geometry == Geometry::Face { Geometry::Border } else { Geometry::Face };
-                }
-                Switch::Clamp => phase.clamped = !phase.clamped,
+                phase.geometry = if phase.geometry == Geometry::Face { Geometry::Border } else { Geometry::Face };
             }
-            phases += 1;
-            if phases > MAX_PHASES {
-                return Err(KickError::NoSeparation { time: t_end, reason: format!("more than {MAX_PHASES} phases") }.into());
-            }
-            system = system.in_phase(phase);
-            phase_start = t_end;
-            // A new phase starts at the plain tolerance: the spring's slots change meaning.
-            stepper.set_absolute_tolerance(absolute);
-            stepper.restart(&system, x_end, y_end);
-            point = Point { x: x_end, rates: rates(&system, x_end, &y_end, stepper.start_derivative(), dx) };
+            Switch::Clamp => phase.clamped = !phase.clamped,
         }
+        self.phases += 1;
+        if self.phases > MAX_PHASES {
+            return Err(KickError::NoSeparation { time: t_end, reason: format!("more than {MAX_PHASES} phases") }.into());
+        }
+        self.system = self.system.in_phase(phase);
+        self.phase_start = t_end;
+        // A new phase starts at the plain tolerance: the spring's slots change meaning.
+        self.stepper.set_absolute_tolerance(self.absolute);
+        self.stepper.restart(&self.system, x_end, y_end);
+        self.point = Point { x: x_end, rates: rates(&self.system, x_end, &y_end, self.stepper.start_derivative(), dx) };
+        Ok(())
+    }
+
+    /// Separation: both bodies at the stretch's end, and the summary.
+    #[inline(always)]
+    fn separate(mut self, stretch: &Stretch) -> Result<(Outcome3d, EndState), Kick3dError> {
+        let (kick, system) = (self.kick, &self.system);
+        let end_state = contact::end_state(kick, system, stretch.x, &stretch.y, stretch.t);
+        let peaks =
+            Peaks { normal: self.peaks[0], tangential: self.peaks[1], compression: self.max_compression, slip_time: self.slip_time };
+        let evaluations = self.stepper.evaluations + self.extra_evaluations - self.history_evaluations;
+        let out = outcome::assemble(kick, &end_state, peaks, evaluations, "accurate-3d")?;
+        if let Some(s) = self.sampler.as_deref_mut().filter(|_| SAMPLE) {
+            s.finish(history::sample(kick, &self.system, stretch.x, &stretch.y, stretch.t, Some(ContactState::Separation)));
+        }
+        Ok((out, end_state))
     }
 }
 

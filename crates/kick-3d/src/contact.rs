@@ -473,8 +473,13 @@ impl Relative {
                     };
                     (point, split.ball_rate, sliding, split.force, split.unclamped_force, split.loss_power(boot), None, 0.0, force_rate)
                 } else {
+                    // The shell ball slipping: force and gradient from one gas pressure.
+                    let shell = match &self.law {
+                        AnyLaw::Shell(ball) if self.clamps && slipping => Some(ball.unclamped_and_gradient(delta, rate)),
+                        _ => None,
+                    };
                     let (elastic, normal_force, unclamped_force) = if self.clamps {
-                        let (elastic, raw) = self.law.unclamped_force(delta, rate);
+                        let (elastic, raw) = shell.map_or_else(|| self.law.unclamped_force(delta, rate), |s| (s.0, s.1));
                         (elastic, if self.phase.clamped { 0.0 } else { raw }, raw)
                     } else {
                         let (elastic, force) = self.law.branch_force(delta, rate, self.phase.compressing);
@@ -485,7 +490,7 @@ impl Relative {
                     let force_rate = if !slipping {
                         NormalRate::default()
                     } else if self.clamps {
-                        let (d_delta, d_rate) = self.law.force_gradient(delta, rate);
+                        let (d_delta, d_rate) = shell.map_or_else(|| self.law.force_gradient(delta, rate), |s| (s.2, s.3));
                         NormalRate { rate: d_delta * rate, per_acceleration: d_rate }
                     } else {
                         let (_, d_delta, d_rate) = self.law.branch_force_and_gradient(delta, rate, self.phase.compressing);

@@ -289,6 +289,28 @@ impl ShellBall {
         (elastic, slope, d_elastic, at(1.0) - d_elastic)
     }
 
+    /// (F_el, F_el + β A δ̇, ∂F/∂δ, ∂F/∂δ̇) at (δ, δ̇): `unclamped_force`
+    /// and `force_gradient` (zero gradients where the clamp holds F at 0)
+    /// from one gas pressure, where the two calls computed it twice: what a
+    /// slipping point contact needs per evaluation (kick-3d). The same
+    /// operations in the same order, equal to theirs to the bit (test
+    /// `slip_terms_are_the_separate_calls_to_the_bit`).
+    #[inline(always)]
+    pub fn unclamped_and_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64, f64, f64) {
+        let (elastic, force, gradient) = match self.pressure_terms(compression) {
+            Some((area, gauge, shell, gradient)) => {
+                (area * gauge + shell, area * (gauge + self.shell_damping * compression_rate) + shell, gradient)
+            }
+            None => (0.0, 0.0, self.small_compression_stiffness()),
+        };
+        let d = compression.clamp(0.0, 2.0 * self.radius);
+        let d_compression = gradient + self.shell_damping * 2.0 * PI * (self.radius - d) * compression_rate;
+        if force < 0.0 || (force == 0.0 && d_compression <= 0.0) {
+            return (elastic, force, 0.0, 0.0);
+        }
+        (elastic, force, d_compression, self.loss_slope(d))
+    }
+
     /// Hunt–Crossley's χ of the small-compression limit, β/(p0 + k_s/(2πR)),
     /// s/m: restitution there is `laws::exact_restitution(χ V)`.
     pub fn small_compression_hysteresis(&self) -> f64 {
@@ -384,6 +406,10 @@ mod tests {
                     let former =
                         if force < 0.0 || (force == 0.0 && gradient <= 0.0) { (0.0, 0.0, 0.0) } else { (force, gradient, b.loss_slope(d)) };
                     assert_eq!(format!("{:?}", b.force_and_gradient(delta, rate)), format!("{former:?}"), "δ = {delta}, δ̇ = {rate}");
+                    // `unclamped_and_gradient` is `unclamped_force` and `force_gradient`.
+                    let ((elastic, raw), (d_delta, d_rate)) = (b.unclamped_force(delta, rate), b.force_gradient(delta, rate));
+                    let separate = (elastic, raw, d_delta, d_rate);
+                    assert_eq!(format!("{:?}", b.unclamped_and_gradient(delta, rate)), format!("{separate:?}"), "δ = {delta}, δ̇ = {rate}");
                 }
             }
         }
