@@ -14,7 +14,7 @@ use std::path::Path;
 
 /// [`validate`], then write `out/validation.json` and `page` (links relative to the page).
 pub fn write(measurements: &Path, out: &Path, page: &Path, notes: &Path) -> Result<Validation, String> {
-    let mut v = validate(measurements)?;
+    let mut v = validate(&kick_store::measurements::read(measurements).map_err(|e| e.to_string())?)?;
     let json_path = out.join("validation.json");
     crate::output::write(&json_path, crate::printable::json(&v)?).map_err(|e| e.to_string())?;
     let page_dir = page.parent().unwrap_or(Path::new("."));

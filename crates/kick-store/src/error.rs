@@ -46,6 +46,9 @@ pub enum StoreError {
     Limit(#[from] LimitError),
     #[error(transparent)]
     ShardFlag(#[from] ShardFlagError),
+    /// The measurement file, unreadable or refused.
+    #[error(transparent)]
+    Measurements(#[from] crate::measurements::MeasurementFileError),
     /// A flag the user gave, refused: the message names it.
     #[error("{message}")]
     Flag { flag: &'static str, message: String },

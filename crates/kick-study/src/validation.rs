@@ -31,7 +31,7 @@ use kick_identify::validation::{contact_model, with_ball_speed, ContactModel};
 use rows::{headline, Headline, Role, Row};
 use serde::Serialize;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 const NEEDED_BY: &str = "the validation chapter (kick_study::validation)";
 /// Drop height of the FIFA rebound test, m.
@@ -823,20 +823,19 @@ fn by_status(m: &Measurements) -> Vec<(String, Vec<String>)> {
         .collect()
 }
 
-/// Compare the model with the measurements in `measurements`.
-pub fn validate(measurements: &Path) -> Result<Validation, String> {
-    let m = Measurements::load(measurements).map_err(error)?;
-    let ball = ball_rows(&m)?;
-    let contact = contact_rows(&m)?;
-    let implied = identify(&m)?;
-    let curve_kicks = curve_kicks(&m)?;
-    let flight = flight_rows(&m)?;
-    let measured_flights = measured_flight_rows(&m)?;
-    let free_kicks = free_kicks(&m)?;
+/// Compare the model with the measurements `m` (kick-store reads the file).
+pub fn validate(m: &Measurements) -> Result<Validation, String> {
+    let ball = ball_rows(m)?;
+    let contact = contact_rows(m)?;
+    let implied = identify(m)?;
+    let curve_kicks = curve_kicks(m)?;
+    let flight = flight_rows(m)?;
+    let measured_flights = measured_flight_rows(m)?;
+    let free_kicks = free_kicks(m)?;
     let citations: Vec<(String, String)> = m.sources.iter().map(|s| (s.key.clone(), s.citation())).collect();
     let headline = headline(ball.iter().chain(&contact).chain(&curve_kicks.rows).chain(&flight).chain(&measured_flights));
     Ok(Validation {
-        measurements_file: measurements.display().to_string(),
+        measurements_file: m.file.clone(),
         sources: citations.len(),
         measurements: m.measurements.len(),
         foot: VALIDATION_FOOT,
