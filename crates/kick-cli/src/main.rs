@@ -723,7 +723,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         Command::Fit(Fit::Data { spec, format, out: file }) => {
             let fit = identify::data(&spec, file.as_deref())?;
             out.print(format, &fit)?;
-            fit.converged()
+            Ok(fit.converged()?)
         }
         Command::Fit(Fit::Synthesize { out: dir, name, seed, times, truth, time_offset, also_fit_law }) => {
             out.print(Format::Text, &identify::synthesize(&dir, &name, seed, times, &truth.spec(), time_offset, also_fit_law)?)
@@ -746,7 +746,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         Command::Sweep(a) => {
             let find = |name: &str| {
                 use kick_core::parameters::SetParameter;
-                kick_core::parameters::find_at(ScenarioSpec::LEVELS, name).map_err(|e| e.to_string())
+                kick_core::parameters::find_at(ScenarioSpec::LEVELS, name)
             };
             let settings = sweep::SweepSettings {
                 samples: a.samples,
