@@ -232,12 +232,8 @@ struct HistoryArgs {
 }
 
 impl HistoryArgs {
-    fn request(&self) -> Result<Option<kick_study::history::HistoryRequest>, String> {
-        self.history
-            .as_deref()
-            .map(|path| kick_store::history::request(path, self.samples, self.interval))
-            .transpose()
-            .map_err(|e| e.to_string())
+    fn request(&self) -> Result<Option<kick_study::history::HistoryRequest>, kick_store::StoreError> {
+        self.history.as_deref().map(|path| kick_store::history::request(path, self.samples, self.interval)).transpose()
     }
 }
 
@@ -605,8 +601,8 @@ fn main() -> ExitCode {
 }
 
 /// `--compress [LEVEL]` as given: absent, without a level, or with one.
-fn compression(given: Option<Option<i64>>) -> Result<kick_store::h5::Compression, String> {
-    given.map_or(Ok(kick_store::h5::Compression::None), |level| Ok(kick_store::h5::Compression::deflate(level, "--compress")?))
+fn compression(given: Option<Option<i64>>) -> Result<kick_store::h5::Compression, kick_study::StudyError> {
+    given.map_or(Ok(kick_store::h5::Compression::None), |level| kick_store::h5::Compression::deflate(level, "--compress"))
 }
 
 fn execute(command: Command, out: &mut Out) -> CliResult {
