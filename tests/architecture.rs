@@ -11,8 +11,7 @@ use std::path::{Path, PathBuf};
 
 fn crates() -> Vec<PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("crates");
-    let mut dirs: Vec<PathBuf> =
-        std::fs::read_dir(&root).unwrap().map(|e| e.unwrap().path()).filter(|p| p.join("src").is_dir()).collect();
+    let mut dirs: Vec<PathBuf> = std::fs::read_dir(&root).unwrap().map(|e| e.unwrap().path()).filter(|p| p.join("src").is_dir()).collect();
     dirs.sort();
     dirs
 }
@@ -125,10 +124,8 @@ fn no_crate_has_modules_in_a_circle() {
     for dir in crates() {
         let graph = module_graph(&dir);
         for cycle in cycles(&graph) {
-            let edges: Vec<String> = cycle
-                .iter()
-                .map(|m| format!("{m} -> {:?}", graph[m].iter().filter(|u| cycle.contains(u)).collect::<Vec<_>>()))
-                .collect();
+            let edges: Vec<String> =
+                cycle.iter().map(|m| format!("{m} -> {:?}", graph[m].iter().filter(|u| cycle.contains(u)).collect::<Vec<_>>())).collect();
             knots.push(format!("{}: {}", dir.file_name().unwrap().to_string_lossy(), edges.join("; ")));
         }
     }
@@ -178,4 +175,25 @@ fn kick_paper_depends_on_no_solver_no_hdf5_and_no_thread_pool() {
     let named: Vec<&&str> = dependencies.iter().filter(|d| solving.contains(d)).collect();
     assert!(named.is_empty(), "kick-paper depends on {named:?}");
     assert!(dependencies.contains(&"kick-study") && dependencies.contains(&"kick-store"), "{dependencies:?}");
+}
+
+/// kick-core holds the measurements as the model crates compare against
+/// them and touches no file (issue 32: the model knows nothing of files):
+/// the measurement file's name, opening and TOML parsing are kick-store's
+/// (`kick_store::measurements`), and kick-core's `[dependencies]` name no
+/// TOML parser.
+#[test]
+fn kick_core_reads_no_measurement_file() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let source = code(&std::fs::read_to_string(root.join("crates/kick-core/src/measurements.rs")).unwrap());
+    let found: Vec<&str> = ["std::fs", "fs::", "File::open", "read_to_string", "MEASUREMENTS_FILE", "toml::", "Path"]
+        .into_iter()
+        .filter(|s| source.contains(s))
+        .collect();
+    assert!(found.is_empty(), "crates/kick-core/src/measurements.rs reads a file: {found:?}");
+    let manifest: toml::Table = std::fs::read_to_string(root.join("crates/kick-core/Cargo.toml")).unwrap().parse().unwrap();
+    let dependencies = manifest["dependencies"].as_table().unwrap();
+    assert!(!dependencies.contains_key("toml"), "kick-core's [dependencies] name toml");
+    let store = code(&std::fs::read_to_string(root.join("crates/kick-store/src/measurements.rs")).unwrap());
+    assert!(store.contains("pub const MEASUREMENTS_FILE") && store.contains("pub fn read("), "kick_store::measurements lost its reader");
 }

@@ -3,13 +3,13 @@
 //! `cargo run --release -p kick-3d --example validation_3d`
 
 use kick_3d::validation::curve_kick_comparisons;
-use kick_core::measurements::{Measurements, MEASUREMENTS_FILE};
 use kick_core::Scenario;
+use kick_store::measurements::{read, MEASUREMENTS_FILE};
 use std::path::Path;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(MEASUREMENTS_FILE);
-    let m = Measurements::load(&path)?;
+    let m = read(&path)?;
     let kicks = curve_kick_comparisons(&m, &Scenario::baseline())?;
     for row in &kicks.comparisons {
         println!("{row}\n    {}", row.note);

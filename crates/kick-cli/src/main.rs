@@ -232,12 +232,8 @@ struct HistoryArgs {
 }
 
 impl HistoryArgs {
-    fn request(&self) -> Result<Option<kick_study::history::HistoryRequest>, String> {
-        self.history
-            .as_deref()
-            .map(|path| kick_store::history::request(path, self.samples, self.interval))
-            .transpose()
-            .map_err(|e| e.to_string())
+    fn request(&self) -> Result<Option<kick_study::history::HistoryRequest>, kick_store::StoreError> {
+        self.history.as_deref().map(|path| kick_store::history::request(path, self.samples, self.interval)).transpose()
     }
 }
 
@@ -605,8 +601,8 @@ fn main() -> ExitCode {
 }
 
 /// `--compress [LEVEL]` as given: absent, without a level, or with one.
-fn compression(given: Option<Option<i64>>) -> Result<kick_store::h5::Compression, String> {
-    given.map_or(Ok(kick_store::h5::Compression::None), |level| Ok(kick_store::h5::Compression::deflate(level, "--compress")?))
+fn compression(given: Option<Option<i64>>) -> Result<kick_store::h5::Compression, kick_study::StudyError> {
+    given.map_or(Ok(kick_store::h5::Compression::None), |level| kick_store::h5::Compression::deflate(level, "--compress"))
 }
 
 fn execute(command: Command, out: &mut Out) -> CliResult {
@@ -723,7 +719,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         Command::Fit(Fit::Data { spec, format, out: file }) => {
             let fit = identify::data(&spec, file.as_deref())?;
             out.print(format, &fit)?;
-            fit.converged()
+            Ok(fit.converged()?)
         }
         Command::Fit(Fit::Synthesize { out: dir, name, seed, times, truth, time_offset, also_fit_law }) => {
             out.print(Format::Text, &identify::synthesize(&dir, &name, seed, times, &truth.spec(), time_offset, also_fit_law)?)
@@ -746,7 +742,7 @@ fn execute(command: Command, out: &mut Out) -> CliResult {
         Command::Sweep(a) => {
             let find = |name: &str| {
                 use kick_core::parameters::SetParameter;
-                kick_core::parameters::find_at(ScenarioSpec::LEVELS, name).map_err(|e| e.to_string())
+                kick_core::parameters::find_at(ScenarioSpec::LEVELS, name)
             };
             let settings = sweep::SweepSettings {
                 samples: a.samples,

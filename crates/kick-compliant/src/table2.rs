@@ -57,18 +57,27 @@ pub struct Table2File {
     pub row: Vec<Table2Row>,
 }
 
+/// Why a Table 2 scenario file's text was refused: the parser's message and
+/// where (1-based line and column), never the offending line itself, since
+/// the file given as a scenario file may be any file (`table2 = "/etc/passwd"`).
+/// The caller names the file.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{}{message}", .at.map(|(line, column)| format!("line {line}, column {column}: ")).unwrap_or_default())]
+pub struct Table2ParseError {
+    pub at: Option<(usize, usize)>,
+    pub message: String,
+}
+
 impl Table2File {
-    pub fn parse(text: &str) -> Result<Self, String> {
-        // Position and message, not the offending line: the file given as a
-        // scenario file may be any file (`table2 = "/etc/passwd"`).
-        toml::from_str(text).map_err(|e: toml::de::Error| match e.span() {
-            Some(span) => {
+    pub fn parse(text: &str) -> Result<Self, Table2ParseError> {
+        toml::from_str(text).map_err(|e: toml::de::Error| {
+            let at = e.span().map(|span| {
                 let before = text.get(..span.start).unwrap_or(text);
                 let line = before.matches('\n').count() + 1;
                 let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
-                format!("line {line}, column {column}: {}", e.message().trim())
-            }
-            None => e.message().trim().to_string(),
+                (line, column)
+            });
+            Table2ParseError { at, message: e.message().trim().to_string() }
         })
     }
 
@@ -168,4 +177,19 @@ pub fn round_significant(x: f64, digits: i32) -> f64 {
     }
     // Through decimal text, so 1.8e6 stays 1.8e6 and not 1799999.9999999998.
     format!("{x:.*e}", (digits.max(1) - 1) as usize).parse().unwrap_or(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A refused file says where and which key, not the line's text.
+    #[test]
+    fn a_refused_file_names_the_line_and_the_key() {
+        let e = Table2File::parse("name = \"t\"\nsecret_key = 1\n").unwrap_err();
+        let Table2ParseError { at: Some((2, 1)), message } = &e else { panic!("{e:?}") };
+        assert!(message.contains("secret_key"), "{message}");
+        assert!(e.to_string().starts_with("line 2, column 1: "), "{e}");
+        assert!(!e.to_string().contains("= 1"), "{e}");
+    }
 }

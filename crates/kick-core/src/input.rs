@@ -17,25 +17,46 @@ pub const MAX_TEXT_BYTES: u64 = 16 << 20;
 /// The rows themselves are capped by the reader (`kick_identify::data`).
 pub const MAX_DATA_BYTES: u64 = 64 << 20;
 
+/// Why an input file was not read. The messages name the limit, never the
+/// contents; the caller puts the file's name (or the flag or key that gave
+/// it) in front.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum InputError {
+    /// The operating system's refusal (no such file, no permission).
+    #[error("cannot read: {0}")]
+    Read(String),
+    /// A directory, device, FIFO or socket: `what` says which.
+    #[error("cannot read: {what}; give a file")]
+    NotAFile { what: &'static str },
+    #[error("{bytes} bytes, more than the {cap} bytes an input may have")]
+    TooLarge { bytes: u64, cap: u64 },
+    /// A file that grew past the cap while it was read.
+    #[error("more than the {cap} bytes an input may have")]
+    Grew { cap: u64 },
+    /// `valid_up_to`: the first byte that is not UTF-8.
+    #[error("not UTF-8 text (byte {valid_up_to} is not); give a text file")]
+    NotText { valid_up_to: usize },
+}
+
 /// The whole of `path` as UTF-8 text, at most `cap` bytes; the error says
 /// why, naming neither more nor less than the file and the limit.
-pub fn read_text(path: &Path, cap: u64) -> Result<String, String> {
-    let metadata = std::fs::metadata(path).map_err(|e| format!("cannot read: {e}"))?;
+pub fn read_text(path: &Path, cap: u64) -> Result<String, InputError> {
+    let metadata = std::fs::metadata(path).map_err(|e| InputError::Read(e.to_string()))?;
     if !metadata.is_file() {
         let what = if metadata.is_dir() { "a directory" } else { "not a regular file (a device, FIFO or socket)" };
-        return Err(format!("cannot read: {what}; give a file"));
+        return Err(InputError::NotAFile { what });
     }
     if metadata.len() > cap {
-        return Err(format!("{} bytes, more than the {} bytes an input may have", metadata.len(), cap));
+        return Err(InputError::TooLarge { bytes: metadata.len(), cap });
     }
-    let file = std::fs::File::open(path).map_err(|e| format!("cannot read: {e}"))?;
+    let file = std::fs::File::open(path).map_err(|e| InputError::Read(e.to_string()))?;
     let mut bytes = Vec::with_capacity(metadata.len() as usize);
     // Capped again: the file may grow while read.
-    file.take(cap + 1).read_to_end(&mut bytes).map_err(|e| format!("cannot read: {e}"))?;
+    file.take(cap + 1).read_to_end(&mut bytes).map_err(|e| InputError::Read(e.to_string()))?;
     if bytes.len() as u64 > cap {
-        return Err(format!("more than the {cap} bytes an input may have"));
+        return Err(InputError::Grew { cap });
     }
-    String::from_utf8(bytes).map_err(|e| format!("not UTF-8 text (byte {} is not); give a text file", e.utf8_error().valid_up_to()))
+    String::from_utf8(bytes).map_err(|e| InputError::NotText { valid_up_to: e.utf8_error().valid_up_to() })
 }
 
 #[cfg(test)]
@@ -55,12 +76,14 @@ mod tests {
         let file = dir.join("a.toml");
         std::fs::write(&file, "x = 1\n").unwrap();
         assert_eq!(read_text(&file, 6).unwrap(), "x = 1\n");
-        let message = read_text(&file, 5).unwrap_err();
+        let e = read_text(&file, 5).unwrap_err();
+        assert_eq!(e, InputError::TooLarge { bytes: 6, cap: 5 });
+        let message = e.to_string();
         assert!(message.contains("6 bytes") && message.contains("5 bytes"), "{message}");
         std::fs::write(&file, b"a\xffb").unwrap();
-        let message = read_text(&file, 100).unwrap_err();
+        let message = read_text(&file, 100).unwrap_err().to_string();
         assert!(message.contains("not UTF-8") && message.contains("byte 1"), "{message}");
-        assert!(read_text(&dir, 100).unwrap_err().contains("a directory"));
+        assert!(read_text(&dir, 100).unwrap_err().to_string().contains("a directory"));
         let _ = std::fs::remove_dir_all(&dir);
     }
 
@@ -69,13 +92,13 @@ mod tests {
     #[cfg(unix)]
     #[test]
     fn devices_and_fifos_are_refused_without_reading() {
-        let message = read_text(Path::new("/dev/zero"), MAX_TEXT_BYTES).unwrap_err();
+        let message = read_text(Path::new("/dev/zero"), MAX_TEXT_BYTES).unwrap_err().to_string();
         assert!(message.contains("not a regular file"), "{message}");
         let dir = scratch("fifo");
         let fifo = dir.join("fifo.toml");
         let status = std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
         assert!(status.success());
-        let message = read_text(&fifo, MAX_TEXT_BYTES).unwrap_err();
+        let message = read_text(&fifo, MAX_TEXT_BYTES).unwrap_err().to_string();
         assert!(message.contains("not a regular file"), "{message}");
         let _ = std::fs::remove_dir_all(&dir);
     }

@@ -1,8 +1,8 @@
 //! Published measurements the models are set beside (the validation chapter),
 //! and the typed rows every validation function returns.
 //!
-//! The data live in `experiments/validation/measurements.toml`
-//! ([`MEASUREMENTS_FILE`]): `[[source]]` tables (one citation each) and
+//! The data live in `experiments/validation/measurements.toml`, read by
+//! `kick_store::measurements` (this crate touches no file): `[[source]]` tables (one citation each) and
 //! `[[measurement]]` tables, each a value or range *as published*, in the
 //! published unit ([`Unit`]), with its conditions, the source key, where in
 //! the source it stands, and how far it was checked ([`Checked`]). Code reads
@@ -18,17 +18,13 @@
 
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
-use std::path::Path;
 use thiserror::Error;
 
-/// The data file, relative to the workspace root.
-pub const MEASUREMENTS_FILE: &str = "experiments/validation/measurements.toml";
-
-/// Every way the measurement file can be refused; messages name the file and the key.
+/// Every way measurements can be refused once read; messages name the file
+/// and the key. (A file that cannot be opened or parsed is kick-store's
+/// `MeasurementFileError`.)
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum MeasurementError {
-    #[error("{file}: {message}")]
-    Read { file: String, message: String },
     #[error("{file}: `{key}`: {message}")]
     Invalid { file: String, key: String, message: String },
     #[error("{file}: no measurement `{key}`, which the validation of {needed_by} reads")]
@@ -274,43 +270,35 @@ impl Source {
     }
 }
 
-#[derive(Deserialize)]
+/// One `[[measurement]]` table as written, before [`Measurements::check`].
+#[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawMeasurement {
-    key: String,
-    quantity: String,
+pub struct MeasurementEntry {
+    pub key: String,
+    pub quantity: String,
     #[serde(default)]
-    value: Option<f64>,
+    pub value: Option<f64>,
     #[serde(default)]
-    range: Option<[f64; 2]>,
+    pub range: Option<[f64; 2]>,
     #[serde(default)]
-    spread: Option<f64>,
+    pub spread: Option<f64>,
     #[serde(default)]
-    uncertainty: Option<f64>,
+    pub uncertainty: Option<f64>,
     #[serde(default)]
-    uncertainty_basis: Option<String>,
+    pub uncertainty_basis: Option<String>,
     #[serde(default)]
-    resolution: Option<f64>,
+    pub resolution: Option<f64>,
     #[serde(default)]
-    claim: Option<String>,
-    unit: Unit,
-    conditions: String,
-    source: String,
+    pub claim: Option<String>,
+    pub unit: Unit,
+    pub conditions: String,
+    pub source: String,
     #[serde(default)]
-    cites: Vec<String>,
-    location: String,
-    checked: String,
+    pub cites: Vec<String>,
+    pub location: String,
+    pub checked: String,
     #[serde(default)]
-    note: Option<String>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawFile {
-    #[serde(default)]
-    source: Vec<Source>,
-    #[serde(default)]
-    measurement: Vec<RawMeasurement>,
+    pub note: Option<String>,
 }
 
 /// One published number (or range, or claim in words), as published.
@@ -375,22 +363,14 @@ pub struct Measurements {
 }
 
 impl Measurements {
-    /// Read and check [`MEASUREMENTS_FILE`] or another file of that form.
-    pub fn load(path: &Path) -> Result<Measurements, MeasurementError> {
-        let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| MeasurementError::Read { file: file.clone(), message: e.to_string() })?;
-        Measurements::parse(&text, &file)
-    }
-
-    /// Parse and check: keys unique, every measurement with a known source,
+    /// Check the tables read from `file` (the name errors give): keys unique, every measurement with a known source,
     /// its cited works known, exactly one of value/range (or a claim alone),
     /// finite numbers, low ≤ high, a recognised check status, and every
     /// source a citation (authors, title, container, and a year or why not).
-    pub fn parse(text: &str, file: &str) -> Result<Measurements, MeasurementError> {
-        let raw: RawFile = toml::from_str(text).map_err(|e| MeasurementError::Read { file: file.to_string(), message: e.to_string() })?;
+    pub fn check(file: &str, sources: Vec<Source>, entries: Vec<MeasurementEntry>) -> Result<Measurements, MeasurementError> {
         let invalid = |key: &str, message: String| MeasurementError::Invalid { file: file.to_string(), key: key.to_string(), message };
         let mut source_keys = BTreeSet::new();
-        for s in &raw.source {
+        for s in &sources {
             if !source_keys.insert(s.key.as_str()) {
                 return Err(invalid(&s.key, "source key appears twice".into()));
             }
@@ -404,8 +384,8 @@ impl Measurements {
             }
         }
         let mut keys = BTreeSet::new();
-        let mut measurements = Vec::with_capacity(raw.measurement.len());
-        for m in raw.measurement {
+        let mut measurements = Vec::with_capacity(entries.len());
+        for m in entries {
             let key = m.key.as_str();
             if !keys.insert(m.key.clone()) {
                 return Err(invalid(key, "measurement key appears twice".into()));
@@ -487,7 +467,7 @@ impl Measurements {
                 note: m.note,
             });
         }
-        Ok(Measurements { file: file.to_string(), sources: raw.source, measurements })
+        Ok(Measurements { file: file.to_string(), sources, measurements })
     }
 
     /// The measurement `key`; `needed_by` names the validation asking, for the error.
@@ -674,6 +654,20 @@ impl std::fmt::Display for Comparison {
 mod tests {
     use super::*;
 
+    /// Tables as kick-store's reader parses them (TOML is only a test
+    /// dependency here), then [`Measurements::check`].
+    fn parse(text: &str, file: &str) -> Result<Measurements, MeasurementError> {
+        #[derive(Deserialize)]
+        struct Tables {
+            #[serde(default)]
+            source: Vec<Source>,
+            #[serde(default)]
+            measurement: Vec<MeasurementEntry>,
+        }
+        let t: Tables = toml::from_str(text).unwrap_or_else(|e| panic!("{e}"));
+        Measurements::check(file, t.source, t.measurement)
+    }
+
     const MINIMAL: &str = r#"
 [[source]]
 key = "a"
@@ -694,7 +688,7 @@ checked = "secondary: B (2001), p. 2"
 
     #[test]
     fn units_convert_to_si() {
-        let m = Measurements::parse(MINIMAL, "x.toml").unwrap();
+        let m = parse(MINIMAL, "x.toml").unwrap();
         let t = m.get("t", "test").unwrap();
         assert_eq!(t.interval_si(), Some([9.0e-3, 14.0e-3]));
         assert_eq!(t.checked, Checked::Secondary("B (2001), p. 2".into()));
@@ -705,29 +699,26 @@ checked = "secondary: B (2001), p. 2"
     #[test]
     fn errors_name_the_file_and_the_key() {
         let bad_source = MINIMAL.replace("source = \"a\"", "source = \"zz\"");
-        let e = Measurements::parse(&bad_source, "x.toml").unwrap_err().to_string();
+        let e = parse(&bad_source, "x.toml").unwrap_err().to_string();
         assert!(e.contains("x.toml") && e.contains("`t`") && e.contains("zz"), "{e}");
         let both = MINIMAL.replace("range = [9.0, 14.0]", "range = [9.0, 14.0]\nvalue = 10.0");
-        let e = Measurements::parse(&both, "x.toml").unwrap_err().to_string();
+        let e = parse(&both, "x.toml").unwrap_err().to_string();
         assert!(e.contains("`t`") && e.contains("not both"), "{e}");
         let status = MINIMAL.replace("secondary: B (2001), p. 2", "maybe");
-        let e = Measurements::parse(&status, "x.toml").unwrap_err().to_string();
+        let e = parse(&status, "x.toml").unwrap_err().to_string();
         assert!(e.contains("`t`") && e.contains("maybe"), "{e}");
-        let unit = MINIMAL.replace("\"ms\"", "\"furlong\"");
-        let e = Measurements::parse(&unit, "x.toml").unwrap_err().to_string();
-        assert!(e.contains("x.toml") && e.contains("furlong"), "{e}");
         let reversed = MINIMAL.replace("[9.0, 14.0]", "[14.0, 9.0]");
-        assert!(Measurements::parse(&reversed, "x.toml").unwrap_err().to_string().contains("low above high"));
+        assert!(parse(&reversed, "x.toml").unwrap_err().to_string().contains("low above high"));
         let no_year = MINIMAL.replace("year = 2000\n", "");
-        assert!(Measurements::parse(&no_year, "x.toml").unwrap_err().to_string().contains("`a`"));
-        let m = Measurements::parse(MINIMAL, "x.toml").unwrap();
+        assert!(parse(&no_year, "x.toml").unwrap_err().to_string().contains("`a`"));
+        let m = parse(MINIMAL, "x.toml").unwrap();
         let e = m.get("missing", "the 1D contact").unwrap_err().to_string();
         assert!(e.contains("missing") && e.contains("the 1D contact"), "{e}");
     }
 
     #[test]
     fn comparison_measures_the_miss_from_the_nearest_bound() {
-        let m = Measurements::parse(MINIMAL, "x.toml").unwrap();
+        let m = parse(MINIMAL, "x.toml").unwrap();
         let measured = m.measured("t", "test").unwrap();
         let below = Comparison::new("t", measured.clone(), 5.0e-3, "");
         assert!((below.outside.unwrap() - (5.0e-3 - 9.0e-3)).abs() < 1e-18);
@@ -776,7 +767,7 @@ source = "a"
 location = "table 1"
 checked = "text"
 "#;
-        let m = Measurements::parse(&two, "x.toml").unwrap();
+        let m = parse(&two, "x.toml").unwrap();
         let v = m.measured("v", "test").unwrap();
         let u = v.uncertainty.clone().unwrap();
         assert!(!u.is_stated() && (u.u() - 0.1 / 12f64.sqrt()).abs() < 1e-15, "{u:?}");
@@ -801,10 +792,10 @@ checked = "text"
         ] {
             let bad = two.replace(from, to);
             assert_ne!(bad, two, "{from}");
-            let e = Measurements::parse(&bad, "x.toml").unwrap_err().to_string();
+            let e = parse(&bad, "x.toml").unwrap_err().to_string();
             assert!(e.contains(says), "{e}");
         }
         let on_range = MINIMAL.replace("range = [9.0, 14.0]", "range = [9.0, 14.0]\nresolution = 1.0");
-        assert!(Measurements::parse(&on_range, "x.toml").unwrap_err().to_string().contains("single `value`"));
+        assert!(parse(&on_range, "x.toml").unwrap_err().to_string().contains("single `value`"));
     }
 }

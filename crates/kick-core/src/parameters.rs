@@ -969,11 +969,20 @@ fn edit_distance(a: &str, b: &str) -> usize {
     row[b.len()]
 }
 
+/// A declaration that breaks an invariant of [`check_declarations`]: the
+/// parameter's name and what is wrong.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{name}: {what}")]
+pub struct DeclarationError {
+    pub name: &'static str,
+    pub what: String,
+}
+
 /// The invariants every declared list keeps (this one and kick-flight's),
 /// for their tests: unique snake_case names, doc and symbol, lower levels
 /// first, defaults of the declared shape inside the valid range, sampling
 /// ranges scalar, ordered, inside the valid range (positive for log spacing).
-pub fn check_declarations(list: &[ParameterDef]) -> Result<(), String> {
+pub fn check_declarations(list: &[ParameterDef]) -> Result<(), DeclarationError> {
     let snake_case = |name: &str| {
         name.starts_with(|c: char| c.is_ascii_lowercase())
             && name.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
@@ -981,7 +990,7 @@ pub fn check_declarations(list: &[ParameterDef]) -> Result<(), String> {
             && !name.ends_with('_')
     };
     for (i, p) in list.iter().enumerate() {
-        let fail = |what: &str| Err(format!("{}: {what}", p.name));
+        let fail = |what: &str| Err(DeclarationError { name: p.name, what: what.to_string() });
         if !snake_case(p.name) {
             return fail("not snake_case");
         }
@@ -1039,7 +1048,9 @@ mod tests {
         assert!(check_declarations(&bad).is_err());
         let mut bad = PARAMETERS;
         bad[5].sample = SampleRange::linear(-1.0, 600.0);
-        assert!(check_declarations(&bad).unwrap_err().starts_with("damping"));
+        let e = check_declarations(&bad).unwrap_err();
+        assert_eq!(e.name, "damping");
+        assert!(e.to_string().starts_with("damping: sampling range"), "{e}");
     }
 
     /// Every draw lands in its range, at both ends of [0, 1).

@@ -2,16 +2,16 @@
 //! (numbers for experiments/validation/NOTES.md):
 //! `cargo run --release -p kick-flight --example validation_flight`
 
-use kick_core::measurements::{Measurements, MEASUREMENTS_FILE};
 use kick_flight::validation::{
     ball_comparisons, drag_crisis_comparisons, drag_crisis_model, free_kicks, lift_plateau_bends, measured_flights, spin_decay_bends,
     FREE_KICK_DISTANCE, FREE_KICK_ELEVATION,
 };
+use kick_store::measurements::{read, MEASUREMENTS_FILE};
 use std::path::Path;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(MEASUREMENTS_FILE);
-    let m = Measurements::load(&path)?;
+    let m = read(&path)?;
     println!("{:?}", drag_crisis_model());
     for row in drag_crisis_comparisons(&m)?.iter().chain(&ball_comparisons(&m)?).chain(&measured_flights(&m)?) {
         println!("{row}\n    {}", row.note);

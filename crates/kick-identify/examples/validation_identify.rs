@@ -2,14 +2,14 @@
 //! experiments/validation/NOTES.md):
 //! `cargo run --release -p kick-identify --example validation_identify`
 
-use kick_core::measurements::{Measurements, MEASUREMENTS_FILE};
 use kick_core::Scenario;
 use kick_identify::validation::{contact_comparisons, implied_parameter_study};
+use kick_store::measurements::{read, MEASUREMENTS_FILE};
 use std::path::Path;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(MEASUREMENTS_FILE);
-    let m = Measurements::load(&path)?;
+    let m = read(&path)?;
     println!("== Table 1 baseline");
     for row in contact_comparisons(&m, &Scenario::baseline())? {
         println!("{row}\n    {}", row.note);

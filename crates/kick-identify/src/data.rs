@@ -768,7 +768,8 @@ impl FitSpec {
     /// Read the specification and the history files it names (relative to it).
     pub fn load(path: &Path) -> Result<(FitSpec, Observations), IdentifyError> {
         let name = path.display().to_string();
-        let text = kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| IdentifyError::data(&name, e))?;
+        let text =
+            kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| IdentifyError::data(&name, e.to_string()))?;
         let spec = FitSpec::parse(&text, &name)?;
         let at = Locator { source: &name, toml: (!text.trim_start().starts_with('{')).then_some(text.as_str()) };
         let dir = path.parent().unwrap_or(Path::new("."));
@@ -862,7 +863,8 @@ impl FitSpec {
 fn load_history(dir: &Path, h: &HistorySpec) -> Result<WeightedHistory, IdentifyError> {
     let file = dir.join(&h.file);
     let file_name = file.display().to_string();
-    let csv = kick_core::input::read_text(&file, kick_core::input::MAX_DATA_BYTES).map_err(|e| IdentifyError::data(&file_name, e))?;
+    let csv =
+        kick_core::input::read_text(&file, kick_core::input::MAX_DATA_BYTES).map_err(|e| IdentifyError::data(&file_name, e.to_string()))?;
     let data = HistoryData::parse_csv(&csv, &file_name)?;
     let mut sigma = BTreeMap::new();
     for (k, v) in &h.sigma {

@@ -6,6 +6,7 @@
 //! where each number was read, and a fit of the ball to synthetic plate
 //! tests (`kick fit data` on `results/identification/ball_plate.toml`).
 
+use crate::error::PaperError;
 use crate::figures::{color, save_grid, Panel, Series};
 use crate::links::relative;
 use crate::SweepData;
@@ -24,9 +25,9 @@ pub const FIGURE: &str = "ball_bounce";
 pub const PRESSURE_FIGURE: &str = "ball_pressure";
 /// Draw both figures from the result files, write the synthetic plate
 /// tests and fit them, and write the page; returns every file written.
-pub fn write(out: &Path, figures: &Path, page: &Path, command: &str) -> Result<Vec<PathBuf>, String> {
-    let speeds = SweepData::read(&out.join(FILE)).map_err(|e| e.to_string())?;
-    let pressures = SweepData::read(&out.join(PRESSURE_FILE)).map_err(|e| e.to_string())?;
+pub fn write(out: &Path, figures: &Path, page: &Path, command: &str) -> Result<Vec<PathBuf>, PaperError> {
+    let speeds = SweepData::read(&out.join(FILE))?;
+    let pressures = SweepData::read(&out.join(PRESSURE_FILE))?;
     let mut written = draw_speeds(&speeds, figures)?;
     written.extend(draw_pressures(&pressures, figures)?);
     let (fit, fit_files) = fit_plate_tests(out)?;
@@ -48,7 +49,7 @@ pub fn write(out: &Path, figures: &Path, page: &Path, command: &str) -> Result<V
         },
         command,
     )?;
-    crate::output::write(page, text).map_err(|e| e.to_string())?;
+    crate::output::write(page, text)?;
     written.push(page.to_path_buf());
     Ok(written)
 }
@@ -76,11 +77,11 @@ struct Bounces<'a> {
     max_compression: &'a [f64],
 }
 
-fn bounces(data: &SweepData) -> Result<Bounces<'_>, String> {
-    let set = data.set("bounce").map_err(|e| e.to_string())?;
-    let column = |name: &str| set.column(name).ok_or_else(|| format!("{}: no column {name}", data.path.display()));
+fn bounces(data: &SweepData) -> Result<Bounces<'_>, PaperError> {
+    let set = data.set("bounce")?;
+    let column = |name: &str| set.column(name).ok_or_else(|| PaperError::lacks(&data.path, format!("no column {name}")));
     Ok(Bounces {
-        speed: data.parameter("speed").map_err(|e| e.to_string())?,
+        speed: data.parameter("speed")?,
         pressure: data.parameter("inflation_pressure").ok(),
         restitution: column("restitution")?,
         contact_time: column("contact_time")?,
@@ -120,7 +121,7 @@ fn mm(x: &[f64]) -> Vec<f64> {
 
 /// Restitution, contact time and compression against impact speed at 0.8
 /// bar; the FIFA band (the calibration) and Dowell & Krebs's line beside them.
-fn draw_speeds(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, String> {
+fn draw_speeds(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, PaperError> {
     let b = bounces(data)?;
     let radius = kick_core::DEFAULT_BALL_RADIUS;
     let band = |h: f64| (h / FIFA_DROP).sqrt();
@@ -166,16 +167,15 @@ fn draw_speeds(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, String>
             SeriesLabelPosition::UpperLeft,
         ),
     ];
-    save_grid(figures, FIGURE, "The ball alone against impact speed: square impacts on a rigid plate", (1, 3), &panels)
-        .map_err(|e| e.to_string())
+    Ok(save_grid(figures, FIGURE, "The ball alone against impact speed: square impacts on a rigid plate", (1, 3), &panels)?)
 }
 
 /// Restitution, contact time and compression against inflation pressure
 /// over Law 2's range at three impact speeds; the FIFA band at the test's
 /// pressure and Dowell & Krebs's d at the FIFA drop's speed beside them.
-fn draw_pressures(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, String> {
+fn draw_pressures(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, PaperError> {
     let b = bounces(data)?;
-    let pressure = b.pressure.ok_or_else(|| format!("{}: no inflation_pressure axis", data.path.display()))?;
+    let pressure = b.pressure.ok_or_else(|| PaperError::lacks(&data.path, "no inflation_pressure axis"))?;
     let black = RGBColor(0, 0, 0);
     let kpa = |rows: &[usize]| rows.iter().map(|&i| 1e-3 * pressure[i]).collect::<Vec<f64>>();
     let pick = |rows: &[usize], column: &[f64], scale: f64| rows.iter().map(|&i| scale * column[i]).collect::<Vec<f64>>();
@@ -214,8 +214,7 @@ fn draw_pressures(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, Stri
         panel("Contact time", "t_c (ms)", t, SeriesLabelPosition::LowerLeft),
         panel("Maximum compression", "δ_max (mm)", d, SeriesLabelPosition::LowerLeft),
     ];
-    save_grid(figures, PRESSURE_FIGURE, "The ball alone against inflation pressure over Law 2's range (0.6–1.1 atm)", (1, 3), &panels)
-        .map_err(|e| e.to_string())
+    Ok(save_grid(figures, PRESSURE_FIGURE, "The ball alone against inflation pressure over Law 2's range (0.6–1.1 atm)", (1, 3), &panels)?)
 }
 
 /// The pressure (Pa) at which `column` at the rows of one speed crosses
@@ -229,9 +228,9 @@ fn crossing(pressure: &[f64], rows: &[usize], column: &[f64], target: f64) -> Op
 
 /// The synthetic plate tests (`kick_study::ball::plate_test_spec`) written
 /// as a fit specification, then fitted back (kick-store).
-fn fit_plate_tests(out: &Path) -> Result<(crate::identify::DataFit, Vec<PathBuf>), String> {
+fn fit_plate_tests(out: &Path) -> Result<(crate::identify::DataFit, Vec<PathBuf>), PaperError> {
     let spec_path = out.join(FIT_SPEC);
-    crate::output::write(&spec_path, plate_test_spec(&spec_path)?).map_err(|e| e.to_string())?;
+    crate::output::write(&spec_path, plate_test_spec(&spec_path)?)?;
     let fit = crate::identify::data(&spec_path, Some(&out.join(FIT_REPORT)))?;
     fit.converged()?;
     let mut written = vec![spec_path];
@@ -250,11 +249,11 @@ fn page_text(
     fit: &crate::identify::DataFit,
     links: &Links,
     command: &str,
-) -> Result<String, String> {
+) -> Result<String, PaperError> {
     let s = bounces(speeds)?;
     let p = bounces(pressures)?;
-    let pressure = p.pressure.ok_or("no pressure axis")?;
-    let ball = kick_core::ShellBall::default_with_radius(kick_core::DEFAULT_BALL_RADIUS).map_err(|e| e.to_string())?;
+    let pressure = p.pressure.ok_or_else(|| PaperError::missing("no pressure axis"))?;
+    let ball = kick_core::ShellBall::default_with_radius(kick_core::DEFAULT_BALL_RADIUS)?;
     let radius = ball.radius;
     let atm = |x: f64| x / SEA_LEVEL_PRESSURE;
     let mut w = String::new();

@@ -7,6 +7,7 @@
 //! `paper/timing.md`, the only outputs a second run may change. Errors and
 //! evaluation counts do not depend on the clock: they make the solvers page.
 
+use crate::error::PaperError;
 use crate::figures::{save_grid, Panel, Series};
 use crate::h5::SweepData;
 use crate::printable::Printable;
@@ -81,7 +82,7 @@ impl Printable for BenchReport {
 /// sweep throughput (one run, one binary: kick-study times, kick-store
 /// writes the timed sweeps and work_precision.h5); draw its figure and, if
 /// asked, the pages. Progress lines go to `log`.
-pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, String> {
+pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, PaperError> {
     let min_time = if args.quick { 0.02 } else { args.min_time };
     let t = kick_study::bench::measure(args.quick, args.min_time, args.sweep_samples, log)?;
     let files = file_runs(args.quick)?;
@@ -132,12 +133,12 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, S
         let report_dir = report.parent().unwrap_or(std::path::Path::new(""));
         let figure = crate::links::relative(report_dir, &args.out.join("figures/work_precision.png"));
         let data = crate::links::relative(report_dir, &path);
-        crate::output::write(report, measured.timing_markdown(&figure, &data, &text, &machine)).map_err(|e| e.to_string())?;
+        crate::output::write(report, measured.timing_markdown(&figure, &data, &text, &machine))?;
         written.push(report.clone());
     }
     if let Some(report) = &args.solvers_report {
         let timing = args.report.as_ref().map(|t| crate::links::relative(report.parent().unwrap_or(std::path::Path::new("")), t));
-        crate::output::write(report, measured.solvers_markdown(&text, timing.as_deref())).map_err(|e| e.to_string())?;
+        crate::output::write(report, measured.solvers_markdown(&text, timing.as_deref()))?;
         written.push(report.clone());
     }
     Ok(BenchReport {
@@ -325,10 +326,7 @@ impl Measured<'_> {
             "the shell ball, μ = 0.5".into(),
             "the shell ball's patch (`--patch-contact`) on the knife-edge face, μ = 0.5".into(),
             "the patch on the knife-edge face, rigid grip at μ = ∞".into(),
-            format!(
-                "the patch on a convex instep (`--instep-radius {} --face-yaw 0`), μ = 0.5",
-                ASSUMED_INSTEP_RADIUS
-            ),
+            format!("the patch on a convex instep (`--instep-radius {} --face-yaw 0`), μ = 0.5", ASSUMED_INSTEP_RADIUS),
             "the patch on the convex instep, rigid grip at μ = ∞".into(),
             "the same, on the baseline x86-64 copy".into(),
             format!(
@@ -433,12 +431,12 @@ impl Measured<'_> {
 }
 
 /// Error against cost, log–log, one curve per solver, from the file.
-fn draw(path: &std::path::Path, out: &std::path::Path) -> Result<Vec<PathBuf>, String> {
-    let data = SweepData::read(path).map_err(|e| e.to_string())?;
-    let names = data.names.clone().ok_or("work_precision.h5 has no solver names")?;
-    let set = data.set("bench").map_err(|e| e.to_string())?;
-    let error = set.column("max_error").ok_or("no max_error")?;
-    let seconds = set.column("seconds_per_scenario").ok_or("no seconds_per_scenario")?;
+fn draw(path: &std::path::Path, out: &std::path::Path) -> Result<Vec<PathBuf>, PaperError> {
+    let data = SweepData::read(path)?;
+    let names = data.names.clone().ok_or_else(|| PaperError::missing("work_precision.h5 has no solver names"))?;
+    let set = data.set("bench")?;
+    let error = set.column("max_error").ok_or_else(|| PaperError::missing("no max_error"))?;
+    let seconds = set.column("seconds_per_scenario").ok_or_else(|| PaperError::missing("no seconds_per_scenario"))?;
     let colors = crate::figures::COLORS;
     let mut solvers: Vec<&str> = Vec::new();
     for n in &names {
@@ -468,7 +466,7 @@ fn draw(path: &std::path::Path, out: &std::path::Path) -> Result<Vec<PathBuf>, S
         y_from_zero: false,
         legend: SeriesLabelPosition::UpperRight,
     };
-    save_grid(out, "work_precision", "kick bench", (1, 1), &[panel]).map_err(|e| e.to_string())
+    Ok(save_grid(out, "work_precision", "kick bench", (1, 1), &[panel])?)
 }
 
 #[cfg(test)]

@@ -1,6 +1,7 @@
 //! The force history of one off-center kick (Figure `3d_force_history`):
 //! written by kick-store's history writer, then drawn from that file.
 
+use crate::error::PaperError;
 use kick_store::h5::H5Error;
 use kick_store::ResultFile;
 use kick_study::history::ContactState;
@@ -24,12 +25,12 @@ pub fn force_history_command(out: &Path) -> String {
 /// to `out/3d_force_history.h5` by this module's writer, then drawn from that
 /// file into `figures/3d_force_history.{png,svg}`. Returns the command that
 /// writes the same file alone, the summary and the files.
-pub fn reproduce_force_history(out: &Path, figures: &Path) -> Result<(String, String, Vec<PathBuf>), String> {
+pub fn reproduce_force_history(out: &Path, figures: &Path) -> Result<(String, String, Vec<PathBuf>), PaperError> {
     let path = out.join(kick_store::force_history::FILE);
     let command = force_history_command(out);
-    let run = kick_store::force_history::run(out, FIGURE_SAMPLES).map_err(|e| e.to_string())?;
+    let run = kick_store::force_history::run(out, FIGURE_SAMPLES)?;
     let mut written = run.written.clone();
-    written.extend(force_history_figure(&path, figures).map_err(|e| e.to_string())?);
+    written.extend(force_history_figure(&path, figures)?);
     Ok((command, kick_study::Printable::text(&run), written))
 }
 

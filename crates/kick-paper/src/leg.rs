@@ -1,6 +1,7 @@
 //! `kick leg`'s files: the figure data (kick-study's leg levels, written by
 //! kick-store's sweep writer) and the figures drawn back from them.
 
+use crate::error::PaperError;
 use kick_study::leg::{LegReport, LegSettings, EFFECTIVE_MASS_TABLE, EXIT_SPEED_TABLE};
 use std::path::PathBuf;
 
@@ -15,13 +16,13 @@ pub struct LegRun {
 }
 
 /// [`kick_study::leg::leg`]; with `sweep_out` the figure data and figures too.
-pub fn leg(run: &LegRun) -> Result<LegReport, String> {
-    let mut report = kick_study::leg::leg(&run.settings).map_err(|e| e.to_string())?;
+pub fn leg(run: &LegRun) -> Result<LegReport, PaperError> {
+    let mut report = kick_study::leg::leg(&run.settings)?;
     if let Some(dir) = &run.sweep_out {
         let (grid, axis) = report.figure_levels();
         let tables: [(&str, &dyn kick_study::level::Level); 2] = [(EFFECTIVE_MASS_TABLE, &grid), (EXIT_SPEED_TABLE, &axis)];
         let command = if run.command.is_empty() { "kick leg" } else { run.command.as_str() };
-        report.written.extend(crate::run::write_levels(dir, &tables, "kick leg (command line)", command).map_err(|e| e.to_string())?);
+        report.written.extend(crate::run::write_levels(dir, &tables, "kick leg (command line)", command)?);
         report.written.extend(draw_figures(dir, &dir.join("figures"))?);
     }
     Ok(report)
@@ -30,16 +31,16 @@ pub fn leg(run: &LegRun) -> Result<LegReport, String> {
 /// The leg's figures, drawn from the two result files (not re-computed):
 /// effective mass against knee flexion for several ankle angles (locked and
 /// free ankle), and the 1D exit speed against effective mass (Section 14.1).
-fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<std::path::PathBuf>, String> {
+fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<std::path::PathBuf>, PaperError> {
     use crate::figures::{color, save_grid, Panel, Series};
     use crate::SweepData;
     use plotters::prelude::{RGBColor, SeriesLabelPosition};
-    let grid = SweepData::read(&results.join(format!("{EFFECTIVE_MASS_TABLE}.h5"))).map_err(|e| e.to_string())?;
-    let knee = grid.parameter("knee").map_err(|e| e.to_string())?;
-    let ankle = grid.parameter("ankle").map_err(|e| e.to_string())?;
+    let grid = SweepData::read(&results.join(format!("{EFFECTIVE_MASS_TABLE}.h5")))?;
+    let knee = grid.parameter("knee")?;
+    let ankle = grid.parameter("ankle")?;
     let mut panels = Vec::new();
     for (set, title) in [("locked-ankle", "Locked ankle"), ("free-ankle", "Free ankle")] {
-        let mass = grid.set(set).map_err(|e| e.to_string())?.column("effective_mass").ok_or("no effective_mass column")?;
+        let mass = grid.set(set)?.column("effective_mass").ok_or_else(|| PaperError::missing("no effective_mass column"))?;
         let series = [0.0, 30.0, 60.0, 90.0]
             .iter()
             .enumerate()
@@ -59,13 +60,12 @@ fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<
             legend: SeriesLabelPosition::UpperRight,
         });
     }
-    let mut written =
-        save_grid(out, "leg_effective_mass", "Articulated leg (de Leva 1996 segments)", (1, 2), &panels).map_err(|e| e.to_string())?;
-    let speeds = SweepData::read(&results.join(format!("{EXIT_SPEED_TABLE}.h5"))).map_err(|e| e.to_string())?;
-    let foot_mass = speeds.parameter("foot_mass").map_err(|e| e.to_string())?;
-    let set = speeds.set("accurate").map_err(|e| e.to_string())?;
-    let v = set.column("v_ball_out").ok_or("no v_ball_out column")?;
-    let bound = set.column("elastic_bound_v_ball_out").ok_or("no elastic bound column")?;
+    let mut written = save_grid(out, "leg_effective_mass", "Articulated leg (de Leva 1996 segments)", (1, 2), &panels)?;
+    let speeds = SweepData::read(&results.join(format!("{EXIT_SPEED_TABLE}.h5")))?;
+    let foot_mass = speeds.parameter("foot_mass")?;
+    let set = speeds.set("accurate")?;
+    let v = set.column("v_ball_out").ok_or_else(|| PaperError::missing("no v_ball_out column"))?;
+    let bound = set.column("elastic_bound_v_ball_out").ok_or_else(|| PaperError::missing("no elastic bound column"))?;
     let panel = Panel {
         title: "Exit speed against effective foot mass (baseline contact)".into(),
         x_label: "effective foot mass m_f (kg, log scale)".into(),
@@ -78,6 +78,6 @@ fn draw_figures(results: &std::path::Path, out: &std::path::Path) -> Result<Vec<
         y_from_zero: true,
         legend: SeriesLabelPosition::LowerRight,
     };
-    written.extend(save_grid(out, "leg_exit_speed", "Diminishing returns of effective mass", (1, 1), &[panel]).map_err(|e| e.to_string())?);
+    written.extend(save_grid(out, "leg_exit_speed", "Diminishing returns of effective mass", (1, 1), &[panel])?);
     Ok(written)
 }

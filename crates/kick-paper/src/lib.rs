@@ -11,6 +11,7 @@
 
 pub mod ball;
 pub mod bench;
+pub mod error;
 pub mod figures;
 pub mod force_history;
 pub mod free_kick;
@@ -26,6 +27,7 @@ pub mod three_d;
 pub mod validation;
 
 // The modules of kick-study and kick-store under the names this crate's files use.
+pub use error::PaperError;
 pub(crate) use kick_store::{compare, h5, output, provenance, run, shard};
 pub(crate) use kick_store::{ResultFile, SweepData};
 pub(crate) use kick_study::{checks, printable, units};

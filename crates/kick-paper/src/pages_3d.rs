@@ -4,6 +4,7 @@
 //! from those files or computed by kick_study::numbers_3d at generation
 //! time (this module only writes).
 
+use crate::error::PaperError;
 use crate::free_kick;
 use crate::h5::SweepData;
 use crate::links::relative;
@@ -23,13 +24,9 @@ pub const FORCE_HISTORY_FIGURE: &str = "3d_force_history.png";
 /// Kicks of the box whose accuracy the page states.
 pub const ACCURACY_KICKS: u64 = 200;
 
-fn err(e: impl std::fmt::Display) -> String {
-    e.to_string()
-}
-
 /// The scene path's launch-velocity error against `accurate` on the
 /// force-history kick at two steps, and the observed order, in words.
-fn scene_errors() -> Result<String, String> {
+fn scene_errors() -> Result<String, PaperError> {
     let Some(errors) = numbers_3d::scene_errors()? else {
         return Ok("first order in the step (not built here: cargo feature `rapier` off)".into());
     };
@@ -49,33 +46,36 @@ struct Grid2 {
 }
 
 impl Grid2 {
-    fn read(path: &Path) -> Result<Grid2, String> {
-        let data = crate::three_d::read_grid_file(path).map_err(err)?;
+    fn read(path: &Path) -> Result<Grid2, PaperError> {
+        let data = crate::three_d::read_grid_file(path)?;
         let curves = curves(&data);
         Ok(Grid2 { data, curves })
     }
     fn x(&self) -> &[f64] {
         &self.data.parameters[0].1
     }
-    fn column(&self, name: &str) -> Result<&[f64], String> {
-        self.data.sets[0].column(name).ok_or_else(|| format!("{}: no column {name}", self.data.path.display()))
+    fn column(&self, name: &str) -> Result<&[f64], PaperError> {
+        self.data.sets[0].column(name).ok_or_else(|| PaperError::lacks(&self.data.path, format!("no column {name}")))
     }
     /// The value of `name` on curve `c` at the first-axis value nearest `x`.
-    fn at(&self, c: usize, x: f64, name: &str) -> Result<(f64, f64), String> {
+    fn at(&self, c: usize, x: f64, name: &str) -> Result<(f64, f64), PaperError> {
         let column = self.column(name)?;
         let rows = &self.curves[c].1;
-        let row = *rows.iter().min_by(|&&a, &&b| (self.x()[a] - x).abs().total_cmp(&(self.x()[b] - x).abs())).ok_or("empty curve")?;
+        let row = *rows
+            .iter()
+            .min_by(|&&a, &&b| (self.x()[a] - x).abs().total_cmp(&(self.x()[b] - x).abs()))
+            .ok_or_else(|| PaperError::missing("empty curve"))?;
         Ok((self.x()[row], column[row]))
     }
-    fn last(&self, c: usize, name: &str) -> Result<(f64, f64), String> {
-        let row = *self.curves[c].1.last().ok_or("empty curve")?;
+    fn last(&self, c: usize, name: &str) -> Result<(f64, f64), PaperError> {
+        let row = *self.curves[c].1.last().ok_or_else(|| PaperError::missing("empty curve"))?;
         Ok((self.x()[row], self.column(name)?[row]))
     }
 }
 
 /// `paper/3d.md`: the model, the paths and their accuracy, the figures and
 /// what they show, from `out/3d_*.h5` (links relative to `report_dir`).
-pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
+pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
     let figures = out.join("figures");
     let fig = relative(report_dir, &figures);
     let res = relative(report_dir, out).trim_end_matches('/').to_string();
@@ -225,7 +225,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
         let (_, s0) = g.at(c, 0.0, "spin_rpm")?;
         let rpm = g.column("spin_rpm")?;
         let rising = rows.windows(2).all(|p| rpm[p[1]] >= rpm[p[0]]);
-        let peak = *rows.iter().max_by(|&&a, &&b| rpm[a].total_cmp(&rpm[b])).ok_or("empty curve")?;
+        let peak = *rows.iter().max_by(|&&a, &&b| rpm[a].total_cmp(&rpm[b])).ok_or_else(|| PaperError::missing("empty curve"))?;
         if rising {
             rising_curves.push(label.clone());
         } else {
@@ -262,9 +262,9 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
     }
     let elevation = g.column("launch_angle")?.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     // Spin added by friction 0 -> 1 at 5 cm, solved here (Table 1's kick, as the validation chapter's sweep).
-    let (spin0, spin1, optimum) = numbers_3d::friction_at_five_cm().map_err(err)?;
+    let (spin0, spin1, optimum) = numbers_3d::friction_at_five_cm()?;
     if spin0.abs() >= crate::units::ZERO_SPIN {
-        return Err(format!("the frictionless kick at 5 cm spins at {spin0} rad/s: the page says zero to rounding"));
+        return Err(PaperError::Claim(format!("the frictionless kick at 5 cm spins at {spin0} rad/s: the page says zero to rounding")));
     }
     let gain5 = spin1 - spin0;
     let tilt5 = (0.05 / k.ball_radius).asin().to_degrees();
@@ -426,8 +426,8 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, String> {
 
 /// The 3D page's spin against friction beside Asai et al.'s trend, and what
 /// in the model sets it ([`numbers_3d::friction_spin`]).
-fn friction_section() -> Result<String, String> {
-    let (rows, rigid) = numbers_3d::friction_spin().map_err(err)?;
+fn friction_section() -> Result<String, PaperError> {
+    let (rows, rigid) = numbers_3d::friction_spin()?;
     let mut w = String::new();
     let _ = writeln!(w, "## Spin against friction, beside Asai et al.\n");
     let header: Vec<String> = numbers_3d::SPIN_FRICTIONS.iter().map(|&mu| format!("μ = {}", value_label(mu))).collect();
@@ -511,16 +511,18 @@ fn friction_section() -> Result<String, String> {
 
 /// `paper/flight.md`: the free kicks of [`crate::free_kick`] from `out/flight/free_kick.h5`,
 /// and the flight outcomes of experiment grids.
-pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
+pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
     let fig = relative(report_dir, &out.join("figures"));
     let path = out.join("flight").join(free_kick::FILE);
     let file = relative(report_dir, &path);
-    let data = SweepData::read(&path).map_err(err)?;
-    let set = |name: &str| data.set(name).map_err(err);
+    let data = SweepData::read(&path)?;
+    let set = |name: &str| data.set(name);
     let (launch, goal, wall) = (set("launch")?, set("goal")?, set("wall")?);
-    let col = |s: &crate::h5::SetData, name: &str| s.column(name).map(<[f64]>::to_vec).ok_or_else(|| format!("{file}: no {name}"));
-    let offsets = data.parameter(kick_core::parameters::OFFSET.name).map_err(err)?.to_vec();
-    let frictions = data.parameter("friction").map_err(err)?.to_vec();
+    let col = |s: &crate::h5::SetData, name: &str| {
+        s.column(name).map(<[f64]>::to_vec).ok_or_else(|| PaperError::missing(format!("{file}: no {name}")))
+    };
+    let offsets = data.parameter(kick_core::parameters::OFFSET.name)?.to_vec();
+    let frictions = data.parameter("friction")?.to_vec();
     let (speed, rev, elev, az) =
         (col(launch, "speed")?, col(launch, "spin_rev_per_s")?, col(launch, "launch_angle")?, col(launch, "launch_azimuth")?);
     let (vx, vy) = (col(launch, "launch_velocity_x")?, col(launch, "launch_velocity_y")?);
@@ -578,8 +580,8 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
         short(w_hi / tau),
         realistic
             .iter()
-            .map(|&r| -> Result<String, String> {
-                let a = numbers_3d::free_kick_launch(offsets[r], frictions[r], d).map_err(err)?;
+            .map(|&r| -> Result<String, PaperError> {
+                let a = numbers_3d::free_kick_launch(offsets[r], frictions[r], d)?;
                 Ok(format!(
                     "{} ({} m/s, {}; at launch Re = {}, S = {}, C_D = {}, C_L = {})",
                     describe(r),
@@ -626,7 +628,11 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
     // Deflection per cm of offset, and the friction spread, where the ball reaches the goal line.
     let reach: Vec<usize> = (0..data.rows()).filter(|&r| gc[r] == 1.0).collect();
     let curve = |r: usize| gy[r] - d * vy[r] / vx[r];
-    let widest = reach.iter().copied().max_by(|&a, &b| curve(a).abs().total_cmp(&curve(b).abs())).ok_or("no kick reaches the goal line")?;
+    let widest = reach
+        .iter()
+        .copied()
+        .max_by(|&a, &b| curve(a).abs().total_cmp(&curve(b).abs()))
+        .ok_or_else(|| PaperError::missing("no kick reaches the goal line"))?;
     let same_offset: Vec<usize> = reach.iter().copied().filter(|&r| offsets[r] == offsets[widest]).collect();
     let (cmin, cmax) = same_offset.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &r| (a.min(curve(r)), b.max(curve(r))));
     let last_offset = reach.iter().map(|&r| offsets[r]).fold(0.0, f64::max);
@@ -683,11 +689,11 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, String> {
 /// to spin decay (off: no measured rate), for the middle of Physics World's
 /// free kicks, flown when the page is written
 /// (`kick_flight::validation::{lift_plateau_bends, spin_decay_bends}`).
-pub fn lift_and_decay_section() -> Result<String, String> {
+pub fn lift_and_decay_section() -> Result<String, PaperError> {
     use numbers_3d::{FREE_KICK_DISTANCE, FREE_KICK_ELEVATION};
     let (v, w) = free_kick::PLATEAU_KICK;
     let d = FREE_KICK_DISTANCE;
-    let (bends, decays) = numbers_3d::plateau_and_decay((v, w), &free_kick::PLATEAU_LIFTS, &free_kick::SPIN_KEPT).map_err(err)?;
+    let (bends, decays) = numbers_3d::plateau_and_decay((v, w), &free_kick::PLATEAU_LIFTS, &free_kick::SPIN_KEPT)?;
     let base = &bends[0];
     let mut t = String::new();
     let _ = writeln!(
@@ -740,18 +746,18 @@ pub fn lift_and_decay_section() -> Result<String, String> {
 
 /// The free-kick file, its figures and both pages: `out/flight/free_kick.h5`,
 /// `out/figures/flight_*`, `report_dir/3d.md` and `report_dir/flight.md`.
-pub fn write_all(out: &Path, report_dir: &Path, log: &mut dyn Write) -> Result<Vec<PathBuf>, String> {
+pub fn write_all(out: &Path, report_dir: &Path, log: &mut dyn Write) -> Result<Vec<PathBuf>, PaperError> {
     let _ = writeln!(log, "\n# free kicks -> {}", out.join("flight").join(free_kick::FILE).display());
     let path = free_kick::write(out)?;
-    let mut drawn = free_kick::figures(&path, &out.join("figures")).map_err(err)?;
+    let mut drawn = free_kick::figures(&path, &out.join("figures"))?;
     let aims = free_kick::aims()?;
-    drawn.extend(free_kick::aim_figure(&aims, &out.join("figures")).map_err(err)?);
+    drawn.extend(free_kick::aim_figure(&aims, &out.join("figures"))?);
     let _ = writeln!(log, "figures: {} files in {}", drawn.len(), out.join("figures").display());
     let mut written = vec![path];
-    written.push(crate::output::write(report_dir.join("3d.md"), page_3d(out, report_dir)?).map_err(err)?);
+    written.push(crate::output::write(report_dir.join("3d.md"), page_3d(out, report_dir)?)?);
     let mut flight = page_flight(out, report_dir)?;
     flight.push_str(&aim_section(&aims, &relative(report_dir, &out.join("figures"))));
-    written.push(crate::output::write(report_dir.join("flight.md"), flight).map_err(err)?);
+    written.push(crate::output::write(report_dir.join("flight.md"), flight)?);
     Ok(written)
 }
 

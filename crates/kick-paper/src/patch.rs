@@ -5,6 +5,7 @@
 //! (`kick_study::patch`), kick-store writes and reads them
 //! (`kick_store::patch`); every number on the page is read from the files.
 
+use crate::error::PaperError;
 use crate::figures::{color, save_grid, FigureError, Panel, Series};
 use crate::links::relative;
 use crate::ResultFile;
@@ -23,10 +24,6 @@ use std::path::{Path, PathBuf};
 pub const SPIN_FIGURE: &str = "3d_patch_spin";
 /// The history figure.
 pub const HISTORY_FIGURE: &str = "3d_patch_history";
-
-fn h5(e: impl std::fmt::Display) -> String {
-    e.to_string()
-}
 
 fn line_style(contact: usize, s: Series) -> Series {
     if CONTACTS[contact].patch {
@@ -134,10 +131,10 @@ pub struct PatchHistory {
 }
 
 /// The history file read back; `sense` is friction's sign of ω_z.
-pub fn read_history(path: &Path, sense: f64) -> Result<PatchHistory, String> {
-    let f = ResultFile::open(path).map_err(h5)?;
-    let v = |name: &str| f.values(&format!("history/{name}")).map_err(h5);
-    let vector = |name: &str| -> Result<[Vec<f64>; 3], String> {
+pub fn read_history(path: &Path, sense: f64) -> Result<PatchHistory, PaperError> {
+    let f = ResultFile::open(path)?;
+    let v = |name: &str| f.values(&format!("history/{name}"));
+    let vector = |name: &str| -> Result<[Vec<f64>; 3], PaperError> {
         Ok([v(&format!("{name}_x"))?, v(&format!("{name}_y"))?, v(&format!("{name}_z"))?])
     };
     let time = v("time")?;
@@ -155,9 +152,9 @@ pub fn read_history(path: &Path, sense: f64) -> Result<PatchHistory, String> {
         arm_mm: arm,
         compression_mm: v("compression")?.iter().map(|d| 1e3 * d).collect(),
         state: v("contact_state")?,
-        radius_mm: 1e3 * f.scalar("fixed/ball_radius").map_err(h5)?,
-        friction: f.scalar("fixed/friction").map_err(h5)?,
-        offset: f.scalar("fixed/offset").map_err(h5)?,
+        radius_mm: 1e3 * f.scalar("fixed/ball_radius")?,
+        friction: f.scalar("fixed/friction")?,
+        offset: f.scalar("fixed/offset")?,
     })
 }
 
@@ -230,13 +227,13 @@ pub fn draw_history(h: &PatchHistory, figures: &Path) -> Result<Vec<PathBuf>, Fi
 }
 
 /// `kick reproduce`'s step: both files (kick-store) and both figures; returns the files written.
-pub fn write(out: &Path, figures: &Path, measurements: &Path, command: &str) -> Result<Vec<PathBuf>, String> {
-    let mut written = kick_store::patch::run(out, measurements, command).map_err(h5)?;
-    let data = read_spin(&out.join(SPIN_FILE)).map_err(h5)?;
-    let asai = read_asai(&out.join(SPIN_FILE)).map_err(h5)?;
-    written.extend(draw_spin(&data, &asai, figures).map_err(h5)?);
+pub fn write(out: &Path, figures: &Path, measurements: &Path, command: &str) -> Result<Vec<PathBuf>, PaperError> {
+    let mut written = kick_store::patch::run(out, measurements, command)?;
+    let data = read_spin(&out.join(SPIN_FILE))?;
+    let asai = read_asai(&out.join(SPIN_FILE))?;
+    written.extend(draw_spin(&data, &asai, figures)?);
     let history = read_history(&out.join(HISTORY_FILE), data.friction_sense())?;
-    written.extend(draw_history(&history, figures).map_err(h5)?);
+    written.extend(draw_history(&history, figures)?);
     Ok(written)
 }
 /// The runs of a state, total time (ms).
@@ -260,7 +257,7 @@ fn time_in(h: &PatchHistory, code: f64) -> f64 {
 
 /// The page's section on the patch (`paper/3d.md`), from the two files;
 /// empty when they were not made.
-pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
+pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
     let (spin_path, history_path) = (out.join(SPIN_FILE), out.join(HISTORY_FILE));
     if !spin_path.exists() || !history_path.exists() {
         return Ok(String::new());
@@ -418,10 +415,11 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
 
     let h = read_history(&history_path, sense)?;
     let n = h.time_ms.len();
-    let peak = (0..n).max_by(|&a, &b| h.force_kn[a].total_cmp(&h.force_kn[b])).ok_or("empty history")?;
+    let peak = (0..n).max_by(|&a, &b| h.force_kn[a].total_cmp(&h.force_kn[b])).ok_or_else(|| PaperError::missing("empty history"))?;
     let lever: Vec<usize> = (0..n).filter(|&i| h.lever_mm[i].is_finite()).collect();
-    let lowest = *lever.iter().min_by(|&&a, &&b| h.lever_mm[a].total_cmp(&h.lever_mm[b])).ok_or("no lever")?;
-    let highest = *lever.iter().max_by(|&&a, &&b| h.lever_mm[a].total_cmp(&h.lever_mm[b])).ok_or("no lever")?;
+    let lowest = *lever.iter().min_by(|&&a, &&b| h.lever_mm[a].total_cmp(&h.lever_mm[b])).ok_or_else(|| PaperError::missing("no lever"))?;
+    let highest =
+        *lever.iter().max_by(|&&a, &&b| h.lever_mm[a].total_cmp(&h.lever_mm[b])).ok_or_else(|| PaperError::missing("no lever"))?;
     // Where the lever changes sign (rows with a force on both sides).
     let turns: Vec<f64> = lever
         .windows(2)
@@ -430,7 +428,7 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, String> {
         })
         .map(|p| 0.5 * (h.time_ms[p[0]] + h.time_ms[p[1]]))
         .collect();
-    let arm_min = (0..n).min_by(|&a, &b| h.arm_mm[a].total_cmp(&h.arm_mm[b])).ok_or("empty history")?;
+    let arm_min = (0..n).min_by(|&a, &b| h.arm_mm[a].total_cmp(&h.arm_mm[b])).ok_or_else(|| PaperError::missing("empty history"))?;
     let contact = h.time_ms[n - 1];
     let slip = time_in(&h, ContactState::Slip.code());
     let slips = crate::force_history::phases(&h.time_ms, &h.state, ContactState::Slip.code());

@@ -1,6 +1,7 @@
 //! `kick reproduce`: every experiment, the figures, the cross-model checks and
 //! the reproduction report.
 
+use crate::error::PaperError;
 use crate::identify::report::{LAWS, SYNTHETIC_FIT, SYNTHETIC_LAW_FIT, SYNTHETIC_WRONG_LAW_FIT, TABLE2_FIT};
 use crate::links::relative;
 use crate::printable::Printable;
@@ -75,15 +76,15 @@ pub const SECTIONS: [(&str, &str); 10] = [
 /// Before any step: nothing the reproduction writes (the report and the
 /// pages beside it, anything in the results folder) is a file it reads
 /// (every file below the experiments folder), by `kick_store::output::check_paths`.
-pub fn check_paths(args: &ReproduceSettings) -> Result<(), String> {
+pub fn check_paths(args: &ReproduceSettings) -> Result<(), PaperError> {
     let inputs: Vec<PathBuf> = crate::compare::files_below(&args.experiments, &[]).into_iter().map(|f| args.experiments.join(f)).collect();
     let reads: Vec<&Path> = inputs.iter().map(PathBuf::as_path).collect();
-    crate::output::check_output(&args.report, "--report", "md", &reads).map_err(|e| e.to_string())?;
+    crate::output::check_output(&args.report, "--report", "md", &reads)?;
     let report_dir = args.report.parent().unwrap_or(Path::new(""));
     let pages: Vec<PathBuf> = SECTIONS.iter().map(|(page, _)| report_dir.join(page)).collect();
     let mut writes: Vec<crate::output::Target> = pages.iter().map(|path| crate::output::Target::File { flag: "--report", path }).collect();
     writes.push(crate::output::Target::Folder { flag: "--out", path: &args.out });
-    crate::output::check_paths(&writes, &reads).map_err(|e| e.to_string())
+    Ok(crate::output::check_paths(&writes, &reads)?)
 }
 
 /// What a reproduction did.
@@ -281,7 +282,7 @@ fn leg_call(args: &ReproduceSettings) -> Call {
 
 /// The steps of a reproduction with `args`, every call's arguments filled
 /// in: what `kick reproduce --list` prints and [`reproduce`] runs.
-pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
+pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, PaperError> {
     let toml_files = |dir: &Path| -> Result<Vec<PathBuf>, std::io::Error> {
         let mut files: Vec<PathBuf> = std::fs::read_dir(dir)?
             .filter_map(|e| e.ok().map(|e| e.path()))
@@ -290,9 +291,9 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
         files.sort();
         Ok(files)
     };
-    let files = toml_files(&args.experiments).map_err(|e| format!("cannot read {}: {e}", args.experiments.display()))?;
+    let files = toml_files(&args.experiments).map_err(|source| PaperError::Io { what: "read", path: args.experiments.clone(), source })?;
     if files.is_empty() {
-        return Err(format!("no experiment files in {}", args.experiments.display()));
+        return Err(PaperError::NoExperiments(args.experiments.clone()));
     }
     let out = args.out.clone();
     let figures = args.out.join("figures");
@@ -384,22 +385,22 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
     let mut steps = Vec::with_capacity(calls.len());
     for study in kick_study::studies::reproduce_steps() {
         let at = calls.iter().position(|(name, _)| *name == study.name);
-        let at = at.ok_or_else(|| format!("kick_study::studies names the step `{}`, which kick-paper cannot run", study.name))?;
+        let at = at.ok_or_else(|| PaperError::Registry(format!("kick_study::studies names the step `{}`, which kick-paper cannot run", study.name)))?;
         steps.push(Step { name: study.name, calls: calls.swap_remove(at).1 });
     }
     if let Some((name, _)) = calls.first() {
-        return Err(format!("kick-paper runs a step `{name}` that kick_study::studies does not declare"));
+        return Err(PaperError::Registry(format!("kick-paper runs a step `{name}` that kick_study::studies does not declare")));
     }
     Ok(steps)
 }
 
 /// The steps `args.steps` selects, in the order they run; an unknown name
 /// is an error naming `--only` and listing the steps.
-pub fn selected(args: &ReproduceSettings) -> Result<Vec<Step>, String> {
+pub fn selected(args: &ReproduceSettings) -> Result<Vec<Step>, PaperError> {
     let all = steps(args)?;
     let Steps::Only(names) = &args.steps else { return Ok(all) };
     for name in names {
-        kick_study::studies::reproduce_step(name, "--only").map_err(|e| e.to_string())?;
+        kick_study::studies::reproduce_step(name, "--only")?;
     }
     Ok(all.into_iter().filter(|s| names.iter().any(|n| n == s.name)).collect())
 }
@@ -425,7 +426,7 @@ impl Printable for StepList {
 }
 
 /// The steps [`reproduce`] would run with `args`, with their command lines.
-pub fn list(args: &ReproduceSettings) -> Result<StepList, String> {
+pub fn list(args: &ReproduceSettings) -> Result<StepList, PaperError> {
     let steps = selected(args)?;
     Ok(StepList { steps: steps.iter().map(|s| (s.name.to_string(), s.calls.iter().map(|c| c.command(args, s.name)).collect())).collect() })
 }
@@ -439,12 +440,12 @@ struct State {
 }
 
 impl Call {
-    fn run(&self, args: &ReproduceSettings, state: &mut State, log: &mut dyn Write) -> Result<(), String> {
+    fn run(&self, args: &ReproduceSettings, state: &mut State, log: &mut dyn Write) -> Result<(), PaperError> {
         let report_dir = args.report.parent().unwrap_or(Path::new("")).to_path_buf();
         let fits = args.out.join("identification");
         match self {
             Call::Model => {
-                let written = crate::model::write(&report_dir.join(crate::model::PAGE)).map_err(|e| e.to_string())?;
+                let written = crate::model::write(&report_dir.join(crate::model::PAGE))?;
                 say(log, &format!("the model: {}\n", written.display()));
             }
             Call::Run { file, out } => {
@@ -453,12 +454,12 @@ impl Call {
                 let path = run.summary.path;
                 // Two files naming the same experiment would overwrite each other.
                 if let Some((_, first)) = state.written.iter().find(|(p, _)| *p == path) {
-                    return Err(format!("{} and {} both write {}", first.display(), file.display(), path.display()));
+                    return Err(PaperError::SameFile { first: first.to_path_buf(), second: file.to_path_buf(), file: path.to_path_buf() });
                 }
                 state.written.push((path, file.clone()));
             }
             Call::Figures { out, figures } => {
-                let drawn = crate::figures::draw_all(out, figures).map_err(|e| e.to_string())?;
+                let drawn = crate::figures::draw_all(out, figures)?;
                 say(log, &format!("figures: {} files in {}\n", drawn.len(), figures.display()));
             }
             Call::Checks => {
@@ -470,7 +471,7 @@ impl Call {
             Call::Run3d { file, out, figures } => {
                 let run = crate::shard::run_file(file, out, None)?;
                 say(log, &run.text());
-                let drawn = crate::three_d::figures(&run.summary.path, figures).map_err(|e| e.to_string())?;
+                let drawn = crate::three_d::figures(&run.summary.path, figures)?;
                 say(log, &format!("figures: {} files in {}\n", drawn.len(), figures.display()));
             }
             Call::ForceHistory { out, figures } => {
@@ -526,13 +527,13 @@ impl Call {
                      elastic bound of Eq. 38: gains flatten once m_f is several ball masses (Section 14.1).\n\n\
                      ![exit speed]({figures_from_report}/leg_exit_speed.png)\n"
                 );
-                crate::output::write(report_dir.join("leg.md"), leg_page).map_err(|e| e.to_string())?;
+                crate::output::write(report_dir.join("leg.md"), leg_page)?;
                 // Contact laws and identification: from results/identification/*.h5.
                 let identification_from_report = relative(&report_dir, &fits);
                 let laws_page = crate::identify::report::laws(&fits.join(LAWS), &identification_from_report)?;
-                crate::output::write(report_dir.join("laws.md"), laws_page).map_err(|e| e.to_string())?;
+                crate::output::write(report_dir.join("laws.md"), laws_page)?;
                 let identification_page = crate::identify::report::identification(&fits, &identification_from_report)?;
-                crate::output::write(report_dir.join("identification.md"), identification_page).map_err(|e| e.to_string())?;
+                crate::output::write(report_dir.join("identification.md"), identification_page)?;
             }
             Call::Validation => {
                 // The validation chapter: the model beside published measurements.
@@ -556,8 +557,7 @@ impl Call {
                     state.checks = Some(crate::checks::run_all().rows);
                 }
                 let checks = state.checks.as_deref();
-                let mut text = crate::report::render(&args.out, &relative(&report_dir, &args.out.join("figures")), checks)
-                    .map_err(|e| e.to_string())?;
+                let mut text = crate::report::render(&args.out, &relative(&report_dir, &args.out.join("figures")), checks)?;
                 // Point the report at the sections written beside it.
                 let present: Vec<String> = SECTIONS
                     .iter()
@@ -569,7 +569,7 @@ impl Call {
                     text.push_str(&present.join("\n"));
                     text.push('\n');
                 }
-                crate::output::write(&args.report, text).map_err(|e| e.to_string())?;
+                crate::output::write(&args.report, text)?;
                 say(log, &format!("report: {}\n", args.report.display()));
             }
         }
@@ -583,7 +583,7 @@ impl Call {
 /// solver benchmark with their pages; the [`steps`] `args.steps` selects.
 /// `log` gets what each call reports, under the command line that makes
 /// the same files alone ([`Call::command`]).
-pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reproduction, String> {
+pub fn reproduce(args: &ReproduceSettings, log: &mut dyn Write) -> Result<Reproduction, PaperError> {
     check_paths(args)?;
     let mut state = State::default();
     for step in selected(args)? {
@@ -638,7 +638,7 @@ impl Drop for Scratch {
 /// no longer generated is a difference too. The report's folder may hold
 /// hand-written pages: they are copied into the temporary
 /// folder first, so the report links them as in the checkout.
-pub fn check(args: &ReproduceSettings, log: &mut dyn Write) -> Result<CheckReport, String> {
+pub fn check(args: &ReproduceSettings, log: &mut dyn Write) -> Result<CheckReport, PaperError> {
     static SEQUENCE: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
     let n = SEQUENCE.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let scratch = Scratch(std::env::temp_dir().join(format!("kick-check-{}-{n}", std::process::id())));
@@ -648,13 +648,17 @@ pub fn check(args: &ReproduceSettings, log: &mut dyn Write) -> Result<CheckRepor
     let out = scratch.0.join(name(&args.out, "results"));
     let pages = scratch.0.join(name(&report_dir, "paper"));
     if out == pages {
-        return Err(format!("{} and {} must be different folders", args.out.display(), report_dir.display()));
+        return Err(PaperError::SameFolder { out: args.out.clone(), report: report_dir.to_path_buf() });
     }
     // Hand-written pages beside the report (linked from it when present) as committed.
     for file in crate::compare::files_below(&report_dir, &[]) {
         let target = pages.join(&file);
-        std::fs::create_dir_all(target.parent().unwrap_or(&pages)).map_err(|e| format!("cannot create {}: {e}", pages.display()))?;
-        std::fs::copy(report_dir.join(&file), &target).map_err(|e| format!("cannot copy {}: {e}", file.display()))?;
+        std::fs::create_dir_all(target.parent().unwrap_or(&pages)).map_err(|source| PaperError::Io {
+            what: "create",
+            path: pages.clone(),
+            source,
+        })?;
+        std::fs::copy(report_dir.join(&file), &target).map_err(|source| PaperError::Io { what: "copy", path: file.clone(), source })?;
     }
     let regenerated = ReproduceSettings { out: out.clone(), report: pages.join(name(&args.report, "README.md")), ..args.clone() };
     reproduce(&regenerated, log)?;

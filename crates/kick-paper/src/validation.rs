@@ -4,6 +4,7 @@
 //! follows) and writes to `results/validation/validation.json`. The reasons
 //! each comparison agrees or misses are in `experiments/validation/NOTES.md`.
 
+use crate::error::PaperError;
 use crate::units::{three, ZERO_SPIN};
 use kick_core::measurements::{Checked, Measured};
 use kick_core::{short, Scenario, DEFAULT_BALL_RADIUS};
@@ -13,10 +14,10 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 /// [`validate`], then write `out/validation.json` and `page` (links relative to the page).
-pub fn write(measurements: &Path, out: &Path, page: &Path, notes: &Path) -> Result<Validation, String> {
-    let mut v = validate(measurements)?;
+pub fn write(measurements: &Path, out: &Path, page: &Path, notes: &Path) -> Result<Validation, PaperError> {
+    let mut v = validate(&kick_store::measurements::read(measurements)?)?;
     let json_path = out.join("validation.json");
-    crate::output::write(&json_path, crate::printable::json(&v)?).map_err(|e| e.to_string())?;
+    crate::output::write(&json_path, crate::printable::json(&v)?)?;
     let page_dir = page.parent().unwrap_or(Path::new("."));
     // Inputs are read where they are, the page may be written into a scratch
     // folder (`reproduce --check`): link them from the page's folder name, so
@@ -28,7 +29,7 @@ pub fn write(measurements: &Path, out: &Path, page: &Path, notes: &Path) -> Resu
         &crate::links::relative(input_from, measurements),
         &crate::links::relative(input_from, notes),
     );
-    crate::output::write(page, text).map_err(|e| e.to_string())?;
+    crate::output::write(page, text)?;
     v.written = vec![json_path, page.to_path_buf()];
     Ok(v)
 }

@@ -6,7 +6,7 @@
 
 use crate::h5::{write_f64_attr, write_strings, Column, OutcomeSet, Setting};
 use crate::writer::SweepWriter;
-use crate::Provenance;
+use crate::{Provenance, StoreError};
 use kick_study::bench::{Machine, Spread, Timings, REFERENCE_TOLERANCE};
 use std::path::{Path, PathBuf};
 
@@ -33,13 +33,13 @@ pub struct FileRun {
 /// shuffle + deflate at the default level: the throughput with the file
 /// written, and what compression costs and saves. Files go to a scratch
 /// directory removed afterwards.
-pub fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
+pub fn file_runs(quick: bool) -> Result<Vec<FileRun>, StoreError> {
     use crate::h5::Compression;
     let (samples_1d, samples_3d) = if quick { (2_000, 200) } else { (200_000, 20_000) };
     let dir = std::env::temp_dir().join(format!("kick-bench-files-{}", std::process::id()));
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build().map_err(|e| e.to_string())?;
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build()?;
     let mut runs = Vec::new();
-    let mut measure = || -> Result<(), String> {
+    let mut measure = || -> Result<(), StoreError> {
         for compress in [Compression::None, Compression::Deflate(Compression::DEFAULT_LEVEL)] {
             let flag = match compress {
                 Compression::None => String::new(),
@@ -58,7 +58,7 @@ pub fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
                 compress,
             };
             let report = pool.install(|| crate::sweep::sweep(&settings))?;
-            let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+            let bytes = std::fs::metadata(&report.path).map_err(|source| StoreError::Io { path: report.path.clone(), source })?.len();
             let command = format!("kick sweep --samples {samples_1d} --seed 1 --threads 2 --out sweep.h5{flag}");
             runs.push(FileRun { command, rows: samples_1d, seconds: report.seconds, bytes });
             let _ = std::fs::remove_file(&report.path);
@@ -74,7 +74,7 @@ pub fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
                 compress,
             };
             let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
-            let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+            let bytes = std::fs::metadata(&report.path).map_err(|source| StoreError::Io { path: report.path.clone(), source })?.len();
             let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --out sweep3d.h5{flag}");
             runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
             let _ = std::fs::remove_file(&report.path);
@@ -94,7 +94,7 @@ pub fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
             compress: Compression::None,
         };
         let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
-        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+        let bytes = std::fs::metadata(&report.path).map_err(|source| StoreError::Io { path: report.path.clone(), source })?.len();
         let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --out sweep3d.h5");
         runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
         let _ = std::fs::remove_file(&report.path);
@@ -104,7 +104,7 @@ pub fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
         (fixed.scenario.law, fixed.scenario.leg) = (Some(kick_core::LawKind::Shell), Some(true));
         let settings = crate::sweep3d::Sweep3dSettings { out: dir.join("sweep3d.h5"), fixed, ..settings.clone() };
         let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
-        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+        let bytes = std::fs::metadata(&report.path).map_err(|source| StoreError::Io { path: report.path.clone(), source })?.len();
         let command = format!("kick sweep3d --samples {samples_3d} --seed 1 --threads 2 --law shell --leg --out sweep3d.h5");
         runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
         let _ = std::fs::remove_file(&report.path);
@@ -113,7 +113,7 @@ pub fn file_runs(quick: bool) -> Result<Vec<FileRun>, String> {
         // on 2 threads; [`flown_rates`] gives its median).
         let settings = flown_settings(shell, true)?;
         let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
-        let bytes = std::fs::metadata(&report.path).map_err(|e| e.to_string())?.len();
+        let bytes = std::fs::metadata(&report.path).map_err(|source| StoreError::Io { path: report.path.clone(), source })?.len();
         let flown = report.flown.as_ref().map_or(0, |(n, _)| *n);
         let command = format!("{} --out sweep3d.h5 ({flown} of the rows flown)", flown_command(samples_3d, true));
         runs.push(FileRun { command, rows: samples_3d, seconds: report.seconds, bytes });
@@ -131,11 +131,11 @@ pub const FLOWN_RANGES: [&str; 2] = ["contact_depth=0,0.05", "approach_angle=0,2
 
 /// `kick sweep3d` on the shell ball over [`FLOWN_RANGES`], each kick flown
 /// across the wall's and the goal line's planes (`flight`) or not.
-pub fn flown_settings(shell: crate::sweep3d::Sweep3dSettings, flight: bool) -> Result<crate::sweep3d::Sweep3dSettings, String> {
+pub fn flown_settings(shell: crate::sweep3d::Sweep3dSettings, flight: bool) -> Result<crate::sweep3d::Sweep3dSettings, StoreError> {
     let ranges = FLOWN_RANGES.map(String::from);
-    let plan = kick_study::flight::FlightPlan::planes(Default::default(), vec![9.15, 25.0]).map_err(|e| e.to_string())?;
+    let plan = kick_study::flight::FlightPlan::planes(Default::default(), vec![9.15, 25.0]).map_err(kick_study::StudyError::from)?;
     Ok(crate::sweep3d::Sweep3dSettings {
-        ranges: kick_study::sample::Ranges::parse(&ranges, |n| crate::sweep3d::find_range(n, true)).map_err(|e| e.to_string())?,
+        ranges: kick_study::sample::Ranges::parse(&ranges, |n| crate::sweep3d::find_range(n, true))?,
         flight: flight.then_some(plan),
         ..shell
     })
@@ -162,10 +162,10 @@ pub struct FlownRates {
     pub cost: Spread,
 }
 
-pub fn flown_rates(quick: bool) -> Result<FlownRates, String> {
+pub fn flown_rates(quick: bool) -> Result<FlownRates, StoreError> {
     let samples = if quick { 200 } else { 5_000 };
     let dir = std::env::temp_dir().join(format!("kick-bench-flown-{}", std::process::id()));
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build().map_err(|e| e.to_string())?;
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build()?;
     let mut fixed = kick_3d::KickSpec::default();
     fixed.scenario.law = Some(kick_core::LawKind::Shell);
     let shell = crate::sweep3d::Sweep3dSettings {
@@ -180,7 +180,7 @@ pub fn flown_rates(quick: bool) -> Result<FlownRates, String> {
         compress: crate::h5::Compression::None,
     };
     let (mut flown, mut unflown) = (Vec::new(), Vec::new());
-    let mut measure = || -> Result<(), String> {
+    let mut measure = || -> Result<(), StoreError> {
         for _ in 0..3 {
             for (flight, rates) in [(true, &mut flown), (false, &mut unflown)] {
                 let settings = flown_settings(shell.clone(), flight)?;
@@ -208,7 +208,7 @@ pub fn write_work_precision(
     machine: &Machine,
     build: &str,
     command: &str,
-) -> Result<PathBuf, String> {
+) -> Result<PathBuf, StoreError> {
     let text = command;
     let provenance = Provenance::now("work_precision", "kick bench", &text);
     let set = OutcomeSet {
@@ -218,18 +218,16 @@ pub fn write_work_precision(
         columns: COLUMNS.iter().map(|(n, u)| Column::new(n, u)).collect(),
     };
     let parameters = [Column::new("setting", "tolerance (1) or step (s)")];
-    let mut writer = SweepWriter::create(&path, &provenance, &parameters, &[set], t.points.len() as u64).map_err(|e| e.to_string())?;
+    let mut writer = SweepWriter::create(&path, &provenance, &parameters, &[set], t.points.len() as u64)?;
     for p in &t.points {
-        writer.push_parameters(&[p.setting]).map_err(|e| e.to_string())?;
-        writer
-            .push_outcome(
-                0,
-                Ok(&[p.max_error, p.max_error_closed_form, p.max_error_tight, p.seconds_per_scenario, p.evaluations_per_scenario]),
-            )
-            .map_err(|e| e.to_string())?;
+        writer.push_parameters(&[p.setting])?;
+        writer.push_outcome(
+            0,
+            Ok(&[p.max_error, p.max_error_closed_form, p.max_error_tight, p.seconds_per_scenario, p.evaluations_per_scenario]),
+        )?;
     }
     let names: Vec<String> = t.points.iter().map(|p| p.solver.to_string()).collect();
-    write_strings(writer.file(), &path, "scenario_names", &names).map_err(|e| e.to_string())?;
+    write_strings(writer.file(), &path, "scenario_names", &names)?;
     for (name, value) in [
         ("auto_vs_seed_cost_ratio", t.headline.median),
         ("auto_vs_rk4_events_cost_ratio_at_equal_accuracy", t.equal.as_ref().map_or(f64::NAN, |e| e.ratio.median)),
@@ -249,11 +247,11 @@ pub fn write_work_precision(
         ("aim_launch_seconds", t.other.aims[0].median * 1e-3),
         ("aim_kick_seconds", t.other.aims[1].median * 1e-3),
     ] {
-        write_f64_attr(writer.file(), &path, name, value).map_err(|e| e.to_string())?;
+        write_f64_attr(writer.file(), &path, name, value)?;
     }
-    crate::h5::write_str_attr(writer.file(), &path, "machine_cpu", &machine.cpu).map_err(|e| e.to_string())?;
-    write_f64_attr(writer.file(), &path, "machine_cores", machine.cores as f64).map_err(|e| e.to_string())?;
-    write_f64_attr(writer.file(), &path, "machine_clock_mhz", machine.clock_mhz.unwrap_or(f64::NAN)).map_err(|e| e.to_string())?;
-    crate::h5::write_str_attr(writer.file(), &path, "build", build).map_err(|e| e.to_string())?;
-    writer.finish().map_err(|e| e.to_string())
+    crate::h5::write_str_attr(writer.file(), &path, "machine_cpu", &machine.cpu)?;
+    write_f64_attr(writer.file(), &path, "machine_cores", machine.cores as f64)?;
+    write_f64_attr(writer.file(), &path, "machine_clock_mhz", machine.clock_mhz.unwrap_or(f64::NAN))?;
+    crate::h5::write_str_attr(writer.file(), &path, "build", build)?;
+    Ok(writer.finish()?)
 }

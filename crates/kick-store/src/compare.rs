@@ -119,12 +119,21 @@ fn walk(group: &hdf5::Group, at: &str, out: &mut BTreeMap<String, Value>) -> hdf
     Ok(())
 }
 
+/// Why a file's entries could not be listed (the difference reported).
+#[derive(Debug, thiserror::Error)]
+enum Unreadable {
+    #[error("cannot open: {0}")]
+    Open(hdf5::Error),
+    #[error("cannot read: {0}")]
+    Read(hdf5::Error),
+}
+
 /// Every dataset and attribute of an HDF5 file, by path.
-fn entries(path: &Path) -> Result<BTreeMap<String, Value>, String> {
+fn entries(path: &Path) -> Result<BTreeMap<String, Value>, Unreadable> {
     crate::h5::disable_file_locking();
-    let file = hdf5::File::open(path).map_err(|e| format!("cannot open: {e}"))?;
+    let file = hdf5::File::open(path).map_err(Unreadable::Open)?;
     let mut out = BTreeMap::new();
-    walk(&file, "", &mut out).map_err(|e| format!("cannot read: {e}"))?;
+    walk(&file, "", &mut out).map_err(Unreadable::Read)?;
     Ok(out)
 }
 

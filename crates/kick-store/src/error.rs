@@ -46,12 +46,51 @@ pub enum StoreError {
     Limit(#[from] LimitError),
     #[error(transparent)]
     ShardFlag(#[from] ShardFlagError),
+    /// The measurement file, unreadable or refused.
+    #[error(transparent)]
+    Measurements(#[from] crate::measurements::MeasurementFileError),
     /// A flag the user gave, refused: the message names it.
     #[error("{message}")]
     Flag { flag: &'static str, message: String },
     /// A history row of another width than its columns.
     #[error("{}: a row of {values} values for {columns} columns", .path.display())]
     RowWidth { path: PathBuf, values: usize, columns: usize },
+    /// kick-identify's refusal or failure (a fit specification, a fit, a study).
+    #[error(transparent)]
+    Identify(#[from] kick_identify::IdentifyError),
+    /// A result file that lacks what its reader needs: the file and what.
+    #[error("{}: {what}", .path.display())]
+    Lacks { path: PathBuf, what: String },
+    /// A dataset of a result file holding more or fewer values than its layout says.
+    #[error("{dataset}: expected one value")]
+    NotScalar { dataset: String },
+    /// A fit report with fewer residuals than its observations (the fit's, not the user's).
+    #[error("fit report: no residual for {label}")]
+    NoResidual { label: String },
+    /// An input file the user named (`name`, as given), unreadable.
+    #[error("{name}: {source}")]
+    Input { name: String, source: kick_core::input::InputError },
+    /// A named row of a study (Table 2's) whose solve failed.
+    #[error("{name}: {source}")]
+    Row { name: String, source: kick_core::KickError },
+    /// An output folder that cannot be made.
+    #[error("cannot create {}: {source}", .path.display())]
+    CreateDir { path: PathBuf, source: std::io::Error },
+    /// A file that cannot be read or listed (its metadata, a folder).
+    #[error("{}: {source}", .path.display())]
+    Io { path: PathBuf, source: std::io::Error },
+    /// A thread pool that cannot be built.
+    #[error(transparent)]
+    ThreadPool(#[from] rayon::ThreadPoolBuildError),
+    /// A file's text that cannot be written as TOML.
+    #[error(transparent)]
+    Toml(#[from] toml::ser::Error),
+    /// `kick fit data` that did not converge (the report is written).
+    #[error("the fit stopped without converging: {termination}")]
+    NotConverged { termination: String },
+    /// A synthetic history that came back without its samples.
+    #[error("no history produced")]
+    NoHistory,
     /// A history streaming more rows than a file takes.
     #[error("--history {}: more than {max} rows; give a larger --interval or fewer --samples", .path.display())]
     HistoryRows { path: PathBuf, max: u64 },

@@ -7,11 +7,13 @@
 //! of [`TRAJECTORY_OFFSETS`] × [`TRAJECTORY_FRICTIONS`] as
 //! `solvers/goal/histories/<row>` ([`TRAJECTORY_COLUMNS`], uniform in time).
 
-use crate::h5::{write_grid, write_str_attr, Column, H5Error};
+use crate::h5::{write_grid, write_str_attr, Column};
 use crate::provenance::Provenance;
 use crate::table::{create_table, fill_table};
+use crate::StoreError;
 use kick_study::free_kick::*;
 use kick_study::level::Level;
+use kick_study::StudyError;
 use std::path::{Path, PathBuf};
 
 /// Rows whose trajectories are kept: these offsets...
@@ -32,9 +34,9 @@ fn columns(list: &[(&str, &str)]) -> Vec<Column> {
 }
 
 /// Solve the grid and write `out/flight/free_kick.h5`.
-pub fn write(out: &Path) -> Result<PathBuf, String> {
+pub fn write(out: &Path) -> Result<PathBuf, StoreError> {
     let dir = out.join("flight");
-    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    std::fs::create_dir_all(&dir).map_err(|source| StoreError::CreateDir { path: dir.clone(), source })?;
     let path = dir.join(FILE);
     let text = format!(
         "kick_study::free_kick: offsets {OFFSETS:?} m x friction {FRICTIONS:?}, contact_depth {CONTACT_DEPTH} m (the foot's line \
@@ -42,21 +44,19 @@ pub fn write(out: &Path) -> Result<PathBuf, String> {
     );
     let provenance = Provenance::now("free_kick", "kick_study::free_kick", &text);
     let rows = grid();
-    let mut writer = create_table(&FreeKicks, &path, &provenance, rows.len() as u64, Default::default()).map_err(|e| e.to_string())?;
+    let mut writer = create_table(&FreeKicks, &path, &provenance, rows.len() as u64, Default::default())?;
     let file = writer.file().clone();
-    let h5 = |e: H5Error| e.to_string();
     let parameters = FreeKicks.parameter_columns();
-    write_str_attr(&file, &path, "description", "Free kicks: the 3D kick (contact below and beside the centre) chained into the flight")
-        .map_err(h5)?;
-    write_grid(&file, &path, &[(parameters[0].clone(), &OFFSETS[..]), (parameters[1].clone(), &FRICTIONS[..])]).map_err(h5)?;
-    fill_table(&FreeKicks, 0..rows.len() as u64, &mut writer, &indicatif::ProgressBar::hidden()).map_err(h5)?;
+    write_str_attr(&file, &path, "description", "Free kicks: the 3D kick (contact below and beside the centre) chained into the flight")?;
+    write_grid(&file, &path, &[(parameters[0].clone(), &OFFSETS[..]), (parameters[1].clone(), &FRICTIONS[..])])?;
+    fill_table(&FreeKicks, 0..rows.len() as u64, &mut writer, &indicatif::ProgressBar::hidden())?;
     for (row, &(e, mu)) in rows.iter().enumerate() {
         let keep = TRAJECTORY_OFFSETS.contains(&e) && TRAJECTORY_FRICTIONS.iter().any(|m| m.to_bits() == mu.to_bits());
         if keep {
-            let values = trajectory(e, mu, TRAJECTORY_SAMPLES).map_err(|f| f.to_string())?;
+            let values = trajectory(e, mu, TRAJECTORY_SAMPLES).map_err(StudyError::from)?;
             let named: Vec<(Column, &[f64])> = columns(&TRAJECTORY_COLUMNS).into_iter().zip(values.iter().map(Vec::as_slice)).collect();
-            writer.write_history(1, row, &named).map_err(h5)?;
+            writer.write_history(1, row, &named)?;
         }
     }
-    writer.finish().map_err(h5)
+    Ok(writer.finish()?)
 }

@@ -3,8 +3,9 @@
 //! HDF5 result tables, grids and layouts ([`h5`]), history files
 //! ([`history`], the file sinks of kick-study's history rows), experiments
 //! run into files ([`run`], [`three_d`], [`sweep`], [`sweep3d`]), shards and
-//! their merge ([`shard`]), the comparison of result trees ([`compare`]) and
-//! the identification files ([`identify::files`]).
+//! their merge ([`shard`]), the comparison of result trees ([`compare`]),
+//! the identification files ([`identify::files`]) and the measurement file
+//! the validation reads ([`measurements`]).
 //!
 //! Depends on kick-study and the model crates (and hdf5); never the reverse.
 //! No plotting: figures and pages are kick-paper's.
@@ -18,6 +19,7 @@ pub mod h5;
 pub mod held;
 pub mod history;
 pub mod layouts;
+pub mod measurements;
 pub mod output;
 pub mod patch;
 pub mod provenance;

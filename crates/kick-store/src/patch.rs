@@ -105,7 +105,7 @@ pub fn read_asai(path: &Path) -> Result<AsaiClaims, StoreError> {
 /// history's kick and writes both files under `out`; returns them.
 pub fn run(out: &Path, measurements: &Path, command: &str) -> Result<Vec<PathBuf>, StoreError> {
     let data = compute()?;
-    let mut written = vec![write_spin(&out.join(SPIN_FILE), &data, &asai_claims(measurements)?, command)?];
+    let mut written = vec![write_spin(&out.join(SPIN_FILE), &data, &asai_claims(&crate::measurements::read(measurements)?)?, command)?];
     let path = out.join(HISTORY_FILE);
     let request = HistoryRequest { path, spacing: Spacing::Count(HISTORY_SAMPLES), open: crate::history::open };
     let run = kick_study::simulate::simulate3d(&kick_study::patch::history_spec(), "accurate", None, Some(&request), None)?;
@@ -177,7 +177,7 @@ mod tests {
                 assert!((k.launch_azimuth[i] - o.launch_azimuth).abs() <= 1e-12 * o.launch_azimuth.abs().max(1.0));
             }
         }
-        assert_eq!(read_asai(&dir.join(SPIN_FILE)).unwrap(), asai_claims(&measurements()).unwrap());
+        assert_eq!(read_asai(&dir.join(SPIN_FILE)).unwrap(), asai_claims(&crate::measurements::read(&measurements()).unwrap()).unwrap());
         let _ = std::fs::remove_dir_all(&dir);
     }
 }

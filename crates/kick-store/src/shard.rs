@@ -199,28 +199,40 @@ fn collect(group: &Group, prefix: &str, path: &Path, out: &mut Vec<Meta>, histor
     Ok(())
 }
 
+/// Why a part's dataset is refused before anything is read (the part's
+/// error names the file and the dataset).
+#[derive(Debug, thiserror::Error)]
+enum Refusal {
+    #[error("a dataset the result layout does not have")]
+    NotInLayout,
+    #[error("a column of type {name}, not one of the result layout (f64, u64, u8, text)")]
+    Type { name: String },
+    #[error("{len} failures in a part of {rows} rows (a corrupt file)")]
+    Failures { len: usize, rows: usize },
+    #[error("{len} entries in a part of {rows} rows (a truncated or corrupt file)")]
+    Entries { len: usize, rows: usize },
+    #[error("{len} entries for an experiment of {total} rows (a corrupt file)")]
+    Axis { len: usize, total: u64 },
+}
+
 impl Meta {
     /// Refuse what no writer of the layout makes, before anything is read:
     /// lengths other than the part's rows, types other than the layout's.
-    fn check(&self, rows: usize, total: u64) -> Result<(), String> {
-        let kind = kind(&self.path).ok_or("a dataset the result layout does not have")?;
+    fn check(&self, rows: usize, total: u64) -> Result<(), Refusal> {
+        let kind = kind(&self.path).ok_or(Refusal::NotInLayout)?;
         let allowed = matches!(
             self.descriptor,
             TypeDescriptor::Float(FloatSize::U8) | TypeDescriptor::Unsigned(IntSize::U8 | IntSize::U1) | TypeDescriptor::VarLenUnicode
         );
         if !allowed {
-            return Err(format!("a column of type {}, not one of the result layout (f64, u64, u8, text)", type_name(&self.descriptor)));
+            return Err(Refusal::Type { name: type_name(&self.descriptor) });
         }
         let len = self.len;
         match kind {
-            Kind::PerRow if is_failure(&self.path) && len > rows => {
-                Err(format!("{len} failures in a part of {rows} rows (a corrupt file)"))
-            }
-            Kind::PerRow if !is_failure(&self.path) && len != rows => {
-                Err(format!("{len} entries in a part of {rows} rows (a truncated or corrupt file)"))
-            }
+            Kind::PerRow if is_failure(&self.path) && len > rows => Err(Refusal::Failures { len, rows }),
+            Kind::PerRow if !is_failure(&self.path) && len != rows => Err(Refusal::Entries { len, rows }),
             // The grid's axes: no longer than the experiment.
-            Kind::Whole if len as u64 > total.max(1024) => Err(format!("{len} entries for an experiment of {total} rows (a corrupt file)")),
+            Kind::Whole if len as u64 > total.max(1024) => Err(Refusal::Axis { len, total }),
             _ => Ok(()),
         }
     }

@@ -33,7 +33,7 @@ pub fn aim_requests() -> [crate::aim::AimRequest; 2] {
 }
 
 /// The page's two aims ([`aim_requests`]) solved.
-pub fn aims() -> Result<[crate::aim::AimReport; 2], String> {
+pub fn aims() -> Result<[crate::aim::AimReport; 2], crate::error::StudyError> {
     let [launch, kick] = aim_requests();
     Ok([crate::aim::aim(&launch)?, crate::aim::aim(&kick)?])
 }

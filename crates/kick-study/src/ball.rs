@@ -3,6 +3,7 @@
 //! and synthetic plate tests to fit back. What is solved; kick-paper draws
 //! and writes the page.
 
+use crate::error::StudyError;
 use kick_bounce::{run, BounceSpec};
 use kick_core::parameters::Value;
 pub use kick_core::shell::SEA_LEVEL_PRESSURE;
@@ -49,42 +50,40 @@ pub const FIT_SIGMA: [(Observable, f64); 3] =
 pub const FIT_SEED: u64 = 31;
 
 /// A bounce with these values (the default ball otherwise).
-pub fn bounce(values: &[(&str, f64)]) -> Result<kick_bounce::BounceOutcome, String> {
+pub fn bounce(values: &[(&str, f64)]) -> Result<kick_bounce::BounceOutcome, StudyError> {
     let mut spec = BounceSpec::default();
     for &(name, value) in values {
-        spec.set(name, Value::Number(value)).map_err(|e| e.to_string())?;
+        spec.set(name, Value::Number(value))?;
     }
-    run(&spec).map_err(|e| e.to_string())
+    Ok(run(&spec)?)
 }
 
 /// β that makes the 2 m drop rebound to `height` (Brent's method on the bounce).
-pub fn damping_for_rebound(height: f64) -> Result<f64, String> {
+pub fn damping_for_rebound(height: f64) -> Result<f64, StudyError> {
     let rebound = |beta: f64| {
         bounce(&[("drop_height", FIFA_DROP), ("shell_damping", beta)]).ok().and_then(|o| o.rebound_height).unwrap_or(f64::NAN) - height
     };
-    kick_core::roots::brent(rebound, 10.0, 2.0e4, 1e-13, 200).map(|r| r.x).ok_or_else(|| format!("no β rebounds {height} m"))
+    kick_core::roots::brent(rebound, 10.0, 2.0e4, 1e-13, 200).map(|r| r.x).ok_or(StudyError::NoRebound { height })
 }
 
 /// The synthetic plate tests as a fit specification: the truth
 /// ([`FIT_TRUTH`]) at each of [`FIT_SPEEDS`] and [`FIT_PRESSURES_ATM`] with
 /// seeded noise ([`FIT_SIGMA`], [`FIT_SEED`]); `spec_path` is where it will
 /// be written (its comment names the command that fits it back).
-pub fn plate_test_spec(spec_path: &Path) -> Result<String, String> {
-    let text = |e: kick_identify::IdentifyError| e.to_string();
+pub fn plate_test_spec(spec_path: &Path) -> Result<String, StudyError> {
     let mut spec = BounceSpec::default();
-    spec.set("speed", Value::Number(FIT_SPEEDS[0])).map_err(|e| e.to_string())?;
+    spec.set("speed", Value::Number(FIT_SPEEDS[0]))?;
     for (name, value, _) in FIT_TRUTH {
-        spec.set(name, Value::Number(value)).map_err(|e| e.to_string())?;
+        spec.set(name, Value::Number(value))?;
     }
-    let truth = ModelPoint::bounce(spec).map_err(text)?;
-    let named = |name: &str| FitParameter::from_name_at(kick_identify::FitLevel::Bounce, name).map_err(text);
+    let truth = ModelPoint::bounce(spec)?;
+    let named = |name: &str| FitParameter::from_name_at(kick_identify::FitLevel::Bounce, name);
     let (speed, pressure) = (named("speed")?, named("inflation_pressure")?);
     let conditions: Vec<Vec<(FitParameter, f64)>> = FIT_SPEEDS
         .iter()
         .flat_map(|&v| FIT_PRESSURES_ATM.iter().map(move |&p| vec![(speed, v), (pressure, p * SEA_LEVEL_PRESSURE)]))
         .collect();
-    let data =
-        kick_identify::synthetic::measurements(&Default::default(), &truth, &conditions, &FIT_SIGMA, Some(FIT_SEED)).map_err(text)?;
+    let data = kick_identify::synthetic::measurements(&Default::default(), &truth, &conditions, &FIT_SIGMA, Some(FIT_SEED))?;
     let mut file = format!(
         "# Synthetic plate tests: the default shell ball with shell_damping = {} Pa s/m and\n\
          # shell_stiffness = {} N/m fired square at a rigid plate at {} speeds and {} pressures,\n\

@@ -16,6 +16,45 @@ use serde::Serialize;
 use std::io::Write;
 use std::time::Instant;
 
+/// Why a benchmark could not be taken: a model's error where a timed solve
+/// failed (its scenario named where the bench knows it), or a thread pool
+/// that cannot be built.
+#[derive(Debug, thiserror::Error)]
+pub enum BenchError {
+    #[error(transparent)]
+    ThreadPool(#[from] rayon::ThreadPoolBuildError),
+    #[error(transparent)]
+    Kick(#[from] kick_core::KickError),
+    #[error(transparent)]
+    Kick3d(#[from] kick_3d::Kick3dError),
+    #[error(transparent)]
+    Flight(#[from] kick_flight::FlightError),
+    #[error(transparent)]
+    Study(#[from] crate::error::StudyError),
+    /// One of the timed flights failed.
+    #[error("a bench flight failed: {0}")]
+    FlightRow(kick_flight::FlightError),
+    /// The reference solve of a box scenario failed (not a trapped foot).
+    #[error("box scenario {index}: the reference: {source}")]
+    BoxReference { index: u64, source: kick_core::KickError },
+    /// A box solver failed where the reference separates.
+    #[error("box scenario {index}: {solver}: {source}")]
+    BoxSolver { index: u64, solver: &'static str, source: kick_core::KickError },
+    /// A ladder point that could not be measured.
+    #[error("{solver}: {source}")]
+    Ladder { solver: &'static str, source: kick_core::KickError },
+    /// A run the bench takes and then reads back was not there (`what`).
+    #[error("no {0}")]
+    NoRun(&'static str),
+}
+
+/// The front ends and the page writers still returning text print the message.
+impl From<BenchError> for String {
+    fn from(e: BenchError) -> String {
+        e.to_string()
+    }
+}
+
 /// The seed of kick-3d's test box of off-center kicks.
 pub use kick_3d::models::BENCH_SEED;
 /// The instep radius the patch kicks assume, m.
@@ -51,8 +90,8 @@ impl Spread {
 }
 
 /// Scenarios per second of `solver` on the sweep, on a pool of `threads`.
-pub fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) -> Result<f64, String> {
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| e.to_string())?;
+pub fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) -> Result<f64, BenchError> {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build()?;
     let started = Instant::now();
     let solved = pool.install(|| {
         (0..sweep.samples).into_par_iter().map(|i| sweep.scenario(i).and_then(|s| solver.solve(&s)).is_ok() as u64).sum::<u64>()
@@ -64,27 +103,27 @@ pub fn throughput(solver: &SolverChoice, sweep: SampledSweep, threads: usize) ->
 /// Flights per second through `kick_flight::flight_many` on a pool of
 /// `threads`: `rows` free kicks of `kick_flight::models::free_kick_speeds`
 /// (the criterion bench's flights), outcomes only.
-pub fn flights_per_second(rows: usize, threads: usize) -> Result<f64, String> {
+pub fn flights_per_second(rows: usize, threads: usize) -> Result<f64, BenchError> {
     let (base, speeds) = kick_flight::models::free_kick_speeds(rows);
     let columns = [kick_flight::Column { parameter: kick_flight::FlightParameter::Speed, values: &speeds }];
     let started = Instant::now();
-    let out = kick_flight::flight_many(&base, &columns, rows, Some(threads)).map_err(|e| e.to_string())?;
+    let out = kick_flight::flight_many(&base, &columns, rows, Some(threads))?;
     let seconds = started.elapsed().as_secs_f64();
     if let Some(Err(e)) = out.iter().find(|r| r.is_err()) {
-        return Err(format!("a bench flight failed: {e}"));
+        return Err(BenchError::FlightRow(e.clone()));
     }
     Ok(rows as f64 / seconds)
 }
 
 /// Seconds of each aim solve of paper/flight.md ([`crate::aimed::aim_requests`]:
 /// the launch, then through the 3D kick), `repeats` times in alternation.
-pub fn aim_seconds(repeats: usize) -> Result<[Vec<f64>; 2], String> {
+pub fn aim_seconds(repeats: usize) -> Result<[Vec<f64>; 2], BenchError> {
     let requests = crate::aimed::aim_requests();
     let mut seconds: [Vec<f64>; 2] = Default::default();
     for _ in 0..repeats {
         for (request, out) in requests.iter().zip(seconds.iter_mut()) {
             let started = Instant::now();
-            std::hint::black_box(crate::aim::aim(request).map_err(|e| e.to_string())?);
+            std::hint::black_box(crate::aim::aim(request)?);
             out.push(started.elapsed().as_secs_f64());
         }
     }
@@ -105,9 +144,9 @@ pub const KICK_FORMS: usize = 10;
 /// (`Accurate3d::solve_baseline`: what a CPU without AVX2 runs); and the
 /// realistic foot (`--leg`: the leg's 6×6 apparent inertia and its boot) on
 /// the cap's patch at μ = 0.5 (issue 31: ≤ 120 µs).
-pub fn kick_costs(min_seconds: f64) -> Result<[(Vec<f64>, u64); KICK_FORMS], String> {
+pub fn kick_costs(min_seconds: f64) -> Result<[(Vec<f64>, u64); KICK_FORMS], BenchError> {
     use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
-    let at = |scenario: kick_core::ScenarioSpec, kick3d: Kick3dSpec| KickSpec { scenario, kick3d }.build().map_err(|e| e.to_string());
+    let at = |scenario: kick_core::ScenarioSpec, kick3d: Kick3dSpec| KickSpec { scenario, kick3d }.build();
     let spec = Kick3dSpec { offset: Some(0.05), friction: Some(f64::INFINITY), ..Kick3dSpec::default() };
     let shell = kick_core::ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() };
     let cap = Kick3dSpec {
@@ -137,7 +176,7 @@ pub fn kick_costs(min_seconds: f64) -> Result<[(Vec<f64>, u64); KICK_FORMS], Str
             let (mut runs, started) = (0u32, Instant::now());
             while runs == 0 || started.elapsed().as_secs_f64() < min_seconds {
                 let solved = if baseline { solver.solve_baseline(kick) } else { solver.solve(kick) };
-                evaluations[i] = std::hint::black_box(solved.map_err(|e| e.to_string())?).evaluations;
+                evaluations[i] = std::hint::black_box(solved?).evaluations;
                 runs += 1;
             }
             times[i].push(started.elapsed().as_secs_f64() / f64::from(runs));
@@ -179,22 +218,21 @@ pub const BOX_SOLVERS: [&str; 4] = ["series", "reduced-return", "reduced", "auto
 
 /// [`BoxErrors`] over `samples` scenarios; a solver that fails where the
 /// reference separates is an error naming it.
-pub fn box_errors(samples: u64) -> Result<BoxErrors, String> {
+pub fn box_errors(samples: u64) -> Result<BoxErrors, BenchError> {
     let sweep = SampledSweep::new(samples, 1);
-    let tight = kick_compliant::Accurate::new(precision::REFERENCE_TOLERANCE, precision::REFERENCE_TOLERANCE).map_err(|e| e.to_string())?;
-    let solvers: Vec<SolverChoice> =
-        BOX_SOLVERS.iter().map(|n| SolverChoice::from_name(n, 5e-6)).collect::<Result<_, _>>().map_err(|e| e.to_string())?;
+    let tight = kick_compliant::Accurate::new(precision::REFERENCE_TOLERANCE, precision::REFERENCE_TOLERANCE)?;
+    let solvers: Vec<SolverChoice> = BOX_SOLVERS.iter().map(|n| SolverChoice::from_name(n, 5e-6)).collect::<Result<_, _>>()?;
     let mut errors: Vec<(&'static str, f64, u64)> = BOX_SOLVERS.iter().map(|&n| (n, 0.0, 0)).collect();
     let mut trapped = 0;
     for i in 0..samples {
-        let scenario = sweep.scenario(i).map_err(|e| e.to_string())?;
+        let scenario = sweep.scenario(i)?;
         let reference = match tight.solve(&scenario) {
             Ok(o) => o,
             Err(kick_core::KickError::Trapped { .. }) => {
                 trapped += 1;
                 continue;
             }
-            Err(e) => return Err(format!("box scenario {i}: the reference: {e}")),
+            Err(source) => return Err(BenchError::BoxReference { index: i, source }),
         };
         for (solver, entry) in solvers.iter().zip(errors.iter_mut()) {
             match solver.solve(&scenario) {
@@ -203,7 +241,7 @@ pub fn box_errors(samples: u64) -> Result<BoxErrors, String> {
                     entry.2 += 1;
                 }
                 Err(kick_core::KickError::NotApplicable { .. }) => {}
-                Err(e) => return Err(format!("box scenario {i}: {}: {e}", entry.0)),
+                Err(source) => return Err(BenchError::BoxSolver { index: i, solver: entry.0, source }),
             }
         }
     }
@@ -246,17 +284,18 @@ pub struct Timings {
 /// Time everything but the files: the ladder (a few points when `quick`),
 /// each point at least `min_time` s, the throughput over `sweep_samples`
 /// sampled scenarios. Progress lines go to `log`.
-pub fn measure(quick: bool, min_time: f64, sweep_samples: u64, log: &mut dyn Write) -> Result<Timings, String> {
+pub fn measure(quick: bool, min_time: f64, sweep_samples: u64, log: &mut dyn Write) -> Result<Timings, BenchError> {
     let min_time = if quick { 0.02 } else { min_time };
-    let cases = precision::cases().map_err(|e| e.to_string())?;
+    let cases = precision::cases()?;
     let mut ladder = precision::ladder();
     if quick {
         ladder.retain(|(name, setting)| matches!((*name, *setting), ("seed-rk4", s) if s == 5e-6) || *setting == 1e-12 || *setting == 1e-8);
     }
     let mut points: Vec<PrecisionPoint> = Vec::new();
     for (name, setting) in ladder {
-        let solver = precision::solver(name, setting).map_err(|e| e.to_string())?;
-        let point = precision::measure(name, setting, &solver, &cases, min_time).map_err(|e| format!("{name}: {e}"))?;
+        let solver = precision::solver(name, setting)?;
+        let point =
+            precision::measure(name, setting, &solver, &cases, min_time).map_err(|source| BenchError::Ladder { solver: name, source })?;
         let _ = writeln!(
             log,
             "{:<16} {:>9.2e}  error {:>9.2e}  {:>9.2} µs/scenario  {:>7.0} evaluations",
@@ -270,20 +309,19 @@ pub fn measure(quick: bool, min_time: f64, sweep_samples: u64, log: &mut dyn Wri
     }
     // Headline ratio: the default path against the paper's method, same
     // binary, measured in alternation and the median taken (the machine is shared).
-    let seed_rk4 = SolverChoice::from_name("seed-rk4", 5e-6).map_err(|e| e.to_string())?;
-    let default_auto = SolverChoice::from_name("auto", 5e-6).map_err(|e| e.to_string())?;
+    let seed_rk4 = SolverChoice::from_name("seed-rk4", 5e-6)?;
+    let default_auto = SolverChoice::from_name("auto", 5e-6)?;
     let (mut seed_times, mut auto_times) = (Vec::new(), Vec::new());
     let (mut seed, mut auto) = (None, None);
     for _ in 0..5 {
-        let s = precision::measure("seed-rk4", 5e-6, &seed_rk4, &cases, min_time).map_err(|e| e.to_string())?;
-        let a = precision::measure("auto", kick_compliant::series::DEFAULT_TOLERANCE, &default_auto, &cases, min_time)
-            .map_err(|e| e.to_string())?;
+        let s = precision::measure("seed-rk4", 5e-6, &seed_rk4, &cases, min_time)?;
+        let a = precision::measure("auto", kick_compliant::series::DEFAULT_TOLERANCE, &default_auto, &cases, min_time)?;
         seed_times.push(s.seconds_per_scenario);
         auto_times.push(a.seconds_per_scenario);
         (seed, auto) = (Some(s), Some(a));
     }
     let headline = Spread::of_ratios(&seed_times, &auto_times);
-    let (seed, auto) = (seed.ok_or("no seed point")?, auto.ok_or("no auto point")?);
+    let (seed, auto) = (seed.ok_or(BenchError::NoRun("seed point"))?, auto.ok_or(BenchError::NoRun("auto point"))?);
     let _ = writeln!(
         log,
         "\nauto (default) vs seed-rk4 at 5 µs: error {:.2e} vs {:.2e}; cost ratio {} (5 alternating runs)",
@@ -296,22 +334,12 @@ pub fn measure(quick: bool, min_time: f64, sweep_samples: u64, log: &mut dyn Wri
     let equal = match equal_accuracy_pair(&points) {
         None => None,
         Some((fixed, cheap)) => {
-            let (fixed_solver, auto_solver) = (
-                precision::solver(fixed.solver, fixed.setting).map_err(|e| e.to_string())?,
-                precision::solver(cheap.solver, cheap.setting).map_err(|e| e.to_string())?,
-            );
+            let (fixed_solver, auto_solver) =
+                (precision::solver(fixed.solver, fixed.setting)?, precision::solver(cheap.solver, cheap.setting)?);
             let (mut f, mut a) = (Vec::new(), Vec::new());
             for _ in 0..5 {
-                f.push(
-                    precision::measure(fixed.solver, fixed.setting, &fixed_solver, &cases, min_time)
-                        .map_err(|e| e.to_string())?
-                        .seconds_per_scenario,
-                );
-                a.push(
-                    precision::measure(cheap.solver, cheap.setting, &auto_solver, &cases, min_time)
-                        .map_err(|e| e.to_string())?
-                        .seconds_per_scenario,
-                );
+                f.push(precision::measure(fixed.solver, fixed.setting, &fixed_solver, &cases, min_time)?.seconds_per_scenario);
+                a.push(precision::measure(cheap.solver, cheap.setting, &auto_solver, &cases, min_time)?.seconds_per_scenario);
             }
             let ratio = Spread::of_ratios(&f, &a);
             let _ = writeln!(
@@ -326,7 +354,7 @@ pub fn measure(quick: bool, min_time: f64, sweep_samples: u64, log: &mut dyn Wri
             Some(EqualAccuracy { fixed: fixed.clone(), auto: cheap.clone(), ratio })
         }
     };
-    let reference_error = precision::reference_error(&cases).map_err(|e| e.to_string())?;
+    let reference_error = precision::reference_error(&cases)?;
     let box_errors = box_errors(if quick { 200 } else { 2000 })?;
     let sweep = SampledSweep::new(if quick { 2_000 } else { sweep_samples }, 1);
     // 1 and 2 threads in alternation, three times; the medians (shared machine).
@@ -347,11 +375,11 @@ pub fn measure(quick: bool, min_time: f64, sweep_samples: u64, log: &mut dyn Wri
     let kicks = if quick { 20 } else { 200 };
     let mut costs = Vec::new();
     for _ in 0..3 {
-        costs.push(kick_3d::precision::cost_ratio(kicks, kick_3d::models::BENCH_SEED, min_time / 30.0).map_err(|e| e.to_string())?);
+        costs.push(kick_3d::precision::cost_ratio(kicks, kick_3d::models::BENCH_SEED, min_time / 30.0)?);
     }
     let cost_3d = Spread::of(&costs.iter().map(|c| c.ratio).collect::<Vec<_>>());
     // The run whose ratio is the median, for its times and counts.
-    let cost = costs.iter().find(|c| c.ratio == cost_3d.median).copied().ok_or("no 3D cost run")?;
+    let cost = costs.iter().find(|c| c.ratio == cost_3d.median).copied().ok_or(BenchError::NoRun("3D cost run"))?;
     let _ = writeln!(
         log,
         "off-center 3D kick (auto) vs the same kick's 1D contact (auto): {:.1} µs vs {:.2} µs, ratio {} \

@@ -67,6 +67,12 @@ pub enum StudyError {
     /// A deflate level outside 1..=9, given as `what` (`--compress`, `compress`).
     #[error("{what} {level}: the deflate level must be 1 (fastest) to 9 (smallest)")]
     Deflate { what: String, level: i64 },
+    /// kick-identify's refusal or failure (a fit specification, synthetic data).
+    #[error(transparent)]
+    Identify(#[from] kick_identify::IdentifyError),
+    /// No shell damping in the search bracket makes the FIFA drop rebound to `height` (m).
+    #[error("no β rebounds {height} m")]
+    NoRebound { height: f64 },
     /// A value that has no JSON form.
     #[error("{0}")]
     Json(String),
@@ -82,6 +88,8 @@ impl StudyError {
             StudyError::Leg(e) => e.status(),
             StudyError::Flight { source, .. } => source.status(),
             StudyError::Aim { .. } => Status::Refused,
+            StudyError::Identify(e) => e.status(),
+            StudyError::NoRebound { .. } => Status::NumericalFailure,
             StudyError::Failure(f) => f.status,
             StudyError::Sink(_) | StudyError::ShortHistory { .. } | StudyError::Json(_) => Status::NumericalFailure,
             StudyError::FlightValidation(e) => match e {

@@ -575,12 +575,12 @@ fn file_stem(path: &Path) -> Result<String, ExperimentError> {
 
 /// Read and validate an experiment file of either level (see [`parse`]).
 pub fn load(path: &Path) -> Result<Experiment, ExperimentError> {
-    let text = kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|message| ExperimentError {
+    let text = kick_core::input::read_text(path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| ExperimentError {
         file: path.display().to_string(),
         line: 0,
         column: 0,
         key: String::new(),
-        message,
+        message: e.to_string(),
     })?;
     parse(path, &text)
 }

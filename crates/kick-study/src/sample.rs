@@ -34,12 +34,15 @@ impl Ranges {
     /// it is none the sweep takes); the range is uniform, or log-uniform
     /// where the parameter's declared range is, inside its valid values.
     /// Errors name the flag `--range`.
-    pub fn parse(given: &[String], find: impl Fn(&str) -> Result<&'static ParameterDef, String>) -> Result<Ranges, StudyError> {
+    pub fn parse<E: std::fmt::Display>(
+        given: &[String],
+        find: impl Fn(&str) -> Result<&'static ParameterDef, E>,
+    ) -> Result<Ranges, StudyError> {
         let refuse = |text: &str, why: String| StudyError::Flag { flag: "range", message: format!("--range {text}: {why}") };
         let mut ranges = Vec::new();
         for text in given {
             let (name, bounds) = text.split_once('=').ok_or_else(|| refuse(text, "expected NAME=LOW,HIGH".into()))?;
-            let p = find(name.trim()).map_err(|why| refuse(text, why))?;
+            let p = find(name.trim()).map_err(|why| refuse(text, why.to_string()))?;
             if p.shape != Shape::Scalar {
                 return Err(refuse(text, format!("`{}` takes {}, not a range", p.name, p.shape.describe())));
             }
@@ -347,7 +350,7 @@ mod tests {
     /// leaves every other value as it was; bad ranges name `--range`.
     #[test]
     fn a_range_given_moves_only_its_parameter() {
-        let find = |name: &str| parameters::find_at(ScenarioSpec::LEVELS, name).map_err(|e| e.to_string());
+        let find = |name: &str| parameters::find_at(ScenarioSpec::LEVELS, name);
         let declared = SampledSweep::new(300, 4);
         let ranged = SampledSweep { ranges: Ranges::parse(&["stiffness=2e5,3e5".into()], find).unwrap(), ..declared.clone() };
         ranged.check().unwrap();

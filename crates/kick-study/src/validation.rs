@@ -31,7 +31,7 @@ use kick_identify::validation::{contact_model, with_ball_speed, ContactModel};
 use rows::{headline, Headline, Role, Row};
 use serde::Serialize;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 const NEEDED_BY: &str = "the validation chapter (kick_study::validation)";
 /// Drop height of the FIFA rebound test, m.
@@ -73,12 +73,12 @@ impl Foot {
         }
     }
     /// `s` with this foot.
-    pub fn apply(self, s: &Scenario) -> Result<Scenario, String> {
+    pub fn apply(self, s: &Scenario) -> Result<Scenario, kick_core::KickError> {
         match self {
             Foot::Table1 => Ok(*s),
-            Foot::Leg => s
-                .on_foot(kick_core::Foot { leg: Some(kick_core::leg::LegPose::DEFAULT), boot: Some(kick_core::boot::IDENTIFIED) })
-                .map_err(error),
+            Foot::Leg => {
+                s.on_foot(kick_core::Foot { leg: Some(kick_core::leg::LegPose::DEFAULT), boot: Some(kick_core::boot::IDENTIFIED) })
+            }
         }
     }
 }
@@ -101,9 +101,9 @@ struct Law {
 /// The two normal laws of the 1D kick, each with [`VALIDATION_FOOT`], and
 /// the shell ball on the realistic foot ([`Foot::Leg`]), whose boot the
 /// limb's fastest kick set (those rows are its calibration).
-fn laws() -> Result<[Law; 3], String> {
+fn laws() -> Result<[Law; 3], ValidationError> {
     let base = VALIDATION_FOOT.apply(&Scenario::baseline())?;
-    let ball = ShellBall::default_with_radius(DEFAULT_BALL_RADIUS).map_err(|e| e.to_string())?;
+    let ball = ShellBall::default_with_radius(DEFAULT_BALL_RADIUS)?;
     let leg = Foot::Leg.apply(&Scenario::baseline())?;
     Ok([
         Law { name: "paper's law (Table 1)", scenario: base, pressure: None, foot: VALIDATION_FOOT },
@@ -202,19 +202,65 @@ pub struct Validation {
     pub written: Vec<PathBuf>,
 }
 
-fn error(e: impl std::fmt::Display) -> String {
-    e.to_string()
+/// Why the validation could not be made: a measurement it reads missing or
+/// without a number (the key named), or a model run that failed (the
+/// model's own error).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ValidationError {
+    #[error(transparent)]
+    Measurements(#[from] kick_core::measurements::MeasurementError),
+    #[error(transparent)]
+    Kick(#[from] kick_core::KickError),
+    #[error(transparent)]
+    Kick3d(#[from] kick_3d::Kick3dError),
+    #[error(transparent)]
+    Parameter(#[from] kick_core::parameters::ParameterError),
+    #[error(transparent)]
+    FlightValidation(#[from] kick_flight::validation::FlightValidationError),
+    #[error(transparent)]
+    Identify(#[from] kick_identify::validation::ValidationError),
+    #[error(transparent)]
+    Flight(#[from] kick_flight::FlightError),
+    #[error(transparent)]
+    CurveKick(#[from] kick_3d::validation::CurveKickError),
+    #[error(transparent)]
+    IdentifyFit(#[from] kick_identify::IdentifyError),
+    /// A measurement read as a number that has none (a claim in words).
+    #[error("`{key}` has no number")]
+    NoNumber { key: String },
+    /// Two measurements whose ratio is undefined: `what` says which must be > 0.
+    #[error("{what} must be > 0")]
+    ZeroRatio { what: &'static str },
+    /// The FIFA drop that gave no rebound height.
+    #[error("the FIFA drop gave no rebound height")]
+    NoRebound,
+    /// No offset of the spin curve sends the ball off at `speed` (m/s).
+    #[error("no offset sends the ball off at {speed} m/s")]
+    NoOffset { speed: f64 },
+    /// A root search on the model that did not converge (`what`).
+    #[error("{what} failed")]
+    Search { what: &'static str },
+    /// A measurement the validation reads as a speed, with none (`what`).
+    #[error("no {what}")]
+    NoSpeed { what: &'static str },
+}
+
+/// The front ends and the page writers still returning text print the message.
+impl From<ValidationError> for String {
+    fn from(e: ValidationError) -> String {
+        e.to_string()
+    }
 }
 
 /// The value of `input` in [`low`, `high`] (searched in its logarithm) at
 /// which `model(input)` meets `target`, when one does.
-fn meeting(target: f64, low: f64, high: f64, model: impl Fn(f64) -> Result<f64, String>) -> Option<f64> {
+fn meeting(target: f64, low: f64, high: f64, model: impl Fn(f64) -> Result<f64, ValidationError>) -> Option<f64> {
     let f = |ln_x: f64| model(ln_x.exp()).map_or(f64::NAN, |y| y - target);
     kick_core::roots::brent(f, low.ln(), high.ln(), 1e-10, 200).map(|r| r.x.exp())
 }
 
 /// "m_f = 1.234 kg meets it" or why none does.
-fn mass_meeting(target: f64, model: impl Fn(f64) -> Result<f64, String>) -> Option<String> {
+fn mass_meeting(target: f64, model: impl Fn(f64) -> Result<f64, ValidationError>) -> Option<String> {
     Some(match meeting(target, 0.1, 100.0, model) {
         Some(m) => format!("m_f = {} kg meets it", three(m)),
         None => "no foot mass in 0.1–100 kg meets it".into(),
@@ -223,12 +269,12 @@ fn mass_meeting(target: f64, model: impl Fn(f64) -> Result<f64, String>) -> Opti
 
 /// The ball alone: the FIFA rebound of the shell ball (what its loss β was
 /// set on) and the default ball against Law 2.
-fn ball_rows(m: &Measurements) -> Result<Vec<Row>, String> {
+fn ball_rows(m: &Measurements) -> Result<Vec<Row>, ValidationError> {
     let mut spec = kick_bounce::BounceSpec::default();
-    spec.set("drop_height", Value::Number(FIFA_DROP_HEIGHT)).map_err(error)?;
-    let bounce = kick_bounce::run(&spec).map_err(error)?;
-    let ball = ShellBall::default_with_radius(DEFAULT_BALL_RADIUS).map_err(error)?;
-    let rebound = bounce.rebound_height.ok_or("the FIFA drop gave no rebound height")?;
+    spec.set("drop_height", Value::Number(FIFA_DROP_HEIGHT))?;
+    let bounce = kick_bounce::run(&spec)?;
+    let ball = ShellBall::default_with_radius(DEFAULT_BALL_RADIUS)?;
+    let rebound = bounce.rebound_height.ok_or(ValidationError::NoRebound)?;
     let mut rows = vec![Row::new(
         m,
         Role::Calibration,
@@ -242,34 +288,36 @@ fn ball_rows(m: &Measurements) -> Result<Vec<Row>, String> {
         ),
         Comparison::new(
             "rebound height",
-            m.measured("fifa_rebound_height", NEEDED_BY).map_err(error)?,
+            m.measured("fifa_rebound_height", NEEDED_BY)?,
             rebound,
             "β was identified from the band's middle: the 2 m drop, gravity on during contact as in the test, \
              rebounds 140 cm",
         ),
     )
     .sets(format!("shell loss β = {} Pa s/m (crates/kick-bounce/SOURCES.md)", short(ball.shell_damping)))];
-    for r in kick_flight::validation::ball_comparisons(m).map_err(error)? {
+    for r in kick_flight::validation::ball_comparisons(m)? {
         rows.push(Row::new(m, Role::Check, "default ball", "Table 1's ball, R = 0.11 m", r));
     }
     Ok(rows)
 }
 
 /// The 1D instep kick beside every contact measurement, under both laws.
-fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
-    let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error);
-    let mid = |key: &str| -> Result<f64, String> { get(key)?.midpoint().ok_or_else(|| format!("`{key}` has no number")) };
+fn contact_rows(m: &Measurements) -> Result<Vec<Row>, ValidationError> {
+    let get = |key: &str| m.measured(key, NEEDED_BY);
+    let mid = |key: &str| -> Result<f64, ValidationError> {
+        get(key)?.midpoint().ok_or_else(|| ValidationError::NoNumber { key: key.to_string() })
+    };
     let tol_speed = mid("ball_speed_tol2002")?;
     let nunome_speed = mid("ball_speed_instep_nunome2002")?;
     let mut rows = Vec::new();
     for law in laws()? {
         let (s, foot) = (law.scenario, law.foot);
-        let run = |s: &Scenario| contact_model(s).map_err(error);
-        let at_speed = |s: &Scenario, v: f64| -> Result<(Scenario, ContactModel), String> {
-            let matched = with_ball_speed(s, v).map_err(error)?;
+        let run = |s: &Scenario| contact_model(s);
+        let at_speed = |s: &Scenario, v: f64| -> Result<(Scenario, ContactModel), ValidationError> {
+            let matched = with_ball_speed(s, v)?;
             Ok((matched, run(&matched)?))
         };
-        let with_mass = |s: &Scenario, mass: f64| s.with(Parameter::FootMass, mass).map_err(error);
+        let with_mass = |s: &Scenario, mass: f64| s.with(Parameter::FootMass, mass);
         let row = |role, c: &Scenario, why: &str, comparison| Row::new(m, role, law.name, conditions(&law, c, why), comparison);
         let base = run(&s)?;
         let assumed = "the assumed foot (mass and speed): no foot speed goes with the pooled range";
@@ -310,12 +358,12 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
             ("fastest", "foot_speed_limb_fast", "ball_speed_limb_fast", "contact_time_limb_fast", "contact_distance_limb_fast"),
         ] {
             let v = mid(foot_key)?;
-            let c = s.with(Parameter::FootSpeed, v).map_err(error)?;
+            let c = s.with(Parameter::FootSpeed, v)?;
             let k = run(&c)?;
             let why = format!(" (the limb's {end} foot)");
             let af = "an Australian-football ball in the limb, the model's soccer ball here";
             let limb_mass = "the foot's mass (the limb's own effective mass was not read)";
-            let ratio = Measured::ratio(&get(ball_key)?, &get(foot_key)?).ok_or("limb speeds must be > 0")?;
+            let ratio = Measured::ratio(&get(ball_key)?, &get(foot_key)?).ok_or(ValidationError::ZeroRatio { what: "limb speeds" })?;
             let target = ratio.midpoint().unwrap_or(f64::NAN);
             let e = k.speed_ratio * (c.effective_foot_mass() + c.ball_mass()) / c.effective_foot_mass() - 1.0;
             // On the leg, the fastest kick's contact time and restitution set the boot.
@@ -417,7 +465,7 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
         );
         for key in ["ball_speed_max_instep", "ball_speed_instep_nunome2002"] {
             let middle = mid(key)?;
-            let foot_speed = with_ball_speed(&s, middle).map_err(error)?.foot_speed();
+            let foot_speed = with_ball_speed(&s, middle)?.foot_speed();
             rows.push(
                 row(
                     Role::Prediction,
@@ -432,7 +480,8 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
                 ),
             );
         }
-        let pulse = Measured::ratio(&get("peak_force_punt")?, &get("mean_force_punt")?).ok_or("mean_force_punt must be > 0")?;
+        let pulse = Measured::ratio(&get("peak_force_punt")?, &get("mean_force_punt")?)
+            .ok_or(ValidationError::ZeroRatio { what: "mean_force_punt" })?;
         rows.push(
             row(
                 Role::Check,
@@ -454,14 +503,14 @@ fn contact_rows(m: &Measurements) -> Result<Vec<Row>, String> {
 /// k from Tol et al.'s soccer instep kicks: the contact time m_b v/F̄ at
 /// their ball speed, the foot speed lowered until the ball leaves at it, the
 /// foot's mass [`VALIDATION_FOOT`]'s.
-fn identify(m: &Measurements) -> Result<Vec<Identified>, String> {
-    let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error)?.midpoint().ok_or_else(|| format!("`{key}` has no number"));
+fn identify(m: &Measurements) -> Result<Vec<Identified>, ValidationError> {
+    let get = |key: &str| m.measured(key, NEEDED_BY)?.midpoint().ok_or_else(|| ValidationError::NoNumber { key: key.to_string() });
     let (speed, force) = (get("ball_speed_tol2002")?, get("mean_force_tol2002")?);
     let base = VALIDATION_FOOT.apply(&Scenario::baseline())?;
     let target = base.ball_mass() * speed / force;
     use kick_core::Solver as _;
-    let restitution = kick_compliant::Accurate::default().solve(&base).map_err(error)?.restitution;
-    let hunt_crossley = base.with_law(LawKind::HuntCrossleyExact, Some(restitution)).map_err(error)?;
+    let restitution = kick_compliant::Accurate::default().solve(&base)?.restitution;
+    let hunt_crossley = base.with_law(LawKind::HuntCrossleyExact, Some(restitution))?;
     let targets = format!(
         "Tol et al. (2002), 150 instep kicks by 15 elite players: ball {speed} m/s, mean force {force} N, so a contact of m_b v/F = {:.3} ms",
         1e3 * target
@@ -470,9 +519,9 @@ fn identify(m: &Measurements) -> Result<Vec<Identified>, String> {
     for (name, s) in [("paper's law, c = 120 N s/m", base), (&*format!("Hunt-Crossley (exact), e = {}", short(restitution)), hunt_crossley)]
     {
         let contact = |ln_k: f64| -> f64 {
-            let run = || -> Result<f64, String> {
-                let c = s.with(Parameter::Stiffness, ln_k.exp()).map_err(error)?;
-                Ok(contact_model(&with_ball_speed(&c, speed).map_err(error)?).map_err(error)?.contact_time - target)
+            let run = || -> Result<f64, ValidationError> {
+                let c = s.with(Parameter::Stiffness, ln_k.exp())?;
+                Ok(contact_model(&with_ball_speed(&c, speed)?)?.contact_time - target)
             };
             run().unwrap_or(f64::NAN)
         };
@@ -506,27 +555,24 @@ fn identify(m: &Measurements) -> Result<Vec<Identified>, String> {
 
 /// The offset at which the μ = `friction` ball of `curve` leaves at `speed`
 /// (speed falls with the offset up to the largest spin).
-fn offset_at_speed(base: &Scenario, curve: &[SpinPoint], speed: f64) -> Result<SpinPoint, String> {
-    let i = curve
-        .windows(2)
-        .position(|w| w[0].speed >= speed && w[1].speed < speed)
-        .ok_or(format!("no offset sends the ball off at {speed} m/s"))?;
+fn offset_at_speed(base: &Scenario, curve: &[SpinPoint], speed: f64) -> Result<SpinPoint, ValidationError> {
+    let i = curve.windows(2).position(|w| w[0].speed >= speed && w[1].speed < speed).ok_or(ValidationError::NoOffset { speed })?;
     let mu = curve[i].friction;
     let f = |e: f64| spin_point(base, e, mu).map_or(f64::NAN, |p| p.speed - speed);
-    let root = kick_core::roots::brent(f, curve[i].offset, curve[i + 1].offset, 1e-12, 200).ok_or("offset search failed")?;
-    spin_point(base, root.x, mu).map_err(error)
+    let root = kick_core::roots::brent(f, curve[i].offset, curve[i + 1].offset, 1e-12, 200)
+        .ok_or(ValidationError::Search { what: "offset search" })?;
+    Ok(spin_point(base, root.x, mu)?)
 }
 
 /// The offset–friction sweep of the paper's 3D kick beside Asai et al. (2002) and the measured swerve and free kicks.
-fn curve_kicks(m: &Measurements) -> Result<CurveKicks, String> {
+fn curve_kicks(m: &Measurements) -> Result<CurveKicks, ValidationError> {
     let foot = VALIDATION_FOOT;
     let base = foot.apply(&Scenario::baseline())?;
-    let curves: Vec<Vec<SpinPoint>> =
-        [0.0, REFERENCE_FRICTION, 1.0].iter().map(|&mu| spin_curve(&base, mu)).collect::<Result<_, _>>().map_err(error)?;
-    let largest = vec![largest_spin(&base, &curves[1]).map_err(error)?, largest_spin(&base, &curves[2]).map_err(error)?];
-    let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error);
-    let swerve = get("ball_speed_swerve_instep")?.midpoint().ok_or("no swerve speed")?;
-    let curling = get("barber_carre2010_launch_speed")?.midpoint().ok_or("no curling free-kick speed")?;
+    let curves: Vec<Vec<SpinPoint>> = [0.0, REFERENCE_FRICTION, 1.0].iter().map(|&mu| spin_curve(&base, mu)).collect::<Result<_, _>>()?;
+    let largest = vec![largest_spin(&base, &curves[1])?, largest_spin(&base, &curves[2])?];
+    let get = |key: &str| m.measured(key, NEEDED_BY);
+    let swerve = get("ball_speed_swerve_instep")?.midpoint().ok_or(ValidationError::NoSpeed { what: "swerve speed" })?;
+    let curling = get("barber_carre2010_launch_speed")?.midpoint().ok_or(ValidationError::NoSpeed { what: "curling free-kick speed" })?;
     let at_swerve = offset_at_speed(&base, &curves[1], swerve)?;
     let at_curling = offset_at_speed(&base, &curves[1], curling)?;
     let model = "3D rigid sphere, paper's law";
@@ -571,7 +617,7 @@ fn curve_kicks(m: &Measurements) -> Result<CurveKicks, String> {
         )
         .hinges_on(foot, chosen, None),
     ];
-    let (zero, one) = (spin_point(&base, at_swerve.offset, 0.0).map_err(error)?, spin_point(&base, at_swerve.offset, 1.0).map_err(error)?);
+    let (zero, one) = (spin_point(&base, at_swerve.offset, 0.0)?, spin_point(&base, at_swerve.offset, 1.0)?);
     rows.push(
         Row::new(
             m,
@@ -596,7 +642,7 @@ fn curve_kicks(m: &Measurements) -> Result<CurveKicks, String> {
             "mu = 0, every offset of the sweep",
             Comparison::new(
                 "spin without friction (largest over offsets)",
-                m.claimed("spin_zero_friction_asai2002", NEEDED_BY).map_err(error)?,
+                m.claimed("spin_zero_friction_asai2002", NEEDED_BY)?,
                 zero_spin,
                 "the rigid sphere's normal passes through its centre: no spin without friction; Asai et al.'s wrapping spin has no number in their abstract",
             ),
@@ -632,7 +678,7 @@ fn curve_kicks(m: &Measurements) -> Result<CurveKicks, String> {
             "mu = 0.5 and 1, the sweep",
             Comparison::new(
                 "spin growth with offset",
-                m.claimed("spin_trend_asai2002", NEEDED_BY).map_err(error)?,
+                m.claimed("spin_trend_asai2002", NEEDED_BY)?,
                 largest[0].spin,
                 format!(
                     "spin rises at every step of the sweep up to its largest value (mu = 0.5: {}, mu = 1: {}); speed falls with the offset",
@@ -650,7 +696,7 @@ fn curve_kicks(m: &Measurements) -> Result<CurveKicks, String> {
 /// The same claims set beside the level above the rigid sphere: the shell
 /// ball's force spread over its patch on a convex instep, with Asai et al.'s
 /// own offset (ball centre to the swing line through the instep's apex).
-fn patch_rows(m: &Measurements) -> Result<Vec<Row>, String> {
+fn patch_rows(m: &Measurements) -> Result<Vec<Row>, ValidationError> {
     let foot = VALIDATION_FOOT;
     let shell = laws()?[1].scenario;
     let radius = ASSUMED_INSTEP_RADIUS;
@@ -662,9 +708,9 @@ fn patch_rows(m: &Measurements) -> Result<Vec<Row>, String> {
             shell.foot_speed()
         )
     };
-    let kick = |e: f64, mu: f64, r_i: f64| patch_spin_point(&shell, e, mu, r_i).map_err(error);
+    let kick = |e: f64, mu: f64, r_i: f64| patch_spin_point(&shell, e, mu, r_i);
     let offsets = patch_offsets();
-    let gain_at = |e: f64, r_i: f64| -> Result<f64, String> { Ok(kick(e, 1.0, r_i)?.0.spin - kick(e, 0.0, r_i)?.0.spin) };
+    let gain_at = |e: f64, r_i: f64| -> Result<f64, ValidationError> { Ok(kick(e, 1.0, r_i)?.0.spin - kick(e, 0.0, r_i)?.0.spin) };
     let mut gains = Vec::with_capacity(offsets.len());
     for &e in &offsets {
         gains.push((e, gain_at(e, radius)?));
@@ -672,7 +718,7 @@ fn patch_rows(m: &Measurements) -> Result<Vec<Row>, String> {
     let (gain_offset, gain) = gains.iter().copied().fold((0.0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
     let flatter = 2.0 * radius;
     let gain_flatter = gain_at(gain_offset, flatter)?;
-    let get = |key: &str| m.measured(key, NEEDED_BY).map_err(error);
+    let get = |key: &str| m.measured(key, NEEDED_BY);
     let last = offsets[offsets.len() - 1];
     let (zero, zero_spin) = kick(last, 0.0, radius)?;
     let (_, rubbed) = kick(last, REFERENCE_FRICTION, radius)?;
@@ -730,7 +776,7 @@ fn patch_rows(m: &Measurements) -> Result<Vec<Row>, String> {
             cond(&format!("mu = 0, e = {} mm", short(1e3 * last))),
             Comparison::new(
                 "spin without friction",
-                m.claimed("spin_zero_friction_asai2002", NEEDED_BY).map_err(error)?,
+                m.claimed("spin_zero_friction_asai2002", NEEDED_BY)?,
                 zero.spin,
                 format!(
                     "in friction's sense (as friction's spin at mu = {}): {same_sense}; sliding over the convex instep \
@@ -751,11 +797,11 @@ fn rises(curve: &[SpinPoint]) -> bool {
 
 /// The flight's crisis: calibrations (the crisis and each construction's
 /// factor were set from these numbers) and the transition beside them.
-fn flight_rows(m: &Measurements) -> Result<Vec<Row>, String> {
+fn flight_rows(m: &Measurements) -> Result<Vec<Row>, ValidationError> {
     let model = "kick-flight's default C_D(Re)";
     let cond = "no spin, standard sea-level air, R = 0.11 m; critical Re: 95 % of the drop done";
     let mut rows = Vec::new();
-    for c in kick_flight::validation::drag_crisis_comparisons(m).map_err(error)? {
+    for c in kick_flight::validation::drag_crisis_comparisons(m)? {
         let key = c.measured.key.clone();
         let panels = kick_flight::validation::keys::PANELS.iter().find(|p| p.0 == key).map(|p| p.1);
         let row = Row::new(m, Role::Prediction, model, cond, c);
@@ -776,10 +822,9 @@ fn flight_rows(m: &Measurements) -> Result<Vec<Row>, String> {
 }
 
 /// Mencke et al.'s measured flights beside the default flight model.
-fn measured_flight_rows(m: &Measurements) -> Result<Vec<Row>, String> {
+fn measured_flight_rows(m: &Measurements) -> Result<Vec<Row>, ValidationError> {
     let model = "kick-flight's defaults (C_D(Re, S), C_L(S))";
-    Ok(kick_flight::validation::measured_flights(m)
-        .map_err(error)?
+    Ok(kick_flight::validation::measured_flights(m)?
         .into_iter()
         .map(|c| {
             let note = c.note.clone();
@@ -788,8 +833,8 @@ fn measured_flight_rows(m: &Measurements) -> Result<Vec<Row>, String> {
         .collect())
 }
 
-fn free_kicks(m: &Measurements) -> Result<FreeKicksAtLaunch, String> {
-    let kicks = kick_flight::validation::free_kicks(m, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE).map_err(error)?;
+fn free_kicks(m: &Measurements) -> Result<FreeKicksAtLaunch, ValidationError> {
+    let kicks = kick_flight::validation::free_kicks(m, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE)?;
     // The same flights as kick_flight::validation::free_kick, for their launch report.
     let launch = kicks
         .kicks
@@ -800,11 +845,10 @@ fn free_kicks(m: &Measurements) -> Result<FreeKicksAtLaunch, String> {
                 distance: Some(FREE_KICK_DISTANCE),
                 ..kick_flight::FlightSpec::from_exit_speed(k.speed, FREE_KICK_ELEVATION)
             }
-            .build()
-            .map_err(error)?;
-            Ok(kick_flight::solve(&flight).map_err(error)?.launch)
+            .build()?;
+            Ok(kick_flight::solve(&flight)?.launch)
         })
-        .collect::<Result<_, String>>()?;
+        .collect::<Result<_, ValidationError>>()?;
     Ok(FreeKicksAtLaunch { kicks, launch, circle_estimate_role: Role::Check })
 }
 
@@ -823,20 +867,19 @@ fn by_status(m: &Measurements) -> Vec<(String, Vec<String>)> {
         .collect()
 }
 
-/// Compare the model with the measurements in `measurements`.
-pub fn validate(measurements: &Path) -> Result<Validation, String> {
-    let m = Measurements::load(measurements).map_err(error)?;
-    let ball = ball_rows(&m)?;
-    let contact = contact_rows(&m)?;
-    let implied = identify(&m)?;
-    let curve_kicks = curve_kicks(&m)?;
-    let flight = flight_rows(&m)?;
-    let measured_flights = measured_flight_rows(&m)?;
-    let free_kicks = free_kicks(&m)?;
+/// Compare the model with the measurements `m` (kick-store reads the file).
+pub fn validate(m: &Measurements) -> Result<Validation, ValidationError> {
+    let ball = ball_rows(m)?;
+    let contact = contact_rows(m)?;
+    let implied = identify(m)?;
+    let curve_kicks = curve_kicks(m)?;
+    let flight = flight_rows(m)?;
+    let measured_flights = measured_flight_rows(m)?;
+    let free_kicks = free_kicks(m)?;
     let citations: Vec<(String, String)> = m.sources.iter().map(|s| (s.key.clone(), s.citation())).collect();
     let headline = headline(ball.iter().chain(&contact).chain(&curve_kicks.rows).chain(&flight).chain(&measured_flights));
     Ok(Validation {
-        measurements_file: measurements.display().to_string(),
+        measurements_file: m.file.clone(),
         sources: citations.len(),
         measurements: m.measurements.len(),
         foot: VALIDATION_FOOT,
@@ -871,5 +914,22 @@ impl Printable for Validation {
     }
     fn written(&self) -> &[PathBuf] {
         &self.written
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kick_core::measurements::MeasurementError;
+
+    /// Measurements without what the chapter reads: the error is the
+    /// measurement file's, naming the file and the first key missing.
+    #[test]
+    fn a_missing_measurement_names_the_file_and_the_key() {
+        let empty = Measurements::check("x.toml", Vec::new(), Vec::new()).unwrap();
+        let e = validate(&empty).unwrap_err();
+        let ValidationError::Measurements(MeasurementError::Missing { file, key, .. }) = &e else { panic!("{e:?}") };
+        assert_eq!((file.as_str(), key.as_str()), ("x.toml", "fifa_rebound_height"));
+        assert!(e.to_string().starts_with("x.toml: no measurement `fifa_rebound_height`"), "{e}");
     }
 }

@@ -3,13 +3,14 @@
 
 use kick_3d::validation::{curve_kick_comparisons, keys, largest_spin, offsets, spin_curve, spin_point};
 use kick_3d::Kick3d;
-use kick_core::measurements::{Measurements, MEASUREMENTS_FILE};
+use kick_core::measurements::Measurements;
 use kick_core::Scenario;
+use kick_store::measurements::{read, MEASUREMENTS_FILE};
 use std::path::Path;
 
 fn measurements() -> Measurements {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(MEASUREMENTS_FILE);
-    Measurements::load(&path).unwrap_or_else(|e| panic!("{e}"))
+    read(&path).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// I_b of the default thin-shell ball, kg m².

@@ -4,7 +4,8 @@
 //! file's notes never describe SOURCES.md (issue 34: notes that described
 //! old states of this file).
 
-use kick_core::measurements::{Checked, Measurements, MEASUREMENTS_FILE};
+use kick_core::measurements::Checked;
+use kick_store::measurements::{read, MEASUREMENTS_FILE};
 use std::path::Path;
 
 fn root() -> std::path::PathBuf {
@@ -37,7 +38,7 @@ fn status(c: &Checked) -> &'static str {
 
 #[test]
 fn the_shared_table_is_the_measurement_file() {
-    let m = Measurements::load(&root().join(MEASUREMENTS_FILE)).unwrap();
+    let m = read(&root().join(MEASUREMENTS_FILE)).unwrap();
     let rows = shared_rows();
     assert!(rows.len() >= 20, "{} rows", rows.len());
     for (key, value, unit, checked) in &rows {

@@ -1,18 +1,19 @@
 //! The validation chapter's flight side: the drag crisis read off the default
 //! C_D(Re) independently, free-kick deflections against the circle estimate.
 
-use kick_core::measurements::{Measurements, MEASUREMENTS_FILE};
+use kick_core::measurements::Measurements;
 use kick_flight::coefficients::{BallConstruction, DragCrisis};
 use kick_flight::validation::{
     ball_comparisons, drag_crisis_comparisons, drag_crisis_model, free_kick, free_kicks, keys, lift_plateau_bends, measured_flights,
     spin_decay_bends, FREE_KICK_DISTANCE, FREE_KICK_ELEVATION,
 };
 use kick_flight::{solve, Air, FlightSpec};
+use kick_store::measurements::{read, MEASUREMENTS_FILE};
 use std::path::Path;
 
 fn measurements() -> Measurements {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(MEASUREMENTS_FILE);
-    Measurements::load(&path).unwrap_or_else(|e| panic!("{e}"))
+    read(&path).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Re at which C_D(Re) falls to `level`, by bisection on the model itself.

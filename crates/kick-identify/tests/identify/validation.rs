@@ -1,18 +1,19 @@
 //! The validation chapter's 1D side: model counterparts against closed forms,
 //! the comparisons' bookkeeping, and the identification on synthetic truth.
 
-use kick_core::measurements::{Measurements, MEASUREMENTS_FILE};
+use kick_core::measurements::Measurements;
 use kick_core::{LawKind, Parameter, Scenario};
 use kick_identify::data::{Observable, Observations, ScalarObservation};
 use kick_identify::validation::{
     contact_comparisons, contact_model, contact_targets, implied_parameter_study, implied_parameters, keys, ValidationError,
 };
 use kick_identify::FitParameter;
+use kick_store::measurements::{read, MEASUREMENTS_FILE};
 use std::path::Path;
 
 fn measurements() -> Measurements {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(MEASUREMENTS_FILE);
-    Measurements::load(&path).unwrap_or_else(|e| panic!("{e}"))
+    read(&path).unwrap_or_else(|e| panic!("{e}"))
 }
 
 const K: FitParameter = FitParameter::Scenario(Parameter::Stiffness);

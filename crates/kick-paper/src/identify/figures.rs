@@ -2,6 +2,7 @@
 //! plotting helpers from the HDF5 files those commands write (never from
 //! the data in memory).
 
+use crate::error::PaperError;
 use crate::figures::{save_grid, Panel, Series, COLORS};
 use crate::identify::files::{read_identifiability, LawsData, SOURCES};
 use kick_core::laws::LawKind;
@@ -10,7 +11,7 @@ use std::path::{Path, PathBuf};
 
 /// `laws.png/svg` from `laws.h5`: each Table 2 scenario's force pulse under
 /// every law, and the peak forces side by side.
-pub fn laws(file: &Path, dir: &Path) -> Result<Vec<PathBuf>, String> {
+pub fn laws(file: &Path, dir: &Path) -> Result<Vec<PathBuf>, PaperError> {
     let data = LawsData::read(file)?;
     let mut panels = Vec::new();
     for (row, name) in data.names.iter().enumerate() {
@@ -33,14 +34,13 @@ pub fn laws(file: &Path, dir: &Path) -> Result<Vec<PathBuf>, String> {
         series.push(if law == LawKind::PowerLaw { s } else { s.dashed() });
     }
     panels.push(Panel::new("Peak force per Table 2 row (1 = baseline … 8)", "Table 2 row", "peak force (kN)", series));
-    save_grid(dir, "laws", "Contact laws on Table 2's scenarios (same restitution target as the paper's law)", (3, 3), &panels)
-        .map_err(|e| e.to_string())
+    Ok(save_grid(dir, "laws", "Contact laws on Table 2's scenarios (same restitution target as the paper's law)", (3, 3), &panels)?)
 }
 
 /// `identifiability.png/svg` from `identifiability.h5`: profiles Δχ² of
 /// m_f, k, c, n from the exit speed alone (top row) and from the four noisy
 /// histories (bottom row).
-pub fn identifiability(file: &Path, dir: &Path) -> Result<Vec<PathBuf>, String> {
+pub fn identifiability(file: &Path, dir: &Path) -> Result<Vec<PathBuf>, PaperError> {
     let data = read_identifiability(file)?;
     let mut panels = Vec::new();
     for (source, profiles) in SOURCES.iter().zip(&data.profiles) {
@@ -61,12 +61,11 @@ pub fn identifiability(file: &Path, dir: &Path) -> Result<Vec<PathBuf>, String> 
             panels.push(panel);
         }
     }
-    save_grid(
+    Ok(save_grid(
         dir,
         "identifiability",
         "Misfit profiles: exit speed alone (top) vs force, compression and velocity histories (bottom)",
         (2, 4),
         &panels,
-    )
-    .map_err(|e| e.to_string())
+    )?)
 }

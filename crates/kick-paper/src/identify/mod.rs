@@ -6,6 +6,7 @@ pub mod figures;
 pub use kick_store::identify::files;
 pub mod report;
 
+use crate::error::PaperError;
 pub use kick_store::identify::fit::{
     data, other_law_name, synthesize, table2, DataFit, ProfileReport, ProfileSettings, Synthesized, Table2Fits,
 };
@@ -14,7 +15,7 @@ use std::path::PathBuf;
 
 /// `kick fit profile`: the study and its file (kick-store), then its
 /// figure drawn from the file.
-pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, String> {
+pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, PaperError> {
     let figures = figure_paths(settings.out.as_ref(), "identifiability");
     check_figures(&figures)?;
     let mut report = kick_store::identify::fit::profile(settings)?;
@@ -27,7 +28,7 @@ pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, String> {
 
 /// `kick laws`: the comparisons and their file (kick-store), then the
 /// figure drawn from the file.
-pub fn laws(settings: &LawsSettings) -> Result<LawsReport, String> {
+pub fn laws(settings: &LawsSettings) -> Result<LawsReport, PaperError> {
     let figures = figure_paths(settings.out.as_ref(), "laws");
     check_figures(&figures)?;
     let mut report = kick_store::identify::laws::laws(settings)?;
@@ -42,7 +43,7 @@ fn figure_paths(dir: Option<&PathBuf>, name: &str) -> Vec<PathBuf> {
 }
 
 /// Refuse figure paths that would write over an input or a directory, as `--out` names them.
-fn check_figures(paths: &[PathBuf]) -> Result<(), String> {
+fn check_figures(paths: &[PathBuf]) -> Result<(), PaperError> {
     let targets: Vec<_> = paths.iter().map(|path| crate::output::Target::File { flag: "--out", path }).collect();
-    crate::output::check_paths(&targets, &[]).map_err(|e| e.to_string())
+    Ok(crate::output::check_paths(&targets, &[])?)
 }

@@ -3,20 +3,19 @@
 
 use super::*;
 use super::{estimate_cell, Role, Row};
-use kick_core::measurements::Measurements;
 use kick_core::{Parameter, ShellBall};
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
 fn file() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(kick_core::measurements::MEASUREMENTS_FILE)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(kick_store::measurements::MEASUREMENTS_FILE)
 }
 
 /// One validation for all tests (the 3D sweep takes a while in a debug build).
 fn validation() -> &'static (Validation, String, serde_json::Value) {
     static V: OnceLock<(Validation, String, serde_json::Value)> = OnceLock::new();
     V.get_or_init(|| {
-        let v = validate(&file()).expect("the committed measurements validate");
+        let v = validate(&kick_store::measurements::read(&file()).unwrap()).expect("the committed measurements validate");
         let page = markdown(&v, "v.json", "m.toml", "NOTES.md");
         let json = serde_json::to_value(&v).unwrap();
         (v, page, json)
@@ -182,7 +181,7 @@ fn tables_are_one_per_model_with_numbered_notes() {
 #[test]
 fn every_cited_source_is_listed() {
     let (v, page, _) = validation();
-    let m = Measurements::load(&file()).unwrap();
+    let m = kick_store::measurements::read(&file()).unwrap();
     for x in &m.measurements {
         for key in std::iter::once(&x.source).chain(&x.cites) {
             assert!(page.contains(&format!("- `{key}`: ")), "source `{key}` of `{}` is not listed", x.key);
@@ -316,7 +315,7 @@ fn notes_do_not_describe_other_files() {
         }
     }
     // Backticked measurement keys in the notes exist in the file.
-    let m = Measurements::load(&file()).unwrap();
+    let m = kick_store::measurements::read(&file()).unwrap();
     for key in
         notes.split('`').skip(1).step_by(2).filter(|k| k.ends_with("2002") || k.starts_with("critical_re") || k.starts_with("free_kick"))
     {
@@ -328,7 +327,7 @@ fn notes_do_not_describe_other_files() {
 /// the measurement file's numbers.
 #[test]
 fn the_flight_page_quotes_the_files_free_kick() {
-    let m = Measurements::load(&file()).unwrap();
+    let m = kick_store::measurements::read(&file()).unwrap();
     let get = |k: &str| m.get(k, "test").unwrap().interval_si().unwrap();
     assert_eq!(get("free_kick_speed"), crate::free_kick::ILLUSTRATED_SPEEDS);
     let [lo, hi] = get("free_kick_spin");

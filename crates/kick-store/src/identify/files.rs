@@ -42,8 +42,9 @@
 //! `maps/<source>/{x_factor, y_factor, chi_square}` (rows = grid points, x
 //! fastest; attributes x, y), for source `exit_speed` and `histories`.
 
-use crate::h5::{read_history, Compression, H5Error};
+use crate::h5::{read_history, Compression};
 use crate::run::{create_table, fill_table, finish_table};
+use crate::StoreError;
 use crate::{Column, Provenance, ResultFile, ResultWriter, SweepData};
 use indicatif::ProgressBar;
 use kick_core::laws::LawKind;
@@ -56,11 +57,8 @@ use kick_identify::table2::Table2Fit;
 use kick_identify::FitParameter;
 use kick_study::level::laws::LawTable;
 use kick_study::level::Level;
+use kick_study::StudyError;
 use std::path::{Path, PathBuf};
-
-fn text(e: H5Error) -> String {
-    e.to_string()
-}
 
 /// Write `laws.h5` (module docs): the comparison rows through the run loop
 /// ([`LawTable`]), their pulses beside them as histories, and the
@@ -72,34 +70,33 @@ pub fn write_laws(
     samples: u32,
     formula_targets: &[f64],
     formulas: &[Vec<f64>],
-) -> Result<PathBuf, String> {
-    let level = LawTable::new(all, samples).map_err(String::from)?;
-    let mut writer = create_table(&level, path, provenance, level.rows(), Compression::None).map_err(text)?;
+) -> Result<PathBuf, StoreError> {
+    let level = LawTable::new(all, samples).map_err(StudyError::from)?;
+    let mut writer = create_table(&level, path, provenance, level.rows(), Compression::None)?;
     let names: Vec<String> = all.iter().map(|c| c.name.clone()).collect();
-    crate::h5::write_strings(writer.file(), path, "scenario_names", &names).map_err(text)?;
+    crate::h5::write_strings(writer.file(), path, "scenario_names", &names)?;
     let bar = ProgressBar::hidden();
-    fill_table(&level, 0..level.rows(), &mut writer, &bar).map_err(text)?;
+    fill_table(&level, 0..level.rows(), &mut writer, &bar)?;
     for row in 0..all.len() {
         for set in 0..LawKind::ALL.len() {
             let (time, force) = level.pulse(row, set);
-            writer.write_history(set, row, &[(Column::new("time", "s"), &time), (Column::new("force", "N"), &force)]).map_err(text)?;
+            writer.write_history(set, row, &[(Column::new("time", "s"), &time), (Column::new("force", "N"), &force)])?;
         }
     }
     let w = writer.file();
-    let group = crate::h5::new_group(w, "restitution_formulas").map_err(|e| format!("{}: {e}", path.display()))?;
+    let group = crate::h5::new_group(w, "restitution_formulas").map_err(crate::h5::h5err(path))?;
     crate::h5::write_str_attr(
         &group,
         path,
         "description",
         "restitution each law gives when asked for target_restitution (baseline masses, k, n, V0; accurate solver)",
-    )
-    .map_err(text)?;
-    crate::h5::write_column(&group, path, &Column::new("target_restitution", "1"), formula_targets).map_err(text)?;
+    )?;
+    crate::h5::write_column(&group, path, &Column::new("target_restitution", "1"), formula_targets)?;
     for (k, law) in RESTITUTION_LAWS.iter().enumerate() {
         let column: Vec<f64> = formulas.iter().map(|row| row[k]).collect();
-        crate::h5::write_column(&group, path, &Column::new(law.name(), "1"), &column).map_err(text)?;
+        crate::h5::write_column(&group, path, &Column::new(law.name(), "1"), &column)?;
     }
-    finish_table(&level, writer, &bar).map(|summary| summary.path).map_err(|e| e.to_string())
+    Ok(finish_table(&level, writer, &bar)?.path)
 }
 
 /// `laws.h5` read back.
@@ -113,15 +110,15 @@ pub struct LawsData {
 }
 
 impl LawsData {
-    pub fn read(path: &Path) -> Result<LawsData, String> {
-        let sweep = SweepData::read(path).map_err(text)?;
-        let names = sweep.names.clone().ok_or_else(|| format!("{}: no scenario_names", path.display()))?;
-        let file = ResultFile::open(path).map_err(text)?;
-        let formula_targets = file.values("restitution_formulas/target_restitution").map_err(text)?;
+    pub fn read(path: &Path) -> Result<LawsData, StoreError> {
+        let sweep = SweepData::read(path)?;
+        let names = sweep.names.clone().ok_or_else(|| StoreError::Lacks { path: path.to_path_buf(), what: "no scenario_names".into() })?;
+        let file = ResultFile::open(path)?;
+        let formula_targets = file.values("restitution_formulas/target_restitution")?;
         let formulas = RESTITUTION_LAWS
             .iter()
-            .map(|&law| Ok((law, file.values(&format!("restitution_formulas/{}", law.name())).map_err(text)?)))
-            .collect::<Result<Vec<_>, String>>()?;
+            .map(|&law| Ok((law, file.values(&format!("restitution_formulas/{}", law.name()))?)))
+            .collect::<Result<Vec<_>, StoreError>>()?;
         Ok(LawsData { path: path.to_path_buf(), sweep, names, formula_targets, formulas })
     }
 
@@ -130,33 +127,32 @@ impl LawsData {
     }
 
     /// An outcome column of one law.
-    pub fn column(&self, law: LawKind, name: &str) -> Result<&[f64], String> {
-        let set = self.sweep.set(law.name()).map_err(text)?;
-        set.column(name).ok_or_else(|| format!("{}: law {} has no `{name}`", self.path.display(), law.name()))
+    pub fn column(&self, law: LawKind, name: &str) -> Result<&[f64], StoreError> {
+        let set = self.sweep.set(law.name())?;
+        set.column(name).ok_or_else(|| StoreError::Lacks { path: self.path.clone(), what: format!("law {} has no `{name}`", law.name()) })
     }
 
     /// A parameter column.
-    pub fn parameter(&self, name: &str) -> Result<&[f64], String> {
-        self.sweep.parameter(name).map_err(text)
+    pub fn parameter(&self, name: &str) -> Result<&[f64], StoreError> {
+        Ok(self.sweep.parameter(name)?)
     }
 
     /// The force pulse (t in s, F in N) of `law` on row `row`.
-    pub fn pulse(&self, law: LawKind, row: usize) -> Result<(Vec<f64>, Vec<f64>), String> {
-        let group = &self.sweep.set(law.name()).map_err(text)?.group;
-        let columns = read_history(&self.path, group, row).map_err(text)?;
+    pub fn pulse(&self, law: LawKind, row: usize) -> Result<(Vec<f64>, Vec<f64>), StoreError> {
+        let group = &self.sweep.set(law.name())?.group;
+        let columns = read_history(&self.path, group, row)?;
         let get = |name: &str| {
-            columns
-                .iter()
-                .find(|(c, _)| c.name == name)
-                .map(|(_, v)| v.clone())
-                .ok_or_else(|| format!("{}: pulse {row} of {} has no `{name}`", self.path.display(), law.name()))
+            columns.iter().find(|(c, _)| c.name == name).map(|(_, v)| v.clone()).ok_or_else(|| StoreError::Lacks {
+                path: self.path.clone(),
+                what: format!("pulse {row} of {} has no `{name}`", law.name()),
+            })
         };
         Ok((get("time")?, get("force")?))
     }
 }
 
-fn write_scalar(w: &ResultWriter, group: &str, name: &str, unit: &str, value: f64) -> Result<(), String> {
-    w.scalar(group, name, unit, value).map_err(text)
+fn write_scalar(w: &ResultWriter, group: &str, name: &str, unit: &str, value: f64) -> Result<(), StoreError> {
+    Ok(w.scalar(group, name, unit, value)?)
 }
 
 /// Write a fit report under `group` (module docs), with the data it was fitted to
@@ -167,10 +163,10 @@ pub fn write_fit(
     report: &FitReport,
     observations: &Observations,
     truth: &[(FitParameter, f64)],
-) -> Result<(), String> {
-    w.text(group, "law", report.law.name()).map_err(text)?;
-    w.text(group, "termination", &report.termination).map_err(text)?;
-    w.text(group, "converged", if report.converged { "true" } else { "false" }).map_err(text)?;
+) -> Result<(), StoreError> {
+    w.text(group, "law", report.law.name())?;
+    w.text(group, "termination", &report.termination)?;
+    w.text(group, "converged", if report.converged { "true" } else { "false" })?;
     write_scalar(w, group, "chi_square", "1", report.chi_square)?;
     write_scalar(w, group, "degrees_of_freedom", "1", report.degrees_of_freedom as f64)?;
     if let Some(s2) = report.residual_variance {
@@ -178,7 +174,7 @@ pub fn write_fit(
     }
     write_scalar(w, group, "evaluations", "1", report.evaluations as f64)?;
     let names: Vec<String> = report.estimates.iter().map(|e| e.parameter.name().to_string()).collect();
-    w.strings(group, "parameters", &names).map_err(text)?;
+    w.strings(group, "parameters", &names)?;
     for (i, e) in report.estimates.iter().enumerate() {
         let g = format!("{group}/estimates/{}", e.parameter.name());
         let unit = e.parameter.unit();
@@ -191,17 +187,17 @@ pub fn write_fit(
             write_scalar(w, &g, "truth", unit, *t)?;
         }
         if let Some(c) = &report.correlation {
-            w.column(&format!("{group}/correlation"), &Column::new(e.parameter.name(), "1"), &c[i]).map_err(text)?;
+            w.column(&format!("{group}/correlation"), &Column::new(e.parameter.name(), "1"), &c[i])?;
         }
     }
-    w.column(group, &Column::new("singular_values", "1"), &report.singular_values).map_err(text)?;
+    w.column(group, &Column::new("singular_values", "1"), &report.singular_values)?;
     // Residuals in `predict`'s order: scalars, then each channel over all
     // times; then each measurement's, under measurements/<i>.
     let mut residuals = report.residuals.iter();
     write_residuals(w, group, observations, &mut residuals)?;
     for (i, m) in observations.measurements.iter().enumerate() {
         let g = format!("{group}/measurements/{i}");
-        w.text(&g, "name", &m.name).map_err(text)?;
+        w.text(&g, "name", &m.name)?;
         for (p, value) in &m.conditions {
             write_scalar(w, &format!("{g}/conditions"), p.name(), p.unit(), *value)?;
         }
@@ -216,8 +212,8 @@ fn write_residuals<'a>(
     group: &str,
     observations: &Observations,
     residuals: &mut impl Iterator<Item = &'a kick_identify::fit::Residual>,
-) -> Result<(), String> {
-    let mut next = |label: &str| residuals.next().ok_or_else(|| format!("fit report: no residual for {label}"));
+) -> Result<(), StoreError> {
+    let mut next = |label: &str| residuals.next().ok_or_else(|| StoreError::NoResidual { label: label.to_string() });
     for s in &observations.scalars {
         let r = next(s.observable.name())?;
         let g = format!("{group}/residuals/{}", s.observable.name());
@@ -232,14 +228,14 @@ fn write_residuals<'a>(
             let rows = h.data.times.iter().map(|_| next(channel.name()).cloned()).collect::<Result<Vec<_>, _>>()?;
             let g = format!("{group}/residuals/{}", channel.name());
             let unit = channel.unit();
-            w.column(&g, &Column::new("time", "s"), &h.data.times).map_err(text)?;
+            w.column(&g, &Column::new("time", "s"), &h.data.times)?;
             for (name, unit, values) in [
                 ("observed", unit, rows.iter().map(|r| r.observed).collect::<Vec<_>>()),
                 ("predicted", unit, rows.iter().map(|r| r.predicted).collect()),
                 ("sigma", unit, rows.iter().map(|r| r.sigma).collect()),
                 ("weighted", "1", rows.iter().map(|r| r.weighted).collect()),
             ] {
-                w.column(&g, &Column::new(name, unit), &values).map_err(text)?;
+                w.column(&g, &Column::new(name, unit), &values)?;
             }
         }
     }
@@ -291,46 +287,46 @@ impl FitData {
     }
 }
 
-fn optional(file: &ResultFile, path: &str) -> Result<Option<f64>, String> {
+fn optional(file: &ResultFile, path: &str) -> Result<Option<f64>, StoreError> {
     if file.exists(path) {
-        file.scalar(path).map(Some).map_err(text)
+        Ok(Some(file.scalar(path)?))
     } else {
         Ok(None)
     }
 }
 
 /// Read the fit report under `group`.
-pub fn read_fit(file: &ResultFile, group: &str) -> Result<FitData, String> {
-    let names = file.strings(&format!("{group}/parameters")).map_err(text)?;
+pub fn read_fit(file: &ResultFile, group: &str) -> Result<FitData, StoreError> {
+    let names = file.strings(&format!("{group}/parameters"))?;
     let mut estimates = Vec::new();
     for name in &names {
         let g = format!("{group}/estimates/{name}");
-        let (column, value) = file.column(&format!("{g}/value")).map_err(text)?;
-        let [value] = value[..] else { return Err(format!("{g}/value: expected one value")) };
+        let (column, value) = file.column(&format!("{g}/value"))?;
+        let [value] = value[..] else { return Err(StoreError::NotScalar { dataset: format!("{g}/value") }) };
         estimates.push(EstimateData {
             name: name.clone(),
             unit: column.unit,
             value,
-            start: file.scalar(&format!("{g}/start")).map_err(text)?,
+            start: file.scalar(&format!("{g}/start"))?,
             standard_uncertainty: optional(file, &format!("{g}/standard_uncertainty"))?,
             truth: optional(file, &format!("{g}/truth"))?,
         });
     }
     let correlation = if file.exists(&format!("{group}/correlation")) {
-        Some(names.iter().map(|n| file.values(&format!("{group}/correlation/{n}")).map_err(text)).collect::<Result<Vec<_>, _>>()?)
+        Some(names.iter().map(|n| file.values(&format!("{group}/correlation/{n}"))).collect::<Result<Vec<_>, _>>()?)
     } else {
         None
     };
     Ok(FitData {
-        law: file.text(group, "law").map_err(text)?,
-        converged: file.text(group, "converged").map_err(text)? == "true",
-        termination: file.text(group, "termination").map_err(text)?,
-        chi_square: file.scalar(&format!("{group}/chi_square")).map_err(text)?,
-        degrees_of_freedom: file.scalar(&format!("{group}/degrees_of_freedom")).map_err(text)?,
+        law: file.text(group, "law")?,
+        converged: file.text(group, "converged")? == "true",
+        termination: file.text(group, "termination")?,
+        chi_square: file.scalar(&format!("{group}/chi_square"))?,
+        degrees_of_freedom: file.scalar(&format!("{group}/degrees_of_freedom"))?,
         residual_variance: optional(file, &format!("{group}/residual_variance"))?,
         estimates,
         correlation,
-        singular_values: file.values(&format!("{group}/singular_values")).map_err(text)?,
+        singular_values: file.values(&format!("{group}/singular_values"))?,
     })
 }
 
@@ -343,12 +339,12 @@ pub fn write_table2_fits(
     observations: &[Observations],
     file_values: &[Option<f64>],
     seed_fits: &[Option<f64>],
-) -> Result<PathBuf, String> {
-    let w = ResultWriter::create(path, provenance, &crate::layouts::FIT_TABLE2).map_err(text)?;
+) -> Result<PathBuf, StoreError> {
+    let w = ResultWriter::create(path, provenance, &crate::layouts::FIT_TABLE2)?;
     for (i, f) in fits.iter().enumerate() {
         let g = format!("rows/{i:02}");
-        w.text(&g, "name", &f.name).map_err(text)?;
-        w.text(&g, "parameter", f.parameter.map_or("", |p| p.name())).map_err(text)?;
+        w.text(&g, "name", &f.name)?;
+        w.text(&g, "parameter", f.parameter.map_or("", |p| p.name()))?;
         if let (Some(report), Some(p)) = (&f.report, f.parameter) {
             write_fit(&w, &format!("{g}/fit"), report, &observations[i], &[])?;
             if let Some(v) = file_values[i] {
@@ -362,7 +358,7 @@ pub fn write_table2_fits(
             write_scalar(&w, &format!("{g}/baseline_residuals"), observable.name(), "1", *weighted)?;
         }
     }
-    w.finish().map_err(text)
+    Ok(w.finish()?)
 }
 
 /// One row of `kick fit table2 --out` read back.
@@ -377,23 +373,22 @@ pub struct Table2Row {
     pub baseline_residuals: Vec<(String, f64)>,
 }
 
-pub fn read_table2_fits(path: &Path) -> Result<Vec<Table2Row>, String> {
-    let file = ResultFile::open(path).map_err(text)?;
+pub fn read_table2_fits(path: &Path) -> Result<Vec<Table2Row>, StoreError> {
+    let file = ResultFile::open(path)?;
     let mut rows = Vec::new();
-    for member in file.members("rows").map_err(text)? {
+    for member in file.members("rows")? {
         let g = format!("rows/{member}");
-        let parameter = file.text(&g, "parameter").map_err(text)?;
+        let parameter = file.text(&g, "parameter")?;
         let baseline_residuals = if file.exists(&format!("{g}/baseline_residuals")) {
-            file.members(&format!("{g}/baseline_residuals"))
-                .map_err(text)?
+            file.members(&format!("{g}/baseline_residuals"))?
                 .into_iter()
-                .map(|o| Ok((o.clone(), file.scalar(&format!("{g}/baseline_residuals/{o}")).map_err(text)?)))
-                .collect::<Result<Vec<_>, String>>()?
+                .map(|o| Ok((o.clone(), file.scalar(&format!("{g}/baseline_residuals/{o}"))?)))
+                .collect::<Result<Vec<_>, StoreError>>()?
         } else {
             Vec::new()
         };
         rows.push(Table2Row {
-            name: file.text(&g, "name").map_err(text)?,
+            name: file.text(&g, "name")?,
             fit: if parameter.is_empty() { None } else { Some(read_fit(&file, &format!("{g}/fit"))?) },
             parameter: (!parameter.is_empty()).then_some(parameter),
             file_value: optional(&file, &format!("{g}/file_value"))?,
@@ -407,29 +402,29 @@ pub fn read_table2_fits(path: &Path) -> Result<Vec<Table2Row>, String> {
 /// The two data sources of the identifiability study, as group names.
 pub const SOURCES: [&str; 2] = ["exit_speed", "histories"];
 
-fn write_profiles(w: &ResultWriter, source: &str, profiles: &[Profile]) -> Result<(), String> {
+fn write_profiles(w: &ResultWriter, source: &str, profiles: &[Profile]) -> Result<(), StoreError> {
     let g = format!("profiles/{source}");
     let names: Vec<String> = profiles.iter().map(|p| p.parameter.name().to_string()).collect();
-    w.strings(&g, "parameters", &names).map_err(text)?;
+    w.strings(&g, "parameters", &names)?;
     for p in profiles {
         let pg = format!("{g}/{}", p.parameter.name());
         write_scalar(w, &pg, "truth", p.parameter.unit(), p.truth)?;
-        w.column(&pg, &Column::new("factor", "1"), &p.points.iter().map(|q| q.factor).collect::<Vec<_>>()).map_err(text)?;
-        w.column(&pg, &Column::new("value", p.parameter.unit()), &p.points.iter().map(|q| q.value).collect::<Vec<_>>()).map_err(text)?;
-        w.column(&pg, &Column::new("chi_square", "1"), &p.points.iter().map(|q| q.chi_square).collect::<Vec<_>>()).map_err(text)?;
+        w.column(&pg, &Column::new("factor", "1"), &p.points.iter().map(|q| q.factor).collect::<Vec<_>>())?;
+        w.column(&pg, &Column::new("value", p.parameter.unit()), &p.points.iter().map(|q| q.value).collect::<Vec<_>>())?;
+        w.column(&pg, &Column::new("chi_square", "1"), &p.points.iter().map(|q| q.chi_square).collect::<Vec<_>>())?;
         let others: Vec<FitParameter> = p.points.first().map(|q| q.others.iter().map(|o| o.0).collect()).unwrap_or_default();
         for (k, other) in others.iter().enumerate() {
             let factors: Vec<f64> = p.points.iter().map(|q| q.others.get(k).map_or(f64::NAN, |o| o.1)).collect();
-            w.column(&format!("{pg}/others"), &Column::new(other.name(), "1"), &factors).map_err(text)?;
+            w.column(&format!("{pg}/others"), &Column::new(other.name(), "1"), &factors)?;
         }
     }
     Ok(())
 }
 
-fn write_map(w: &ResultWriter, source: &str, map: &MisfitMap) -> Result<(), String> {
+fn write_map(w: &ResultWriter, source: &str, map: &MisfitMap) -> Result<(), StoreError> {
     let g = format!("maps/{source}");
-    w.text(&g, "x", map.x.name()).map_err(text)?;
-    w.text(&g, "y", map.y.name()).map_err(text)?;
+    w.text(&g, "x", map.x.name())?;
+    w.text(&g, "y", map.y.name())?;
     let (mut x, mut y, mut chi) = (Vec::new(), Vec::new(), Vec::new());
     for (iy, &fy) in map.y_factors.iter().enumerate() {
         for (ix, &fx) in map.x_factors.iter().enumerate() {
@@ -438,18 +433,18 @@ fn write_map(w: &ResultWriter, source: &str, map: &MisfitMap) -> Result<(), Stri
             chi.push(map.chi_square[iy][ix]);
         }
     }
-    w.column(&g, &Column::new("x_factor", "1"), &x).map_err(text)?;
-    w.column(&g, &Column::new("y_factor", "1"), &y).map_err(text)?;
-    w.column(&g, &Column::new("chi_square", "1"), &chi).map_err(text)
+    w.column(&g, &Column::new("x_factor", "1"), &x)?;
+    w.column(&g, &Column::new("y_factor", "1"), &y)?;
+    Ok(w.column(&g, &Column::new("chi_square", "1"), &chi)?)
 }
 
 /// Write `identifiability.h5` (module docs).
-pub fn write_identifiability(path: &Path, provenance: &Provenance, study: &IdentifiabilityStudy) -> Result<PathBuf, String> {
-    let w = ResultWriter::create(path, provenance, &crate::layouts::IDENTIFIABILITY).map_err(text)?;
+pub fn write_identifiability(path: &Path, provenance: &Provenance, study: &IdentifiabilityStudy) -> Result<PathBuf, StoreError> {
+    let w = ResultWriter::create(path, provenance, &crate::layouts::IDENTIFIABILITY)?;
     write_scalar(&w, "settings", "seed", "1", study.seed as f64)?;
     write_scalar(&w, "settings", "history_times", "1", study.history_times as f64)?;
     write_scalar(&w, "settings", "exit_speed_sigma", "m/s", study.exit_speed_sigma)?;
-    w.text("settings", "law", study.truth.law_kind().name()).map_err(text)?;
+    w.text("settings", "law", study.truth.law_kind().name())?;
     for p in Parameter::ALL {
         write_scalar(&w, "truth", p.name(), p.unit(), study.truth.get(p))?;
     }
@@ -460,7 +455,7 @@ pub fn write_identifiability(path: &Path, provenance: &Provenance, study: &Ident
     write_profiles(&w, SOURCES[1], &study.history_profiles)?;
     write_map(&w, SOURCES[0], &study.exit_speed_map)?;
     write_map(&w, SOURCES[1], &study.history_map)?;
-    w.finish().map_err(text)
+    Ok(w.finish()?)
 }
 
 /// One misfit profile read back.
@@ -493,36 +488,36 @@ pub struct IdentifiabilityData {
     pub profiles: Vec<Vec<ProfileData>>,
 }
 
-pub fn read_identifiability(path: &Path) -> Result<IdentifiabilityData, String> {
-    let file = ResultFile::open(path).map_err(text)?;
+pub fn read_identifiability(path: &Path) -> Result<IdentifiabilityData, StoreError> {
+    let file = ResultFile::open(path)?;
     let mut profiles = Vec::new();
     for source in SOURCES {
         let g = format!("profiles/{source}");
         let mut list = Vec::new();
-        for name in file.strings(&format!("{g}/parameters")).map_err(text)? {
+        for name in file.strings(&format!("{g}/parameters"))? {
             let pg = format!("{g}/{name}");
-            let (value_column, value) = file.column(&format!("{pg}/value")).map_err(text)?;
+            let (value_column, value) = file.column(&format!("{pg}/value"))?;
             list.push(ProfileData {
                 parameter: name,
                 unit: value_column.unit,
-                truth: file.scalar(&format!("{pg}/truth")).map_err(text)?,
-                factor: file.values(&format!("{pg}/factor")).map_err(text)?,
+                truth: file.scalar(&format!("{pg}/truth"))?,
+                factor: file.values(&format!("{pg}/factor"))?,
                 value,
-                chi_square: file.values(&format!("{pg}/chi_square")).map_err(text)?,
+                chi_square: file.values(&format!("{pg}/chi_square"))?,
             });
         }
         profiles.push(list);
     }
     let mut history_sigma = Vec::new();
-    for channel in file.members("history_sigma").map_err(text)? {
+    for channel in file.members("history_sigma")? {
         let path = format!("history_sigma/{channel}");
-        let (column, _) = file.column(&path).map_err(text)?;
-        history_sigma.push((channel, file.scalar(&path).map_err(text)?, column.unit));
+        let (column, _) = file.column(&path)?;
+        history_sigma.push((channel, file.scalar(&path)?, column.unit));
     }
     Ok(IdentifiabilityData {
-        seed: file.scalar("settings/seed").map_err(text)?,
-        history_times: file.scalar("settings/history_times").map_err(text)?,
-        exit_speed_sigma: file.scalar("settings/exit_speed_sigma").map_err(text)?,
+        seed: file.scalar("settings/seed")?,
+        history_times: file.scalar("settings/history_times")?,
+        exit_speed_sigma: file.scalar("settings/exit_speed_sigma")?,
         history_sigma,
         profiles,
     })

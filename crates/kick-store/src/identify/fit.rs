@@ -4,13 +4,14 @@
 
 use crate::identify::files;
 use crate::printable::Printable;
+use crate::StoreError;
 use crate::{Provenance, ResultWriter};
 use kick_core::{sig, LawKind, Parameter, Scenario, ScenarioSpec};
 use kick_identify::data::{Channel, FitSpec};
 use kick_identify::fit::{fit, FitOptions, FitProblem, FitReport};
 use kick_identify::profile::{identifiability_study, IdentifiabilityStudy};
 use kick_identify::table2::Table2Fit;
-use kick_identify::{synthetic, FitParameter, IdentifyError, ModelPoint};
+use kick_identify::{synthetic, FitParameter, ModelPoint};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -19,10 +20,6 @@ use std::path::{Path, PathBuf};
 /// The fit's settings a report states (kick-identify's).
 pub use kick_identify::fit::{JACOBIAN_STEP, MAX_ONSET_RESTARTS, RANK_TOLERANCE};
 pub use kick_identify::model::RECORD_FRACTION;
-
-fn text(e: IdentifyError) -> String {
-    e.to_string()
-}
 
 /// The identifiability study's file, below `--out`.
 pub const IDENTIFIABILITY_FILE: &str = "identifiability.h5";
@@ -51,18 +48,18 @@ pub struct ProfileReport {
 
 /// Identifiability (Section 17.8): misfit profiles of m_f, k, c, n from the
 /// exit speed alone and from noisy histories, and (k, c) misfit maps.
-pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, String> {
+pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, StoreError> {
     let ProfileSettings { out, spread, points, map_points, seed } = settings.clone();
     if !(3..=101).contains(&points) || !(3..=201).contains(&map_points) {
-        return Err(format!("--points must be in 3..=101 and --map-points in 3..=201 (got {points}, {map_points})"));
+        let message = format!("--points must be in 3..=101 and --map-points in 3..=201 (got {points}, {map_points})");
+        return Err(StoreError::Flag { flag: if (3..=101).contains(&points) { "--map-points" } else { "--points" }, message });
     }
-    let study = identifiability_study(&Scenario::baseline(), spread, points, map_points, 80, seed, &FitOptions::default()).map_err(text)?;
+    let study = identifiability_study(&Scenario::baseline(), spread, points, map_points, 80, seed, &FitOptions::default())?;
     let mut written = Vec::new();
     if let Some(dir) = out {
         // Reads nothing: the files themselves are checked.
         let files = [dir.join(IDENTIFIABILITY_FILE)];
-        crate::output::check_paths(&files.each_ref().map(|path| crate::output::Target::File { flag: "--out", path }), &[])
-            .map_err(|e| e.to_string())?;
+        crate::output::check_paths(&files.each_ref().map(|path| crate::output::Target::File { flag: "--out", path }), &[])?;
         let command = format!("kick fit profile --spread {spread} --points {points} --map-points {map_points} --seed {seed}");
         let provenance = Provenance::now("identifiability", "kick fit profile (command line)", &command);
         written.push(files::write_identifiability(&dir.join(IDENTIFIABILITY_FILE), &provenance, &study)?);
@@ -90,22 +87,22 @@ impl Printable for ProfileReport {
 
 /// Write `kick fit table2 --out`: the fits, the scenario file's values and
 /// the same fits to seed-rk4's unrounded outputs at those values.
-fn write_table2(path: &Path, scenarios: &Path, fits: &[Table2Fit]) -> Result<PathBuf, String> {
+fn write_table2(path: &Path, scenarios: &Path, fits: &[Table2Fit]) -> Result<PathBuf, StoreError> {
     let file = crate::table2::load(scenarios)?;
-    let seed = kick_compliant::SeedRk4::new(file.dt).map_err(|e| e.to_string())?;
+    let seed = kick_compliant::SeedRk4::new(file.dt)?;
     let options = FitOptions::default();
     let mut file_values = Vec::new();
     let mut seed_fits = Vec::new();
     let mut observations = Vec::new();
-    for (index, (row, (_, scenario))) in file.row.iter().zip(file.scenarios().map_err(|e| e.to_string())?).enumerate() {
+    for (index, (row, (_, scenario))) in file.row.iter().zip(file.scenarios()?).enumerate() {
         observations.push(kick_identify::table2::printed_observations(&kick_core::paper::TABLE2[index]));
         file_values.push(row.value);
         seed_fits.push(match row.parameter {
             None => None,
             Some(_) => {
-                let outcome = kick_core::Solver::solve(&seed, &scenario).map_err(|e| e.to_string())?;
+                let outcome = kick_core::Solver::solve(&seed, &scenario)?;
                 let unrounded = kick_identify::table2::unrounded_observations(&outcome);
-                kick_identify::table2::fit_row_to(index, unrounded, &options).map_err(text)?.value()
+                kick_identify::table2::fit_row_to(index, unrounded, &options)?.value()
             }
         });
     }
@@ -134,20 +131,20 @@ pub struct Table2Fits {
 /// printed observables (accurate solver). `write`: the seed-rk4 scenario
 /// file (Brent roots); `out`: the fits (HDF5) beside the values of the
 /// scenario file `scenarios`.
-pub fn table2(write: Option<&Path>, out: Option<&Path>, scenarios: &Path) -> Result<Table2Fits, String> {
+pub fn table2(write: Option<&Path>, out: Option<&Path>, scenarios: &Path) -> Result<Table2Fits, StoreError> {
     // The scenario file is read only for --out.
     let reads: Vec<&Path> = out.map(|_| scenarios).into_iter().collect();
     if let Some(path) = write {
-        crate::output::check_output(path, "--write", "toml", &reads).map_err(|e| e.to_string())?;
+        crate::output::check_output(path, "--write", "toml", &reads)?;
     }
     if let Some(path) = out {
         let inputs: Vec<&Path> = reads.iter().copied().chain(write).collect();
-        crate::output::check_output(path, "--out", "h5", &inputs).map_err(|e| e.to_string())?;
+        crate::output::check_output(path, "--out", "h5", &inputs)?;
     }
     let mut written = Vec::new();
     if let Some(path) = write {
-        let file = kick_compliant::table2::fit().map_err(|e| e.to_string())?;
-        let body = toml::to_string_pretty(&file).map_err(|e| e.to_string())?;
+        let file = kick_compliant::table2::fit()?;
+        let body = toml::to_string_pretty(&file)?;
         let text = format!(
             "# Generated by `kick fit table2 --write {}`; do not edit.\n\
              # root: Brent root of seed-rk4's v_b+ on the printed value; value: the root\n\
@@ -159,9 +156,9 @@ pub fn table2(write: Option<&Path>, out: Option<&Path>, scenarios: &Path) -> Res
              # what \"seed-rk4 prints as the paper\" (paper/README.md) checks.\n{body}",
             path.display()
         );
-        crate::output::write(path, text).map_err(|e| e.to_string())?;
+        crate::output::write(path, text)?;
     }
-    let fits = kick_identify::table2::fit_all(&FitOptions::default()).map_err(text)?;
+    let fits = kick_identify::table2::fit_all(&FitOptions::default())?;
     if let Some(path) = out {
         written.push(write_table2(path, scenarios, &fits)?);
     }
@@ -223,38 +220,39 @@ pub struct DataFit {
 
 /// Fit the parameters the specification file `spec_path` names to its data
 /// (TOML/JSON); `out`: the fit report (HDF5).
-pub fn data(spec_path: &Path, out: Option<&Path>) -> Result<DataFit, String> {
-    let (spec, observations) = FitSpec::load(spec_path).map_err(text)?;
+pub fn data(spec_path: &Path, out: Option<&Path>) -> Result<DataFit, StoreError> {
+    let (spec, observations) = FitSpec::load(spec_path)?;
     let name = spec_path.display().to_string();
     if let Some(path) = out {
         let history = spec.history.as_ref().map(|h| spec_path.parent().unwrap_or(Path::new(".")).join(&h.file));
         let inputs: Vec<&Path> = std::iter::once(spec_path).chain(history.as_deref()).collect();
-        crate::output::check_output(path, "--out", "h5", &inputs).map_err(|e| e.to_string())?;
+        crate::output::check_output(path, "--out", "h5", &inputs)?;
     }
-    let start = spec.start(&name).map_err(text)?;
-    let free = spec.free_parameters().map_err(text)?;
-    let truth = spec.truth().map_err(text)?;
+    let start = spec.start(&name)?;
+    let free = spec.free_parameters()?;
+    let truth = spec.truth()?;
     let problem = FitProblem { start, free, observations };
-    let report = fit(&problem, &FitOptions::default()).map_err(text)?;
+    let report = fit(&problem, &FitOptions::default())?;
     let mut written = Vec::new();
     if let Some(path) = out {
-        let spec_text = kick_core::input::read_text(spec_path, kick_core::input::MAX_TEXT_BYTES).map_err(|e| format!("{name}: {e}"))?;
+        let spec_text = kick_core::input::read_text(spec_path, kick_core::input::MAX_TEXT_BYTES)
+            .map_err(|source| StoreError::Input { name: name.clone(), source })?;
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("fit");
         let provenance = Provenance::now(stem, &name, &spec_text);
-        let w = ResultWriter::create(path, &provenance, &crate::layouts::FIT).map_err(|e| e.to_string())?;
+        let w = ResultWriter::create(path, &provenance, &crate::layouts::FIT)?;
         files::write_fit(&w, "fit", &report, &problem.observations, &truth)?;
-        written.push(w.finish().map_err(|e| e.to_string())?);
+        written.push(w.finish()?);
     }
     Ok(DataFit { report, truth, written })
 }
 
 impl DataFit {
     /// An error unless the fit converged.
-    pub fn converged(&self) -> Result<(), String> {
+    pub fn converged(&self) -> Result<(), StoreError> {
         if self.report.converged {
             Ok(())
         } else {
-            Err(format!("the fit stopped without converging: {}", self.report.termination))
+            Err(StoreError::NotConverged { termination: self.report.termination.clone() })
         }
     }
 }
@@ -365,48 +363,46 @@ pub fn synthesize(
     truth: &ScenarioSpec,
     time_offset: f64,
     other_law: Option<LawKind>,
-) -> Result<Synthesized, String> {
+) -> Result<Synthesized, StoreError> {
     if !(2..=100_000).contains(&times) {
-        return Err(format!("--times must be in 2..=100000 (got {times})"));
+        return Err(StoreError::Flag { flag: "--times", message: format!("--times must be in 2..=100000 (got {times})") });
     }
     if name.is_empty() || name.contains(['/', '\\']) {
-        return Err(format!("--name must be a plain file stem (got `{name}`)"));
+        return Err(StoreError::Flag { flag: "--name", message: format!("--name must be a plain file stem (got `{name}`)") });
     }
     let csv = out.join(format!("{name}.csv"));
     let toml_path = out.join(format!("{name}.toml"));
     // Reads nothing; the two files are checked before the work.
     let targets = [&csv, &toml_path].map(|path| crate::output::Target::File { flag: "--out", path });
-    crate::output::check_paths(&targets, &[]).map_err(|e| e.to_string())?;
-    let scenario = truth.build().map_err(|e| e.to_string())?;
+    crate::output::check_paths(&targets, &[])?;
+    let scenario = truth.build()?;
     if let Some(law) = other_law.filter(|&law| law == scenario.law_kind()) {
-        return Err(format!("--also-fit-law {}: the data's own law; give another", law.name()));
+        let message = format!("--also-fit-law {}: the data's own law; give another", law.name());
+        return Err(StoreError::Flag { flag: "--also-fit-law", message });
     }
-    let truth = ModelPoint::new(scenario, time_offset).map_err(text)?;
+    let truth = ModelPoint::new(scenario, time_offset)?;
     let options = FitOptions::default();
     let sigma = synthetic::lab_sigma(&Channel::ALL);
     let grid = synthetic::time_grid(&scenario, times, 1.2);
-    let data = synthetic::history(&options.solver, &truth, grid, &sigma, seed).map_err(text)?;
-    let history = data.history.ok_or("no history produced")?;
+    let data = synthetic::history(&options.solver, &truth, grid, &sigma, seed)?;
+    let history = data.history.ok_or(StoreError::NoHistory)?;
     let spec = synthetic_spec(&truth, &truth, &format!("{name}.csv"), &sigma, seed, &toml_path);
     // The data and the specification that reads it: both or neither.
     let data = history.data.to_csv();
-    crate::output::write_all(&[(&csv, data.as_bytes()), (&toml_path, spec.as_bytes())]).map_err(|e| e.to_string())?;
+    crate::output::write_all(&[(&csv, data.as_bytes()), (&toml_path, spec.as_bytes())])?;
     let other_law_spec = match other_law {
         Some(law) => {
             // The other law's start: the truth's values; its restitution, when it takes one, the data's.
             let e = match truth.scenario.restitution_target() {
                 Some(e) => e,
-                None => {
-                    kick_core::Solver::solve(&kick_compliant::Accurate::default(), &truth.scenario).map_err(|e| e.to_string())?.restitution
-                }
+                None => kick_core::Solver::solve(&kick_compliant::Accurate::default(), &truth.scenario)?.restitution,
             };
             let e = Some(e);
-            let start = ModelPoint::new(truth.scenario.with_law(law, e).map_err(|e| e.to_string())?, truth.time_offset).map_err(text)?;
+            let start = ModelPoint::new(truth.scenario.with_law(law, e)?, truth.time_offset)?;
             let path = out.join(format!("{}.toml", other_law_name(name, law)));
             let target = [crate::output::Target::File { flag: "--out", path: &path }];
-            crate::output::check_paths(&target, &[]).map_err(|e| e.to_string())?;
-            crate::output::write(&path, synthetic_spec(&truth, &start, &format!("{name}.csv"), &sigma, seed, &path))
-                .map_err(|e| e.to_string())?;
+            crate::output::check_paths(&target, &[])?;
+            crate::output::write(&path, synthetic_spec(&truth, &start, &format!("{name}.csv"), &sigma, seed, &path))?;
             Some(path)
         }
         None => None,
@@ -477,4 +473,25 @@ fn synthetic_spec(truth: &ModelPoint, fit: &ModelPoint, csv: &str, sigma: &BTree
         sigma_text.join(", "),
         truths.join("\n")
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A refused setting is the flag the user gave, before any work.
+    #[test]
+    fn a_refused_setting_names_its_flag() {
+        let out = std::env::temp_dir().join(format!("kick-store-fit-flags-{}", std::process::id()));
+        let e = synthesize(&out, "x", 1, 1, &ScenarioSpec::default(), 0.0, None).unwrap_err();
+        assert!(matches!(e, StoreError::Flag { flag: "--times", .. }), "{e:?}");
+        assert_eq!(e.to_string(), "--times must be in 2..=100000 (got 1)");
+        let e = synthesize(&out, "a/b", 1, 10, &ScenarioSpec::default(), 0.0, None).unwrap_err();
+        assert!(matches!(e, StoreError::Flag { flag: "--name", .. }), "{e:?}");
+        assert!(e.to_string().contains("`a/b`"), "{e}");
+        let settings = ProfileSettings { out: None, spread: 2.0, points: 5, map_points: 2, seed: 1 };
+        let e = profile(&settings).unwrap_err();
+        assert!(matches!(e, StoreError::Flag { flag: "--map-points", .. }), "{e:?}");
+        assert!(!out.exists());
+    }
 }

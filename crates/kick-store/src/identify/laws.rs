@@ -3,7 +3,7 @@
 //! its figure from that file.
 
 use crate::printable::Printable;
-use crate::Provenance;
+use crate::{Provenance, StoreError};
 use kick_compliant::Accurate;
 use kick_core::{sig, Scenario};
 use kick_identify::laws::{compare, restitution_table, LawComparison};
@@ -35,11 +35,11 @@ pub struct LawsReport {
 pub const LAWS_FILE: &str = "laws.h5";
 
 /// The contact laws on Table 2's scenarios; with `out`, laws.h5.
-pub fn laws(settings: &LawsSettings) -> Result<LawsReport, String> {
+pub fn laws(settings: &LawsSettings) -> Result<LawsReport, StoreError> {
     if let Some(dir) = &settings.out {
         let files = [dir.join(LAWS_FILE)];
         let targets = files.each_ref().map(|path| crate::output::Target::File { flag: "--out", path });
-        crate::output::check_paths(&targets, &[&settings.scenarios]).map_err(|e| e.to_string())?;
+        crate::output::check_paths(&targets, &[&settings.scenarios])?;
     }
     let comparisons = comparisons(settings)?;
     let written = match &settings.out {
@@ -49,16 +49,18 @@ pub fn laws(settings: &LawsSettings) -> Result<LawsReport, String> {
     Ok(LawsReport { comparisons, written })
 }
 
-fn comparisons(args: &LawsSettings) -> Result<Vec<LawComparison>, String> {
+fn comparisons(args: &LawsSettings) -> Result<Vec<LawComparison>, StoreError> {
     if !(10..=100_000).contains(&args.samples) {
-        return Err(format!("--samples must be in 10..=100000 (got {})", args.samples));
+        return Err(StoreError::Flag { flag: "--samples", message: format!("--samples must be in 10..=100000 (got {})", args.samples) });
     }
     let file = crate::table2::load(&args.scenarios)?;
     let solver = Accurate::default();
-    file.scenarios()
-        .map_err(|e| e.to_string())?
+    file.scenarios()?
         .iter()
-        .map(|(name, s)| compare(name, s, &solver, s.elastic_contact_time() / args.samples as f64).map_err(|e| format!("{name}: {e}")))
+        .map(|(name, s)| {
+            compare(name, s, &solver, s.elastic_contact_time() / args.samples as f64)
+                .map_err(|source| StoreError::Row { name: name.clone(), source })
+        })
         .collect()
 }
 
@@ -66,8 +68,8 @@ fn comparisons(args: &LawsSettings) -> Result<Vec<LawComparison>, String> {
 pub const FORMULA_TARGETS: [f64; 7] = [0.99, 0.95, 0.9, 0.8, 0.7, 0.5, 0.3];
 
 /// Write `dir/laws.h5`.
-fn write(args: &LawsSettings, all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+fn write(args: &LawsSettings, all: &[LawComparison], dir: &Path) -> Result<Vec<PathBuf>, StoreError> {
+    std::fs::create_dir_all(dir).map_err(|source| StoreError::CreateDir { path: dir.to_path_buf(), source })?;
     let scenarios = crate::table2::read_text(&args.scenarios)?;
     let text = format!(
         "# kick laws --scenarios {} --samples {}
@@ -76,7 +78,7 @@ fn write(args: &LawsSettings, all: &[LawComparison], dir: &Path) -> Result<Vec<P
         args.samples
     );
     let provenance = Provenance::now("laws", &args.scenarios.display().to_string(), &text);
-    let formulas = restitution_table(&Scenario::baseline(), &FORMULA_TARGETS, &Accurate::default()).map_err(|e| e.to_string())?;
+    let formulas = restitution_table(&Scenario::baseline(), &FORMULA_TARGETS, &Accurate::default())?;
     Ok(vec![crate::identify::files::write_laws(&dir.join(LAWS_FILE), &provenance, all, args.samples, &FORMULA_TARGETS, &formulas)?])
 }
 

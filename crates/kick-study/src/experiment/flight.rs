@@ -173,23 +173,34 @@ pub(super) fn check_axis_value(
     }
 }
 
+/// Why a flight parameter cannot be a sweep axis (the error names the key).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum FlightAxisError {
+    #[error("`{name}` is a flight parameter: add a [flight] table to fly the kicks")]
+    NoFlight { name: String },
+    #[error("`{name}` is set by the kick")]
+    SetByKick { name: String },
+    #[error("`{name}` is also set in [flight] or [base]; set it in one place")]
+    SetTwice { name: String },
+}
+
 /// The flight parameter a sweep axis `name` names: one the kick leaves
 /// (`after`), with a `[flight]` table; `None` when `name` is no flight parameter.
 pub(super) fn axis_parameter(
     name: &str,
     plan: Option<&FlightPlan>,
     after: After,
-) -> Option<Result<&'static kick_core::ParameterDef, String>> {
+) -> Option<Result<&'static kick_core::ParameterDef, FlightAxisError>> {
     let q = FlightParameter::from_name(name).ok()?;
     let kick = match after {
         After::OneD => crate::flight::After::Kick1d,
         After::ThreeD => crate::flight::After::Kick3d,
     };
     Some(match plan {
-        None => Err(format!("`{name}` is a flight parameter: add a [flight] table to fly the kicks")),
-        Some(_) if kick.sets(q) => Err(format!("`{name}` is set by the kick")),
+        None => Err(FlightAxisError::NoFlight { name: name.to_string() }),
+        Some(_) if kick.sets(q) => Err(FlightAxisError::SetByKick { name: name.to_string() }),
         Some(plan) if plan.rest.is_set(q) || (q == FlightParameter::Distance && plan.planes.is_some()) => {
-            Err(format!("`{name}` is also set in [flight] or [base]; set it in one place"))
+            Err(FlightAxisError::SetTwice { name: name.to_string() })
         }
         Some(_) => Ok(q.def()),
     })

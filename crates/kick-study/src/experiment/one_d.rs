@@ -24,7 +24,7 @@ pub(super) fn axes(at: &Locator, raw: &RawExperiment, flight: Option<&FlightPlan
         let name = axis.parameter.get_ref();
         let key = format!("sweep.{name}");
         let parameter = match super::flight::axis_parameter(name, flight, super::flight::After::OneD) {
-            Some(found) => found.map_err(|message| at.error(axis.parameter.span(), &key, message))?,
+            Some(found) => found.map_err(|e| at.error(axis.parameter.span(), &key, e.to_string()))?,
             None => parameters::find_at(ScenarioSpec::LEVELS, name).map_err(|e| {
                 let mut valid: Vec<&'static str> = parameters::at_levels(ScenarioSpec::LEVELS).map(|p| p.name).collect();
                 valid.extend(kick_flight::FLIGHT_PARAMETERS.iter().map(|p| p.name));
@@ -299,7 +299,7 @@ pub(super) fn table2_path(path: &Path, name: &str) -> PathBuf {
 }
 
 pub(super) fn table2_experiment(path: &Path, text: &str, name: String, at: &Locator) -> Result<Experiment, ExperimentError> {
-    let file = Table2File::parse(text).map_err(|e| at.error(0..0, "row", e))?;
+    let file = Table2File::parse(text).map_err(|e| at.error(0..0, "row", e.to_string()))?;
     let rows = file.scenarios().map_err(|e| at.error(0..0, "row", e.to_string()))?;
     // The file's own solver (the paper's method) first, then the accurate reference.
     let mut solvers = vec![SolverChoice::from_name(&file.solver, file.dt).map_err(|e| at.error(0..0, "solver", e.to_string()))?];

@@ -145,7 +145,7 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment, flight: Optio
         let parameter = match parameters::find_at(LEVELS_3D, name) {
             Ok(p) => p,
             Err(e) => match super::flight::axis_parameter(name, flight, super::flight::After::ThreeD) {
-                Some(found) => found.map_err(|message| at.error(axis.parameter.span(), &key, message))?,
+                Some(found) => found.map_err(|e| at.error(axis.parameter.span(), &key, e.to_string()))?,
                 None => return Err(at.error(axis.parameter.span(), &key, e.to_string())),
             },
         };

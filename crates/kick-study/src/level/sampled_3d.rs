@@ -294,9 +294,24 @@ impl Level for SampledSweep3d {
     }
 }
 
+/// Why a `--range NAME` of `kick sweep3d` names no parameter it samples
+/// (the refusal [`crate::sample::Ranges::parse`] puts after `--range TEXT`).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RangeNameError {
+    /// No kick parameter (without `--flight`).
+    #[error(transparent)]
+    Unknown(parameters::ParameterError),
+    /// With `--flight`: neither a kick parameter nor one the flight takes after the kick.
+    #[error("{0}, nor a flight parameter the kick leaves")]
+    NorFlight(parameters::ParameterError),
+    /// A flight parameter, given without `--flight`.
+    #[error("`{name}` is a parameter of the flight: add --flight to fly the kicks")]
+    NeedsFlight { name: String },
+}
+
 /// The parameter a `--range` of `kick sweep3d` names: one of the kick's
 /// (their levels), or with `--flight` one the flight after it takes.
-pub fn find_range(name: &str, flight: bool) -> Result<&'static parameters::ParameterDef, String> {
+pub fn find_range(name: &str, flight: bool) -> Result<&'static parameters::ParameterDef, RangeNameError> {
     let kick = parameters::find_at(KickSpec::LEVELS, name);
     match (kick, flight) {
         (Ok(p), _) => Ok(p),
@@ -304,10 +319,33 @@ pub fn find_range(name: &str, flight: bool) -> Result<&'static parameters::Param
             .ok()
             .filter(|&q| !crate::flight::After::Kick3d.sets(q))
             .map(|q| q.def())
-            .ok_or_else(|| format!("{e}, nor a flight parameter the kick leaves")),
+            .ok_or(RangeNameError::NorFlight(e)),
         (Err(_), false) if kick_flight::FlightParameter::from_name(name).is_ok() => {
-            Err(format!("`{name}` is a parameter of the flight: add --flight to fly the kicks"))
+            Err(RangeNameError::NeedsFlight { name: name.to_string() })
         }
-        (Err(e), false) => Err(e.to_string()),
+        (Err(e), false) => Err(RangeNameError::Unknown(e)),
+    }
+}
+
+#[cfg(test)]
+mod range_name_tests {
+    use super::*;
+
+    /// A `--range` name that is no kick parameter says which flag is
+    /// missing or that it is none at all, naming what the user gave.
+    #[test]
+    fn a_range_name_refused_names_the_parameter() {
+        assert_eq!(find_range("contact_depth", false).unwrap().name, "contact_depth");
+        let e = find_range("air_density", false).unwrap_err();
+        assert_eq!(e, RangeNameError::NeedsFlight { name: "air_density".into() });
+        assert_eq!(e.to_string(), "`air_density` is a parameter of the flight: add --flight to fly the kicks");
+        assert_eq!(find_range("air_density", true).unwrap().name, "air_density");
+        let e = find_range("stifness", true).unwrap_err();
+        assert!(matches!(e, RangeNameError::NorFlight(_)), "{e:?}");
+        assert!(e.to_string().contains("stifness") && e.to_string().ends_with(", nor a flight parameter the kick leaves"), "{e}");
+        // Through the flag's parser: the flag and the text given lead.
+        let e = crate::sample::Ranges::parse(&["air_density=1,2".into()], |n| find_range(n, false)).unwrap_err();
+        assert!(matches!(e, crate::error::StudyError::Flag { flag: "range", .. }), "{e:?}");
+        assert!(e.to_string().starts_with("--range air_density=1,2: `air_density` is a parameter of the flight"), "{e}");
     }
 }

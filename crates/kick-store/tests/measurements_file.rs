@@ -1,12 +1,13 @@
 //! The validation chapter's data file parses, and every number in it carries
 //! a citation and an honest check status.
 
-use kick_core::measurements::{Checked, Measurements, MEASUREMENTS_FILE};
+use kick_core::measurements::{Checked, Measurements};
+use kick_store::measurements::{read, MEASUREMENTS_FILE};
 use std::path::Path;
 
 fn load() -> Measurements {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(MEASUREMENTS_FILE);
-    Measurements::load(&path).unwrap_or_else(|e| panic!("{e}"))
+    read(&path).unwrap_or_else(|e| panic!("{e}"))
 }
 
 #[test]
@@ -84,4 +85,13 @@ fn the_limb_ratios_pair_the_published_ends() {
     // The pairing agrees with the published ratio band.
     let [lo, hi] = m.get("speed_ratio_mechanical_limb", "test").unwrap().interval_si().unwrap();
     assert!(lo <= 29.7 / 21.2 && 13.0 / 9.1 <= hi);
+}
+
+/// Asai et al.'s numbers as published (their abstract: at most 13 rad/s,
+/// around 100 mm), read from the measurement file.
+#[test]
+fn asai_claims_are_the_published_ones() {
+    let a = kick_study::patch::asai_claims(&load()).unwrap();
+    assert_eq!((a.friction_gain, a.peak_offset), (13.0, 0.1));
+    assert!(a.source.contains("spin_friction_gain_asai2002") && a.source.contains("spin_peak_offset_asai2002"));
 }
