@@ -93,7 +93,7 @@ fn only_runs_the_named_steps_in_order() {
 
     settings.steps = Steps::only(&["checks", "chekcs"]);
     let error = reproduce(&settings, &mut std::io::sink()).expect_err("an unknown step");
-    assert!(matches!(error, kick_paper::PaperError::Flag { flag: "--only", .. }), "{error:?}");
+    assert!(matches!(error, kick_paper::PaperError::Study(kick_study::StudyError::Flag { flag: "--only", .. })), "{error:?}");
     let error = error.to_string();
     assert!(error.starts_with("--only: no step `chekcs`"), "{error}");
     assert!(kick_paper::reproduce::step_names().iter().all(|name| error.contains(name)), "{error}");
