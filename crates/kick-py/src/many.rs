@@ -21,9 +21,9 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
-/// Rows solved without a thread watching for Ctrl-C: one chunk of the run
-/// loop is over in moments (a watching thread doubled a one-row call's 24 us).
-const UNWATCHED_ROWS: usize = kick_study::level::CHUNK_ROWS;
+/// Rows solved without a thread watching for Ctrl-C: so few are over in
+/// moments, even slow 3D kicks (a watching thread doubled a one-row call's 24 us).
+const UNWATCHED_ROWS: usize = 1024;
 
 /// A model's keywords: the declaration a keyword names, or the library's
 /// error naming the nearby ones. The rows themselves are kick-study's

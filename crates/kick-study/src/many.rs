@@ -657,11 +657,10 @@ mod tests {
         let bad = vec![Input { parameter: def("foot_speed"), data: &three, shape: vec![3] }];
         let e = Broadcast::new(&model, ScenarioSpec::default(), bad, &[2]).err().unwrap();
         assert!(e.to_string().contains("`foot_speed` of shape [3] does not broadcast"), "{e}");
-        let spin = find_at(KickSpec::LEVELS, "spin").ok();
-        if let Some(spin) = spin.filter(|p| p.shape == Shape::Vector3) {
-            let short = vec![Input { parameter: spin, data: &three[..2], shape: vec![2] }];
-            let e = Broadcast::new(&model, ScenarioSpec::default(), short, &[]).err().unwrap();
-            assert!(e.to_string().contains("three numbers"), "{e}");
-        }
+        let inertia = find_at(KickSpec::LEVELS, "foot_inertia").unwrap();
+        assert_eq!(inertia.shape, Shape::Vector3);
+        let short = vec![Input { parameter: inertia, data: &three[..2], shape: vec![2] }];
+        let e = Broadcast::new(&model, ScenarioSpec::default(), short, &[]).err().unwrap();
+        assert!(e.to_string().contains("`foot_inertia` takes three numbers"), "{e}");
     }
 }
