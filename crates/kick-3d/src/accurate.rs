@@ -337,9 +337,11 @@ const ONSET_SHARE: f64 = 0.03;
 const RELEASE_SHARE: f64 = 0.3;
 const CLOCK_RATE: f64 = 0.2;
 
-/// The system as the stepper sees it, keeping the law at its latest
-/// evaluation: an accepted step ends on the right-hand side at its end
-/// (DOP853's k13), so the law there is read back, not evaluated again.
+/// The system as the stepper sees it, keeping the law at the accepted
+/// step's end: an accepted step ends on the right-hand side there (DOP853's
+/// k13), so the law at its end is read back, not evaluated again. Only that
+/// evaluation is kept (`derivative_at_step_end`): keeping every one copied a
+/// `Local` (about 400 bytes) per evaluation, 4.6 % of a flown sweep's time.
 struct Remembering<'a> {
     system: &'a Relative,
     last: std::cell::Cell<Option<(f64, Local)>>,
@@ -349,7 +351,7 @@ impl<'a> Remembering<'a> {
     fn new(system: &'a Relative) -> Self {
         Remembering { system, last: std::cell::Cell::new(None) }
     }
-    /// The law at (x, y): the latest evaluation's when it was at x (the step's end), else evaluated.
+    /// The law at (x, y): the accepted step's end's when it was at x, else evaluated.
     fn local_at(&self, x: f64, y: &State) -> Local {
         match self.last.get() {
             Some((at, c)) if at == x => c,
@@ -361,6 +363,10 @@ impl<'a> Remembering<'a> {
 impl kick_core::dop853::System<DIM> for Remembering<'_> {
     #[inline]
     fn derivative(&self, x: f64, y: &State) -> State {
+        self.system.derivative(x, y)
+    }
+    #[inline]
+    fn derivative_at_step_end(&self, x: f64, y: &State) -> State {
         let (dy, c) = self.system.derivative_and_local(x, y);
         self.last.set(Some((x, c)));
         dy

@@ -20,6 +20,14 @@ use nalgebra::SVector;
 /// A system y' = f(x, y) (x: the independent variable, usually time).
 pub trait System<const N: usize> {
     fn derivative(&self, x: f64, y: &SVector<f64, N>) -> SVector<f64, N>;
+    /// The derivative at an accepted step's end (k13, the next step's k1):
+    /// the same value as [`System::derivative`]; a system that keeps what it
+    /// computed there for its caller does it here, once per accepted step,
+    /// instead of on every evaluation.
+    #[inline(always)]
+    fn derivative_at_step_end(&self, x: f64, y: &SVector<f64, N>) -> SVector<f64, N> {
+        self.derivative(x, y)
+    }
     /// How many components the error norm averages over: all N, unless a
     /// system carries components it leaves at zero (kick-3d's state keeps
     /// slots for a leg and a boot): those add nothing to the sum, and
@@ -520,7 +528,7 @@ impl<const N: usize> Stepper<N> {
             let fac = (fac11 / SAFETY).clamp(GROWTH_LIMIT, SHRINK_LIMIT);
             let mut h_new = h / fac;
             if err <= 1.0 {
-                self.k[12] = system.derivative(self.t + h, &y_new);
+                self.k[12] = system.derivative_at_step_end(self.t + h, &y_new);
                 self.evaluations += 1;
                 if self.rejected_last {
                     h_new = h_new.min(h);
