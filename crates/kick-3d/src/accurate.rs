@@ -96,6 +96,18 @@ impl Default for Accurate3d {
 pub const MAX_STEPS: u64 = 1_000_000;
 /// Most phases per run.
 pub const MAX_PHASES: usize = 10_000;
+/// A run whose accepted steps stay below [`STALL_SHARE`] of the clock's
+/// unit (δ*/V_n, or u's) this many times in a row has stalled and is
+/// stopped as a numerical failure. A kick of the sweeps' boxes takes at most
+/// ~800 steps in all, its shortest ~1e-4 of the unit (towards separation);
+/// the one stall seen (`kick sweep3d --law shell --leg`, seed 1, row 7162:
+/// the point contact on the rounded border, slipping behind the boot) sat at
+/// 3e-14 s ≈ 3e-11 of the unit with every other step rejected, and ran into
+/// [`MAX_STEPS`] after 7.7 s: the 20,000-row leg sweep spent about half
+/// its wall time on it.
+pub const STALL_STEPS: u32 = 10_000;
+/// See [`STALL_STEPS`].
+pub const STALL_SHARE: f64 = 1e-9;
 /// Step of the differences that give dQ/dt, in units of the normal
 /// scenario's time δ*/V_n: truncation (∝ step²) and rounding (∝ 1/step) of
 /// the rate both stay near 1e-11 of its scale.
@@ -635,6 +647,8 @@ struct Run<'a, 's, const SAMPLE: bool> {
     phases: usize,
     /// The last accepted point or switch.
     point: Point,
+    /// Accepted steps in a row below [`STALL_SHARE`] of the clock's unit.
+    tiny_steps: u32,
 }
 
 impl<'a, 's, const SAMPLE: bool> Run<'a, 's, SAMPLE> {
@@ -722,6 +736,7 @@ impl<'a, 's, const SAMPLE: bool> Run<'a, 's, SAMPLE> {
             history_evaluations: 0,
             phases: 0,
             point: Point { x: 0.0, rates: [0.0; 4] },
+            tiny_steps: 0,
         };
         let dx = run.step_of(run.system.phase.clock);
         run.point = Point { x: 0.0, rates: rates(&run.system, 0.0, &y0, run.stepper.start_derivative(), dx) };
@@ -776,6 +791,22 @@ impl<'a, 's, const SAMPLE: bool> Run<'a, 's, SAMPLE> {
         })?;
         let x1 = stepper.time();
         let y1 = *stepper.state();
+        let unit = if self.system.phase.clock == Clock::Time { self.scales.time } else { self.u_unit };
+        if stepper.last_step().1 < STALL_SHARE * unit {
+            self.tiny_steps += 1;
+            if self.tiny_steps >= STALL_STEPS {
+                return Err(KickError::Integration {
+                    time: self.system.time(x1, &y1),
+                    reason: format!(
+                        "the step size stalled below {STALL_SHARE:e} of the contact's time scale for {STALL_STEPS} steps \
+                         in a row (a switch the run cannot settle)"
+                    ),
+                }
+                .into());
+            }
+        } else {
+            self.tiny_steps = 0;
+        }
         let c1 = remembering.local_at(x1, &y1);
         Ok((x1, y1, c1))
     }

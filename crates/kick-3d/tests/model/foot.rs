@@ -211,3 +211,50 @@ fn settings_the_foot_does_not_take_are_refused() {
     assert_eq!(k.base.foot().leg.unwrap().knee, 45.0);
     assert!(k.base.foot().boot == Some(kick_core::boot::IDENTIFIED));
 }
+
+/// A kick that stalls (`kick sweep3d --law shell --leg`, seed 1, row 7162:
+/// the point contact slipping on the knife edge's rounded border behind the
+/// boot, its step size stuck near 3e-14 s with every other step rejected)
+/// stops as a numerical failure after `STALL_STEPS` tiny steps, where it ran
+/// into the million-step budget after 7.7 s; its variants that settle (no
+/// boot; μ = ∞) do not stall. (`build_drawn`: the sweep's own build, which
+/// takes the drawn foot mass beside the leg.)
+#[test]
+fn a_stalled_kick_fails_at_once() {
+    let spec = KickSpec {
+        scenario: ScenarioSpec {
+            foot_mass: Some(3.940127199239893),
+            ball_mass: Some(0.44367942932528065),
+            foot_speed: Some(34.7412326286056),
+            ball_speed: Some(-9.253187736840848),
+            drive_force: Some(0.0),
+            law: Some(kick_core::LawKind::Shell),
+            inflation_pressure: Some(66995.13568577074),
+            leg: Some(true),
+            ..Default::default()
+        },
+        kick3d: Kick3dSpec {
+            offset: Some(0.06716504890929391),
+            approach_angle_deg: Some(27.174114265518483),
+            friction: Some(0.24330882169897938),
+            tangential_stiffness: Some(73728.52915510784),
+            ..Default::default()
+        },
+    };
+    let kick = spec.build_drawn().unwrap();
+    let error = match Accurate3d::default().solve(&kick) {
+        Ok(_) => panic!("the stalled kick separated"),
+        Err(e) => e,
+    };
+    let text = error.to_string();
+    assert!(text.contains("stalled") && error.status() == kick_core::Status::NumericalFailure, "{text}");
+    // Stopped where it stalls (5.875 ms), not after the step budget.
+    assert!(text.contains("t = 0.005875"), "{text}");
+    for settled in [
+        KickSpec { scenario: ScenarioSpec { boot_stiffness: Some(f64::INFINITY), ..spec.scenario }, ..spec },
+        KickSpec { kick3d: Kick3dSpec { friction: Some(f64::INFINITY), ..spec.kick3d }, ..spec },
+    ] {
+        let o = Accurate3d::default().solve(&settled.build_drawn().unwrap()).expect("separates");
+        assert!(o.evaluations < 5000, "{}", o.evaluations);
+    }
+}
