@@ -375,7 +375,98 @@ impl Outcome3d {
             self.evaluations as f64,
         ]
     }
+
+    /// The numbers of [`FIELDS_3D`], in order: the serde fields, vectors whole.
+    pub fn field_values(&self) -> [f64; FIELD_VALUES_3D] {
+        let e = &self.energy;
+        let mut out = [0.0; FIELD_VALUES_3D];
+        let mut at = 0;
+        let mut put = |part: &[f64]| {
+            out[at..at + part.len()].copy_from_slice(part);
+            at += part.len();
+        };
+        put(&self.launch_velocity);
+        put(&self.spin);
+        put(&[self.speed, self.spin_rpm, self.launch_angle, self.launch_azimuth]);
+        put(&self.foot_velocity);
+        put(&self.foot_angular_velocity);
+        put(&[
+            self.contact_time,
+            self.peak_normal_force,
+            self.peak_normal_force_time,
+            self.peak_tangential_force,
+            self.peak_tangential_force_time,
+            self.max_compression,
+            self.max_compression_time,
+            self.slip_time,
+        ]);
+        put(&self.impulse);
+        put(&[self.normal_impulse]);
+        put(&self.angular_impulse);
+        put(&self.angular_impulse_fixed_point);
+        put(&[
+            e.kinetic_initial,
+            e.ball_translation,
+            e.ball_spin,
+            e.foot,
+            e.elastic_final,
+            e.normal_damping_loss,
+            e.friction_loss,
+            e.drive_work,
+            e.gravity_work,
+            e.residual(),
+        ]);
+        out
+    }
 }
+
+/// The numbers [`Outcome3d::field_values`] returns.
+pub const FIELD_VALUES_3D: usize = 44;
+const _: () = {
+    let mut sum = 0;
+    let mut i = 0;
+    while i < FIELDS_3D.len() {
+        sum += FIELDS_3D[i].1;
+        i += 1;
+    }
+    assert!(sum == FIELD_VALUES_3D, "FIELDS_3D's widths add up to FIELD_VALUES_3D");
+};
+
+/// The outcome's serde fields as (name, width), the energy partition's as
+/// `energy_*`, then `energy_residual`: every number of a kick but the
+/// evaluation count, vectors whole (Python's `simulate3d_many` columns).
+pub const FIELDS_3D: [(&str, usize); 30] = [
+    ("launch_velocity", 3),
+    ("spin", 3),
+    ("speed", 1),
+    ("spin_rpm", 1),
+    ("launch_angle", 1),
+    ("launch_azimuth", 1),
+    ("foot_velocity", 3),
+    ("foot_angular_velocity", 3),
+    ("contact_time", 1),
+    ("peak_normal_force", 1),
+    ("peak_normal_force_time", 1),
+    ("peak_tangential_force", 1),
+    ("peak_tangential_force_time", 1),
+    ("max_compression", 1),
+    ("max_compression_time", 1),
+    ("slip_time", 1),
+    ("impulse", 3),
+    ("normal_impulse", 1),
+    ("angular_impulse", 3),
+    ("angular_impulse_fixed_point", 3),
+    ("energy_kinetic_initial", 1),
+    ("energy_ball_translation", 1),
+    ("energy_ball_spin", 1),
+    ("energy_foot", 1),
+    ("energy_elastic_final", 1),
+    ("energy_normal_damping_loss", 1),
+    ("energy_friction_loss", 1),
+    ("energy_drive_work", 1),
+    ("energy_gravity_work", 1),
+    ("energy_residual", 1),
+];
 
 #[cfg(test)]
 mod tests {
