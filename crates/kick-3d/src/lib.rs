@@ -42,7 +42,7 @@ pub use error::Kick3dError;
 pub use full_state::FullState3d;
 pub use history::{ContactState, Sample3d, HISTORY_COLUMNS_3D, PATCH_COLUMNS_3D};
 pub use model::{FootShape, Instep, Kick3d, Kick3dSpec, KickSpec};
-pub use outcome::{EnergyPartition, Outcome3d, OBSERVABLES_3D};
+pub use outcome::{EnergyPartition, Outcome3d, FIELDS_3D, FIELD_VALUES_3D, OBSERVABLES_3D};
 
 /// The rapier scene path's step when none is given, s (see [`scene`]).
 pub const DEFAULT_SCENE_STEP: f64 = 1e-6;

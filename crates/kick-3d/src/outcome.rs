@@ -321,39 +321,34 @@ pub const OBSERVABLES_3D: [(&str, &str); 42] = [
 ];
 
 impl Outcome3d {
-    /// The values of [`OBSERVABLES_3D`], in order.
+    /// The values of [`OBSERVABLES_3D`], in order: the numbers of
+    /// [`FIELDS_3D`] but the fixed-point angular impulse, then the evaluations.
     pub fn observable_values(&self) -> [f64; OBSERVABLES_3D.len()] {
-        let [vx, vy, vz] = self.launch_velocity;
-        let [wx, wy, wz] = self.spin;
-        let [fx, fy, fz] = self.foot_velocity;
-        let [ox, oy, oz] = self.foot_angular_velocity;
-        let [jx, jy, jz] = self.impulse;
-        let [lx, ly, lz] = self.angular_impulse;
+        let mut out = [0.0; OBSERVABLES_3D.len()];
+        let n = OBSERVABLES_3D.len() - 1;
+        out[..n].copy_from_slice(&self.field_values()[..n]);
+        out[n] = self.evaluations as f64;
+        out
+    }
+
+    /// The numbers of [`FIELDS_3D`], in order: the serde fields, vectors whole.
+    pub fn field_values(&self) -> [f64; FIELD_VALUES_3D] {
         let e = &self.energy;
-        [
-            vx,
-            vy,
-            vz,
-            wx,
-            wy,
-            wz,
-            self.speed,
-            self.spin_rpm,
-            self.launch_angle,
-            self.launch_azimuth,
-            fx,
-            fy,
-            fz,
-            ox,
-            oy,
-            oz,
-            jx,
-            jy,
-            jz,
-            self.normal_impulse,
-            lx,
-            ly,
-            lz,
+        let mut out = [0.0; FIELD_VALUES_3D];
+        let mut at = 0;
+        let mut put = |part: &[f64]| {
+            out[at..at + part.len()].copy_from_slice(part);
+            at += part.len();
+        };
+        put(&self.launch_velocity);
+        put(&self.spin);
+        put(&[self.speed, self.spin_rpm, self.launch_angle, self.launch_azimuth]);
+        put(&self.foot_velocity);
+        put(&self.foot_angular_velocity);
+        put(&self.impulse);
+        put(&[self.normal_impulse]);
+        put(&self.angular_impulse);
+        put(&[
             self.contact_time,
             self.peak_normal_force,
             self.peak_normal_force_time,
@@ -372,16 +367,92 @@ impl Outcome3d {
             e.drive_work,
             e.gravity_work,
             e.residual(),
-            self.evaluations as f64,
-        ]
+        ]);
+        put(&self.angular_impulse_fixed_point);
+        out
     }
 }
+
+/// The numbers [`Outcome3d::field_values`] returns.
+pub const FIELD_VALUES_3D: usize = 44;
+const _: () = {
+    let mut sum = 0;
+    let mut i = 0;
+    while i < FIELDS_3D.len() {
+        sum += FIELDS_3D[i].1;
+        i += 1;
+    }
+    assert!(sum == FIELD_VALUES_3D, "FIELDS_3D's widths add up to FIELD_VALUES_3D");
+};
+
+/// The outcome's serde fields as (name, width), the energy partition's as
+/// `energy_*`, then `energy_residual`: every number of a kick but the
+/// evaluation count, vectors whole (Python's `simulate3d_many` columns).
+pub const FIELDS_3D: [(&str, usize); 30] = [
+    ("launch_velocity", 3),
+    ("spin", 3),
+    ("speed", 1),
+    ("spin_rpm", 1),
+    ("launch_angle", 1),
+    ("launch_azimuth", 1),
+    ("foot_velocity", 3),
+    ("foot_angular_velocity", 3),
+    ("impulse", 3),
+    ("normal_impulse", 1),
+    ("angular_impulse", 3),
+    ("contact_time", 1),
+    ("peak_normal_force", 1),
+    ("peak_normal_force_time", 1),
+    ("peak_tangential_force", 1),
+    ("peak_tangential_force_time", 1),
+    ("max_compression", 1),
+    ("max_compression_time", 1),
+    ("slip_time", 1),
+    ("energy_kinetic_initial", 1),
+    ("energy_ball_translation", 1),
+    ("energy_ball_spin", 1),
+    ("energy_foot", 1),
+    ("energy_elastic_final", 1),
+    ("energy_normal_damping_loss", 1),
+    ("energy_friction_loss", 1),
+    ("energy_drive_work", 1),
+    ("energy_gravity_work", 1),
+    ("energy_residual", 1),
+    ("angular_impulse_fixed_point", 3),
+];
 
 #[cfg(test)]
 mod tests {
     use crate::{Kick3d, KickSpec, Solver3d};
     use kick_core::parameters::{SetParameter, Value};
     use kick_core::KickError;
+
+    /// The observables are the fields (vectors as `_x`, `_y`, `_z`) in the
+    /// same order, but the fixed-point angular impulse, then the evaluations:
+    /// what `observable_values` copies from `field_values` relies on it.
+    #[test]
+    fn the_observables_are_the_fields_in_order() {
+        let mut names = Vec::new();
+        for (name, width) in super::FIELDS_3D {
+            match width {
+                1 => names.push(name.to_string()),
+                _ => names.extend(["x", "y", "z"].map(|a| format!("{name}_{a}"))),
+            }
+        }
+        assert_eq!(names.len(), super::FIELD_VALUES_3D);
+        let observables: Vec<String> = super::OBSERVABLES_3D.iter().map(|(n, _)| n.to_string()).collect();
+        let n = observables.len() - 1;
+        assert_eq!(&names[..n], &observables[..n]);
+        assert_eq!(&names[n..], ["angular_impulse_fixed_point_x", "angular_impulse_fixed_point_y", "angular_impulse_fixed_point_z"]);
+        assert_eq!(observables[n], "evaluations");
+        let o = Solver3d::Auto.solve(&kick(&[("offset", 0.03)])).unwrap();
+        let (v, f) = (o.observable_values(), o.field_values());
+        assert_eq!(
+            (v[3], v[16], v[20], v[40], v[41]),
+            (o.spin[0], o.impulse[0], o.angular_impulse[0], o.energy.residual(), o.evaluations as f64)
+        );
+        assert_eq!(&f[41..], &o.angular_impulse_fixed_point);
+    }
 
     fn kick(values: &[(&str, f64)]) -> Kick3d {
         let mut spec = KickSpec::default();

@@ -10,8 +10,8 @@ use crate::error::PaperError;
 use crate::figures::{color, save_grid, Panel, Series};
 use crate::links::relative;
 use crate::SweepData;
-use kick_core::{short, sig};
 pub use kick_study::ball::*;
+use kick_study::printable::{short, sig};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -123,7 +123,7 @@ fn mm(x: &[f64]) -> Vec<f64> {
 /// bar; the FIFA band (the calibration) and Dowell & Krebs's line beside them.
 fn draw_speeds(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, PaperError> {
     let b = bounces(data)?;
-    let radius = kick_core::DEFAULT_BALL_RADIUS;
+    let radius = kick_study::parameters::DEFAULT_BALL_RADIUS;
     let band = |h: f64| (h / FIFA_DROP).sqrt();
     let black = RGBColor(0, 0, 0);
     let fifa = Series::line(
@@ -253,7 +253,7 @@ fn page_text(
     let s = bounces(speeds)?;
     let p = bounces(pressures)?;
     let pressure = p.pressure.ok_or_else(|| PaperError::missing("no pressure axis"))?;
-    let ball = kick_core::ShellBall::default_with_radius(kick_core::DEFAULT_BALL_RADIUS)?;
+    let ball = kick_study::ball::default_ball()?;
     let radius = ball.radius;
     let atm = |x: f64| x / SEA_LEVEL_PRESSURE;
     let mut w = String::new();
@@ -301,7 +301,7 @@ fn page_text(
          Peacock & Ball (2016, abstract only) finds no significant trend of the foot–ball restitution with foot speed \
          (0.66–0.79, r = −0.347, n.s., 9.1–21.2 m/s, an Australian-football ball): a kick's restitution with a foot, \
          not a ball's on a plate, so it does not test this; a plate test at two speeds does (the fit below).\n\n",
-        sig(ball.small_compression_hysteresis())
+        sig(ball.small_compression_hysteresis)
     );
     let _ = write!(
         w,

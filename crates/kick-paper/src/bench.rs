@@ -100,9 +100,9 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, P
             log,
             "{}: {} s, {} rows/s, {} MB",
             run.command,
-            kick_core::sig(run.seconds),
-            kick_core::sig(run.rows as f64 / run.seconds),
-            kick_core::sig(run.bytes as f64 / 1e6)
+            kick_study::printable::sig(run.seconds),
+            kick_study::printable::sig(run.rows as f64 / run.seconds),
+            kick_study::printable::sig(run.bytes as f64 / 1e6)
         );
     }
 
@@ -289,15 +289,19 @@ impl Measured<'_> {
             let plain = self.files.iter().find(|p| !p.command.contains("--compress") && run.command.starts_with(&p.command));
             let size = match plain {
                 Some(p) if p.command != run.command => {
-                    format!("{} ({:+.0}%)", kick_core::sig(run.bytes as f64 / 1e6), 100.0 * (run.bytes as f64 / p.bytes as f64 - 1.0))
+                    format!(
+                        "{} ({:+.0}%)",
+                        kick_study::printable::sig(run.bytes as f64 / 1e6),
+                        100.0 * (run.bytes as f64 / p.bytes as f64 - 1.0)
+                    )
                 }
-                _ => kick_core::sig(run.bytes as f64 / 1e6).to_string(),
+                _ => kick_study::printable::sig(run.bytes as f64 / 1e6).to_string(),
             };
             files.push_str(&format!(
                 "| `{}` | {} | {} | {size} |\n",
                 run.command,
-                kick_core::sig(run.seconds),
-                kick_core::sig(run.rows as f64 / run.seconds)
+                kick_study::printable::sig(run.seconds),
+                kick_study::printable::sig(run.rows as f64 / run.seconds)
             ));
         }
         let o = self.other;
@@ -317,7 +321,7 @@ impl Measured<'_> {
         let flown_command = flown_command(self.flown.samples, true);
         let [tx, ty, tz] = crate::free_kick::AIM_TARGET;
         let [sx, sy, sz] = crate::free_kick::AIM_SPIN;
-        let short = kick_core::short;
+        let short = kick_study::printable::short;
         let target = format!("{},{},{}", short(tx), short(ty), short(tz));
         let kick_names = [
             "μ = ∞, default spring".to_string(),

@@ -30,8 +30,6 @@ pub enum PaperError {
     Report(#[from] crate::report::ReportError),
     #[error(transparent)]
     ModelPage(#[from] crate::model::ModelPageError),
-    #[error(transparent)]
-    Kick(#[from] kick_core::KickError),
     /// A result file without what a page or figure reads from it: the file
     /// (when the reader knows it) and what.
     #[error("{}{what}", .file.as_ref().map(|f| format!("{}: ", f.display())).unwrap_or_default())]

@@ -500,7 +500,7 @@ fn force_histories(path: &Path, parameter: &str, label: impl Fn(f64) -> String) 
     let mut series = Vec::new();
     for (row, v) in values.iter().enumerate() {
         // Rows with an outcome: separated, or outside the law's validity (numbers kept).
-        let has_outcome = |code: &u8| kick_core::Status::ALL.iter().any(|s| s.code() == *code && s.has_outcome());
+        let has_outcome = |code: &u8| kick_study::printable::Status::ALL.iter().any(|s| s.code() == *code && s.has_outcome());
         if !data.sets[0].status.get(row).is_some_and(has_outcome) {
             continue;
         }

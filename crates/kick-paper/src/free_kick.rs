@@ -43,10 +43,11 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     let goal = data.set("goal")?;
     let wall = data.set("wall")?;
     let launch = data.set("launch")?;
-    let offsets = data.parameter(kick_core::parameters::OFFSET.name)?.to_vec();
+    let offsets = data.parameter(kick_study::parameters::OFFSET.name)?.to_vec();
     let frictions = data.parameter("friction")?.to_vec();
-    let label =
-        |row: usize| format!("e = {} cm, μ = {}", kick_core::short(offsets[row] * 100.0), crate::three_d::value_label(frictions[row]));
+    let label = |row: usize| {
+        format!("e = {} cm, μ = {}", kick_study::printable::short(offsets[row] * 100.0), crate::three_d::value_label(frictions[row]))
+    };
     // Trajectories: every row with a stored history.
     let mut top = Vec::new();
     let mut side = Vec::new();
@@ -159,7 +160,7 @@ pub const AXES_ROW: (f64, f64) = (0.04, 0.5);
 pub fn axes_figure(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     let data = SweepData::read(h5)?;
     let missing = |what: &str| FigureError::Draw { figure: h5.display().to_string(), message: format!("no {what}") };
-    let offsets = data.parameter(kick_core::parameters::OFFSET.name)?.to_vec();
+    let offsets = data.parameter(kick_study::parameters::OFFSET.name)?.to_vec();
     let frictions = data.parameter("friction")?.to_vec();
     let row = (0..data.rows())
         .find(|&r| offsets[r] == AXES_ROW.0 && frictions[r] == AXES_ROW.1)
@@ -210,7 +211,7 @@ pub fn axes_figure(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
     let touch = (big_r * big_r - e * e - depth * depth).sqrt();
     let speed = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
     let launch_arrow = |a: f64, b: f64| (18.0 * a / speed, 18.0 * b / speed);
-    let sig = |x: f64| kick_core::short((x * 10.0).round() / 10.0);
+    let sig = |x: f64| kick_study::printable::short((x * 10.0).round() / 10.0);
     let mut top = vec![circle("the ball (R = 11 cm), kicked along +x")];
     top.extend(frame());
     top.push(Series::line(
@@ -293,16 +294,16 @@ pub fn setup_note() -> String {
          parameter; no spin decay; sea-level air), the kick's ball and g; the goal line at {} m (the \
          issue's free kick), the wall at {} m (Law 13), the goal {} m wide and {} m high (Law 1), drawn centred on the \
          foot's path. Heights are those of the ball's centre, which starts at R = {} m.",
-        kick_core::short(b.effective_foot_mass()),
-        kick_core::short(b.foot_speed()),
-        kick_core::short(b.ball_mass()),
-        kick_core::short(CONTACT_DEPTH * 100.0),
-        kick_core::short(OFFSETS[OFFSETS.len() - 1] * 100.0),
+        kick_study::printable::short(b.effective_foot_mass()),
+        kick_study::printable::short(b.foot_speed()),
+        kick_study::printable::short(b.ball_mass()),
+        kick_study::printable::short(CONTACT_DEPTH * 100.0),
+        kick_study::printable::short(OFFSETS[OFFSETS.len() - 1] * 100.0),
         GOAL_DISTANCE,
         WALL_DISTANCE,
         GOAL_WIDTH,
         GOAL_HEIGHT,
-        kick_core::short(k.ball_radius),
+        kick_study::printable::short(k.ball_radius),
     )
 }
 
@@ -321,7 +322,7 @@ pub fn aim_figure(aims: &[kick_study::aim::AimReport], dir: &Path) -> Result<Vec
         let shown = x.iter().take_while(|&&x| x <= SHOWN_TO).count();
         let (x, y, z) = (&x[..shown], &y[..shown], &z[..shown]);
         let label = match report.from {
-            kick_study::aim::AimFrom::Launch => format!("launch aimed ({} rad/s sidespin held)", kick_core::short(AIM_SPIN[2])),
+            kick_study::aim::AimFrom::Launch => format!("launch aimed ({} rad/s sidespin held)", kick_study::printable::short(AIM_SPIN[2])),
             kick_study::aim::AimFrom::Kick => "3D kick aimed (foot speed, e, h, heading; max clearance)".to_string(),
         };
         top.push(Series::line(&label, color(i), &x, &y));

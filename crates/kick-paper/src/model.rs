@@ -506,7 +506,7 @@ mod tests {
         let page = page().unwrap();
         let unnamed: Vec<String> = declared_names().into_iter().filter(|n| page.used.get(n).is_none_or(|ls| ls.is_empty())).collect();
         assert!(unnamed.is_empty(), "declared but in no symbol list ({{{{p NAME}}}} under an equation): {unnamed:?}");
-        let stiffness = kick_core::parameters::find("stiffness").unwrap();
+        let stiffness = kick_study::parameters::find("stiffness").unwrap();
         assert!(page.text.contains(&format!("{}: Contact stiffness, {} (`stiffness`, default 4.2e5)", stiffness.symbol, stiffness.unit)));
     }
 

@@ -11,8 +11,8 @@ use crate::links::relative;
 use crate::three_d::{curves, value_label};
 use crate::units::sig;
 use crate::units::{spin, three, RPM_PER_RAD_PER_S};
-use kick_core::short;
 use kick_study::numbers_3d;
+use kick_study::printable::short;
 use std::fmt::Write as _;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -82,12 +82,12 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
     let res = if res.is_empty() { ".".to_string() } else { res };
     let k = kick_study::numbers_3d::baseline_kick();
     let b = k.base;
-    let default_of = |name: &str| kick_core::parameters::find(name).map(|p| p.default_number()).unwrap_or(f64::NAN);
+    let default_of = |name: &str| kick_study::parameters::find(name).map(|p| p.default_number()).unwrap_or(f64::NAN);
     let kt = k.tangential_stiffness;
     // Tangent stiffness of the normal law at the 1D baseline's δ_max, and
     // the gripping contact's tangential vibration period on its mass m_t.
     let one = numbers_3d::baseline_1d(&k)?;
-    let (stiffness, exponent) = (b.get(kick_core::Parameter::Stiffness), b.get(kick_core::Parameter::Exponent));
+    let (stiffness, exponent) = (b.get(kick_study::parameters::Parameter::Stiffness), b.get(kick_study::parameters::Parameter::Exponent));
     let tangent = stiffness * exponent * one.max_compression.powf(exponent - 1.0);
     let foot_mass = b.effective_foot_mass();
     let m_t = 1.0 / (1.0 / b.ball_mass() + k.ball_radius * k.ball_radius / k.ball_inertia + 1.0 / foot_mass);
@@ -404,7 +404,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
          optimum is not Asai et al.'s near 100 mm: their offset runs from the foot's axis to the ball's on a deforming \
          ball, the model's tilts a knife-edge normal by asin(e/R), and their ball leaves fast. The tangential \
          stiffness is assumed (above); how it sets the spin's trend against μ is the next section.\n",
-        kick_core::short(optimum.friction),
+        kick_study::printable::short(optimum.friction),
         spin(optimum.spin),
         crate::units::three(1e3 * optimum.offset),
         sig(1e3 * k.ball_radius, 3),
@@ -448,7 +448,7 @@ fn friction_section() -> Result<String, PaperError> {
             w,
             "| {} | {} | {} | {} |",
             r.law,
-            kick_core::short(r.tangential_stiffness),
+            kick_study::printable::short(r.tangential_stiffness),
             sig(r.period / r.contact_time, 2),
             cells.join(" | ")
         );
@@ -478,7 +478,7 @@ fn friction_section() -> Result<String, PaperError> {
             format!(
                 "the {} at k_t = {} N/m (T_t/t_c = {})",
                 r.law,
-                kick_core::short(r.tangential_stiffness),
+                kick_study::printable::short(r.tangential_stiffness),
                 sig(r.period / r.contact_time, 2)
             )
         })
@@ -521,7 +521,7 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> 
     let col = |s: &crate::h5::SetData, name: &str| {
         s.column(name).map(<[f64]>::to_vec).ok_or_else(|| PaperError::missing(format!("{file}: no {name}")))
     };
-    let offsets = data.parameter(kick_core::parameters::OFFSET.name)?.to_vec();
+    let offsets = data.parameter(kick_study::parameters::OFFSET.name)?.to_vec();
     let frictions = data.parameter("friction")?.to_vec();
     let (speed, rev, elev, az) =
         (col(launch, "speed")?, col(launch, "spin_rev_per_s")?, col(launch, "launch_angle")?, col(launch, "launch_azimuth")?);
@@ -785,7 +785,7 @@ pub fn aim_section(aims: &[kick_study::aim::AimReport], fig: &str) -> String {
         free_kick::WALL_HEIGHT,
         free_kick::WALL_HALF_WIDTH,
         WALL_MARGIN,
-        kick_core::short(MISS_TOLERANCE),
+        kick_study::printable::short(MISS_TOLERANCE),
         free_kick::AIM_SPIN[0],
         free_kick::AIM_SPIN[1],
         free_kick::AIM_SPIN[2],
@@ -833,7 +833,7 @@ pub fn aim_section(aims: &[kick_study::aim::AimReport], fig: &str) -> String {
             sig(v[2].atan2(v[0].hypot(v[1])).to_degrees(), 3),
             sig(v[1].atan2(v[0]).to_degrees(), 3),
             spin(omega),
-            kick_core::short(s.miss),
+            kick_study::printable::short(s.miss),
             sig(s.wall_clearance, 3),
             sig(s.wall_crossing[0], 3),
             sig(s.wall_crossing[1], 3),

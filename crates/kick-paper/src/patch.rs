@@ -9,13 +9,13 @@ use crate::error::PaperError;
 use crate::figures::{color, save_grid, FigureError, Panel, Series};
 use crate::links::relative;
 use crate::ResultFile;
-use kick_core::short;
 pub use kick_store::patch::{read_asai, read_spin, HISTORY_FILE, SPIN_FILE};
 use kick_study::history::ContactState;
 pub use kick_study::patch::{
     friction_gain, offsets, AsaiClaims, Curve, SpinData, CAP_RADIUS, CONTACTS, FRICTIONS, HISTORY_FRICTION, HISTORY_OFFSET,
     HISTORY_SAMPLES, OFFSET_STEP,
 };
+use kick_study::printable::short;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};

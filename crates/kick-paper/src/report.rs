@@ -5,12 +5,12 @@
 //! `kick_core::paper`.
 
 use crate::h5::{file_f64_attr, file_str_attr, H5Error, SetData, SweepData};
-use kick_core::paper::{TABLE2, TABLE2_DECIMALS};
+use kick_study::table2::{TABLE2, TABLE2_DECIMALS};
 use std::fmt::Write as _;
 use std::path::Path;
 
 /// One cross-model check, as reported.
-pub type CheckLine = kick_core::check::CheckRow;
+pub type CheckLine = kick_study::checks::CheckRow;
 
 #[derive(Debug, thiserror::Error)]
 pub enum ReportError {
@@ -382,8 +382,8 @@ fn stiffness_caption(k: &[f64], p: &Pulse, contact_time: &[f64], v_ball: &[f64])
              (Eq. 20 at first touch): up to k = {:.2e} N/m^n the elastic force never overtakes it, which is panel (b)'s flat \
              start; from k = {:.2e} N/m^n on the peak is elastic and grows to {:.0} N at the stiff end, {:.1}× the onset jump",
             p.peak_force[0],
-            kick_core::short(p.damping[0]),
-            kick_core::short(p.approach_speed[0]),
+            kick_study::printable::short(p.damping[0]),
+            kick_study::printable::short(p.approach_speed[0]),
             k[last],
             k[last + 1],
             p.peak_force[l],
@@ -431,12 +431,12 @@ fn damping_caption(p: &Pulse, v_ball: &[f64], restitution: &[f64]) -> String {
              (the grid's step is {} N s/m), since damping lowers the maximum inside the pulse while it raises the onset \
              jump c·V0, and then rises to {:.0} N at c = {}",
             p.peak_force[0],
-            kick_core::short(c[0]),
+            kick_study::printable::short(c[0]),
             p.peak_force[low],
-            kick_core::short(c[low]),
-            kick_core::short(c[1] - c[0]),
+            kick_study::printable::short(c[low]),
+            kick_study::printable::short(c[1] - c[0]),
             p.peak_force[l],
-            kick_core::short(c[l]),
+            kick_study::printable::short(c[l]),
         )
     } else {
         format!("the peak force goes from {:.0} to {:.0} N", p.peak_force[0], p.peak_force[l])
@@ -444,7 +444,7 @@ fn damping_caption(p: &Pulse, v_ball: &[f64], restitution: &[f64]) -> String {
     match takeover {
         Some(i) if i > 0 => peaks.push_str(&format!(
             "; from c = {} N s/m on it is the onset jump c·V0 at first touch (dashed), {:.0} N there",
-            kick_core::short(c[i]),
+            kick_study::printable::short(c[i]),
             p.onset_jump(i)
         )),
         Some(_) => peaks.push_str("; at every c it is the onset jump c·V0 (dashed)"),
@@ -453,8 +453,8 @@ fn damping_caption(p: &Pulse, v_ball: &[f64], restitution: &[f64]) -> String {
     format!(
         "Damping sweep, c from {} to {} N s/m: exit speed falls from {:.2} to {:.2} m/s and restitution from {:.4} to {:.3}; \
          {peaks}.",
-        kick_core::short(c[0]),
-        kick_core::short(c[l]),
+        kick_study::printable::short(c[0]),
+        kick_study::printable::short(c[l]),
         v_ball[0],
         v_ball[l],
         restitution[0],

@@ -140,9 +140,9 @@ pub enum Call {
         name: String,
         seed: u64,
         times: usize,
-        truth: kick_core::ScenarioSpec,
+        truth: kick_study::parameters::ScenarioSpec,
         time_offset: f64,
-        other_law: Option<kick_core::LawKind>,
+        other_law: Option<kick_study::parameters::LawKind>,
     },
     /// `kick fit data SPEC --out OUT`; a fit that does not converge stops the reproduction.
     FitData { spec: PathBuf, out: PathBuf },
@@ -190,9 +190,9 @@ fn number(x: f64) -> String {
 }
 
 /// The 1D scenario's flags as `kick fit synthesize` (and `simulate`) take them.
-fn scenario_flags(spec: &kick_core::ScenarioSpec) -> String {
+fn scenario_flags(spec: &kick_study::parameters::ScenarioSpec) -> String {
     let mut flags = String::new();
-    for p in kick_core::Parameter::ALL {
+    for p in kick_study::parameters::Parameter::ALL {
         if let Some(x) = spec.get(p) {
             flags.push_str(&format!(" --{} {}", p.name().replace('_', "-"), number(x)));
         }
@@ -302,10 +302,10 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, PaperError> {
     let three_d = toml_files(&args.experiments.join("3d")).unwrap_or_default();
     let ball = toml_files(&args.experiments.join("ball")).unwrap_or_default();
     let law_name = "synthetic_hunt_crossley";
-    let hunt_crossley = kick_core::ScenarioSpec {
-        law: Some(kick_core::LawKind::HuntCrossleyExact),
+    let hunt_crossley = kick_study::parameters::ScenarioSpec {
+        law: Some(kick_study::parameters::LawKind::HuntCrossleyExact),
         restitution: Some(0.66),
-        ..kick_core::ScenarioSpec::default()
+        ..kick_study::parameters::ScenarioSpec::default()
     };
     let synthesize = |name: &str, seed, truth, time_offset, other_law| Call::Synthesize {
         out: fits.clone(),
@@ -349,8 +349,8 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, PaperError> {
         (
             "synthesize",
             vec![
-                synthesize("synthetic", 1, kick_core::ScenarioSpec::default(), 0.0, None),
-                synthesize(law_name, 2, hunt_crossley, 2.5e-4, Some(kick_core::LawKind::PowerLaw)),
+                synthesize("synthetic", 1, kick_study::parameters::ScenarioSpec::default(), 0.0, None),
+                synthesize(law_name, 2, hunt_crossley, 2.5e-4, Some(kick_study::parameters::LawKind::PowerLaw)),
             ],
         ),
         (
@@ -358,7 +358,7 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, PaperError> {
             [
                 ("synthetic".to_string(), SYNTHETIC_FIT),
                 (law_name.to_string(), SYNTHETIC_LAW_FIT),
-                (crate::identify::other_law_name(law_name, kick_core::LawKind::PowerLaw), SYNTHETIC_WRONG_LAW_FIT),
+                (crate::identify::other_law_name(law_name, kick_study::parameters::LawKind::PowerLaw), SYNTHETIC_WRONG_LAW_FIT),
             ]
             .into_iter()
             .map(|(spec, fit)| Call::FitData { spec: fits.join(format!("{spec}.toml")), out: fits.join(fit) })
@@ -385,7 +385,9 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, PaperError> {
     let mut steps = Vec::with_capacity(calls.len());
     for study in kick_study::studies::reproduce_steps() {
         let at = calls.iter().position(|(name, _)| *name == study.name);
-        let at = at.ok_or_else(|| PaperError::Registry(format!("kick_study::studies names the step `{}`, which kick-paper cannot run", study.name)))?;
+        let at = at.ok_or_else(|| {
+            PaperError::Registry(format!("kick_study::studies names the step `{}`, which kick-paper cannot run", study.name))
+        })?;
         steps.push(Step { name: study.name, calls: calls.swap_remove(at).1 });
     }
     if let Some((name, _)) = calls.first() {

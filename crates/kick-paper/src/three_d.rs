@@ -10,7 +10,7 @@ pub fn value_label(v: f64) -> String {
     if v == f64::INFINITY {
         "∞".into()
     } else {
-        kick_core::short(v).to_string()
+        kick_study::printable::short(v).to_string()
     }
 }
 
@@ -34,7 +34,7 @@ pub fn curves(data: &SweepData) -> Vec<(String, Vec<usize>)> {
     match data.parameters.get(1) {
         None => vec![(String::new(), (0..rows).collect())],
         Some((column, values)) => {
-            let symbol = kick_core::parameters::find(&column.name).map_or(column.name.as_str(), |p| p.symbol);
+            let symbol = kick_study::parameters::find(&column.name).map_or(column.name.as_str(), |p| p.symbol);
             let mut out: Vec<(f64, Vec<usize>)> = Vec::new();
             for (row, &v) in values.iter().enumerate() {
                 match out.iter_mut().find(|(w, _)| w.to_bits() == v.to_bits()) {
@@ -76,7 +76,7 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
             .map(|(i, (label, rows))| Series::line(label, color(i), &pick(x, rows), &pick(y, rows)).with_markers())
             .collect()
     };
-    let symbol = kick_core::parameters::find(&axis.name).map_or(String::new(), |p| format!(" {}", p.symbol));
+    let symbol = kick_study::parameters::find(&axis.name).map_or(String::new(), |p| format!(" {}", p.symbol));
     let x_label = format!("{}{symbol} ({})", axis.name.replace('_', " "), axis.unit);
     // Spin in rad/s, as every page quotes it (the file's column is in rpm).
     let (speed, rad) = (column("speed")?, column("spin_rpm")?.iter().map(|r| r / crate::units::RPM_PER_RAD_PER_S).collect::<Vec<_>>());

@@ -6,8 +6,8 @@
 
 use crate::error::PaperError;
 use crate::units::{three, ZERO_SPIN};
-use kick_core::measurements::{Checked, Measured};
-use kick_core::{short, Scenario, DEFAULT_BALL_RADIUS};
+use kick_study::parameters::DEFAULT_BALL_RADIUS;
+use kick_study::printable::short;
 pub use kick_study::validation::rows::{self, headline, Headline, Role, Row};
 pub use kick_study::validation::*;
 use std::fmt::Write as _;
@@ -38,9 +38,11 @@ pub fn write(measurements: &Path, out: &Path, page: &Path, notes: &Path) -> Resu
 pub fn estimate_cell(value: Option<f64>, sigma: Option<f64>) -> String {
     match (value, sigma) {
         (None, _) => "not identified".into(),
-        (Some(v), Some(s)) if s > v.abs() => format!("not identified (σ = {} > {})", kick_core::short(s), kick_core::short(v)),
-        (Some(v), Some(s)) => format!("{} ± {}", kick_core::short(v), kick_core::short(s)),
-        (Some(v), None) => format!("{} (no σ: the source gives means only)", kick_core::short(v)),
+        (Some(v), Some(s)) if s > v.abs() => {
+            format!("not identified (σ = {} > {})", kick_study::printable::short(s), kick_study::printable::short(v))
+        }
+        (Some(v), Some(s)) => format!("{} ± {}", kick_study::printable::short(v), kick_study::printable::short(s)),
+        (Some(v), None) => format!("{} (no σ: the source gives means only)", kick_study::printable::short(v)),
     }
 }
 
@@ -257,7 +259,7 @@ pub fn markdown(v: &Validation, data: &str, file: &str, notes: &str) -> String {
         w,
         "Spin (rad/s) and ball speed (m/s) against offset, the paper's law on the rigid sphere, {} at {} m/s, by friction μ:\n",
         VALIDATION_FOOT.name(),
-        short(Scenario::baseline().foot_speed())
+        short(kick_study::parameters::FOOT_SPEED.default_number())
     );
     let _ = write!(w, "| offset (mm) |");
     for mu in &frictions {

@@ -49,6 +49,31 @@ pub const FIT_SIGMA: [(Observable, f64); 3] =
     [(Observable::Restitution, 0.01), (Observable::ContactTime, 1e-4), (Observable::MaxCompression, 1e-3)];
 pub const FIT_SEED: u64 = 31;
 
+/// The default shell ball's numbers a page quotes (Table 1's radius, the
+/// FIFA test's pressure).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DefaultBall {
+    /// R, m.
+    pub radius: f64,
+    /// p0, gauge, Pa.
+    pub pressure: f64,
+    /// β, Pa·s/m.
+    pub shell_damping: f64,
+    /// Hunt–Crossley's χ of the small-compression limit, s/m.
+    pub small_compression_hysteresis: f64,
+}
+
+/// The default shell ball of radius `DEFAULT_BALL_RADIUS`.
+pub fn default_ball() -> Result<DefaultBall, StudyError> {
+    let ball = kick_core::ShellBall::default_with_radius(kick_core::DEFAULT_BALL_RADIUS)?;
+    Ok(DefaultBall {
+        radius: ball.radius,
+        pressure: ball.pressure,
+        shell_damping: ball.shell_damping,
+        small_compression_hysteresis: ball.small_compression_hysteresis(),
+    })
+}
+
 /// A bounce with these values (the default ball otherwise).
 pub fn bounce(values: &[(&str, f64)]) -> Result<kick_bounce::BounceOutcome, StudyError> {
     let mut spec = BounceSpec::default();
@@ -125,4 +150,19 @@ pub fn plate_test_spec(spec_path: &Path) -> Result<String, StudyError> {
 /// Impact speed of the FIFA drop, m/s: √(2 g h).
 pub fn fifa_speed() -> f64 {
     (2.0 * GRAVITY * FIFA_DROP).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The default ball is Table 1's radius at the FIFA test's pressure, and
+    /// with no shell stiffness (k_s = 0) its small-compression χ is β/p0.
+    #[test]
+    fn the_default_ball_is_the_fifa_test_s() {
+        let b = default_ball().unwrap();
+        assert_eq!(b.radius, 0.11);
+        assert_eq!(b.pressure, FIFA_PRESSURE);
+        assert!((b.small_compression_hysteresis - b.shell_damping / b.pressure).abs() <= 1e-15 * b.small_compression_hysteresis);
+    }
 }

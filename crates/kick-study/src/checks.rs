@@ -1,7 +1,7 @@
 //! `kick check`: every cross-model check row, kick-checks' and the 3D model's.
 
 use crate::printable::Printable;
-use kick_core::check::CheckRow;
+pub use kick_core::check::CheckRow;
 use kick_core::sig;
 use serde::Serialize;
 use std::fmt::Write as _;

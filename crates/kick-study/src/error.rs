@@ -73,6 +73,10 @@ pub enum StudyError {
     /// No shell damping in the search bracket makes the FIFA drop rebound to `height` (m).
     #[error("no β rebounds {height} m")]
     NoRebound { height: f64 },
+    /// A 3D outcome's column (`simulate3d_many`'s) that the outcome's
+    /// field list (`kick_3d::FIELDS_3D`) does not name: the two drifted apart.
+    #[error("the 3D outcome's column `{column}` is not one of kick_3d::FIELDS_3D")]
+    Column { column: String },
     /// A value that has no JSON form.
     #[error("{0}")]
     Json(String),
@@ -91,7 +95,9 @@ impl StudyError {
             StudyError::Identify(e) => e.status(),
             StudyError::NoRebound { .. } => Status::NumericalFailure,
             StudyError::Failure(f) => f.status,
-            StudyError::Sink(_) | StudyError::ShortHistory { .. } | StudyError::Json(_) => Status::NumericalFailure,
+            StudyError::Sink(_) | StudyError::ShortHistory { .. } | StudyError::Json(_) | StudyError::Column { .. } => {
+                Status::NumericalFailure
+            }
             StudyError::FlightValidation(e) => match e {
                 kick_flight::validation::FlightValidationError::Flight(f) => f.status(),
                 kick_flight::validation::FlightValidationError::Measurements(_) => Status::Refused,

@@ -356,7 +356,12 @@ pub struct Many3d {
     columns: Vec<(String, Vec<usize>)>,
     /// Numbers of the kick's own columns (before the flight's).
     kick_width: usize,
+    /// For each of those numbers, its index in `Outcome3d::field_values`:
+    /// a row is filled without building the serde tree `flatten3d` walks.
+    picks: Vec<usize>,
     flight: Option<Flown>,
+    /// Where each plane-by-plane crossing number goes (see [`regroup_planes`]).
+    regroup: Option<Regroup>,
 }
 
 impl Many3d {
@@ -374,10 +379,12 @@ impl Many3d {
             })
             .collect();
         let kick_width = columns.iter().map(|(_, a)| width(a)).sum();
+        let picks = field_picks(&columns)?;
+        let regroup = flight.as_ref().and_then(|f| f.planes).map(Regroup::new);
         if let Some(f) = &flight {
             columns.extend(flight_columns(f.planes, f.plan.rest.distance.is_some()));
         }
-        Ok(Many3d { solver, columns, kick_width, flight })
+        Ok(Many3d { solver, columns, kick_width, picks, flight, regroup })
     }
 
     /// Whether each kick is flown.
@@ -409,12 +416,9 @@ impl RowModel for Many3d {
         let failed = |e: kick_3d::Kick3dError| Failure::new(e.status(), e.to_string());
         let kick = spec.0.build().map_err(failed)?;
         let outcome = self.solver.solve(&kick).map_err(failed)?;
-        let mut flat = Vec::with_capacity(self.columns.len() + 1);
-        flatten3d(&outcome, &mut flat);
-        let mut at = 0;
-        for (_, values) in flat.iter().filter(|(n, _)| n != "evaluations") {
-            row[at..at + values.len()].copy_from_slice(values);
-            at += values.len();
+        let values = outcome.field_values();
+        for (x, &i) in row.iter_mut().zip(&self.picks) {
+            *x = values[i];
         }
         if let Some(f) = &self.flight {
             let out = &mut row[self.kick_width..];
@@ -430,55 +434,102 @@ impl RowModel for Many3d {
             }
             // `crossed` and the crossing's columns come plane by plane in
             // `plane_values`; the outputs want each quantity over the planes.
-            if let Some(p) = f.planes {
-                regroup_planes(&mut out[kick_flight::LANDING_COLUMNS..last], p);
+            if let Some(r) = &self.regroup {
+                r.apply(&mut out[kick_flight::LANDING_COLUMNS..last]);
             }
         }
         Ok(Solved::new(outcome.evaluations, kick.check_validity(&outcome).err()))
     }
 }
 
+/// Where each number of the kick's output columns is in
+/// `Outcome3d::field_values` (by the field's name and width).
+fn field_picks(columns: &[(String, Vec<usize>)]) -> Result<Vec<usize>, StudyError> {
+    let mut picks = Vec::new();
+    for (name, axes) in columns {
+        let mut start = 0;
+        let found = kick_3d::FIELDS_3D.iter().find_map(|&(field, w)| {
+            start += w;
+            (field == name && w == width(axes)).then_some(start - w..start)
+        });
+        picks.extend(found.ok_or_else(|| StudyError::Column { column: name.clone() })?);
+    }
+    Ok(picks)
+}
+
 /// `plane_values`' crossings (plane by plane, 7 numbers each) as the
 /// outputs hold them: `crossed`, `crossing_time`, `crossing_height`,
 /// `crossing_lateral_offset` each over the planes, then `crossing_velocity`
-/// plane by plane (3 each).
-fn regroup_planes(values: &mut [f64], planes: usize) {
-    let per = kick_flight::OUTCOME_COLUMNS.len() - kick_flight::LANDING_COLUMNS;
-    let by_plane: Vec<f64> = values[..per * planes].to_vec();
-    let mut at = 0;
-    for q in 0..4 {
-        for k in 0..planes {
-            values[at] = by_plane[k * per + q];
-            at += 1;
+/// plane by plane (3 each). The permutation is worked out once per call
+/// and applied in place, cycle by cycle, so a row allocates nothing.
+struct Regroup {
+    /// Output position i takes the input's `from[i]`.
+    from: Vec<usize>,
+    /// One position on each cycle of `from` longer than one.
+    leaders: Vec<usize>,
+}
+
+impl Regroup {
+    fn new(planes: usize) -> Regroup {
+        let per = kick_flight::OUTCOME_COLUMNS.len() - kick_flight::LANDING_COLUMNS;
+        let mut from = Vec::with_capacity(per * planes);
+        for q in 0..4 {
+            from.extend((0..planes).map(|k| k * per + q));
         }
+        for k in 0..planes {
+            from.extend((4..7).map(|q| k * per + q));
+        }
+        let mut seen = vec![false; from.len()];
+        let mut leaders = Vec::new();
+        for i in 0..from.len() {
+            if seen[i] || from[i] == i {
+                continue;
+            }
+            leaders.push(i);
+            let mut j = i;
+            while !seen[j] {
+                seen[j] = true;
+                j = from[j];
+            }
+        }
+        Regroup { from, leaders }
     }
-    for k in 0..planes {
-        values[at..at + 3].copy_from_slice(&by_plane[k * per + 4..k * per + 7]);
-        at += 3;
+
+    fn apply(&self, values: &mut [f64]) {
+        for &i in &self.leaders {
+            let first = values[i];
+            let mut j = i;
+            while self.from[j] != i {
+                values[j] = values[self.from[j]];
+                j = self.from[j];
+            }
+            values[j] = first;
+        }
     }
 }
 
-type Get = fn(&FlightOutcome) -> Vec<f64>;
+/// Writes an outcome's numbers of one column into its slots.
+type Get = fn(&FlightOutcome, &mut [f64]);
 
 /// Output columns of `flight_many`: name, width (vectors with a trailing
 /// axis of 2 or 3) and the outcome's numbers.
 const FLIGHT_COLUMNS: [(&str, usize, Get); 16] = [
-    ("flight_time", 1, |o| vec![o.flight_time]),
-    ("landing_point", 2, |o| o.landing_point.to_vec()),
-    ("apex_height", 1, |o| vec![o.apex_height]),
-    ("apex_time", 1, |o| vec![o.apex_time]),
-    ("landing_velocity", 3, |o| o.landing_velocity.to_vec()),
-    ("landing_spin", 3, |o| o.landing_spin.to_vec()),
-    ("crossed", 1, |o| vec![if o.crossing.is_some() { 1.0 } else { 0.0 }]),
-    ("crossing_time", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.time])),
-    ("crossing_height", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.height])),
-    ("crossing_lateral_offset", 1, |o| o.crossing.map_or(vec![f64::NAN], |c| vec![c.lateral_offset])),
-    ("crossing_velocity", 3, |o| o.crossing.map_or(vec![f64::NAN; 3], |c| c.velocity.to_vec())),
-    ("launch_reynolds", 1, |o| vec![o.launch.reynolds]),
-    ("launch_spin_parameter", 1, |o| vec![o.launch.spin_parameter]),
-    ("launch_drag_coefficient", 1, |o| vec![o.launch.drag_coefficient]),
-    ("launch_lift_coefficient", 1, |o| vec![o.launch.lift_coefficient]),
-    ("steps", 1, |o| vec![o.steps as f64]),
+    ("flight_time", 1, |o, x| x[0] = o.flight_time),
+    ("landing_point", 2, |o, x| x.copy_from_slice(&o.landing_point)),
+    ("apex_height", 1, |o, x| x[0] = o.apex_height),
+    ("apex_time", 1, |o, x| x[0] = o.apex_time),
+    ("landing_velocity", 3, |o, x| x.copy_from_slice(&o.landing_velocity)),
+    ("landing_spin", 3, |o, x| x.copy_from_slice(&o.landing_spin)),
+    ("crossed", 1, |o, x| x[0] = if o.crossing.is_some() { 1.0 } else { 0.0 }),
+    ("crossing_time", 1, |o, x| x[0] = o.crossing.map_or(f64::NAN, |c| c.time)),
+    ("crossing_height", 1, |o, x| x[0] = o.crossing.map_or(f64::NAN, |c| c.height)),
+    ("crossing_lateral_offset", 1, |o, x| x[0] = o.crossing.map_or(f64::NAN, |c| c.lateral_offset)),
+    ("crossing_velocity", 3, |o, x| x.copy_from_slice(&o.crossing.map_or([f64::NAN; 3], |c| c.velocity))),
+    ("launch_reynolds", 1, |o, x| x[0] = o.launch.reynolds),
+    ("launch_spin_parameter", 1, |o, x| x[0] = o.launch.spin_parameter),
+    ("launch_drag_coefficient", 1, |o, x| x[0] = o.launch.drag_coefficient),
+    ("launch_lift_coefficient", 1, |o, x| x[0] = o.launch.lift_coefficient),
+    ("steps", 1, |o, x| x[0] = o.steps as f64),
 ];
 
 /// Columns of a table of (name, width, …): vectors get a trailing axis.
@@ -513,7 +564,7 @@ impl RowModel for ManyFlights {
         let o = kick_flight::solve(&spec.build().map_err(failed)?).map_err(failed)?;
         let mut at = 0;
         for (_, width, get) in &FLIGHT_COLUMNS {
-            row[at..at + width].copy_from_slice(&get(&o));
+            get(&o, &mut row[at..at + width]);
             at += width;
         }
         Ok(Solved::new(o.evaluations, None))
@@ -647,6 +698,75 @@ mod tests {
         assert_eq!((status[0], status[1]), (0, Status::Refused.code()));
         assert!(columns.iter().all(|c| c[0].is_finite() && c[1].is_nan()));
         assert_eq!(evaluations[1], 0);
+    }
+
+    /// A 3D row, filled from the observables by index, holds the numbers of
+    /// the outcome's serde fields (what `simulate3d_many` has always
+    /// returned), bit for bit, for a square and an off-centre shell kick.
+    #[test]
+    fn a_3d_row_is_the_outcome_s_fields() {
+        let model = Many3d::new(Solver3d::Auto, None).unwrap();
+        for offset in [0.0, 0.05] {
+            let mut spec = (KickSpec::default(), FlightSpec::default());
+            spec.0.set_parameter(find_at(KickSpec::LEVELS, "offset").unwrap(), Value::Number(offset)).unwrap();
+            let mut row = vec![f64::NAN; model.kick_width];
+            model.solve(&spec, &mut row).unwrap();
+            let mut flat = Vec::new();
+            flatten3d(&Solver3d::Auto.solve(&spec.0.build().unwrap()).unwrap(), &mut flat);
+            let expected: Vec<f64> = flat.into_iter().filter(|(n, _)| n != "evaluations").flat_map(|(_, v)| v).collect();
+            assert_eq!(expected.len(), row.len());
+            for (k, (a, b)) in row.iter().zip(&expected).enumerate() {
+                assert_eq!(a.to_bits(), b.to_bits(), "offset {offset}, number {k}");
+            }
+        }
+    }
+
+    /// The in-place regrouping of crossings equals a copy read plane by plane.
+    #[test]
+    fn crossings_regroup_in_place_as_by_a_copy() {
+        let per = kick_flight::OUTCOME_COLUMNS.len() - kick_flight::LANDING_COLUMNS;
+        assert_eq!(per, 7);
+        for planes in [1, 2, 3, 5, 8] {
+            let input: Vec<f64> = (0..per * planes).map(|i| i as f64).collect();
+            let mut expected = Vec::new();
+            for q in 0..4 {
+                expected.extend((0..planes).map(|k| input[k * per + q]));
+            }
+            for k in 0..planes {
+                expected.extend_from_slice(&input[k * per + 4..k * per + 7]);
+            }
+            let mut values = input.clone();
+            Regroup::new(planes).apply(&mut values);
+            assert_eq!(values, expected, "{planes} planes");
+        }
+    }
+
+    /// A flight row holds the outcome's numbers in `FLIGHT_COLUMNS` order,
+    /// NaN for a crossing the ball does not make.
+    #[test]
+    fn a_flight_row_holds_the_outcome() {
+        let model = ManyFlights::default();
+        let width: usize = FLIGHT_COLUMNS.iter().map(|c| c.1).sum();
+        for distance in [10.0, 1.0e3] {
+            let mut spec = FlightSpec::default();
+            for (name, value) in [("speed", 25.0), ("launch_angle", 15.0), ("distance", distance)] {
+                spec.set(FlightParameter::from_name(name).unwrap(), &[value]).unwrap();
+            }
+            let mut row = vec![0.0; width];
+            model.solve(&spec, &mut row).unwrap();
+            let o = kick_flight::solve(&spec.build().unwrap()).unwrap();
+            let c = o.crossing;
+            assert_eq!(c.is_some(), distance == 10.0);
+            let mut expected = vec![o.flight_time, o.landing_point[0], o.landing_point[1], o.apex_height, o.apex_time];
+            expected.extend(o.landing_velocity.iter().chain(&o.landing_spin));
+            expected.push(if c.is_some() { 1.0 } else { 0.0 });
+            expected.extend(c.map_or([f64::NAN; 3], |c| [c.time, c.height, c.lateral_offset]));
+            expected.extend(c.map_or([f64::NAN; 3], |c| c.velocity));
+            let l = o.launch;
+            expected.extend([l.reynolds, l.spin_parameter, l.drag_coefficient, l.lift_coefficient, o.steps as f64]);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&row), bits(&expected), "distance {distance}");
+        }
     }
 
     /// Inputs that do not broadcast, and a vector without its axis of 3, are refused by name.

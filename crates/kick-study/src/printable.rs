@@ -1,6 +1,8 @@
 //! What every front end prints: a result as text or as JSON, with the same
 //! keys for the command line and (later) Python.
 
+// How numbers and statuses print, the same on every page and front end.
+pub use kick_core::{short, sig, Status};
 use serde::Serialize;
 use std::path::PathBuf;
 

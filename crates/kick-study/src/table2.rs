@@ -5,7 +5,7 @@ use crate::error::StudyError;
 use crate::printable::Printable;
 use kick_compliant::table2::{columns, printed_columns, Table2File};
 use kick_compliant::{Accurate, SeedRk4};
-use kick_core::paper::{TABLE2, TABLE2_DECIMALS};
+pub use kick_core::paper::{TABLE2, TABLE2_DECIMALS};
 use kick_core::{sig, Solver};
 use serde::Serialize;
 use std::fmt::Write as _;

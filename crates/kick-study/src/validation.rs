@@ -24,7 +24,8 @@ use crate::printable::Printable;
 use crate::units::three;
 /// |ω| below this is printed as zero to rounding, rad/s.
 use kick_3d::validation::{largest_spin, patch_spin_point, spin_curve, spin_point, SpinPoint, ASSUMED_INSTEP_RADIUS, REFERENCE_FRICTION};
-use kick_core::measurements::{Checked, Comparison, Measured, Measurements};
+pub use kick_core::measurements::{Checked, Measured};
+use kick_core::measurements::{Comparison, Measurements};
 use kick_core::{short, LawKind, Parameter, Scenario, ShellBall, Value, DEFAULT_BALL_RADIUS};
 use kick_flight::validation::{DragCrisisModel, FreeKicks, FREE_KICK_DISTANCE, FREE_KICK_ELEVATION};
 use kick_identify::validation::{contact_model, with_ball_speed, ContactModel};

@@ -5,7 +5,7 @@
 use crate::error::PaperError;
 use crate::figures::{save_grid, Panel, Series, COLORS};
 use crate::identify::files::{read_identifiability, LawsData, SOURCES};
-use kick_core::laws::LawKind;
+use kick_study::parameters::LawKind;
 use plotters::prelude::SeriesLabelPosition;
 use std::path::{Path, PathBuf};
 

@@ -7,7 +7,7 @@
 use crate::error::PaperError;
 use crate::identify::files::{read_fit, read_identifiability, read_table2_fits, EstimateData, FitData, LawsData};
 use crate::ResultFile;
-use kick_core::laws::LawKind;
+use kick_study::parameters::LawKind;
 use std::fmt::Write as _;
 use std::path::Path;
 

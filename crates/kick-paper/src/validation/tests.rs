@@ -3,7 +3,7 @@
 
 use super::*;
 use super::{estimate_cell, Role, Row};
-use kick_core::{Parameter, ShellBall};
+use kick_core::{Parameter, Scenario, ShellBall};
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
