@@ -3,21 +3,14 @@
 //! foot model, the leg without a boot, the boot alone, and the leg with its boot,
 //! timed in alternation (ratios within one run):
 //! `cargo run --release -p kick-3d --example leg_cost_3d [SECONDS]`.
-use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
+use kick_3d::{Accurate3d, KickSpec};
 use kick_core::ScenarioSpec;
 use std::hint::black_box;
 use std::time::Instant;
 
 fn main() {
     let seconds: f64 = std::env::args().nth(1).map_or(0.3, |s| s.parse().expect("SECONDS"));
-    let cap = Kick3dSpec {
-        offset: Some(0.05),
-        friction: Some(0.5),
-        patch_contact: Some(true),
-        instep_radius: Some(kick_3d::validation::ASSUMED_INSTEP_RADIUS),
-        face_yaw_deg: Some(0.0),
-        ..Default::default()
-    };
+    let cap = kick_3d::models::cap_patch_kick();
     let shell = ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() };
     let forms: Vec<(&str, ScenarioSpec)> = vec![
         ("rigid Table 1 foot", shell.clone()),

@@ -22,14 +22,7 @@ use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
 use kick_core::ScenarioSpec;
 
 fn main() {
-    let cap = Kick3dSpec {
-        offset: Some(0.05),
-        friction: Some(0.5),
-        patch_contact: Some(true),
-        instep_radius: Some(kick_3d::validation::ASSUMED_INSTEP_RADIUS),
-        face_yaw_deg: Some(0.0),
-        ..Default::default()
-    };
+    let cap = kick_3d::models::cap_patch_kick();
     let shell = ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() };
     let (k_b, c_b) = (kick_core::boot::IDENTIFIED_STIFFNESS, kick_core::boot::IDENTIFIED_DAMPING);
     let forms: Vec<(&str, ScenarioSpec, f64)> = vec![

@@ -70,6 +70,20 @@ impl OffCenterBox {
 /// The seed of the box sample used by the benches and `kick bench`.
 pub const BENCH_SEED: u64 = 2024;
 
+/// The cap patch kick of `kick bench` (issue 31's ≤ 120 µs row) and the
+/// examples that take it apart: 5 cm off centre, μ = 0.5, the patch on the
+/// assumed convex instep, its face square to the path.
+pub fn cap_patch_kick() -> Kick3dSpec {
+    Kick3dSpec {
+        offset: Some(0.05),
+        friction: Some(0.5),
+        patch_contact: Some(true),
+        instep_radius: Some(crate::validation::ASSUMED_INSTEP_RADIUS),
+        face_yaw_deg: Some(0.0),
+        ..Kick3dSpec::default()
+    }
+}
+
 /// Named kicks: (name, kick). Each stands for a kind of contact the solvers
 /// must get right: both laws' families, μ from 0 to ∞, rounded and sharp
 /// edges (two leave the flat face over an edge or a rounded border), a

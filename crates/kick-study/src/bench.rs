@@ -149,12 +149,7 @@ pub fn kick_costs(min_seconds: f64) -> Result<[(Vec<f64>, u64); KICK_FORMS], Ben
     let at = |scenario: kick_core::ScenarioSpec, kick3d: Kick3dSpec| KickSpec { scenario, kick3d }.build();
     let spec = Kick3dSpec { offset: Some(0.05), friction: Some(f64::INFINITY), ..Kick3dSpec::default() };
     let shell = kick_core::ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() };
-    let cap = Kick3dSpec {
-        patch_contact: Some(true),
-        instep_radius: Some(kick_3d::validation::ASSUMED_INSTEP_RADIUS),
-        face_yaw_deg: Some(0.0),
-        ..spec
-    };
+    let cap = Kick3dSpec { friction: Some(f64::INFINITY), ..kick_3d::models::cap_patch_kick() };
     let kicks = [
         at(Default::default(), spec)?,
         at(Default::default(), Kick3dSpec { tangential_stiffness: Some(1e9), friction: Some(0.5), ..spec })?,
