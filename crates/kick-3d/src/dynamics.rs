@@ -251,8 +251,16 @@ impl Dynamics {
         }
         let c = Dynamics { slipping: true, ..self }.contact(y);
         let cap_rate = self.friction * c.normal_force_rate;
+        // Onset is t = 0, δ = 0 by construction: the cap there is the law's
+        // F(0, δ̇), not the force of the geometry's rounding (1.2e-17 N on
+        // box kick 31 of Hunt and Crossley's law, which started the element
+        // in grip where F grows as t^1.35 and it slips for 0.39 ns).
+        let onset_force = match &self.boot {
+            None => self.law.contact_force(0.0, c.compression_rate),
+            Some(boot) => boot.split(&self.law, 0.0, c.compression_rate + c.boot_rate, 0.0, true, false).force.max(0.0),
+        };
         let slips =
-            crate::tangential::slips_at_touch(self.tangential_stiffness, c.sliding_velocity, self.friction * c.normal_force, cap_rate);
+            crate::tangential::slips_at_touch(self.tangential_stiffness, c.sliding_velocity, self.friction * onset_force, cap_rate);
         Dynamics { slipping: slips, ..self }
     }
 

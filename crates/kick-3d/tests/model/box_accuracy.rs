@@ -68,3 +68,17 @@ fn a_grip_lost_in_the_last_step_slips_before_separation() {
     let errors = check("shell kick 82", &kick);
     assert!(errors.slip_time <= 1e-9, "slip time off by {:.3e}", errors.slip_time);
 }
+
+/// Box kicks 31 and 114 of Hunt and Crossley's law (μ ≈ 4.7): F_n grows as
+/// t^1.35 from touch, slower than the spring would load, so the element
+/// slips for the first 0.39 ns. The reference started in grip, reading the
+/// cap from the geometry's rounding (F_n = 1.2e-17 N at touch) instead of
+/// the law at δ = 0, and the spring's 4e-4 N of extra stretch held to
+/// separation: spin off by 5.8e-8, slip time by 6.6e-8 of the contact.
+#[test]
+fn a_cap_growing_from_zero_slips_at_touch_in_both_paths() {
+    for i in [31, 114] {
+        let kick = OffCenterBox { seed: BENCH_SEED, law: LawKind::HuntCrossley }.kick(i).unwrap();
+        check(&format!("hunt-crossley kick {i}"), &kick);
+    }
+}
