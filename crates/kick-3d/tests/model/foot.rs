@@ -258,3 +258,27 @@ fn a_stalled_kick_fails_at_once() {
         assert!(o.evaluations < 5000, "{}", o.evaluations);
     }
 }
+
+/// A fast kick into an incoming ball (row 342 of `sweep3d`'s box with the
+/// identified boot, made central): 5.8 cm of ball and 8.6 cm of layer, the
+/// ball's centre inside the foot's box. The accurate path is still the 1D
+/// booted kick (its geometry is the face's plane); the full state's parry
+/// distance reads the nearest face there (on row 342 itself, 7.9° off
+/// square, it gave 3.9 m/s where the accurate path gives 57), so it
+/// refuses, naming the limit.
+#[test]
+fn a_centre_inside_the_foot_s_box_is_refused_by_the_full_state() {
+    let scenario = "law = \"shell\"\nfoot_mass = 7.0546\nball_mass = 0.41332\nfoot_speed = 33.510\nball_speed = -8.5438\n\
+                    inflation_pressure = 61475.0\nboot_stiffness = 35066.065\nboot_damping = 38.3008\n";
+    let k = kick(scenario, Kick3dSpec { friction: Some(1.129), ..Default::default() });
+    let one_d = kick_compliant::Auto::default().solve(&k.normal_scenario().unwrap()).unwrap();
+    let accurate = Accurate3d::default().solve(&k).unwrap();
+    let speed = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    assert!((speed(accurate.launch_velocity) - one_d.v_ball_out).abs() < 1e-9 * one_d.v_ball_out, "{accurate:?} {one_d:?}");
+    match precision::reference().solve(&k) {
+        Err(kick_3d::Kick3dError::Core(kick_core::KickError::BeyondGeometry { compression, limit, .. })) => {
+            assert!(compression > limit && limit == k.ball_radius, "{compression} {limit}")
+        }
+        other => panic!("the full state answered: {other:?}"),
+    }
+}
