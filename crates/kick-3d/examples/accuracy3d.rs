@@ -5,13 +5,20 @@
 //! over the first N kicks (default 200) of the box sample with seed 2024.
 //!
 //! Over 200 kicks of each law at the default rtol (1e-13) every observable
-//! is within 1e-9 of the reference but two, neither the accurate path's:
+//! is within 1e-9 of the reference but these:
 //! - power law, kick 82: slip time 2.1e-6 of the contact. Near separation
 //!   a slip ends in a grip that fails at once (the spring enters a hair,
 //!   `tangential::GRIP_ENTRY` = 1e-12, inside the cap); the reference's
 //!   integration noise at rtol 1e-13 is of that size and holds the grip for
 //!   11 ns. At rtol 1e-14 the reference agrees with the accurate path,
 //!   which gives the same slip time from rtol 1e-11 to 1e-15;
+//! - Hunt and Crossley's exact law, kick 82: slip time 5.7e-6 of the
+//!   contact, open. The accurate path slips to separation (the same from
+//!   rtol 1e-11 to 1e-15); the reference, the same from 1e-12 to 1e-14,
+//!   grips for the last 34 ns. The accurate path does not look for a
+//!   slip's end in the step that lands on separation, where the slider's
+//!   direction state shrinks to zero length with δ; which of the two is
+//!   the law's motion there is not settled;
 //! - shell ball, kick 195 (offset 0.2 mm, μ = ∞): spin 3.0e-9 relative to a
 //!   spin of 1.2e-3 rad/s, 2e-14 of V_n/R; both paths converged.
 use kick_3d::models::{OffCenterBox, BENCH_SEED};
@@ -34,7 +41,7 @@ fn main() {
     for i in 0..n {
         let kick = sample.kick(i).expect("box kicks are valid");
         let solved = solver.solve(&kick).expect("solves");
-        let reference = precision::reference().solve(&kick).expect("reference solves");
+        let reference = precision::reference().solve(&kick).unwrap_or_else(|e| panic!("kick {i}: reference: {e}"));
         let e = Errors3d::of(&kick, &solved, &reference);
         if e.max() > 1e-9 {
             println!(
