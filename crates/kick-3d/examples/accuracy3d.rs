@@ -12,13 +12,6 @@
 //!   integration noise at rtol 1e-13 is of that size and holds the grip for
 //!   11 ns. At rtol 1e-14 the reference agrees with the accurate path,
 //!   which gives the same slip time from rtol 1e-11 to 1e-15;
-//! - Hunt and Crossley's exact law, kick 82: slip time 5.7e-6 of the
-//!   contact, open. The accurate path slips to separation (the same from
-//!   rtol 1e-11 to 1e-15); the reference, the same from 1e-12 to 1e-14,
-//!   grips for the last 34 ns. The accurate path does not look for a
-//!   slip's end in the step that lands on separation, where the slider's
-//!   direction state shrinks to zero length with δ; which of the two is
-//!   the law's motion there is not settled;
 //! - shell ball, kick 195 (offset 0.2 mm, μ = ∞): spin 3.0e-9 relative to a
 //!   spin of 1.2e-3 rad/s, 2e-14 of V_n/R; both paths converged.
 use kick_3d::models::{OffCenterBox, BENCH_SEED};
