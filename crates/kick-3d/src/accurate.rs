@@ -358,9 +358,9 @@ const CLOCK_RATE: f64 = 0.2;
 /// switch located there is separation itself (see `locate_switches`).
 /// What is left of the contact there has δ = u^p below (1e-3 Δu/u_start)^p
 /// of its start, a normal force and a time to match: a grip or a slip in it
-/// moves no observable by a measurable amount. Closer to the end than 1e-9
-/// of the step, such switches were found on most laws' box (200 kicks) and
-/// the grip begun there failed with a step-size underflow on 6 of 7 laws.
+/// moves no observable by a measurable amount. With 1e-9 instead, grips
+/// begun in that stretch failed with a step-size underflow on the boxes
+/// (200 kicks) of 6 of 7 laws.
 const LANDING_SHARE: f64 = 1e-3;
 
 /// The system as the stepper sees it, keeping the law at the accepted
@@ -910,8 +910,8 @@ impl<'a, 's, const SAMPLE: bool> Run<'a, 's, SAMPLE> {
             );
             // A slip's direction state (contact::SPRING) shrinks to zero length
             // with δ at separation, where the slider's speed is read from a
-            // direction of no length: a slip's end located there, on the
-            // landing step's end to rounding, is separation itself. One inside
+            // direction of no length: a slip's end located there, within
+            // LANDING_SHARE of the landing step's end, is separation itself. One inside
             // the step is a grip before it (box kick 82 of Hunt and Crossley's
             // exact law grips for the last 34 ns, as the reference finds; a
             // grip's margin, likewise, cannot hold a stretched spring at zero
