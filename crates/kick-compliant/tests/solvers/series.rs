@@ -8,6 +8,7 @@ use kick_compliant::precision::max_relative_error;
 use kick_compliant::{closed::ClosedForm, Accurate, Series};
 use kick_core::{models, KickError, Outcome, Scenario, Solver};
 use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
 
 fn tight() -> Accurate {
     Accurate::new(1e-14, 1e-14).unwrap()
@@ -162,7 +163,7 @@ fn a_foot_that_nearly_stops_agrees_with_the_tight_reference() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 200, rng_seed: RngSeed::Fixed(2024), ..ProptestConfig::default() })]
 
     /// The sweep's box (README, `kick sweep`): every observable within 1e-9
     /// of `accurate` at 1e-14, and the same verdict when the ball is trapped.
