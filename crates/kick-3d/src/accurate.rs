@@ -510,6 +510,7 @@ impl Accurate3d {
                 let on_time = run.system.in_phase(Phase { clock: Clock::Time, ..run.system.phase });
                 let t1 = run.system.time(x1, &y1);
                 let (dy, c) = on_time.derivative_and_local(t1, &y1);
+                run.extra_evaluations += 1;
                 rates_behind(&on_time, t1, &y1, &dy, run.step_of(Clock::Time), &c)
             } else {
                 rates_after_step(&run.system, x1, &y1, run.stepper.end_derivative(), dx, &c1, run.point.x, &run.point.rates)

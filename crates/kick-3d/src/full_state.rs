@@ -194,14 +194,15 @@ impl System<f64, State> for PhaseSystem<'_> {
         if t <= t0 {
             return false;
         }
+        let g = event_values(&self.dynamics, y);
         if self.dynamics.boot.is_some() {
-            let overlap = self.dynamics.contact(y).compression + y[dynamics::BOOT];
+            // g[0] is the ball's compression: the overlap less the layer's.
+            let overlap = g[0] + y[dynamics::BOOT];
             if overlap > self.dynamics.ball_radius + self.dynamics.border {
                 self.watch.beyond = Some((overlap, t));
                 return true;
             }
         }
-        let g = event_values(&self.dynamics, y);
         let crossed: [bool; 4] = std::array::from_fn(|i| EVENTS[i].crossed(g0[i], g[i]));
         if crossed.contains(&true) {
             // The phase ends inside this step, at the earliest of the events
