@@ -598,8 +598,10 @@ impl<const N: usize> Stepper<N> {
     /// follows an error coefficient that changes from step to step. Only
     /// the proposed sizes change: every step passes the same error test.
     pub fn set_predictive(&mut self, on: bool) {
-        self.predictive = on;
-        self.previous = None;
+        if on != self.predictive {
+            self.predictive = on;
+            self.previous = None;
+        }
     }
 
     /// The size the next step will try.
