@@ -174,7 +174,10 @@ fn kick_paper_depends_on_no_solver_no_hdf5_and_no_thread_pool() {
         "hdf5",
         "rayon",
     ];
-    let named: Vec<&&str> = dependencies.iter().filter(|d| solving.contains(d) || (d.starts_with("kick-") && !["kick-study", "kick-store"].contains(d))).collect();
+    let named: Vec<&&str> = dependencies
+        .iter()
+        .filter(|d| solving.contains(d) || (d.starts_with("kick-") && !["kick-study", "kick-store"].contains(d)))
+        .collect();
     assert!(named.is_empty(), "kick-paper depends on {named:?}");
     assert!(dependencies.contains(&"kick-study") && dependencies.contains(&"kick-store"), "{dependencies:?}");
 }

@@ -259,8 +259,7 @@ impl Dynamics {
             None => self.law.contact_force(0.0, c.compression_rate),
             Some(boot) => boot.split(&self.law, 0.0, c.compression_rate + c.boot_rate, 0.0, true, false).force.max(0.0),
         };
-        let slips =
-            crate::tangential::slips_at_touch(self.tangential_stiffness, c.sliding_velocity, self.friction * onset_force, cap_rate);
+        let slips = crate::tangential::slips_at_touch(self.tangential_stiffness, c.sliding_velocity, self.friction * onset_force, cap_rate);
         Dynamics { slipping: slips, ..self }
     }
 

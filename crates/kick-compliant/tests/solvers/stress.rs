@@ -132,7 +132,9 @@ fn check_scene(scene: Scene) -> Result<(), TestCaseError> {
                 Ok(f) => Some(f),
                 Err(KickError::NoSeparation { .. }) if full_state_conditioning(&s, r) > 1e6 => None,
                 // ... or cannot tell a catch-up from a separation (`Engine::check_catch_up`).
-                Err(KickError::Integration { reason, .. }) if full_state_conditioning(&s, r) > 1e6 && reason.contains("caught the ball up") => {
+                Err(KickError::Integration { reason, .. })
+                    if full_state_conditioning(&s, r) > 1e6 && reason.contains("caught the ball up") =>
+                {
                     None
                 }
                 Err(e) => return Err(TestCaseError::fail(format!("full state: {e}"))),
