@@ -460,12 +460,21 @@ impl Relative {
                 let rate = -dot_normal::<FACE>(n, v_rel);
                 let sliding = tangential::<FACE>(n, v_rel);
                 if let Some(boot) = &self.boot {
+                    // The shell ball slipping: (E, D) and the gradient from one gas pressure.
+                    let shell = match &self.law {
+                        AnyLaw::Shell(ball) if slipping => Some(ball.at(delta)),
+                        _ => None,
+                    };
                     // The approach rate splits between the boot and the ball (kick-core's `boot`).
-                    let split = boot.split(&self.law, delta, rate, y[BOOT], self.phase.compressing, self.phase.clamped);
+                    let (elastic, slope) = shell.map_or_else(|| self.law.rate_affine(delta, self.phase.compressing), |s| s.rate_affine());
+                    let split = boot.split_affine(elastic, slope, rate, y[BOOT], self.phase.clamped);
                     boot_rate = split.boot_rate;
                     // Ḟ through the layer (kick-core's `Boot::force_rate`), δ̈ the approach's.
                     let force_rate = if slipping {
-                        let (_, d_delta, d_rate) = self.law.branch_force_and_gradient(delta, split.ball_rate, self.phase.compressing);
+                        let (_, d_delta, d_rate) = shell.map_or_else(
+                            || self.law.branch_force_and_gradient(delta, split.ball_rate, self.phase.compressing),
+                            |s| s.force_and_gradient(split.ball_rate),
+                        );
                         let (rate, per_acceleration) = boot.force_rate_parts(d_delta, d_rate, split.ball_rate, split.boot_rate);
                         NormalRate { rate, per_acceleration }
                     } else {

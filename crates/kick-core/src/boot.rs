@@ -105,6 +105,13 @@ impl Boot {
         clamped: bool,
     ) -> Split {
         let (elastic, slope) = law.rate_affine(ball_compression, compressing);
+        self.split_affine(elastic, slope, rate, boot_compression, clamped)
+    }
+
+    /// [`Boot::split`] from the ball law's (E, D) at its compression
+    /// ([`ContactLaw::rate_affine`]), for a caller that has them.
+    #[inline(always)]
+    pub fn split_affine(&self, elastic: f64, slope: f64, rate: f64, boot_compression: f64, clamped: bool) -> Split {
         let spring = self.stiffness * boot_compression;
         if clamped {
             let boot_rate = -spring / self.damping;

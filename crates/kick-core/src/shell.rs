@@ -220,6 +220,13 @@ impl ShellBall {
     /// `elastic_and_unclamped`'s terms, the same operations), None at δ ≤ 0.
     #[inline(always)]
     fn pressure_terms(&self, compression: f64) -> Option<(f64, f64, f64, f64)> {
+        let (area, gauge, shell) = self.pressure(compression)?;
+        Some((area, gauge, shell, self.elastic_gradient(compression, area, gauge)))
+    }
+
+    /// (A, P − p_atm, k_s δ) at δ > 0, None at δ ≤ 0.
+    #[inline(always)]
+    fn pressure(&self, compression: f64) -> Option<(f64, f64, f64)> {
         if !(compression > 0.0) {
             return None;
         }
@@ -227,9 +234,23 @@ impl ShellBall {
         let d = compression.min(2.0 * r);
         let area = PI * d * (2.0 * r - d);
         let gauge = self.gauge_pressure(d);
+        Some((area, gauge, self.shell_stiffness * d))
+    }
+
+    /// dF_el/dδ at δ > 0 from its A and P − p_atm ([`ShellBall::pressure`]).
+    #[inline(always)]
+    fn elastic_gradient(&self, compression: f64, area: f64, gauge: f64) -> f64 {
+        let r = self.radius;
+        let d = compression.min(2.0 * r);
         let d_pressure = self.gas_exponent * (gauge + self.atmospheric_pressure) * area / self.gas_volume(d);
-        let gradient = d_pressure * area + gauge * 2.0 * PI * (r - d) + self.shell_stiffness;
-        Some((area, gauge, self.shell_stiffness * d, gradient))
+        d_pressure * area + gauge * 2.0 * PI * (r - d) + self.shell_stiffness
+    }
+
+    /// The gas pressure at δ, computed once for the values a layer in series
+    /// needs of the law at one state ([`PressureAt`]).
+    #[inline(always)]
+    pub fn at(&self, compression: f64) -> PressureAt<'_> {
+        PressureAt { ball: self, compression, terms: self.pressure(compression) }
     }
 
     /// (F_elastic, dF_elastic/dδ) at δ ≥ 0 (the gradient's former path,
@@ -360,21 +381,60 @@ impl ContactLaw for ShellBall {
     /// where the clamp holds F at 0 (at δ ≤ 0, the one-sided slope while approaching).
     #[inline]
     fn force_and_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64, f64) {
-        // `elastic`'s gradient and the force as `contact_force` computes it, to the bit, from one gas pressure.
-        let (force, gradient) = match self.pressure_terms(compression) {
-            Some((area, gauge, shell, gradient)) => (area * (gauge + self.shell_damping * compression_rate) + shell, gradient),
-            None => (0.0, self.small_compression_stiffness()),
+        self.at(compression).force_and_gradient(compression_rate)
+    }
+    /// (F_el, β A) from one gas pressure: F_el + β A δ̇ on both sides of δ̇ = 0.
+    #[inline]
+    fn rate_affine(&self, compression: f64, _compressing: bool) -> (f64, f64) {
+        self.at(compression).rate_affine()
+    }
+    fn damps_compression_only(&self) -> bool {
+        false
+    }
+}
+
+/// The shell law at one compression with its gas pressure computed once
+/// ([`ShellBall::at`]): a boot in series asks for (E, D) and then for the
+/// gradient at the ball's own rate, which the split gives.
+#[derive(Debug, Clone, Copy)]
+pub struct PressureAt<'a> {
+    ball: &'a ShellBall,
+    compression: f64,
+    /// (A, P − p_atm, k_s δ), None at δ ≤ 0; dF_el/dδ only when asked for.
+    terms: Option<(f64, f64, f64)>,
+}
+
+impl PressureAt<'_> {
+    /// `ContactLaw::rate_affine`: (F_el, β A) as the branch force at
+    /// δ̇ = 1 less the elastic part (its former path, to the bit).
+    #[inline(always)]
+    pub fn rate_affine(&self) -> (f64, f64) {
+        let (elastic, total) = match self.terms {
+            Some((area, gauge, shell)) => (area * gauge + shell, (area * (gauge + self.ball.shell_damping * 1.0) + shell).max(0.0)),
+            None => (0.0, 0.0),
         };
-        let d = compression.clamp(0.0, 2.0 * self.radius);
-        let slope = self.loss_slope(d);
-        let d_compression = gradient + self.shell_damping * 2.0 * PI * (self.radius - d) * compression_rate;
+        (elastic, total - elastic)
+    }
+
+    /// `ContactLaw::force_and_gradient` at the rate δ̇: (F, ∂F/∂δ, ∂F/∂δ̇),
+    /// zero where the clamp holds F at 0 (at δ ≤ 0, the one-sided slope while approaching).
+    #[inline(always)]
+    pub fn force_and_gradient(&self, compression_rate: f64) -> (f64, f64, f64) {
+        let ball = self.ball;
+        // `elastic`'s gradient and the force as `contact_force` computes it, to the bit, from one gas pressure.
+        let (force, gradient) = match self.terms {
+            Some((area, gauge, shell)) => {
+                (area * (gauge + ball.shell_damping * compression_rate) + shell, ball.elastic_gradient(self.compression, area, gauge))
+            }
+            None => (0.0, ball.small_compression_stiffness()),
+        };
+        let d = self.compression.clamp(0.0, 2.0 * ball.radius);
+        let slope = ball.loss_slope(d);
+        let d_compression = gradient + ball.shell_damping * 2.0 * PI * (ball.radius - d) * compression_rate;
         if force < 0.0 || (force == 0.0 && d_compression <= 0.0) {
             return (0.0, 0.0, 0.0); // clamped: F ≡ 0 nearby
         }
         (force, d_compression, slope)
-    }
-    fn damps_compression_only(&self) -> bool {
-        false
     }
 }
 
@@ -411,6 +471,9 @@ mod tests {
                     let separate = (elastic, raw, d_delta, d_rate);
                     assert_eq!(format!("{:?}", b.unclamped_and_gradient(delta, rate)), format!("{separate:?}"), "δ = {delta}, δ̇ = {rate}");
                 }
+                // `rate_affine` is the trait's default (the branch force at δ̇ = 1 less the elastic part).
+                let (elastic, total) = b.branch_force(delta, 1.0, true);
+                assert_eq!(format!("{:?}", b.rate_affine(delta, true)), format!("{:?}", (elastic, total - elastic)), "δ = {delta}");
             }
         }
     }
