@@ -15,7 +15,11 @@
 //!   free flight before touch is exact in a force-free world);
 //! - δ̇ changes sign (the damping switch of Eq. 20; + → − is max compression);
 //! - grip ↔ slip of the tangential element ([`crate::tangential`]: in grip
-//!   μ F_n − k_t |ξ|, in slip the slider's speed changes sign);
+//!   μ F_n − k_t |ξ|, in slip the slider's speed changes sign); also where
+//!   the margin crosses zero and back within one step (a short grip or
+//!   slip): a step across which the margin turns back from zero has its
+//!   turn located by Brent's method on the margin's rate, and a margin
+//!   past zero there ends the phase at the first crossing;
 //! - the clamp at F = 0 of a law that would pull (Kelvin–Voigt).
 //!
 //! Peaks (normal force, |tangential force|): every event point is a sample
@@ -163,10 +167,16 @@ struct Bracket {
     t1: f64,
 }
 
+/// d(grip margin)/dt at y along ẏ = `dy`, a central difference over ±`dt`
+/// on the phase's own branch (the margin is smooth through the phase's ends).
+fn margin_rate(dynamics: &Dynamics, y: &State, dy: &State, dt: f64) -> f64 {
+    (dynamics.contact(&(y + dy * dt)).grip_margin - dynamics.contact(&(y - dy * dt)).grip_margin) / (2.0 * dt)
+}
+
 /// The last accepted point, the samples and the brackets of one phase.
 struct Watch {
-    /// (t, y, event values, dQ/dt)
-    previous: (f64, State, [f64; 4], [f64; 2]),
+    /// (t, y, event values, dQ/dt, d(grip margin)/dt)
+    previous: (f64, State, [f64; 4], [f64; 2], f64),
     /// The events whose functions changed sign in the step (t0, y0) → t1.
     crossing: Option<([bool; 4], f64, State, f64)>,
     peaks: [Peak; 2],
@@ -177,12 +187,60 @@ struct Watch {
     /// box's core, where parry's contact is a penetration along the nearest
     /// face, no longer the distance from outside this path's normal needs.
     beyond: Option<(f64, f64)>,
+    /// A failure while re-integrating a step to look for a dip of the margin.
+    failure: Option<KickError>,
+    evaluations: u64,
 }
 
 struct PhaseSystem<'a> {
+    solver: FullState3d,
     dynamics: Dynamics,
     watch: &'a mut Watch,
     recorder: Option<&'a mut Vec<EnergySample>>,
+}
+
+impl PhaseSystem<'_> {
+    /// Where the grip margin, `margin0` at (t0, y0) and of the same sign at
+    /// t1, turned back from zero inside the step (its rate moved from towards
+    /// zero, `rate0`, to away, `rate1`) and crossed it at the turn: the turn's
+    /// time, which brackets the crossing with t0.
+    fn dip(&mut self, (t0, y0, margin0, rate0): (f64, &State, f64, f64), t1: f64, rate1: f64) -> Option<f64> {
+        let sign = margin0.signum();
+        if margin0 == 0.0 || !(sign * rate0 < 0.0 && sign * rate1 >= 0.0) {
+            return None;
+        }
+        let (solver, dynamics, dt) = (self.solver, self.dynamics, self.watch.difference_step);
+        let mut count = 0u64;
+        let mut failure = None;
+        let mut state_at = |tau: f64, count: &mut u64| match solver.advance(dynamics, t0, *y0, tau, count) {
+            Ok(state) => Some(state),
+            Err(e) => {
+                failure.get_or_insert(e);
+                None
+            }
+        };
+        let turn = roots::brent(
+            |tau| {
+                let Some(state) = state_at(tau, &mut count) else { return f64::NAN };
+                count += 3;
+                margin_rate(&dynamics, &state, &dynamics.derivative(&state), dt)
+            },
+            t0,
+            t1,
+            4.0 * f64::EPSILON * t1.abs(),
+            200,
+        );
+        let crossed = turn.and_then(|root| {
+            let state = state_at(root.x, &mut count)?;
+            (sign * dynamics.contact(&state).grip_margin <= 0.0).then_some(root.x)
+        });
+        self.watch.evaluations += count;
+        if let Some(e) = failure {
+            self.watch.failure = Some(e);
+            return Some(t1);
+        }
+        crossed
+    }
 }
 
 impl System<f64, State> for PhaseSystem<'_> {
@@ -190,7 +248,7 @@ impl System<f64, State> for PhaseSystem<'_> {
         *dy = self.dynamics.derivative(y);
     }
     fn solout(&mut self, t: f64, y: &State, dy: &State) -> bool {
-        let (t0, y0, g0, r0) = self.watch.previous;
+        let (t0, y0, g0, r0, m0) = self.watch.previous;
         if t <= t0 {
             return false;
         }
@@ -212,6 +270,13 @@ impl System<f64, State> for PhaseSystem<'_> {
             self.watch.crossing = Some((crossed, t0, y0, t));
             return true;
         }
+        let m = margin_rate(&self.dynamics, y, dy, self.watch.difference_step);
+        if let Some(turn) = self.dip((t0, &y0, g0[2], m0), t, m) {
+            // A short grip or slip inside the step: the phase ends at its start.
+            let grip_slip = std::array::from_fn(|i| EVENTS[i] == Event::GripSlip);
+            self.watch.crossing = Some((grip_slip, t0, y0, turn));
+            return true;
+        }
         let r = rates(&self.dynamics, y, dy, self.watch.difference_step, Side::Inside);
         for k in 0..2 {
             if r0[k] > 0.0 && r[k] <= 0.0 {
@@ -222,7 +287,7 @@ impl System<f64, State> for PhaseSystem<'_> {
         if let Some(r) = self.recorder.as_deref_mut() {
             r.push(sample(&self.dynamics, t, y));
         }
-        self.watch.previous = (t, *y, g, r);
+        self.watch.previous = (t, *y, g, r, m);
         false
     }
 }
@@ -312,18 +377,30 @@ impl FullState3d {
         let dy = dynamics.derivative(&y);
         *evaluations += 1;
         let mut watch = Watch {
-            previous: (t, y, event_values(&dynamics, &y), rates(&dynamics, &y, &dy, difference_step, Side::Start)),
+            previous: (
+                t,
+                y,
+                event_values(&dynamics, &y),
+                rates(&dynamics, &y, &dy, difference_step, Side::Start),
+                margin_rate(&dynamics, &y, &dy, difference_step),
+            ),
             crossing: None,
             peaks: *peaks,
             brackets: Vec::new(),
             difference_step,
             beyond: None,
+            failure: None,
+            evaluations: 0,
         };
-        let system = PhaseSystem { dynamics, watch: &mut watch, recorder };
+        let system = PhaseSystem { solver: *self, dynamics, watch: &mut watch, recorder };
         let mut stepper = self.integrator(system, t, t_end, y, t_end - t, 0.0);
         let stats = stepper.integrate().map_err(|e| KickError::Integration { time: t, reason: e.to_string() })?;
         *evaluations += u64::from(stats.num_eval);
         drop(stepper);
+        *evaluations += watch.evaluations;
+        if let Some(e) = watch.failure.take() {
+            return Err(e);
+        }
         if let Some((compression, time)) = watch.beyond {
             // Rows 201, 269 and 342 of `sweep3d`'s box with the identified
             // boot (foot 30-34 m/s into a ball at -9 m/s): 9 cm of layer
@@ -360,7 +437,7 @@ impl FullState3d {
             let dy = dynamics.derivative(&state);
             *evaluations += 1;
             let r = rates(&dynamics, &state, &dy, difference_step, Side::End);
-            let (tp, yp, _, rp) = watch.previous;
+            let (tp, yp, _, rp, _) = watch.previous;
             for k in 0..2 {
                 if rp[k] > 0.0 && r[k] <= 0.0 {
                     watch.brackets.push(Bracket { watched: k, t0: tp, y0: yp, t1: time });

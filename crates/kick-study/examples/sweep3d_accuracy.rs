@@ -13,10 +13,13 @@
 //!   up to 9 cm of layer), which the reference refuses. Before it did, it
 //!   answered three of them with 3.4-8.1 m/s where the accurate path gives
 //!   49-57 m/s (and the 1D booted kick 58 on row 342);
-//! - leg: 34 refused the same way; row 93 differs in slip time by 7.2e-3 of
-//!   the contact: the reference at rtol 1e-13 steps over a 79 µs grip (a
-//!   switch crossed and crossed back inside one step), which it finds at
-//!   1e-12 and 1e-14, and the accurate path at every rtol from 1e-11 to 1e-15.
+//! - leg: 34 refused the same way; every other row within 1e-9 (worst
+//!   2.3e-11 in slip time, 1e-10 in spin over 300 rows). Row 93 differed in
+//!   slip time by 7.2e-3 of the contact until the reference looked for a
+//!   margin that crosses zero and back inside one step: at rtol 1e-13 it
+//!   stepped over a 79 µs grip, which it found at 1e-12 and 1e-14, and the
+//!   accurate path at every rtol from 1e-11 to 1e-15 (kick-3d's test
+//!   `the_full_state_finds_a_grip_shorter_than_its_step`).
 use kick_study::level::sampled_3d::{find_range, SampledKicks};
 use kick_study::sample::Ranges;
 
