@@ -460,9 +460,9 @@ impl Relative {
                 let rate = -dot_normal::<FACE>(n, v_rel);
                 let sliding = tangential::<FACE>(n, v_rel);
                 if let Some(boot) = &self.boot {
-                    // The shell ball slipping: (E, D) and the gradient from one gas pressure.
+                    // The shell ball: (E, D) and, slipping, the gradient from one gas pressure.
                     let shell = match &self.law {
-                        AnyLaw::Shell(ball) if slipping => Some(ball.at(delta)),
+                        AnyLaw::Shell(ball) => Some(ball.at(delta)),
                         _ => None,
                     };
                     // The approach rate splits between the boot and the ball (kick-core's `boot`).
