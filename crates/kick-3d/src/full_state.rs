@@ -189,6 +189,10 @@ struct Watch {
     beyond: Option<(f64, f64)>,
     /// A failure while re-integrating a step to look for a dip of the margin.
     failure: Option<KickError>,
+    /// The phase's start when it starts on the grip/slip switch itself, its
+    /// margin at zero with zero slope (`tangential::GRIP_ENTRY`): its first
+    /// step's turn is that start, not a dip.
+    on_switch: Option<f64>,
     evaluations: u64,
 }
 
@@ -206,7 +210,7 @@ impl PhaseSystem<'_> {
     /// time, which brackets the crossing with t0.
     fn dip(&mut self, (t0, y0, margin0, rate0): (f64, &State, f64, f64), t1: f64, rate1: f64) -> Option<f64> {
         let sign = margin0.signum();
-        if margin0 == 0.0 || !(sign * rate0 < 0.0 && sign * rate1 >= 0.0) {
+        if margin0 == 0.0 || !(sign * rate0 < 0.0 && sign * rate1 >= 0.0) || self.watch.on_switch == Some(t0) {
             return None;
         }
         let (solver, dynamics, dt) = (self.solver, self.dynamics, self.watch.difference_step);
@@ -373,6 +377,7 @@ impl FullState3d {
         difference_step: f64,
         recorder: Option<&mut Vec<EnergySample>>,
         evaluations: &mut u64,
+        on_switch: bool,
     ) -> Result<Option<(Event, f64, State)>, KickError> {
         let dy = dynamics.derivative(&y);
         *evaluations += 1;
@@ -391,6 +396,7 @@ impl FullState3d {
             beyond: None,
             failure: None,
             evaluations: 0,
+            on_switch: on_switch.then_some(t),
         };
         let system = PhaseSystem { solver: *self, dynamics, watch: &mut watch, recorder };
         let mut stepper = self.integrator(system, t, t_end, y, t_end - t, 0.0);
@@ -541,8 +547,11 @@ impl FullState3d {
         if let Some(r) = recorder.as_deref_mut() {
             r.push(sample(&dynamics, 0.0, &y));
         }
+        // Whether the phase starts on the grip/slip switch (`Watch::on_switch`).
+        let mut on_switch = false;
         for _ in 0..MAX_PHASES {
-            let hit = self.phase(dynamics, t, y, horizon, &mut peaks, difference_step, recorder.as_deref_mut(), &mut evaluations)?;
+            let hit =
+                self.phase(dynamics, t, y, horizon, &mut peaks, difference_step, recorder.as_deref_mut(), &mut evaluations, on_switch)?;
             let Some((event, t_event, y_event)) = hit else {
                 return Err(KickError::NoSeparation {
                     time: horizon,
@@ -565,7 +574,9 @@ impl FullState3d {
             if let Some(r) = recorder.as_deref_mut() {
                 r.push(sample(&dynamics, t, &y));
             }
+            on_switch = false;
             if event == Event::GripSlip {
+                on_switch = true;
                 if dynamics.slipping {
                     // Grip starts with the spring on the cap, a hair inside it
                     // (`tangential::GRIP_ENTRY`): the grip's margin starts there
@@ -583,6 +594,7 @@ impl FullState3d {
                         y = dynamics.spring_on_cap(&y);
                     }
                     dynamics = dynamics.switched();
+                    on_switch = true;
                 }
             }
             match event {
