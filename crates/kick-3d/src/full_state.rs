@@ -226,6 +226,7 @@ impl PhaseSystem<'_> {
         let turn = roots::brent(
             |tau| {
                 let Some(state) = state_at(tau, &mut count) else { return f64::NAN };
+                // ẏ and the margin on both sides of the difference.
                 count += 3;
                 margin_rate(&dynamics, &state, &dynamics.derivative(&state), dt)
             },

@@ -218,12 +218,6 @@ impl ShellBall {
 
     /// (A, P − p_atm, k_s δ, dF_el/dδ) at δ > 0 (`elastic`'s and
     /// `elastic_and_unclamped`'s terms, the same operations), None at δ ≤ 0.
-    #[inline(always)]
-    fn pressure_terms(&self, compression: f64) -> Option<(f64, f64, f64, f64)> {
-        let (area, gauge, shell) = self.pressure(compression)?;
-        Some((area, gauge, shell, self.elastic_gradient(compression, area, gauge)))
-    }
-
     /// (A, P − p_atm, k_s δ) at δ > 0, None at δ ≤ 0.
     #[inline(always)]
     fn pressure(&self, compression: f64) -> Option<(f64, f64, f64)> {
@@ -254,7 +248,7 @@ impl ShellBall {
     }
 
     /// (F_elastic, dF_elastic/dδ) at δ ≥ 0 (the gradient's former path,
-    /// which the test of `slip_terms` holds `pressure_terms` to).
+    /// which the test of `slip_terms` holds `PressureAt` to).
     #[cfg(test)]
     fn elastic(&self, compression: f64) -> (f64, f64) {
         if !(compression > 0.0) {
@@ -291,23 +285,14 @@ impl ShellBall {
     /// (test `slip_terms_are_the_separate_calls_to_the_bit`).
     #[inline(always)]
     pub fn slip_terms(&self, compression: f64) -> (f64, f64, f64, f64) {
-        let d = compression.clamp(0.0, 2.0 * self.radius);
-        let slope = self.loss_slope(d);
-        // At δ ≤ 0 `elastic` gives the small-compression slope, `elastic_and_unclamped` zeros.
-        let (area, gauge, shell, gradient) =
-            self.pressure_terms(compression).unwrap_or((0.0, 0.0, 0.0, self.small_compression_stiffness()));
-        let elastic = area * gauge + shell;
-        let at = |rate: f64| {
-            let force = area * (gauge + self.shell_damping * rate) + shell;
-            let d_compression = gradient + self.shell_damping * 2.0 * PI * (self.radius - d) * rate;
-            if force < 0.0 || (force == 0.0 && d_compression <= 0.0) {
-                0.0
-            } else {
-                d_compression
-            }
+        let at = self.at(compression);
+        let gradient = at.elastic_gradient();
+        let d_compression = |rate: f64| match at.at_rate(gradient, rate) {
+            (_, _, true) => 0.0,
+            (_, d_compression, false) => d_compression,
         };
-        let d_elastic = at(0.0);
-        (elastic, slope, d_elastic, at(1.0) - d_elastic)
+        let d_elastic = d_compression(0.0);
+        (at.elastic(), at.slope(), d_elastic, d_compression(1.0) - d_elastic)
     }
 
     /// (F_el, F_el + β A δ̇, ∂F/∂δ, ∂F/∂δ̇) at (δ, δ̇): `unclamped_force`
@@ -318,18 +303,11 @@ impl ShellBall {
     /// `slip_terms_are_the_separate_calls_to_the_bit`).
     #[inline(always)]
     pub fn unclamped_and_gradient(&self, compression: f64, compression_rate: f64) -> (f64, f64, f64, f64) {
-        let (elastic, force, gradient) = match self.pressure_terms(compression) {
-            Some((area, gauge, shell, gradient)) => {
-                (area * gauge + shell, area * (gauge + self.shell_damping * compression_rate) + shell, gradient)
-            }
-            None => (0.0, 0.0, self.small_compression_stiffness()),
-        };
-        let d = compression.clamp(0.0, 2.0 * self.radius);
-        let d_compression = gradient + self.shell_damping * 2.0 * PI * (self.radius - d) * compression_rate;
-        if force < 0.0 || (force == 0.0 && d_compression <= 0.0) {
-            return (elastic, force, 0.0, 0.0);
+        let at = self.at(compression);
+        match at.at_rate(at.elastic_gradient(), compression_rate) {
+            (force, _, true) => (at.elastic(), force, 0.0, 0.0),
+            (force, d_compression, false) => (at.elastic(), force, d_compression, at.slope()),
         }
-        (elastic, force, d_compression, self.loss_slope(d))
     }
 
     /// Hunt–Crossley's χ of the small-compression limit, β/(p0 + k_s/(2πR)),
@@ -405,6 +383,38 @@ pub struct PressureAt<'a> {
 }
 
 impl PressureAt<'_> {
+    /// F_el (zero at δ ≤ 0).
+    #[inline(always)]
+    fn elastic(&self) -> f64 {
+        self.terms.map_or(0.0, |(area, gauge, shell)| area * gauge + shell)
+    }
+
+    /// β A(δ).
+    #[inline(always)]
+    fn slope(&self) -> f64 {
+        self.ball.loss_slope(self.compression.clamp(0.0, 2.0 * self.ball.radius))
+    }
+
+    /// dF_el/dδ; at δ ≤ 0 the small-compression slope, the one-sided limit while approaching.
+    #[inline(always)]
+    fn elastic_gradient(&self) -> f64 {
+        match self.terms {
+            Some((area, gauge, _)) => self.ball.elastic_gradient(self.compression, area, gauge),
+            None => self.ball.small_compression_stiffness(),
+        }
+    }
+
+    /// (F before the clamp, ∂F/∂δ, whether the clamp holds F at 0 nearby)
+    /// at the rate δ̇, from dF_el/dδ.
+    #[inline(always)]
+    fn at_rate(&self, gradient: f64, compression_rate: f64) -> (f64, f64, bool) {
+        let ball = self.ball;
+        let force = self.terms.map_or(0.0, |(area, gauge, shell)| area * (gauge + ball.shell_damping * compression_rate) + shell);
+        let d = self.compression.clamp(0.0, 2.0 * ball.radius);
+        let d_compression = gradient + ball.shell_damping * 2.0 * PI * (ball.radius - d) * compression_rate;
+        (force, d_compression, force < 0.0 || (force == 0.0 && d_compression <= 0.0))
+    }
+
     /// `ContactLaw::rate_affine`: (F_el, β A) as the branch force at
     /// δ̇ = 1 less the elastic part (its former path, to the bit).
     #[inline(always)]
@@ -417,24 +427,13 @@ impl PressureAt<'_> {
     }
 
     /// `ContactLaw::force_and_gradient` at the rate δ̇: (F, ∂F/∂δ, ∂F/∂δ̇),
-    /// zero where the clamp holds F at 0 (at δ ≤ 0, the one-sided slope while approaching).
+    /// zero where the clamp holds F at 0.
     #[inline(always)]
     pub fn force_and_gradient(&self, compression_rate: f64) -> (f64, f64, f64) {
-        let ball = self.ball;
-        // `elastic`'s gradient and the force as `contact_force` computes it, to the bit, from one gas pressure.
-        let (force, gradient) = match self.terms {
-            Some((area, gauge, shell)) => {
-                (area * (gauge + ball.shell_damping * compression_rate) + shell, ball.elastic_gradient(self.compression, area, gauge))
-            }
-            None => (0.0, ball.small_compression_stiffness()),
-        };
-        let d = self.compression.clamp(0.0, 2.0 * ball.radius);
-        let slope = ball.loss_slope(d);
-        let d_compression = gradient + ball.shell_damping * 2.0 * PI * (ball.radius - d) * compression_rate;
-        if force < 0.0 || (force == 0.0 && d_compression <= 0.0) {
-            return (0.0, 0.0, 0.0); // clamped: F ≡ 0 nearby
+        match self.at_rate(self.elastic_gradient(), compression_rate) {
+            (_, _, true) => (0.0, 0.0, 0.0),
+            (force, d_compression, false) => (force, d_compression, self.slope()),
         }
-        (force, d_compression, slope)
     }
 }
 
