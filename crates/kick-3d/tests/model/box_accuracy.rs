@@ -49,7 +49,7 @@ fn box_sample_matches_the_reference() {
         LawKind::Shell => 100,
         _ => 12,
     };
-    for (law, count) in LawKind::ALL.iter().map(|&law| (law, count_of(law))) {
+    for (law, count) in LawKind::SELECTABLE.iter().map(|&law| (law, count_of(law))) {
         let sample = OffCenterBox { seed: BENCH_SEED, law };
         let errors: Vec<Errors3d> = (0..count).map(|i| check(&format!("{} kick {i}", law.name()), &sample.kick(i).unwrap())).collect();
         worst(law.name(), &errors);
@@ -109,5 +109,18 @@ fn a_peak_in_the_step_that_lands_on_separation_is_found() {
 fn a_slip_that_ends_in_the_last_step_grips_before_separation() {
     let kick = OffCenterBox { seed: BENCH_SEED, law: LawKind::HuntCrossleyExact }.kick(82).unwrap();
     let errors = check("hunt-crossley-exact kick 82", &kick);
+    assert!(errors.slip_time <= 1e-9, "{errors:?}");
+}
+
+/// Box kick 82 of the paper's law slips from 0.34 ms, grips 13.6 ns before
+/// separation and slips again for the last 2.5 ns. At the default tolerance
+/// the step that lands on separation holds all of it, with the slip's margin
+/// falling at both ends (at separation its rate is −2.3e11: the direction
+/// state has no length there), so no dip was looked for and the grip was
+/// counted as slip: slip time off by 2.1e-6 of the contact.
+#[test]
+fn a_grip_hidden_in_the_landing_step_is_found() {
+    let kick = OffCenterBox { seed: BENCH_SEED, law: LawKind::PowerLaw }.kick(82).unwrap();
+    let errors = check("power-law kick 82", &kick);
     assert!(errors.slip_time <= 1e-9, "{errors:?}");
 }
