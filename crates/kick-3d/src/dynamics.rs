@@ -250,15 +250,22 @@ impl Dynamics {
             return self;
         }
         let c = Dynamics { slipping: true, ..self }.contact(y);
-        let cap_rate = self.friction * c.normal_force_rate;
         // Onset is t = 0, δ = 0 by construction: the cap there is the law's
         // F(0, δ̇), not the force of the geometry's rounding (1.2e-17 N on
         // box kick 31 of Hunt and Crossley's law, which started the element
         // in grip where F grows as t^1.35 and it slips for 0.39 ns).
+        let approach = c.compression_rate + c.boot_rate;
         let onset_force = match &self.boot {
             None => self.law.contact_force(0.0, c.compression_rate),
-            Some(boot) => boot.split(&self.law, 0.0, c.compression_rate + c.boot_rate, 0.0, true, false).force.max(0.0),
+            Some(boot) => boot.split(&self.law, 0.0, approach, 0.0, true, false).force.max(0.0),
         };
+        // Its rate likewise: the law's slope at δ = 0 along the approach. Where
+        // F(0) = 0, the only case the rate decides, the law's D(0) = 0 (F = E + D δ̇),
+        // so δ̈ does not enter and a boot's layer has not started to move:
+        // Ḟ = F_δ δ̇. The geometry's rounding put δ a hair below zero on row
+        // 2894 of the flown sweep (the shell ball), where the clamped law gave
+        // Ḟ = 0 and the element slipped from touch instead of gripping for 45 µs.
+        let cap_rate = self.friction * self.law.force_gradient(0.0, approach).0 * approach;
         let slips = crate::tangential::slips_at_touch(self.tangential_stiffness, c.sliding_velocity, self.friction * onset_force, cap_rate);
         Dynamics { slipping: slips, ..self }
     }

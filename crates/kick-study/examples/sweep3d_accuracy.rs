@@ -20,6 +20,19 @@
 //!   stepped over a 79 µs grip, which it found at 1e-12 and 1e-14, and the
 //!   accurate path at every rtol from 1e-11 to 1e-15 (kick-3d's test
 //!   `the_full_state_finds_a_grip_shorter_than_its_step`).
+//!
+//! With 5000 rows each, 2 flown, 6 leg and 8 boot rows were off by 1.9e-4 to
+//! 5.6e-3 in slip time (up to 1.1e-6 in spin), every one a grip from first
+//! touch that the reference missed: it read the cap's rate at touch from an
+//! overlap a hair below zero (rate 0: slip from touch; flown row 2894), or the
+//! margin's sign from parry's rounding within 1e-16 s of touch (leg row
+//! 1127). The accurate path gave the same answer at every rtol from 1e-11 to
+//! 1e-15. After the reference's two fixes (kick-3d's tests
+//! `the_full_state_takes_the_caps_rate_at_touch_from_the_law` and
+//! `the_full_state_keeps_a_grip_that_starts_below_its_rounding`): flown 4998
+//! rows and leg 4641 within 1e-9; boot 4410, one (row 723) off by 2.1e-9 in
+//! spin, a spin of 0.62 rad/s (1/300 of V/R) that the accurate path itself
+//! moves by 2e-9 between rtol 1e-13 and 1e-15.
 use kick_study::level::sampled_3d::{find_range, SampledKicks};
 use kick_study::sample::Ranges;
 
