@@ -1,9 +1,11 @@
 //! The accurate path against the full-state reference
 //! (`kick_3d::precision::reference`) on the rows `kick sweep3d` draws, not
 //! the box of the accuracy tests: `cargo run --release -p kick-study
-//! --example sweep3d_accuracy -- [flown|leg|boot] [ROWS]` (seed 1, the
-//! shell ball; `flown` is the flown sweep's box, `leg` adds `--leg`, `boot`
-//! the identified boot on Table 1's foot). Prints each row off by more than
+//! --example sweep3d_accuracy -- [flown|leg|patch|boot] [ROWS]` (seed 1, the
+//! shell ball; `flown` is the flown sweep's box, `leg` adds `--leg`, `patch`
+//! that on the convex instep's patch (`--patch-contact --instep-radius 0.15
+//! --face-yaw 0`, the bench's realistic foot), `boot` the identified boot on
+//! Table 1's foot). Prints each row off by more than
 //! 1e-9 and the worst error of each observable.
 //!
 //! What it found (400 rows each, after the fixes it led to):
@@ -50,12 +52,20 @@ fn main() {
             fixed.scenario.leg = Some(true);
             Ranges::default()
         }
+        "patch" => {
+            // The bench's realistic foot: the patch on the convex instep, the leg and its boot.
+            fixed.scenario.leg = Some(true);
+            fixed.kick3d.patch_contact = Some(true);
+            fixed.kick3d.instep_radius = Some(kick_3d::validation::ASSUMED_INSTEP_RADIUS);
+            fixed.kick3d.face_yaw_deg = Some(0.0);
+            Ranges::default()
+        }
         "boot" => {
             fixed.scenario.boot_stiffness = Some(kick_core::boot::IDENTIFIED_STIFFNESS);
             fixed.scenario.boot_damping = Some(kick_core::boot::IDENTIFIED_DAMPING);
             Ranges::default()
         }
-        other => panic!("unknown mode {other}: flown, leg or boot"),
+        other => panic!("unknown mode {other}: flown, leg, patch or boot"),
     };
     let kicks = SampledKicks { seed: 1, fixed, ranges };
     let (mut worst, mut off, mut refused, mut compared) = ([0.0f64; 9], 0, 0, 0);

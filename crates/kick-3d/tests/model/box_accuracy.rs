@@ -124,3 +124,15 @@ fn a_grip_hidden_in_the_landing_step_is_found() {
     let errors = check("power-law kick 82", &kick);
     assert!(errors.slip_time <= 1e-9, "{errors:?}");
 }
+
+/// Box kick 1294 of Hunt and Crossley's law grips for 33 ns from 41 ns before
+/// separation, at δ = 0.41 µm: the reference's grip margin, μ F_n less the
+/// spring put a hair (`GRIP_ENTRY`) inside the cap, was below parry's
+/// rounding of the overlap there and read negative at once, so its grip
+/// ended where it began (slip time off by 5.5e-6 of the contact).
+#[test]
+fn a_grip_entered_at_a_tiny_compression_holds_in_the_reference() {
+    let kick = OffCenterBox { seed: BENCH_SEED, law: LawKind::HuntCrossley }.kick(1294).unwrap();
+    let errors = check("hunt-crossley kick 1294", &kick);
+    assert!(errors.slip_time <= 1e-9, "{errors:?}");
+}
