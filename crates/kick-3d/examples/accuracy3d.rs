@@ -37,7 +37,13 @@ fn main() {
     for i in 0..n {
         let kick = sample.kick(i).expect("box kicks are valid");
         let solved = solver.solve(&kick).expect("solves");
-        let reference = precision::reference().solve(&kick).unwrap_or_else(|e| panic!("kick {i}: reference: {e}"));
+        let reference = match precision::reference().solve(&kick) {
+            Ok(r) => r,
+            Err(e) => {
+                println!("kick {i}: the reference fails: {e}");
+                continue;
+            }
+        };
         let e = Errors3d::of(&kick, &solved, &reference);
         if e.max() > 1e-9 {
             println!(

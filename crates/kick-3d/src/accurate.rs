@@ -315,6 +315,10 @@ fn rate_root_tolerance(x0: f64, x1: f64, dx: f64) -> f64 {
     (4.0 * f64::EPSILON * x1.abs().max(dx)).max(RATE_ROOT_SHARE * (x1 - x0))
 }
 
+/// Share of the step at which a switch's bracket starts when the phase
+/// starts on that switch (`locate_switch`).
+const START_SHARE: f64 = 1e-6;
+
 /// The root of `g` (sign `sign` at x0) in (x0, x1] on the dense output,
 /// taken on the far side of the crossing so the next phase starts past it;
 /// x0 itself when g is already past there (two switches at one instant).
@@ -325,10 +329,22 @@ fn locate_switch(g: impl Fn(f64) -> f64, sign: f64, x0: f64, x1: f64) -> f64 {
     if start < 0.0 {
         return x0;
     }
-    // A phase starts on its switch (g = 0 there): on its own side.
-    let at_start = if start == 0.0 { f64::MIN_POSITIVE } else { start };
     let on_side = |x: f64| sign * g(x);
-    match roots::brent_from(on_side, (x0, at_start), (x1, on_side(x1)), 4.0 * f64::EPSILON * x1.abs(), 200) {
+    // A phase starts on its switch (g = 0 there): on its own side. Its
+    // bracket then starts where g has left zero, START_SHARE into the step,
+    // so that Brent's first secant is not drawn from a made-up value at x0:
+    // from (x0, MIN_POSITIVE) it fell within 1e-300 of x0 and stopped there
+    // (the cap patch kick with the leg, sweep row 153, ended a 17 µs grip from
+    // touch at touch: slip time off by 1.4e-3 of the contact).
+    let (xa, fa) = match start {
+        0.0 => {
+            let xs = x0 + START_SHARE * (x1 - x0);
+            let fs = on_side(xs);
+            if fs > 0.0 { (xs, fs) } else { (x0, f64::MIN_POSITIVE) }
+        }
+        _ => (x0, start),
+    };
+    match roots::brent_from(on_side, (xa, fa), (x1, on_side(x1)), 4.0 * f64::EPSILON * x1.abs(), 200) {
         Some(root) if root.value <= 0.0 || (root.x == x0 && start == 0.0) => root.x,
         Some(root) => root.other,
         None => x1,

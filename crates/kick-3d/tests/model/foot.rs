@@ -393,3 +393,48 @@ fn the_full_state_keeps_a_grip_that_starts_below_its_rounding() {
     let e = Errors3d::of(&kick, &accurate, &reference);
     assert!(e.max() <= 1e-9, "{e:?}");
 }
+
+/// A grip from first touch on the convex instep's patch, with the leg and its
+/// boot (`kick sweep3d --law shell --leg --patch-contact --instep-radius 0.15
+/// --face-yaw 0`, seed 1, row 153): the margin starts at zero and stays
+/// positive for 17 µs. The accurate path's first step took all of that in,
+/// and the switch's root was sought from a made-up value at touch
+/// (`locate_switch`), where Brent's first secant fell within 1e-300 of touch:
+/// the grip ended at touch at every rtol from 1e-11 to 1e-14 (slip time off
+/// by 1.4e-3 of the contact, spin by 4.4e-7), but not at 1e-15, whose first
+/// step was shorter than the grip.
+#[test]
+fn a_grip_from_touch_on_the_patch_ends_where_its_margin_does() {
+    let spec = KickSpec {
+        scenario: ScenarioSpec {
+            foot_mass: Some(7.278410412328385),
+            ball_mass: Some(0.42132572341628527),
+            foot_speed: Some(30.68724635614008),
+            ball_speed: Some(-1.056282389287194),
+            drive_force: Some(992.6833115121005),
+            law: Some(kick_core::LawKind::Shell),
+            inflation_pressure: Some(78522.69525443029),
+            leg: Some(true),
+            ..Default::default()
+        },
+        kick3d: Kick3dSpec {
+            offset: Some(0.07858644179025004),
+            approach_angle_deg: Some(-8.599579527996314),
+            friction: Some(0.2856904698925872),
+            tangential_stiffness: Some(111734.44080803785),
+            face_yaw_deg: Some(0.0),
+            instep_radius: Some(0.15),
+            patch_contact: Some(true),
+            ..Default::default()
+        },
+    };
+    let kick = spec.build_drawn().unwrap();
+    let tight = Accurate3d::new(1e-15).unwrap().solve(&kick).unwrap();
+    for rtol in [1e-12, kick_3d::accurate::DEFAULT_TOLERANCE] {
+        let solved = Accurate3d::new(rtol).unwrap().solve(&kick).unwrap();
+        let e = Errors3d::of(&kick, &solved, &tight);
+        assert!(e.max() <= 1e-9, "rtol {rtol:e}: {e:?}");
+    }
+    // The grip from touch is there: 17 µs of the contact do not slip.
+    assert!(tight.contact_time - tight.slip_time > 1.5e-5, "{tight:?}");
+}
