@@ -16,7 +16,10 @@
 //! `a_grip_hidden_in_the_landing_step_is_found`), Hunt and Crossley's kick
 //! 1294 (the reference ended a grip where it began, at δ = 0.41 µm:
 //! `a_grip_entered_at_a_tiny_compression_holds_in_the_reference`), and on
-//! sweep3d's rows the reference's first touch (foot.rs).
+//! sweep3d's rows the reference's first touch (foot.rs); and the reference
+//! no longer fails to locate a separation that its step's re-integration
+//! misses by the overlap's rounding (Lankarani and Nikravesh's kick 2605,
+//! Flores's kick 925: `a_separation_at_a_steps_end_is_located_by_the_reference`).
 use kick_3d::models::{OffCenterBox, BENCH_SEED};
 use kick_3d::precision::{self, Errors3d};
 use kick_3d::Accurate3d;

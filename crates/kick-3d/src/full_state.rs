@@ -95,7 +95,9 @@ enum Event {
 /// `--leg` sweep ended its grip at 6.5e-17 s, where the accurate path
 /// (whose overlap is exactly zero at touch) grips for 0.58 µs as the
 /// law's slope at touch says (`Dynamics::at_touch`). A switch found in that
-/// stretch is put at its end: at most ~1e-12 s.
+/// stretch is put at its end: at most ~1e-12 s. The same share of L bounds
+/// the overlap taken as zero where a separation crossed at a step's end and
+/// its re-integration stops short of it (`FullState3d::locate`).
 const ONSET_RESOLUTION: f64 = 1e5;
 
 const EVENTS: [Event; 4] = [Event::Separation, Event::CompressionRate, Event::GripSlip, Event::Clamp];
@@ -544,7 +546,17 @@ impl FullState3d {
         if let Some(e) = failure {
             return Err(e);
         }
-        let root = root.ok_or(KickError::Integration { time: t0, reason: format!("could not locate {event:?}") })?;
+        let Some(root) = root else {
+            // The stepper's state crossed at t1 but its re-integration stops
+            // short by the overlap's rounding (Flores box kick 925: δ =
+            // 1.4e-17 m at the end of a 2e-14 s step): separation is at t1.
+            let state = self.advance(dynamics, t0, y0, t1, evaluations)?;
+            let reach = dynamics::vec3(&state, dynamics::BALL_POSITION).length().max(dynamics::vec3(&state, dynamics::FOOT_POSITION).length());
+            if event == Event::Separation && event.value(&dynamics, &state).abs() <= ONSET_RESOLUTION * f64::EPSILON * reach {
+                return Ok((t1, state));
+            }
+            return Err(KickError::Integration { time: t0, reason: format!("could not locate {event:?}") });
+        };
         let mut time = root.x;
         let mut state = self.advance(dynamics, t0, y0, time, evaluations)?;
         if !event.crossed(before, event.value(&dynamics, &state)) && root.other != root.x {

@@ -136,3 +136,12 @@ fn a_grip_entered_at_a_tiny_compression_holds_in_the_reference() {
     let errors = check("hunt-crossley kick 1294", &kick);
     assert!(errors.slip_time <= 1e-9, "{errors:?}");
 }
+
+/// Box kick 925 of Flores's law: the reference's step crossed separation at
+/// its end, and the step's re-integration stopped 1.4e-17 m short of it, the
+/// overlap's rounding: "could not locate Separation", no reference at all.
+#[test]
+fn a_separation_at_a_steps_end_is_located_by_the_reference() {
+    let kick = OffCenterBox { seed: BENCH_SEED, law: LawKind::Flores }.kick(925).unwrap();
+    check("flores kick 925", &kick);
+}
