@@ -353,6 +353,28 @@ impl Measurement {
     }
 }
 
+/// The smallest file of the measurements' form: one source, one
+/// measurement. The tests of this module and of kick-store's reader start
+/// from it.
+#[doc(hidden)]
+pub const MINIMAL_FILE: &str = r#"
+[[source]]
+key = "a"
+authors = "A, B."
+year = 2000
+title = "T"
+container = "J"
+[[measurement]]
+key = "t"
+quantity = "contact time"
+range = [9.0, 14.0]
+unit = "ms"
+conditions = "instep"
+source = "a"
+location = "abstract"
+checked = "secondary: B (2001), p. 2"
+"#;
+
 /// The parsed, checked data file.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Measurements {
@@ -668,23 +690,7 @@ mod tests {
         Measurements::check(file, t.source, t.measurement)
     }
 
-    const MINIMAL: &str = r#"
-[[source]]
-key = "a"
-authors = "A, B."
-year = 2000
-title = "T"
-container = "J"
-[[measurement]]
-key = "t"
-quantity = "contact time"
-range = [9.0, 14.0]
-unit = "ms"
-conditions = "instep"
-source = "a"
-location = "abstract"
-checked = "secondary: B (2001), p. 2"
-"#;
+    const MINIMAL: &str = MINIMAL_FILE;
 
     #[test]
     fn units_convert_to_si() {

@@ -50,23 +50,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Measurements, MeasurementFileErr
 mod tests {
     use super::*;
 
-    const MINIMAL: &str = r#"
-[[source]]
-key = "a"
-authors = "A, B."
-year = 2000
-title = "T"
-container = "J"
-[[measurement]]
-key = "t"
-quantity = "contact time"
-range = [9.0, 14.0]
-unit = "ms"
-conditions = "instep"
-source = "a"
-location = "abstract"
-checked = "abstract"
-"#;
+    const MINIMAL: &str = kick_core::measurements::MINIMAL_FILE;
 
     #[test]
     fn errors_name_the_file_and_the_key() {
