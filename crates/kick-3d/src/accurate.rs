@@ -340,7 +340,11 @@ fn locate_switch(g: impl Fn(f64) -> f64, sign: f64, x0: f64, x1: f64) -> f64 {
         0.0 => {
             let xs = x0 + START_SHARE * (x1 - x0);
             let fs = on_side(xs);
-            if fs > 0.0 { (xs, fs) } else { (x0, f64::MIN_POSITIVE) }
+            if fs > 0.0 {
+                (xs, fs)
+            } else {
+                (x0, f64::MIN_POSITIVE)
+            }
         }
         _ => (x0, start),
     };

@@ -551,7 +551,8 @@ impl FullState3d {
             // short by the overlap's rounding (Flores box kick 925: δ =
             // 1.4e-17 m at the end of a 2e-14 s step): separation is at t1.
             let state = self.advance(dynamics, t0, y0, t1, evaluations)?;
-            let reach = dynamics::vec3(&state, dynamics::BALL_POSITION).length().max(dynamics::vec3(&state, dynamics::FOOT_POSITION).length());
+            let reach =
+                dynamics::vec3(&state, dynamics::BALL_POSITION).length().max(dynamics::vec3(&state, dynamics::FOOT_POSITION).length());
             if event == Event::Separation && event.value(&dynamics, &state).abs() <= ONSET_RESOLUTION * f64::EPSILON * reach {
                 return Ok((t1, state));
             }

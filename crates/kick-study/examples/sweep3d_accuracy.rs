@@ -80,7 +80,11 @@ fn main() {
         let Ok(kick) = kicks.spec(i).build_drawn() else { continue };
         let Ok(solved) = kick_3d::Accurate3d::default().solve(&kick) else { continue };
         // The full state has no patch: the patch is held to the accurate path at rtol 1e-15 (not independent).
-        let reference = if mode == "patch" { kick_3d::Accurate3d::new(1e-15).unwrap().solve(&kick) } else { kick_3d::precision::reference().solve(&kick) };
+        let reference = if mode == "patch" {
+            kick_3d::Accurate3d::new(1e-15).unwrap().solve(&kick)
+        } else {
+            kick_3d::precision::reference().solve(&kick)
+        };
         let Ok(reference) = reference else {
             refused += 1;
             continue;
