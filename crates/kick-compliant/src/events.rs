@@ -823,19 +823,7 @@ impl<S: ContactSystem<N>, const N: usize> Engine<S, N> {
         if least > resolved {
             return Ok(());
         }
-        Err(KickError::Integration {
-            time: t,
-            reason: format!(
-                "the foot caught the ball up again at a least compression of {} m, within the integration's error \
-                 ({} x the tolerance {} of the largest compression {} m) of separation: whether the ball left the foot \
-                 cannot be told (a drive whose work dwarfs the approach's kinetic energy); the `series` solver takes \
-                 the separation from the energy balance instead",
-                kick_core::short(least),
-                CATCH_UP_MARGIN,
-                kick_core::short(tolerance),
-                kick_core::short(most)
-            ),
-        })
+        Err(KickError::CaughtUp { time: t, least, resolved })
     }
 
     fn rescale(&mut self, scales: Scales) {

@@ -79,6 +79,18 @@ pub enum KickError {
     DoesNotApply { given: &'static str, to: String, reason: &'static str },
     #[error("integration failed at t = {} s: {reason}", short(*.time))]
     Integration { time: f64, reason: String },
+    /// A driven foot caught the ball up again at a least compression within
+    /// the integration's own error of separation (`resolved`: that error
+    /// bound), so whether the ball left cannot be told: a numerical failure.
+    #[error(
+        "integration failed at t = {} s: the foot caught the ball up again at a least compression of {} m, within the \
+         integration's error ({} m) of separation: whether the ball left the foot cannot be told (a drive whose work \
+         dwarfs the approach's kinetic energy); the `series` solver takes the separation from the energy balance instead",
+        short(*.time),
+        short(*.least),
+        short(*.resolved)
+    )]
+    CaughtUp { time: f64, least: f64, resolved: f64 },
     #[error("non-finite {quantity} at t = {} s", short(*.time))]
     NonFinite { quantity: &'static str, time: f64 },
     /// A fixed step that would need more steps than the budget to cover the
@@ -175,6 +187,7 @@ impl KickError {
             | KickError::StepTooLarge { .. }
             | KickError::StepTooInaccurate { .. }
             | KickError::Integration { .. }
+            | KickError::CaughtUp { .. }
             | KickError::NonFinite { .. } => Status::NumericalFailure,
             KickError::InvalidParameter { .. }
             | KickError::NoContact { .. }
