@@ -440,3 +440,38 @@ fn shell_kicks_meet_the_tolerance_as_it_tightens() {
     }
     println!("worst {worst:.2e}");
 }
+
+/// A driven foot riding a soft ball under the paper's law (`kick sweep3d`,
+/// seed 1, row 726: 0.14 s of contact, δ̇ turning 29 times): at rtol 1e-13 one
+/// step held a whole 0.12 ms restitution, δ̇ negative only inside it, and the
+/// paper's damping, which acts in compression alone (Eq. 20), was kept
+/// through it: contact time off by 3.7e-8, spin by 1.4e-6. A step whose ends
+/// are both compressing now looks for δ̇'s dip, as it does for the margins.
+#[test]
+fn a_restitution_inside_one_step_is_found() {
+    let spec = kick_3d::KickSpec {
+        scenario: kick_core::ScenarioSpec {
+            foot_mass: Some(1.6588772261532165),
+            ball_mass: Some(0.4389879156431052),
+            foot_speed: Some(16.600980468328927),
+            ball_speed: Some(3.0839338364827604),
+            stiffness: Some(12896.799665698869),
+            damping: Some(440.4690311341549),
+            exponent: Some(1.8397212421903464),
+            drive_force: Some(65.63092114221635),
+            ..Default::default()
+        },
+        kick3d: kick_3d::Kick3dSpec {
+            offset: Some(0.011298327499947965),
+            approach_angle_deg: Some(26.68144630970965),
+            friction: Some(f64::INFINITY),
+            tangential_stiffness: Some(290128.05408237316),
+            ..Default::default()
+        },
+    };
+    let kick = spec.build_drawn().unwrap();
+    let solved = kick_3d::Accurate3d::default().solve(&kick).unwrap();
+    let reference = kick_3d::precision::reference().solve(&kick).unwrap();
+    let e = kick_3d::precision::Errors3d::of(&kick, &solved, &reference);
+    assert!(e.max() <= 1e-9, "{e:?}");
+}
