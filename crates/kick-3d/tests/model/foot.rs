@@ -221,26 +221,17 @@ fn settings_the_foot_does_not_take_are_refused() {
 /// takes the drawn foot mass beside the leg.)
 #[test]
 fn a_stalled_kick_fails_at_once() {
-    let spec = KickSpec {
-        scenario: ScenarioSpec {
-            foot_mass: Some(3.940127199239893),
-            ball_mass: Some(0.44367942932528065),
-            foot_speed: Some(34.7412326286056),
-            ball_speed: Some(-9.253187736840848),
-            drive_force: Some(0.0),
-            law: Some(kick_core::LawKind::Shell),
-            inflation_pressure: Some(66995.13568577074),
-            leg: Some(true),
-            ..Default::default()
-        },
-        kick3d: Kick3dSpec {
+    let spec = shell_row(
+        [3.940127199239893, 0.44367942932528065, 34.7412326286056, -9.253187736840848, 0.0, 66995.13568577074],
+        true,
+        Kick3dSpec {
             offset: Some(0.06716504890929391),
             approach_angle_deg: Some(27.174114265518483),
             friction: Some(0.24330882169897938),
             tangential_stiffness: Some(73728.52915510784),
             ..Default::default()
         },
-    };
+    );
     let kick = spec.build_drawn().unwrap();
     let error = match Accurate3d::default().solve(&kick) {
         Ok(_) => panic!("the stalled kick separated"),
@@ -283,6 +274,34 @@ fn a_centre_inside_the_foot_s_box_is_refused_by_the_full_state() {
     }
 }
 
+/// A row `kick sweep3d --law shell` draws (seed 1): foot mass, ball mass,
+/// foot speed, ball speed, drive force and inflation pressure, with or
+/// without the leg, and the 3D draws.
+fn shell_row(draws: [f64; 6], leg: bool, kick3d: Kick3dSpec) -> KickSpec {
+    let [foot_mass, ball_mass, foot_speed, ball_speed, drive_force, inflation_pressure] = draws.map(Some);
+    let scenario = ScenarioSpec {
+        foot_mass,
+        ball_mass,
+        foot_speed,
+        ball_speed,
+        drive_force,
+        law: Some(kick_core::LawKind::Shell),
+        inflation_pressure,
+        leg: leg.then_some(true),
+        ..Default::default()
+    };
+    KickSpec { scenario, kick3d }
+}
+
+/// The accurate path at its default within 1e-9 of the full-state reference.
+fn assert_within_the_reference(spec: &KickSpec) {
+    let kick = spec.build_drawn().unwrap();
+    let accurate = Accurate3d::default().solve(&kick).unwrap();
+    let reference = precision::reference().solve(&kick).unwrap();
+    let e = Errors3d::of(&kick, &accurate, &reference);
+    assert!(e.max() <= 1e-9, "{e:?}");
+}
+
 /// A grip shorter than the reference's step (`kick sweep3d --law shell
 /// --leg`, seed 1, row 93: 79 µs of grip between two slips near
 /// separation). The full state at rtol 1e-13 used to step over it, its
@@ -291,26 +310,17 @@ fn a_centre_inside_the_foot_s_box_is_refused_by_the_full_state() {
 /// and agrees with the accurate path and with itself at rtol 1e-12 to 1e-9.
 #[test]
 fn the_full_state_finds_a_grip_shorter_than_its_step() {
-    let spec = KickSpec {
-        scenario: ScenarioSpec {
-            foot_mass: Some(4.426664136974946),
-            ball_mass: Some(0.44956149134867074),
-            foot_speed: Some(28.742696946636944),
-            ball_speed: Some(-3.955968970153232),
-            drive_force: Some(0.0),
-            law: Some(kick_core::LawKind::Shell),
-            inflation_pressure: Some(76093.14022054964),
-            leg: Some(true),
-            ..Default::default()
-        },
-        kick3d: Kick3dSpec {
+    let spec = shell_row(
+        [4.426664136974946, 0.44956149134867074, 28.742696946636944, -3.955968970153232, 0.0, 76093.14022054964],
+        true,
+        Kick3dSpec {
             offset: Some(0.07375028109685516),
             approach_angle_deg: Some(23.861170701460864),
             friction: Some(0.3161170607704938),
             tangential_stiffness: Some(84545.17240461207),
             ..Default::default()
         },
-    };
+    );
     let kick = spec.build_drawn().unwrap();
     let accurate = Accurate3d::default().solve(&kick).unwrap();
     let reference = precision::reference().solve(&kick).unwrap();
@@ -332,18 +342,10 @@ fn the_full_state_finds_a_grip_shorter_than_its_step() {
 /// The cap's rate at touch is now the law's slope at δ = 0.
 #[test]
 fn the_full_state_takes_the_caps_rate_at_touch_from_the_law() {
-    let spec = KickSpec {
-        scenario: ScenarioSpec {
-            foot_mass: Some(7.629952896889974),
-            ball_mass: Some(0.4330969276469102),
-            foot_speed: Some(29.09505491969855),
-            ball_speed: Some(-6.606901990390533),
-            drive_force: Some(0.0),
-            law: Some(kick_core::LawKind::Shell),
-            inflation_pressure: Some(81590.27210018948),
-            ..Default::default()
-        },
-        kick3d: Kick3dSpec {
+    let spec = shell_row(
+        [7.629952896889974, 0.4330969276469102, 29.09505491969855, -6.606901990390533, 0.0, 81590.27210018948],
+        false,
+        Kick3dSpec {
             offset: Some(0.05085765501595918),
             contact_depth: Some(0.04005163139732537),
             approach_angle_deg: Some(7.9648089663972454),
@@ -351,12 +353,8 @@ fn the_full_state_takes_the_caps_rate_at_touch_from_the_law() {
             tangential_stiffness: Some(127092.64122463706),
             ..Default::default()
         },
-    };
-    let kick = spec.build_drawn().unwrap();
-    let accurate = Accurate3d::default().solve(&kick).unwrap();
-    let reference = precision::reference().solve(&kick).unwrap();
-    let e = Errors3d::of(&kick, &accurate, &reference);
-    assert!(e.max() <= 1e-9, "{e:?}");
+    );
+    assert_within_the_reference(&spec);
 }
 
 /// A grip from first touch whose margin starts at zero, behind the leg and
@@ -367,31 +365,18 @@ fn the_full_state_takes_the_caps_rate_at_touch_from_the_law() {
 /// phase's switch is now looked for from where the overlap is resolved.
 #[test]
 fn the_full_state_keeps_a_grip_that_starts_below_its_rounding() {
-    let spec = KickSpec {
-        scenario: ScenarioSpec {
-            foot_mass: Some(1.7040947752204474),
-            ball_mass: Some(0.41967599126879485),
-            foot_speed: Some(32.0435170421502),
-            ball_speed: Some(-6.841329246189298),
-            drive_force: Some(0.0),
-            law: Some(kick_core::LawKind::Shell),
-            inflation_pressure: Some(81833.83767578992),
-            leg: Some(true),
-            ..Default::default()
-        },
-        kick3d: Kick3dSpec {
+    let spec = shell_row(
+        [1.7040947752204474, 0.41967599126879485, 32.0435170421502, -6.841329246189298, 0.0, 81833.83767578992],
+        true,
+        Kick3dSpec {
             offset: Some(0.05368973361318666),
             approach_angle_deg: Some(-5.821784656806727),
             friction: Some(2.0233849192563547),
             tangential_stiffness: Some(521765.4944771233),
             ..Default::default()
         },
-    };
-    let kick = spec.build_drawn().unwrap();
-    let accurate = Accurate3d::default().solve(&kick).unwrap();
-    let reference = precision::reference().solve(&kick).unwrap();
-    let e = Errors3d::of(&kick, &accurate, &reference);
-    assert!(e.max() <= 1e-9, "{e:?}");
+    );
+    assert_within_the_reference(&spec);
 }
 
 /// A grip from first touch on the convex instep's patch, with the leg and its
@@ -405,19 +390,10 @@ fn the_full_state_keeps_a_grip_that_starts_below_its_rounding() {
 /// step was shorter than the grip.
 #[test]
 fn a_grip_from_touch_on_the_patch_ends_where_its_margin_does() {
-    let spec = KickSpec {
-        scenario: ScenarioSpec {
-            foot_mass: Some(7.278410412328385),
-            ball_mass: Some(0.42132572341628527),
-            foot_speed: Some(30.68724635614008),
-            ball_speed: Some(-1.056282389287194),
-            drive_force: Some(992.6833115121005),
-            law: Some(kick_core::LawKind::Shell),
-            inflation_pressure: Some(78522.69525443029),
-            leg: Some(true),
-            ..Default::default()
-        },
-        kick3d: Kick3dSpec {
+    let spec = shell_row(
+        [7.278410412328385, 0.42132572341628527, 30.68724635614008, -1.056282389287194, 992.6833115121005, 78522.69525443029],
+        true,
+        Kick3dSpec {
             offset: Some(0.07858644179025004),
             approach_angle_deg: Some(-8.599579527996314),
             friction: Some(0.2856904698925872),
@@ -427,7 +403,7 @@ fn a_grip_from_touch_on_the_patch_ends_where_its_margin_does() {
             patch_contact: Some(true),
             ..Default::default()
         },
-    };
+    );
     let kick = spec.build_drawn().unwrap();
     let tight = Accurate3d::new(1e-15).unwrap().solve(&kick).unwrap();
     for rtol in [1e-12, kick_3d::accurate::DEFAULT_TOLERANCE] {
