@@ -34,9 +34,10 @@
 //! difference serves there unless a sign is in doubt (`rates_after_step`).
 //!
 //! Tolerance: relative [`DEFAULT_TOLERANCE`] (1e-13) on every component,
-//! absolute the same share of the component's unit (δ* for displacements and the spring, V_n for speeds,
-//! V_n/R and V_n/(R + h_x) for spins, μ V_n and μ V_n² for the running
-//! integrals: the 1D units of the normal scenario, `kick_compliant::events::Scales`).
+//! absolute the same share of the component's unit (δ* for displacements
+//! and the spring, V_n for speeds, V_n/R and V_n/(R + h_x) for spins, μ V_n
+//! and μ V_n² for the running integrals: the 1D units of the normal
+//! scenario, `kick_compliant::events::Scales`).
 //! In slip the spring's slots hold the slider's direction, which turns
 //! towards the sliding at |v_t|/|ξ| ([`crate::tangential`]): a contracting
 //! state, whose error is forgotten within τ = |ξ|/(ŝ · v_t) and acts on the
