@@ -231,6 +231,12 @@ pub struct Dynamics {
 /// the force it carries is itself that small (1.8e-4 N there).
 pub const ENTRY_RESOLUTION: f64 = 100.0;
 
+/// L, the bodies' distance from the origin at y: parry's overlap is resolved
+/// to ~ε L ([`ENTRY_RESOLUTION`], the full state's `ONSET_RESOLUTION`).
+pub fn position_scale(y: &State) -> f64 {
+    vec3(y, BALL_POSITION).length().max(vec3(y, FOOT_POSITION).length())
+}
+
 impl Dynamics {
     pub fn new(kick: &Kick3d) -> Dynamics {
         let [hx, hy, hz] = kick.foot_shape.core_half_extents();
@@ -290,8 +296,7 @@ impl Dynamics {
         let c = self.contact(y);
         let xi = vec3(y, SPRING);
         let xi_t = xi - c.normal * c.normal.dot(xi);
-        let reach = vec3(y, BALL_POSITION).length().max(vec3(y, FOOT_POSITION).length());
-        let share = crate::tangential::GRIP_ENTRY.max(ENTRY_RESOLUTION * f64::EPSILON * reach / c.compression.abs()).min(1e-3);
+        let share = crate::tangential::GRIP_ENTRY.max(ENTRY_RESOLUTION * f64::EPSILON * position_scale(y) / c.compression.abs()).min(1e-3);
         let size = self.friction * c.normal_force / self.tangential_stiffness * (1.0 - share);
         let mut out = *y;
         put3(&mut out, SPRING, xi_t.normalize_or_zero() * size);

@@ -511,10 +511,9 @@ impl FullState3d {
         // The first phase's grip/slip switch is looked for from where the
         // geometry resolves its sign (ONSET_RESOLUTION).
         let (t0, y0) = if event == Event::GripSlip && t0 == 0.0 {
-            let reach = dynamics::vec3(&y0, dynamics::BALL_POSITION).length().max(dynamics::vec3(&y0, dynamics::FOOT_POSITION).length());
             let c = dynamics.contact(&y0);
             let speed = (c.compression_rate + c.boot_rate).abs();
-            let resolved = (ONSET_RESOLUTION * f64::EPSILON * reach / speed).min(t1);
+            let resolved = (ONSET_RESOLUTION * f64::EPSILON * dynamics::position_scale(&y0) / speed).min(t1);
             let y = self.advance(dynamics, t0, y0, resolved, evaluations)?;
             let value = event.value(&dynamics, &y);
             let on_side = if dynamics.slipping { value < 0.0 } else { value > 0.0 };
@@ -551,9 +550,8 @@ impl FullState3d {
             // short by the overlap's rounding (Flores box kick 925: δ =
             // 1.4e-17 m at the end of a 2e-14 s step): separation is at t1.
             let state = self.advance(dynamics, t0, y0, t1, evaluations)?;
-            let reach =
-                dynamics::vec3(&state, dynamics::BALL_POSITION).length().max(dynamics::vec3(&state, dynamics::FOOT_POSITION).length());
-            if event == Event::Separation && event.value(&dynamics, &state).abs() <= ONSET_RESOLUTION * f64::EPSILON * reach {
+            let resolved = ONSET_RESOLUTION * f64::EPSILON * dynamics::position_scale(&state);
+            if event == Event::Separation && event.value(&dynamics, &state).abs() <= resolved {
                 return Ok((t1, state));
             }
             return Err(KickError::Integration { time: t0, reason: format!("could not locate {event:?}") });

@@ -32,7 +32,7 @@ use std::time::Instant;
 /// (nearly central kicks, or a spin that friction brings back to near zero)
 /// that is more than 1e-9 of it: 17 of those kicks, spins of 7e-7 to 2.5e-4
 /// V_n/R, off by 1.0e-9 to 2.0e-7 of themselves (`cargo run --release -p
-/// kick-3d --example accuracy3d`).
+/// kick-3d --example accuracy3d -- 3000 shell`).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct Errors3d {
     pub launch_velocity: f64,

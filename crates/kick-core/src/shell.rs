@@ -216,9 +216,8 @@ impl ShellBall {
         (area * gauge + shell, area * (gauge + self.shell_damping * compression_rate) + shell)
     }
 
-    /// (A, P − p_atm, k_s δ, dF_el/dδ) at δ > 0 (`elastic`'s and
+    /// (A, P − p_atm, k_s δ) at δ > 0 (`elastic`'s and
     /// `elastic_and_unclamped`'s terms, the same operations), None at δ ≤ 0.
-    /// (A, P − p_atm, k_s δ) at δ > 0, None at δ ≤ 0.
     #[inline(always)]
     fn pressure(&self, compression: f64) -> Option<(f64, f64, f64)> {
         if !(compression > 0.0) {
