@@ -190,7 +190,7 @@ pub fn markdown(v: &Validation, data: &str, file: &str, notes: &str) -> String {
          uncertainty; where a source states none, the row's note gives the rounding of its published digits, a lower \
          bound on u, the table gives model/measured instead of z, and the row is not counted. Every kick runs with one declared foot, **{}** \
          (`kick_paper::validation::VALIDATION_FOOT`), but for the 1D shell ball's rows run again on the realistic foot (`--leg`): \
-         **{}**, whose boot the limb's fastest kick set, so its two rows there are calibrations. A row whose verdict hinges on \
+         **{}**, whose boot the limb's fastest kick set, so its contact-time row there is a calibration. A row whose verdict hinges on \
          either foot is a *sensitivity* statement (neither was measured with the kicks compared) and says which foot mass or \
          speed would meet the measurement. A finite-element result is a *model \
          comparison*, not a measurement. Values in SI units; spins in rad/s.\n",
@@ -201,11 +201,17 @@ pub fn markdown(v: &Validation, data: &str, file: &str, notes: &str) -> String {
         Foot::Leg.name()
     );
     let _ = writeln!(w, "| rows | number |\n|---|---|");
+    // Every row once: the predictions split into counted and not counted, by reason.
     for (role, n) in &h.by_role {
-        let _ = writeln!(w, "| {} | {n} |", role.name());
-    }
-    for (why, n) in &h.not_counted {
-        let _ = writeln!(w, "| prediction not counted: {why} | {n} |");
+        if *role == Role::Prediction {
+            let not_counted: usize = h.not_counted.iter().map(|(_, k)| k).sum();
+            let _ = writeln!(w, "| prediction, counted | {} |", n - not_counted);
+            for (why, k) in &h.not_counted {
+                let _ = writeln!(w, "| prediction, not counted: {why} | {k} |");
+            }
+        } else {
+            let _ = writeln!(w, "| {} | {n} |", role.name());
+        }
     }
     let _ = writeln!(w);
     let mut first = 1;
@@ -300,8 +306,10 @@ pub fn markdown(v: &Validation, data: &str, file: &str, notes: &str) -> String {
         "One definition of the critical Reynolds number throughout: where 95 % of the drag crisis's drop is done \
          (`kick_flight::coefficients::DragCrisis::critical_reynolds`); for the default 14-panel ball in sea-level air it \
          is {} ({} m/s for R = 0.11 m). Eq. 3's centre, where C_D is halfway down, lies at {} and is not called \
-         critical. The sources' own definition was not read (crates/kick-flight/SOURCES.md). Each construction's \
-         factor on the crisis was set from its published critical Re: those rows are calibrations. The constants \
+         critical. The sources' own definition was not read (crates/kick-flight/SOURCES.md). Each other \
+         construction's factor on the crisis is its published critical Re over the 14-panel ball's: those rows set a \
+         ratio and are calibrations of it, while their values carry the 14-panel row's miss, a second measurement \
+         of the default ball's crisis against the Teamgeist's that set it. The constants \
          of Goff & Carré's Eq. 3 and Eq. 4 themselves were read only in code bases' transcriptions.\n",
         short(d.critical),
         three(d.critical_speed),
