@@ -12,6 +12,7 @@ use crate::links::relative;
 use crate::SweepData;
 pub use kick_study::ball::*;
 use kick_study::printable::{short, sig};
+use crate::units::three;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -119,6 +120,22 @@ fn mm(x: &[f64]) -> Vec<f64> {
     x.iter().map(|v| 1e3 * v).collect()
 }
 
+/// The shell law's stated validity, δ ≤ R/2 (`LawKind::validity`): a grey
+/// line across `ends` at R/2 in mm; curves above it are outside the law's region.
+fn validity_line(ends: &[f64; 2], radius: f64) -> Series {
+    let limit = 1e3 * 0.5 * radius;
+    Series::line(&format!("R/2 = {} mm: above, outside the law's validity", short(limit)), RGBColor(150, 150, 150), ends, &[limit, limit]).dashed()
+}
+
+/// A table cell of δ_max in mm, marked † past the law's validity (δ > R/2).
+fn compression_cell(delta: f64, radius: f64) -> String {
+    if delta > 0.5 * radius {
+        format!("{} †", sig(1e3 * delta))
+    } else {
+        sig(1e3 * delta).to_string()
+    }
+}
+
 /// Restitution, contact time and compression against impact speed at 0.8
 /// bar; the FIFA band (the calibration) and Dowell & Krebs's line beside them.
 fn draw_speeds(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, PaperError> {
@@ -163,6 +180,7 @@ fn draw_speeds(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, PaperEr
                 Series::line("shell ball: δ_max (= d by the sagitta)", color(0), b.speed, &mm(b.max_compression)),
                 Series::line("shell ball: d by D²/8R", color(1), b.speed, &small_cap).dashed(),
                 dowell,
+                validity_line(&[0.0, b.speed.iter().copied().fold(0.0, f64::max)], radius),
             ],
             SeriesLabelPosition::UpperLeft,
         ),
@@ -200,6 +218,7 @@ fn draw_pressures(data: &SweepData, figures: &Path) -> Result<Vec<PathBuf>, Pape
     let ends = [1e-3 * pressure.iter().copied().fold(f64::INFINITY, f64::min), 1e-3 * pressure.iter().copied().fold(0.0, f64::max)];
     let dk = DOWELL_KREBS_MM_PER_MPS * fifa_speed();
     d.push(Series::line("Dowell & Krebs at 6.26 m/s (abstract)", black, &ends, &[dk, dk]).dashed());
+    d.push(validity_line(&ends, kick_study::parameters::DEFAULT_BALL_RADIUS));
     let panel = |title: &str, y_label: &str, series: Vec<Series>, legend| Panel {
         title: title.into(),
         x_label: "inflation pressure (kPa, gauge)".into(),
@@ -328,15 +347,19 @@ fn page_text(
         w,
         "## Against pressure, over Law 2's range\n\n\
          ![The ball alone against pressure]({})\n\n\
-         Law 2 allows 0.6–1.1 atm gauge at sea level. The same 2 m drop rebounds {} at 0.6 atm, {} at 0.8 bar and {} at \
-         1.1 atm: restitution rises with pressure, the contact shortens and the ball flattens less (the patch's \
-         stiffness is 2πR p0). Rows of the file:\n\n\
+         Law 2 allows 0.6–1.1 atm gauge at sea level. The same 2 m drop rebounds {} at 0.6 atm, {} at the FIFA test's \
+         0.8 bar ({} atm, the calibration) and {} at 1.1 atm: restitution rises with pressure, the contact shortens \
+         and the ball flattens less (the patch's stiffness is 2πR p0). Rows of the file, on Law 2's grid in atm (its \
+         0.8 atm row is {} kPa, not the test's {} kPa):\n\n\
          | impact speed (m/s) | pressure (atm) | pressure (kPa) | e | contact time (ms) | peak force (N) | δ_max (mm) |\n\
          | --- | --- | --- | --- | --- | --- | --- |\n",
         links.pressure_figure,
         format!("{} m", sig(drops[0].1)),
         format!("{} m", sig(drops[1].1)),
+        three(atm(FIFA_PRESSURE)),
         format!("{} m", sig(drops[2].1)),
+        sig(0.8e-3 * SEA_LEVEL_PRESSURE),
+        sig(1e-3 * FIFA_PRESSURE),
     );
     for v in distinct(p.speed).into_iter().take(2) {
         for &i in at_speed(&p, v).iter().step_by(10) {
@@ -349,14 +372,31 @@ fn page_text(
                 sig(p.restitution[i]),
                 sig(1e3 * p.contact_time[i]),
                 sig(p.peak_force[i]),
-                sig(1e3 * p.max_compression[i])
+                compression_cell(p.max_compression[i], radius)
             );
         }
+    }
+
+    let past: Vec<f64> =
+        distinct(p.speed).into_iter().filter(|&v| at_speed(&p, v).iter().any(|&i| p.max_compression[i] > 0.5 * radius)).collect();
+    if !past.is_empty() {
+        let _ = writeln!(
+            w,
+            "\nThe file's (and the figure's) {} m/s curve{} compress{} the ball past R/2 = {} mm, outside the shell law's \
+             stated validity (status \"outside validity\" in the file): drawn for continuity, not as predictions.",
+            past.iter().map(|v| short(*v).to_string()).collect::<Vec<_>>().join(" and "),
+            if past.len() == 1 { "" } else { "s" },
+            if past.len() == 1 { "es" } else { "" },
+            short(1e3 * 0.5 * radius)
+        );
     }
 
     // Speed.
     let e_rows: Vec<usize> = [2.0, 6.0, 10.0, 19.0, 30.0].iter().map(|&v| nearest(s.speed, v)).collect();
     let (first, last) = (e_rows[0], e_rows[e_rows.len() - 1]);
+    // The contact time over the file's speeds: its longest and its range.
+    let longest = (0..s.speed.len()).max_by(|&a, &b| s.contact_time[a].total_cmp(&s.contact_time[b])).unwrap_or(first);
+    let (t_low, t_high) = s.contact_time.iter().fold((f64::INFINITY, 0.0f64), |(a, b), &t| (a.min(t), b.max(t)));
     let _ = write!(
         w,
         "\n## Against impact speed, at 0.8 bar\n\n\
@@ -365,8 +405,8 @@ fn page_text(
          dependence above). Measurements of restitution against speed to set beside it (Andersen et al. 2008, Mills \
          et al. 2022) were not read in a checkable copy, so only the FIFA band is drawn.\n\
          - The contact time barely moves with speed because the ball is nearly a linear spring: p·A(δ) ≈ 2πR p0 δ, \
-         so t_c ≈ π√(m/(2πR p0)) whatever the speed. The slight fall, {} ms to {} ms, is the gas's stiffening as the \
-         cap it loses grows.\n\
+         so t_c ≈ π√(m/(2πR p0)) whatever the speed. It moves by {} %: from {} ms at {} m/s up to {} ms at {} m/s, \
+         then down to {} ms at {} m/s, a fall that is the gas's stiffening as the cap it loses grows.\n\
          - Compression is nearly linear in speed (below).\n\n\
          | impact speed (m/s) | e | contact time (ms) | peak force (N) | δ_max (mm) | δ_max / V (mm per m/s) |\n\
          | --- | --- | --- | --- | --- | --- |\n",
@@ -375,8 +415,13 @@ fn page_text(
         sig(s.speed[first]),
         sig(s.restitution[last]),
         sig(s.speed[last]),
+        short(100.0 * (t_high / t_low - 1.0)),
         sig(1e3 * s.contact_time[first]),
+        sig(s.speed[first]),
+        sig(1e3 * s.contact_time[longest]),
+        sig(s.speed[longest]),
         sig(1e3 * s.contact_time[last]),
+        sig(s.speed[last]),
     );
     for &i in &e_rows {
         let _ = writeln!(
@@ -386,8 +431,18 @@ fn page_text(
             sig(s.restitution[i]),
             sig(1e3 * s.contact_time[i]),
             sig(s.peak_force[i]),
-            sig(1e3 * s.max_compression[i]),
+            compression_cell(s.max_compression[i], radius),
             sig(1e3 * s.max_compression[i] / s.speed[i])
+        );
+    }
+    let past: Vec<f64> = (0..s.speed.len()).filter(|&i| s.max_compression[i] > 0.5 * radius).map(|i| s.speed[i]).collect();
+    if let Some(&from) = past.iter().min_by(|a, b| a.total_cmp(b)) {
+        let _ = writeln!(
+            w,
+            "\n† δ_max > R/2 = {} mm: outside the shell law's stated validity (`kick_core::LawKind::validity`; status \
+             \"outside validity\" in the file), from {} m/s on in this file. Drawn for continuity, not as predictions.",
+            short(1e3 * 0.5 * radius),
+            sig(from)
         );
     }
 
@@ -398,13 +453,18 @@ fn page_text(
     let small_cap: Vec<f64> = p.max_compression.iter().map(|&d| small_cap_compression(d, radius)).collect();
     let dk_pressure = crossing(pressure, &fifa_rows, p.max_compression, target);
     let dk_small_pressure = crossing(pressure, &fifa_rows, &small_cap, target);
+    // Three digits: the abstract's line d = 2.80 v carries three.
     let describe = |x: Option<f64>| match x {
-        Some(x) => format!("{} atm", sig(atm(x))),
+        Some(x) => format!("{} atm", three(atm(x))),
         None => "no pressure within Law 2's range (lower: the model's d stays below theirs)".to_string(),
     };
     let (lo, hi) = (fifa_rows[0], fifa_rows[fifa_rows.len() - 1]);
     let mills_contact = MILLS_ERROR.1 / MILLS_ERROR.0;
     let mills_low = bounce(&[("speed", MILLS_LOW_SPEED), ("inflation_pressure", FIFA_PRESSURE)])?;
+    // The abstract's digits, 2.8 % and 0.3 ms, hold ±0.05 % and ±0.05 ms: the quotient's range.
+    let (mills_short, mills_long) = ((MILLS_ERROR.1 - 0.05e-3) / (MILLS_ERROR.0 + 0.0005), (MILLS_ERROR.1 + 0.05e-3) / (MILLS_ERROR.0 - 0.0005));
+    let model_range = (p.contact_time[hi].min(mills_low.contact_time), p.contact_time[lo].max(mills_low.contact_time));
+    let overlap = model_range.0 <= mills_long && mills_short <= model_range.1;
     let _ = write!(
         w,
         "\n## The ball's dynamic stiffness against plate tests\n\n\
@@ -420,11 +480,10 @@ fn page_text(
          no heights.\n\n\
          **Mills, Billingham & Goodwill (2026)** fired twelve FIFA-certified balls at a rigid plate at 5.93 and 19.2 m/s \
          and state a model error for contact time of \"2.8 % (corresponding to 0.3 ms)\": contact times near \
-         0.3/0.028 ≈ {} ms, an inference from the abstract, with no speed or pressure attached. The model gives {} ms \
-         at 5.93 m/s and 0.8 bar, and {} ms to {} ms over Law 2's range at {} m/s: a contact near {} ms would need a \
-         pressure below Law 2's range, or a ball softer than the pressure over the flat patch (a smaller patch, a \
-         shell that buckles inward). The full text (open access, SHURA eprint 37603) was not read here; its \
-         per-ball contact times and deformations are the first check to make.\n\n",
+         0.3/0.028 ≈ {} ms, an inference from the abstract, with no speed or pressure attached; its two rounded \
+         figures (0.25–0.35 ms, 2.75–2.85 %) allow {}–{} ms. The model gives {} ms at 5.93 m/s and 0.8 bar, and {} ms \
+         to {} ms over Law 2's range at {} m/s: {}. The full text (open access, SHURA eprint 37603) was not read \
+         here; its per-ball contact times and deformations are the first check to make.\n\n",
         sig(v0),
         sig(1e3 * target),
         sig(1e3 * p.max_compression[lo]),
@@ -432,11 +491,19 @@ fn page_text(
         describe(dk_pressure),
         describe(dk_small_pressure),
         sig(1e3 * mills_contact),
+        three(1e3 * mills_short),
+        three(1e3 * mills_long),
         sig(1e3 * mills_low.contact_time),
         sig(1e3 * p.contact_time[lo]),
         sig(1e3 * p.contact_time[hi]),
         sig(v0),
-        sig(1e3 * mills_contact),
+        if overlap {
+            "the ranges overlap, so the abstract's numbers neither confirm nor contradict the ball; only the inference's \
+             centre would need a pressure below Law 2's range, or a ball softer than the pressure over the flat patch"
+        } else {
+            "outside the abstract's range: a ball softer than the pressure over the flat patch (a smaller patch, a shell \
+             that buckles inward) would be needed"
+        },
     );
     let _ = write!(
         w,

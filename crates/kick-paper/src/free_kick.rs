@@ -288,8 +288,8 @@ pub fn setup_note() -> String {
          (α = 0). The foot's line of motion passes h = {} cm below the ball's centre and e = 0–{} cm beside it \
          (kick-3d's `contact_depth` and `offset`: the distances of the centre from the line, the one definition \
          of every front end, drawn on the first figure), so the ball rises with backspin and curves with sidespin, \
-         as a free kick over a wall does.          h is a choice: deep enough that the ball clears a wall, shallow enough that the spin stays mostly sidespin \
-         at the larger offsets. The flight: kick-flight's defaults (the drag crisis of a \
+         as a free kick over a wall does. h is a choice: it lifts the ball with backspin while the spin stays mostly \
+         sidespin at the larger offsets (whether a kick clears the wall: below). The flight: kick-flight's defaults (the drag crisis of a \
          14-panel ball joined to a spinning ball's drag, Goff & Carré 2010 Eq. 4; saturating lift in the spin \
          parameter; no spin decay; sea-level air), the kick's ball and g; the goal line at {} m (the \
          issue's free kick), the wall at {} m (Law 13), the goal {} m wide and {} m high (Law 1), drawn centred on the \

@@ -9,10 +9,15 @@ use crate::free_kick;
 use crate::h5::SweepData;
 use crate::links::relative;
 use crate::three_d::{curves, value_label};
-use crate::units::sig;
+use crate::units::{sig, sig_or_zero};
 use crate::units::{spin, three, RPM_PER_RAD_PER_S};
 use kick_study::numbers_3d;
 use kick_study::printable::short;
+
+/// Share of its scale (180° for an angle, the distance for a length) below
+/// which a sideways number of the table is zero to rounding: the central
+/// kick's are ~1e-17 of it, the first offset's ~1e-1.
+const SIDEWAYS_ZERO: f64 = 1e-12;
 use std::fmt::Write as _;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -564,40 +569,60 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> 
     let realistic: Vec<usize> =
         (0..data.rows()).filter(|&r| (v_lo..=v_hi).contains(&speed[r]) && (w_lo..=w_hi).contains(&(rev[r] * tau))).collect();
     let describe = |r: usize| format!("e = {} cm, μ = {}", sig(offsets[r] * 100.0, 2), value_label(frictions[r]));
-    let _ = writeln!(
-        w,
-        "Of the {} kicks of the grid, {} leave at {}–{} m/s with {}–{} rad/s ({}–{} rev/s), the free kick Asai, \
-         Akatsuka & Haake (1998, Physics World) describe (`free_kick_speed`, `free_kick_spin` in the validation \
-         chapter's measurement file: an illustration, not a measurement, read only as two later works quote it; the \
-         public copy's opening does not reach it): {}. C_D, C_L, Re and S are the flight's own launch report \
-         (`kick_flight::solve`, `launch`): the spinning ball's drag (Goff & Carré 2010, Eq. 4, joined to the drag \
-         crisis) is what these kicks fly with, well above the no-spin 0.155.\n",
-        data.rows(),
-        realistic.len(),
+    let published = format!(
+        "{}–{} m/s with {}–{} rad/s ({}–{} rev/s), the free kick Asai, Akatsuka & Haake (1998, Physics World) describe \
+         (`free_kick_speed`, `free_kick_spin` in the validation chapter's measurement file: an illustration, not a \
+         measurement, read only as two later works quote it; the public copy's opening does not reach it)",
         short(v_lo),
         short(v_hi),
         three(w_lo),
         three(w_hi),
         short(w_lo / tau),
-        short(w_hi / tau),
-        realistic
-            .iter()
-            .map(|&r| -> Result<String, PaperError> {
-                let a = numbers_3d::free_kick_launch(offsets[r], frictions[r], d)?;
-                Ok(format!(
-                    "{} ({} m/s, {}; at launch Re = {}, S = {}, C_D = {}, C_L = {})",
-                    describe(r),
-                    sig(speed[r], 3),
-                    spin(rev[r] * tau),
-                    sig(a.reynolds, 3),
-                    sig(a.spin_parameter, 3),
-                    sig(a.drag_coefficient, 3),
-                    sig(a.lift_coefficient, 3)
-                ))
-            })
-            .collect::<Result<Vec<_>, _>>()?
-            .join("; ")
+        short(w_hi / tau)
     );
+    if realistic.is_empty() {
+        // Say what the grid gives instead, so the reader sees why none matches.
+        let span = |v: &dyn Fn(usize) -> f64| (0..data.rows()).map(v).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+        let (s_lo, s_hi) = span(&|r| speed[r]);
+        let (w_min, w_max) = span(&|r| rev[r] * tau);
+        let _ = writeln!(
+            w,
+            "None of the {} kicks of the grid leaves at {published}: the grid's launches span {}–{} m/s and {}–{} rad/s, \
+             the faster ones with too little spin, the spinning ones too slow.\n",
+            data.rows(),
+            sig(s_lo, 3),
+            sig(s_hi, 3),
+            sig(w_min, 3),
+            sig(w_max, 3)
+        );
+    } else {
+        let _ = writeln!(
+            w,
+            "Of the {} kicks of the grid, {} leave at {published}: {}. C_D, C_L, Re and S are the flight's own launch report \
+             (`kick_flight::solve`, `launch`): the spinning ball's drag (Goff & Carré 2010, Eq. 4, joined to the drag \
+             crisis) is what these kicks fly with, well above the no-spin {}.\n",
+            data.rows(),
+            realistic.len(),
+            realistic
+                .iter()
+                .map(|&r| -> Result<String, PaperError> {
+                    let a = numbers_3d::free_kick_launch(offsets[r], frictions[r], d)?;
+                    Ok(format!(
+                        "{} ({} m/s, {}; at launch Re = {}, S = {}, C_D = {}, C_L = {})",
+                        describe(r),
+                        sig(speed[r], 3),
+                        spin(rev[r] * tau),
+                        sig(a.reynolds, 3),
+                        sig(a.spin_parameter, 3),
+                        sig(a.drag_coefficient, 3),
+                        sig(a.lift_coefficient, 3)
+                    ))
+                })
+                .collect::<Result<Vec<_>, _>>()?
+                .join("; "),
+            free_kick::NO_SPIN_DRAG
+        );
+    }
     let _ = writeln!(w, "![free kicks from above and from the side]({fig}/flight_free_kick.png)\n");
     let _ = writeln!(w, "![deflection and heights against the offset]({fig}/flight_deflection.png)\n");
     let _ = writeln!(w, "The kicks at μ = 0.5 and μ = ∞ (all four frictions are in the file and the figures):\n");
@@ -620,11 +645,12 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> 
             sig(speed[r], 3),
             sig(rev[r] * tau, 3),
             sig(elev[r], 3),
-            sig(az[r], 3),
+            // Sideways numbers of the central kick are zero to rounding.
+            sig_or_zero(az[r], 3, SIDEWAYS_ZERO * 180.0),
             if wc[r] == 1.0 { sig(wh[r], 3) } else { "lands first".into() },
             if crossed { sig(gh[r], 3) } else { "lands first".into() },
-            if crossed { sig(gy[r], 3) } else { "—".into() },
-            if crossed { sig(curve, 3) } else { "—".into() },
+            if crossed { sig_or_zero(gy[r], 3, SIDEWAYS_ZERO * d) } else { "—".into() },
+            if crossed { sig_or_zero(curve, 3, SIDEWAYS_ZERO * d) } else { "—".into() },
         );
     }
     // Deflection per cm of offset, and the friction spread, where the ball reaches the goal line.
@@ -637,7 +663,11 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> 
         .ok_or_else(|| PaperError::missing("no kick reaches the goal line"))?;
     let same_offset: Vec<usize> = reach.iter().copied().filter(|&r| offsets[r] == offsets[widest]).collect();
     let (cmin, cmax) = same_offset.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &r| (a.min(curve(r)), b.max(curve(r))));
-    let last_offset = reach.iter().map(|&r| offsets[r]).fold(0.0, f64::max);
+    // At μ = 0.5, as the sentence says: the first offset whose ball lands before the goal line.
+    let first_short = (0..data.rows()).filter(|&r| frictions[r] == 0.5 && gc[r] != 1.0).map(|r| offsets[r]).fold(f64::INFINITY, f64::min);
+    // The wall is cleared when the ball's centre passes it higher than its top plus the radius.
+    let clear = free_kick::WALL_HEIGHT + kick_study::parameters::DEFAULT_BALL_RADIUS;
+    let clearing = (0..data.rows()).filter(|&r| wc[r] == 1.0 && wh[r] > clear).count();
     let half_row = |e: f64| (0..data.rows()).find(|&r| offsets[r] == e && frictions[r] == 0.5).unwrap_or(0);
     let wall_last =
         (0..data.rows()).filter(|&r| frictions[r] == 0.5 && wc[r] == 1.0).max_by(|&a, &b| offsets[a].total_cmp(&offsets[b])).unwrap_or(0);
@@ -649,7 +679,9 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> 
          to {} m over μ), so the offset, not μ, sets the curve. The backspin of the contact below the centre lifts \
          the ball; as the offset grows more of the launch goes sideways and the speed drops, so the ball passes \
          lower: at μ = 0.5 its centre is {} m high at the wall ({} m) for e = 0 and {} m at e = {} cm, and balls \
-         launched from offsets above {} cm land before the goal line. The launch direction itself swings out with \
+         launched from offsets of {} cm and more land before the goal line. {} of the {} kicks clear the wall (the \
+         ball's centre above {} m, the wall's {} m and the radius): this foot (Table 1's, at 22 m/s along the ground) \
+         kicks too flat for the wall at h = {} cm. The launch direction itself swings out with \
          the offset (the tilted normal of the rigid geometry, [3d.md](3d.md)): a \
          rigid sphere cannot wrap around the foot, so the model's free kick has to be aimed by turning the whole \
          kick about the vertical, which the flight does not change.\n\n{}",
@@ -662,7 +694,12 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> 
         free_kick::WALL_DISTANCE,
         sig(wh[wall_last], 3),
         sig(offsets[wall_last] * 100.0, 2),
-        sig(last_offset * 100.0, 2),
+        sig(first_short * 100.0, 2),
+        clearing,
+        data.rows(),
+        sig(clear, 3),
+        free_kick::WALL_HEIGHT,
+        sig(free_kick::CONTACT_DEPTH * 100.0, 2),
         lift_and_decay_section()?,
     );
     let _ = writeln!(

@@ -434,16 +434,19 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, PaperError>
     let slips = crate::force_history::phases(&h.time_ms, &h.state, ContactState::Slip.code());
     let lever_text = match turns.as_slice() {
         [] => format!("keeps one sign, from {} to {} mm", sig3(h.lever_mm[lowest]), sig3(h.lever_mm[highest])),
-        [t] => format!(
-            "changes sign once, at {} ms: it is {} friction's sense before (down to {} mm at {} ms) and {} it after (up to {} mm at {} ms)",
-            sig3(*t),
-            if h.lever_mm[lowest] < 0.0 && h.time_ms[lowest] < *t { "against" } else { "with" },
-            sig3(h.lever_mm[lowest]),
-            sig3(h.time_ms[lowest]),
-            if h.lever_mm[highest] > 0.0 && h.time_ms[highest] > *t { "with" } else { "against" },
-            sig3(h.lever_mm[highest]),
-            sig3(h.time_ms[highest]),
-        ),
+        [t] => {
+            // Each side of the turn by its own largest lever (> 0: friction's sense).
+            let side = |before: bool| {
+                let i = *lever
+                    .iter()
+                    .filter(|&&i| (h.time_ms[i] < *t) == before)
+                    .max_by(|&&a, &&b| h.lever_mm[a].abs().total_cmp(&h.lever_mm[b].abs()))
+                    .unwrap_or(&lowest);
+                let (sense, extreme) = if h.lever_mm[i] > 0.0 { ("with", "up to") } else { ("against", "down to") };
+                format!("{sense} friction's sense {} ({extreme} {} mm at {} ms)", if before { "before" } else { "after" }, sig3(h.lever_mm[i]), sig3(h.time_ms[i]))
+            };
+            format!("changes sign once, at {} ms: it is {} and {}", sig3(*t), side(true), side(false))
+        }
         many => format!("changes sign {} times, between {} and {} mm", many.len(), sig3(h.lever_mm[lowest]), sig3(h.lever_mm[highest])),
     };
     let _ = writeln!(w, "## One off-center kick's patch over time\n");

@@ -247,10 +247,23 @@ pub fn render(results: &Path, figures: &str, checks: Option<&[CheckLine]>) -> Re
     Ok(md)
 }
 
+/// Every HDF5 file under `results`, its subdirectories included (flight,
+/// identification, timing), as paths relative to it, sorted.
 fn list_h5(results: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(results)
-        .map(|d| d.filter_map(|e| e.ok()).filter_map(|e| e.file_name().into_string().ok()).filter(|n| n.ends_with(".h5")).collect())
-        .unwrap_or_default();
+    fn walk(dir: &Path, prefix: &str, names: &mut Vec<String>) {
+        let Ok(entries) = std::fs::read_dir(dir) else { return };
+        for e in entries.filter_map(|e| e.ok()) {
+            let Ok(name) = e.file_name().into_string() else { continue };
+            let path = format!("{prefix}{name}");
+            if e.file_type().is_ok_and(|t| t.is_dir()) {
+                walk(&e.path(), &format!("{path}/"), names);
+            } else if name.ends_with(".h5") {
+                names.push(path);
+            }
+        }
+    }
+    let mut names = Vec::new();
+    walk(results, "", &mut names);
     names.sort();
     names
 }

@@ -22,6 +22,8 @@ pub const GOAL_DISTANCE: f64 = 25.0;
 pub use kick_flight::aim::{GOAL_HEIGHT, GOAL_WIDTH, WALL_HALF_WIDTH, WALL_HEIGHT};
 /// The wall, m (Law 13: 9.15 m), defined once in kick-flight.
 pub use kick_flight::models::WALL_DISTANCE;
+/// C_D far above the drag crisis without spin (Goff & Carré's Eq. 3, kick-flight's default).
+pub const NO_SPIN_DRAG: f64 = kick_flight::coefficients::DragCrisis::SUPERCRITICAL;
 /// Columns of the `launch` set: the free kick's launch and the contact.
 pub const LAUNCH_COLUMNS: [(&str, &str); 12] = [
     ("launch_velocity_x", "m/s"),

@@ -36,6 +36,16 @@ pub fn sig(x: f64, digits: usize) -> String {
     format!("{x:.decimals$}")
 }
 
+/// [`sig`], but "0" where |x| is below `zero`: a value that is zero to
+/// rounding (a symmetric kick's sideways numbers), not a digit string of noise.
+pub fn sig_or_zero(x: f64, digits: usize, zero: f64) -> String {
+    if x.abs() < zero {
+        "0".into()
+    } else {
+        sig(x, digits)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -46,5 +56,12 @@ mod tests {
         assert_eq!(spin(std::f64::consts::TAU), "6.28 rad/s (60 rpm)");
         assert_eq!(spin(58.3), "58.3 rad/s (557 rpm)");
         assert!(spin(1e-14).starts_with("0 rad/s"));
+    }
+
+    #[test]
+    fn noise_below_the_zero_is_printed_as_zero() {
+        assert_eq!(sig(-2.19e-15, 3), "-0.00000000000000219");
+        assert_eq!(sig_or_zero(-2.19e-15, 3, 1e-9), "0");
+        assert_eq!(sig_or_zero(-2.89, 3, 1e-9), "-2.89");
     }
 }

@@ -117,7 +117,7 @@ pub fn laws(file: &Path, figures: &str) -> Result<String, PaperError> {
          All are clamped at F ≥ 0: a contact never pulls. For the hysteresis laws the clamp never acts in a \
          passive impact (below); for Kelvin–Voigt it does — the dashpot would pull at the end of restitution, \
          and the clamp lets the bodies part when k δ + c δ̇ reaches zero, with δ still positive. In 3D \
-         (`kick simulate3d`, `kick run3d`) the same laws act along the contact normal, their damping taken \
+         (`kick simulate3d`, `kick run` on a 3D experiment file) the same laws act along the contact normal, their damping taken \
          from e at the normal approach speed.\n\n\
          ## Energy and restitution of the hysteresis laws\n\n\
          With U = k δⁿ⁺¹/(n+1) and v = δ̇, the relative motion (Eq. 18) becomes μ v dv/(1 + χ v) = −dU, in \
@@ -422,7 +422,7 @@ pub fn identification(dir: &Path, figures: &str) -> Result<String, PaperError> {
          the same data to be fitted with the paper's law (Eq. 20), m_f, k, c, n and t0 free. Result \
          (`{SYNTHETIC_WRONG_LAW_FIT}`): {}. A right model leaves s² within 1 ± {} (four standard deviations of \
          χ²/ν at ν = {}), as both fits above do; here s² is {:.0}x that band's top: the residuals are model \
-         error, not noise. The fit still reports small standard uncertainties (k {}, c {}), but they are \
+         error, not noise. The fit still reports standard uncertainties (k {}, c {}), but they are \
          computed as if the law were right and say nothing about the contact: with a wrong law a parameter is \
          pinned, to a value that is not a property of the ball. Read s² before the uncertainties.\n",
         fit_summary(&wrong),
