@@ -237,7 +237,7 @@ impl KickSpec {
     /// Fill the gaps with the defaults and validate, refusing a `damping` or
     /// `restitution` the law would ignore ([`ScenarioSpec::check_given`]).
     pub fn build(&self) -> Result<Kick3d, Kick3dError> {
-        Kick3d::new(self.scenario.build()?, &self.kick3d)
+        Kick3d::new(self.scenario.build_3d_base()?, &self.kick3d)
     }
 
     /// The declared parameters a row of 3D kicks holds as columns (result
@@ -249,7 +249,7 @@ impl KickSpec {
     /// given (`kick sweep3d` draws every one, damping included, whatever the
     /// law): nothing in it is the user's to refuse.
     pub fn build_drawn(&self) -> Result<Kick3d, Kick3dError> {
-        Kick3d::new(self.scenario.build_drawn()?, &self.kick3d)
+        Kick3d::new(self.scenario.build_drawn_3d_base()?, &self.kick3d)
     }
 }
 
@@ -473,7 +473,14 @@ impl Kick3d {
         };
         let m_b = base.ball_mass();
         let shell = kick_core::bound::thin_shell_inertia(m_b, radius);
-        let given = check(&p::BALL_INERTIA, spec.ball_inertia.unwrap_or(shell))?;
+        let given = match spec.ball_inertia {
+            Some(i) => check(&p::BALL_INERTIA, i)?,
+            // Derived, not given: a value out of range is the radius's (with the mass) to fix.
+            None if !p::BALL_INERTIA.valid.contains(shell) => {
+                return Err(invalid("ball_radius", radius, "large enough that the thin shell's 2/3 m_b R^2 is a valid ball_inertia"))
+            }
+            None => shell,
+        };
         // A thin shell puts all the mass at R: no sphere of radius R can exceed it
         // (the shell as printed and rounded up is the shell).
         let ball_inertia = kick_core::bound::at_most(given, shell).ok_or_else(|| {
@@ -491,10 +498,27 @@ impl Kick3d {
             }
         }
         let foot_shape = spec.foot_shape();
-        let foot_inertia = spec.foot_inertia.unwrap_or_else(|| foot_shape.solid_inertia(base.effective_foot_mass()));
-        for i in foot_inertia {
-            check(&p::FOOT_INERTIA, i)?;
-        }
+        let foot_inertia = match spec.foot_inertia {
+            Some(given) => {
+                for i in given {
+                    check(&p::FOOT_INERTIA, i)?;
+                }
+                // A rigid body's principal moments obey I_a <= I_b + I_c (equal for a lamina).
+                let [a, b, c] = given;
+                if let Some(&i) = [(a, b + c), (b, a + c), (c, a + b)].iter().find(|(i, rest)| *i > *rest * (1.0 + 4.0 * f64::EPSILON)) {
+                    return Err(invalid("foot_inertia", i.0, "each principal moment at most the sum of the other two (a rigid body's)"));
+                }
+                given
+            }
+            None => {
+                let derived = foot_shape.solid_inertia(base.effective_foot_mass());
+                // Derived from the box's size and the foot's mass: theirs to fix.
+                if !derived.iter().all(|&i| p::FOOT_INERTIA.valid.contains(i)) {
+                    return Err(invalid("foot_half_extents", outer[0], "large enough that the solid box's inertia is a valid foot_inertia"));
+                }
+                derived
+            }
+        };
         let offset = spec.offset.unwrap_or(p::OFFSET.default_number());
         let depth = spec.contact_depth.unwrap_or(p::CONTACT_DEPTH.default_number());
         if !(offset.is_finite() && depth.is_finite() && offset.hypot(depth) < radius) {
@@ -931,6 +955,52 @@ mod tests {
         assert_eq!(k.ball_inertia, 0.0034);
         match Kick3d::new(Scenario::baseline(), &Kick3dSpec { ball_inertia: Some(shell * 1.001), ..Kick3dSpec::default() }) {
             Err(Kick3dError::InvalidParameter { name: "ball_inertia", .. }) => {}
+            other => panic!("{other:?}"),
+        }
+    }
+
+    /// A ball moving along the ground faster than the foot still meets a
+    /// foot rising steeply behind it: they close along the contact normal at
+    /// V_f − V_b cos α (the knife edge at offset 0, normal along the foot's
+    /// path), which is what decides contact, not V_f > V_b along one line;
+    /// a restitution law is built along that normal.
+    #[test]
+    fn a_faster_ball_is_met_by_a_steep_foot() {
+        let (v_f, v_b, alpha) = (22.0, 23.0, 80.0f64);
+        for (law, restitution) in [(kick_core::LawKind::PowerLaw, None), (kick_core::LawKind::Flores, Some(0.6))] {
+            let scenario = kick_core::ScenarioSpec { ball_speed: Some(v_b), law: Some(law), restitution, ..Default::default() };
+            let kick = KickSpec { scenario, kick3d: Kick3dSpec { approach_angle_deg: Some(alpha), ..Kick3dSpec::default() } }.build().unwrap();
+            let closing = v_f - v_b * alpha.to_radians().cos();
+            assert!((kick.normal_approach_speed() / closing - 1.0).abs() < 1e-12, "{}", kick.normal_approach_speed());
+            let normal = kick.normal_scenario().unwrap();
+            assert!((normal.approach_speed() / closing - 1.0).abs() < 1e-12);
+            assert_eq!(normal.restitution_target(), restitution);
+        }
+        // Along one line the 1D check stands: a faster ball is never reached.
+        let scenario = kick_core::ScenarioSpec { ball_speed: Some(v_b), ..Default::default() };
+        match (KickSpec { scenario, kick3d: Kick3dSpec::default() }).build() {
+            Err(Kick3dError::Core(kick_core::KickError::NoContact { .. })) => {}
+            other => panic!("{other:?}"),
+        }
+    }
+
+    /// Principal moments no rigid body has (I_z > I_x + I_y) are refused
+    /// naming `foot_inertia`; a lamina's (I_z = I_x + I_y) is one. Degenerate
+    /// sizes name what the user gave, not the inertia derived from it.
+    #[test]
+    fn impossible_inertias_and_degenerate_sizes_name_the_flag_given() {
+        let at = |spec: Kick3dSpec| Kick3d::new(Scenario::baseline(), &spec);
+        match at(Kick3dSpec { foot_inertia: Some([1e-4, 1e-4, 10.0]), ..Kick3dSpec::default() }) {
+            Err(Kick3dError::InvalidParameter { name: "foot_inertia", value, .. }) => assert_eq!(value, 10.0),
+            other => panic!("{other:?}"),
+        }
+        assert!(at(Kick3dSpec { foot_inertia: Some([0.01, 0.02, 0.03]), ..Kick3dSpec::default() }).is_ok());
+        match at(Kick3dSpec { ball_radius: Some(1e-300), ..Kick3dSpec::default() }) {
+            Err(Kick3dError::InvalidParameter { name, .. }) => assert_eq!(name, "ball_radius"),
+            other => panic!("{other:?}"),
+        }
+        match at(Kick3dSpec { foot_half_extents: Some([1e-300; 3]), ..Kick3dSpec::default() }) {
+            Err(Kick3dError::InvalidParameter { name, .. }) => assert_eq!(name, "foot_half_extents"),
             other => panic!("{other:?}"),
         }
     }

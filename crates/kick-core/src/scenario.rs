@@ -269,6 +269,24 @@ impl ScenarioSpec {
     /// samplers that draw every parameter whatever the law (`kick sweep3d`),
     /// whose `damping` is not the user's. Front ends call `build`.
     pub fn build_drawn(&self) -> Result<Scenario, KickError> {
+        self.build_on_line(true)
+    }
+
+    /// [`ScenarioSpec::build`] for a 3D kick's base: the foot's and the
+    /// ball's speeds along their own directions, the approach checked along
+    /// the contact normal by kick-3d ([`Scenario::each_parameter`]).
+    pub fn build_3d_base(&self) -> Result<Scenario, KickError> {
+        self.check_given()?;
+        self.build_drawn_3d_base()
+    }
+
+    /// [`ScenarioSpec::build_drawn`] for a 3D kick's base ([`ScenarioSpec::build_3d_base`]).
+    pub fn build_drawn_3d_base(&self) -> Result<Scenario, KickError> {
+        self.build_on_line(false)
+    }
+
+    /// The scenario, its approach along one line checked or (a 3D kick's base) not.
+    fn build_on_line(&self, one_line: bool) -> Result<Scenario, KickError> {
         let base = Scenario::BASELINE;
         let mut values = [0.0; 8];
         for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
@@ -279,7 +297,19 @@ impl ScenarioSpec {
         if let Some(pose) = foot.leg {
             values[0] = LegFoot::new(pose)?.effective_mass;
         }
-        Ok(self.law_on(Scenario::from_values(values)?)?.with_foot(foot))
+        if one_line {
+            return Ok(self.law_on(Scenario::from_values(values)?)?.with_foot(foot));
+        }
+        let scenario = Scenario::each_parameter(values)?;
+        if scenario.approach_speed() > 0.0 {
+            return Ok(self.law_on(scenario)?.with_foot(foot));
+        }
+        // A ball faster along the line than the foot: only the law's kind and
+        // target matter here, kick-3d builds the law again along the contact
+        // normal (`Kick3d::normal_scenario`), where the bodies close; a law
+        // set by a restitution is built on the foot's speed alone meanwhile.
+        let lawful = self.law_on(Scenario { ball_speed: 0.0, ..scenario })?;
+        Ok(Scenario { ball_speed: scenario.ball_speed, ..lawful }.with_foot(foot))
     }
 
     /// `scenario` under this spec's law: its target restitution, or for the
@@ -445,6 +475,24 @@ impl Scenario {
 
     /// Validate values given in [`Parameter::ALL`] order.
     pub fn from_values(values: [f64; 8]) -> Result<Scenario, KickError> {
+        let scenario = Scenario::each_parameter(values)?;
+        // The foot must close the gap (Eq. 48's start: v_f > v_b), and the
+        // relative speed must be representable next to the absolute speeds.
+        let (foot_speed, ball_speed) = (scenario.foot_speed, scenario.ball_speed);
+        let approach = foot_speed - ball_speed;
+        if !(approach > 0.0) || !approach.is_finite() {
+            return Err(KickError::NoContact { foot_speed, ball_speed });
+        }
+        scenario.check_scales()?;
+        Ok(scenario)
+    }
+
+    /// Each value checked against its declaration, but not the contact
+    /// they make along one line: the base of a 3D kick, whose foot and ball
+    /// move along different directions and close along the contact normal,
+    /// where kick-3d's `Kick3d::new` checks them (its normal scenario is
+    /// [`Scenario::from_values`]'s).
+    pub fn each_parameter(values: [f64; 8]) -> Result<Scenario, KickError> {
         let [foot_mass, ball_mass, foot_speed, ball_speed, stiffness, damping, exponent, drive_force] = values;
         let check = |p: Parameter, v: f64| p.def().check(v);
         let scenario = Scenario {
@@ -460,13 +508,6 @@ impl Scenario {
             restitution_target: None,
             foot: Foot::RIGID,
         };
-        // The foot must close the gap (Eq. 48's start: v_f > v_b), and the
-        // relative speed must be representable next to the absolute speeds.
-        let approach = foot_speed - ball_speed;
-        if !(approach > 0.0) || !approach.is_finite() {
-            return Err(KickError::NoContact { foot_speed, ball_speed });
-        }
-        scenario.check_scales()?;
         Ok(scenario)
     }
 
