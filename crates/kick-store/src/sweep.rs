@@ -120,7 +120,9 @@ pub fn sweep(settings: &SweepSettings) -> Result<SweepReport, StoreError> {
     let solver = SolverChoice::with_step(&settings.solver, settings.dt)?;
     let sweep = SampledSweep { samples: settings.samples, seed: settings.seed, fixed: settings.fixed, ranges: settings.ranges.clone() };
     sweep.check()?;
-    sweep.scenario(0)?;
+    // The held values, on Table 1's for the rest: a drawn row the model
+    // refuses is that row's failure, not the sweep's (it used to abort on row 0's draw).
+    settings.fixed.build()?;
     // The provenance keeps what made the file: the command and the ranges.
     let mut fixed: String =
         Parameter::ALL.iter().filter_map(|&p| settings.fixed.get(p).map(|v| format!(" {} {v}", p.def().flag()))).collect();

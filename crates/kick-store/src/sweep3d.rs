@@ -99,9 +99,10 @@ pub fn sweep3d(settings: &Sweep3dSettings) -> Result<Sweep3dReport, StoreError> 
     limits::check_rows("--samples", settings.samples, rows, level.bytes_per_row(), &target.directory)?;
     // A held value the model refuses is refused before the run, and so is a
     // held damping or restitution the law would ignore (the drawn damping is
-    // the sampler's, not the user's).
-    settings.fixed.scenario.check_given()?;
-    kicks.spec(0).build_drawn()?;
+    // the sampler's, not the user's): the held values on Table 1's and the
+    // declared defaults for the rest. A drawn row the model refuses is that
+    // row's failure, not the sweep's (it used to abort on row 0's draw).
+    settings.fixed.build()?;
     let law = settings.fixed.scenario.law.unwrap_or(kick_core::LawKind::PowerLaw);
     let mut given = String::new();
     for p in parameters::at_levels(KickSpec::LEVELS) {

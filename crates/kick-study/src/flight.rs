@@ -75,7 +75,11 @@ impl FlightPlan {
     pub fn with_distances(rest: FlightSpec, distances: &[f64]) -> Result<FlightPlan, FlightError> {
         match distances {
             [] => Ok(FlightPlan::new(rest)),
-            [d] if rest.distance.is_none() => Ok(FlightPlan::new(FlightSpec { distance: Some(*d), ..rest })),
+            [d] if rest.distance.is_none() => {
+                // One plane is checked as several are (a negative one used to reach every row).
+                kick_flight::check_planes(&[*d])?;
+                Ok(FlightPlan::new(FlightSpec { distance: Some(*d), ..rest }))
+            }
             more => FlightPlan::planes(rest, more.to_vec()),
         }
     }
@@ -439,5 +443,23 @@ mod tests {
         let error = flight(&FlightSpec { launch_angle: Some(95.0), ..FlightSpec::from_exit_speed(20.0, 10.0) }).unwrap_err();
         assert!(error.message.contains("(flag --launch-angle)"), "{error}");
         assert_eq!(error.status, kick_core::Status::Refused);
+    }
+
+    /// Crossing planes are checked however many are given: one negative
+    /// plane (`--distance=-9`) is refused before a run, as several are; an
+    /// empty list and a plane given twice are refused naming `distance(s)`.
+    #[test]
+    fn every_plane_list_is_checked() {
+        let name = |r: Result<FlightPlan, FlightError>| match r {
+            Err(FlightError::InvalidParameter { name, value, .. }) => (name, value),
+            other => panic!("{other:?}"),
+        };
+        let rest = FlightSpec::default();
+        assert_eq!(name(FlightPlan::with_distances(rest.clone(), &[-9.0])), ("distance", -9.0));
+        assert_eq!(name(FlightPlan::with_distances(rest.clone(), &[9.15, -1.0])), ("distance", -1.0));
+        assert_eq!(name(FlightPlan::with_distances(rest.clone(), &[9.15, 9.15])), ("distance", 9.15));
+        assert_eq!(name(FlightPlan::planes(rest.clone(), vec![])), ("distances", 0.0));
+        assert_eq!(FlightPlan::with_distances(rest.clone(), &[9.15]).unwrap().distances(), [9.15]);
+        assert_eq!(FlightPlan::with_distances(rest, &[]).unwrap().distances(), Vec::<f64>::new());
     }
 }

@@ -173,6 +173,42 @@ fn sweeps_take_compress_with_or_without_a_level() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A drawn row the model refuses is that row's failure, not the sweep's:
+/// `kick sweep --foot-speed 3` (row 0 draws a ball faster than that) and
+/// `kick sweep3d --range offset=0.2,0.3` (every offset beyond the ball's
+/// 0.11 m) write their files with the rows refused; held values that
+/// contradict each other, and a negative plane, are refused before a run.
+#[test]
+fn drawn_rows_fail_alone_and_held_values_are_checked_first() {
+    let dir = std::env::temp_dir().join(format!("kick-drawn-test-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = |name: &str| dir.join(format!("{name}.h5")).display().to_string();
+    let run = |args: &[&str]| {
+        let output = kick(args);
+        (output.status.code(), String::from_utf8_lossy(&output.stdout).to_string() + &String::from_utf8_lossy(&output.stderr))
+    };
+    let (code, text) = run(&["sweep", "--samples", "50", "--foot-speed", "3", "--out", &out("slow")]);
+    assert_eq!(code, Some(0), "{text}");
+    assert!(text.contains("failed)") && !text.contains("(0 failed)"), "{text}");
+    let (code, text) = run(&["sweep3d", "--samples", "20", "--range", "offset=0.2,0.3", "--out", &out("wide")]);
+    assert_eq!(code, Some(0), "{text}");
+    assert!(text.contains("refused: 20"), "{text}");
+    for (args, named) in [
+        (vec!["sweep", "--samples", "5", "--foot-speed", "3", "--ball-speed", "5"], "no contact"),
+        (vec!["sweep3d", "--samples", "5", "--flight", "--distance=-9"], "`distance` = -9"),
+        (vec!["sweep3d", "--samples", "5", "--flight", "--distance", "9", "--distance", "9"], "given twice"),
+    ] {
+        let mut args = args.clone();
+        let path = out("refused");
+        args.extend(["--out", path.as_str()]);
+        let (code, text) = run(&args);
+        assert_eq!(code, Some(1), "{args:?}: {text}");
+        assert!(text.contains(named), "{args:?}: {text}");
+        assert!(!std::path::Path::new(&path).exists());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The generated reference pages: `kick reference cli|parameters` prints
 /// them, the same bytes on every run, and the committed pages are what it
 /// prints now; each names every subcommand, flag and declared parameter.
