@@ -2,6 +2,16 @@ use crate::number::short;
 use serde::Serialize;
 use thiserror::Error;
 
+/// [`KickError::InvalidParameter`]'s message: a parameter that was not
+/// given (NaN, "must be given ...") is said to be missing, not to be NaN.
+fn invalid_text(name: &str, value: f64, requirement: &str) -> String {
+    if value.is_nan() && requirement.starts_with("given") {
+        format!("`{name}` is not given: it must be {requirement}")
+    } else {
+        format!("invalid parameter `{name}` = {}: must be {requirement}", short(value))
+    }
+}
+
 /// Every way a kick computation can refuse or fail. Messages name the problem.
 ///
 /// [`KickError::status`] sorts them: a ball proven trapped is a physical
@@ -9,7 +19,7 @@ use thiserror::Error;
 /// failure ([`KickError::NoSeparation`] among others), never physics.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum KickError {
-    #[error("invalid parameter `{name}` = {}: must be {requirement}", short(*.value))]
+    #[error("{}", invalid_text(name, *.value, requirement))]
     InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
     #[error(
         "no contact: the foot ({} m/s) is not faster than the ball ({} m/s), \
@@ -213,7 +223,7 @@ pub fn finite(quantity: &'static str, value: f64, time: f64) -> Result<f64, Kick
 
 #[cfg(test)]
 mod tests {
-    use super::Status;
+    use super::{KickError, Status};
 
     /// `Status::ALL` lists every status once, at the index of its code.
     #[test]
@@ -221,5 +231,15 @@ mod tests {
         for (i, status) in Status::ALL.iter().enumerate() {
             assert_eq!(usize::from(status.code()), i, "{status:?}");
         }
+    }
+
+    /// A parameter that was not given is reported missing, not "= NaN"
+    /// (`kick bounce` without a speed); a given value is quoted as before.
+    #[test]
+    fn a_missing_parameter_is_not_reported_as_nan() {
+        let missing = KickError::InvalidParameter { name: "speed", value: f64::NAN, requirement: "given, or drop_height instead" };
+        assert_eq!(missing.to_string(), "`speed` is not given: it must be given, or drop_height instead");
+        let given = KickError::InvalidParameter { name: "foot_mass", value: -1.0, requirement: "finite and > 0" };
+        assert_eq!(given.to_string(), "invalid parameter `foot_mass` = -1: must be finite and > 0");
     }
 }
