@@ -182,7 +182,8 @@ pub(super) fn parse(
         if total > MAX_CELLS_BOUNCE {
             return Err(at.error(span, &key, format!("the grid exceeds {MAX_CELLS_BOUNCE} bounces")));
         }
-        for (&v, value_span) in values.iter().zip(&value_spans) {
+        for (i, &v) in values.iter().enumerate() {
+            let value_span = value_spans.at(i);
             let mut one = spec;
             one.set(name, Value::Number(v)).map_err(|e| at.error(value_span.clone(), &key, e.to_string()))?;
             parameter.check(v).map_err(|e| at.error(value_span.clone(), &key, format!("value {}: {e}", short(v))))?;

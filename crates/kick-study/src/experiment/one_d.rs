@@ -180,7 +180,8 @@ pub(super) fn kicks(
                 return Err(at.error(span, &key, format!("the grid exceeds {MAX_SCENARIOS} scenarios")));
             }
             // Each value alone against the base, so the error names its line.
-            for (&v, value_span) in values.iter().zip(&value_spans) {
+            for (i, &v) in values.iter().enumerate() {
+            let value_span = value_spans.at(i);
                 let checked = match (parameter.level, flight) {
                     (Level::Flight, Some(plan)) => {
                         super::flight::check_axis_value(&plan.rest, parameter, v, super::flight::After::OneD).map_err(|e| e.to_string())

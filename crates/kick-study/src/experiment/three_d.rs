@@ -178,7 +178,8 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment, flight: Optio
             return Err(at.error(span, &key, format!("the grid exceeds {MAX_CELLS_3D} kicks")));
         }
         // Each value alone against the base, so the error names its line.
-        for (&v, value_span) in values.iter().zip(&value_spans) {
+        for (i, &v) in values.iter().enumerate() {
+            let value_span = value_spans.at(i);
             let checked = match (parameter.level, flight) {
                 (Level::Flight, Some(plan)) => {
                     super::flight::check_axis_value(&plan.rest, parameter, v, super::flight::After::ThreeD).map_err(|e| e.to_string())
