@@ -283,19 +283,19 @@ static POSE: std::sync::LazyLock<kick_study::leg::LegSettings> = std::sync::Lazy
 #[derive(Args)]
 struct Leg {
     /// Knee flexion, degrees (0 = straight)
-    #[arg(long, default_value_t = POSE.knee, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.knee, allow_hyphen_values = true)]
     knee: f64,
     /// Ankle plantarflexion from neutral, degrees (0 = foot at right angles to the shank)
-    #[arg(long, default_value_t = POSE.ankle, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.ankle, allow_hyphen_values = true)]
     ankle: f64,
     /// Thigh angle from the downward vertical, degrees, positive forward
-    #[arg(long, default_value_t = POSE.hip, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.hip, allow_hyphen_values = true)]
     hip: f64,
     /// Ankle rigid during contact (default: a free hinge)
     #[arg(long, conflicts_with = "ankle_stiffness")]
     locked_ankle: bool,
     /// Ankle torsional stiffness, N m/rad: leg and ball integrated together, m_eff = the 1D-equivalent mass
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     ankle_stiffness: Option<f64>,
     /// Knee rigid during contact (default: a free hinge)
     #[arg(long)]
@@ -307,25 +307,25 @@ struct Leg {
     #[arg(long)]
     spatial: bool,
     /// Spatial: hip abduction, degrees
-    #[arg(long, default_value_t = POSE.abduction, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.abduction, allow_hyphen_values = true)]
     abduction: f64,
     /// Spatial: thigh rotation about its long axis, degrees
-    #[arg(long, default_value_t = POSE.rotation, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.rotation, allow_hyphen_values = true)]
     rotation: f64,
     /// Spatial: contact offset along the foot's mediolateral axis, m
-    #[arg(long, default_value_t = POSE.lateral_offset, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.lateral_offset, allow_hyphen_values = true)]
     lateral_offset: f64,
     /// Contact point from the ankle along the foot, fraction of foot length
-    #[arg(long, default_value_t = POSE.contact, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.contact, allow_hyphen_values = true)]
     contact: f64,
     /// Impact direction in the sagittal plane, degrees above horizontal-forward
-    #[arg(long, default_value_t = POSE.direction, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.direction, allow_hyphen_values = true)]
     direction: f64,
     /// Body mass, kg [de Leva's reference subject]
-    #[arg(long, default_value_t = POSE.body_mass, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.body_mass, allow_hyphen_values = true)]
     body_mass: f64,
     /// Stature, m [de Leva's reference subject]
-    #[arg(long, default_value_t = POSE.height, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = POSE.height, allow_hyphen_values = true)]
     height: f64,
     #[arg(long, value_enum, default_value_t = Format::Text)]
     format: Format,

@@ -110,8 +110,12 @@ pub fn leg(settings: &LegSettings) -> Result<LegReport, StudyError> {
         hip_abduction: args.abduction,
         hip_rotation: args.rotation,
     };
-    if !args.direction.is_finite() {
-        return Err(StudyError::Flag { flag: "--direction", message: format!("invalid `direction` = {}: must be finite", args.direction) });
+    // An angle in the sagittal plane: one turn, as the joint angles are bounded.
+    if !(-180.0..=180.0).contains(&args.direction) {
+        return Err(StudyError::Flag {
+            flag: "--direction",
+            message: format!("invalid `direction` = {}: must be within -180..180 degrees", kick_core::number::short(args.direction)),
+        });
     }
     if args.locked_ankle && args.ankle_stiffness.is_some() {
         return Err(StudyError::Flag { flag: "--locked-ankle", message: "--locked-ankle and --ankle-stiffness exclude each other".into() });

@@ -45,6 +45,20 @@ fn leg_json_matches_the_library_and_bad_angles_fail() {
     let planar_rotation = kick(&["leg", "--knee", "30", "--ankle", "50", "--rotation", "20"]);
     assert!(!planar_rotation.status.success());
     assert!(String::from_utf8_lossy(&planar_rotation.stderr).contains("hip_rotation"));
+    // -inf reaches the check that names the flag (clap took "-i" for a flag),
+    // and the impact direction is an angle like the others: one turn.
+    for (args, named) in [
+        (["leg", "--knee", "-inf"], "`knee` = -inf"),
+        (["leg", "--body-mass", "-inf"], "`body_mass` = -inf"),
+        (["leg", "--direction", "1e300"], "`direction` = 1e300"),
+        (["leg", "--direction", "-181"], "`direction` = -181"),
+    ] {
+        let out = kick(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains(named), "{args:?}: {stderr}");
+    }
+    assert!(kick(&["leg", "--direction", "-30"]).status.success());
 }
 
 #[test]
