@@ -167,3 +167,18 @@ fn the_wall_lifts_a_path_that_would_go_through_it() {
 fn solve_or_panic(r: Result<AimSolution, AimError>) -> AimSolution {
     r.unwrap_or_else(|e| panic!("{e}"))
 }
+
+/// A ball both over the wall and beside it is named by the larger margin,
+/// the one the clearance reports: 3.566 m over the top and 0.214 m beside
+/// (the max-clearance aim's member) is "over", not "beside".
+#[test]
+fn the_wall_pass_is_named_by_the_larger_margin() {
+    use kick_flight::aim::WallPass;
+    let wall = Wall { distance: 9.15, height: 1.8, half_width: 1.0 };
+    let r = 0.11;
+    assert_eq!(WallPass::of(&wall, r, -1.32448, 5.47574), WallPass::Over);
+    assert_eq!(WallPass::of(&wall, r, -2.5, 2.0), WallPass::Beside);
+    assert_eq!(WallPass::of(&wall, r, 1.5, 1.0), WallPass::Beside);
+    assert_eq!(WallPass::of(&wall, r, 0.0, 2.5), WallPass::Over);
+    assert_eq!(WallPass::of(&wall, r, 0.5, 1.0), WallPass::Hits);
+}
