@@ -184,3 +184,26 @@ fn the_layer_lengthens_the_kick_and_lowers_the_peak() {
     assert!(soft.contact_time > 1.3 * rigid.contact_time, "{} vs {}", soft.contact_time, rigid.contact_time);
     assert!(soft.peak_force < 0.8 * rigid.peak_force);
 }
+
+/// The stiffest layer a spec accepts (c_b/k_b at `BOOT_TIME_SHARE` of the
+/// contact time) solves on `auto`'s path for both laws, within 1e-3 of the
+/// rigid foot; a stiffer one is refused naming `boot_stiffness`, where
+/// k_b = 1e10 N/m used to run every solver out of its steps and be
+/// reported as "no separation found".
+#[test]
+fn the_stiffest_layer_accepted_solves_and_a_stiffer_one_is_refused() {
+    for law in [LawKind::PowerLaw, LawKind::Shell] {
+        let spec = |k_b: Option<f64>| kick_core::ScenarioSpec { law: Some(law), boot_stiffness: k_b, ..Default::default() };
+        let rigid = spec(None).build().unwrap();
+        let limit = kick_core::boot::IDENTIFIED.damping / (kick_core::scenario::BOOT_TIME_SHARE * rigid.elastic_contact_time());
+        let stiffest = spec(Some(0.99 * limit)).build().unwrap();
+        let (o, o_rigid) = (Auto::default().solve(&stiffest).unwrap(), Auto::default().solve(&rigid).unwrap());
+        assert!((o.v_ball_out / o_rigid.v_ball_out - 1.0).abs() < 1e-3, "{law:?}: {} vs {}", o.v_ball_out, o_rigid.v_ball_out);
+        for k_b in [1.01 * limit, 1e10] {
+            match spec(Some(k_b)).build() {
+                Err(KickError::InvalidParameter { name: "boot_stiffness", value, .. }) => assert_eq!(value, k_b),
+                other => panic!("{law:?} at {k_b:e}: {other:?}"),
+            }
+        }
+    }
+}
