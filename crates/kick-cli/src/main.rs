@@ -192,7 +192,8 @@ struct AimArgs {
     range: Vec<String>,
     /// Which member of the family of solutions: min-foot-speed (--from kick),
     /// min-speed (launch speed), min-time (to the goal line), max-clearance
-    /// (of the wall) [default: the one the solve reaches from the starts]
+    /// (of the wall), the best of the members solved on the family's grid,
+    /// not a proven optimum [default: the one the solve reaches from the starts]
     #[arg(long, value_name = "NAME", value_parser = ["min-foot-speed", "min-speed", "min-time", "max-clearance"])]
     objective: Option<String>,
     /// The declared flight parameters: fixed values, or the starts of free ones

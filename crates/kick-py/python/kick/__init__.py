@@ -463,8 +463,9 @@ law : str, default "power-law"
 objective : str, optional
     Which member of the family of solutions (more free parameters than
     two): "min-foot-speed" (from_="kick"), "min-speed" (launch speed),
-    "min-time" (to the goal line), "max-clearance" (of the wall); default the
-    member the solve reaches from the starts.
+    "min-time" (to the goal line), "max-clearance" (of the wall): the best of
+    the members solved on the family's grid, not a proven optimum; default
+    the member the solve reaches from the starts.
 bounds : dict, optional
     {name: (low, high)} of free parameters, instead of the aim's own.
 
