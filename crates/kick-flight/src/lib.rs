@@ -92,6 +92,13 @@ pub enum FlightError {
     InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
     #[error("parameter `{name}` is required")]
     Missing { name: &'static str },
+    /// Valid parameters whose flight leaves double precision's working range
+    /// (kick-core's `SCALE_RANGE`, as a 1D contact's scales are checked).
+    #[error(
+        "parameters out of range: the {quantity} is {} {unit}, outside 1e-100 .. 1e100; change {parameters}",
+        short(*.value)
+    )]
+    OutOfRange { quantity: &'static str, value: f64, unit: &'static str, parameters: &'static str },
     #[error("parameter `{name}` takes {expected} numbers, got {found}")]
     WrongLength { name: &'static str, expected: usize, found: usize },
     #[error("unknown flight parameter `{name}`: expected one of {expected}")]

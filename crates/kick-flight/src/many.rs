@@ -76,6 +76,7 @@ impl FlightError {
             FlightError::NoLanding { .. } | FlightError::Integration { .. } | FlightError::NonFinite { .. } => Status::NumericalFailure,
             FlightError::InvalidParameter { .. }
             | FlightError::Missing { .. }
+            | FlightError::OutOfRange { .. }
             | FlightError::WrongLength { .. }
             | FlightError::UnknownParameter { .. }
             | FlightError::Conflict { .. }

@@ -259,6 +259,39 @@ impl Dynamics {
     }
 }
 
+/// Refuse a flight whose scales leave double precision's working range
+/// (kick-core's `SCALE_RANGE`), naming the parameters each comes from: a
+/// launch at 1e300 m/s or a spin of 1e300 rad/s failed at t = 0 as a
+/// numerical failure, or (the spin's drag through C_D(S)) landed within
+/// nanoseconds. Each scale at launch: the speed, the spin's surface speed,
+/// the ball, gravity and the time it sets, the air's drag and lift.
+pub(crate) fn check_scales(flight: &Flight) -> Result<(), FlightError> {
+    const AIR: &str = "air_density, temperature, pressure, altitude, drag_coefficient, ball_panels, speed, ball_radius, ball_mass";
+    let (v, w) = (flight.launch_velocity(), flight.spin());
+    let speed = Vector3::from(v).norm();
+    let dynamics = Dynamics::new(flight);
+    let a = dynamics.aerodynamics(v, w);
+    let per_speed_squared = dynamics.aero * speed * speed;
+    // (quantity, value, unit, from which parameters, whether it may be 0)
+    let scales = [
+        ("launch speed", speed, "m/s", "speed, launch_velocity", false),
+        ("spin's surface speed R|ω|", flight.ball_radius() * Vector3::from(w).norm(), "m/s", "spin, ball_radius", true),
+        ("ball mass", flight.ball_mass(), "kg", "ball_mass", false),
+        ("ball radius", flight.ball_radius(), "m", "ball_radius", false),
+        ("gravity", flight.gravity(), "m/s²", "gravity", false),
+        ("rise time |v0|/g", speed / flight.gravity(), "s", "speed, launch_velocity, gravity", false),
+        ("drag's acceleration at launch", per_speed_squared * a.drag_coefficient, "m/s²", AIR, true),
+        ("lift's acceleration at launch", per_speed_squared * a.lift_coefficient, "m/s²", "lift_coefficient, spin, air_density", true),
+    ];
+    let (low, high) = kick_core::scenario::SCALE_RANGE;
+    for (quantity, value, unit, parameters, may_be_zero) in scales {
+        if !((low..=high).contains(&value) || (may_be_zero && value == 0.0)) {
+            return Err(FlightError::OutOfRange { quantity, value, unit, parameters });
+        }
+    }
+    Ok(())
+}
+
 impl System<9> for Dynamics {
     #[inline]
     fn derivative(&self, _t: f64, y: &State) -> State {

@@ -486,7 +486,7 @@ impl FlightSpec {
             None => None,
             Some(d) => Some(check("distance", d, d > 0.0, "finite and > 0, m")?),
         };
-        Ok(Flight {
+        let flight = Flight {
             ball_mass: mass,
             ball_radius: radius,
             gravity,
@@ -499,7 +499,9 @@ impl FlightSpec {
             distance,
             relative_tolerance: DEFAULT_RELATIVE_TOLERANCE,
             horizon: None,
-        })
+        };
+        crate::solve::check_scales(&flight)?;
+        Ok(flight)
     }
 }
 

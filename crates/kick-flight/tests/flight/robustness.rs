@@ -45,3 +45,34 @@ proptest! {
         }
     }
 }
+
+/// Valid numbers whose flight leaves double precision (each input at 1e300,
+/// or 1e-300 where that underflows) are refused by the parameters they come
+/// from, before a solve: they failed at t = 0 as "numerical failure", or (a
+/// spin of 1e300 rad/s, through C_D(S)) landed within nanoseconds.
+#[test]
+fn flights_beyond_double_precision_are_refused_by_name() {
+    let base = FlightSpec::from_exit_speed(25.0, 20.0);
+    let cases = [
+        (FlightSpec { spin: Some([0.0, 0.0, 1e300]), ..base }, "spin"),
+        (FlightSpec::from_exit_speed(1e300, 20.0), "speed"),
+        (FlightSpec::from_exit_speed(1e-300, 20.0), "speed"),
+        (FlightSpec { ball_radius: Some(1e300), ..base }, "ball_radius"),
+        (FlightSpec { gravity: Some(1e300), ..base }, "gravity"),
+        (FlightSpec { temperature: Some(1e300), ..base }, "temperature"),
+        (FlightSpec { air_density: Some(1e300), ..base }, "air_density"),
+        (FlightSpec { drag_coefficient: Some(1e300), ..base }, "drag_coefficient"),
+        (FlightSpec { spin: Some([0.0, 0.0, 10.0]), lift_coefficient: Some(1e300), ..base }, "lift_coefficient"),
+    ];
+    for (spec, named) in cases {
+        match spec.build() {
+            Err(e @ kick_flight::FlightError::OutOfRange { parameters, .. }) => {
+                assert!(parameters.split(", ").any(|p| p == named), "{named}: {e}");
+                assert_eq!(e.status(), kick_core::Status::Refused);
+            }
+            other => panic!("{named}: {other:?}"),
+        }
+    }
+    // The kicks' own flights stay inside.
+    assert!(solve(&FlightSpec { spin: Some([0.0, 0.0, 56.5]), ..base }.build().unwrap()).is_ok());
+}
