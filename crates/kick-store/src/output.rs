@@ -138,10 +138,20 @@ pub fn check_paths(writes: &[Target], reads: &[&Path]) -> Result<(), OutputError
             }
         };
         match target {
+            Target::Folder { .. } if resolved.exists() && !resolved.is_dir() => {
+                return Err(refused("it is a file, not a folder; give a folder".into()));
+            }
+            Target::File { .. } if resolved.is_dir() => return Err(refused("it is a directory; give a file name".into())),
+            _ => {}
+        }
+        // The folder the writer will make files in: refused now, by the flag, not after the work.
+        let folder = match target {
+            Target::File { .. } => resolved.parent().map(Path::to_path_buf).unwrap_or_default(),
+            Target::Folder { .. } => resolved.clone(),
+        };
+        writable_folder(&folder).map_err(refused)?;
+        match target {
             Target::File { .. } => {
-                if std::fs::metadata(&resolved).is_ok_and(|m| m.is_dir()) {
-                    return Err(refused("it is a directory; give a file name".into()));
-                }
                 for (input, real) in &reads {
                     if *real == resolved || is_same_file(&resolved, real) {
                         return Err(refused(format!("is the input {}{}; write elsewhere", input.display(), meaning(input))));
@@ -162,6 +172,38 @@ pub fn check_paths(writes: &[Target], reads: &[&Path]) -> Result<(), OutputError
         }
     }
     Ok(())
+}
+
+/// Why `directory` could not be made: an existing part of it that is a
+/// file, not a folder, is named (the system says only "File exists").
+fn folder_failure(directory: &Path, e: &std::io::Error) -> String {
+    let file = directory.ancestors().find(|a| std::fs::metadata(a).is_ok_and(|m| !m.is_dir()));
+    match file {
+        Some(f) => format!("{} is a file, not a folder", f.display()),
+        None => format!("cannot make its folder {}: {e}", directory.display()),
+    }
+}
+
+/// Whether files can be made in the nearest existing folder of `path`
+/// (itself, if it is one): a probe file made and removed there. Permission
+/// bits do not say it (root passes them; /sys and /proc refuse root too).
+fn writable_folder(path: &Path) -> Result<(), String> {
+    let Some(folder) = path.ancestors().find(|a| a.is_dir()) else { return Ok(()) };
+    if let Some(file) = path.ancestors().take_while(|a| *a != folder).find(|a| a.exists()) {
+        return Err(format!("{} is a file, not a folder", file.display()));
+    }
+    let probe = folder.join(format!(".kick-write-probe.{}", std::process::id()));
+    let mut options = OpenOptions::new();
+    options.write(true).create_new(true);
+    no_follow(&mut options);
+    match options.open(&probe) {
+        Ok(_) => {
+            let _ = std::fs::remove_file(&probe);
+            Ok(())
+        }
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => Ok(()),
+        Err(e) => Err(format!("files cannot be made in {}: {e}", folder.display())),
+    }
 }
 
 /// What `path` will name once the directories a writer creates exist: its
@@ -378,11 +420,27 @@ impl Staged {
     /// Take the target's lock (creating its directory) and name a fresh
     /// temporary file beside it; refused if another writer holds the lock.
     pub fn begin(target: &Path) -> Result<Staged, OutputError> {
+        // A link is written through to the file it names (it used to be
+        // replaced by a regular file); a link to something else than a
+        // regular file (/dev/full, a FIFO) is refused, never renamed over.
+        let linked;
+        let target = if std::fs::symlink_metadata(target).is_ok_and(|m| m.file_type().is_symlink()) {
+            linked = resolve(target);
+            if std::fs::metadata(&linked).is_ok_and(|m| !m.is_file()) {
+                return Err(OutputError::Io {
+                    path: target.to_path_buf(),
+                    message: format!("it is a link to {}, not to a regular file; give a file name", linked.display()),
+                });
+            }
+            linked.as_path()
+        } else {
+            target
+        };
         let directory = match target.parent() {
             Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
             _ => PathBuf::from("."),
         };
-        std::fs::create_dir_all(&directory).map_err(io(&directory))?;
+        std::fs::create_dir_all(&directory).map_err(|e| OutputError::Io { path: target.to_path_buf(), message: folder_failure(&directory, &e) })?;
         // Checked now, not found at the rename after all the work.
         if std::fs::symlink_metadata(target).is_ok_and(|m| m.is_dir()) {
             return Err(OutputError::Io {
@@ -390,7 +448,13 @@ impl Staged {
                 message: "it is a directory; give a file name or another directory".into(),
             });
         }
-        let lock = Lock::acquire(target)?;
+        // A lock that cannot be made is the target's directory refusing it: said of the target.
+        let lock = Lock::acquire(target).map_err(|e| match e {
+            OutputError::Io { path, message } if path == lock_path(target) => {
+                OutputError::Io { path: target.to_path_buf(), message: format!("{message} (making its lock file {})", path.display()) }
+            }
+            other => other,
+        })?;
         let (stem, ext) = split_name(target);
         remove_stale_temporaries(&directory, &stem, &ext);
         // Created here, exclusively and not through a link: the writers that
@@ -847,5 +911,37 @@ mod tests {
         assert_eq!(planted.err().map(|e| e.kind()), Some(std::io::ErrorKind::AlreadyExists));
         drop(staged);
         assert_eq!(names(&dir), Vec::<String>::new());
+    }
+
+    /// A link is written through to the regular file it names (it used to
+    /// be replaced by a file); a link to a device is refused and left as it
+    /// was; a path through a file names that file; a folder where no file
+    /// can be made (/proc, root included) is refused by the flag before any
+    /// work, and the probe leaves nothing behind.
+    #[test]
+    fn links_files_in_the_way_and_unwritable_folders() {
+        let dir = scratch("links");
+        let (real, link, device) = (dir.join("real.csv"), dir.join("link.csv"), dir.join("full.csv"));
+        std::fs::write(&real, b"old").unwrap();
+        std::os::unix::fs::symlink(&real, &link).unwrap();
+        write(&link, b"new").unwrap();
+        assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+        assert_eq!(std::fs::read(&real).unwrap(), b"new");
+        std::os::unix::fs::symlink("/dev/null", &device).unwrap();
+        let message = write(&device, b"x").unwrap_err().to_string();
+        assert!(message.contains("not to a regular file"), "{message}");
+        assert!(std::fs::symlink_metadata(&device).unwrap().file_type().is_symlink());
+        let message = write(real.join("sub/a.h5"), b"x").unwrap_err().to_string();
+        assert!(message.contains(&format!("{} is a file, not a folder", real.display())), "{message}");
+        let inside = real.join("a.h5");
+        let message = check_paths(&[Target::File { flag: "--out", path: &inside }], &[]).unwrap_err().to_string();
+        assert!(message.starts_with("`--out`") && message.contains("is a file, not a folder"), "{message}");
+        let message = check_paths(&[Target::Folder { flag: "--out", path: &real }], &[]).unwrap_err().to_string();
+        assert!(message.contains("it is a file, not a folder"), "{message}");
+        let proc = Path::new("/proc/kick-probe.h5");
+        let message = check_paths(&[Target::File { flag: "--history", path: proc }], &[]).unwrap_err().to_string();
+        assert!(message.starts_with("`--history`") && message.contains("files cannot be made in /proc"), "{message}");
+        assert!(check_paths(&[Target::File { flag: "--out", path: &dir.join("new/a.h5") }], &[]).is_ok());
+        assert_eq!(names(&dir), ["full.csv", "link.csv", "real.csv"]);
     }
 }
