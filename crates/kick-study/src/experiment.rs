@@ -1081,6 +1081,22 @@ mod tests {
         assert_eq!((e.line, e.key.as_str()), (4, "base.restitution"), "{e}");
     }
 
+    /// A `table2` file gives every row whole: a `[base]` key, a `law` or a
+    /// `restitution` beside it is refused at its line (they were ignored,
+    /// the runs identical to a plain Table 2 run).
+    #[test]
+    fn what_a_table2_file_would_ignore_is_refused() {
+        for (text, line, key) in [
+            ("table2 = \"t.toml\"\n[base]\nstiffness = 1e5\n", 3, "base.stiffness"),
+            ("table2 = \"t.toml\"\nlaw = \"flores\"\nrestitution = 0.6\n", 2, "law"),
+            ("table2 = \"t.toml\"\nrestitution = 0.6\n", 2, "restitution"),
+        ] {
+            let e = parse_text(text).unwrap_err();
+            assert_eq!((e.line, e.key.as_str()), (line, key), "{e}");
+            assert!(e.message.contains("would be ignored"), "{e}");
+        }
+    }
+
     /// Inputs that are not experiment or scenario files: refused at once
     /// (no read until memory runs out, no wait on a FIFO), naming the key,
     /// and no line of the file quoted (issue 21).

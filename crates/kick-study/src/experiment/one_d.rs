@@ -235,6 +235,18 @@ pub(super) fn kicks(
         }
         Scenarios::Named { names, scenarios }
     } else if let Some(t2) = &raw.table2 {
+        // A Table 2 file gives every row whole, law included: what the
+        // experiment file adds would be ignored (it was, silently).
+        let why = "a table2 file gives every scenario whole, its law included; this would be ignored: leave it out";
+        if let Some((p, _, span)) = base_raw.given().next() {
+            return Err(at.error(span, &format!("base.{}", p.name), why));
+        }
+        if let Some(given) = &raw.law {
+            return Err(at.error(given.span(), "law", why));
+        }
+        if let Some(given) = top_restitution {
+            return Err(at.error(given.span(), "restitution", why));
+        }
         let t2_path = table2_path(path, t2.get_ref());
         let t2_text = kick_core::input::read_text(&t2_path, kick_core::input::MAX_TEXT_BYTES)
             .map_err(|e| at.error(t2.span(), "table2", format!("{}: {e}", t2_path.display())))?;
