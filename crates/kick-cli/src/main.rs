@@ -256,7 +256,7 @@ struct Simulate3d {
     time: bool,
     /// Instead of one solve: the rapier scene path at steps 4e-5 s halving to
     /// 6.25e-7 s against the accurate path (error, observed order, wall time)
-    #[arg(long)]
+    #[arg(long, conflicts_with_all = ["history", "flight", "time", "format", "solver"])]
     scene_convergence: bool,
     /// Then fly the ball from its launch velocity and spin
     #[arg(long)]

@@ -1,4 +1,4 @@
-//! `kick simulate3d` and `kick run3d`: JSON contract, agreement with kick-3d, errors.
+//! `kick simulate3d` and `kick run` on 3D files: JSON contract, agreement with kick-3d, errors.
 
 use crate::kick;
 
@@ -269,4 +269,21 @@ fn sweep3d_samples_the_pressure_and_flies_its_kicks() {
     let out = kick(&["sweep3d", "--samples", "2", "--range", "air_density=1,1.2", "--out", file.to_str().unwrap()]);
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("add --flight"));
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `--scene-convergence` prints its own study: a history file, a flight, a
+/// format or a solver given with it is refused (they were ignored, and no
+/// file was written), and nothing is written.
+#[test]
+fn scene_convergence_refuses_what_it_would_ignore() {
+    let history = std::env::temp_dir().join(format!("kick-scene-{}.csv", std::process::id()));
+    for extra in [vec!["--history", history.to_str().unwrap()], vec!["--flight"], vec!["--format", "json"], vec!["--solver", "rapier"]] {
+        let mut args = vec!["simulate3d", "--scene-convergence"];
+        args.extend(&extra);
+        let out = kick(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{extra:?}: {stderr}");
+        assert!(stderr.contains("cannot be used with") && stderr.contains(extra[0]), "{stderr}");
+    }
+    assert!(!history.exists());
 }
