@@ -69,7 +69,23 @@ pub struct Table2ParseError {
 }
 
 impl Table2File {
+    /// The file's text, each row's scenario built too: a row the model
+    /// refuses is named by its number and name (the error used to name the
+    /// parameter alone, whichever row gave it).
     pub fn parse(text: &str) -> Result<Self, Table2ParseError> {
+        let file = Table2File::parse_text(text)?;
+        for (i, row) in file.row.iter().enumerate() {
+            if let Some((p, v)) = row.parameter.zip(row.value) {
+                Scenario::baseline().with(p, v).map_err(|e| Table2ParseError {
+                    at: None,
+                    message: format!("[[row]] {} (`{}`), {} = {}: {e}", i + 1, row.name, p.name(), kick_core::short(v)),
+                })?;
+            }
+        }
+        Ok(file)
+    }
+
+    fn parse_text(text: &str) -> Result<Self, Table2ParseError> {
         toml::from_str(text).map_err(|e: toml::de::Error| {
             let at = e.span().map(|span| {
                 let before = text.get(..span.start).unwrap_or(text);
@@ -191,5 +207,22 @@ mod tests {
         assert!(message.contains("secret_key"), "{message}");
         assert!(e.to_string().starts_with("line 2, column 1: "), "{e}");
         assert!(!e.to_string().contains("= 1"), "{e}");
+    }
+
+    /// A row the model refuses is named by its number and name, with the
+    /// parameter and value it gives.
+    #[test]
+    fn a_refused_row_is_named() {
+        let head = "name = \"t\"\ndescription = \"d\"\nsolver = \"seed-rk4\"\ndt = 5e-6\n";
+        let row = |name: &str, parameter: &str, value: &str| {
+            format!("[[row]]\nname = \"{name}\"\nparameter = \"{parameter}\"\nvalue = {value}\nresiduals = [0.0, 0.0, 0.0, 0.0, 0.0]\n")
+        };
+        let fine = format!("{head}{}", row("Light", "foot_mass", "0.6"));
+        assert_eq!(Table2File::parse(&fine).unwrap().scenarios().unwrap().len(), 1);
+        for (bad, named) in [("ball_speed", "30"), ("foot_mass", "nan")] {
+            let text = format!("{head}{}{}", row("Light", "foot_mass", "0.6"), row("Odd", bad, named));
+            let e = Table2File::parse(&text).unwrap_err().to_string();
+            assert!(e.starts_with(&format!("[[row]] 2 (`Odd`), {bad} = ")), "{e}");
+        }
     }
 }
