@@ -394,9 +394,9 @@ fn page_text(
     // Speed.
     let e_rows: Vec<usize> = [2.0, 6.0, 10.0, 19.0, 30.0].iter().map(|&v| nearest(s.speed, v)).collect();
     let (first, last) = (e_rows[0], e_rows[e_rows.len() - 1]);
-    // The contact time over the file's speeds: its longest and its range.
-    let longest = (0..s.speed.len()).max_by(|&a, &b| s.contact_time[a].total_cmp(&s.contact_time[b])).unwrap_or(first);
-    let (t_low, t_high) = s.contact_time.iter().fold((f64::INFINITY, 0.0f64), |(a, b), &t| (a.min(t), b.max(t)));
+    // The contact time over the table's rows: its longest and its range.
+    let longest = e_rows.iter().copied().max_by(|&a, &b| s.contact_time[a].total_cmp(&s.contact_time[b])).unwrap_or(first);
+    let (t_low, t_high) = e_rows.iter().fold((f64::INFINITY, 0.0f64), |(a, b), &i| (a.min(s.contact_time[i]), b.max(s.contact_time[i])));
     let _ = write!(
         w,
         "\n## Against impact speed, at 0.8 bar\n\n\
@@ -405,7 +405,7 @@ fn page_text(
          dependence above). Measurements of restitution against speed to set beside it (Andersen et al. 2008, Mills \
          et al. 2022) were not read in a checkable copy, so only the FIFA band is drawn.\n\
          - The contact time barely moves with speed because the ball is nearly a linear spring: p·A(δ) ≈ 2πR p0 δ, \
-         so t_c ≈ π√(m/(2πR p0)) whatever the speed. It moves by {} %: from {} ms at {} m/s up to {} ms at {} m/s, \
+         so t_c ≈ π√(m/(2πR p0)) whatever the speed. Over the table it moves by {} %: from {} ms at {} m/s up to {} ms at {} m/s, \
          then down to {} ms at {} m/s, a fall that is the gas's stiffening as the cap it loses grows.\n\
          - Compression is nearly linear in speed (below).\n\n\
          | impact speed (m/s) | e | contact time (ms) | peak force (N) | δ_max (mm) | δ_max / V (mm per m/s) |\n\
@@ -415,7 +415,7 @@ fn page_text(
         sig(s.speed[first]),
         sig(s.restitution[last]),
         sig(s.speed[last]),
-        short(100.0 * (t_high / t_low - 1.0)),
+        three(100.0 * (t_high / t_low - 1.0)),
         sig(1e3 * s.contact_time[first]),
         sig(s.speed[first]),
         sig(1e3 * s.contact_time[longest]),
