@@ -514,7 +514,11 @@ impl Kick3d {
                 let derived = foot_shape.solid_inertia(base.effective_foot_mass());
                 // Derived from the box's size and the foot's mass: theirs to fix.
                 if !derived.iter().all(|&i| p::FOOT_INERTIA.valid.contains(i)) {
-                    return Err(invalid("foot_half_extents", outer[0], "large enough that the solid box's inertia is a valid foot_inertia"));
+                    return Err(invalid(
+                        "foot_half_extents",
+                        outer[0],
+                        "large enough that the solid box's inertia is a valid foot_inertia",
+                    ));
                 }
                 derived
             }
@@ -969,7 +973,8 @@ mod tests {
         let (v_f, v_b, alpha) = (22.0, 23.0, 80.0f64);
         for (law, restitution) in [(kick_core::LawKind::PowerLaw, None), (kick_core::LawKind::Flores, Some(0.6))] {
             let scenario = kick_core::ScenarioSpec { ball_speed: Some(v_b), law: Some(law), restitution, ..Default::default() };
-            let kick = KickSpec { scenario, kick3d: Kick3dSpec { approach_angle_deg: Some(alpha), ..Kick3dSpec::default() } }.build().unwrap();
+            let kick =
+                KickSpec { scenario, kick3d: Kick3dSpec { approach_angle_deg: Some(alpha), ..Kick3dSpec::default() } }.build().unwrap();
             let closing = v_f - v_b * alpha.to_radians().cos();
             assert!((kick.normal_approach_speed() / closing - 1.0).abs() < 1e-12, "{}", kick.normal_approach_speed());
             let normal = kick.normal_scenario().unwrap();

@@ -348,7 +348,8 @@ fn check_boot_resolution(scenario: &Scenario) -> Result<(), KickError> {
         return Err(KickError::InvalidParameter {
             name: "boot_stiffness",
             value: boot.stiffness,
-            requirement: "such that the layer's time constant c_b/k_b is at least 1e-5 of the contact time (stiffer: give inf, the rigid foot)",
+            requirement:
+                "such that the layer's time constant c_b/k_b is at least 1e-5 of the contact time (stiffer: give inf, the rigid foot)",
         });
     }
     Ok(())

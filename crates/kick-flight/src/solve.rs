@@ -505,14 +505,20 @@ pub fn check_planes(planes: &[f64]) -> Result<(), FlightError> {
         return Err(FlightError::WrongLength { name: "distance", expected: MAX_PLANES, found: planes.len() });
     }
     if planes.is_empty() {
-        return Err(FlightError::InvalidParameter { name: "distances", value: 0.0, requirement: "at least one plane (leave it out for none)" });
+        return Err(FlightError::InvalidParameter {
+            name: "distances",
+            value: 0.0,
+            requirement: "at least one plane (leave it out for none)",
+        });
     }
     if let Some(&d) = planes.iter().find(|&&d| !(d.is_finite() && d > 0.0)) {
         return Err(FlightError::InvalidParameter { name: "distance", value: d, requirement: "finite and > 0, m" });
     }
     // A plane given twice would be two columns of one crossing.
     match planes.iter().enumerate().find(|(i, d)| planes[..*i].contains(d)) {
-        Some((_, &d)) => Err(FlightError::InvalidParameter { name: "distance", value: d, requirement: "each plane once (this one is given twice)" }),
+        Some((_, &d)) => {
+            Err(FlightError::InvalidParameter { name: "distance", value: d, requirement: "each plane once (this one is given twice)" })
+        }
         None => Ok(()),
     }
 }

@@ -9,10 +9,10 @@
 use crate::error::PaperError;
 use crate::figures::{color, save_grid, Panel, Series};
 use crate::links::relative;
+use crate::units::three;
 use crate::SweepData;
 pub use kick_study::ball::*;
 use kick_study::printable::{short, sig};
-use crate::units::three;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -124,7 +124,8 @@ fn mm(x: &[f64]) -> Vec<f64> {
 /// line across `ends` at R/2 in mm; curves above it are outside the law's region.
 fn validity_line(ends: &[f64; 2], radius: f64) -> Series {
     let limit = 1e3 * 0.5 * radius;
-    Series::line(&format!("R/2 = {} mm: above, outside the law's validity", short(limit)), RGBColor(150, 150, 150), ends, &[limit, limit]).dashed()
+    Series::line(&format!("R/2 = {} mm: above, outside the law's validity", short(limit)), RGBColor(150, 150, 150), ends, &[limit, limit])
+        .dashed()
 }
 
 /// A table cell of δ_max in mm, marked † past the law's validity (δ > R/2).
@@ -462,7 +463,8 @@ fn page_text(
     let mills_contact = MILLS_ERROR.1 / MILLS_ERROR.0;
     let mills_low = bounce(&[("speed", MILLS_LOW_SPEED), ("inflation_pressure", FIFA_PRESSURE)])?;
     // The abstract's digits, 2.8 % and 0.3 ms, hold ±0.05 % and ±0.05 ms: the quotient's range.
-    let (mills_short, mills_long) = ((MILLS_ERROR.1 - 0.05e-3) / (MILLS_ERROR.0 + 0.0005), (MILLS_ERROR.1 + 0.05e-3) / (MILLS_ERROR.0 - 0.0005));
+    let (mills_short, mills_long) =
+        ((MILLS_ERROR.1 - 0.05e-3) / (MILLS_ERROR.0 + 0.0005), (MILLS_ERROR.1 + 0.05e-3) / (MILLS_ERROR.0 - 0.0005));
     let model_range = (p.contact_time[hi].min(mills_low.contact_time), p.contact_time[lo].max(mills_low.contact_time));
     let overlap = model_range.0 <= mills_long && mills_short <= model_range.1;
     let _ = write!(

@@ -582,7 +582,8 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> 
     );
     if realistic.is_empty() {
         // Say what the grid gives instead, so the reader sees why none matches.
-        let span = |v: &dyn Fn(usize) -> f64| (0..data.rows()).map(v).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+        let span =
+            |v: &dyn Fn(usize) -> f64| (0..data.rows()).map(v).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
         let (s_lo, s_hi) = span(&|r| speed[r]);
         let (w_min, w_max) = span(&|r| rev[r] * tau);
         let _ = writeln!(

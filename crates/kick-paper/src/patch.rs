@@ -443,7 +443,12 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, PaperError>
                     .max_by(|&&a, &&b| h.lever_mm[a].abs().total_cmp(&h.lever_mm[b].abs()))
                     .unwrap_or(&lowest);
                 let (sense, extreme) = if h.lever_mm[i] > 0.0 { ("with", "up to") } else { ("against", "down to") };
-                format!("{sense} friction's sense {} ({extreme} {} mm at {} ms)", if before { "before" } else { "after" }, sig3(h.lever_mm[i]), sig3(h.time_ms[i]))
+                format!(
+                    "{sense} friction's sense {} ({extreme} {} mm at {} ms)",
+                    if before { "before" } else { "after" },
+                    sig3(h.lever_mm[i]),
+                    sig3(h.time_ms[i])
+                )
             };
             format!("changes sign once, at {} ms: it is {} and {}", sig3(*t), side(true), side(false))
         }

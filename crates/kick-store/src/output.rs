@@ -440,7 +440,8 @@ impl Staged {
             Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
             _ => PathBuf::from("."),
         };
-        std::fs::create_dir_all(&directory).map_err(|e| OutputError::Io { path: target.to_path_buf(), message: folder_failure(&directory, &e) })?;
+        std::fs::create_dir_all(&directory)
+            .map_err(|e| OutputError::Io { path: target.to_path_buf(), message: folder_failure(&directory, &e) })?;
         // Checked now, not found at the rename after all the work.
         if std::fs::symlink_metadata(target).is_ok_and(|m| m.is_dir()) {
             return Err(OutputError::Io {

@@ -153,7 +153,8 @@ fn limb_rows_pair_the_published_ends() {
 fn the_count_table_adds_up_to_the_rows() {
     let (v, page, _) = validation();
     let table = page.split("| rows | number |\n|---|---|\n").nth(1).expect("the count table");
-    let sum: usize = table.lines().take_while(|l| l.starts_with("| ")).map(|l| l.rsplit('|').nth(1).unwrap().trim().parse::<usize>().unwrap()).sum();
+    let sum: usize =
+        table.lines().take_while(|l| l.starts_with("| ")).map(|l| l.rsplit('|').nth(1).unwrap().trim().parse::<usize>().unwrap()).sum();
     assert_eq!(sum, v.rows().count());
 }
 

@@ -181,7 +181,7 @@ pub(super) fn kicks(
             }
             // Each value alone against the base, so the error names its line.
             for (i, &v) in values.iter().enumerate() {
-            let value_span = value_spans.at(i);
+                let value_span = value_spans.at(i);
                 let checked = match (parameter.level, flight) {
                     (Level::Flight, Some(plan)) => {
                         super::flight::check_axis_value(&plan.rest, parameter, v, super::flight::After::OneD).map_err(|e| e.to_string())
