@@ -196,7 +196,7 @@ pub static FLIGHT_PARAMETERS: [ParameterDef; 17] = [
         "drag_coefficient",
         "C_D",
         "1",
-        Derived("Goff & Carré (2010) drag crisis in Re (Eq. 3), with spin above it (Eq. 4)"),
+        Derived("Goff & Carré (2010) drag crisis in Re (Eq. 3), with spin above it (Eq. 4); their constants as code bases transcribe them"),
         Closed(0.0),
         Unbounded,
         "finite and >= 0",

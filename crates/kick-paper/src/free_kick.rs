@@ -290,7 +290,7 @@ pub fn setup_note() -> String {
          of every front end, drawn on the first figure), so the ball rises with backspin and curves with sidespin, \
          as a free kick over a wall does. h is a choice: it lifts the ball with backspin while the spin stays mostly \
          sidespin at the larger offsets (whether a kick clears the wall: below). The flight: kick-flight's defaults (the drag crisis of a \
-         14-panel ball joined to a spinning ball's drag, Goff & Carré 2010 Eq. 4; saturating lift in the spin \
+         14-panel ball joined to a spinning ball's drag, Goff & Carré 2010 Eq. 4, constants as code bases transcribe them; saturating lift in the spin \
          parameter; no spin decay; sea-level air), the kick's ball and g; the goal line at {} m (the \
          issue's free kick), the wall at {} m (Law 13), the goal {} m wide and {} m high (Law 1), drawn centred on the \
          foot's path. Heights are those of the ball's centre, which starts at R = {} m.",
