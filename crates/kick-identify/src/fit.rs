@@ -15,7 +15,8 @@
 //! the same in θ and in p.
 //!
 //! Refused: fewer observations than free parameters
-//! ([`IdentifyError::UnderDetermined`]), and any non-finite χ², estimate,
+//! ([`IdentifyError::UnderDetermined`]), a history whose fitted contact
+//! explains it no better than none ([`IdentifyError::NoContact`]), and any non-finite χ², estimate,
 //! uncertainty, correlation or singular value ([`IdentifyError::NonFinite`]):
 //! weighted residuals beyond ~1e154 overflow χ² even where the optimiser's
 //! own norm does not. How the optimiser stopped is a [`FitStop`], printed
@@ -26,7 +27,7 @@
 //! stops with [`FitStop::Cancelled`] at the best point evaluated so far.
 
 use crate::data::Observations;
-use crate::model::predict;
+use crate::model::{predict, without_contact};
 use crate::parameter::{Coordinate, FitParameter, ModelPoint};
 use crate::IdentifyError;
 use kick_compliant::Accurate;
@@ -379,12 +380,26 @@ pub fn minimise(problem: &FitProblem, options: &FitOptions) -> Result<FitReport,
     fit_checked(problem, options, false, &|| false)
 }
 
+/// A fit's time is bounded: each residual records the model only over the
+/// data's span (`model::record_until`; at most `MAX_HISTORY_SAMPLES`), each
+/// Levenberg–Marquardt run makes at most patience × (n + 1) residual
+/// evaluations and as many Jacobians of 2n each, and there are at most
+/// 1 + 2 × [`MAX_ONSET_RESTARTS`] runs.
 fn fit_checked(
     problem: &FitProblem,
     options: &FitOptions,
     determined: bool,
     cancel: &dyn Fn() -> bool,
 ) -> Result<FitReport, IdentifyError> {
+    let report = fit_onsets(problem, options, determined, cancel)?;
+    if determined && problem.observations.has_history() && report.stop != FitStop::Cancelled {
+        check_contact(problem, options, &report)?;
+    }
+    Ok(report)
+}
+
+/// One run, then (t0 free, with a history) the onset restarts of [`fit`].
+fn fit_onsets(problem: &FitProblem, options: &FitOptions, determined: bool, cancel: &dyn Fn() -> bool) -> Result<FitReport, IdentifyError> {
     let mut best = fit_from(problem, options, determined, cancel)?;
     let (Some(index), Some(history)) =
         (problem.free.iter().position(|&p| p == FitParameter::TimeOffset), problem.observations.history.as_ref())
@@ -440,6 +455,47 @@ fn fit_checked(
         }
     }
     Ok(best)
+}
+
+/// How far, in standard deviations of χ²_n (n ± √(2n), what n free
+/// parameters gain on pure noise), a history fit's contact must lower χ²
+/// below no contact at all for the data to show one.
+pub const CONTACT_SIGNIFICANCE: f64 = 10.0;
+
+/// Refuse a history fit whose contact explains its samples no better than
+/// no contact at all (force and compression zero, the velocities before
+/// first touch): data sampled away from the contact, or a t0 the fit moved
+/// off it, leave estimates that are noise, not a kick.
+fn check_contact(problem: &FitProblem, options: &FitOptions, report: &FitReport) -> Result<(), IdentifyError> {
+    let mut point = problem.start;
+    for e in &report.estimates {
+        point = point.with(e.parameter, e.value)?;
+    }
+    let none = without_contact(&options.solver, &point, &problem.observations)?;
+    let (mut fitted, mut without, mut samples) = (0.0, 0.0, 0usize);
+    for (r, v) in report.residuals.iter().zip(&none) {
+        if let Some(v) = v {
+            fitted += r.weighted * r.weighted;
+            without += ((v - r.observed) / r.sigma).powi(2);
+            samples += 1;
+        }
+    }
+    let n = report.estimates.len() as f64;
+    // NaN or a gain within the noise: refused.
+    if samples == 0 || without - fitted > n + CONTACT_SIGNIFICANCE * (2.0 * n).sqrt() {
+        return Ok(());
+    }
+    let histories = std::iter::once(&problem.observations).chain(problem.observations.measurements.iter().map(|m| &m.observations));
+    let times: Vec<f64> =
+        histories.filter_map(|o| o.history.as_ref()).flat_map(|h| [h.data.times[0], h.data.times[h.data.times.len() - 1]]).collect();
+    Err(IdentifyError::NoContact {
+        time_offset: point.time_offset,
+        fitted,
+        without,
+        samples,
+        first: times.iter().copied().fold(f64::INFINITY, f64::min),
+        last: times.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+    })
 }
 
 /// One Levenberg–Marquardt run from `problem.start`; `determined` refuses

@@ -68,6 +68,15 @@ pub enum IdentifyError {
     UnderDetermined { observations: usize, parameters: usize },
     #[error("non-finite {quantity} in the fit: {reason}")]
     NonFinite { quantity: &'static str, reason: String },
+    /// A history fit whose contact explains the data no better than none
+    /// ([`fit::CONTACT_SIGNIFICANCE`]): its estimates would be noise.
+    #[error(
+        "the history shows no contact: the fitted one (first touch at t0 = {} s) leaves chi-square {} over the \
+         {samples} history samples, no contact at all {}; the data run from {} s to {} s: check their times and time_offset",
+        kick_core::short(*.time_offset), kick_core::short(*.fitted), kick_core::short(*.without),
+        kick_core::short(*.first), kick_core::short(*.last)
+    )]
+    NoContact { time_offset: f64, fitted: f64, without: f64, samples: usize, first: f64, last: f64 },
 }
 
 impl IdentifyError {
@@ -87,7 +96,8 @@ impl IdentifyError {
             | IdentifyError::UnknownObservable { .. }
             | IdentifyError::UnknownChannel { .. }
             | IdentifyError::Data { .. }
-            | IdentifyError::UnderDetermined { .. } => Status::Refused,
+            | IdentifyError::UnderDetermined { .. }
+            | IdentifyError::NoContact { .. } => Status::Refused,
         }
     }
 

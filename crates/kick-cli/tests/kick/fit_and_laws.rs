@@ -156,3 +156,38 @@ fn fit_data_refuses_an_output_that_is_an_input() {
     assert_eq!(std::fs::read(&data).unwrap(), data_text);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `--time-offset 0.02` used to sample 6.5 ms of free flight and exit 0;
+/// `kick fit data` on such a history (t0 free) then ran for hours. Now the
+/// first is refused naming the flag, and the second ends, refused.
+#[test]
+fn a_history_without_the_contact_is_refused_by_both_commands() {
+    let dir = scratch("no-contact");
+    for t0 in ["0.02", "1e9"] {
+        let out = kick(&["fit", "synthesize", "--out", dir.to_str().unwrap(), "--time-offset", t0]);
+        assert_eq!(out.status.code(), Some(1), "{t0}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(&format!("--time-offset {t0}: the data are sampled over [0, 0.0064")) && err.contains("holds 0%"), "{err}");
+        assert!(!dir.join("synthetic.csv").exists());
+    }
+    // Free flight before a first touch at 20 ms: the baseline's velocities plus a ±σ pattern.
+    let rows: String = (0..80)
+        .map(|i| {
+            let s = if i % 3 == 0 { 1.0 } else { -0.5 };
+            format!("{:e},{},{},{},{}\n", i as f64 * 8.2e-5, 20.0 * s, 1e-4 * s, 22.0 + 0.05 * s, 0.05 * s)
+        })
+        .collect();
+    std::fs::write(dir.join("flight.csv"), format!("time,force,compression,foot_velocity,ball_velocity\n{rows}")).unwrap();
+    let spec = dir.join("flight.toml");
+    std::fs::write(
+        &spec,
+        "free = [\"foot_mass\", \"stiffness\", \"damping\", \"exponent\", \"time_offset\"]\ntime_offset = 0.0\n\
+         [history]\nfile = \"flight.csv\"\nsigma = { force = 20.0, compression = 1e-4, foot_velocity = 0.05, ball_velocity = 0.05 }\n",
+    )
+    .unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("the history shows no contact") && err.contains("over the 320 history samples"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
