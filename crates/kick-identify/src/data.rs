@@ -534,6 +534,9 @@ impl<'de> Deserialize<'de> for MeasurementSpec {
     }
 }
 
+/// The bounce keys that give the impact speed, one or the other.
+const IMPACT_SPEED: [&str; 2] = ["speed", "drop_height"];
+
 /// A fit specification file (see the module documentation).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -598,11 +601,20 @@ impl Locator<'_> {
         let mut measurements = 0;
         let mut scalars = 0;
         let mut first_scalar_line = None;
+        // A key a measurement does not set: its `[[measurement]]` header's line.
+        let mut header_line = None;
         for (i, raw) in text.lines().enumerate() {
             let line = raw.trim();
             if let Some(header) = line.strip_prefix("[[").and_then(|l| l.split("]]").next()) {
                 let header = header.trim();
+                // A top-level array of tables (`[[scalar]]`): its first header's line.
+                if matches!(section, Section::Top) && header == key {
+                    return Some(i + 1);
+                }
                 if header == "measurement" {
+                    if matches!(section, Section::Measurement(m) if m == measurements) {
+                        header_line = Some(i + 1);
+                    }
                     measurement = Some(measurements);
                     measurements += 1;
                     scalars = 0;
@@ -642,7 +654,7 @@ impl Locator<'_> {
                 return Some(i + 1);
             }
         }
-        first_scalar_line
+        first_scalar_line.or(header_line)
     }
 
     /// A data error at `key` of `section`, named `what`.
@@ -721,16 +733,28 @@ impl FitSpec {
                     spec.set(key, value.into())
                         .map_err(|e| at.error(Section::Table("bounce"), key, &format!("bounce.{key}"), e.to_string()))?;
                 }
-                // Without a speed of its own, the first measurement's stands in.
-                if spec.given("speed").is_none() && spec.given("drop_height").is_none() {
-                    let given = self.measurement.iter().find_map(|m| {
-                        m.conditions.get("speed").map(|&v| ("speed", v)).or(m.conditions.get("drop_height").map(|&v| ("drop_height", v)))
-                    });
-                    let (name, value) = given.ok_or_else(|| {
+                // Without an impact speed in [bounce], every observation needs
+                // one of its own: the top-level [[scalar]]s have none to take
+                // (a measurement's would make the fit depend on their order),
+                // each measurement must give its own, and one of theirs only
+                // completes the start (each replaces it, `ModelPoint::with`).
+                if IMPACT_SPEED.iter().all(|k| spec.given(k).is_none()) {
+                    let own = |m: &MeasurementSpec| IMPACT_SPEED.iter().find_map(|&k| m.conditions.get(k).map(|&v| (k, v)));
+                    if !self.scalar.is_empty() {
+                        return Err(at.error(
+                            Section::Top,
+                            "scalar",
+                            "scalar",
+                            "a top-level [[scalar]] is taken at [bounce]'s conditions, which give no impact speed: give \
+                             `speed` (or `drop_height`) in [bounce], or move it into a [[measurement]] with its own",
+                        ));
+                    }
+                    // A measurement without one is refused where it is read (`load`).
+                    let (name, value) = self.measurement.iter().find_map(own).ok_or_else(|| {
                         at.error(
                             Section::Table("bounce"),
                             "speed",
-                            "speed",
+                            "bounce.speed",
                             "give the impact speed (or drop_height) in [bounce] or in each [[measurement]]",
                         )
                     })?;
@@ -796,6 +820,18 @@ impl FitSpec {
                 }
                 p.def().check(value).map_err(|e| at.error(Section::Measurement(i), key, &what, e.to_string()))?;
                 conditions.push((p, value));
+            }
+            let gives_speed = |k: &String| IMPACT_SPEED.contains(&k.as_str());
+            if level == FitLevel::Bounce
+                && !spec.bounce.iter().flat_map(|b| b.keys()).any(gives_speed)
+                && !m.conditions.keys().any(gives_speed)
+            {
+                return Err(at.error(
+                    Section::Measurement(i),
+                    "speed",
+                    &format!("measurement[{i}].speed"),
+                    "no impact speed: give this measurement's `speed` (or `drop_height`), or one for all in [bounce]",
+                ));
             }
             for (j, s) in m.scalar.iter().enumerate() {
                 let what = format!("measurement[{i}].scalar[{j}]");

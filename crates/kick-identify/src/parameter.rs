@@ -344,6 +344,12 @@ impl ModelPoint {
             }
             (_, Some(spec)) => {
                 let mut spec = *spec;
+                // The impact speed is given one way or the other: a measurement's replaces the start's.
+                match parameter.name() {
+                    "speed" => spec.unset("drop_height"),
+                    "drop_height" => spec.unset("speed"),
+                    _ => {}
+                }
                 spec.set(parameter.name(), Value::Number(value)).map_err(|e| IdentifyError::data(parameter.name(), e.to_string()))?;
                 Ok(ModelPoint { time_offset: self.time_offset, ..ModelPoint::bounce(spec)? })
             }
