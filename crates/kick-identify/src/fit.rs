@@ -27,7 +27,7 @@
 //! stops with [`FitStop::Cancelled`] at the best point evaluated so far.
 
 use crate::data::Observations;
-use crate::model::{predict, without_contact};
+use crate::model::{outside_validity, predict, without_contact};
 use crate::parameter::{Coordinate, FitParameter, ModelPoint};
 use crate::IdentifyError;
 use kick_compliant::Accurate;
@@ -190,10 +190,33 @@ pub struct FitReport {
     pub termination: String,
     pub converged: bool,
     pub evaluations: usize,
+    /// The contacts that, at the estimate, leave their law's validity
+    /// (`kick_core::validity`): the numbers fitted there are the law's,
+    /// not a ball's. Empty when every one holds.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub outside_validity: Vec<OutsideAt>,
     /// ∂r_i/∂θ_j at the estimate (weighted residuals, θ = ln p for log-space
     /// parameters), row-major; left out of serialized reports.
     #[serde(skip)]
     pub jacobian: Vec<Vec<f64>>,
+}
+
+/// A contact of a fit outside its law's validity at the estimate.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct OutsideAt {
+    /// The measurement's name; empty for the top-level observations.
+    pub measurement: String,
+    #[serde(flatten)]
+    pub outside: kick_core::OutsideValidity,
+}
+
+impl std::fmt::Display for OutsideAt {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.measurement.as_str() {
+            "" => write!(f, "{}", self.outside),
+            name => write!(f, "measurement `{name}`: {}", self.outside),
+        }
+    }
 }
 
 impl FitReport {
@@ -578,6 +601,15 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
         (theta, residuals, Some(jacobian))
     };
     let point = solved.point(&theta)?;
+    // Judged as `kick bounce` and `kick simulate` judge a contact; not for a cancelled fit (more solves).
+    let outside_validity = if cancelled {
+        Vec::new()
+    } else {
+        outside_validity(&options.solver, &point, &problem.observations)?
+            .into_iter()
+            .map(|(measurement, outside)| OutsideAt { measurement, outside })
+            .collect()
+    };
 
     let m = residual_vector.len();
     let n = theta.len();
@@ -643,6 +675,7 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
         termination: stop.to_string(),
         converged,
         evaluations: report.number_of_evaluations,
+        outside_validity,
         jacobian: jacobian.map_or_else(Vec::new, |j| (0..m).map(|i| j.row(i).iter().copied().collect()).collect()),
     };
     check_finite(&report)?;

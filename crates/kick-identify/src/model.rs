@@ -6,7 +6,7 @@ use crate::data::{Channel, Observations};
 use crate::parameter::ModelPoint;
 use crate::IdentifyError;
 use kick_compliant::Accurate;
-use kick_core::{ContactLaw, History, Outcome, RecordingSolver, Sample, Scenario, Solver, Spacing};
+use kick_core::{ContactLaw, History, Outcome, OutsideValidity, RecordingSolver, Sample, Scenario, Solver, Spacing};
 use std::ops::ControlFlow;
 
 /// Recording interval as a fraction of the undamped contact time: the
@@ -53,6 +53,30 @@ fn predict_own(solver: &Accurate, point: &ModelPoint, observations: &Observation
         }
     }
     Ok(())
+}
+
+/// Where the model at `point` leaves its contact law's validity: the
+/// observations' own contact (labelled "") and each measurement's (by its
+/// name), those that have observations.
+pub fn outside_validity(
+    solver: &Accurate,
+    point: &ModelPoint,
+    observations: &Observations,
+) -> Result<Vec<(String, OutsideValidity)>, IdentifyError> {
+    let mut contexts = Vec::new();
+    if !observations.scalars.is_empty() || observations.history.is_some() {
+        contexts.push((String::new(), *point));
+    }
+    for m in &observations.measurements {
+        contexts.push((m.name.clone(), m.at(point)?));
+    }
+    let mut out = Vec::new();
+    for (label, at) in contexts {
+        if let Err(outside) = at.check_validity(&solver.solve(&at.scenario)?)? {
+            out.push((label, outside));
+        }
+    }
+    Ok(out)
 }
 
 /// What the histories would hold with no contact in the data: zero force

@@ -370,6 +370,19 @@ impl ModelPoint {
         }
     }
 
+    /// Whether `outcome`, this point's contact, stayed where its law holds
+    /// (`kick_core::validity`), as `kick bounce` (the bounce's own ball
+    /// radius) and `kick simulate` judge it.
+    pub fn check_validity(&self, outcome: &kick_core::Outcome) -> Result<Result<(), kick_core::OutsideValidity>, IdentifyError> {
+        match &self.bounce {
+            Some(spec) => {
+                let radius = spec.build()?.radius;
+                Ok(kick_core::validity::check(self.scenario.law_kind(), radius, outcome.max_compression))
+            }
+            None => Ok(self.scenario.check_validity(outcome)),
+        }
+    }
+
     /// Refuse to fit a parameter that does not act on the model's
     /// predictions here (the law, and whether the data include a history):
     /// it would be a flat direction of χ², not an estimate.

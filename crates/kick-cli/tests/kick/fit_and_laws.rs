@@ -191,3 +191,41 @@ fn a_history_without_the_contact_is_refused_by_both_commands() {
     assert!(err.contains("the history shows no contact") && err.contains("over the 320 history samples"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A plate test at 300 m/s: `kick bounce` prints its result and exits 1,
+/// outside the shell's validity (δ_max > R/2); `kick fit data` with that
+/// test among its measurements used to exit 0 silently. It now says so in
+/// the report (text and JSON), with the δ_max `kick bounce` prints at the
+/// estimate, and exits 1 the same way.
+#[test]
+fn a_fit_outside_the_laws_validity_says_so_and_exits_one() {
+    let dir = scratch("validity");
+    let spec = dir.join("cannon.toml");
+    let test = |name: &str, speed: f64, e: f64| {
+        format!("[[measurement]]\nname = \"{name}\"\nspeed = {speed}\n[[measurement.scalar]]\nobservable = \"restitution\"\nvalue = {e}\nsigma = 0.01\n")
+    };
+    let head = "level = \"bounce\"\nfree = [\"shell_damping\"]\n[bounce]\nshell_damping = 5000.0\n";
+    std::fs::write(&spec, format!("{head}{}{}", test("slow", 6.264, 0.84), test("cannon", 300.0, 0.77))).unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let (stdout, stderr) = (String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let says = "measurement `cannon`: outside the validity of law `shell`: δ_max = 0.20809 m exceeds R/2 = 0.055 m";
+    assert!(stdout.contains(&format!("status outside validity: {says}")), "{stdout}");
+    assert!(
+        stderr.contains("the result above is a fit with a contact outside its law's validity at the estimate") && stderr.contains(says),
+        "{stderr}"
+    );
+    let out = kick(&["fit", "data", spec.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(report["outside_validity"][0]["measurement"], "cannon");
+    let beta = report["estimates"][0]["value"].as_f64().unwrap();
+    let out = kick(&["bounce", "--speed", "300", "--shell-damping", &beta.to_string()]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("δ_max = 0.20809 m exceeds R/2 = 0.055 m"));
+    // Without the cannon: no status line, exit 0.
+    std::fs::write(&spec, format!("{head}{}", test("slow", 6.264, 0.84))).unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert!(out.status.success() && !String::from_utf8_lossy(&out.stdout).contains("outside validity"));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -11,7 +11,7 @@ use kick_core::parameters::Value;
 use kick_core::shell::{SEA_LEVEL_PRESSURE, SHELL_DAMPING};
 use kick_identify::fit::{fit, FitOptions, FitProblem};
 use kick_identify::synthetic::measurements;
-use kick_identify::{FitLevel, FitParameter, FitSpec, ModelPoint, Observable};
+use kick_identify::{FitLevel, FitParameter, FitSpec, ModelPoint, Observable, Observations};
 use std::path::PathBuf;
 
 fn named(level: FitLevel, name: &str) -> FitParameter {
@@ -258,4 +258,35 @@ fn a_bounce_fit_takes_no_conditions_from_the_order_of_its_measurements() {
     // Pooled, β lies between what each test alone gives (e = 0.84 needs less loss than 0.8).
     let (alone_first, alone_dropped) = (estimate(format!("{head}{first}")), estimate(format!("{head}{dropped}")));
     assert!(alone_first < one && one < alone_dropped, "{alone_first} < {one} < {alone_dropped}");
+}
+
+/// A plate test at 300 m/s compresses the model ball past R/2, where
+/// `kick bounce` flags its numbers as the law's, not a ball's; the fit
+/// used to report them silently. Its report now names that measurement
+/// with the δ_max `kick bounce` gives at the estimate (solvers apart, 1e-6),
+/// and a fit of the ordinary tests alone names none.
+#[test]
+fn a_fit_names_the_measurements_outside_the_laws_validity() {
+    let truth = plate_truth();
+    let speed = named(FitLevel::Bounce, "speed");
+    let conditions = vec![vec![(speed, 6.0)], vec![(speed, 19.2)], vec![(speed, 300.0)]];
+    let beta = named(FitLevel::Bounce, "shell_damping");
+    let start = truth.with(beta, 5000.0).unwrap();
+    let sigma = [(Observable::Restitution, 0.01)];
+    let observations = measurements(&Accurate::default(), &truth, &conditions, &sigma, None).unwrap();
+    let report = fit(&FitProblem { start, free: vec![beta], observations: observations.clone() }, &FitOptions::default()).unwrap();
+    assert_exact(&truth, &report);
+    let [outside] = &report.outside_validity[..] else { panic!("{:?}", report.outside_validity) };
+    assert_eq!((outside.measurement.as_str(), outside.outside.limit, outside.outside.largest), ("speed = 300", "R/2", 0.055));
+    let mut spec = truth.bounce.unwrap();
+    spec.set("speed", Value::Number(300.0)).unwrap();
+    spec.set("shell_damping", Value::Number(report.estimates[0].value)).unwrap();
+    let bounce = kick_bounce::run(&spec).unwrap();
+    let flagged = bounce.outside_validity.expect("kick bounce flags it");
+    assert!((outside.outside.max_compression / flagged.max_compression - 1.0).abs() < 1e-6, "{outside:?} vs {flagged:?}");
+    assert!(outside.to_string().starts_with("measurement `speed = 300`: outside the validity of law `shell`: δ_max = 0.20791 m exceeds R/2 = 0.055 m"), "{outside}");
+
+    let ordinary = Observations { measurements: observations.measurements[..2].to_vec(), ..observations };
+    let report = fit(&FitProblem { start, free: vec![beta], observations: ordinary }, &FitOptions::default()).unwrap();
+    assert!(report.outside_validity.is_empty(), "{:?}", report.outside_validity);
 }

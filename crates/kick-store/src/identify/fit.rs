@@ -264,6 +264,16 @@ impl Printable for DataFit {
     fn written(&self) -> &[PathBuf] {
         &self.written
     }
+    /// As `kick bounce`: printed whole, then an error (exit 1).
+    fn outside_validity(&self) -> Option<String> {
+        let outside = &self.report.outside_validity;
+        let first = outside.first()?;
+        let more = match outside.len() {
+            1 => String::new(),
+            n => format!(" (and {} more contacts of the fit)", n - 1),
+        };
+        Some(format!("a fit with a contact outside its law's validity at the estimate: {first}{more}"))
+    }
 }
 
 /// A fit report as a table: estimates, uncertainties, pulls, χ², correlations.
@@ -320,6 +330,9 @@ pub fn report_text(report: &FitReport, truth: &[(FitParameter, f64)]) -> String 
     let worst = report.residuals.iter().max_by(|a, b| a.weighted.abs().total_cmp(&b.weighted.abs()));
     if let Some(r) = worst {
         let _ = writeln!(w, "largest residual: {} = {} σ", r.label, sig(r.weighted));
+    }
+    for outside in &report.outside_validity {
+        let _ = writeln!(w, "status {}: {outside}", kick_core::Status::OutsideValidity.name());
     }
     w
 }
