@@ -416,8 +416,15 @@ impl Observations {
             return Err(IdentifyError::NoData);
         }
         self.validate_own()?;
-        for m in &self.measurements {
+        for (i, m) in self.measurements.iter().enumerate() {
             let named = |e: IdentifyError| IdentifyError::data(format!("measurement `{}`", m.name), e.to_string());
+            // Names label the residuals and the report's groups: one each.
+            if let Some(j) = self.measurements[..i].iter().position(|other| other.name == m.name) {
+                return Err(named(IdentifyError::data(
+                    "name",
+                    format!("measurements {j} and {i} are both called so; give each its own name"),
+                )));
+            }
             if m.observations.is_empty() {
                 return Err(named(IdentifyError::NoData));
             }
@@ -811,6 +818,14 @@ impl FitSpec {
         let mut measurements = Vec::with_capacity(spec.measurement.len());
         for (i, m) in spec.measurement.iter().enumerate() {
             let label = m.name.clone().unwrap_or_else(|| format!("measurement[{i}]"));
+            if let Some(j) = measurements.iter().position(|other: &Measurement| other.name == label) {
+                return Err(at.error(
+                    Section::Measurement(i),
+                    "name",
+                    &format!("measurement[{i}].name"),
+                    format!("`{label}` names measurement[{j}] already: names label the residuals and the report, give each its own"),
+                ));
+            }
             let mut conditions = Vec::new();
             for (key, &value) in &m.conditions {
                 let what = format!("measurement[{i}].{key}");

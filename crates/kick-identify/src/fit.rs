@@ -546,9 +546,10 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
         theta0.push(theta);
     }
     // After the per-parameter checks, which name the more specific problem.
-    let (observations, parameters) = (problem.observations.len(), problem.free.len());
+    let (observations, parameters) = (distinct_observations(problem)?, problem.free.len());
     if determined && observations < parameters {
-        return Err(IdentifyError::UnderDetermined { observations, parameters });
+        let repeats = problem.observations.len() - observations;
+        return Err(IdentifyError::UnderDetermined { observations, parameters, repeats });
     }
     let (observed, sigma, labels) = flatten(&problem.observations);
     let lm_problem = Problem {
@@ -680,6 +681,46 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
     };
     check_finite(&report)?;
     Ok(report)
+}
+
+/// An observation as the model predicts it: a scalar, or a history's channel at a time.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Observed {
+    Scalar(crate::data::Observable),
+    Sample(crate::data::Channel, u64),
+}
+
+/// How many of the observations the model could predict differently: those
+/// that observe the same quantity (an observable, a channel at a time) at
+/// the same conditions count once. A careful user repeats a test to sharpen
+/// its value, not to determine a second parameter from it, and the model
+/// gives every repeat the same prediction: identical or conflicting, they
+/// fix one number. Conditions are the same when the model point they give
+/// at the start is (what the normal phase does not see, as a bounce's
+/// friction, does not tell them apart). Repeats still count in χ², s² and
+/// the degrees of freedom, as replicates should.
+pub fn distinct_observations(problem: &FitProblem) -> Result<usize, IdentifyError> {
+    let mut points: Vec<ModelPoint> = Vec::new();
+    let mut seen = Vec::with_capacity(problem.observations.len());
+    let own = std::iter::once(Ok((problem.start, &problem.observations)));
+    let measured = problem.observations.measurements.iter().map(|m| m.at(&problem.start).map(|point| (point, &m.observations)));
+    for context in own.chain(measured) {
+        let (point, observations) = context?;
+        let same = |p: &ModelPoint| p.scenario == point.scenario && p.time_offset == point.time_offset;
+        let group = points.iter().position(same).unwrap_or_else(|| {
+            points.push(point);
+            points.len() - 1
+        });
+        seen.extend(observations.scalars.iter().map(|s| (group, Observed::Scalar(s.observable))));
+        if let Some(h) = &observations.history {
+            for (channel, _) in &h.data.channels {
+                seen.extend(h.data.times.iter().map(|t| (group, Observed::Sample(*channel, t.to_bits()))));
+            }
+        }
+    }
+    seen.sort_unstable();
+    seen.dedup();
+    Ok(seen.len())
 }
 
 /// χ² = Σ r², refused when it overflows (residuals beyond ~1e154).

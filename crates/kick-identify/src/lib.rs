@@ -61,11 +61,17 @@ pub enum IdentifyError {
     Data { source_name: String, message: String },
     #[error("the fit stopped without converging: {0}")]
     NotConverged(String),
+    /// `observations`: the distinct ones; `repeats`: those that repeat an
+    /// observable at conditions already observed ([`fit::distinct_observations`]).
     #[error(
-        "under-determined fit: more free parameters ({parameters}) than observations ({observations}); \
-         fix some parameters or add observations"
+        "under-determined fit: more free parameters ({parameters}) than observations ({observations}){}; \
+         fix some parameters or add observations",
+        if *.repeats == 0 { String::new() } else {
+            format!(" at distinct conditions ({} more repeat one at the same conditions: they sharpen it, they determine no \
+                     other parameter)", .repeats)
+        }
     )]
-    UnderDetermined { observations: usize, parameters: usize },
+    UnderDetermined { observations: usize, parameters: usize, repeats: usize },
     #[error("non-finite {quantity} in the fit: {reason}")]
     NonFinite { quantity: &'static str, reason: String },
     /// A history fit whose contact explains the data no better than none

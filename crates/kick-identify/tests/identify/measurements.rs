@@ -284,9 +284,59 @@ fn a_fit_names_the_measurements_outside_the_laws_validity() {
     let bounce = kick_bounce::run(&spec).unwrap();
     let flagged = bounce.outside_validity.expect("kick bounce flags it");
     assert!((outside.outside.max_compression / flagged.max_compression - 1.0).abs() < 1e-6, "{outside:?} vs {flagged:?}");
-    assert!(outside.to_string().starts_with("measurement `speed = 300`: outside the validity of law `shell`: δ_max = 0.20791 m exceeds R/2 = 0.055 m"), "{outside}");
+    assert!(
+        outside
+            .to_string()
+            .starts_with("measurement `speed = 300`: outside the validity of law `shell`: δ_max = 0.20791 m exceeds R/2 = 0.055 m"),
+        "{outside}"
+    );
 
     let ordinary = Observations { measurements: observations.measurements[..2].to_vec(), ..observations };
     let report = fit(&FitProblem { start, free: vec![beta], observations: ordinary }, &FitOptions::default()).unwrap();
     assert!(report.outside_validity.is_empty(), "{:?}", report.outside_validity);
+}
+
+/// Two free parameters and one plate test are refused as under-determined;
+/// the same test twice (identical, or with a conflicting value) used to
+/// pass as two observations. It is one observable at one set of conditions:
+/// counted once, refused the same, saying that one repeats the other. A
+/// repeat that differs only in what the normal phase does not see (the
+/// plate's friction) is at the same conditions; a name given twice is refused.
+#[test]
+fn repeats_at_the_same_conditions_count_once() {
+    let head =
+        "level = \"bounce\"\nfree = [\"shell_damping\", \"shell_stiffness\"]\n[bounce]\nshell_damping = 5000.0\nshell_stiffness = 2000.0\n";
+    let test = |name: &str, conditions: &str, e: f64| {
+        format!("[[measurement]]\nname = \"{name}\"\n{conditions}\n[[measurement.scalar]]\nobservable = \"restitution\"\nvalue = {e}\nsigma = 0.01\n")
+    };
+    let refused = |text: String| {
+        let file = Temp::new("repeats.toml", &text);
+        let (spec, observations) = FitSpec::load(&file.0).unwrap();
+        let problem = FitProblem { start: spec.start("repeats.toml").unwrap(), free: spec.free_parameters().unwrap(), observations };
+        fit(&problem, &FitOptions::default()).unwrap_err()
+    };
+    use kick_identify::IdentifyError::UnderDetermined;
+    assert_eq!(
+        refused(format!("{head}{}", test("a", "speed = 6.264", 0.84))),
+        UnderDetermined { observations: 1, parameters: 2, repeats: 0 }
+    );
+    for second in [test("b", "speed = 6.264", 0.84), test("b", "speed = 6.264", 0.70), test("b", "speed = 6.264\nfriction = 0.3", 0.84)] {
+        let e = refused(format!("{head}{}{second}", test("a", "speed = 6.264", 0.84)));
+        assert_eq!(e, UnderDetermined { observations: 1, parameters: 2, repeats: 1 }, "{second}");
+        assert!(e.to_string().contains("observations (1) at distinct conditions (1 more repeat one at the same conditions"), "{e}");
+    }
+    // At another speed the second test is an observation of its own.
+    let file = Temp::new("repeats.toml", &format!("{head}{}{}", test("a", "speed = 6.264", 0.84), test("b", "speed = 12.0", 0.8)));
+    let (spec, observations) = FitSpec::load(&file.0).unwrap();
+    let problem = FitProblem { start: spec.start("repeats.toml").unwrap(), free: spec.free_parameters().unwrap(), observations };
+    assert_eq!(kick_identify::fit::distinct_observations(&problem).unwrap(), 2);
+
+    let file = Temp::new("repeats.toml", &format!("{head}{}{}", test("a", "speed = 6.264", 0.84), test("a", "speed = 12.0", 0.8)));
+    let e = FitSpec::load(&file.0).unwrap_err().to_string();
+    assert!(e.starts_with(&format!("{}:14: `measurement[1].name`: `a` names measurement[0] already", file.0.display())), "{e}");
+    // Unnamed, a measurement is `measurement[i]`: a name may not take that either.
+    let unnamed = test("x", "speed = 12.0", 0.8).replace("name = \"x\"\n", "");
+    let file = Temp::new("repeats.toml", &format!("{head}{}{unnamed}", test("measurement[1]", "speed = 6.264", 0.84)));
+    let e = FitSpec::load(&file.0).unwrap_err().to_string();
+    assert!(e.contains("`measurement[1].name`: `measurement[1]` names measurement[0] already"), "{e}");
 }
