@@ -109,6 +109,17 @@ fn fit_data_refuses_bad_input_by_name() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("h.csv:3") && err.contains("`oops` is not a number"), "{err}");
 
+    // A misspelt truth: the file, its line and the key's path.
+    std::fs::write(
+        &spec,
+        "free = [\"stiffness\"]\n[[scalar]]\nobservable = \"v_ball_out\"\nvalue = 30.0\nsigma = 0.01\n[truth]\nstifness = 4e5\n",
+    )
+    .unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains(&format!("{}:7: `truth.stifness`: unknown parameter `stifness`", spec.display())), "{err}");
+
     let out = kick(&["fit", "data", dir.join("missing.toml").to_str().unwrap()]);
     assert!(!out.status.success());
     std::fs::remove_dir_all(&dir).ok();

@@ -340,3 +340,90 @@ fn repeats_at_the_same_conditions_count_once() {
     let e = FitSpec::load(&file.0).unwrap_err().to_string();
     assert!(e.contains("`measurement[1].name`: `measurement[1]` names measurement[0] already"), "{e}");
 }
+
+/// The 1-based line of the `nth` line of `text` that contains `needle`.
+fn line_of(text: &str, needle: &str, nth: usize) -> usize {
+    text.lines().enumerate().filter(|(_, l)| l.contains(needle)).nth(nth).unwrap().0 + 1
+}
+
+/// `[truth]`, `[bounce]` and `[[measurement]]` errors name the file, the
+/// key's path and the measurement's index: a truth for a fixed parameter
+/// (once accepted and never used) and a misspelt one (once "unknown
+/// parameter" alone), a law in `[bounce]` (once serde's "did not match any
+/// variant of untagged enum GivenValue"), a vector condition (once no
+/// index), and a measurement's history file, sigmas and table (once no file
+/// nor index).
+#[test]
+fn truth_bounce_and_measurement_errors_name_file_key_and_index() {
+    let cases: Vec<(String, &str, String)> = vec![
+        (
+            format!("{GOOD}[truth]\nshell_stiffness = 3.0\n"),
+            "shell_stiffness = 3.0",
+            "`truth.shell_stiffness`: `shell_stiffness` is not free".into(),
+        ),
+        (
+            format!("{GOOD}[truth]\nshell_dampng = 3.0\n"),
+            "shell_dampng",
+            "`truth.shell_dampng`: unknown parameter `shell_dampng`: did you mean `shell_damping`?".into(),
+        ),
+    ];
+    for (text, needle, says) in cases {
+        let file = Temp::new("bad.toml", &text);
+        let e = FitSpec::load(&file.0).unwrap_err().to_string();
+        let at = format!("{}:{}: {says}", file.0.display(), line_of(&text, needle, 0));
+        assert!(e.starts_with(&at), "expected {at} in: {e}");
+    }
+    // Without the file, the spec alone still refuses them by key.
+    let spec = FitSpec::parse(&format!("{GOOD}[truth]\nshell_stiffness = 3.0\n"), "spec").unwrap();
+    assert!(spec.truth().unwrap_err().to_string().starts_with("truth.shell_stiffness: `shell_stiffness` is not free"));
+    assert_eq!(FitSpec::parse(&format!("{GOOD}[truth]\nshell_damping = 3.0\n"), "spec").unwrap().truth().unwrap().len(), 1);
+
+    // Parse errors: the file, the parser's line, the key with the index.
+    let parsed = |text: String, says: &str, line: usize| {
+        let file = Temp::new("bad.toml", &text);
+        let e = FitSpec::load(&file.0).unwrap_err().to_string();
+        let at = format!("{}: ", file.0.display());
+        assert!(
+            e.starts_with(&at) && e.contains(says) && e.contains(&format!("at line {line},")),
+            "expected {at}, {says}, line {line} in: {e}"
+        );
+    };
+    let text = GOOD.replacen("shell_damping = 3000.0", "shell_damping = 3000.0\nlaw = \"power-law\"", 1);
+    parsed(text, "`bounce.law`: the contact law goes at the top level: law = \"...\"", 3);
+    let text = GOOD.replacen("speed = 19.2", "speed = 19.2\nspin = [0, 10, 0]", 1);
+    parsed(text.clone(), "`measurement[1].spin`: a measurement's conditions are numbers", line_of(&text, "[[measurement]]", 1));
+    let text = GOOD.replacen("observable = \"contact_time\"", "observable = \"bounce_height\"", 1);
+    parsed(text.clone(), "`measurement[1].scalar[0]`: TOML parse error", line_of(&text, "bounce_height", 0));
+
+    // A measurement's history: its table's line, `measurement[i].history.file|sigma`, the data file's own place.
+    let csv = Temp::new("h.csv", "time,force\n0,0\n1e-3,oops\n");
+    let kick = |history: &str| {
+        format!(
+            "free = [\"stiffness\"]\n[[measurement]]\nfoot_speed = 20.0\n[[measurement.scalar]]\nobservable = \"v_ball_out\"\nvalue = 26.0\nsigma = 0.1\n\
+             [[measurement]]\nfoot_speed = 22.0\n[measurement.history]\n{history}\n"
+        )
+    };
+    for (history, says) in [
+        ("file = \"missing.csv\"\nsigma = { force = 10.0 }", "`measurement[1].history.file`: ".to_string()),
+        (
+            "file = \"h.csv\"\nsigma = { force = 10.0 }",
+            format!("`measurement[1].history.file`: {}:3: column `force`: `oops` is not a number", csv.0.display()),
+        ),
+    ] {
+        let text = kick(history);
+        let file = Temp::new("bad.toml", &text);
+        let e = FitSpec::load(&file.0).unwrap_err().to_string();
+        let at = format!("{}:{}: {says}", file.0.display(), line_of(&text, "[measurement.history]", 0));
+        assert!(e.starts_with(&at), "expected {at} in: {e}");
+    }
+    std::fs::write(&csv.0, "time,force\n0,0\n1e-3,5\n").unwrap();
+    for (sigma, says) in [
+        ("forse = 10.0", "unknown history column `forse`: expected time and any of force"),
+        ("force = 10.0, compression = 1e-4", "sigma given for `compression`, which the data do not have"),
+    ] {
+        let file = Temp::new("bad.toml", &kick(&format!("file = \"h.csv\"\nsigma = {{ {sigma} }}")));
+        let e = FitSpec::load(&file.0).unwrap_err().to_string();
+        assert!(e.starts_with(&format!("{}:10: `measurement[1].history.sigma`: {says}", file.0.display())), "{e}");
+    }
+    parsed(kick("file = \"h.csv\"\nsigma = { force = 10.0 }\nbogus = 1"), "`measurement[1].history`: TOML parse error", 13);
+}
