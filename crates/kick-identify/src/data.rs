@@ -416,8 +416,15 @@ impl Observations {
             return Err(IdentifyError::NoData);
         }
         self.validate_own()?;
-        for m in &self.measurements {
+        for (i, m) in self.measurements.iter().enumerate() {
             let named = |e: IdentifyError| IdentifyError::data(format!("measurement `{}`", m.name), e.to_string());
+            // Names label the residuals and the report's groups: one each.
+            if let Some(j) = self.measurements[..i].iter().position(|other| other.name == m.name) {
+                return Err(named(IdentifyError::data(
+                    "name",
+                    format!("measurements {j} and {i} are both called so; give each its own name"),
+                )));
+            }
             if m.observations.is_empty() {
                 return Err(named(IdentifyError::NoData));
             }
@@ -470,12 +477,102 @@ pub struct HistorySpec {
 
 /// A value of a declared parameter in a specification: a number, three
 /// numbers or a switch (a bounce's `spin` is three).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum GivenValue {
     Number(f64),
     Vector([f64; 3]),
     Switch(bool),
+}
+
+/// What a [`GivenValue`] may be, for error messages.
+const GIVEN_VALUE: &str = "a number, three numbers [x, y, z] or true/false";
+
+/// By hand, not untagged: serde's untagged error ("data did not match any
+/// variant") says neither what was found nor what would do.
+impl<'de> Deserialize<'de> for GivenValue {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Any;
+        impl<'de> serde::de::Visitor<'de> for Any {
+            type Value = GivenValue;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str(GIVEN_VALUE)
+            }
+            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<GivenValue, E> {
+                Ok(GivenValue::Number(v))
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<GivenValue, E> {
+                Ok(GivenValue::Number(v as f64))
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<GivenValue, E> {
+                Ok(GivenValue::Number(v as f64))
+            }
+            fn visit_bool<E: serde::de::Error>(self, v: bool) -> Result<GivenValue, E> {
+                Ok(GivenValue::Switch(v))
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<GivenValue, A::Error> {
+                use serde::de::Error as _;
+                let mut x = [0.0; 3];
+                for (k, slot) in x.iter_mut().enumerate() {
+                    *slot = seq.next_element()?.ok_or_else(|| A::Error::invalid_length(k, &self))?;
+                }
+                if seq.next_element::<f64>()?.is_some() {
+                    return Err(A::Error::invalid_length(4, &self));
+                }
+                Ok(GivenValue::Vector(x))
+            }
+        }
+        deserializer.deserialize_any(Any)
+    }
+}
+
+/// The `[bounce]` table, each value's error naming its key (`bounce.law`).
+fn bounce_table<'de, D: serde::Deserializer<'de>>(deserializer: D) -> Result<Option<BTreeMap<String, GivenValue>>, D::Error> {
+    struct Table;
+    impl<'de> serde::de::Visitor<'de> for Table {
+        type Value = BTreeMap<String, GivenValue>;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("a table of `kick bounce`'s parameters and their values")
+        }
+        fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+            use serde::de::Error as _;
+            let mut table = BTreeMap::new();
+            while let Some(key) = map.next_key::<String>()? {
+                let value: GivenValue = map.next_value().map_err(|_| {
+                    // The law is chosen once for the fit, not as a value of the ball.
+                    A::Error::custom(match key.as_str() {
+                        "law" => "`bounce.law`: the contact law goes at the top level: law = \"...\"".to_string(),
+                        _ => format!("`bounce.{key}`: expected {GIVEN_VALUE}"),
+                    })
+                })?;
+                if table.insert(key.clone(), value).is_some() {
+                    return Err(A::Error::custom(format!("`bounce.{key}`: given twice")));
+                }
+            }
+            Ok(table)
+        }
+    }
+    deserializer.deserialize_map(Table).map(Some)
+}
+
+/// The `[[measurement]]` tables, each parsed knowing its index, so that its
+/// errors name `measurement[i]`.
+fn measurement_tables<'de, D: serde::Deserializer<'de>>(deserializer: D) -> Result<Vec<MeasurementSpec>, D::Error> {
+    struct Tables;
+    impl<'de> serde::de::Visitor<'de> for Tables {
+        type Value = Vec<MeasurementSpec>;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("an array of measurements")
+        }
+        fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+            let mut out = Vec::new();
+            while let Some(m) = seq.next_element_seed(MeasurementKeys(Some(out.len())))? {
+                out.push(m);
+            }
+            Ok(out)
+        }
+    }
+    deserializer.deserialize_seq(Tables)
 }
 
 impl From<GivenValue> for kick_core::parameters::Value {
@@ -505,34 +602,61 @@ pub struct MeasurementSpec {
 
 impl<'de> Deserialize<'de> for MeasurementSpec {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct Keys;
-        impl<'de> serde::de::Visitor<'de> for Keys {
-            type Value = MeasurementSpec;
-            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                f.write_str("a measurement: `name`, `scalar`, `history` and the values of the parameters it was taken at")
-            }
-            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<MeasurementSpec, A::Error> {
-                use serde::de::Error as _;
-                let mut m = MeasurementSpec::default();
-                while let Some(key) = map.next_key::<String>()? {
-                    match key.as_str() {
-                        "name" => m.name = Some(map.next_value()?),
-                        "scalar" => m.scalar = map.next_value()?,
-                        "history" => m.history = Some(map.next_value()?),
-                        _ => {
-                            let value: f64 = map.next_value().map_err(|e| A::Error::custom(format!("`{key}`: {e}")))?;
-                            if m.conditions.insert(key.clone(), value).is_some() {
-                                return Err(A::Error::custom(format!("duplicate key `{key}`")));
-                            }
-                        }
-                    }
-                }
-                Ok(m)
-            }
-        }
-        deserializer.deserialize_map(Keys)
+        serde::de::DeserializeSeed::deserialize(MeasurementKeys(None), deserializer)
     }
 }
+
+/// Reads a `[[measurement]]`, its errors naming `measurement[i].KEY` when
+/// its index is known, `KEY` otherwise.
+struct MeasurementKeys(Option<usize>);
+
+impl<'de> serde::de::DeserializeSeed<'de> for MeasurementKeys {
+    type Value = MeasurementSpec;
+    fn deserialize<D: serde::Deserializer<'de>>(self, deserializer: D) -> Result<MeasurementSpec, D::Error> {
+        deserializer.deserialize_map(self)
+    }
+}
+
+impl<'de> serde::de::Visitor<'de> for MeasurementKeys {
+    type Value = MeasurementSpec;
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a measurement: `name`, `scalar`, `history` and the values of the parameters it was taken at")
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<MeasurementSpec, A::Error> {
+        use serde::de::Error as _;
+        let at = |key: &str| match self.0 {
+            Some(i) => format!("measurement[{i}].{key}"),
+            None => key.to_string(),
+        };
+        let mut m = MeasurementSpec::default();
+        while let Some(key) = map.next_key::<String>()? {
+            // The nested tables' errors keep the parser's place (its line; `FitSpec::parse` adds the path).
+            match key.as_str() {
+                "name" => m.name = Some(map.next_value()?),
+                "scalar" => m.scalar = map.next_value()?,
+                "history" => m.history = Some(map.next_value()?),
+                _ => {
+                    let value = match map.next_value::<GivenValue>() {
+                        Ok(GivenValue::Number(x)) => x,
+                        _ => {
+                            return Err(A::Error::custom(format!(
+                                "`{}`: a measurement's conditions are numbers (the scalar parameters it was taken at)",
+                                at(&key)
+                            )))
+                        }
+                    };
+                    if m.conditions.insert(key.clone(), value).is_some() {
+                        return Err(A::Error::custom(format!("`{}`: given twice", at(&key))));
+                    }
+                }
+            }
+        }
+        Ok(m)
+    }
+}
+
+/// The bounce keys that give the impact speed, one or the other.
+const IMPACT_SPEED: [&str; 2] = ["speed", "drop_height"];
 
 /// A fit specification file (see the module documentation).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -556,19 +680,57 @@ pub struct FitSpec {
     pub scenario: ScenarioSpec,
     /// The bounce's known values and starting guesses (level `bounce`), by
     /// `kick bounce`'s parameter names.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "bounce_table")]
     pub bounce: Option<BTreeMap<String, GivenValue>>,
     #[serde(default)]
     pub scalar: Vec<ScalarObservation>,
     #[serde(default)]
     pub history: Option<HistorySpec>,
     /// Measurements, each at its own conditions.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty", deserialize_with = "measurement_tables")]
     pub measurement: Vec<MeasurementSpec>,
     /// The true values, when known (synthetic data): `kick fit data`
     /// reports (estimate − truth)/σ for the free parameters named here.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub truth: Option<BTreeMap<String, f64>>,
+}
+
+/// The table of a TOML text that holds byte `offset`, as a fit error names
+/// it: `measurement[1]`, `measurement[1].scalar[0]`, `measurement[1].history`,
+/// `scalar[0]`, `bounce`; empty at the top level.
+fn table_path(text: &str, offset: usize) -> String {
+    let (mut path, mut measurements, mut scalars, mut own_scalars) = (String::new(), 0, 0, 0);
+    let mut start = 0;
+    for line in text.split_inclusive('\n') {
+        if start > offset {
+            break;
+        }
+        start += line.len();
+        let line = line.trim();
+        if let Some(header) = line.strip_prefix("[[").and_then(|l| l.split("]]").next()) {
+            path = match header.trim() {
+                "measurement" => {
+                    (measurements, scalars) = (measurements + 1, 0);
+                    format!("measurement[{}]", measurements - 1)
+                }
+                "measurement.scalar" => {
+                    scalars += 1;
+                    format!("measurement[{}].scalar[{}]", measurements.max(1) - 1, scalars - 1)
+                }
+                "scalar" => {
+                    own_scalars += 1;
+                    format!("scalar[{}]", own_scalars - 1)
+                }
+                other => other.to_string(),
+            };
+        } else if let Some(header) = line.strip_prefix('[').and_then(|l| l.split(']').next()) {
+            path = match header.trim().strip_prefix("measurement.") {
+                Some(key) => format!("measurement[{}].{key}", measurements.max(1) - 1),
+                None => header.trim().to_string(),
+            };
+        }
+    }
+    path
 }
 
 /// Where a key of a specification is: `file:line` in a TOML text (the first
@@ -598,11 +760,20 @@ impl Locator<'_> {
         let mut measurements = 0;
         let mut scalars = 0;
         let mut first_scalar_line = None;
+        // A key a measurement does not set: its `[[measurement]]` header's line.
+        let mut header_line = None;
         for (i, raw) in text.lines().enumerate() {
             let line = raw.trim();
             if let Some(header) = line.strip_prefix("[[").and_then(|l| l.split("]]").next()) {
                 let header = header.trim();
+                // A top-level array of tables (`[[scalar]]`): its first header's line.
+                if matches!(section, Section::Top) && header == key {
+                    return Some(i + 1);
+                }
                 if header == "measurement" {
+                    if matches!(section, Section::Measurement(m) if m == measurements) {
+                        header_line = Some(i + 1);
+                    }
                     measurement = Some(measurements);
                     measurements += 1;
                     scalars = 0;
@@ -620,6 +791,12 @@ impl Locator<'_> {
             if let Some(header) = line.strip_prefix('[').and_then(|l| l.split(']').next()) {
                 // A top-level key that is a table: its header's line.
                 if matches!(section, Section::Top) && header.trim() == key {
+                    return Some(i + 1);
+                }
+                // A measurement's key that is a table (`[measurement.history]`): its header's line.
+                if matches!(section, Section::Measurement(m) if measurement == Some(m))
+                    && header.trim().strip_prefix("measurement.") == Some(key)
+                {
                     return Some(i + 1);
                 }
                 (table, measurement, scalar) = (header.trim().into(), None, None);
@@ -642,7 +819,7 @@ impl Locator<'_> {
                 return Some(i + 1);
             }
         }
-        first_scalar_line
+        first_scalar_line.or(header_line)
     }
 
     /// A data error at `key` of `section`, named `what`.
@@ -656,12 +833,20 @@ impl Locator<'_> {
 }
 
 impl FitSpec {
-    /// Parse TOML, or JSON when the text starts with `{`.
+    /// Parse TOML, or JSON when the text starts with `{`. A TOML error
+    /// names the table it is in (`measurement[1].history`) before the
+    /// parser's line, unless its message names the key already.
     pub fn parse(text: &str, source_name: &str) -> Result<FitSpec, IdentifyError> {
         if text.trim_start().starts_with('{') {
             serde_json::from_str(text).map_err(|e| IdentifyError::data(source_name, e.to_string()))
         } else {
-            toml::from_str(text).map_err(|e| IdentifyError::data(source_name, e.to_string()))
+            toml::from_str(text).map_err(|e| {
+                let path = e.span().map(|span| table_path(text, span.start)).unwrap_or_default();
+                match path.is_empty() || e.message().starts_with('`') {
+                    true => IdentifyError::data(source_name, e.to_string()),
+                    false => IdentifyError::data(source_name, format!("`{path}`: {e}")),
+                }
+            })
         }
     }
 
@@ -721,16 +906,28 @@ impl FitSpec {
                     spec.set(key, value.into())
                         .map_err(|e| at.error(Section::Table("bounce"), key, &format!("bounce.{key}"), e.to_string()))?;
                 }
-                // Without a speed of its own, the first measurement's stands in.
-                if spec.given("speed").is_none() && spec.given("drop_height").is_none() {
-                    let given = self.measurement.iter().find_map(|m| {
-                        m.conditions.get("speed").map(|&v| ("speed", v)).or(m.conditions.get("drop_height").map(|&v| ("drop_height", v)))
-                    });
-                    let (name, value) = given.ok_or_else(|| {
+                // Without an impact speed in [bounce], every observation needs
+                // one of its own: the top-level [[scalar]]s have none to take
+                // (a measurement's would make the fit depend on their order),
+                // each measurement must give its own, and one of theirs only
+                // completes the start (each replaces it, `ModelPoint::with`).
+                if IMPACT_SPEED.iter().all(|k| spec.given(k).is_none()) {
+                    let own = |m: &MeasurementSpec| IMPACT_SPEED.iter().find_map(|&k| m.conditions.get(k).map(|&v| (k, v)));
+                    if !self.scalar.is_empty() {
+                        return Err(at.error(
+                            Section::Top,
+                            "scalar",
+                            "scalar",
+                            "a top-level [[scalar]] is taken at [bounce]'s conditions, which give no impact speed: give \
+                             `speed` (or `drop_height`) in [bounce], or move it into a [[measurement]] with its own",
+                        ));
+                    }
+                    // A measurement without one is refused where it is read (`load`).
+                    let (name, value) = self.measurement.iter().find_map(own).ok_or_else(|| {
                         at.error(
                             Section::Table("bounce"),
                             "speed",
-                            "speed",
+                            "bounce.speed",
                             "give the impact speed (or drop_height) in [bounce] or in each [[measurement]]",
                         )
                     })?;
@@ -748,21 +945,32 @@ impl FitSpec {
         self.free.iter().map(|name| FitParameter::from_name_at(level, name)).collect()
     }
 
-    /// The `[truth]` table by parameter; names are checked, values must be finite.
+    /// The `[truth]` table by parameter; names are checked (free
+    /// parameters only), values must be finite.
     pub fn truth(&self) -> Result<Vec<(FitParameter, f64)>, IdentifyError> {
         let Some(truth) = &self.truth else { return Ok(Vec::new()) };
         let level = self.fit_level()?;
         truth
             .iter()
             .map(|(name, &value)| {
-                let p = FitParameter::from_name_at(level, name)?;
-                if value.is_finite() {
-                    Ok((p, value))
-                } else {
-                    Err(IdentifyError::data(format!("truth.{name}"), format!("{value} is not finite")))
-                }
+                self.truth_entry(level, name, value).map_err(|message| IdentifyError::data(format!("truth.{name}"), message))
             })
             .collect()
+    }
+
+    /// One `[truth]` entry, or why it is refused.
+    fn truth_entry(&self, level: FitLevel, name: &str, value: f64) -> Result<(FitParameter, f64), String> {
+        let p = FitParameter::from_name_at(level, name).map_err(|e| e.to_string())?;
+        // Only an estimate has a pull; a truth for a fixed parameter would go unused, unseen.
+        if !self.free.iter().any(|f| f == name) {
+            return Err(format!(
+                "`{name}` is not free: [truth] gives the true values of the free parameters, for their pulls (estimate − truth)/σ"
+            ));
+        }
+        if !value.is_finite() {
+            return Err(format!("{value} is not finite"));
+        }
+        Ok((p, value))
     }
 
     /// Read the specification and the history files it names (relative to it).
@@ -777,8 +985,12 @@ impl FitSpec {
         for (i, free) in spec.free.iter().enumerate() {
             FitParameter::from_name_at(level, free).map_err(|e| at.error(Section::Top, "free", &format!("free[{i}]"), e.to_string()))?;
         }
+        for (key, &value) in spec.truth.iter().flatten() {
+            spec.truth_entry(level, key, value)
+                .map_err(|message| at.error(Section::Table("truth"), key, &format!("truth.{key}"), message))?;
+        }
         let start = spec.start_located(&at)?;
-        let history = spec.history.as_ref().map(|h| load_history(dir, h)).transpose()?;
+        let history = spec.history.as_ref().map(|h| load_history(dir, h, &at, Section::Top, "history")).transpose()?;
         for s in &spec.scalar {
             if !s.observable.at(level) {
                 return Err(at.error(Section::Top, "scalar", s.observable.name(), format!("not an observable of a {} fit", level.name())));
@@ -787,6 +999,14 @@ impl FitSpec {
         let mut measurements = Vec::with_capacity(spec.measurement.len());
         for (i, m) in spec.measurement.iter().enumerate() {
             let label = m.name.clone().unwrap_or_else(|| format!("measurement[{i}]"));
+            if let Some(j) = measurements.iter().position(|other: &Measurement| other.name == label) {
+                return Err(at.error(
+                    Section::Measurement(i),
+                    "name",
+                    &format!("measurement[{i}].name"),
+                    format!("`{label}` names measurement[{j}] already: names label the residuals and the report, give each its own"),
+                ));
+            }
             let mut conditions = Vec::new();
             for (key, &value) in &m.conditions {
                 let what = format!("measurement[{i}].{key}");
@@ -796,6 +1016,18 @@ impl FitSpec {
                 }
                 p.def().check(value).map_err(|e| at.error(Section::Measurement(i), key, &what, e.to_string()))?;
                 conditions.push((p, value));
+            }
+            let gives_speed = |k: &String| IMPACT_SPEED.contains(&k.as_str());
+            if level == FitLevel::Bounce
+                && !spec.bounce.iter().flat_map(|b| b.keys()).any(gives_speed)
+                && !m.conditions.keys().any(gives_speed)
+            {
+                return Err(at.error(
+                    Section::Measurement(i),
+                    "speed",
+                    &format!("measurement[{i}].speed"),
+                    "no impact speed: give this measurement's `speed` (or `drop_height`), or one for all in [bounce]",
+                ));
             }
             for (j, s) in m.scalar.iter().enumerate() {
                 let what = format!("measurement[{i}].scalar[{j}]");
@@ -835,7 +1067,11 @@ impl FitSpec {
                     "a bounce fit takes scalars only",
                 ));
             }
-            let history = m.history.as_ref().map(|h| load_history(dir, h)).transpose()?;
+            let history = m
+                .history
+                .as_ref()
+                .map(|h| load_history(dir, h, &at, Section::Measurement(i), &format!("measurement[{i}].history")))
+                .transpose()?;
             let observations = Observations { scalars: m.scalar.clone(), history, measurements: Vec::new() };
             if observations.is_empty() {
                 return Err(at.error(
@@ -859,18 +1095,29 @@ impl FitSpec {
     }
 }
 
-/// A `[history]` table's file (relative to `dir`) with its sigmas.
-fn load_history(dir: &Path, h: &HistorySpec) -> Result<WeightedHistory, IdentifyError> {
+/// A `[history]` table's file (relative to `dir`) with its sigmas; errors
+/// name the specification's line of the table and `what` (`history`,
+/// `measurement[i].history`) with `.file` or `.sigma`, then the data file's
+/// own place.
+fn load_history(dir: &Path, h: &HistorySpec, at: &Locator, section: Section, what: &str) -> Result<WeightedHistory, IdentifyError> {
+    let err = |key: &str, e: IdentifyError| {
+        // The sigmas' own errors are called "history sigma": the key says it.
+        let message = match e {
+            IdentifyError::Data { source_name, message } if source_name == "history sigma" => message,
+            other => other.to_string(),
+        };
+        at.error(section, "history", &format!("{what}.{key}"), message)
+    };
     let file = dir.join(&h.file);
     let file_name = file.display().to_string();
-    let csv =
-        kick_core::input::read_text(&file, kick_core::input::MAX_DATA_BYTES).map_err(|e| IdentifyError::data(&file_name, e.to_string()))?;
-    let data = HistoryData::parse_csv(&csv, &file_name)?;
+    let csv = kick_core::input::read_text(&file, kick_core::input::MAX_DATA_BYTES)
+        .map_err(|e| err("file", IdentifyError::data(&file_name, e.to_string())))?;
+    let data = HistoryData::parse_csv(&csv, &file_name).map_err(|e| err("file", e))?;
     let mut sigma = BTreeMap::new();
     for (k, v) in &h.sigma {
-        sigma.insert(Channel::from_name(k)?, *v);
+        sigma.insert(Channel::from_name(k).map_err(|e| err("sigma", e))?, *v);
     }
-    WeightedHistory::new(data, sigma)
+    WeightedHistory::new(data, sigma).map_err(|e| err("sigma", e))
 }
 
 #[cfg(test)]

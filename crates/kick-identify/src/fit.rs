@@ -15,7 +15,8 @@
 //! the same in θ and in p.
 //!
 //! Refused: fewer observations than free parameters
-//! ([`IdentifyError::UnderDetermined`]), and any non-finite χ², estimate,
+//! ([`IdentifyError::UnderDetermined`]), a history whose fitted contact
+//! explains it no better than none ([`IdentifyError::NoContact`]), and any non-finite χ², estimate,
 //! uncertainty, correlation or singular value ([`IdentifyError::NonFinite`]):
 //! weighted residuals beyond ~1e154 overflow χ² even where the optimiser's
 //! own norm does not. How the optimiser stopped is a [`FitStop`], printed
@@ -26,7 +27,7 @@
 //! stops with [`FitStop::Cancelled`] at the best point evaluated so far.
 
 use crate::data::Observations;
-use crate::model::predict;
+use crate::model::{outside_validity, predict, without_contact};
 use crate::parameter::{Coordinate, FitParameter, ModelPoint};
 use crate::IdentifyError;
 use kick_compliant::Accurate;
@@ -189,10 +190,33 @@ pub struct FitReport {
     pub termination: String,
     pub converged: bool,
     pub evaluations: usize,
+    /// The contacts that, at the estimate, leave their law's validity
+    /// (`kick_core::validity`): the numbers fitted there are the law's,
+    /// not a ball's. Empty when every one holds.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub outside_validity: Vec<OutsideAt>,
     /// ∂r_i/∂θ_j at the estimate (weighted residuals, θ = ln p for log-space
     /// parameters), row-major; left out of serialized reports.
     #[serde(skip)]
     pub jacobian: Vec<Vec<f64>>,
+}
+
+/// A contact of a fit outside its law's validity at the estimate.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct OutsideAt {
+    /// The measurement's name; empty for the top-level observations.
+    pub measurement: String,
+    #[serde(flatten)]
+    pub outside: kick_core::OutsideValidity,
+}
+
+impl std::fmt::Display for OutsideAt {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.measurement.as_str() {
+            "" => write!(f, "{}", self.outside),
+            name => write!(f, "measurement `{name}`: {}", self.outside),
+        }
+    }
 }
 
 impl FitReport {
@@ -379,12 +403,26 @@ pub fn minimise(problem: &FitProblem, options: &FitOptions) -> Result<FitReport,
     fit_checked(problem, options, false, &|| false)
 }
 
+/// A fit's time is bounded: each residual records the model only over the
+/// data's span (`model::record_until`; at most `MAX_HISTORY_SAMPLES`), each
+/// Levenberg–Marquardt run makes at most patience × (n + 1) residual
+/// evaluations and as many Jacobians of 2n each, and there are at most
+/// 1 + 2 × [`MAX_ONSET_RESTARTS`] runs.
 fn fit_checked(
     problem: &FitProblem,
     options: &FitOptions,
     determined: bool,
     cancel: &dyn Fn() -> bool,
 ) -> Result<FitReport, IdentifyError> {
+    let report = fit_onsets(problem, options, determined, cancel)?;
+    if determined && problem.observations.has_history() && report.stop != FitStop::Cancelled {
+        check_contact(problem, options, &report)?;
+    }
+    Ok(report)
+}
+
+/// One run, then (t0 free, with a history) the onset restarts of [`fit`].
+fn fit_onsets(problem: &FitProblem, options: &FitOptions, determined: bool, cancel: &dyn Fn() -> bool) -> Result<FitReport, IdentifyError> {
     let mut best = fit_from(problem, options, determined, cancel)?;
     let (Some(index), Some(history)) =
         (problem.free.iter().position(|&p| p == FitParameter::TimeOffset), problem.observations.history.as_ref())
@@ -442,6 +480,47 @@ fn fit_checked(
     Ok(best)
 }
 
+/// How far, in standard deviations of χ²_n (n ± √(2n), what n free
+/// parameters gain on pure noise), a history fit's contact must lower χ²
+/// below no contact at all for the data to show one.
+pub const CONTACT_SIGNIFICANCE: f64 = 10.0;
+
+/// Refuse a history fit whose contact explains its samples no better than
+/// no contact at all (force and compression zero, the velocities before
+/// first touch): data sampled away from the contact, or a t0 the fit moved
+/// off it, leave estimates that are noise, not a kick.
+fn check_contact(problem: &FitProblem, options: &FitOptions, report: &FitReport) -> Result<(), IdentifyError> {
+    let mut point = problem.start;
+    for e in &report.estimates {
+        point = point.with(e.parameter, e.value)?;
+    }
+    let none = without_contact(&options.solver, &point, &problem.observations)?;
+    let (mut fitted, mut without, mut samples) = (0.0, 0.0, 0usize);
+    for (r, v) in report.residuals.iter().zip(&none) {
+        if let Some(v) = v {
+            fitted += r.weighted * r.weighted;
+            without += ((v - r.observed) / r.sigma).powi(2);
+            samples += 1;
+        }
+    }
+    let n = report.estimates.len() as f64;
+    // NaN or a gain within the noise: refused.
+    if samples == 0 || without - fitted > n + CONTACT_SIGNIFICANCE * (2.0 * n).sqrt() {
+        return Ok(());
+    }
+    let histories = std::iter::once(&problem.observations).chain(problem.observations.measurements.iter().map(|m| &m.observations));
+    let times: Vec<f64> =
+        histories.filter_map(|o| o.history.as_ref()).flat_map(|h| [h.data.times[0], h.data.times[h.data.times.len() - 1]]).collect();
+    Err(IdentifyError::NoContact {
+        time_offset: point.time_offset,
+        fitted,
+        without,
+        samples,
+        first: times.iter().copied().fold(f64::INFINITY, f64::min),
+        last: times.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+    })
+}
+
 /// One Levenberg–Marquardt run from `problem.start`; `determined` refuses
 /// fewer observations than free parameters.
 fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel: &dyn Fn() -> bool) -> Result<FitReport, IdentifyError> {
@@ -467,9 +546,10 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
         theta0.push(theta);
     }
     // After the per-parameter checks, which name the more specific problem.
-    let (observations, parameters) = (problem.observations.len(), problem.free.len());
+    let (observations, parameters) = (distinct_observations(problem)?, problem.free.len());
     if determined && observations < parameters {
-        return Err(IdentifyError::UnderDetermined { observations, parameters });
+        let repeats = problem.observations.len() - observations;
+        return Err(IdentifyError::UnderDetermined { observations, parameters, repeats });
     }
     let (observed, sigma, labels) = flatten(&problem.observations);
     let lm_problem = Problem {
@@ -522,6 +602,15 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
         (theta, residuals, Some(jacobian))
     };
     let point = solved.point(&theta)?;
+    // Judged as `kick bounce` and `kick simulate` judge a contact; not for a cancelled fit (more solves).
+    let outside_validity = if cancelled {
+        Vec::new()
+    } else {
+        outside_validity(&options.solver, &point, &problem.observations)?
+            .into_iter()
+            .map(|(measurement, outside)| OutsideAt { measurement, outside })
+            .collect()
+    };
 
     let m = residual_vector.len();
     let n = theta.len();
@@ -587,10 +676,51 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
         termination: stop.to_string(),
         converged,
         evaluations: report.number_of_evaluations,
+        outside_validity,
         jacobian: jacobian.map_or_else(Vec::new, |j| (0..m).map(|i| j.row(i).iter().copied().collect()).collect()),
     };
     check_finite(&report)?;
     Ok(report)
+}
+
+/// An observation as the model predicts it: a scalar, or a history's channel at a time.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Observed {
+    Scalar(crate::data::Observable),
+    Sample(crate::data::Channel, u64),
+}
+
+/// How many of the observations the model could predict differently: those
+/// that observe the same quantity (an observable, a channel at a time) at
+/// the same conditions count once. A careful user repeats a test to sharpen
+/// its value, not to determine a second parameter from it, and the model
+/// gives every repeat the same prediction: identical or conflicting, they
+/// fix one number. Conditions are the same when the model point they give
+/// at the start is (what the normal phase does not see, as a bounce's
+/// friction, does not tell them apart). Repeats still count in χ², s² and
+/// the degrees of freedom, as replicates should.
+pub fn distinct_observations(problem: &FitProblem) -> Result<usize, IdentifyError> {
+    let mut points: Vec<ModelPoint> = Vec::new();
+    let mut seen = Vec::with_capacity(problem.observations.len());
+    let own = std::iter::once(Ok((problem.start, &problem.observations)));
+    let measured = problem.observations.measurements.iter().map(|m| m.at(&problem.start).map(|point| (point, &m.observations)));
+    for context in own.chain(measured) {
+        let (point, observations) = context?;
+        let same = |p: &ModelPoint| p.scenario == point.scenario && p.time_offset == point.time_offset;
+        let group = points.iter().position(same).unwrap_or_else(|| {
+            points.push(point);
+            points.len() - 1
+        });
+        seen.extend(observations.scalars.iter().map(|s| (group, Observed::Scalar(s.observable))));
+        if let Some(h) = &observations.history {
+            for (channel, _) in &h.data.channels {
+                seen.extend(h.data.times.iter().map(|t| (group, Observed::Sample(*channel, t.to_bits()))));
+            }
+        }
+    }
+    seen.sort_unstable();
+    seen.dedup();
+    Ok(seen.len())
 }
 
 /// χ² = Σ r², refused when it overflows (residuals beyond ~1e154).

@@ -61,13 +61,28 @@ pub enum IdentifyError {
     Data { source_name: String, message: String },
     #[error("the fit stopped without converging: {0}")]
     NotConverged(String),
+    /// `observations`: the distinct ones; `repeats`: those that repeat an
+    /// observable at conditions already observed ([`fit::distinct_observations`]).
     #[error(
-        "under-determined fit: more free parameters ({parameters}) than observations ({observations}); \
-         fix some parameters or add observations"
+        "under-determined fit: more free parameters ({parameters}) than observations ({observations}){}; \
+         fix some parameters or add observations",
+        if *.repeats == 0 { String::new() } else {
+            format!(" at distinct conditions ({} more repeat one at the same conditions: they sharpen it, they determine no \
+                     other parameter)", .repeats)
+        }
     )]
-    UnderDetermined { observations: usize, parameters: usize },
+    UnderDetermined { observations: usize, parameters: usize, repeats: usize },
     #[error("non-finite {quantity} in the fit: {reason}")]
     NonFinite { quantity: &'static str, reason: String },
+    /// A history fit whose contact explains the data no better than none
+    /// ([`fit::CONTACT_SIGNIFICANCE`]): its estimates would be noise.
+    #[error(
+        "the history shows no contact: the fitted one (first touch at t0 = {} s) leaves chi-square {} over the \
+         {samples} history samples, no contact at all {}; the data run from {} s to {} s: check their times and time_offset",
+        kick_core::short(*.time_offset), kick_core::short(*.fitted), kick_core::short(*.without),
+        kick_core::short(*.first), kick_core::short(*.last)
+    )]
+    NoContact { time_offset: f64, fitted: f64, without: f64, samples: usize, first: f64, last: f64 },
 }
 
 impl IdentifyError {
@@ -87,7 +102,8 @@ impl IdentifyError {
             | IdentifyError::UnknownObservable { .. }
             | IdentifyError::UnknownChannel { .. }
             | IdentifyError::Data { .. }
-            | IdentifyError::UnderDetermined { .. } => Status::Refused,
+            | IdentifyError::UnderDetermined { .. }
+            | IdentifyError::NoContact { .. } => Status::Refused,
         }
     }
 

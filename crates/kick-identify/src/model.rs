@@ -6,7 +6,8 @@ use crate::data::{Channel, Observations};
 use crate::parameter::ModelPoint;
 use crate::IdentifyError;
 use kick_compliant::Accurate;
-use kick_core::{ContactLaw, History, Outcome, RecordingSolver, Sample, Scenario, Solver};
+use kick_core::{ContactLaw, History, Outcome, OutsideValidity, RecordingSolver, Sample, Scenario, Solver, Spacing};
+use std::ops::ControlFlow;
 
 /// Recording interval as a fraction of the undamped contact time: the
 /// cubic Hermite interpolation between recorded steps then has a relative
@@ -42,7 +43,8 @@ fn predict_own(solver: &Accurate, point: &ModelPoint, observations: &Observation
         }
         Some(history) => {
             let interval = scenario.elastic_contact_time() * RECORD_FRACTION;
-            let (outcome, recorded) = solver.solve_recorded(scenario, interval)?;
+            let (outcome, recorded) =
+                record_until(solver, scenario, interval, history.data.times.last().copied().unwrap_or(0.0) - point.time_offset)?;
             out.extend(observations.scalars.iter().map(|s| s.observable.value(&outcome)));
             let trajectory = Trajectory::new(scenario, &outcome, recorded)?;
             for (channel, _) in &history.data.channels {
@@ -51,6 +53,83 @@ fn predict_own(solver: &Accurate, point: &ModelPoint, observations: &Observation
         }
     }
     Ok(())
+}
+
+/// Where the model at `point` leaves its contact law's validity: the
+/// observations' own contact (labelled "") and each measurement's (by its
+/// name), those that have observations.
+pub fn outside_validity(
+    solver: &Accurate,
+    point: &ModelPoint,
+    observations: &Observations,
+) -> Result<Vec<(String, OutsideValidity)>, IdentifyError> {
+    let mut contexts = Vec::new();
+    if !observations.scalars.is_empty() || observations.history.is_some() {
+        contexts.push((String::new(), *point));
+    }
+    for m in &observations.measurements {
+        contexts.push((m.name.clone(), m.at(point)?));
+    }
+    let mut out = Vec::new();
+    for (label, at) in contexts {
+        if let Err(outside) = at.check_validity(&solver.solve(&at.scenario)?)? {
+            out.push((label, outside));
+        }
+    }
+    Ok(out)
+}
+
+/// What the histories would hold with no contact in the data: zero force
+/// and compression and the velocities before first touch, in [`predict`]'s
+/// order; `None` for a scalar (the contact's own, whatever t0).
+pub fn without_contact(solver: &Accurate, point: &ModelPoint, observations: &Observations) -> Result<Vec<Option<f64>>, IdentifyError> {
+    let mut out = Vec::with_capacity(observations.len());
+    without_contact_own(solver, point, observations, &mut out)?;
+    for m in &observations.measurements {
+        without_contact_own(solver, &m.at(point)?, &m.observations, &mut out)?;
+    }
+    Ok(out)
+}
+
+fn without_contact_own(
+    solver: &Accurate,
+    point: &ModelPoint,
+    observations: &Observations,
+    out: &mut Vec<Option<f64>>,
+) -> Result<(), IdentifyError> {
+    out.extend(observations.scalars.iter().map(|_| None));
+    let Some(history) = &observations.history else { return Ok(()) };
+    let scenario = &point.scenario;
+    // The first sample, at first touch, holds the velocities before it.
+    let (_, recorded) = record_until(solver, scenario, scenario.elastic_contact_time() * RECORD_FRACTION, 0.0)?;
+    let first = recorded.samples.first().ok_or_else(|| IdentifyError::data("model", "the solver recorded no samples"))?;
+    for (channel, _) in &history.data.channels {
+        let value = match channel {
+            Channel::Force | Channel::Compression => 0.0,
+            Channel::FootVelocity => first.foot_velocity,
+            Channel::BallVelocity => first.ball_velocity,
+        };
+        out.extend(history.data.times.iter().map(|_| Some(value)));
+    }
+    Ok(())
+}
+
+/// Samples `interval` apart up to model time `until` (the data's last time
+/// less t0) and one past it, then no more: a trial point whose contact
+/// outlasts the data (a soft, high-exponent law creeping apart for minutes)
+/// costs samples only over the data's span, where the whole contact cost up
+/// to `MAX_HISTORY_SAMPLES` each time (a second per residual, a fit of hours).
+fn record_until(solver: &Accurate, scenario: &Scenario, interval: f64, until: f64) -> Result<(Outcome, History), IdentifyError> {
+    let mut samples = Vec::new();
+    let streamed = solver.solve_streamed(scenario, Spacing::Interval(interval), &mut |s: &Sample| {
+        samples.push(*s);
+        if s.time > until {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    })?;
+    Ok((streamed.outcome, History { samples }))
 }
 
 /// A recorded contact, readable at any time: before first touch the initial
@@ -159,6 +238,32 @@ mod tests {
         for law in [kick_core::LawKind::PowerLaw, kick_core::LawKind::HuntCrossleyExact, kick_core::LawKind::KelvinVoigt] {
             interpolation_matches_for(Scenario::baseline().with_law(law, Some(0.66)).unwrap());
         }
+    }
+
+    /// A trial point whose contact outlasts the data by far (this soft,
+    /// high-exponent law, met by a fit of data with no contact, separates
+    /// after two minutes) is recorded over the data's 6.5 ms only: one
+    /// sample past them, where the whole contact took 976,000 and a second.
+    /// Within the span the samples are the whole recording's.
+    #[test]
+    fn recording_stops_one_sample_past_the_data() {
+        use kick_core::Parameter::*;
+        let s = [(FootMass, 0.36203), (Stiffness, 3.4299e4), (Damping, 459.41), (Exponent, 5.3346)]
+            .iter()
+            .fold(Scenario::baseline(), |s, &(p, v)| s.with(p, v).unwrap());
+        let solver = Accurate::default();
+        let interval = s.elastic_contact_time() * RECORD_FRACTION;
+        let until = 6.5e-3;
+        let (o, h) = record_until(&solver, &s, interval, until).unwrap();
+        assert!(o.contact_time > 120.0, "{}", o.contact_time);
+        assert_eq!(h.samples.len(), (until / interval).floor() as usize + 2);
+        let [.., before, past] = h.samples[..] else { panic!() };
+        assert!(before.time <= until && past.time > until);
+        let (_, whole) =
+            solver.solve_recorded(&Scenario::baseline(), Scenario::baseline().elastic_contact_time() * RECORD_FRACTION).unwrap();
+        let (_, part) =
+            record_until(&solver, &Scenario::baseline(), Scenario::baseline().elastic_contact_time() * RECORD_FRACTION, 2e-3).unwrap();
+        assert_eq!(whole.samples[..part.samples.len()], part.samples[..]);
     }
 
     fn interpolation_matches_for(s: Scenario) {

@@ -344,6 +344,12 @@ impl ModelPoint {
             }
             (_, Some(spec)) => {
                 let mut spec = *spec;
+                // The impact speed is given one way or the other: a measurement's replaces the start's.
+                match parameter.name() {
+                    "speed" => spec.unset("drop_height"),
+                    "drop_height" => spec.unset("speed"),
+                    _ => {}
+                }
                 spec.set(parameter.name(), Value::Number(value)).map_err(|e| IdentifyError::data(parameter.name(), e.to_string()))?;
                 Ok(ModelPoint { time_offset: self.time_offset, ..ModelPoint::bounce(spec)? })
             }
@@ -361,6 +367,19 @@ impl ModelPoint {
                 spec.set_parameter(def, Value::Number(value)).map_err(|e| IdentifyError::data(def.name, e.to_string()))?;
                 Ok(ModelPoint { scenario: spec.build()?, ..*self })
             }
+        }
+    }
+
+    /// Whether `outcome`, this point's contact, stayed where its law holds
+    /// (`kick_core::validity`), as `kick bounce` (the bounce's own ball
+    /// radius) and `kick simulate` judge it.
+    pub fn check_validity(&self, outcome: &kick_core::Outcome) -> Result<Result<(), kick_core::OutsideValidity>, IdentifyError> {
+        match &self.bounce {
+            Some(spec) => {
+                let radius = spec.build()?.radius;
+                Ok(kick_core::validity::check(self.scenario.law_kind(), radius, outcome.max_compression))
+            }
+            None => Ok(self.scenario.check_validity(outcome)),
         }
     }
 

@@ -109,6 +109,9 @@ pub fn fit<'py>(
         let report =
             crate::interruptible(py, |cancel| fit_with_cancel(&problem, &FitOptions::default(), &|| cancel.load(Ordering::Relaxed)))?
                 .map_err(library_error)?;
+        // As `kick fit data` (which exits 1): the numbers are kept, flagged.
+        let outside: Vec<String> = report.outside_validity.iter().map(|o| o.to_string()).collect();
+        crate::warn_outside(py, (!outside.is_empty()).then(|| outside.join("; ")))?;
 
         let out = PyDict::new(py);
         let names: Vec<&str> = report.estimates.iter().map(|e| e.parameter.name()).collect();

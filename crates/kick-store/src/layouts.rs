@@ -148,7 +148,9 @@ pub const FIT: Layout = Layout {
             "/fit",
             "scalars, strings",
             "a fit report: law, termination, converged, chi_square, degrees_of_freedom, \
-                                      residual_variance, evaluations, parameters (the free ones, in order)",
+                                      residual_variance, evaluations, parameters (the free ones, in order); \
+                                      outside_validity, when a contact at the estimate leaves its law's validity (status 4), \
+                                      one line each",
         ),
         (
             "/fit/estimates/<parameter>/...",

@@ -109,6 +109,17 @@ fn fit_data_refuses_bad_input_by_name() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("h.csv:3") && err.contains("`oops` is not a number"), "{err}");
 
+    // A misspelt truth: the file, its line and the key's path.
+    std::fs::write(
+        &spec,
+        "free = [\"stiffness\"]\n[[scalar]]\nobservable = \"v_ball_out\"\nvalue = 30.0\nsigma = 0.01\n[truth]\nstifness = 4e5\n",
+    )
+    .unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains(&format!("{}:7: `truth.stifness`: unknown parameter `stifness`", spec.display())), "{err}");
+
     let out = kick(&["fit", "data", dir.join("missing.toml").to_str().unwrap()]);
     assert!(!out.status.success());
     std::fs::remove_dir_all(&dir).ok();
@@ -155,4 +166,77 @@ fn fit_data_refuses_an_output_that_is_an_input() {
     assert_eq!(std::fs::read(&spec).unwrap(), spec_text);
     assert_eq!(std::fs::read(&data).unwrap(), data_text);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `--time-offset 0.02` used to sample 6.5 ms of free flight and exit 0;
+/// `kick fit data` on such a history (t0 free) then ran for hours. Now the
+/// first is refused naming the flag, and the second ends, refused.
+#[test]
+fn a_history_without_the_contact_is_refused_by_both_commands() {
+    let dir = scratch("no-contact");
+    for t0 in ["0.02", "1e9"] {
+        let out = kick(&["fit", "synthesize", "--out", dir.to_str().unwrap(), "--time-offset", t0]);
+        assert_eq!(out.status.code(), Some(1), "{t0}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(&format!("--time-offset {t0}: the data are sampled over [0, 0.0064")) && err.contains("holds 0%"), "{err}");
+        assert!(!dir.join("synthetic.csv").exists());
+    }
+    // Free flight before a first touch at 20 ms: the baseline's velocities plus a ±σ pattern.
+    let rows: String = (0..80)
+        .map(|i| {
+            let s = if i % 3 == 0 { 1.0 } else { -0.5 };
+            format!("{:e},{},{},{},{}\n", i as f64 * 8.2e-5, 20.0 * s, 1e-4 * s, 22.0 + 0.05 * s, 0.05 * s)
+        })
+        .collect();
+    std::fs::write(dir.join("flight.csv"), format!("time,force,compression,foot_velocity,ball_velocity\n{rows}")).unwrap();
+    let spec = dir.join("flight.toml");
+    std::fs::write(
+        &spec,
+        "free = [\"foot_mass\", \"stiffness\", \"damping\", \"exponent\", \"time_offset\"]\ntime_offset = 0.0\n\
+         [history]\nfile = \"flight.csv\"\nsigma = { force = 20.0, compression = 1e-4, foot_velocity = 0.05, ball_velocity = 0.05 }\n",
+    )
+    .unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("the history shows no contact") && err.contains("over the 320 history samples"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A plate test at 300 m/s: `kick bounce` prints its result and exits 1,
+/// outside the shell's validity (δ_max > R/2); `kick fit data` with that
+/// test among its measurements used to exit 0 silently. It now says so in
+/// the report (text and JSON), with the δ_max `kick bounce` prints at the
+/// estimate, and exits 1 the same way.
+#[test]
+fn a_fit_outside_the_laws_validity_says_so_and_exits_one() {
+    let dir = scratch("validity");
+    let spec = dir.join("cannon.toml");
+    let test = |name: &str, speed: f64, e: f64| {
+        format!("[[measurement]]\nname = \"{name}\"\nspeed = {speed}\n[[measurement.scalar]]\nobservable = \"restitution\"\nvalue = {e}\nsigma = 0.01\n")
+    };
+    let head = "level = \"bounce\"\nfree = [\"shell_damping\"]\n[bounce]\nshell_damping = 5000.0\n";
+    std::fs::write(&spec, format!("{head}{}{}", test("slow", 6.264, 0.84), test("cannon", 300.0, 0.77))).unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let (stdout, stderr) = (String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let says = "measurement `cannon`: outside the validity of law `shell`: δ_max = 0.20809 m exceeds R/2 = 0.055 m";
+    assert!(stdout.contains(&format!("status outside validity: {says}")), "{stdout}");
+    assert!(
+        stderr.contains("the result above is a fit with a contact outside its law's validity at the estimate") && stderr.contains(says),
+        "{stderr}"
+    );
+    let out = kick(&["fit", "data", spec.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(report["outside_validity"][0]["measurement"], "cannon");
+    let beta = report["estimates"][0]["value"].as_f64().unwrap();
+    let out = kick(&["bounce", "--speed", "300", "--shell-damping", &beta.to_string()]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("δ_max = 0.20809 m exceeds R/2 = 0.055 m"));
+    // Without the cannon: no status line, exit 0.
+    std::fs::write(&spec, format!("{head}{}", test("slow", 6.264, 0.84))).unwrap();
+    let out = kick(&["fit", "data", spec.to_str().unwrap()]);
+    assert!(out.status.success() && !String::from_utf8_lossy(&out.stdout).contains("outside validity"));
+    std::fs::remove_dir_all(&dir).ok();
 }

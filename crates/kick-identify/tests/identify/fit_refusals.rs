@@ -23,7 +23,7 @@ fn problem(free: &[Parameter], observations: Vec<ScalarObservation>) -> FitProbl
 fn fewer_observations_than_free_parameters_is_refused() {
     let p = problem(&[Parameter::Stiffness, Parameter::Damping, Parameter::Exponent], vec![exit_speed(26.0, 0.1)]);
     let error = fit(&p, &FitOptions::default()).unwrap_err();
-    assert_eq!(error, IdentifyError::UnderDetermined { observations: 1, parameters: 3 });
+    assert_eq!(error, IdentifyError::UnderDetermined { observations: 1, parameters: 3, repeats: 0 });
     let text = error.to_string();
     assert!(text.contains("under-determined") && text.contains("free parameters (3)") && text.contains("observations (1)"), "{text}");
     // As many observations as parameters is determined: no variance, no

@@ -175,3 +175,30 @@ fn specification_keys_round_trip() {
     let e = FitSpec::parse(&no_e, "f.toml").unwrap().start("f.toml").unwrap_err();
     assert!(e.to_string().contains("restitution"), "{e}");
 }
+
+/// A history sampled wholly before first touch (`kick fit synthesize
+/// --time-offset 0.02` over its 6.5 ms window), fitted from t0 = 0 with
+/// m_f, k, c, n and t0 free: it used to run for hours (trial contacts of
+/// two minutes each recorded whole); now it ends, refused as showing no
+/// contact, its fitted χ² no better than the 320 noise samples' own.
+#[test]
+fn a_history_with_no_contact_is_refused_in_bounded_time() {
+    let options = FitOptions::default();
+    let truth = ModelPoint::new(Scenario::baseline(), 0.02).unwrap();
+    let times = time_grid(&truth.scenario, 80, 1.2);
+    let data = history(&options.solver, &truth, times, &lab_sigma(&ALL_CHANNELS), 1).unwrap();
+    let mut free = kick_identify::profile::MODEL_PARAMETERS.to_vec();
+    free.push(FitParameter::TimeOffset);
+    let start = start_from(&truth, &[(free[0], 1.2), (free[1], 0.714), (free[2], 1.333), (free[3], 0.926), (free[4], 0.0)]);
+    let started = std::time::Instant::now();
+    match fit(&FitProblem { start, free, observations: data }, &options) {
+        Err(IdentifyError::NoContact { fitted, without, samples, first, last, .. }) => {
+            assert_eq!((samples, first), (320, 0.0));
+            assert!((last - 1.2 * truth.scenario.elastic_contact_time()).abs() < 1e-15, "{last}");
+            // Pure noise against no contact: χ²_320 = 320 ± 25.
+            assert!((without - 320.0).abs() < 100.0 && fitted > without, "{fitted} vs {without}");
+        }
+        other => panic!("{other:?}"),
+    }
+    println!("refused after {:?}", started.elapsed());
+}

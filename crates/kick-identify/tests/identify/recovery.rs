@@ -105,7 +105,7 @@ fn exit_speed_alone_does_not_identify_while_histories_do() {
 
     let start = start_from(&truth, &[(Parameter::Stiffness, 1.3), (Parameter::Damping, 0.8)]);
     let problem = FitProblem { start, free: FOUR.to_vec(), observations: exit.clone() };
-    assert_eq!(fit(&problem, &options).unwrap_err(), IdentifyError::UnderDetermined { observations: 1, parameters: 4 });
+    assert_eq!(fit(&problem, &options).unwrap_err(), IdentifyError::UnderDetermined { observations: 1, parameters: 4, repeats: 0 });
     let report = minimise(&problem, &options).unwrap();
     assert!(report.estimates.iter().all(|e| e.standard_uncertainty.is_none()));
     assert!(report.correlation.is_none());

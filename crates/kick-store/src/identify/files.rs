@@ -173,6 +173,10 @@ pub fn write_fit(
         write_scalar(w, group, "residual_variance", "1", s2)?;
     }
     write_scalar(w, group, "evaluations", "1", report.evaluations as f64)?;
+    if !report.outside_validity.is_empty() {
+        let outside: Vec<String> = report.outside_validity.iter().map(|o| o.to_string()).collect();
+        w.strings(group, "outside_validity", &outside)?;
+    }
     let names: Vec<String> = report.estimates.iter().map(|e| e.parameter.name().to_string()).collect();
     w.strings(group, "parameters", &names)?;
     for (i, e) in report.estimates.iter().enumerate() {

@@ -6,7 +6,7 @@ use crate::identify::files;
 use crate::printable::Printable;
 use crate::StoreError;
 use crate::{Provenance, ResultWriter};
-use kick_core::{sig, LawKind, Parameter, Scenario, ScenarioSpec};
+use kick_core::{short, sig, LawKind, Parameter, Scenario, ScenarioSpec};
 use kick_identify::data::{Channel, FitSpec};
 use kick_identify::fit::{fit, FitOptions, FitProblem, FitReport};
 use kick_identify::profile::{identifiability_study, IdentifiabilityStudy};
@@ -264,6 +264,16 @@ impl Printable for DataFit {
     fn written(&self) -> &[PathBuf] {
         &self.written
     }
+    /// As `kick bounce`: printed whole, then an error (exit 1).
+    fn outside_validity(&self) -> Option<String> {
+        let outside = &self.report.outside_validity;
+        let first = outside.first()?;
+        let more = match outside.len() {
+            1 => String::new(),
+            n => format!(" (and {} more contacts of the fit)", n - 1),
+        };
+        Some(format!("a fit with a contact outside its law's validity at the estimate: {first}{more}"))
+    }
 }
 
 /// A fit report as a table: estimates, uncertainties, pulls, χ², correlations.
@@ -320,6 +330,9 @@ pub fn report_text(report: &FitReport, truth: &[(FitParameter, f64)]) -> String 
     let worst = report.residuals.iter().max_by(|a, b| a.weighted.abs().total_cmp(&b.weighted.abs()));
     if let Some(r) = worst {
         let _ = writeln!(w, "largest residual: {} = {} σ", r.label, sig(r.weighted));
+    }
+    for outside in &report.outside_validity {
+        let _ = writeln!(w, "status {}: {outside}", kick_core::Status::OutsideValidity.name());
     }
     w
 }
@@ -383,7 +396,8 @@ pub fn synthesize(
     let truth = ModelPoint::new(scenario, time_offset)?;
     let options = FitOptions::default();
     let sigma = synthetic::lab_sigma(&Channel::ALL);
-    let grid = synthetic::time_grid(&scenario, times, 1.2);
+    let grid = synthetic::time_grid(&scenario, times, SYNTHETIC_SPAN);
+    check_sampled_contact(&options, &scenario, time_offset, grid[grid.len() - 1])?;
     let data = synthetic::history(&options.solver, &truth, grid, &sigma, seed)?;
     let history = data.history.ok_or(StoreError::NoHistory)?;
     let spec = synthetic_spec(&truth, &truth, &format!("{name}.csv"), &sigma, seed, &toml_path);
@@ -408,6 +422,34 @@ pub fn synthesize(
         None => None,
     };
     Ok(Synthesized { csv, spec: toml_path, other_law_spec })
+}
+
+/// A synthetic history's span, in undamped contact times from 0.
+const SYNTHETIC_SPAN: f64 = 1.2;
+
+/// Refuse a `--time-offset` whose contact [t0, t0 + t_c] lies less than
+/// half (of itself, or of the window when it is the longer) in the sampled
+/// window [0, end]: its data would be mostly or wholly free flight, which
+/// no fit can read a contact from. t0 = 0 always passes.
+fn check_sampled_contact(options: &FitOptions, scenario: &Scenario, time_offset: f64, end: f64) -> Result<(), StoreError> {
+    let contact = kick_core::Solver::solve(&options.solver, scenario)?.contact_time;
+    let needed = 0.5 * contact.min(end);
+    let sampled = (end.min(time_offset + contact) - time_offset.max(0.0)).max(0.0);
+    if sampled >= needed {
+        return Ok(());
+    }
+    let message = format!(
+        "--time-offset {}: the data are sampled over [0, {}] s ({SYNTHETIC_SPAN} undamped contact times), which holds {}% of \
+         the contact at [{}, {}] s; give a first touch in [{}, {}] s, so that at least half of it is sampled",
+        short(time_offset),
+        short(end),
+        sig(100.0 * sampled / contact),
+        short(time_offset),
+        short(time_offset + contact),
+        short(needed - contact),
+        short(end - needed)
+    );
+    Err(StoreError::Flag { flag: "--time-offset", message })
 }
 
 /// Starting guesses of a synthetic fit, as factors of the truth: far enough
@@ -489,6 +531,12 @@ mod tests {
         let e = synthesize(&out, "a/b", 1, 10, &ScenarioSpec::default(), 0.0, None).unwrap_err();
         assert!(matches!(e, StoreError::Flag { flag: "--name", .. }), "{e:?}");
         assert!(e.to_string().contains("`a/b`"), "{e}");
+        // A first touch that leaves the sampled window without the contact.
+        for t0 in [0.02, 1e9, -0.01] {
+            let e = synthesize(&out, "x", 1, 10, &ScenarioSpec::default(), t0, None).unwrap_err();
+            assert!(matches!(e, StoreError::Flag { flag: "--time-offset", .. }), "{t0}: {e:?}");
+            assert!(e.to_string().contains("holds 0% of the contact"), "{e}");
+        }
         let settings = ProfileSettings { out: None, spread: 2.0, points: 5, map_points: 2, seed: 1 };
         let e = profile(&settings).unwrap_err();
         assert!(matches!(e, StoreError::Flag { flag: "--map-points", .. }), "{e:?}");
