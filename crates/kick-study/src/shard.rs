@@ -25,7 +25,15 @@ impl Shard {
     pub fn parse(given: &str, flag: &str) -> Result<Shard, ShardFlagError> {
         let error = |message: String| ShardFlagError { flag: flag.into(), given: given.into(), message };
         let (i, n) = given.split_once('/').ok_or_else(|| error("expected I/N, e.g. 0/4 (shards numbered from 0)".into()))?;
-        let number = |s: &str, what: &str| s.trim().parse::<u64>().map_err(|_| error(format!("{what} `{s}` is not a whole number >= 0")));
+        let number = |s: &str, what: &str| {
+            s.trim().parse::<u64>().map_err(|e| match e.kind() {
+                // Digits beyond u64: too large, not malformed.
+                std::num::IntErrorKind::PosOverflow => {
+                    error(format!("{what} `{s}` is too large (at most {} shards)", crate::experiment::MAX_SCENARIOS))
+                }
+                _ => error(format!("{what} `{s}` is not a whole number >= 0")),
+            })
+        };
         let (index, count) = (number(i, "shard index")?, number(n, "shard count")?);
         if count == 0 {
             return Err(error("the shard count must be at least 1".into()));
@@ -96,6 +104,7 @@ mod tests {
             ("-1/4", "not a whole number"),
             ("a/4", "not a whole number"),
             ("1/4.5", "not a whole number"),
+            ("0/99999999999999999999", "too large"),
         ] {
             let message = Shard::parse(given, "--shard").unwrap_err().to_string();
             assert!(message.starts_with(&format!("`--shard` = `{given}`")) && message.contains(says), "{given}: {message}");
