@@ -307,15 +307,11 @@ impl ScenarioSpec {
             return Ok(self.law_on(Scenario::from_values(values)?)?.with_foot(foot));
         }
         let scenario = Scenario::each_parameter(values)?;
-        if scenario.approach_speed() > 0.0 {
-            return Ok(self.law_on(scenario)?.with_foot(foot));
-        }
-        // A ball faster along the line than the foot: only the law's kind and
-        // target matter here, kick-3d builds the law again along the contact
-        // normal (`Kick3d::normal_scenario`), where the bodies close; a law
-        // set by a restitution is built on the foot's speed alone meanwhile.
-        let lawful = self.law_on(Scenario { ball_speed: 0.0, ..scenario })?;
-        Ok(Scenario { ball_speed: scenario.ball_speed, ..lawful }.with_foot(foot))
+        let lawful = match self.law.unwrap_or(LawKind::PowerLaw) {
+            LawKind::Shell => scenario.with_shell(self.shell_ball()?),
+            law => scenario.with_law_3d_base(law, self.restitution)?,
+        };
+        Ok(lawful.with_foot(foot))
     }
 
     /// `scenario` under this spec's law: its target restitution, or for the
@@ -718,6 +714,19 @@ impl Scenario {
             LawError::UnknownLaw { .. } => KickError::InvalidParameter { name: "law", value: f64::NAN, requirement: "a known contact law" },
         })?;
         Ok(Scenario { contact, restitution_target: Some(restitution), ..*self })
+    }
+
+    /// [`Scenario::with_law`] for a 3D kick's base ([`Scenario::each_parameter`]),
+    /// whose ball may be faster along the foot's line than the foot: only the
+    /// law's kind and target matter then, kick-3d builds the law again along
+    /// the contact normal (`Kick3d::normal_scenario`), where the bodies close;
+    /// a law set by a restitution is built on the foot's speed alone meanwhile.
+    pub fn with_law_3d_base(&self, kind: LawKind, restitution: Option<f64>) -> Result<Scenario, KickError> {
+        if self.approach_speed() > 0.0 {
+            return self.with_law(kind, restitution);
+        }
+        let lawful = Scenario { ball_speed: 0.0, ..*self }.with_law(kind, restitution)?;
+        Ok(Scenario { ball_speed: self.ball_speed, ..lawful })
     }
 
     /// The contact law in use: the one chosen (`with_law`), Eq. 20 by default.

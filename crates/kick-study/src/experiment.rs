@@ -890,15 +890,23 @@ fn law_settings_apply(at: &Locator, law: kick_core::LawKind, damping: Located, r
 }
 
 /// Build a scenario from optional spanned values, naming the key of the first
-/// invalid one.
-fn build<'a>(at: &Locator, get: impl Fn(Parameter) -> Option<&'a Spanned<f64>>, table: &str) -> Result<Scenario, ExperimentError> {
+/// invalid one; `one_line`: the 1D contact's approach along one line checked
+/// too, not for a 3D kick's base (`Scenario::each_parameter`: kick-3d checks
+/// it along the contact normal).
+fn build<'a>(
+    at: &Locator,
+    get: impl Fn(Parameter) -> Option<&'a Spanned<f64>>,
+    table: &str,
+    one_line: bool,
+) -> Result<Scenario, ExperimentError> {
     let mut values = Scenario::BASELINE.values();
     for (slot, p) in values.iter_mut().zip(Parameter::ALL) {
         if let Some(v) = get(p) {
             *slot = *v.get_ref();
         }
     }
-    Scenario::from_values(values).map_err(|e| {
+    let built = if one_line { Scenario::from_values(values) } else { Scenario::each_parameter(values) };
+    built.map_err(|e| {
         let blamed = match &e {
             KickError::InvalidParameter { name, .. } => Parameter::from_name(name),
             KickError::NoContact { .. } => {
@@ -979,6 +987,28 @@ mod tests {
     /// One `parse` for both levels: the keys every level shares land in the
     /// same fields, the level's own in its `kicks`, and a sweep of the same
     /// 1D axes is the same `Grid` in a 1D and a 3D experiment.
+    /// A 3D file whose ball is faster along the foot's line than the foot
+    /// still makes its kicks: they close along the contact normal (a 23 m/s
+    /// ball and a 22 m/s foot rising at 80°, at 18 m/s), in the base and in
+    /// every cell of a grid over the ball's speed, under a restitution law
+    /// too; the 1D file of the same base is refused as no contact.
+    #[test]
+    fn a_3d_file_meets_a_faster_ball_along_the_normal() {
+        let text = "law = \"flores\"\nrestitution = 0.6\n[base]\nball_speed = 23.0\n[kick3d]\napproach_angle = 80.0\n\
+                    [[sweep]]\nparameter = \"ball_speed\"\nvalues = [21.0, 23.0]\n";
+        let three = parse_text(&format!("level = \"3d\"\n{}", text.replace("[base]\nball_speed = 23.0\n", ""))).unwrap();
+        let kicks = three.three_d().unwrap();
+        for (i, v_b) in [21.0, 23.0f64].into_iter().enumerate() {
+            let kick = kicks.kick(i as u64).unwrap();
+            let closing = 22.0 - v_b * 80f64.to_radians().cos();
+            assert!((kick.normal_approach_speed() / closing - 1.0).abs() < 1e-12, "{v_b}: {}", kick.normal_approach_speed());
+        }
+        let base = parse_text(&format!("level = \"3d\"\n{}", text.split("[[sweep]]").next().unwrap())).unwrap();
+        assert!(base.three_d().unwrap().kick(0).is_ok());
+        let e = parse_text(text.split("[kick3d]").next().unwrap()).unwrap_err();
+        assert!(e.message.contains("no contact"), "{e}");
+    }
+
     #[test]
     fn both_levels_share_one_schema_and_one_grid() {
         let shared = "name = \"both\"\ndescription = \"one schema\"\ncompress = 6\nlaw = \"flores\"\nrestitution = 0.5\n\

@@ -125,7 +125,8 @@ pub(super) fn kicks(
     // `swept`: a swept restitution's first value, the base's target (each cell sets its own).
     let base = |swept: Option<&Spanned<f64>>| {
         let ball = super::shell_ball(at, law, base_key)?;
-        let scenario = with_law(build(at, |p| base_raw.get(p), "base")?, "base", base_raw.restitution().or(swept), base_damping(), ball)?;
+        let scenario =
+            with_law(build(at, |p| base_raw.get(p), "base", true)?, "base", base_raw.restitution().or(swept), base_damping(), ball)?;
         super::on_foot(at, scenario, base_key, base_switch)
     };
 
@@ -219,8 +220,13 @@ pub(super) fn kicks(
             let restitution = entry.restitution().or(base_raw.restitution());
             let damping = entry.get(Parameter::Damping).map(|d| (d.span(), format!("{key}.damping"))).or_else(base_damping);
             let ball = super::shell_ball(at, law, |p| entry.value(p).map(|v| (v, format!("{key}.{}", p.name))).or_else(|| base_key(p)))?;
-            let scenario =
-                with_law(build(at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario")?, "scenario", restitution, damping, ball)?;
+            let scenario = with_law(
+                build(at, |p| entry.get(p).or_else(|| base_raw.get(p)), "scenario", true)?,
+                "scenario",
+                restitution,
+                damping,
+                ball,
+            )?;
             let scenario = super::on_foot(
                 at,
                 scenario,

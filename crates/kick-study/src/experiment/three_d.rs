@@ -58,7 +58,12 @@ fn kick_at(mut scenario: Scenario, mut spec: Kick3dSpec, grid: &Grid, index: u64
         match axis.parameter.level {
             // The flight's are the flight's (`Grid::flight_spec`).
             Level::Flight => {}
-            Level::Scenario | Level::Bounce => scenario = scenario.with_parameter(axis.parameter, value)?,
+            // Through the spec, as a 3D kick's base: the approach is kick-3d's to check, along the normal.
+            Level::Scenario | Level::Bounce => {
+                let mut cell = scenario.spec();
+                cell.set_parameter(axis.parameter, Value::Number(value)).map_err(|e| Kick3dError::Experiment { reason: e.to_string() })?;
+                scenario = cell.build_drawn_3d_base()?;
+            }
             // The foot: its spec with the value, built again (a pose moves the leg's mass).
             Level::Foot => {
                 let mut foot_spec = scenario.spec();
@@ -98,10 +103,11 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment, flight: Optio
     let restitution_key = if raw.restitution.is_some() { "restitution" } else { "base.restitution" };
     let given_restitution = restitution.map(|r| (r.span(), restitution_key.to_string())).or_else(|| swept("restitution"));
     super::law_settings_apply(at, law, damping, given_restitution)?;
-    let scenario = build(at, |p| base_raw.get(p), "base")?;
+    // A 3D kick's base: the approach is checked along the contact normal (kick-3d).
+    let scenario = build(at, |p| base_raw.get(p), "base", false)?;
     let law_span = restitution.map(|r| r.span()).or(raw.law.as_ref().map(|l| l.span())).unwrap_or(0..0);
     let scenario =
-        scenario.with_law(law, restitution.map(|r| *r.get_ref())).map_err(|e| at.error(law_span.clone(), "law", e.to_string()))?;
+        scenario.with_law_3d_base(law, restitution.map(|r| *r.get_ref())).map_err(|e| at.error(law_span.clone(), "law", e.to_string()))?;
     let ball = super::shell_ball(at, law, |p| base_raw.value(p).map(|v| (v, format!("base.{}", p.name))))?;
     let scenario = ball.map_or(scenario, |ball| scenario.with_shell(ball));
     let scenario = super::on_foot(
