@@ -151,18 +151,31 @@ pub fn flown_command(samples: u64, flight: bool) -> String {
     )
 }
 
-/// Flown 3D kicks into a file on 2 threads (issue 32: at least 10,000
-/// rows/s), and the same kicks unflown, alternated: rows/s of each and the
-/// flown rows' cost over the unflown (what the flight adds).
+/// The 3D sweeps' rates into a file on 2 threads, alternated over 3 rounds:
+/// the flown kicks (issue 32: at least 10,000 rows/s) and the same kicks
+/// unflown, and the default box with the realistic foot (`--leg`, issue 31:
+/// at least 10,000 kicks/s) and without it; rows/s of each, and what the
+/// flight and the leg cost.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FlownRates {
+pub struct Sweep3dRates {
     pub samples: u64,
     pub flown: Spread,
     pub unflown: Spread,
+    /// Flown over unflown.
     pub cost: Spread,
+    /// [`leg_command`] with and without `--leg`.
+    pub leg: Spread,
+    pub shell: Spread,
+    /// With the leg over without.
+    pub leg_cost: Spread,
 }
 
-pub fn flown_rates(quick: bool) -> Result<FlownRates, StoreError> {
+/// The default box on the shell ball, with the leg and its boot or not, without `--out`.
+pub fn leg_command(samples: u64, leg: bool) -> String {
+    format!("kick sweep3d --samples {samples} --seed 1 --threads 2 --law shell{}", if leg { " --leg" } else { "" })
+}
+
+pub fn sweep3d_rates(quick: bool) -> Result<Sweep3dRates, StoreError> {
     let samples = if quick { 200 } else { 5_000 };
     let dir = std::env::temp_dir().join(format!("kick-bench-flown-{}", std::process::id()));
     let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build()?;
@@ -179,12 +192,14 @@ pub fn flown_rates(quick: bool) -> Result<FlownRates, StoreError> {
         threads: None,
         compress: crate::h5::Compression::None,
     };
-    let (mut flown, mut unflown) = (Vec::new(), Vec::new());
+    let mut legged = shell.clone();
+    legged.fixed.scenario.leg = Some(true);
+    let forms = [flown_settings(shell.clone(), true)?, flown_settings(shell.clone(), false)?, legged, shell];
+    let mut rates = [(); 4].map(|()| Vec::new());
     let mut measure = || -> Result<(), StoreError> {
         for _ in 0..3 {
-            for (flight, rates) in [(true, &mut flown), (false, &mut unflown)] {
-                let settings = flown_settings(shell.clone(), flight)?;
-                let report = pool.install(|| crate::sweep3d::sweep3d(&settings))?;
+            for (settings, rates) in forms.iter().zip(rates.iter_mut()) {
+                let report = pool.install(|| crate::sweep3d::sweep3d(settings))?;
                 rates.push(samples as f64 / report.seconds);
                 let _ = std::fs::remove_file(&report.path);
             }
@@ -194,7 +209,16 @@ pub fn flown_rates(quick: bool) -> Result<FlownRates, StoreError> {
     let result = measure();
     let _ = std::fs::remove_dir_all(&dir);
     result?;
-    Ok(FlownRates { samples, flown: Spread::of(&flown), unflown: Spread::of(&unflown), cost: Spread::of_ratios(&unflown, &flown) })
+    let [flown, unflown, leg, shell] = &rates;
+    Ok(Sweep3dRates {
+        samples,
+        flown: Spread::of(flown),
+        unflown: Spread::of(unflown),
+        cost: Spread::of_ratios(unflown, flown),
+        leg: Spread::of(leg),
+        shell: Spread::of(shell),
+        leg_cost: Spread::of_ratios(shell, leg),
+    })
 }
 
 /// Write `path` (work_precision.h5): one row per ladder point, the headline
@@ -204,7 +228,7 @@ pub fn flown_rates(quick: bool) -> Result<FlownRates, StoreError> {
 pub fn write_work_precision(
     path: &Path,
     t: &Timings,
-    flown: &FlownRates,
+    flown: &Sweep3dRates,
     machine: &Machine,
     build: &str,
     command: &str,
@@ -242,6 +266,8 @@ pub fn write_work_precision(
         ("leg_boot_vs_shell_1d_cost_ratio", t.other.leg_cost.median),
         ("sweep3d_flown_rows_per_second_2_threads", flown.flown.median),
         ("sweep3d_flown_vs_unflown_cost_ratio", flown.cost.median),
+        ("sweep3d_leg_rows_per_second_2_threads", flown.leg.median),
+        ("sweep3d_leg_vs_shell_cost_ratio", flown.leg_cost.median),
         ("flights_per_second_1_thread", t.other.flights_1.median),
         ("flights_per_second_2_threads", t.other.flights_2.median),
         ("aim_launch_seconds", t.other.aims[0].median * 1e-3),

@@ -67,8 +67,14 @@ fn reproduce_writes_results_figures_and_report() {
     ] {
         assert!(timing.contains("## Sweeps into result files") && timing.contains(command), "{command}: {timing}");
     }
-    // The flown 3D sweep's rate beside the same kicks unflown (issue 32), and the booted 1D kick's cost (issue 31).
+    // The flown 3D sweep's rate beside the same kicks unflown (issue 32), the booted 1D kick's cost and the
+    // leg's 3D sweep (issue 31), each target judged against the run's median.
     for needle in [
+        "issue 32: at least 10,000 rows/s, ",
+        "The realistic foot in 3D sweeps (`kick sweep3d --samples 200 --seed 1 --threads 2 --law shell --leg --out leg.h5`",
+        "issue 31: at least 10,000 kicks/s, ",
+        "the leg and its boot cost ",
+        "issue 31: at most 2x, ",
         "Flown 3D kicks into a file (`kick sweep3d --samples 200 --seed 1 --threads 2 --law shell --range contact_depth=0,0.05",
         "rows/s on 2 threads**",
         "the flown rows cost",
