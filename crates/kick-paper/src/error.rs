@@ -53,7 +53,7 @@ pub enum PaperError {
     #[error("{0}")]
     Registry(String),
     /// No experiment file in the folder given.
-    #[error("no experiment files in {}", .0.display())]
+    #[error("--experiments {}: no experiment files (*.toml) in the folder", .0.display())]
     NoExperiments(PathBuf),
 }
 

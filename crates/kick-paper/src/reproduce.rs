@@ -291,7 +291,10 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, PaperError> {
         files.sort();
         Ok(files)
     };
-    let files = toml_files(&args.experiments).map_err(|source| PaperError::Io { what: "read", path: args.experiments.clone(), source })?;
+    let files = toml_files(&args.experiments).map_err(|source| PaperError::Flag {
+        flag: "--experiments",
+        message: format!("--experiments {}: cannot read the folder: {source}", args.experiments.display()),
+    })?;
     if files.is_empty() {
         return Err(PaperError::NoExperiments(args.experiments.clone()));
     }
