@@ -11,7 +11,8 @@
 //! - [`free_kicks`]: the lateral deflection at a distance of free kicks over
 //!   the launch speeds and spins of Physics World's free kick (no measured
 //!   deflection was found to set it beside; an independent estimate comes
-//!   with each);
+//!   with each), and the article's own estimate of side force, time and bend
+//!   beside the middle kick ([`ArticleEstimate`]);
 //! - [`lift_plateau_bends`], [`spin_decay_bends`]: what the bend owes to the
 //!   lift plateau (read only in transcriptions) and to spin decay (off: no
 //!   measured rate);
@@ -37,6 +38,8 @@ pub mod keys {
     pub const DRAG_COEFFICIENT: &str = "drag_coefficient_goff_carre2009";
     pub const FREE_KICK_SPEED: &str = "free_kick_speed";
     pub const FREE_KICK_SPIN: &str = "free_kick_spin";
+    /// The article's own estimate for its free kick: side force, path length, time in the air, bend.
+    pub const FREE_KICK_ESTIMATE: [&str; 4] = ["free_kick_side_force", "free_kick_distance", "free_kick_flight_time", "free_kick_bend"];
     /// Barber & Carré's (2010) measured launch of curling free kicks.
     pub const CURLING_SPEED: &str = "barber_carre2010_launch_speed";
     pub const CURLING_SPIN: &str = "barber_carre2010_launch_spin";
@@ -183,6 +186,27 @@ pub struct FreeKicks {
     /// m.
     pub distance: f64,
     pub kicks: Vec<FreeKickDeflection>,
+    /// The article's estimate beside the model's middle kick.
+    pub estimate: ArticleEstimate,
+}
+
+/// Physics World's own estimate for its free kick (side force, time in the
+/// air and bend over a path of given length: a constant sideways
+/// acceleration from rest, not a measurement), beside the middle kick of
+/// the grid flown over the same path.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ArticleEstimate {
+    /// Side force, path length, time in the air and bend, as [`keys::FREE_KICK_ESTIMATE`].
+    pub side_force: Measured,
+    pub distance: Measured,
+    pub flight_time: Measured,
+    pub bend: Measured,
+    /// The middle kick crossing x = the path length.
+    pub kick: FreeKickDeflection,
+    /// Its lift at launch, ½ ρ A C_L(S0) v0², N.
+    pub lift_force: f64,
+    /// C_L the article's side force gives at the middle speed: F/(½ ρ A v0²).
+    pub implied_lift_coefficient: f64,
 }
 
 /// Free kicks at the low, middle and high launch speed and spin of the
@@ -200,7 +224,24 @@ pub fn free_kicks(m: &Measurements, launch_angle: f64, distance: f64) -> Result<
             kicks.push(free_kick(v, w, launch_angle, distance)?);
         }
     }
-    Ok(FreeKicks { launch_speed: speed, launch_spin: spin, launch_angle, distance, kicks })
+    let [side_force, path, flight_time, bend] = keys::FREE_KICK_ESTIMATE.map(|key| m.measured(key, NEEDED_BY));
+    let (side_force, path, flight_time, bend) = (side_force?, path?, flight_time?, bend?);
+    let (v, w) = (three(&speed)[1], three(&spin)[1]);
+    let kick = free_kick(v, w, launch_angle, path.midpoint().unwrap_or(f64::NAN))?;
+    // ½ ρ A v0²: the lift per unit C_L at launch, of the flight the kicks fly with.
+    let flight = FlightSpec::from_exit_speed(v, launch_angle).build()?;
+    let dynamic = 0.5 * flight.air().density * std::f64::consts::PI * flight.ball_radius().powi(2) * v * v;
+    let s0 = flight.ball_radius() * w * launch_angle.to_radians().cos() / v;
+    let estimate = ArticleEstimate {
+        implied_lift_coefficient: side_force.midpoint().unwrap_or(f64::NAN) / dynamic,
+        lift_force: dynamic * SaturatingLift::at(s0),
+        side_force,
+        distance: path,
+        flight_time,
+        bend,
+        kick,
+    };
+    Ok(FreeKicks { launch_speed: speed, launch_spin: spin, launch_angle, distance, kicks, estimate })
 }
 
 /// One free kick: `speed` m/s at `launch_angle` degrees with sidespin `spin`

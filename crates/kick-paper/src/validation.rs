@@ -343,6 +343,35 @@ pub fn markdown(v: &Validation, data: &str, file: &str, notes: &str) -> String {
         f.launch_spin.key,
         short_status(&f.launch_spin.checked)
     );
+    let e = &f.estimate;
+    let mid = |m: &kick_study::validation::Measured| short(m.midpoint().unwrap_or(f64::NAN));
+    let _ = writeln!(
+        w,
+        "The article's own numbers for that kick (`{}`, `{}`, `{}`, `{}`; {}, as a course page paraphrases them) are an \
+         estimate, not a measurement, and are not counted: about {} N of side force, about {} s in the air over about \
+         {} m, about {} m of bend, as a constant sideways acceleration from rest. The grid's middle kick ({} m/s, {} \
+         rad/s) flown over the same {} m takes {} s and ends {} m to the side; its lift at launch is {} N. The article's \
+         {} N at {} m/s is C_L = {}, below the default's plateau (the table's C_L column); [flight.md](flight.md) flies \
+         the free kick at such constant values.\n",
+        e.side_force.key,
+        e.distance.key,
+        e.flight_time.key,
+        e.bend.key,
+        short_status(&e.bend.checked),
+        mid(&e.side_force),
+        mid(&e.flight_time),
+        mid(&e.distance),
+        mid(&e.bend),
+        short(e.kick.speed),
+        three(e.kick.spin),
+        mid(&e.distance),
+        three(e.kick.time),
+        three(e.kick.lateral_offset),
+        three(e.lift_force),
+        mid(&e.side_force),
+        short(e.kick.speed),
+        three(e.implied_lift_coefficient)
+    );
     let _ = writeln!(
         w,
         "| speed (m/s) | spin (rad/s) | Re at launch | S at launch | C_D at launch | C_L at launch | lateral offset (m) | circle estimate (check, m) | height (m) | time (s) |"

@@ -163,3 +163,27 @@ fn spin_decay_leaves_the_asked_share() {
     assert!((rows[1].kept_at_landing - 0.9).abs() < 1e-9 && (rows[2].kept_at_landing - 0.5).abs() < 1e-9, "{rows:?}");
     assert!(rows[0].lateral_offset > rows[1].lateral_offset && rows[1].lateral_offset > rows[2].lateral_offset, "{rows:?}");
 }
+
+/// Physics World's own estimate beside the middle kick: the kick is the
+/// free kick flown over the article's path; its lift at launch is ½ ρ A C_L v²
+/// with the C_L of the flight's own launch report; the article's side force
+/// is C_L = F/(½ ρ A v²), here 3.5/(½ · 1.2041… · π · 0.11² · 27.5²) ≈ 0.20;
+/// and its estimate is a t²/2 with a = F/m: 3.5/0.43 · 1²/2 ≈ 4 m.
+#[test]
+fn the_article_s_estimate_stands_beside_the_middle_kick() {
+    let m = measurements();
+    let kicks = free_kicks(&m, FREE_KICK_ELEVATION, FREE_KICK_DISTANCE).unwrap();
+    let e = &kicks.estimate;
+    let (v, w, d) = (27.5, 0.5 * (8.0 + 10.0) * std::f64::consts::TAU, 30.0);
+    assert_eq!((e.kick.speed, e.distance.midpoint()), (v, Some(d)));
+    assert!((e.kick.spin - w).abs() < 1e-12 * w);
+    assert_eq!(e.kick, free_kick(v, w, FREE_KICK_ELEVATION, d).unwrap());
+    let flight = FlightSpec { spin: Some([0.0, 0.0, w]), ..FlightSpec::from_exit_speed(v, FREE_KICK_ELEVATION) }.build().unwrap();
+    let launch = solve(&flight).unwrap().launch;
+    let q = 0.5 * Air::standard().density * std::f64::consts::PI * 0.11f64.powi(2) * v * v;
+    assert!((e.lift_force - q * launch.lift_coefficient).abs() < 1e-12 * e.lift_force, "{} {}", e.lift_force, q * launch.lift_coefficient);
+    assert!((e.implied_lift_coefficient - 3.5 / q).abs() < 1e-12, "{}", e.implied_lift_coefficient);
+    assert!((0.19..0.21).contains(&e.implied_lift_coefficient));
+    let (force, time, bend) = (e.side_force.midpoint().unwrap(), e.flight_time.midpoint().unwrap(), e.bend.midpoint().unwrap());
+    assert!((force / 0.43 * time * time / 2.0 - bend).abs() < 0.5 * bend.min(1.0), "the article's bend is a t²/2");
+}
