@@ -5,5 +5,5 @@
 pub use kick_bounce::BOUNCE_PARAMETERS;
 pub use kick_core::parameters::*;
 // The scenario's declared names, as pages and command lines spell them.
-pub use kick_core::{LawKind, Parameter, ScenarioSpec, DEFAULT_BALL_RADIUS};
+pub use kick_core::{LawKind, Parameter, Scenario, ScenarioSpec, DEFAULT_BALL_RADIUS};
 pub use kick_flight::FLIGHT_PARAMETERS;
