@@ -100,12 +100,17 @@ pub fn laws(file: &Path, figures: &str) -> Result<String, PaperError> {
     );
     w.push_str(
         "The paper's law (Eq. 20), F = k δⁿ + c max(δ̇, 0), damps only while the ball is compressed and jumps \
-         to c V0 at first touch. Section 6.2 notes that a more realistic viscoelastic law would damp during both \
-         loading and unloading. The workspace offers these laws beside it, all behind `kick_core::ContactLaw` \
-         (`kick_core::laws`; `LawKind::from_name`, `AnyLaw`) and chosen in one place, `Scenario::with_law`, so \
-         every command takes them: `kick simulate`, `kick sweep` and `kick simulate3d` (`--law`, \
-         `--restitution`), experiment files and 3D experiment files (top-level `law`, `restitution`), and fit \
-         specifications (`law`, `restitution`, with the restitution itself fittable).\n\n\
+         to c V0 at first touch. Section 6.2 points to viscoelastic laws, which act while the ball is loaded and \
+         unloaded and still dissipate. The workspace offers the six laws below beside it, all behind \
+         `kick_core::ContactLaw` (`kick_core::laws`; `LawKind::from_name`, `AnyLaw`) and chosen in one place, \
+         `Scenario::with_law`, so every command with `--law` takes them: `kick simulate`, `kick sweep`, \
+         `kick simulate3d`, `kick sweep3d` and `kick aim` (with `--restitution`), experiment files and 3D experiment \
+         files (top-level `law`, `restitution`), and fit specifications (`law`, `restitution`, with the restitution \
+         itself fittable). A seventh, `shell`, the pressurised ball, takes its force and its loss from the ball \
+         (inflation pressure, radius, shell stiffness and damping) instead of k, n and a target e, and is set \
+         against plate tests on [ball.md](ball.md), not here. Below, μ = m_f m_b/(m_f + m_b) is the reduced mass, \
+         V0 the approach speed at first touch, V_e the separation speed and δ* the maximum compression of the \
+         undamped contact.\n\n\
          | name | force for δ > 0 | dissipation parameter from a target e at V0 | F(0⁺) |\n\
          | --- | --- | --- | --- |\n\
          | `power-law` (paper, Eq. 20) | k δⁿ + c max(δ̇, 0) | c given | c V0 |\n\
@@ -116,7 +121,7 @@ pub fn laws(file: &Path, figures: &str) -> Result<String, PaperError> {
          | `kelvin-voigt` | k_l δ + c δ̇ | k_l = k δ*ⁿ⁻¹ (secant at the undamped δ*), ζ = −ln e/√(π² + ln² e), c = 2ζ√(k_l μ) | c V0 |\n\n\
          All are clamped at F ≥ 0: a contact never pulls. For the hysteresis laws the clamp never acts in a \
          passive impact (below); for Kelvin–Voigt it does — the dashpot would pull at the end of restitution, \
-         and the clamp lets the bodies part when k δ + c δ̇ reaches zero, with δ still positive. In 3D \
+         and the clamp lets the bodies part when k_l δ + c δ̇ reaches zero, with δ still positive. In 3D \
          (`kick simulate3d`, `kick run` on a 3D experiment file) the same laws act along the contact normal, their damping taken \
          from e at the normal approach speed.\n\n\
          ## Energy and restitution of the hysteresis laws\n\n\
@@ -126,8 +131,8 @@ pub fn laws(file: &Path, figures: &str) -> Result<String, PaperError> {
          x0 − ln(1 + x0) = −x_e − ln(1 − x_e), with x0 = χ V0, x_e = χ V_e, e = x_e/x0.\n\n\
          So the restitution of every hysteresis law depends on χ V0 only — not on k, n or the masses — and \
          x_e < 1 keeps 1 + χ δ̇ > 0 (the clamp is idle). To first order, 1 − e² = (4/3) χ V0: that is exactly \
-         the Lankarani–Nikravesh formula; Hunt–Crossley's replaces 1 − e² by 2(1 − e), and Flores's is built \
-         to stay close at low e. The restitution each law gives when asked for e (baseline scenario, \
+         the Lankarani–Nikravesh formula; Hunt–Crossley's replaces 1 − e² by 2(1 − e), and Flores's, made for \
+         low e, drifts from its target as e falls too, below it rather than above (the table). The restitution each law gives when asked for e (baseline scenario, \
          `accurate`; `restitution_formulas/` in the file):\n\n",
     );
     let _ = write!(w, "| law \\ target e |");
@@ -170,7 +175,9 @@ pub fn laws(file: &Path, figures: &str) -> Result<String, PaperError> {
          the paper's law as given, the others through `Scenario::with_law` with the restitution the paper's \
          law gives on that row as their target (hysteresis laws: the row's k and n; Kelvin–Voigt: the secant \
          stiffness at the undamped δ*). Columns: restitution e, exit speed, onset force F(0⁺), peak force, \
-         contact time, maximum compression.\n\n",
+         contact time, maximum compression. The power-law rows are `accurate`'s, not the paper's printed Table 2: \
+         where the peak is the onset jump c V0 or the contact is short they differ from the print in the last digits \
+         (a step method samples the jump only after its first step; [README.md](README.md) sets the two side by side).\n\n",
     );
     let _ = writeln!(w, "![force pulses and peak forces of every law]({figures}/laws.png)\n");
     w.push_str("| row (target e) | law | e | v_b⁺ (m/s) | F(0⁺) (N) | peak (N) | t_c (ms) | δ_max (mm) |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n");
@@ -255,8 +262,8 @@ const LAWS_TESTS: &str = "\n## Tests\n\n\
 - `force_gradient` of each law against central differences of its force (1e-7 relative, away from the kinks); \
 no tensile force on a 201 × 201 grid of (δ, δ̇) including δ ≤ 0; U(δ) = ∫ F(s, 0) ds by Simpson (1e-6).\n\
 - Energy dissipated per cycle against the small-damping closed forms 1 − e² = (4/3) χ V0 (hysteresis, n = 1, \
-1.35, 1.5) and 1 − e² = 2π ζ (Kelvin–Voigt), at χ V0 (or ζ) = 1e-3 and 2e-3: the raw ratio within 10x, the \
-Richardson-extrapolated ratio within 100x² = 1e-4 of 1; the integrated dissipation equals the kinetic-energy \
+1.35, 1.5) and 1 − e² = 2π ζ (Kelvin–Voigt), at χ V0 (or ζ) = 1e-3 and 2e-3: with x = χ V0 (or ζ), the raw ratio within 10x of 1, the \
+Richardson-extrapolated ratio (from x and 2x) within 100x² = 1e-4 of 1; the integrated dissipation equals the kinetic-energy \
 loss to 1e-6.\n\
 - Simulated restitution against the exact relation above for all three formulas, n = 1, 1.35, 1.5 and e from \
 0.95 to 0.3: within 1e-8; the exact-χ law meets its target within 1e-8; near e = 1 the order LN > target, \
