@@ -2,7 +2,7 @@
 //! the reproduction report.
 
 use crate::error::PaperError;
-use crate::identify::report::{LAWS, SYNTHETIC_FIT, SYNTHETIC_LAW_FIT, SYNTHETIC_WRONG_LAW_FIT, TABLE2_FIT};
+use crate::identify::report::{LAWS, SYNTHETIC_FIT, SYNTHETIC_LAW_FIT, SYNTHETIC_LAW_SEED, SYNTHETIC_SEED, SYNTHETIC_WRONG_LAW_FIT, TABLE2_FIT};
 use crate::links::relative;
 use crate::printable::Printable;
 use crate::report::CheckLine;
@@ -352,8 +352,8 @@ pub fn steps(args: &ReproduceSettings) -> Result<Vec<Step>, PaperError> {
         (
             "synthesize",
             vec![
-                synthesize("synthetic", 1, kick_study::parameters::ScenarioSpec::default(), 0.0, None),
-                synthesize(law_name, 2, hunt_crossley, 2.5e-4, Some(kick_study::parameters::LawKind::PowerLaw)),
+                synthesize("synthetic", SYNTHETIC_SEED, kick_study::parameters::ScenarioSpec::default(), 0.0, None),
+                synthesize(law_name, SYNTHETIC_LAW_SEED, hunt_crossley, 2.5e-4, Some(kick_study::parameters::LawKind::PowerLaw)),
             ],
         ),
         (
