@@ -45,8 +45,9 @@ pub fn identifiability(file: &Path, dir: &Path) -> Result<Vec<PathBuf>, PaperErr
     let mut panels = Vec::new();
     for (source, profiles) in SOURCES.iter().zip(&data.profiles) {
         let source = source.replace('_', " ");
+        let least = kick_store::identify::files::least_chi_square(profiles);
         for p in profiles {
-            let y = p.delta_chi_square();
+            let y = p.delta_chi_square(least);
             let one: Vec<f64> = p.factor.iter().map(|_| 1.0).collect();
             let mut panel = Panel::new(
                 &format!("{}: {source}", p.parameter),

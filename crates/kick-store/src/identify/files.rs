@@ -474,11 +474,17 @@ pub struct ProfileData {
 }
 
 impl ProfileData {
-    /// Δχ² = χ² − min χ² along the profile.
-    pub fn delta_chi_square(&self) -> Vec<f64> {
-        let min = self.chi_square.iter().copied().fold(f64::INFINITY, f64::min);
-        self.chi_square.iter().map(|c| c - min).collect()
+    /// Δχ² = χ² − `least` along the profile; `least` is [`least_chi_square`]
+    /// of the profiles of the same data, so that every profile's Δχ² = 1
+    /// has one baseline (each profile's own minimum differs by up to ~1).
+    pub fn delta_chi_square(&self, least: f64) -> Vec<f64> {
+        self.chi_square.iter().map(|c| c - least).collect()
     }
+}
+
+/// The smallest χ² on any of `profiles` (those of one data set).
+pub fn least_chi_square(profiles: &[ProfileData]) -> f64 {
+    profiles.iter().flat_map(|p| p.chi_square.iter().copied()).fold(f64::INFINITY, f64::min)
 }
 
 /// `identifiability.h5` read back (profiles only; the maps stay in the file).
@@ -525,4 +531,25 @@ pub fn read_identifiability(path: &Path) -> Result<IdentifiabilityData, StoreErr
         history_sigma,
         profiles,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn profile(chi_square: Vec<f64>) -> ProfileData {
+        let n = chi_square.len();
+        ProfileData { parameter: "p".into(), unit: "1".into(), truth: 1.0, factor: vec![1.0; n], value: vec![1.0; n], chi_square }
+    }
+
+    /// Two profiles of one data set whose own minima differ: both are read
+    /// against the lower one, so only it touches Δχ² = 0.
+    #[test]
+    fn profiles_of_one_data_set_share_their_baseline() {
+        let profiles = [profile(vec![325.0, 320.5, 330.0]), profile(vec![340.0, 319.4, 321.0])];
+        let least = least_chi_square(&profiles);
+        assert_eq!(least, 319.4);
+        let (a, b) = (profiles[0].delta_chi_square(least), profiles[1].delta_chi_square(least));
+        assert!((a[1] - 1.1).abs() < 1e-12 && b[1] == 0.0, "{a:?} {b:?}");
+    }
 }
