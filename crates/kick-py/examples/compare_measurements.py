@@ -12,10 +12,16 @@ hold illustrative numbers invented for the guide, not measurements.
   centre ``offset`` sideways of the foot's line of motion; ball speed, spin
   and contact time, each with its standard uncertainty. Solved as
   ``kick.simulate3d_many(law="shell", ...)``: every row in one call, at its
-  own foot speed and offset.
+  own conditions.
 - Plate tests (``--plate``): the ball fired square at a rigid plate at a
   speed and inflation pressure; restitution and contact time. Solved as
   ``kick.bounce_many(...)`` (``kick bounce``).
+
+A sheet's columns are ``name``, ``role``, its observables with their ``u_``,
+and conditions: every other column must be a keyword of the call that solves
+it (``kick.keywords``), e.g. ``contact_depth`` or ``inflation_pressure`` of a
+kick, and each row runs at its own value; a column that is neither is
+refused, never ignored.
 - ``--fit REPORT.json`` (repeatable) holds every parameter a fit estimated
   (the report ``kick fit data SPEC --format json`` prints) at its estimate,
   and ``--set NAME=VALUE`` (repeatable, after the fits) a declared parameter
@@ -85,9 +91,29 @@ def held(function: str, fixed: dict) -> dict:
     return {k: v for k, v in fixed.items() if k in names}
 
 
-def kicks(sheet: dict, fixed: dict) -> list:
+KICK_OBSERVABLES = ("ball_speed", "spin", "contact_time")
+PLATE_OBSERVABLES = ("restitution", "contact_time")
+
+
+def conditions(sheet: dict, function: str, observables: tuple, path: str) -> dict:
+    """The sheet's condition columns, each a keyword of ``function``; any other column is refused."""
+    names = {p["name"] for p in kick.keywords(function)}
+    bookkeeping = {"name", "role", *observables, *("u_" + o for o in observables)}
+    out = {}
+    for column, values in sheet.items():
+        if column in bookkeeping:
+            continue
+        if column not in names:
+            raise SystemExit(f"{path}: column `{column}` is neither an observable ({', '.join(observables)}, u_*) nor a condition {function} takes")
+        out[column] = values
+    return out
+
+
+def kicks(sheet: dict, fixed: dict, path: str = "kicks") -> list:
     """(name, role, observable, model, measured, u) of every kick observable."""
-    out = kick.simulate3d_many(law="shell", foot_speed=sheet["foot_speed"], offset=sheet["offset"], **held("simulate3d_many", fixed))
+    # A row's own condition wins over a setting held for every row.
+    given = conditions(sheet, "simulate3d_many", KICK_OBSERVABLES, path)
+    out = kick.simulate3d_many(law="shell", **{**held("simulate3d_many", fixed), **given})
     if np.any(out["status"] != 0):
         raise SystemExit(f"kicks not solved: {out['failure_message']}")
     model = {
@@ -98,8 +124,9 @@ def kicks(sheet: dict, fixed: dict) -> list:
     return rows(sheet, model)
 
 
-def plate(sheet: dict, fixed: dict) -> list:
-    out = kick.bounce_many(speed=sheet["speed"], inflation_pressure=sheet["inflation_pressure"], **held("bounce_many", fixed))
+def plate(sheet: dict, fixed: dict, path: str = "plate") -> list:
+    given = conditions(sheet, "bounce_many", PLATE_OBSERVABLES, path)
+    out = kick.bounce_many(**{**held("bounce_many", fixed), **given})
     if np.any(out["status"] != 0):
         raise SystemExit(f"plate tests not solved: {out['failure_message']}")
     return rows(sheet, {"restitution": out["restitution"], "contact_time": out["contact_time"]})
@@ -138,7 +165,7 @@ def main(argv=None):
     fixed = {**fitted(args.fit), **settings(args.set)}
     if fixed:
         print("held: " + ", ".join(f"{k} = {v:.6g}" for k, v in fixed.items()))
-    found = plate(read(args.plate), fixed) + kicks(read(args.kicks), fixed)
+    found = plate(read(args.plate), fixed, str(args.plate)) + kicks(read(args.kicks), fixed, str(args.kicks))
     return found, report(found)
 
 

@@ -119,3 +119,28 @@ def test_the_residuals_are_the_models_at_each_rows_conditions():
     chi2 = sum(((m - x) / s) ** 2 for m, x, s in by.values())
     assert sum(c for c, _ in totals.values()) == pytest.approx(chi2)
     assert sum(n for _, n in totals.values()) == len(found) == 6 * 2 + 5 * 3
+
+
+def test_a_sheets_every_condition_column_reaches_the_model(tmp_path):
+    """A condition column beyond foot_speed and offset (here contact_depth and
+    inflation_pressure) runs each row at its own value; a column that is
+    neither a condition nor an observable is refused, not ignored."""
+    sys.path.insert(0, str(ROOT / "crates" / "kick-py" / "examples"))
+    try:
+        import compare_measurements as compare
+    finally:
+        sys.path.pop(0)
+    sheet = ROOT / "paper" / "guides" / "measurements" / "lab_kicks.csv"
+    lines = [l for l in sheet.read_text().splitlines() if not l.startswith("#")]
+    header, rows = lines[0], lines[1:]
+    extended = tmp_path / "kicks.csv"
+    extended.write_text("\n".join([header + ",contact_depth,inflation_pressure"] + [r + ",0.05,110000" for r in rows]) + "\n")
+    found, _ = compare.main(["--kicks", str(extended)])
+    by = {(name, observable): model for name, _, observable, model, _, _ in found}
+    one = kick.simulate3d(law="shell", foot_speed=20.0, offset=0.05, contact_depth=0.05, inflation_pressure=1.1e5)
+    assert by[("curve 5 cm", "spin")] == pytest.approx(np.linalg.norm(one["spin"]) / (2 * np.pi), rel=1e-12)
+    assert by[("curve 5 cm", "ball_speed")] == pytest.approx(one["speed"], rel=1e-12)
+    stray = tmp_path / "stray.csv"
+    stray.write_text("\n".join([header + ",kneee"] + [r + ",30" for r in rows]) + "\n")
+    with pytest.raises(SystemExit, match="column `kneee` is neither an observable"):
+        compare.main(["--kicks", str(stray)])
