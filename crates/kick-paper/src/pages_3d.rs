@@ -114,7 +114,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
     let _ = writeln!(w, "## Model\n");
     let _ = writeln!(
         w,
-        "- Ball: rigid sphere, R = {} m, m_b = {} kg, thin-shell inertia I_b = 2/3 m_b R² = {} kg m² by default \
+        "- Ball: rigid sphere, R = {} m (an assumed size inside Law 2's circumference of 68–70 cm, R = 10.8–11.1 cm), m_b = {} kg, thin-shell inertia I_b = 2/3 m_b R² = {} kg m² by default \
          (configurable, at most the thin-shell value).\n\
          - Foot: rigid instep box (or rounded box) of half-extents {} × {} × {} m with the effective mass m_f = {} kg \
          of Table 1 and a principal inertia tensor (default: a uniform solid box of that size and mass, an assumption). \
@@ -122,9 +122,12 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
          - Geometry: the foot's line of motion passes the ball centre at a lateral offset e; the face is tangent to \
          the ball where that line meets it, so the contact normal is tilted by φ = asin(e/R). A flat face hit square \
          on would push through the centre whatever the offset, so this tilt is what the offset means for a rigid \
-         sphere. α tilts the foot's path upward with the face held (the foot slides up the ball).\n\
-         - Normal force: the scenario's contact law — in every result here the paper's F_n = k δⁿ + c max(δ̇, 0) \
-         (Eq. 20); any law of `kick_core::laws` with `--law`/`--restitution` or the experiment file's \
+         sphere. α tilts the foot's path upward; the knife-edge face turns with it (a central kick on a rising path \
+         is then the 1D kick along it), while a face held vertical (`face_pitch = 0`, the approach-angle file below) \
+         lets the rising foot slide up the ball.\n\
+         - Normal force: the scenario's contact law — in the sections before the contact patch the paper's \
+         F_n = k δⁿ + c max(δ̇, 0) (Eq. 20), in the patch sections and the shell-ball rows of the spin-against-friction \
+         table the shell ball (`--law shell`); any law of `kick_core::laws` with `--law`/`--restitution` or the experiment file's \
          `law`/`restitution` keys (see [laws.md](laws.md)).\n\
          - Tangential force (`kick_3d::tangential`): Coulomb friction μ with the shell's own tangential \
          compliance, a spring k_t in series with a slider capped at μ F_n, no viscous term. The states are named \
@@ -181,7 +184,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
          | `accurate` | the relative motion in the foot's frame on DOP853, grip/slip, damping and face/edge switches \
          located on the dense output; analytic geometry on the face, parry3d on edges and rounded borders | over all \
          {ACCURACY_KICKS} kicks of the test box (`kick_3d::models::OffCenterBox`, seed {}: offset 0–9 cm, \
-         approach −20…30°, μ 0.2–∞, foot 1–10 kg, the paper's law), largest relative error against the full-state \
+         approach −20…30°, μ log-uniform 0.2–5 or ∞ (one kick in eight), foot 1–10 kg, the paper's law), largest relative error against the full-state \
          path at rtol 1e-13: {}; that reference's own error, estimated by tightening it tenfold (rtol 1e-14) over \
          the same kicks, is at most {:.1e} over these observables: the errors above are at that floor and say that \
          `accurate` is within about {:.1e} of the exact solution (both added), {} the 1e-9 it promises, \
@@ -220,6 +223,8 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
          ![spin and launch direction]({fig}/{OFFSET_FRICTION}.png)\n"
     );
     let mut spin_at_5 = Vec::new();
+    // Each curve's spin (rpm) at its last offset, and that offset (m).
+    let mut spin_at_end: Vec<(f64, f64)> = Vec::new();
     let mut lines = Vec::new();
     let mut rising_curves = Vec::new();
     let mut falling_notes = Vec::new();
@@ -254,6 +259,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
             ));
         }
         spin_at_5.push((label.clone(), rpm5, x5));
+        spin_at_end.push((rpm_end, xe));
         lines.push(format!(
             "- {label}: spin {} at e = 0, {} at {} cm, {} at {} cm; launch azimuth {}° at {} cm and {}° at {} cm",
             spin(s0 / RPM_PER_RAD_PER_S),
@@ -278,12 +284,16 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
     let _ = writeln!(w, "{}\n", lines.join("\n"));
     let rad = |rpm: f64| rpm / RPM_PER_RAD_PER_S;
     let (lo, hi) = spin_at_5.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), s| (a.min(s.1), b.max(s.1)));
+    let (end_lo, end_hi) = spin_at_end.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), s| (a.min(s.0), b.max(s.0)));
+    let x_end = spin_at_end.iter().map(|s| s.1).fold(f64::NEG_INFINITY, f64::max);
     let _ = writeln!(
         w,
-        "Spin grows with the offset at every step of the grid for {}: the lever arm of the tangential force grows \
-         with e, and so does the tangential component of the approach speed that the tilted normal leaves to grip{}. \
-         At 5 cm the four frictions give {}–{} rad/s ({}–{} rpm), {} rad/s apart: once μ is moderate, the offset sets \
-         the spin. That spread is not Asai et al.'s (2002) comparison: from μ = 0 to μ = 1 the rigid sphere's spin at \
+        "Spin grows with the offset at every step of the grid for {}: the tilted normal leaves more of the approach \
+         speed to the tangent, V sin φ, for the grip to turn into spin, while friction's lever stays R (a point \
+         contact){}. With a finite μ the friction is capped at μ times a normal impulse that falls with the normal \
+         approach V cos φ, so the spin peaks and falls. At 5 cm the four frictions give {}–{} rad/s ({}–{} rpm), {} \
+         rad/s apart; at {} cm they give {}–{} rad/s: the larger the offset, the more the friction sets the spin. \
+         That spread is not Asai et al.'s (2002) comparison: from μ = 0 to μ = 1 the rigid sphere's spin at \
          5 cm (the paper's law) goes from zero to rounding (|ω| < 1e-12 rad/s) to {}, all of it from friction, where Asai et al. found that \
          friction from 0 to 1 adds at most about 13 rad/s to a ball that also spins by wrapping around the foot \
          ([validation.md](validation.md)). The launch direction follows the tilted \
@@ -298,6 +308,9 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
         sig(lo, 3),
         sig(hi, 3),
         sig(rad(hi) - rad(lo), 2),
+        sig(x_end * 100.0, 2),
+        sig(rad(end_lo), 3),
+        sig(rad(end_hi), 3),
         spin(gain5),
         sig(tilt5, 3),
         sig(elevation, 2),
@@ -323,17 +336,35 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
             sig(xe * 100.0, 2)
         ));
     }
+    // Along each curve: does the speed fall at every step, and where does the spin stop rising?
+    let speed = g.column("speed")?;
+    let rpm = g.column("spin_rpm")?;
+    let speed_falls = g.curves.iter().all(|(_, rows)| rows.windows(2).all(|p| speed[p[1]] <= speed[p[0]]));
+    let turning: Vec<String> = g
+        .curves
+        .iter()
+        .filter_map(|(label, rows)| {
+            let peak = *rows.iter().max_by(|&&a, &&b| rpm[a].total_cmp(&rpm[b]))?;
+            (peak != rows[rows.len() - 1]).then(|| format!("{label} past {} cm", sig(g.x()[peak] * 100.0, 2)))
+        })
+        .collect();
     let _ = writeln!(
         w,
-        "Each marker is one offset of the grid; moving along a curve, the ball gains spin and loses speed, since one \
-         contact's energy goes to launch, to spin, to the foot and to losses:\n\n{}\n",
+        "Each marker is one offset of the grid; one contact's energy goes to launch, to spin, to the foot and to \
+         losses. Moving along a curve from e = 0 the ball {} and gains spin{}:\n\n{}\n",
+        if speed_falls { "loses speed at every step" } else { "mostly loses speed" },
+        if turning.is_empty() {
+            " all the way".to_string()
+        } else {
+            format!(" only up to each curve's largest spin; beyond it ({}) it loses both, and the curve turns back", turning.join(", "))
+        },
         trade.join("\n")
     );
 
     // The one-axis files.
     for (name, what) in [
         ("3d_friction", "friction at a 5 cm offset"),
-        ("3d_approach_angle", "approach angle, central, μ = 0.5"),
+        ("3d_approach_angle", "approach angle, central, μ = 0.5, the face held vertical (face_yaw 0, face_pitch 0) and 24 cm high (foot half-extents 0.03 × 0.12 × 0.12 m: the file's foot, not the Model's)"),
         ("3d_offset", "offset at μ = 0.5"),
     ] {
         let path = out.join(format!("{name}.h5"));
@@ -399,10 +430,11 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
          friction (μ from 0 to 1 changed spin by at most 13 rad/s), that the ball spins even with friction near zero \
          because it deforms around the foot, that spin was largest near an offset of about 100 mm, and that speed and \
          spin trade off across offsets.\n\n\
-         Where this model follows them: spin grows with offset, speed falls with it (the trade-off), and once μ is \
-         moderate the offset dominates. Where a rigid sphere cannot: at μ = 0 the normal force passes through the \
+         Where this model follows them: spin grows with offset up to a largest spin, and speed falls with it (the \
+         trade-off). Where it does not: friction changes the spin at 5 cm by tens of rad/s and by more at larger \
+         offsets (above), far beyond their 13 rad/s. Where a rigid sphere cannot follow them: at μ = 0 the normal force passes through the \
          centre (r ∥ n in Eq. 61), so the spin is zero to rounding (|ω| < 1e-12 rad/s), where the deforming ball of \
-         the FE model spins. Past this page's offsets the rigid geometry does reach a largest spin inside the ball: \
+         the FE model spins. Between the grid's offsets the rigid geometry reaches its largest spin inside the ball: \
          with the paper's law (the law of every kick on this page above the patch section) at μ = {} it is {} at \
          e = {} mm (R = {} mm, golden-section search), where the ball leaves at only {} m/s because the steeply tilted \
          normal lets the foot glance off (`kick_3d::validation::largest_spin`, [validation.md](validation.md), which \
@@ -442,8 +474,10 @@ fn friction_section() -> Result<String, PaperError> {
         w,
         "Table 1's kick at e = {} cm, square approach, solved when this page is written: spin (rad/s) against μ, for the \
          paper's ball and the shell ball (`--law shell`), at the default tangential stiffness and at a quarter and \
-         four times it; T_t is the gripping contact's tangential vibration period 2π √(m_t / k_t), t_c the contact \
-         time; in brackets the share of the contact that slips.\n",
+         four times it; T_t is the gripping contact's tangential vibration period 2π √(m_t / k_t), here with the \
+         foot's turn in m_t (1/m_t gains h²/I_f over the Model's), t_c the contact time at μ = ∞; in brackets the \
+         share of the contact that slips. Spins are in the sense friction turns the ball (−ω_z): a negative one \
+         leaves spinning against it.\n",
         sig(numbers_3d::SPIN_OFFSET * 100.0, 2)
     );
     let _ = writeln!(w, "| ball | k_t (N/m) | T_t / t_c | {} |", header.join(" | "));
@@ -460,7 +494,19 @@ fn friction_section() -> Result<String, PaperError> {
             cells.join(" | ")
         );
     }
-    let rigid_text: Vec<String> = rigid.iter().map(|(law, rpm)| format!("{} for the {law}", spin(*rpm / RPM_PER_RAD_PER_S))).collect();
+    let rigid_text: Vec<String> = rigid
+        .iter()
+        .map(|r| {
+            format!(
+                "{} for the {} (its gripping limit R m_t |v_t0| / I_b, the foot's turn on its default inertia in m_t: {}; \
+                 for a foot that cannot turn, as `kick check` holds it: {})",
+                spin(r.rpm / RPM_PER_RAD_PER_S),
+                r.law,
+                spin(r.limit_rpm / RPM_PER_RAD_PER_S),
+                spin(r.fixed_foot_limit_rpm / RPM_PER_RAD_PER_S)
+            )
+        })
+        .collect();
     // The default k_t's rows: where spin peaks against μ.
     let default_k = numbers_3d::DEFAULT_TANGENTIAL_STIFFNESS;
     let peaks: Vec<String> = rows
@@ -470,11 +516,12 @@ fn friction_section() -> Result<String, PaperError> {
             let best = r.points.iter().copied().fold((0.0, f64::NEG_INFINITY, 0.0), |m, p| if p.1 > m.1 { p } else { m });
             let last = r.points[r.points.len() - 1];
             format!(
-                "the {} peaks at μ = {} ({}) and leaves at {} when it never slips",
+                "the {} peaks at μ = {} ({}) and leaves at {}{} when it never slips",
                 r.law,
                 value_label(best.0),
                 spin(best.1 / RPM_PER_RAD_PER_S),
-                spin(last.1 / RPM_PER_RAD_PER_S)
+                spin(last.1 / RPM_PER_RAD_PER_S),
+                if last.1 < 0.0 { ", against friction's sense," } else { "" }
             )
         })
         .collect();
@@ -490,12 +537,24 @@ fn friction_section() -> Result<String, PaperError> {
             )
         })
         .collect();
+    // The rows whose contact slides from first touch to release at the smallest μ.
+    let through: Vec<String> = rows
+        .iter()
+        .filter(|r| r.points.first().is_some_and(|p| p.2 >= 0.999))
+        .map(|r| format!("the {} at k_t = {} N/m", r.law, kick_study::printable::short(r.tangential_stiffness)))
+        .collect();
+    let slides_through = if through.is_empty() {
+        format!("in no row of the table, even at μ = {}", value_label(numbers_3d::SPIN_FRICTIONS[0]))
+    } else {
+        format!("at μ = {} in the table: {}", value_label(numbers_3d::SPIN_FRICTIONS[0]), through.join(", "))
+    };
     let _ = writeln!(
         w,
         "\nRigid grip (k_t = ∞, μ = ∞: the sliding stopped at first touch by an impulse) gives {}.\n\n\
          Asai et al. (2002) found, in finite-element kicks, spin rising with friction (0 → 1 adding at most about 13 \
-         rad/s). In this model the spin rises with μ for as long as the contact slips from first touch to release: \
-         the friction is μ F_n throughout and the spin is R μ J_n / I_b, in proportion to μ. Beyond that, slipping \
+         rad/s). In this model the spin rises with μ for as long as the contact slips from first touch to release \
+         ({}): the friction is μ F_n throughout and the spin is R μ J_n / I_b, in \
+         proportion to μ. Beyond that, slipping \
          brings the contact points to rest and the contact grips; the shell's tangential spring then carries the \
          force, and the ball vibrates tangentially on it with the period T_t, so the friction force reverses during \
          the contact (Cross 2002 measured this on bouncing balls). What the ball keeps depends on where in that \
@@ -510,6 +569,7 @@ fn friction_section() -> Result<String, PaperError> {
          frequency, or the spin of an oblique impact on a plate (measurements.md lists a finite-element and \
          experimental study at 13.9 m/s and 15°), would fix k_t; no such number was reached.\n",
         rigid_text.join(" and "),
+        slides_through,
         peaks.join(", and "),
         if rising.is_empty() { "none of the stiffnesses shown".to_string() } else { rising.join(" and ") },
     );

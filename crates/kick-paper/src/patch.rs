@@ -79,7 +79,7 @@ pub fn draw_spin(data: &SpinData, asai: &AsaiClaims, figures: &Path) -> Result<V
         ),
         panel(
             "Sidespin added by friction, μ = 0 → 1, at each offset",
-            "sidespin at μ = 1 less at μ = 0 (rad/s)",
+            "sidespin at μ = 1 minus at μ = 0 (rad/s)",
             gain,
             SeriesLabelPosition::UpperLeft,
         ),
@@ -379,7 +379,7 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, PaperError>
         w,
         "\nBeside Asai et al.'s abstract, which gives three things and no curve (so the figure draws them as what they \
          are: a line at their offset, a bound on the gain; no curve of theirs): friction 0 → 1 adds at most {} rad/s \
-         there, against at most {} here; their spin is largest \"around {} mm\", here {}; and their ball \
+         there, against at most {} here; their spin is largest near {} mm, here {}; and their ball \
          spins at nearly zero friction (no number, and no sense, in the abstract), where here {}. Their offset runs \
          from the foot's axis to the ball's on a deforming finite-element ball, the model's from the swing line \
          through the instep's pole to the ball's centre, so the offsets compare only roughly.\n",

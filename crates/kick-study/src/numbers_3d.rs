@@ -128,14 +128,17 @@ pub struct FrictionSpin {
     pub period: f64,
     /// Contact time at the largest μ, s.
     pub contact_time: f64,
-    /// (μ, spin rpm, slip time / contact time) at each of [`SPIN_FRICTIONS`].
+    /// (μ, sidespin rpm in friction's sense, slip time / contact time) at
+    /// each of [`SPIN_FRICTIONS`]: −ω_z for the offset e > 0, so a negative
+    /// value is a ball that leaves spinning against friction's sense.
     pub points: Vec<(f64, f64, f64)>,
 }
 
 /// Table 1's kick at [`SPIN_OFFSET`] against μ ([`SPIN_FRICTIONS`]) for the
 /// paper's ball and the shell ball, at each of [`SPIN_STIFFNESSES`]; and rigid
-/// grip's spin (μ = ∞, k_t = ∞) per ball, rpm.
-pub fn friction_spin() -> Result<(Vec<FrictionSpin>, Vec<(&'static str, f64)>), StudyError> {
+/// grip's spin (μ = ∞, k_t = ∞) per ball, rpm; spins in friction's sense
+/// ([`FrictionSpin::points`]).
+pub fn friction_spin() -> Result<(Vec<FrictionSpin>, Vec<RigidGrip>), StudyError> {
     let shell = kick_core::Scenario::baseline().with_law(kick_core::LawKind::Shell, None)?;
     let mut rows = Vec::new();
     let mut rigid = Vec::new();
@@ -156,7 +159,7 @@ pub fn friction_spin() -> Result<(Vec<FrictionSpin>, Vec<(&'static str, f64)>), 
             let mut last = None;
             for mu in SPIN_FRICTIONS {
                 let (kick, o) = at(mu, k_t)?;
-                points.push((mu, o.spin_rpm, o.slip_time / o.contact_time));
+                points.push((mu, sidespin_rpm(&o), o.slip_time / o.contact_time));
                 last = Some((kick, o));
             }
             let Some((kick, o)) = last else { continue };
@@ -169,9 +172,33 @@ pub fn friction_spin() -> Result<(Vec<FrictionSpin>, Vec<(&'static str, f64)>), 
                 points,
             });
         }
-        rigid.push((law, at(f64::INFINITY, f64::INFINITY)?.1.spin_rpm));
+        let (kick, o) = at(f64::INFINITY, f64::INFINITY)?;
+        let limit = |inertia: f64| kick_3d::checks::gripping_limit_spin(&kick, inertia).length() * 60.0 / std::f64::consts::TAU;
+        rigid.push(RigidGrip {
+            law,
+            rpm: sidespin_rpm(&o),
+            limit_rpm: limit(kick.foot_inertia[2]),
+            fixed_foot_limit_rpm: limit(f64::INFINITY),
+        });
     }
     Ok((rows, rigid))
+}
+
+/// Rigid grip's kick (μ = ∞, k_t = ∞) of one ball, rpm: its sidespin in
+/// friction's sense, and the gripping limit R m_t |v_t0| / I_b with the
+/// foot's turn in m_t (the foot's default inertia) and without it (a foot
+/// that cannot turn, `kick check`'s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RigidGrip {
+    pub law: &'static str,
+    pub rpm: f64,
+    pub limit_rpm: f64,
+    pub fixed_foot_limit_rpm: f64,
+}
+
+/// −ω_z in rpm: the sidespin of a kick at e > 0 in the sense friction turns the ball.
+fn sidespin_rpm(o: &Outcome3d) -> f64 {
+    -o.spin[2] * 60.0 / std::f64::consts::TAU
 }
 
 /// The seed of kick-3d's test box (the kicks the page's accuracy is stated over).
