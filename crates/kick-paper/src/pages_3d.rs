@@ -494,19 +494,22 @@ fn friction_section() -> Result<String, PaperError> {
             cells.join(" | ")
         );
     }
-    let rigid_text: Vec<String> = rigid
-        .iter()
-        .map(|r| {
-            format!(
-                "{} for the {} (its gripping limit R m_t |v_t0| / I_b, the foot's turn on its default inertia in m_t: {}; \
-                 for a foot that cannot turn, as `kick check` holds it: {})",
-                spin(r.rpm / RPM_PER_RAD_PER_S),
-                r.law,
-                spin(r.limit_rpm / RPM_PER_RAD_PER_S),
-                spin(r.fixed_foot_limit_rpm / RPM_PER_RAD_PER_S)
-            )
-        })
-        .collect();
+    let mut rigid_text: Vec<String> = rigid.iter().map(|r| format!("{} for the {}", spin(r.rpm / RPM_PER_RAD_PER_S), r.law)).collect();
+    // The gripping limit at touch does not depend on the normal law: one sentence for both balls.
+    if let Some(r) = rigid.first() {
+        let last = rigid_text.pop().unwrap_or_default();
+        let mut joined = rigid_text.join(", ");
+        if !joined.is_empty() {
+            joined.push_str(" and ");
+        }
+        rigid_text = vec![format!(
+            "{joined}{last}. The gripping limit of the sliding stopped at touch, R m_t |v_t0| / I_b, is the same for both \
+             balls: {} for a foot that cannot turn, which rigid grip reaches exactly on the paper's law (`kick check`), and {} with the \
+             default foot's turn in m_t, which the turning foot does not keep over the contact",
+            spin(r.fixed_foot_limit_rpm / RPM_PER_RAD_PER_S),
+            spin(r.limit_rpm / RPM_PER_RAD_PER_S)
+        )];
+    }
     // The default k_t's rows: where spin peaks against μ.
     let default_k = numbers_3d::DEFAULT_TANGENTIAL_STIFFNESS;
     let peaks: Vec<String> = rows
