@@ -359,7 +359,12 @@ fn figure_captions(results: &Path) -> Result<Vec<(u32, String)>, ReportError> {
          speed, close to the undamped law's V0^(2n/(n+1)) = V0^{:.3} (n = {}): not as the relative kinetic energy \
          ½μV0² (Eq. 56), which falls {:.0}x over the range.",
             kick_study::printable::short(foot_speed),
-            v0[0], v0[l], vb[0], vb[l], pf[0], pf[l],
+            v0[0],
+            v0[l],
+            vb[0],
+            vb[l],
+            pf[0],
+            pf[l],
             (pf[0] / pf[l]).ln() / ((foot_speed - v0[0]) / (foot_speed - v0[l])).ln(),
             2.0 * n / (n + 1.0),
             kick_study::printable::short(n),

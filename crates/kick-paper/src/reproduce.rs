@@ -2,7 +2,9 @@
 //! the reproduction report.
 
 use crate::error::PaperError;
-use crate::identify::report::{LAWS, SYNTHETIC_FIT, SYNTHETIC_LAW_FIT, SYNTHETIC_LAW_SEED, SYNTHETIC_SEED, SYNTHETIC_WRONG_LAW_FIT, TABLE2_FIT};
+use crate::identify::report::{
+    LAWS, SYNTHETIC_FIT, SYNTHETIC_LAW_FIT, SYNTHETIC_LAW_SEED, SYNTHETIC_SEED, SYNTHETIC_WRONG_LAW_FIT, TABLE2_FIT,
+};
 use crate::links::relative;
 use crate::printable::Printable;
 use crate::report::CheckLine;

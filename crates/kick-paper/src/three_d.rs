@@ -104,7 +104,13 @@ pub fn figures(h5: &Path, dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
             "speed |v| (m/s)",
             series(&speed, &rad),
         )];
-        written.extend(save_grid(dir, &format!("{name}_tradeoff"), "the speed–spin trade-off across offsets, per friction", (1, 1), &trade)?);
+        written.extend(save_grid(
+            dir,
+            &format!("{name}_tradeoff"),
+            "the speed–spin trade-off across offsets, per friction",
+            (1, 1),
+            &trade,
+        )?);
     }
     Ok(written)
 }

@@ -283,8 +283,10 @@ fn no_command_writes_over_what_it_reads() {
 fn reproduce_names_the_experiments_flag_it_cannot_use() {
     let dir = scratch("no-experiments");
     let missing = dir.join("nowhere");
-    for args in [vec!["reproduce", "--list", "--experiments", missing.to_str().unwrap()], vec!["reproduce", "--list", "--experiments", dir.to_str().unwrap()]]
-    {
+    for args in [
+        vec!["reproduce", "--list", "--experiments", missing.to_str().unwrap()],
+        vec!["reproduce", "--list", "--experiments", dir.to_str().unwrap()],
+    ] {
         let out = kick(&args);
         assert_eq!(out.status.code(), Some(1), "{args:?}");
         let stderr = String::from_utf8_lossy(&out.stderr);
