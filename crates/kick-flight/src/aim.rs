@@ -327,6 +327,23 @@ pub struct Family {
     pub objective: Option<Objective>,
     /// Residual evaluations of the family's solves (each two flights).
     pub evaluations: usize,
+    /// The coordinates along which the objective's best member is an end of
+    /// the members found: there the objective still improves beyond it, and
+    /// what stops it is the parameter's range or the end of the solutions.
+    pub best_at_end: Vec<FamilyEnd>,
+}
+
+/// The objective's best member at an end of the family along one coordinate.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FamilyEnd {
+    pub name: &'static str,
+    pub unit: &'static str,
+    pub value: f64,
+    /// The low end (else the high one).
+    pub low: bool,
+    /// On the parameter's range bound (else the last member found: beyond
+    /// it no member reaches the target past the wall).
+    pub bound: bool,
 }
 
 /// Grid points per coordinate of a family of `dimension` coordinates.
@@ -398,6 +415,7 @@ pub fn family(
         launch_speed: span(members, |m| m.launch_speed),
         objective,
         evaluations,
+        best_at_end: Vec::new(),
     };
     if n <= 2 {
         let pivots = [free.first().map_or("", |f| f.name), free.get(1).map_or("", |f| f.name)];
@@ -543,7 +561,22 @@ pub fn family(
             steps.iter_mut().for_each(|s| *s *= 0.5);
         }
     }
-    Ok((summary(&members, pivots, tried + probes, evaluations), best))
+    let mut family = summary(&members, pivots, tried + probes, evaluations);
+    family.best_at_end = coordinates
+        .iter()
+        .filter_map(|&k| {
+            let v = best.values[k];
+            let (low, high) = members.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), m| (a.min(m.values[k]), b.max(m.values[k])));
+            // A range with one member has no end to speak of.
+            if low == high || (v != low && v != high) {
+                return None;
+            }
+            let at_low = v == low;
+            let bound = if at_low { v <= free[k].low } else { v >= free[k].high };
+            Some(FamilyEnd { name: free[k].name, unit: free[k].unit, value: v, low: at_low, bound })
+        })
+        .collect();
+    Ok((family, best))
 }
 
 /// [`aim_with`], then the family of its solution and the member

@@ -440,6 +440,21 @@ impl Printable for AimReport {
             let _ = writeln!(w, "  {:<16} {} to {} m/s", "launch speed", sig(f.launch_speed[0]), sig(f.launch_speed[1]));
             let chosen = f.objective.map_or("none: the member the solve reached from the starts".to_string(), |o| o.name().to_string());
             let _ = writeln!(w, "{:<18} {chosen}", "objective");
+            for end in &f.best_at_end {
+                let _ = writeln!(
+                    w,
+                    "  {:<16} its best member is the {} end, {} {}: {}",
+                    end.name,
+                    if end.low { "low" } else { "high" },
+                    sig(end.value),
+                    end.unit,
+                    if end.bound {
+                        "the parameter's range bound; a wider range would improve the objective"
+                    } else {
+                        "beyond it the solve found no member that reaches the target past the wall"
+                    }
+                );
+            }
         }
         if let Some(k) = &self.kick {
             let shown: Vec<String> = k
@@ -581,6 +596,17 @@ mod tests {
             assert!((y - target[1]).hypot(z - target[2]) <= MISS_TOLERANCE);
             assert!(s.wall_clearance >= 0.0);
         }
+        // min-speed's best member is the family's low end in speed, and the
+        // report says so: the same launch held 1 cm/s slower, the two
+        // other parameters free, reaches the target past the wall from no start.
+        let ends = slow.family.as_ref().unwrap().best_at_end.clone();
+        assert_eq!(ends.len(), 1, "{ends:?}");
+        assert!(ends[0].name == "speed" && ends[0].low && !ends[0].bound, "{ends:?}");
+        let held = FlightSpec { speed: Some(ends[0].value - 0.01), ..base.flight.clone() };
+        let slower = aim(&AimRequest { flight: held, ..base.clone() });
+        assert!(matches!(slower, Err(StudyError::Aim { source: AimError::NoSolution { .. }, .. })), "{slower:?}");
+        let text = aim(&AimRequest { objective: Some(Objective::MinSpeed), ..base.clone() }).unwrap().text();
+        assert!(text.contains("its best member is the low end"), "{text}");
         let error = aim(&AimRequest { objective: Some(Objective::MinFootSpeed), ..base.clone() }).unwrap_err();
         assert!(error.to_string().contains("min-foot-speed"), "{error}");
     }
