@@ -303,6 +303,21 @@ pub fn page_section(out: &Path, report_dir: &Path) -> Result<String, PaperError>
                 Some(z) => format!(", where μ = 0 gives {}, so friction 0 → {} adds {} rad/s there", spin3(z), short(mu), sig3(s - z)),
                 None => String::new(),
             };
+            // Offsets where the ball leaves spinning against friction's sense (beyond rounding).
+            let side = k.sidespin(sense);
+            let against: Vec<usize> = (0..side.len()).filter(|&i| side[i] < -crate::units::ZERO_SPIN).collect();
+            let gain = match (against.first(), against.last()) {
+                (Some(&a), Some(&b)) => {
+                    let least = against.iter().map(|&i| side[i]).fold(f64::INFINITY, f64::min);
+                    let at = if a == b {
+                        format!("{} mm", short(k.offset[a] * 1e3))
+                    } else {
+                        format!("{}–{} mm", short(k.offset[a] * 1e3), short(k.offset[b] * 1e3))
+                    };
+                    format!("{gain}; at {at} it spins against friction's sense (down to {})", crate::units::spin(least))
+                }
+                _ => gain,
+            };
             if e == last {
                 // The sweep's edge is no maximum: say so instead of scoring it.
                 parts.push(format!(
