@@ -176,5 +176,8 @@ mod tests {
             kick_study::leg::leg(&LegSettings { locked_ankle, locked_knee, ..Default::default() }).unwrap().mass.effective_mass
         };
         assert!(mass(false, false) < locked && locked < mass(true, true) && mass(true, true) < 3.0);
+        // "with the ankle free the ball leaves slower than the foot arrived"
+        let free = kick_study::leg::leg(&LegSettings::default()).unwrap().outcome;
+        assert!(free.v_ball_out < kick_study::parameters::Scenario::baseline().foot_speed(), "{free:?}");
     }
 }

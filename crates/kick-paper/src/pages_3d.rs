@@ -292,7 +292,7 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
          speed to the tangent, V sin φ, for the grip to turn into spin, while friction's lever stays R (a point \
          contact){}. With a finite μ the friction is capped at μ times a normal impulse that falls with the normal \
          approach V cos φ, so the spin peaks and falls. At 5 cm the four frictions give {}–{} rad/s ({}–{} rpm), {} \
-         rad/s apart; at {} cm they give {}–{} rad/s: the larger the offset, the more the friction sets the spin. \
+         rad/s apart; at {} cm they give {}–{} rad/s: {}. \
          That spread is not Asai et al.'s (2002) comparison: from μ = 0 to μ = 1 the rigid sphere's spin at \
          5 cm (the paper's law) goes from zero to rounding (|ω| < 1e-12 rad/s) to {}, all of it from friction, where Asai et al. found that \
          friction from 0 to 1 adds at most about 13 rad/s to a ball that also spins by wrapping around the foot \
@@ -311,6 +311,11 @@ pub fn page_3d(out: &Path, report_dir: &Path) -> Result<String, PaperError> {
         sig(x_end * 100.0, 2),
         sig(rad(end_lo), 3),
         sig(rad(end_hi), 3),
+        if end_hi - end_lo > hi - lo {
+            "the larger the offset, the more the friction sets the spin"
+        } else {
+            "friction sets the spin no more at the largest offset than at 5 cm"
+        },
         spin(gain5),
         sig(tilt5, 3),
         sig(elevation, 2),

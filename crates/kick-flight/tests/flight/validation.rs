@@ -184,6 +184,8 @@ fn the_article_s_estimate_stands_beside_the_middle_kick() {
     assert!((e.lift_force - q * launch.lift_coefficient).abs() < 1e-12 * e.lift_force, "{} {}", e.lift_force, q * launch.lift_coefficient);
     assert!((e.implied_lift_coefficient - 3.5 / q).abs() < 1e-12, "{}", e.implied_lift_coefficient);
     assert!((0.19..0.21).contains(&e.implied_lift_coefficient));
+    // "below the default's plateau": the C_L the middle kick launches with.
+    assert!(e.implied_lift_coefficient < launch.lift_coefficient, "{} {}", e.implied_lift_coefficient, launch.lift_coefficient);
     let (force, time, bend) = (e.side_force.midpoint().unwrap(), e.flight_time.midpoint().unwrap(), e.bend.midpoint().unwrap());
     assert!((force / 0.43 * time * time / 2.0 - bend).abs() < 0.5 * bend.min(1.0), "the article's bend is a t²/2");
 }
