@@ -19,8 +19,9 @@
 //! root attributes `shard_index`, `shard_count`, `shard_row_start`,
 //! `shard_row_end`, `experiment_rows` and `experiment_fingerprint`
 //! ([`fingerprint`] of the experiment text). [`merge`] refuses parts of
-//! different experiments, tool versions or commits, of different N, and any
-//! set that misses or repeats a row, naming the files; the merged file equals
+//! different experiments, tool versions or commits, of different N or
+//! different `--compress` filters, and any set that misses or repeats a row,
+//! naming the files; the merged file equals
 //! the unsharded run's in every group, dataset and attribute.
 //!
 //! The same holds for 3D experiments and for the random sweeps (`kick sweep
@@ -126,7 +127,27 @@ struct Meta {
     path: String,
     descriptor: TypeDescriptor,
     units: String,
+    /// Its filters as `--compress` sets them ("none", "shuffle + deflate 4").
+    filters: String,
     len: usize,
+}
+
+/// A dataset's filters in `--compress`'s words.
+fn filter_names(d: &hdf5::Dataset) -> String {
+    let names: Vec<String> = d
+        .filters()
+        .iter()
+        .map(|f| match f {
+            hdf5::filters::Filter::Deflate(level) => format!("deflate {level}"),
+            hdf5::filters::Filter::Shuffle => "shuffle".to_string(),
+            other => format!("{other:?}"),
+        })
+        .collect();
+    if names.is_empty() {
+        "none".into()
+    } else {
+        names.join(" + ")
+    }
 }
 
 fn part_error(path: &Path, message: impl Into<String>) -> ShardError {
@@ -194,7 +215,7 @@ fn collect(group: &Group, prefix: &str, path: &Path, out: &mut Vec<Meta>, histor
             return Err(part_error(path, format!("{member}: a dataset of shape {shape:?}, not one of the result layout (1-D)")));
         };
         let units = crate::h5::read_str_attr(&d, "units").unwrap_or_default();
-        out.push(Meta { path: member, descriptor, units, len: *len });
+        out.push(Meta { path: member, descriptor, units, filters: filter_names(&d), len: *len });
     }
     Ok(())
 }
@@ -294,8 +315,8 @@ fn names(pieces: &[&Piece]) -> String {
     pieces.iter().map(|p| p.path.display().to_string()).collect::<Vec<_>>().join(", ")
 }
 
-/// Refuse parts of different experiments, N, tool or commit, layouts, and
-/// any set that misses or repeats a row; the parts in row order.
+/// Refuse parts of different experiments, N, tool or commit, layouts or
+/// filters, and any set that misses or repeats a row; the parts in row order.
 fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
     let first = pieces.first().ok_or_else(|| ShardError::Merge("no shard files given".into()))?;
     let groups = |key: &dyn Fn(&Piece) -> String| {
@@ -328,14 +349,25 @@ fn check(mut pieces: Vec<Piece>) -> Result<Vec<Piece>, ShardError> {
             return Err(ShardError::Merge(format!("root attribute `{name}` differs between {}", list.join(" and "))));
         }
     }
-    // The same datasets, types and units in every part.
-    let layout = |p: &Piece| p.datasets.iter().map(|d| (d.path.clone(), d.descriptor.clone(), d.units.clone())).collect::<Vec<_>>();
+    // The same datasets, types, units and filters in every part (a merge
+    // stores every column as its first part does, so parts written with
+    // different `--compress` come from different commands).
+    let layout = |p: &Piece| {
+        p.datasets.iter().map(|d| (d.path.clone(), d.descriptor.clone(), d.units.clone(), d.filters.clone())).collect::<Vec<_>>()
+    };
     let expected = layout(first);
     for piece in &pieces[1..] {
         let got = layout(piece);
         if got != expected {
             let differs = expected.iter().zip(&got).find(|(a, b)| a != b).map(|(a, b)| (a.clone(), b.clone()));
             let message = match differs {
+                Some((a, b)) if a.0 == b.0 && a.1 == b.1 && a.2 == b.2 => format!(
+                    "{}: stored with filters {} here, {} in {} (write every shard with the same --compress)",
+                    a.0,
+                    b.3,
+                    a.3,
+                    first.path.display()
+                ),
                 Some((a, b)) if a.0 == b.0 => {
                     format!("{}: {} [{}] here, {} [{}] in {}", a.0, type_name(&b.1), b.2, type_name(&a.1), a.2, first.path.display())
                 }

@@ -294,3 +294,28 @@ fn many_parts_merge_under_a_low_open_file_limit() {
     assert_eq!(merged, whole);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Shards written with and without `--compress` are two commands' parts: the
+/// merge refuses them naming the flag (it stored every column as its first
+/// part did), and writes nothing.
+#[test]
+fn merge_refuses_parts_of_different_compression() {
+    let dir = scratch("compress");
+    let out = dir.join("s.h5");
+    for (shard, compress) in [("0/2", true), ("1/2", false)] {
+        let mut args = vec!["sweep", "--samples", "40", "--seed", "1", "--threads", "1", "--out", out.to_str().unwrap(), "--shard", shard];
+        if compress {
+            args.push("--compress");
+        }
+        let done = kick(&args);
+        assert!(done.status.success(), "{}", String::from_utf8_lossy(&done.stderr));
+    }
+    let parts = [dir.join("s.shard-0-of-2.h5"), dir.join("s.shard-1-of-2.h5")];
+    let merged = dir.join("merged.h5");
+    let done = kick(&["merge", merged.to_str().unwrap(), parts[0].to_str().unwrap(), parts[1].to_str().unwrap()]);
+    assert_eq!(done.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&done.stderr);
+    assert!(stderr.contains("stored with filters none here, shuffle + deflate 4") && stderr.contains("--compress"), "{stderr}");
+    assert!(!merged.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
