@@ -328,8 +328,8 @@ pub struct Family {
     /// Residual evaluations of the family's solves (each two flights).
     pub evaluations: usize,
     /// The coordinates along which the objective's best member is an end of
-    /// the members found: there the objective still improves beyond it, and
-    /// what stops it is the parameter's range or the end of the solutions.
+    /// the members found: what stops it there is the parameter's range or
+    /// the end of the solutions found, not an optimum of the objective.
     pub best_at_end: Vec<FamilyEnd>,
 }
 

@@ -88,22 +88,22 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, P
     let min_time = if args.quick { 0.02 } else { args.min_time };
     let t = kick_study::bench::measure(args.quick, args.min_time, args.sweep_samples, log)?;
     let files = file_runs(args.quick)?;
-    let flown = sweep3d_rates(args.quick)?;
+    let sweeps = sweep3d_rates(args.quick)?;
     let _ = writeln!(
         log,
         "flown 3D kicks into a file, 2 threads: {} rows/s, the same kicks unflown {} rows/s, {} the cost ({})",
-        flown.flown.show(0, ""),
-        flown.unflown.show(0, ""),
-        flown.cost.show(2, "x"),
-        flown_command(flown.samples, true)
+        sweeps.flown.show(0, ""),
+        sweeps.unflown.show(0, ""),
+        sweeps.cost.show(2, "x"),
+        flown_command(sweeps.samples, true)
     );
     let _ = writeln!(
         log,
         "3D kicks with the leg into a file, 2 threads: {} rows/s, without it {} rows/s, {} the cost ({})",
-        flown.leg.show(0, ""),
-        flown.shell.show(0, ""),
-        flown.leg_cost.show(2, "x"),
-        leg_command(flown.samples, true)
+        sweeps.leg.show(0, ""),
+        sweeps.shell.show(0, ""),
+        sweeps.leg_cost.show(2, "x"),
+        leg_command(sweeps.samples, true)
     );
     for run in &files {
         let _ = writeln!(
@@ -118,7 +118,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, P
 
     let text = format!("kick bench{} --min-time {min_time}", if args.quick { " --quick" } else { "" });
     let machine = Machine::this();
-    let path = kick_store::bench::write_work_precision(&args.out.join("work_precision.h5"), &t, &flown, &machine, BUILD, &text)?;
+    let path = kick_store::bench::write_work_precision(&args.out.join("work_precision.h5"), &t, &sweeps, &machine, BUILD, &text)?;
     let mut written = vec![path.clone()];
     written.extend(draw(&path, &args.out.join("figures"))?);
     let measured = Measured {
@@ -136,7 +136,7 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, P
         cost: &t.cost,
         cost_3d: t.cost_3d,
         files: &files,
-        flown: &flown,
+        sweeps: &sweeps,
         other: &t.other,
     };
     if let Some(report) = &args.report {
@@ -161,8 +161,8 @@ pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, P
         shell_vs_paper_law_1d_cost_ratio: t.other.shell_cost.median,
         leg_boot_vs_shell_1d_cost_ratio: t.other.leg_cost.median,
         flights_per_second_2_threads: t.other.flights_2.median,
-        sweep3d_flown_rows_per_second_2_threads: flown.flown.median,
-        sweep3d_leg_rows_per_second_2_threads: flown.leg.median,
+        sweep3d_flown_rows_per_second_2_threads: sweeps.flown.median,
+        sweep3d_leg_rows_per_second_2_threads: sweeps.leg.median,
         written,
     })
 }
@@ -199,7 +199,7 @@ struct Measured<'a> {
     cost: &'a CostRatio,
     cost_3d: Spread,
     files: &'a [FileRun],
-    flown: &'a Sweep3dRates,
+    sweeps: &'a Sweep3dRates,
     other: &'a Other,
 }
 
@@ -340,8 +340,8 @@ impl Measured<'_> {
             ),
             None => " The ratio at equal accuracy needs the `rk4-events` ladder, which this (quick) run leaves out.".into(),
         };
-        let flown_command = flown_command(self.flown.samples, true);
-        let leg_command = leg_command(self.flown.samples, true);
+        let flown_command = flown_command(self.sweeps.samples, true);
+        let leg_command = leg_command(self.sweeps.samples, true);
         // A target of the issues against this run's median.
         let met = |median: f64, least: f64| if median >= least { "met" } else { "not met" };
         let [tx, ty, tz] = crate::free_kick::AIM_TARGET;
@@ -442,14 +442,14 @@ impl Measured<'_> {
             o.flights_2.show(0, ""),
             o.flight_speed_up.show(2, "x"),
             1e6 / o.flights_1.median,
-            met(self.flown.flown.median, 10_000.0),
-            self.flown.flown.show(0, ""),
-            self.flown.unflown.show(0, ""),
-            self.flown.cost.show(2, "x"),
-            met(self.flown.leg.median, 10_000.0),
-            self.flown.leg.show(0, ""),
-            self.flown.shell.show(0, ""),
-            self.flown.leg_cost.show(2, "x"),
+            met(self.sweeps.flown.median, 10_000.0),
+            self.sweeps.flown.show(0, ""),
+            self.sweeps.unflown.show(0, ""),
+            self.sweeps.cost.show(2, "x"),
+            met(self.sweeps.leg.median, 10_000.0),
+            self.sweeps.leg.show(0, ""),
+            self.sweeps.shell.show(0, ""),
+            self.sweeps.leg_cost.show(2, "x"),
             o.aims[0].show(2, ""),
             short(sx),
             short(sy),

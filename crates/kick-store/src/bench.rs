@@ -222,13 +222,13 @@ pub fn sweep3d_rates(quick: bool) -> Result<Sweep3dRates, StoreError> {
 }
 
 /// Write `path` (work_precision.h5): one row per ladder point, the headline
-/// numbers of `t` and `flown` as root attributes, the `machine` and the
+/// numbers of `t` and `sweeps` as root attributes, the `machine` and the
 /// `build` (compiler, profile, target features) they were taken with;
 /// `command` is the provenance's.
 pub fn write_work_precision(
     path: &Path,
     t: &Timings,
-    flown: &Sweep3dRates,
+    sweeps: &Sweep3dRates,
     machine: &Machine,
     build: &str,
     command: &str,
@@ -264,10 +264,10 @@ pub fn write_work_precision(
         ("off_center_3d_vs_1d_cost_ratio", t.cost_3d.median),
         ("shell_vs_paper_law_1d_cost_ratio", t.other.shell_cost.median),
         ("leg_boot_vs_shell_1d_cost_ratio", t.other.leg_cost.median),
-        ("sweep3d_flown_rows_per_second_2_threads", flown.flown.median),
-        ("sweep3d_flown_vs_unflown_cost_ratio", flown.cost.median),
-        ("sweep3d_leg_rows_per_second_2_threads", flown.leg.median),
-        ("sweep3d_leg_vs_shell_cost_ratio", flown.leg_cost.median),
+        ("sweep3d_flown_rows_per_second_2_threads", sweeps.flown.median),
+        ("sweep3d_flown_vs_unflown_cost_ratio", sweeps.cost.median),
+        ("sweep3d_leg_rows_per_second_2_threads", sweeps.leg.median),
+        ("sweep3d_leg_vs_shell_cost_ratio", sweeps.leg_cost.median),
         ("flights_per_second_1_thread", t.other.flights_1.median),
         ("flights_per_second_2_threads", t.other.flights_2.median),
         ("aim_launch_seconds", t.other.aims[0].median * 1e-3),

@@ -178,9 +178,9 @@ pub fn laws(file: &Path, figures: &str) -> Result<String, PaperError> {
          the paper's law as given, the others through `Scenario::with_law` with the restitution the paper's \
          law gives on that row as their target (hysteresis laws: the row's k and n; Kelvin–Voigt: the secant \
          stiffness at the undamped δ*). Columns: restitution e, exit speed, onset force F(0⁺), peak force, \
-         contact time, maximum compression. The power-law rows are `accurate`'s, not the paper's printed Table 2: \
-         where the peak is the onset jump c V0 or the contact is short they differ from the print in the last digits \
-         (a step method samples the jump only after its first step; [README.md](README.md) sets the two side by side).\n\n",
+         contact time, maximum compression. The power-law rows are `accurate`'s, not the paper's printed Table 2, \
+         and in some rows they differ from the print in the last digits (the fixed-step method that printed it samples \
+         the onset jump c V0 only after its first step; [README.md](README.md) sets the two side by side).\n\n",
     );
     let _ = writeln!(w, "![force pulses and peak forces of every law]({figures}/laws.png)\n");
     w.push_str("| row (target e) | law | e | v_b⁺ (m/s) | F(0⁺) (N) | peak (N) | t_c (ms) | δ_max (mm) |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n");
