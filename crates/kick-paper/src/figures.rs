@@ -7,6 +7,8 @@
 
 use crate::h5::{read_history, Column, H5Error, SweepData};
 use crate::output::{OutputError, Staged};
+use plotters::coord::ranged1d::ValueFormatter;
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
@@ -131,15 +133,44 @@ fn draw_err(figure: &str) -> impl Fn(String) -> FigureError + '_ {
 /// Tick label of a log10 axis position: the value itself, 3 significant
 /// digits, at powers of ten only (the ticks between stay unlabelled).
 fn log_tick(v: f64) -> String {
-    if (v - v.round()).abs() > 1e-9 {
-        return String::new();
-    }
-    let x = 10f64.powf(v.round());
+    let x = 10f64.powf(v);
     if (0.01..10_000.0).contains(&x) {
-        format!("{}", (x * 1000.0).round() / 1000.0)
+        // Three significant digits, enough for 1, 2 and 5 times a power of ten.
+        let digits = (2 - x.log10().floor() as i32).max(0) as usize;
+        let text = format!("{x:.digits$}");
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            text
+        }
     } else {
-        format!("{x:.1e}")
+        format!("{x:.0e}")
     }
+}
+
+/// Key points of a log axis spanning (x0, x1) in decades: 1, 2 and 5 times
+/// each power of ten over up to three and a half decades, powers of ten alone beyond;
+/// light points at every digit times a power of ten.
+fn log_key_points(x0: f64, x1: f64) -> (Vec<f64>, Vec<f64>) {
+    if !(x0.is_finite() && x1.is_finite() && x0 < x1) {
+        return (Vec::new(), Vec::new());
+    }
+    let multiples: &[f64] = if x1 - x0 <= 3.5 { &[1.0, 2.0, 5.0] } else { &[1.0] };
+    let (mut keys, mut lights) = (Vec::new(), Vec::new());
+    for decade in (x0.floor() as i32)..=(x1.ceil() as i32) {
+        for digit in 1..10 {
+            let v = (f64::from(digit) * 10f64.powi(decade)).log10();
+            if !(x0..=x1).contains(&v) {
+                continue;
+            }
+            if multiples.contains(&f64::from(digit)) {
+                keys.push(v);
+            } else {
+                lights.push(v);
+            }
+        }
+    }
+    (keys, lights)
 }
 
 fn padded(min: f64, max: f64) -> (f64, f64) {
@@ -260,17 +291,69 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel, 
             y1 = top;
         }
     }
-    let mut chart = chart_builder(area, panel).build_cartesian_2d(x0..x1, y0..y1).map_err(|e| e.to_string())?;
-    let log_x = panel.log_x;
-    let x_fmt = move |v: &f64| if log_x { log_tick(*v) } else { format!("{}", (v * 1e6).round() / 1e6) };
-    // On a log axis, at most one label per decade, so labels land on powers of ten.
-    let x_labels = if log_x { ((x1 - x0).ceil() as usize + 1).max(2) } else { 10 };
+    let mut builder = chart_builder(area, panel);
+    if panel.log_x {
+        // Labels at 1, 2 and 5 times each power of ten (powers alone over a wide range), a light line at every digit.
+        let (keys, lights) = log_key_points(x0, x1);
+        let chart = builder.build_cartesian_2d(LogAxis { inner: (x0..x1).into(), keys, lights }, y0..y1).map_err(|e| e.to_string())?;
+        finish_panel(chart, panel, (y0, y1), legend_at, usize::MAX, &|v: &f64| log_tick(*v))
+    } else {
+        let chart = builder.build_cartesian_2d(x0..x1, y0..y1).map_err(|e| e.to_string())?;
+        finish_panel(chart, panel, (y0, y1), legend_at, 10, &|v: &f64| format!("{}", (v * 1e6).round() / 1e6))
+    }
+}
+
+/// A log axis in decades with its own labels (plotters' key points on a
+/// linear range in decades would be 10^0.5 and the like).
+struct LogAxis {
+    inner: RangedCoordf64,
+    keys: Vec<f64>,
+    lights: Vec<f64>,
+}
+
+impl Ranged for LogAxis {
+    type ValueType = f64;
+    type FormatOption = plotters::coord::ranged1d::NoDefaultFormatting;
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.inner.map(value, limit)
+    }
+    fn key_points<Hint: plotters::coord::ranged1d::KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.lights.clone()
+        } else {
+            self.keys.clone()
+        }
+    }
+    fn range(&self) -> std::ops::Range<f64> {
+        self.inner.range()
+    }
+}
+
+impl ValueFormatter<f64> for LogAxis {
+    fn format(value: &f64) -> String {
+        log_tick(*value)
+    }
+}
+
+/// Mesh, shades, curves and legend of a panel whose chart is built (`x_labels`: plotters' hint, or all key points).
+fn finish_panel<'a, DB: DrawingBackend + 'a, X>(
+    mut chart: ChartContext<'a, DB, Cartesian2d<X, RangedCoordf64>>,
+    panel: &Panel,
+    (y0, y1): (f64, f64),
+    legend_at: SeriesLabelPosition,
+    x_labels: usize,
+    x_fmt: &dyn Fn(&f64) -> String,
+) -> Result<(), String>
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    let tx = |x: f64| if panel.log_x { x.log10() } else { x };
     chart
         .configure_mesh()
         .x_labels(x_labels)
         .x_desc(panel.x_label.as_str())
         .y_desc(panel.y_label.as_str())
-        .x_label_formatter(&x_fmt)
+        .x_label_formatter(x_fmt)
         .label_style((FAMILY, 15))
         .axis_desc_style((FAMILY, 17))
         .light_line_style(RGBColor(235, 235, 235))
@@ -836,11 +919,27 @@ mod tests {
     }
 
     #[test]
-    fn log_ticks_are_labelled_at_powers_of_ten_only() {
+    fn log_ticks_read_as_the_numbers_they_mark() {
         assert_eq!(log_tick(1.0), "10");
         assert_eq!(log_tick(2.0), "100");
-        assert_eq!(log_tick(1.5), "");
-        assert_eq!(log_tick(-3.0), "1.0e-3");
+        assert_eq!(log_tick(2f64.log10()), "2");
+        assert_eq!(log_tick(50f64.log10()), "50");
+        assert_eq!(log_tick(0.05f64.log10()), "0.05");
+        assert_eq!(log_tick(-3.0), "1e-3");
+    }
+
+    /// 1, 2 and 5 per decade over up to three decades, powers of ten alone
+    /// beyond, each inside the range; the other digits are light lines.
+    #[test]
+    fn log_axes_are_labelled_at_one_two_and_five() {
+        let (keys, lights) = log_key_points(0.1, 2.9);
+        let shown: Vec<String> = keys.iter().map(|&v| log_tick(v)).collect();
+        assert_eq!(shown, ["2", "5", "10", "20", "50", "100", "200", "500"]);
+        // 3, 4, 6, 7, 8 and 9 from 1.26 to 794: six in each full decade, 300 to 700 in the last.
+        assert_eq!(lights.len(), 6 + 6 + 4, "{lights:?}");
+        let (keys, _) = log_key_points(-0.5, 3.9);
+        let shown: Vec<String> = keys.iter().map(|&v| log_tick(v)).collect();
+        assert_eq!(shown, ["1", "10", "100", "1000"]);
     }
 
     #[test]
