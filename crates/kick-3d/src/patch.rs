@@ -31,18 +31,20 @@
 //! (Gonthier, McPhee et al.) — force ∝ interpenetration volume, with its
 //! moment from the volume's centroid and inertia; Cross's offset normal force
 //! (I ω̇ = F R + N D, a shift D of the normal force's line). Chosen:
-//! hydroelastic-shaped, but with no new fitted constant: the shell ball's
-//! elastic force F_el(δ) (its own law, calibrated on ball-only tests) is
-//! spread over the patch (the part of the foot's surface inside the
-//! undeformed ball) with a pressure ∝ the local depth h (hydroelastic's
-//! linear pressure field; only its shape is used, its total is the law's),
-//! and each element carries the law's loss with its own rate:
-//! f_i = w_i F_el(δ) (1 + χ ḣ_i), Σ w_i (ν_i · n) = 1, acting along the foot's
-//! normal ν_i at the element. ḣ_i is the ball material's approach to the foot
+//! hydroelastic-shaped, but with no new fitted constant. The shell law is
+//! affine in the rate, F = E(δ) + D(δ) δ̇ before its clamp: E = F_el(δ), the
+//! elastic force, and D = ∂F/∂δ̇ = β A(δ), the slope: the ball's own law,
+//! calibrated on ball-only tests. Both are spread over the patch (the part
+//! of the foot's surface inside the undeformed ball) with weights ∝ the
+//! local depth h (hydroelastic's linear pressure field; only its shape is
+//! used, its total is the law's), and each element applies the slope to its
+//! own rate: f_i = w_i (E(δ) + D(δ) ḣ_i), Σ w_i (ν_i · n) = 1, acting along
+//! the foot's normal ν_i at the element (`elastic` and `slope` of
+//! [`Patch::resultant`]). ḣ_i is the ball material's approach to the foot
 //! at the element, −ν_i · (ṙ + Ω × q_i) (Ω the ball's angular velocity less
 //! the foot's): the relative normal velocity Hunt–Crossley and hydroelastic
 //! contact damp (Elandt et al. 2019). With it the loss is passive: the
-//! power it takes is slope Σ w_i ḣ_i² ≥ 0. (Until this change ḣ_i was the
+//! power it takes is D(δ) Σ w_i ḣ_i² ≥ 0. (Until this change ḣ_i was the
 //! rate of the overlap's depth at a point fixed on the foot; that made
 //! sliding over a plane load its leading edge, turned the ball against
 //! friction's sense at μ = 0, and its power was no sum of squares.)
@@ -69,13 +71,13 @@
 //! Both are smooth in the state, so the right-hand side is smooth within a
 //! phase and the accurate path's events and 1e-9 hold (a test tightens it to
 //! 1e-15). A central square kick on a flat face gives ḣ = δ̇ everywhere and
-//! F = F_el(δ)(1 + χ δ̇): exactly the 1D kick. A unit test sums the elements
+//! F = E(δ) + D(δ) δ̇: the 1D law exactly. A unit test sums the elements
 //! of a 64 × 64 polar grid with the depth's rate by finite differences and
 //! finds the closed form and the rings.
 //!
-//! Energy: the elastic resultant is F_el(δ) n (the quadrature is symmetric),
+//! Energy: the elastic resultant is E(δ) n (the quadrature is symmetric),
 //! so the law's potential U(δ) holds; the loss integral is the exact balance
-//! −(power of the element forces on the relative motion) − F_el δ̇.
+//! −(power of the element forces on the relative motion) − E δ̇.
 
 pub use crate::model::instep::{first_touch, instep, Quadrature, Touch};
 use parry3d_f64::math::Vec3;

@@ -19,11 +19,12 @@
 //! velocity to zero (λ falls through zero: the grip–slip picture of Cross,
 //! Am. J. Phys. 70, 1093 (2002): the ball grips when the bottom of the ball
 //! comes to rest on the surface, and its contact region's deformation then
-//! lets it vibrate tangentially, so the friction force can reverse). The
-//! force is continuous through every switch and at first touch: ξ starts at
-//! zero, so the tangential force rises from zero, and an element that starts
-//! in slip starts from the cap's own value. Nothing in the law depends on a
-//! velocity alone.
+//! lets it vibrate tangentially, so the friction force can reverse). With a
+//! finite k_t the force is continuous through every switch and at first
+//! touch (rigid grip at μ = ∞ is the exception: **The limits** below): ξ
+//! starts at zero, so the tangential force rises from zero, and an element
+//! that starts in slip starts from the cap's own value. Nothing in the law
+//! depends on a velocity alone.
 //!
 //! At first touch (ξ = 0) the element grips when the cap exceeds zero (a law
 //! whose force jumps at touch, as the paper's Eq. 20 does by c V_n) or, with

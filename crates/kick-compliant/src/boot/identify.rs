@@ -7,17 +7,19 @@
 //! So the layer is identified from one kick: Peacock & Ball (2016), a
 //! mechanical kicking limb (ISBS proceedings; checked at the abstract,
 //! ojs.ub.uni-konstanz.de/cpa/article/view/7117), the one kick whose foot
-//! speed, contact time and restitution are published together. At its
-//! fastest foot, 21.2 m/s, the contact lasted 11.75 ms; its coefficient of
-//! restitution was 0.66–0.79 with no significant trend in speed
-//! (r = −0.347). The two numbers set the two constants: k_b so the model's
+//! speed, contact time and restitution are published together. Its abstract
+//! gives the foot speeds (9.1–21.2 m/s), a contact time falling from 14.75
+//! to 11.75 ms as the speed rises (r = −0.89), and a coefficient of
+//! restitution of 0.66–0.79 with no significant trend in speed
+//! (r = −0.347). That 11.75 ms belongs to the fastest foot, 21.2 m/s, is
+//! inferred from the sign of the correlation, not stated. The two numbers set the two constants: k_b so the model's
 //! contact lasts 11.75 ms, c_b so its restitution (v_b⁺ − v_f⁺)/v_f⁻ is
 //! the band's centre 0.725, on the realistic foot of this workspace: the
 //! leg at its default pose (1.327 kg), the FIFA-calibrated shell ball at
 //! 0.8 bar, the ball at rest.
 //!
-//! Uncertainty: the restitution's half band, ±0.065 (a spread over kicks:
-//! the abstract gives no uncertainty), and the contact time's ±0.25 ms, one
+//! Uncertainty: the restitution's half band, ±0.065 (a spread over kicks,
+//! not a measurement uncertainty, taken as σ because the abstract gives none), and the contact time's ±0.25 ms, one
 //! frame of the 4000 Hz video the same group filmed kicks with (assumed: the
 //! abstract states no frame rate), carried through the model's Jacobian
 //! ([`Identification::sigma`]): k_b ± 11 %, c_b ± 39 % (k_b = 3.51e4 ± 0.38e4 N/m, c_b = 38.3 ± 14.9 N s/m).
