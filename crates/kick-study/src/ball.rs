@@ -49,7 +49,7 @@ pub const FIT_SIGMA: [(Observable, f64); 3] =
     [(Observable::Restitution, 0.01), (Observable::ContactTime, 1e-4), (Observable::MaxCompression, 1e-3)];
 pub const FIT_SEED: u64 = 31;
 
-/// The default shell ball's numbers a page quotes (Table 1's radius, the
+/// The default shell ball's numbers a page quotes (kick-core's default radius, inside Law 2's, the
 /// FIFA test's pressure).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DefaultBall {
@@ -156,7 +156,7 @@ pub fn fifa_speed() -> f64 {
 mod tests {
     use super::*;
 
-    /// The default ball is Table 1's radius at the FIFA test's pressure, and
+    /// The default ball has kick-core's default radius at the FIFA test's pressure, and
     /// with no shell stiffness (k_s = 0) its small-compression χ is β/p0.
     #[test]
     fn the_default_ball_is_the_fifa_test_s() {
