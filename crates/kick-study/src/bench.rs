@@ -184,6 +184,41 @@ pub fn kick_costs(min_seconds: f64) -> Result<[(Vec<f64>, u64); KICK_FORMS], Ben
     Ok(out)
 }
 
+/// Where the realistic foot's 3D kick spends its evaluations (the last form
+/// of [`kick_costs`], issue 31's ≤ 120 µs): the same kick with the leg
+/// alone, the boot alone, and the leg with its boot at μ = ∞ (no slip), one
+/// solve each (evaluation counts do not vary from run to run), and the
+/// boot's relaxation time at touch, c_b/(k_b + k(0)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FootCost {
+    pub leg_only: u64,
+    pub boot_only: u64,
+    pub without_slip: u64,
+    /// s.
+    pub layer_time: f64,
+}
+
+/// See [`FootCost`].
+pub fn foot_cost() -> Result<FootCost, BenchError> {
+    use kick_3d::{Accurate3d, Kick3dSpec, KickSpec};
+    let shell = kick_core::ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() };
+    let cap = kick_3d::models::cap_patch_kick();
+    let boot = kick_core::boot::IDENTIFIED;
+    let evaluations = |scenario: kick_core::ScenarioSpec, friction: f64| -> Result<u64, BenchError> {
+        let kick = KickSpec { scenario, kick3d: Kick3dSpec { friction: Some(friction), ..cap } }.build()?;
+        Ok(Accurate3d::default().solve(&kick)?.evaluations)
+    };
+    let leg_only = evaluations(kick_core::ScenarioSpec { leg: Some(true), boot_stiffness: Some(f64::INFINITY), ..shell }, 0.5)?;
+    let boot_only = evaluations(
+        kick_core::ScenarioSpec { boot_stiffness: Some(boot.stiffness), boot_damping: Some(boot.damping), ..shell },
+        0.5,
+    )?;
+    let without_slip = evaluations(kick_core::ScenarioSpec { leg: Some(true), ..shell }, f64::INFINITY)?;
+    let kick = KickSpec { scenario: shell, kick3d: cap }.build()?;
+    let layer_time = boot.time_constant(kick_core::ContactLaw::force_gradient(&kick.law, 0.0, 0.0).0);
+    Ok(FootCost { leg_only, boot_only, without_slip, layer_time })
+}
+
 /// The most accurate point of the fixed-step family (`rk4-events`) and the
 /// cheapest `auto` point at least as accurate, from the ladder: the pair
 /// whose cost ratio is the cost at equal accuracy.
@@ -458,6 +493,7 @@ pub fn measure(quick: bool, min_time: f64, sweep_samples: u64, log: &mut dyn Wri
         aims,
         kicks,
         baseline_copy,
+        foot: foot_cost()?,
     };
 
     Ok(Timings {
@@ -498,6 +534,8 @@ pub struct Other {
     pub kicks: [(Spread, u64); KICK_FORMS],
     /// The baseline x86-64 copy over the AVX2 copy, the last form.
     pub baseline_copy: Spread,
+    /// Where the realistic foot's kick spends its evaluations.
+    pub foot: FootCost,
 }
 
 /// The machine a timing was taken on.
@@ -535,5 +573,32 @@ impl Machine {
             (None, _) => "clock unknown".into(),
         };
         format!("{}, {}, {} cores available, {} {}", self.cpu, clock, self.cores, std::env::consts::OS, std::env::consts::ARCH)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// What the timing page says of the realistic foot's kick: each of the
+    /// leg, the boot and the slip costs evaluations of its own, and the
+    /// layer's relaxation time is c_b/(k_b + k) at touch, k from a
+    /// difference of the shell law's force (not its gradient).
+    #[test]
+    fn each_part_of_the_realistic_foot_costs_evaluations() {
+        let foot = foot_cost().unwrap();
+        let full = kick_costs(0.0).unwrap()[KICK_FORMS - 1].1;
+        assert!(foot.leg_only < full && foot.boot_only < full && foot.without_slip < full, "{foot:?} against {full}");
+        let kick = kick_3d::KickSpec {
+            scenario: kick_core::ScenarioSpec { law: Some(kick_core::LawKind::Shell), ..Default::default() },
+            kick3d: kick_3d::models::cap_patch_kick(),
+        }
+        .build()
+        .unwrap();
+        let h = 1e-7;
+        let k = kick_core::ContactLaw::force(&kick.law, h, 0.0) / h;
+        let boot = kick_core::boot::IDENTIFIED;
+        let expected = boot.damping / (boot.stiffness + k);
+        assert!((foot.layer_time / expected - 1.0).abs() < 1e-5, "{} against {expected}", foot.layer_time);
     }
 }
