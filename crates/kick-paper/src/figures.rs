@@ -296,7 +296,7 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel, 
         // Labels at 1, 2 and 5 times each power of ten (powers alone over a wide range), a light line at every digit.
         let (keys, lights) = log_key_points(x0, x1);
         let chart = builder.build_cartesian_2d(LogAxis { inner: (x0..x1).into(), keys, lights }, y0..y1).map_err(|e| e.to_string())?;
-        finish_panel(chart, panel, (y0, y1), legend_at, usize::MAX, &|v: &f64| log_tick(*v))
+        finish_panel(chart, panel, (y0, y1), legend_at, 64, &|v: &f64| log_tick(*v))
     } else {
         let chart = builder.build_cartesian_2d(x0..x1, y0..y1).map_err(|e| e.to_string())?;
         finish_panel(chart, panel, (y0, y1), legend_at, 10, &|v: &f64| format!("{}", (v * 1e6).round() / 1e6))
@@ -335,7 +335,8 @@ impl ValueFormatter<f64> for LogAxis {
     }
 }
 
-/// Mesh, shades, curves and legend of a panel whose chart is built (`x_labels`: plotters' hint, or all key points).
+/// Mesh, shades, curves and legend of a panel whose chart is built (`x_labels`: plotters' hint; a log axis gives
+/// its own key points and ignores it, but plotters multiplies it, so it stays small).
 fn finish_panel<'a, DB: DrawingBackend + 'a, X>(
     mut chart: ChartContext<'a, DB, Cartesian2d<X, RangedCoordf64>>,
     panel: &Panel,

@@ -77,7 +77,13 @@ fn reproduce_writes_results_figures_and_report() {
         "issue 31: at most 2x, ",
         "Flown 3D kicks into a file (`kick sweep3d --samples 200 --seed 1 --threads 2 --law shell --range contact_depth=0,0.05",
         "rows/s on 2 threads**",
-        "the flown rows cost",
+        "the run with flights costs",
+        // Outside the command's code span: the command stays runnable.
+        "--out sweep3d.h5` (",
+        " of the rows flown; not flown: ",
+        // Why the realistic foot's 3D kick misses its target, from the same run.
+        "The realistic foot's kick takes ",
+        "The leg alone takes ",
         "the shell ball's cost (`kick_compliant::boot::series`",
     ] {
         assert!(timing.contains(needle), "{needle}: {timing}");
