@@ -15,7 +15,14 @@ fn main() {
     let forms: Vec<(&str, ScenarioSpec)> = vec![
         ("rigid Table 1 foot", shell.clone()),
         ("leg, no boot", ScenarioSpec { leg: Some(true), boot_stiffness: Some(f64::INFINITY), ..shell.clone() }),
-        ("boot alone", ScenarioSpec { boot_stiffness: Some(35066.0), boot_damping: Some(38.3), ..shell.clone() }),
+        (
+            "boot alone",
+            ScenarioSpec {
+                boot_stiffness: Some(kick_core::boot::IDENTIFIED_STIFFNESS),
+                boot_damping: Some(kick_core::boot::IDENTIFIED_DAMPING),
+                ..shell.clone()
+            },
+        ),
         ("leg and boot", ScenarioSpec { leg: Some(true), ..shell.clone() }),
     ];
     let kicks: Vec<_> = forms.iter().map(|(_, s)| KickSpec { scenario: s.clone(), kick3d: cap }.build().expect("valid")).collect();
