@@ -465,7 +465,10 @@ fn page_text(
              The file's {}: drawn for continuity in all three panels of the figure, marked in its legends, not as \
              predictions.",
             short(1e3 * 0.5 * radius),
-            past.iter().map(|(v, at)| format!("{} m/s curve compresses the ball past it {at}", short(*v))).collect::<Vec<_>>().join("; the ")
+            past.iter()
+                .map(|(v, at)| format!("{} m/s curve compresses the ball past it {at}", short(*v)))
+                .collect::<Vec<_>>()
+                .join("; the ")
         );
     }
 

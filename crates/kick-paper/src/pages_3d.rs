@@ -750,11 +750,7 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> 
     let at_offset = |e: f64| -> Vec<usize> { (0..data.rows()).filter(|&r| offsets[r] == e).collect() };
     let reaching_at_widest = at_offset(offsets[widest]).iter().filter(|&&r| gc[r] == 1.0).count();
     // The friction spread at the largest offset whose ball reaches the goal line at every μ.
-    let every = offsets
-        .iter()
-        .copied()
-        .filter(|&e| at_offset(e).iter().all(|&r| gc[r] == 1.0))
-        .fold(f64::NEG_INFINITY, f64::max);
+    let every = offsets.iter().copied().filter(|&e| at_offset(e).iter().all(|&r| gc[r] == 1.0)).fold(f64::NEG_INFINITY, f64::max);
     let same_offset = at_offset(every);
     let (cmin, cmax) = same_offset.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &r| (a.min(curve(r)), b.max(curve(r))));
     let typical = same_offset.iter().map(|&r| curve(r).abs()).sum::<f64>() / same_offset.len().max(1) as f64;

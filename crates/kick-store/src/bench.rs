@@ -118,8 +118,10 @@ pub fn file_runs(quick: bool) -> Result<Vec<FileRun>, StoreError> {
         let bytes = std::fs::metadata(&report.path).map_err(|source| StoreError::Io { path: report.path.clone(), source })?.len();
         let flown = report.flown.as_ref().map_or(0, |(n, _)| *n);
         let command = format!("{} --out sweep3d.h5", flown_command(samples_3d, true));
-        let not_flown: Vec<String> = report.flown.iter().flat_map(|(_, not)| not.iter().map(|(status, n)| format!("{n} {status}"))).collect();
-        let note = format!("{flown} of the rows flown; not flown: {}", if not_flown.is_empty() { "none".into() } else { not_flown.join(", ") });
+        let not_flown: Vec<String> =
+            report.flown.iter().flat_map(|(_, not)| not.iter().map(|(status, n)| format!("{n} {status}"))).collect();
+        let note =
+            format!("{flown} of the rows flown; not flown: {}", if not_flown.is_empty() { "none".into() } else { not_flown.join(", ") });
         runs.push(FileRun { command, note: Some(note), rows: samples_3d, seconds: report.seconds, bytes });
         let _ = std::fs::remove_file(&report.path);
         Ok(())

@@ -209,10 +209,8 @@ pub fn foot_cost() -> Result<FootCost, BenchError> {
         Ok(Accurate3d::default().solve(&kick)?.evaluations)
     };
     let leg_only = evaluations(kick_core::ScenarioSpec { leg: Some(true), boot_stiffness: Some(f64::INFINITY), ..shell }, 0.5)?;
-    let boot_only = evaluations(
-        kick_core::ScenarioSpec { boot_stiffness: Some(boot.stiffness), boot_damping: Some(boot.damping), ..shell },
-        0.5,
-    )?;
+    let boot_only =
+        evaluations(kick_core::ScenarioSpec { boot_stiffness: Some(boot.stiffness), boot_damping: Some(boot.damping), ..shell }, 0.5)?;
     let without_slip = evaluations(kick_core::ScenarioSpec { leg: Some(true), ..shell }, f64::INFINITY)?;
     let kick = KickSpec { scenario: shell, kick3d: cap }.build()?;
     let layer_time = boot.time_constant(kick_core::ContactLaw::force_gradient(&kick.law, 0.0, 0.0).0);
