@@ -791,9 +791,9 @@ pub fn page_flight(out: &Path, report_dir: &Path) -> Result<String, PaperError> 
             continue;
         }
         match free_kick::wall_pass(kick_study::parameters::DEFAULT_BALL_RADIUS, wy[r], wh[r]) {
-            "over" => over += 1,
-            "beside" => beside += 1,
-            _ => into += 1,
+            kick_study::aim::WallPass::Over => over += 1,
+            kick_study::aim::WallPass::Beside => beside += 1,
+            kick_study::aim::WallPass::Hits => into += 1,
         }
     }
     let clear = free_kick::WALL_HEIGHT + kick_study::parameters::DEFAULT_BALL_RADIUS;

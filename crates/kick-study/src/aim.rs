@@ -30,7 +30,7 @@ use kick_core::number::{sig, vector};
 use kick_core::parameters::{self, ParameterDef, SetParameter, Shape, Value};
 use kick_flight::aim::{aim_best, aim_launch_with, check_unique, AimError, AimSolution, Free, LaunchFree, Objective, Scene, Wall};
 /// How close an aim must come, and the wall's margin (kick-flight's aim scene).
-pub use kick_flight::aim::{FamilyEnd, MISS_TOLERANCE, WALL_MARGIN};
+pub use kick_flight::aim::{FamilyEnd, WallPass, MISS_TOLERANCE, WALL_MARGIN};
 use kick_flight::{Flight, FlightError, FlightParameter, FlightSpec};
 use serde::Serialize;
 use std::fmt::Write as _;

@@ -25,8 +25,8 @@ pub use kick_flight::models::WALL_DISTANCE;
 
 /// How a ball of radius `r` whose centre crosses the wall's plane at (y, z)
 /// passes the drawn wall: `kick aim`'s rule (`kick_flight::aim::WallPass`).
-pub fn wall_pass(r: f64, y: f64, z: f64) -> &'static str {
-    kick_flight::aim::WallPass::of(&kick_flight::aim::Wall::default(), r, y, z).name()
+pub fn wall_pass(r: f64, y: f64, z: f64) -> kick_flight::aim::WallPass {
+    kick_flight::aim::WallPass::of(&kick_flight::aim::Wall::default(), r, y, z)
 }
 /// C_D far above the drag crisis without spin (Goff & Carré's Eq. 3, kick-flight's default).
 pub const NO_SPIN_DRAG: f64 = kick_flight::coefficients::DragCrisis::SUPERCRITICAL;
