@@ -6,7 +6,7 @@
 //! `cargo run --release -p kick-3d --example step_sizes_3d`.
 //!
 //! What it showed (rtol 1e-13, evaluations 484 / 753 / 837 / 435 / 1138 / 725;
-//! 488 / 754 / 838 / 436 / 1108 / 723 since the release clock's predictive
+//! 488 / 757 / 841 / 439 / 1108 / 723 since the release clock's predictive
 //! step control):
 //! - behind the boot the first millisecond takes ~17 steps growing from
 //!   25 µs by ~9 % a step, against ~5 of ~200 µs for the rigid foot: the
