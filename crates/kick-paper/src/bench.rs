@@ -375,11 +375,11 @@ impl Measured<'_> {
         kick_rows.push_str(&format!(
             "\nThe realistic foot's kick takes {:.2}x the evaluations of the rigid foot's on the same patch \
              ({foot_evaluations} against {rigid_evaluations}), at {:.0} against {:.0} ns each. The leg alone takes {}, \
-             the boot alone {}, the leg and its boot without slip (μ = ∞) {}: each brings a fast mode the 8th-order \
-             steps follow at the default tolerance (1e-13). The boot's layer relaxes on c_b/(k_b + k), {:.2} ms at \
-             touch, starting away from its slow motion; in slip the slider's direction turns towards the sliding on \
-             |ξ|/v_t, a time that shrinks with the normal force towards separation. \
-             `cargo run --release -p kick-3d --example step_sizes_3d` prints the steps of each form.\n",
+             the boot alone {}, the leg and its boot without slip (μ = ∞) {}. Two fast modes hold the 8th-order \
+             steps at the default tolerance (1e-13): the boot's layer relaxes on c_b/(k_b + k), {:.2} ms at touch, \
+             starting away from its slow motion; and in slip the slider's direction turns towards the sliding on \
+             |ξ|/v_t, a time that shrinks with the normal force towards separation. Both reach every state through \
+             the contact force. `cargo run --release -p kick-3d --example step_sizes_3d` prints the steps of each form.\n",
             *foot_evaluations as f64 / *rigid_evaluations as f64,
             per(foot, *foot_evaluations),
             per(rigid, *rigid_evaluations),
