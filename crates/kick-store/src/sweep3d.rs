@@ -214,7 +214,8 @@ impl Printable for Sweep3dReport {
             kick_core::sig(self.kicks as f64 / self.seconds),
             self.path.display(),
         );
-        if let Some(cpu) = self.cpu_seconds {
+        // An empty shard has no per-kick cost to give.
+        if let Some(cpu) = self.cpu_seconds.filter(|_| self.kicks > 0) {
             let _ = writeln!(
                 w,
                 "CPU time {} s: {} us per kick, {} kicks/s per busy core",
