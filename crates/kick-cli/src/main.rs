@@ -56,7 +56,7 @@ enum Command {
     /// centred on y = 0. Least squares (Levenberg-Marquardt) over the free
     /// parameters within their ranges; prints the solution, the miss, the
     /// wall clearance and d(y, z at the goal)/d(each free parameter), or
-    /// says that no solution exists within the ranges (exit 1).
+    /// says that none was found from its starts within the ranges (exit 1).
     /// Every launch and kick parameter is held or free. A parameter's flag
     /// holds it at that value; free are those --free names, else the default
     /// ones not given: launch: speed, launch_angle, azimuth (also spin_x,

@@ -489,7 +489,8 @@ pub fn family(
     let start_c: Vec<f64> = coordinates.iter().map(|&k| first.values[k]).collect();
     grid.sort_by(|a, b| scaled_distance(a, &start_c).total_cmp(&scaled_distance(b, &start_c)));
     let mut members = vec![first.clone()];
-    let tried = grid.len();
+    // The first solution is a member tried too, as is every solve below.
+    let mut tried = grid.len() + 1;
     for c in &grid {
         let coords = |m: &Member| -> Vec<f64> { coordinates.iter().map(|&k| m.values[k]).collect() };
         let nearest =
@@ -519,6 +520,7 @@ pub fn family(
                 if c == inside.values[k] {
                     break;
                 }
+                tried += 1;
                 if let Some(m) = solve_at(&[c], [inside.values[pi], inside.values[pj]]) {
                     members.push(m.clone());
                     inside = m;
@@ -638,7 +640,7 @@ pub enum AimError {
     #[error("the kick: {0}")]
     Kick(String),
     #[error(
-        "no solution within the parameters' ranges: the best of {starts} starts misses the target by {} m with the wall {} by {} m",
+        "no solution found within the parameters' ranges from {starts} starts (one may still exist elsewhere in them: `--free` with a parameter's flag starts it there): the best misses the target by {} m with the wall {} by {} m",
         short(*miss), if *wall_clearance >= 0.0 { "cleared" } else { "hit" }, short(wall_clearance.abs())
     )]
     NoSolution { miss: f64, wall_clearance: f64, starts: usize },

@@ -61,7 +61,7 @@ def test_an_objective_picks_one_member_and_bounds_bound_it():
 
 
 def test_no_solution_and_bad_input_are_value_errors():
-    with pytest.raises(ValueError, match="no solution within the parameters' ranges"):
+    with pytest.raises(ValueError, match="no solution found within the parameters' ranges"):
         kick.aim((25.0, 0.0, 1.5), speed=12.0)
     with pytest.raises(ValueError, match="`target`"):
         kick.aim((25.0, 0.0, 10.0))

@@ -180,16 +180,21 @@ pub fn aim_error(error: AimError) -> StudyError {
     }
 }
 
-/// `NAME=LOW,HIGH` texts (`--range`) as (name, low, high), each name one of `known`.
-fn parse_bounds(given: &[String], known: &dyn Fn(&str) -> bool) -> Result<Vec<(String, f64, f64)>, StudyError> {
+/// `NAME=LOW,HIGH` texts (`--range`) as (name, low, high), each name one
+/// this aim can free (`known`: Err if not, else its declaration where it
+/// has one), both ends inside the parameter's valid values.
+fn parse_bounds(
+    given: &[String],
+    known: &dyn Fn(&str) -> Result<Option<&'static ParameterDef>, ()>,
+) -> Result<Vec<(String, f64, f64)>, StudyError> {
     let refuse = |text: &str, why: &str| StudyError::Flag { flag: "range", message: format!("--range {text}: {why}") };
     let mut out: Vec<(String, f64, f64)> = Vec::new();
     for text in given {
         let (name, bounds) = text.split_once('=').ok_or_else(|| refuse(text, "expected NAME=LOW,HIGH"))?;
         let name = name.trim();
-        if !known(name) {
+        let Ok(declared) = known(name) else {
             return Err(refuse(text, "not a parameter this aim can free"));
-        }
+        };
         let numbers: Vec<f64> = bounds
             .split(',')
             .map(|x| x.trim().parse::<f64>())
@@ -198,6 +203,11 @@ fn parse_bounds(given: &[String], known: &dyn Fn(&str) -> bool) -> Result<Vec<(S
         let [low, high] = numbers[..] else { return Err(refuse(text, "expected two numbers LOW,HIGH")) };
         if !(low.is_finite() && high.is_finite() && low < high) {
             return Err(refuse(text, "LOW and HIGH must be finite with LOW < HIGH"));
+        }
+        // A range reaching outside the valid values would be searched there
+        // and its failures reported as "no solution".
+        if let Some(p) = declared.filter(|p| !(p.valid.contains(low) && p.valid.contains(high))) {
+            return Err(refuse(text, &format!("`{}` must be {}", p.name, p.valid.requirement)));
         }
         if out.iter().any(|(n, _, _)| n == name) {
             return Err(refuse(text, "given twice"));
@@ -236,7 +246,9 @@ pub fn aim_cancellable(request: &AimRequest, cancel: &dyn Fn() -> bool) -> Resul
                 None => LaunchFree::DEFAULT.into_iter().filter(|&p| !given(p)).collect(),
                 Some(names) => names.iter().map(|n| LaunchFree::from_name(n)).collect::<Result<Vec<_>, _>>().map_err(aim_error)?,
             };
-            let bounds = parse_bounds(&request.ranges, &|n| LaunchFree::from_name(n).is_ok())?;
+            let bounds = parse_bounds(&request.ranges, &|n| {
+                LaunchFree::from_name(n).map(|_| FlightParameter::ALL.iter().find(|f| f.name() == n).map(|f| f.def())).map_err(|_| ())
+            })?;
             if let Some((name, _, _)) = bounds.iter().find(|(n, _, _)| !free.iter().any(|p| p.name() == n)) {
                 return Err(StudyError::Flag { flag: "range", message: format!("--range {name}: `{name}` is not free (flag --free)") });
             }
@@ -289,7 +301,11 @@ fn aim_kick(target: [f64; 3], wall: Wall, request: &AimRequest, cancel: &dyn Fn(
                     .into(),
         });
     }
-    let bounds = parse_bounds(&request.ranges, &|n| KickFree::from_name(n).is_ok())?;
+    let bounds = parse_bounds(&request.ranges, &|n| match KickFree::from_name(n) {
+        Ok(KickFree::Declared(p)) => Ok(Some(p)),
+        Ok(KickFree::Heading) => Ok(None),
+        Err(_) => Err(()),
+    })?;
     if let Some((name, _, _)) = bounds.iter().find(|(n, _, _)| !free.iter().any(|p| p.name() == n)) {
         return Err(StudyError::Flag { flag: "range", message: format!("--range {name}: `{name}` is not free (flag --free)") });
     }
@@ -613,6 +629,37 @@ mod tests {
 
     fn vector_length(v: [f64; 3]) -> f64 {
         (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+    }
+
+    /// A `--range` reaching outside the parameter's valid values is refused
+    /// naming `--range` (it was searched and its failures reported as "no
+    /// solution", or named `--speed` and a value the user never gave).
+    #[test]
+    fn ranges_outside_the_valid_values_name_the_range() {
+        let base = AimRequest { target: Some([20.0, 0.0, 1.0]), ..AimRequest::default() };
+        for (range, from) in
+            [("speed=-40,-5", AimFrom::Launch), ("launch_angle=170,190", AimFrom::Launch), ("ball_mass=0,1", AimFrom::Kick)]
+        {
+            let request = AimRequest {
+                from: Some(from),
+                ranges: vec![range.into()],
+                free: (from == AimFrom::Kick).then(|| vec!["foot_speed".into(), "ball_mass".into()]),
+                ..base.clone()
+            };
+            let error = aim(&request).unwrap_err();
+            assert!(matches!(error, StudyError::Flag { flag: "range", .. }), "{error:?}");
+            assert!(error.to_string().starts_with(&format!("--range {range}: ")), "{error}");
+        }
+    }
+
+    /// A family never has more members than solves tried: the first
+    /// solution and the ends' bisection count as tries (it said "18
+    /// member(s) found of 17 tried").
+    #[test]
+    fn a_family_has_no_more_members_than_tries() {
+        let request = AimRequest { target: Some([0.25, 0.0, 0.2]), wall: Some([0.12, 0.0, 0.0]), ..AimRequest::default() };
+        let family = aim(&request).unwrap().solution.family.unwrap();
+        assert!(family.members >= 2 && family.members <= family.tried, "{} of {}", family.members, family.tried);
     }
 
     #[test]

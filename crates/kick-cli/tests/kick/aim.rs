@@ -42,7 +42,7 @@ fn no_solution_exits_1_and_says_so() {
     let out = kick(&["aim", "--target", "25,0,1.5", "--speed", "12", "--free", "launch_angle,azimuth"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1));
-    assert!(stderr.contains("no solution within the parameters' ranges"), "{stderr}");
+    assert!(stderr.contains("no solution found within the parameters' ranges"), "{stderr}");
     assert!(out.stdout.is_empty());
 }
 
