@@ -575,7 +575,8 @@ impl Kick3d {
             if self.rigid_grip() {
                 return refuse(
                     "tangential_stiffness",
-                    "rigid grip's constraint is written for the free box foot against the ball itself; give a finite tangential_stiffness",
+                    "rigid grip's constraint is written for the free box foot against the ball itself (the default, a finite \
+                     tangential_stiffness, keeps the grip compliant)",
                 );
             }
             if self.ground {

@@ -70,6 +70,9 @@ pub const BOUNCE_PARAMETER_COUNT: usize = 18;
 /// parameters (kick-core's, for `law` other than `shell`), the shot, the
 /// ball, and the shell law's own (kick-core's `shell::BALL_PARAMETERS`).
 /// Flags, keys and refusals use these names.
+/// The largest impact speed, m/s: `speed`'s bound, and the one a drop height may give.
+pub const MAX_IMPACT_SPEED: f64 = 1000.0;
+
 pub static BOUNCE_PARAMETERS: [ParameterDef; BOUNCE_PARAMETER_COUNT] = [
     STIFFNESS,
     DAMPING,
@@ -82,7 +85,7 @@ pub static BOUNCE_PARAMETERS: [ParameterDef; BOUNCE_PARAMETER_COUNT] = [
         Scalar,
         Unset("required, unless drop_height gives it"),
         Open(0.0),
-        Closed(1000.0),
+        Closed(MAX_IMPACT_SPEED),
         "in (0, 1000] m/s; not with drop_height",
         "Impact speed of the ball's centre",
     ),
@@ -116,7 +119,7 @@ pub static BOUNCE_PARAMETERS: [ParameterDef; BOUNCE_PARAMETER_COUNT] = [
         Unset("none"),
         Open(0.0),
         Unbounded,
-        "finite and > 0, m; not with speed or angle, and gravity > 0",
+        "finite and > 0, m, at most V²/(2 g) for V = 1000 m/s; not with speed or angle, and gravity > 0",
         "Drop the ball from rest at height H (no drag): V = √(2 g H), square; reports rebound_height",
     ),
     bounce(
@@ -307,7 +310,16 @@ impl BounceSpec {
                 if gravity <= 0.0 {
                     return Err(KickError::InvalidParameter { name: "gravity", value: gravity, requirement: "> 0 with drop_height" });
                 }
-                ((2.0 * gravity * h).sqrt(), Some(h))
+                // The speed it sets is held to `speed`'s own bound (1000 m/s).
+                let v = (2.0 * gravity * h).sqrt();
+                if v > MAX_IMPACT_SPEED {
+                    return Err(KickError::InvalidParameter {
+                        name: "drop_height",
+                        value: h,
+                        requirement: "at most V²/(2 g) for V = 1000 m/s, the largest impact speed (51 km at g = 9.81 m/s²)",
+                    });
+                }
+                (v, Some(h))
             }
             (Some(_), Some(_)) => return Err(does_not_apply("speed", "drop_height", "the drop height sets the impact speed")),
             (None, None) => {
@@ -537,10 +549,19 @@ pub fn in_bounce_terms(b: &Bounce, e: KickError) -> KickError {
             time,
             reason: format!(
                 "the ball never leaves the plate, no separation: its weight m g ({}) holds it there, and at the impact \
-                 speed of {} m/s ({}) the law stores too little energy to lift it off; the ball comes to rest on the plate",
+                 speed of {} m/s ({}) the law stores too little energy to lift it off; {}",
                 ["ball_mass", "gravity"].join(", "),
                 kick_core::short(b.speed * b.angle.to_radians().cos()),
-                bounce_names(b, "foot_speed").join(", ")
+                bounce_names(b, "foot_speed").join(", "),
+                // Only the normal motion is trapped: an oblique ball keeps its motion along the plate.
+                if b.angle == 0.0 {
+                    "the ball comes to rest on the plate".to_string()
+                } else {
+                    format!(
+                        "its motion along the plate ({} m/s) goes on, no bounce",
+                        kick_core::short(b.speed * b.angle.to_radians().sin())
+                    )
+                }
             ),
         },
         other => other,

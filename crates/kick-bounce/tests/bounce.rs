@@ -285,11 +285,12 @@ fn bad_input_names_the_parameter() {
 #[test]
 fn refusals_of_the_normal_contact_name_the_bounces_own_parameters() {
     type Case<'a> = (&'a str, &'a [(&'a str, Value)], &'a str);
-    let cases: [Case; 8] = [
+    // (A drop height past the largest impact speed is refused as invalid
+    // before any contact: a_drop_height_beyond_the_largest_impact_speed_is_refused.)
+    let cases: [Case; 7] = [
         ("shell", &[("speed", n(5.0)), ("ball_mass", n(1e-300))], "ball_mass"),
         ("shell", &[("speed", n(5.0)), ("ball_mass", n(1e300))], "ball_mass"),
         ("shell", &[("speed", n(1e-300))], "speed"),
-        ("shell", &[("drop_height", n(1e300))], "drop_height"),
         ("shell", &[("speed", n(5.0)), ("gravity", n(1e300))], "gravity"),
         ("shell", &[("speed", n(5.0)), ("ball_radius", n(1e-300))], "ball_radius"),
         ("power-law", &[("speed", n(5.0)), ("stiffness", n(1e-300))], "stiffness"),
@@ -376,4 +377,23 @@ fn a_slow_ball_comes_to_rest_and_is_said_to() {
         }
     }
     assert!(solve(&built(&[("speed", n(5e-3))]), NormalSolver::default()).is_ok());
+}
+
+/// A grazing ball is trapped only in its normal motion: the refusal says it
+/// goes on along the plate at V sin θ (it said the ball "comes to rest",
+/// sliding at 20 m/s).
+#[test]
+fn a_grazing_ball_is_said_to_go_on_along_the_plate() {
+    let error = solve(&built(&[("speed", n(20.0)), ("angle", n(89.999))]), NormalSolver::default()).unwrap_err().to_string();
+    assert!(error.contains("its motion along the plate (20 m/s) goes on") && !error.contains("comes to rest"), "{error}");
+}
+
+/// A drop height is held to the impact speed's own bound, V = √(2 g H) ≤
+/// 1000 m/s, and named (1e9 m ran into the solver's step limit instead).
+#[test]
+fn a_drop_height_beyond_the_largest_impact_speed_is_refused() {
+    let limit = 1000.0f64.powi(2) / (2.0 * 9.81);
+    let refused = spec(&[("drop_height", n(1.001 * limit)), ("gravity", n(9.81))]).build().unwrap_err();
+    assert!(matches!(refused, KickError::InvalidParameter { name: "drop_height", .. }), "{refused:?}");
+    assert!(spec(&[("drop_height", n(0.999 * limit)), ("gravity", n(9.81))]).build().is_ok());
 }

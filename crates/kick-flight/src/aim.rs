@@ -138,7 +138,8 @@ impl Scene {
             return Err(AimError::Invalid {
                 name: "wall",
                 values: w.to_vec(),
-                requirement: "DIST between the ball and the goal plane (R < DIST < X - R)",
+                requirement: "DIST between the ball and the target's plane (R < DIST < X - R; the default wall stands at \
+                              9.15 m: a nearer target needs a nearer --wall, or --target farther)",
             });
         }
         Ok(Scene { target, wall })
@@ -384,9 +385,8 @@ pub fn family(
     let first = member_of(solution);
     if let Some(o) = objective {
         if o.score(&first, free).is_none() {
-            return Err(AimError::Invalid {
-                name: "objective",
-                values: vec![],
+            return Err(AimError::Objective {
+                name: o.name(),
                 requirement: "min-foot-speed with foot_speed free (--from kick); min-speed, min-time or max-clearance otherwise",
             });
         }
@@ -629,6 +629,9 @@ pub fn aim_best(
 pub enum AimError {
     #[error("invalid `{name}` = {}: must be {requirement}", values.iter().map(|v| short(*v).to_string()).collect::<Vec<_>>().join(","))]
     Invalid { name: &'static str, values: Vec<f64>, requirement: &'static str },
+    /// An objective the family's members have no value of (min-foot-speed without the kick).
+    #[error("invalid `objective` = {name}: must be {requirement}")]
+    Objective { name: &'static str, requirement: &'static str },
     #[error("unknown free parameter `{name}`: expected one of {expected}")]
     UnknownFree { name: String, expected: String },
     #[error("free parameter `{name}` given twice")]

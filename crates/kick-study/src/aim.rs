@@ -172,6 +172,7 @@ pub fn aim_error(error: AimError) -> StudyError {
             Err(_) => format!("--{}", name.replace('_', "-")),
         }),
         AimError::UnknownFree { .. } | AimError::DuplicateFree { .. } | AimError::NoFree => Some("--free".into()),
+        AimError::Objective { .. } => Some("--objective".into()),
         _ => None,
     };
     match error {
@@ -624,7 +625,9 @@ mod tests {
         let text = aim(&AimRequest { objective: Some(Objective::MinSpeed), ..base.clone() }).unwrap().text();
         assert!(text.contains("its best member is the low end"), "{text}");
         let error = aim(&AimRequest { objective: Some(Objective::MinFootSpeed), ..base.clone() }).unwrap_err();
-        assert!(error.to_string().contains("min-foot-speed"), "{error}");
+        // The value given is named (it printed "invalid `objective` = :"), and its flag.
+        assert!(error.to_string().starts_with("invalid `objective` = min-foot-speed: must be "), "{error}");
+        assert!(error.to_string().ends_with("(flag --objective)"), "{error}");
     }
 
     fn vector_length(v: [f64; 3]) -> f64 {
