@@ -582,9 +582,8 @@ pub fn family(
 }
 
 /// [`aim_with`], then the family of its solution and the member
-/// `objective` picks, reported with every parameter's sensitivity at it
-/// (solved again with every parameter free only if it no longer holds the
-/// target past the wall): the aim of `kick aim`.
+/// `objective` picks, reported with every parameter's sensitivity at it:
+/// the aim of `kick aim`.
 pub fn aim_best(
     scene: &Scene,
     free: &[Free],
@@ -600,24 +599,17 @@ pub fn aim_best(
     let mut chosen = match objective {
         None => solution,
         Some(_) => {
-            // The member itself, a solution found with its coordinates held:
-            // its report with every parameter's sensitivity. Solving again
-            // from it with every parameter free would drift along the family
-            // (away from the objective's best: 1.913 against 1.917 m of
-            // clearance in flight.md's kick aim).
+            // The member itself, a solution found with its coordinates held
+            // (on target past the wall by construction): its report with
+            // every parameter's sensitivity. Solving again from it with every
+            // parameter free drifted along the family (away from the
+            // objective's best: 1.913 against 1.917 m of clearance in
+            // flight.md's kick aim).
             let flight = launch(&best.values)?;
             let t = trial(scene, &flight)?;
             let miss = (t.goal[0] - scene.target[1]).hypot(t.goal[1] - scene.target[2]);
             let (evaluations, starts) = (solution.evaluations + family.evaluations, solution.starts);
-            if miss <= MISS_TOLERANCE && t.clearance >= 0.0 {
-                solution_of(scene, free, launch, &best.values, (t, flight), miss, evaluations, starts)?
-            } else {
-                let from: Vec<Free> = free.iter().zip(&best.values).map(|(f, &v)| Free { start: v, ..*f }).collect();
-                let mut again = aim_with(scene, &from, &[], launch)?;
-                again.evaluations += evaluations;
-                again.starts += starts;
-                again
-            }
+            solution_of(scene, free, launch, &best.values, (t, flight), miss, evaluations, starts)?
         }
     };
     chosen.family = Some(family);

@@ -17,9 +17,6 @@ use plotters::prelude::{RGBColor, SeriesLabelPosition};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// Thermal diffusivity of air, m²/s (about 20 °C, 1 atm), for the estimate of
-/// the gas's heat loss (crates/kick-bounce/SOURCES.md).
-const AIR_DIFFUSIVITY: f64 = 2.2e-5;
 /// The one plate speed the ISBS 2022 abstract (commons.nmu.edu/isbs/vol40/iss1/12)
 /// names, m/s: there a lower pressure did not lower the peak force.
 const ISBS_EXCEPTION_SPEED: f64 = 4.6;
@@ -351,9 +348,8 @@ fn page_text(
     // impact's energy, so Δe ≤ loss/(2e).
     let fifa_drop = &drops[1].1;
     let gamma = kick_study::parameters::GAS_EXPONENT.default_number();
-    let layer = (AIR_DIFFUSIVITY * fifa_drop.contact_time).sqrt();
-    let share = 3.0 * layer / radius;
-    let heat_loss = (gamma - 1.0) * share;
+    let kick_study::ball::GasHeatLoss { layer, share, loss: heat_loss } =
+        kick_study::ball::gas_heat_loss(fifa_drop.contact_time, radius, gamma);
     let band_half = 0.5 * ((FIFA_REBOUND.1 / FIFA_DROP).sqrt() - (FIFA_REBOUND.0 / FIFA_DROP).sqrt());
     let _ = write!(
         w,
@@ -379,7 +375,7 @@ fn page_text(
          not a ball's on a plate, so it does not test this; a plate test at two speeds does (the fit below).\n\n",
         three(1e3 * fifa_drop.contact_time),
         three(1e3 * layer),
-        short(AIR_DIFFUSIVITY),
+        short(kick_study::ball::AIR_DIFFUSIVITY),
         three(100.0 * share),
         three(100.0 * share),
         three(100.0 * heat_loss),

@@ -49,6 +49,30 @@ pub const FIT_SIGMA: [(Observable, f64); 3] =
     [(Observable::Restitution, 0.01), (Observable::ContactTime, 1e-4), (Observable::MaxCompression, 1e-3)];
 pub const FIT_SEED: u64 = 31;
 
+/// Thermal diffusivity of air, m²/s (about 20 °C, 1 atm), for the estimate of
+/// the gas's heat loss (crates/kick-bounce/SOURCES.md).
+pub const AIR_DIFFUSIVITY: f64 = 2.2e-5;
+
+/// The gas's heat loss over one contact of `contact_time` s, estimated: a
+/// layer ℓ = √(α t_c) at the wall exchanges heat, a share 3ℓ/R of the gas,
+/// which loses of the order of (γ − 1) times that share of what it stores.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GasHeatLoss {
+    /// ℓ, m.
+    pub layer: f64,
+    /// 3ℓ/R.
+    pub share: f64,
+    /// (γ − 1) 3ℓ/R, a share of the gas's stored energy.
+    pub loss: f64,
+}
+
+/// See [`GasHeatLoss`].
+pub fn gas_heat_loss(contact_time: f64, radius: f64, gamma: f64) -> GasHeatLoss {
+    let layer = (AIR_DIFFUSIVITY * contact_time).sqrt();
+    let share = 3.0 * layer / radius;
+    GasHeatLoss { layer, share, loss: (gamma - 1.0) * share }
+}
+
 /// The default shell ball's numbers a page quotes (kick-core's default radius, inside Law 2's, the
 /// FIFA test's pressure).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -155,6 +179,15 @@ pub fn fifa_speed() -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The heat layer of a 9 ms contact: √(2.2e-5 × 9e-3) = 0.445 mm by
+    /// hand, 3ℓ/R of an 0.11 m ball 1.21 %, and 0.4 of that with γ = 1.4.
+    #[test]
+    fn the_gas_heat_loss_estimate_is_its_closed_form() {
+        let h = gas_heat_loss(9e-3, 0.11, 1.4);
+        assert!((h.layer - 4.4497e-4).abs() < 1e-8, "{h:?}");
+        assert!((h.share - 3.0 * 4.4497e-4 / 0.11).abs() < 1e-6 && (h.loss - 0.4 * h.share).abs() < 1e-15, "{h:?}");
+    }
 
     /// The default ball has kick-core's default radius at the FIFA test's pressure, and
     /// with no shell stiffness (k_s = 0) its small-compression χ is β/p0.
