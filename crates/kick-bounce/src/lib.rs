@@ -316,7 +316,13 @@ impl BounceSpec {
                     return Err(KickError::InvalidParameter {
                         name: "drop_height",
                         value: h,
-                        requirement: "at most V²/(2 g) for V = 1000 m/s, the largest impact speed (51 km at g = 9.81 m/s²)",
+                        // The bound at the g given (a user's 1e6 m/s² is not 9.81).
+                        requirement: interned(format!(
+                            "at most V²/(2 g) = {} m, V = {} m/s the largest impact speed, at g = {} m/s²",
+                            kick_core::short(MAX_IMPACT_SPEED.powi(2) / (2.0 * gravity)),
+                            kick_core::short(MAX_IMPACT_SPEED),
+                            kick_core::short(gravity)
+                        )),
                     });
                 }
                 (v, Some(h))

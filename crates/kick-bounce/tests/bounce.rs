@@ -396,4 +396,8 @@ fn a_drop_height_beyond_the_largest_impact_speed_is_refused() {
     let refused = spec(&[("drop_height", n(1.001 * limit)), ("gravity", n(9.81))]).build().unwrap_err();
     assert!(matches!(refused, KickError::InvalidParameter { name: "drop_height", .. }), "{refused:?}");
     assert!(spec(&[("drop_height", n(0.999 * limit)), ("gravity", n(9.81))]).build().is_ok());
+    // The bound is read at the gravity given: 1e6 m/s² holds a drop to 0.5 m.
+    let refused = spec(&[("drop_height", n(0.6)), ("gravity", n(1e6))]).build().unwrap_err().to_string();
+    assert!(refused.contains("= 0.5 m") && refused.contains("g = 1e6") && !refused.contains("9.81"), "{refused}");
+    assert!(spec(&[("drop_height", n(0.4)), ("gravity", n(1e6))]).build().is_ok());
 }

@@ -44,11 +44,16 @@ pub fn bounce(spec: &BounceSpec) -> Result<Report, String> {
             KickError::InvalidParameter { name, .. } => vec![*name],
             KickError::DoesNotApply { given, .. } => vec![*given],
             KickError::OutOfRange { parameters, .. } => parameters.split(", ").collect(),
-            // Resting on the plate: the impact speed given was too low to rebound.
-            KickError::Trapped { .. } => match spec.build() {
-                Ok(b) if b.drop_height.is_some() => vec!["drop_height"],
-                _ => vec!["speed"],
-            },
+            // Resting on the plate: the impact speed given was too low to
+            // rebound against the weight, so a weight the user set is named too.
+            KickError::Trapped { .. } => {
+                let mut names = match spec.build() {
+                    Ok(b) if b.drop_height.is_some() => vec!["drop_height"],
+                    _ => vec!["speed"],
+                };
+                names.extend(["ball_mass", "gravity"].into_iter().filter(|n| spec.given(n).is_some()));
+                names
+            }
             _ => Vec::new(),
         };
         let flags: Vec<String> = names.iter().filter_map(|n| kick_bounce::parameter(n).ok()).map(|p| p.flag()).collect();

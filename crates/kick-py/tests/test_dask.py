@@ -1,5 +1,7 @@
 """kick.dask on a LocalCluster of 2 workers: the same arrays as the local call, bit for bit."""
 
+import time
+
 import numpy as np
 import pytest
 
@@ -150,3 +152,25 @@ def test_to_zarr_3d_vectors(client, tmp_path):
     assert read["spin"].dims == ("dim_0", "offset", "xyz")
     np.testing.assert_array_equal(read["spin"].values, local["spin"])
     np.testing.assert_array_equal(read["foot_half_extents"].values, extents[:, 0, :])
+
+
+def test_to_zarr_leaves_nothing_when_a_task_fails(tmp_path, monkeypatch):
+    pytest.importorskip("zarr")
+    # A worker that fails after others wrote: the store must not be left
+    # half written (its unwritten rows would read back as status 0, solved).
+    real = kick.dask._write_block
+
+    def failing(store, function, options, part, region, *rest):
+        if region[0].start == 2:
+            raise RuntimeError("a worker lost")
+        if region[0].start == 3:
+            time.sleep(1.0)  # still writing when block 2 fails
+        return real(store, function, options, part, region, *rest)
+
+    monkeypatch.setattr(kick.dask, "_write_block", failing)
+    store = tmp_path / "bad.zarr"
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=False, dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as c:
+            with pytest.raises(RuntimeError, match="a worker lost"):
+                kick.dask.to_zarr(c, str(store), "simulate_many", chunks=1, foot_mass=[1.0, 2.0, 3.0, 4.0])
+    assert list(tmp_path.iterdir()) == []  # no store, no partial one

@@ -287,7 +287,7 @@ pub fn after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Re
 pub fn flight_after_1d(scenario: &Scenario, outcome: &Outcome, rest: &FlightSpec) -> Result<Flight, Failure> {
     After::Kick1d.refuse_set(rest)?;
     if !(outcome.v_ball_out > 0.0) {
-        return Err(Failure::refused(format!("the ball leaves the 1D kick at {} m/s: nothing flies forward", outcome.v_ball_out)));
+        return Err(Failure::refused(format!("the ball leaves the 1D kick at {} m/s: nothing flies forward", sig(outcome.v_ball_out))));
     }
     let spec = FlightSpec { speed: Some(outcome.v_ball_out), ball_mass: Some(scenario.ball_mass()), ..*rest };
     spec.build().map_err(flight_failure)

@@ -133,7 +133,7 @@ pub fn leg(settings: &LegSettings) -> Result<LegReport, StudyError> {
         (_, Some(k)) => {
             let e = kick_leg::ankle::elastic_ankle(&leg, &pose, &impact, k, &base)?;
             let mass = LegEffectiveMass { effective_mass: e.equivalent_mass, ..e.interpolated };
-            (mass, e.outcome, format!("elastic, {k} N m/rad"), Some(e))
+            (mass, e.outcome, format!("elastic, {} N m/rad", kick_core::number::short(k)), Some(e))
         }
         (locked, None) => {
             let joint = if locked { AnkleJoint::Locked } else { AnkleJoint::Free };

@@ -154,4 +154,10 @@ fn a_ball_that_stays_on_the_plate_is_said_in_the_bounce_s_terms() {
             assert!(!stderr.contains(word), "`{word}` in {stderr}");
         }
     }
+    // A weight the user set is named beside the speed: it is what holds the
+    // ball (1e6 m/s² traps a ball at 5 m/s).
+    let out = kick(&["bounce", "--speed", "5", "--gravity", "1e6"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("(flags --speed, --gravity)"), "{stderr}");
 }

@@ -44,7 +44,10 @@ fn leg_json_matches_the_library_and_bad_angles_fail() {
     assert!(String::from_utf8_lossy(&bad.stderr).contains("knee"));
     let planar_rotation = kick(&["leg", "--knee", "30", "--ankle", "50", "--rotation", "20"]);
     assert!(!planar_rotation.status.success());
-    assert!(String::from_utf8_lossy(&planar_rotation.stderr).contains("hip_rotation"));
+    assert!(String::from_utf8_lossy(&planar_rotation.stderr).contains("`rotation` = 20"));
+    // The spatial leg's inputs are named as their flags are (not `hip_abduction`).
+    let abduction = kick(&["leg", "--spatial", "--abduction", "200"]);
+    assert!(String::from_utf8_lossy(&abduction.stderr).contains("`abduction` = 200"), "{abduction:?}");
     // -inf reaches the check that names the flag (clap took "-i" for a flag),
     // and the impact direction is an angle like the others: one turn.
     for (args, named) in [
@@ -104,4 +107,13 @@ fn leg_without_arguments_is_the_documented_default_pose() {
     }
     let help = String::from_utf8(kick(&["leg", "--help"]).stdout).unwrap();
     assert!(help.contains("With no arguments, the default pose") && help.contains("[default: 30]"), "{help}");
+}
+
+/// A huge ankle stiffness is printed as a number is, not as 301 digits.
+#[test]
+fn a_huge_ankle_stiffness_is_printed_short() {
+    let out = kick(&["leg", "--ankle-stiffness", "1e300"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("elastic, 1e300 N m/rad") && !text.contains("0000000000"), "{text}");
 }

@@ -211,12 +211,14 @@ impl Leg {
         })
     }
 
+    /// Refusals name the inputs as `kick leg` declares them (`abduction`,
+    /// not the field's `hip_abduction`).
     fn validate(&self, pose: &Pose, impact: &Impact) -> Result<(), LegError> {
         check_range("hip", pose.hip_flexion, -90.0, 150.0, "deg")?;
         check_range("knee", pose.knee_flexion, -15.0, 170.0, "deg")?;
         check_range("ankle", pose.plantarflexion, -45.0, 100.0, "deg")?;
-        check_range("hip_abduction", pose.hip_abduction, -60.0, 90.0, "deg")?;
-        check_range("hip_rotation", pose.hip_rotation, -90.0, 90.0, "deg")?;
+        check_range("abduction", pose.hip_abduction, -60.0, 90.0, "deg")?;
+        check_range("rotation", pose.hip_rotation, -90.0, 90.0, "deg")?;
         check_range("contact", impact.contact_fraction, 0.0, 1.0, "of foot length")?;
         check_range("lateral_offset", impact.lateral_offset, -0.1, 0.1, "m")?;
         let norm = impact.direction.norm();
@@ -227,8 +229,8 @@ impl Leg {
             // The planar leg lives in the sagittal plane; out-of-plane input
             // would be silently ignored, so refuse it.
             for (name, value) in [
-                ("hip_abduction", pose.hip_abduction),
-                ("hip_rotation", pose.hip_rotation),
+                ("abduction", pose.hip_abduction),
+                ("rotation", pose.hip_rotation),
                 ("lateral_offset", impact.lateral_offset),
                 ("direction_z", impact.direction.z),
             ] {

@@ -230,14 +230,43 @@ def to_zarr(client, store, function: str, chunks: int | None = None, **arrays) -
         template[key] = (layout[key], data, var.attrs)
     for name in _trailing_coords(sample):
         template.coords[name] = (name, sample[name].values)
-    template.to_zarr(store, compute=False, mode="w-")
-    full = {name: np.broadcast_to(a, shape + ((3,) if vector else ())) for name, (a, vector) in given.items()}
+    # The tasks write into a sibling that becomes `store` only once every
+    # block is in: a store that exists is whole (a stopped run's unwritten
+    # rows would read back as status 0, solved, with zeros).
+    import shutil
+    import uuid
+
+    partial = f"{os.fspath(store).rstrip(os.sep)}.partial-{uuid.uuid4().hex}"
     futures = []
-    for corner in np.ndindex(*[-(-s // b) for s, b in zip(shape, block)]):
-        region = tuple(slice(i * b, min((i + 1) * b, s)) for i, b, s in zip(corner, block, shape))
-        part = {name: np.ascontiguousarray(a[region]) for name, a in full.items()}
-        futures.append(client.submit(_write_block, store, function, options, part, region, shape, layout, pure=False))
-    return client.gather(futures)
+    try:
+        template.to_zarr(partial, compute=False, mode="w-")
+        full = {name: np.broadcast_to(a, shape + ((3,) if vector else ())) for name, (a, vector) in given.items()}
+        for corner in np.ndindex(*[-(-s // b) for s, b in zip(shape, block)]):
+            region = tuple(slice(i * b, min((i + 1) * b, s)) for i, b, s in zip(corner, block, shape))
+            part = {name: np.ascontiguousarray(a[region]) for name, a in full.items()}
+            futures.append(client.submit(_write_block, partial, function, options, part, region, shape, layout, pure=False))
+        summaries = client.gather(futures)
+        if os.path.exists(store):
+            raise FileExistsError(f"{store}: appeared while the run wrote; the run is left out, never merged into it")
+        os.rename(partial, store)
+    except BaseException:
+        # A failed task, an interrupt or a store that appeared: nothing is
+        # left. A task cancelled while it runs goes on to its end on its
+        # worker, and its write would make the store's folders again: the
+        # partial store goes once no worker runs a task.
+        client.cancel(futures)
+        _settle(client)
+        shutil.rmtree(partial, ignore_errors=True)
+        raise
+    return summaries
+
+
+def _settle(client):
+    """Wait until no worker of ``client`` is running a task."""
+    import time
+
+    while any(client.run(lambda dask_worker: dask_worker.state.executing_count).values()):
+        time.sleep(0.05)
 
 
 def _trailing_coords(ds):
