@@ -623,6 +623,14 @@ fn fit_from(problem: &FitProblem, options: &FitOptions, determined: bool, cancel
     let mut singular: Vec<f64> = svd.iter().flat_map(|svd| svd.singular_values.iter().copied()).collect();
     singular.sort_by(|a, b| b.total_cmp(a));
     let largest = singular.first().copied().unwrap_or(0.0);
+    if determined && jacobian.is_some() && largest == 0.0 {
+        let values: Result<Vec<String>, IdentifyError> =
+            problem.free.iter().map(|&p| Ok(format!("{} = {}", p.name(), kick_core::short(point.get(p)?)))).collect();
+        return Err(IdentifyError::Insensitive {
+            free: problem.free.iter().map(|p| p.name()).collect::<Vec<_>>().join(", "),
+            point: values?.join(", "),
+        });
+    }
     let resolved = m >= n && largest > 0.0 && singular.iter().all(|&s| s > RANK_TOLERANCE * largest);
     let covariance = match (resolved, residual_variance, svd.as_ref().and_then(|svd| svd.v_t.as_ref().map(|v_t| (svd, v_t)))) {
         (true, Some(s2), Some((svd, v_t))) => {

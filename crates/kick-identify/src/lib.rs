@@ -83,6 +83,14 @@ pub enum IdentifyError {
         kick_core::short(*.first), kick_core::short(*.last)
     )]
     NoContact { time_offset: f64, fitted: f64, without: f64, samples: usize, first: f64, last: f64 },
+    /// Every observation's derivative with respect to every free parameter
+    /// is zero at the end of the fit: the optimiser stops where it started
+    /// ("gradient zero"), which is no estimate.
+    #[error(
+        "the observations do not depend on the free parameters ({free}) at the fit's end, {point}: their derivatives are all \
+         zero, so nothing was fitted (data taken away from the contact, or a start where the observables no longer move?)"
+    )]
+    Insensitive { free: String, point: String },
 }
 
 impl IdentifyError {
@@ -103,7 +111,8 @@ impl IdentifyError {
             | IdentifyError::UnknownChannel { .. }
             | IdentifyError::Data { .. }
             | IdentifyError::UnderDetermined { .. }
-            | IdentifyError::NoContact { .. } => Status::Refused,
+            | IdentifyError::NoContact { .. }
+            | IdentifyError::Insensitive { .. } => Status::Refused,
         }
     }
 

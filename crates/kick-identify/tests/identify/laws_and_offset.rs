@@ -202,3 +202,25 @@ fn a_history_with_no_contact_is_refused_in_bounded_time() {
     }
     println!("refused after {:?}", started.elapsed());
 }
+
+/// A force history fitted from a start whose contact is over before the
+/// second sample (k 1e12 times the truth's): no sample's prediction moves
+/// with k there, and the optimiser stopped at once with "converged:
+/// gradient zero", the start reported as the estimate. Now refused.
+#[test]
+fn a_fit_whose_observations_do_not_move_with_its_parameters_is_refused() {
+    let options = FitOptions::default();
+    let truth = ModelPoint::new(Scenario::baseline(), 0.0).unwrap();
+    let times = time_grid(&truth.scenario, 30, 1.2);
+    let data = history(&options.solver, &truth, times, &lab_sigma(&[Channel::Force]), 1).unwrap();
+    let stiffness = FitParameter::Scenario(Parameter::Stiffness);
+    let start = start_from(&truth, &[(stiffness, 1e12)]);
+    match fit(&FitProblem { start, free: vec![stiffness], observations: data }, &options) {
+        Err(e @ IdentifyError::Insensitive { .. }) => {
+            let text = e.to_string();
+            assert!(text.contains("do not depend on the free parameters (stiffness)"), "{text}");
+            assert_eq!(e.status(), kick_core::Status::Refused);
+        }
+        other => panic!("{other:?}"),
+    }
+}
