@@ -288,7 +288,13 @@ impl ScenarioSpec {
     /// The scenario, its approach along one line checked or (a 3D kick's base) not.
     fn build_on_line(&self, one_line: bool) -> Result<Scenario, KickError> {
         let scenario = self.build_on_line_unchecked(one_line)?;
-        check_boot_resolution(&scenario)?;
+        check_boot_resolution(&scenario).map_err(|e| match (e, self.boot_stiffness, self.boot_damping) {
+            // The layer's time constant is c_b/k_b: the one of the two the user gave is named.
+            (KickError::InvalidParameter { name: "boot_stiffness", requirement, .. }, None, Some(damping)) => {
+                KickError::InvalidParameter { name: "boot_damping", value: damping, requirement }
+            }
+            (e, ..) => e,
+        })?;
         Ok(scenario)
     }
 
@@ -345,7 +351,7 @@ fn check_boot_resolution(scenario: &Scenario) -> Result<(), KickError> {
             name: "boot_stiffness",
             value: boot.stiffness,
             requirement:
-                "such that the layer's time constant c_b/k_b is at least 1e-5 of the contact time (stiffer: give inf, the rigid foot)",
+                "such that the layer's time constant c_b/k_b is at least 1e-5 of the contact time (a stiffer layer: give boot_stiffness = inf, the rigid foot)",
         });
     }
     Ok(())

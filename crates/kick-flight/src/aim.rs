@@ -266,11 +266,10 @@ impl Objective {
     }
 
     pub fn from_name(name: &str) -> Result<Objective, AimError> {
-        Objective::ALL.into_iter().find(|o| o.name() == name).ok_or_else(|| AimError::Invalid {
-            name: "objective",
-            values: vec![],
-            requirement: "one of min-foot-speed, min-speed, min-time, max-clearance",
-        })
+        Objective::ALL
+            .into_iter()
+            .find(|o| o.name() == name)
+            .ok_or_else(|| AimError::UnknownObjective { name: name.to_string(), expected: Objective::ALL.map(Objective::name).join(", ") })
     }
 
     /// The member's score, lower better; None when the objective does not
@@ -624,6 +623,8 @@ pub enum AimError {
     /// An objective the family's members have no value of (min-foot-speed without the kick).
     #[error("invalid `objective` = {name}: must be {requirement}")]
     Objective { name: &'static str, requirement: &'static str },
+    #[error("unknown objective `{name}`: expected one of {expected}")]
+    UnknownObjective { name: String, expected: String },
     #[error("unknown free parameter `{name}`: expected one of {expected}")]
     UnknownFree { name: String, expected: String },
     #[error("free parameter `{name}` given twice")]

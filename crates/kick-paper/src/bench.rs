@@ -86,6 +86,12 @@ impl Printable for BenchReport {
 /// asked, the pages. Progress lines go to `log`.
 pub fn bench(args: &BenchSettings, log: &mut dyn Write) -> Result<BenchReport, PaperError> {
     let min_time = if args.quick { 0.02 } else { args.min_time };
+    // Settings and folders are checked before an hour of timing, not at its end.
+    kick_study::bench::check_settings(args.min_time, args.sweep_samples)?;
+    let report_folders = [&args.report, &args.solvers_report].into_iter().flatten().filter_map(|r| r.parent());
+    for folder in std::iter::once(args.out.join("figures").as_path()).chain(report_folders).filter(|f| !f.as_os_str().is_empty()) {
+        std::fs::create_dir_all(folder).map_err(|source| PaperError::Io { what: "create", path: folder.to_path_buf(), source })?;
+    }
     let t = kick_study::bench::measure(args.quick, args.min_time, args.sweep_samples, log)?;
     let files = file_runs(args.quick)?;
     let sweeps = sweep3d_rates(args.quick)?;

@@ -172,7 +172,7 @@ pub fn aim_error(error: AimError) -> StudyError {
             Err(_) => format!("--{}", name.replace('_', "-")),
         }),
         AimError::UnknownFree { .. } | AimError::DuplicateFree { .. } | AimError::NoFree => Some("--free".into()),
-        AimError::Objective { .. } => Some("--objective".into()),
+        AimError::Objective { .. } | AimError::UnknownObjective { .. } => Some("--objective".into()),
         _ => None,
     };
     match error {

@@ -43,6 +43,9 @@ pub enum BenchError {
     /// A ladder point that could not be measured.
     #[error("{solver}: {source}")]
     Ladder { solver: &'static str, source: kick_core::KickError },
+    /// A setting out of range, the message naming its flag.
+    #[error("{0}")]
+    Setting(String),
     /// A run the bench takes and then reads back was not there (`what`).
     #[error("no {0}")]
     NoRun(&'static str),
@@ -309,10 +312,35 @@ pub struct Timings {
     pub other: Other,
 }
 
+/// The longest `--min-time` per point: the bench times some 80 points,
+/// so an hour's run at most.
+pub const MAX_MIN_TIME: f64 = 60.0;
+
+/// `--min-time` in (0, [`MAX_MIN_TIME`]] s and `--sweep-samples` in
+/// 1..=[`crate::limits::MAX_SCENARIOS`], checked before anything runs (1e300
+/// s timed one point for ever; NaN ran the default).
+pub fn check_settings(min_time: f64, sweep_samples: u64) -> Result<(), BenchError> {
+    if !(min_time > 0.0 && min_time <= MAX_MIN_TIME) {
+        return Err(BenchError::Setting(format!(
+            "--min-time {}: must be a time in (0, {}] s",
+            kick_core::short(min_time),
+            kick_core::short(MAX_MIN_TIME)
+        )));
+    }
+    if !(1..=crate::limits::MAX_SCENARIOS).contains(&sweep_samples) {
+        return Err(BenchError::Setting(format!(
+            "--sweep-samples {sweep_samples}: must be between 1 and {}",
+            crate::limits::MAX_SCENARIOS
+        )));
+    }
+    Ok(())
+}
+
 /// Time everything but the files: the ladder (a few points when `quick`),
 /// each point at least `min_time` s, the throughput over `sweep_samples`
 /// sampled scenarios. Progress lines go to `log`.
 pub fn measure(quick: bool, min_time: f64, sweep_samples: u64, log: &mut dyn Write) -> Result<Timings, BenchError> {
+    check_settings(min_time, sweep_samples)?;
     let min_time = if quick { 0.02 } else { min_time };
     let cases = precision::cases()?;
     let mut ladder = precision::ladder();

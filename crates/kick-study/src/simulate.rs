@@ -263,7 +263,18 @@ pub fn simulate3d(
 /// `solver` as for [`simulate3d`] with a history.
 pub fn sampled3d(spec: &KickSpec, solver: &str, spacing: kick_core::Spacing) -> Result<(Outcome3d, Vec<kick_3d::Sample3d>), StudyError> {
     let kick = spec.build()?;
-    let accurate = history_solver(&Solver3d::from_name(solver, 0.0)?)?;
+    // The name first, with a valid step: a scene path's own `dt` check would
+    // blame a step this call never takes.
+    let accurate = match Solver3d::from_name(solver, 1e-5)? {
+        Solver3d::Auto => kick_3d::Accurate3d::default(),
+        Solver3d::Accurate(a) => a,
+        _ => {
+            return Err(StudyError::Flag {
+                flag: "solver",
+                message: format!("a time history samples the accurate 3D path: `solver` = {solver} gives none (use accurate or auto)"),
+            })
+        }
+    };
     Ok(accurate.solve_sampled(&kick, spacing, kick_core::MAX_HISTORY_SAMPLES)?)
 }
 

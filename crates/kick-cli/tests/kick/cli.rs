@@ -323,3 +323,26 @@ fn simulate_takes_the_shell_ball_by_name() {
         assert!(String::from_utf8_lossy(&out.stderr).contains(needle), "{args:?}");
     }
 }
+
+/// `kick bench`'s settings and folders are refused before any timing: a
+/// min-time of 1e300 s timed its first point for ever, NaN ran the default,
+/// and an output folder that cannot be made failed after the whole run.
+#[test]
+fn bench_settings_and_folders_are_refused_before_timing() {
+    for (args, named) in [
+        (&["bench", "--min-time", "1e300"][..], "--min-time 1e300"),
+        (&["bench", "--min-time", "NaN"][..], "--min-time NaN"),
+        (&["bench", "--min-time", "0"][..], "--min-time 0"),
+        (&["bench", "--quick", "--sweep-samples", "0"][..], "--sweep-samples 0"),
+        (&["bench", "--quick", "--sweep-samples", "100000000000"][..], "--sweep-samples 100000000000"),
+        (&["bench", "--quick", "--out", "/proc/kick-bench"][..], "/proc/kick-bench/figures"),
+        (&["bench", "--quick", "--out", "/tmp", "--report", "/proc/kick-bench/timing.md"][..], "/proc/kick-bench"),
+    ] {
+        let started = std::time::Instant::now();
+        let out = kick(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains(named), "{args:?}: {stderr}");
+        assert!(started.elapsed().as_secs_f64() < 5.0, "{args:?} took {:?}", started.elapsed());
+    }
+}

@@ -205,5 +205,12 @@ fn the_stiffest_layer_accepted_solves_and_a_stiffer_one_is_refused() {
                 other => panic!("{law:?} at {k_b:e}: {other:?}"),
             }
         }
+        // With the leg's identified k_b and only c_b given, c_b is what was
+        // too small, and is named (boot_stiffness, never given, was).
+        let light = kick_core::ScenarioSpec { law: Some(law), leg: Some(true), boot_damping: Some(1e-9), ..Default::default() };
+        match light.build() {
+            Err(KickError::InvalidParameter { name: "boot_damping", value, .. }) => assert_eq!(value, 1e-9),
+            other => panic!("{law:?}: {other:?}"),
+        }
     }
 }
