@@ -50,6 +50,9 @@ impl Out {
         for path in value.written() {
             note(&format!("wrote {}", path.display()));
         }
+        if let Some(why) = value.no_answer() {
+            return Err(why);
+        }
         match value.outside_validity() {
             Some(why) => Err(format!("the result above is {why}")),
             None => Ok(()),

@@ -208,8 +208,20 @@ impl Printable for SweepReport {
         }
         if let Some((counted, counts)) = &self.auto_paths {
             let shown: Vec<String> = counts.iter().map(|(k, v)| format!("{k}: {v}")).collect();
-            let _ = writeln!(w, "auto paths over the first {counted} scenarios: {}", shown.join(", "));
+            // Counted over the rows the model takes: none when all were refused.
+            if !shown.is_empty() {
+                let _ = writeln!(w, "auto paths over the first {counted} scenarios: {}", shown.join(", "));
+            }
         }
         w
+    }
+    fn no_answer(&self) -> Option<String> {
+        (self.scenarios > 0 && self.failed == self.scenarios).then(|| {
+            format!(
+                "every one of the {} scenarios failed; {} holds why, row by row (failures/message): check --range and the values held",
+                self.scenarios,
+                self.path.display()
+            )
+        })
     }
 }

@@ -240,4 +240,20 @@ impl Printable for Sweep3dReport {
         }
         w
     }
+    fn no_answer(&self) -> Option<String> {
+        // Trapped is an answer (physics); refused and failed rows are not.
+        let none: u64 = self
+            .not_separated
+            .iter()
+            .filter(|(s, _)| [Status::Refused.name(), Status::NumericalFailure.name()].contains(s))
+            .map(|(_, n)| n)
+            .sum();
+        (self.kicks > 0 && none == self.kicks).then(|| {
+            format!(
+                "every one of the {} kicks was refused or failed; {} holds why, row by row (failures/message): check --range and the values held",
+                self.kicks,
+                self.path.display()
+            )
+        })
+    }
 }

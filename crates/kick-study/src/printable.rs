@@ -20,6 +20,12 @@ pub trait Printable: Serialize {
     fn outside_validity(&self) -> Option<String> {
         None
     }
+    /// Why the result holds no answer at all, every row of a sweep refused
+    /// or failed (a file of failures, written whole): the command line
+    /// prints the result, then this, and exits 1.
+    fn no_answer(&self) -> Option<String> {
+        None
+    }
 }
 
 /// The `status` of a single result in its JSON, and why when it is

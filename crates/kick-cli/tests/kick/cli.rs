@@ -346,3 +346,28 @@ fn bench_settings_and_folders_are_refused_before_timing() {
         assert!(started.elapsed().as_secs_f64() < 5.0, "{args:?} took {:?}", started.elapsed());
     }
 }
+
+/// A sweep whose every row is refused is written whole, and said to have
+/// no answer with exit 1 (it exited 0 under "10 failed", and `kick sweep`
+/// printed an empty list of auto paths).
+#[test]
+fn a_sweep_with_no_answer_exits_1() {
+    let dir = std::env::temp_dir().join(format!("kick-no-answer-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    for (args, file) in [
+        (vec!["sweep", "--samples", "10", "--range", "ball_speed=100,200"], "d.h5"),
+        (vec!["sweep3d", "--samples", "10", "--range", "offset=1,2"], "e.h5"),
+    ] {
+        let path = dir.join(file);
+        let mut args = args.clone();
+        let out_path = path.to_string_lossy().into_owned();
+        args.extend(["--out", &out_path]);
+        let out = kick(&args);
+        let (stdout, stderr) = (String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains("every one of the 10") && stderr.contains("failures/message"), "{stderr}");
+        assert!(!stdout.contains("auto paths over the first 10 scenarios: \n"), "{stdout}");
+        assert!(path.is_file(), "{args:?}: the file of failures is written");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
