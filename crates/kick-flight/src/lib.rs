@@ -101,6 +101,8 @@ pub enum FlightError {
     OutOfRange { quantity: &'static str, value: f64, unit: &'static str, parameters: &'static str },
     #[error("parameter `{name}` takes {expected} numbers, got {found}")]
     WrongLength { name: &'static str, expected: usize, found: usize },
+    #[error("parameter `{name}` takes at most {most} numbers, got {found}")]
+    TooMany { name: &'static str, most: usize, found: usize },
     #[error("unknown flight parameter `{name}`: expected one of {expected}")]
     UnknownParameter { name: String, expected: String },
     #[error("`{first}` and `{second}` cannot both be given")]

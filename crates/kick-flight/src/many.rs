@@ -78,6 +78,7 @@ impl FlightError {
             | FlightError::Missing { .. }
             | FlightError::OutOfRange { .. }
             | FlightError::WrongLength { .. }
+            | FlightError::TooMany { .. }
             | FlightError::UnknownParameter { .. }
             | FlightError::Conflict { .. }
             | FlightError::TooManySamples { .. }

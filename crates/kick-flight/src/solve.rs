@@ -502,7 +502,7 @@ pub fn solve_planes(flight: &Flight, planes: &[f64], crossings: &mut [Option<Cro
 /// The planes of [`solve_planes`]: at most [`MAX_PLANES`], each finite and > 0.
 pub fn check_planes(planes: &[f64]) -> Result<(), FlightError> {
     if planes.len() > MAX_PLANES {
-        return Err(FlightError::WrongLength { name: "distance", expected: MAX_PLANES, found: planes.len() });
+        return Err(FlightError::TooMany { name: "distance", most: MAX_PLANES, found: planes.len() });
     }
     if planes.is_empty() {
         return Err(FlightError::InvalidParameter {
@@ -693,6 +693,10 @@ mod tests {
         assert!(crossings[3].is_none() && crossings[0].is_some());
         assert!(matches!(solve_planes(&flight, &[f64::NAN], &mut [None]), Err(FlightError::InvalidParameter { name: "distance", .. })));
         assert!(matches!(solve_planes(&flight, &[1.0], &mut []), Err(FlightError::WrongLength { .. })));
+        // One plane too many is said as the bound it is (it read "takes 16 numbers, got 17").
+        let many: Vec<f64> = (1..=MAX_PLANES + 1).map(|d| d as f64).collect();
+        let refused = check_planes(&many).unwrap_err().to_string();
+        assert_eq!(refused, format!("parameter `distance` takes at most {MAX_PLANES} numbers, got {}", MAX_PLANES + 1));
     }
 
     #[test]

@@ -177,6 +177,14 @@ def test_3d_rows_fly_with_broadcast_air_and_a_plane_axis():
     flat = kick.simulate3d_many(friction=[0.3, 0.6], flight=True, distance=25.0)
     assert flat["status"].tolist() == [0, 0] and flat["flight_status"].tolist() == [STATUS["refused"]] * 2
     assert np.isnan(flat["crossing_height"]).all() and not np.isnan(flat["speed"]).any()
+    # Why is said, row by row (it was not: a refused air density read as a
+    # ball that does not leave the ground).
+    assert flat["failure_index"].tolist() == [0, 1]
+    assert all(m.startswith("the flight after the kick: ") for m in flat["failure_message"])
+    air = kick.simulate3d_many(flight=True, contact_depth=0.03, air_density=[1.2, np.nan, -1.0])
+    assert air["status"].tolist() == [0, 0, 0] and air["flight_status"].tolist() == [0, STATUS["refused"], STATUS["refused"]]
+    assert air["failure_index"].tolist() == [1, 2]
+    assert all("air_density" in m for m in air["failure_message"]), air["failure_message"]
 
 
 def test_a_million_rows_allocate_only_the_output_arrays():

@@ -30,6 +30,16 @@ def test_1d_axes_coordinates_and_units():
     assert ds["status"].dtype == np.uint8 and ds.attrs["function"] == "simulate_many" and ds.attrs["solver"] == "accurate"
     # Selection by the physical value, as xarray users expect.
     assert ds["v_ball_out"].sel(foot_mass=mass[2, 0], stiffness=stiffness[1]).item() == out["v_ball_out"][2, 1]
+    # No vector here: no `xyz` axis (a stray one was always added).
+    assert "xyz" not in ds.dims and "xyz" not in ds.coords
+
+
+def test_zero_rows_label_as_any_other():
+    # An axis of length 0 (it raised IndexError).
+    ds = kick.to_xarray(kick.simulate_many(foot_mass=np.empty(0)))
+    assert ds["v_ball_out"].shape == (0,) and ds["v_ball_out"].dims == ("foot_mass",)
+    ds = kick.to_xarray(kick.simulate_many(foot_mass=np.empty((0, 1)), stiffness=[3e5, 4e5]))
+    assert ds["v_ball_out"].shape == (0, 2) and ds["v_ball_out"].dims == ("foot_mass", "stiffness")
 
 
 def test_failures_land_on_their_rows():
@@ -58,6 +68,11 @@ def test_3d_vectors_and_unnamed_axes():
     assert ds["spin"].attrs["units"] == units["spin_x"] == "rad/s"
     assert ds["launch_velocity"].attrs["units"] == "m/s" and ds["contact_time"].attrs["units"] == "s"
     np.testing.assert_array_equal(ds["spin"].values, out["spin"])
+    # Every number has its unit (the fixed-point angular impulse had none).
+    assert ds["angular_impulse_fixed_point"].attrs["units"] == "N m s"
+    assert all(v.attrs["units"] for k, v in ds.data_vars.items() if k != "failure_message"), [
+        k for k, v in ds.data_vars.items() if not v.attrs["units"]
+    ]
 
 
 def test_flight_axes_and_units():

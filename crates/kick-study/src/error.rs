@@ -126,7 +126,10 @@ impl From<FlightError> for StudyError {
 /// The flag of the flight parameter `error` names, if it names one.
 pub fn flight_flag(error: &FlightError) -> Option<String> {
     let name = match error {
-        FlightError::InvalidParameter { name, .. } | FlightError::Missing { name } | FlightError::WrongLength { name, .. } => Some(*name),
+        FlightError::InvalidParameter { name, .. }
+        | FlightError::Missing { name }
+        | FlightError::WrongLength { name, .. }
+        | FlightError::TooMany { name, .. } => Some(*name),
         FlightError::Conflict { second, .. } => Some(*second),
         _ => None,
     };

@@ -40,11 +40,15 @@ pub trait RowModel: Sync {
 pub struct Solved {
     pub evaluations: u64,
     pub outside_validity: Option<String>,
+    /// Why the flight after the kick was not flown (its `flight_status`
+    /// says how): the row keeps the kick's status and numbers, and this
+    /// message goes to `failure_message`.
+    pub flight_failure: Option<String>,
 }
 
 impl Solved {
     pub fn new(evaluations: u64, outside_validity: Option<kick_core::OutsideValidity>) -> Solved {
-        Solved { evaluations, outside_validity: outside_validity.map(|o| o.to_string()) }
+        Solved { evaluations, outside_validity: outside_validity.map(|o| o.to_string()), flight_failure: None }
     }
 }
 
@@ -180,11 +184,18 @@ impl<M: RowModel> Level for Broadcast<'_, M> {
         }
         let out = &mut row.outcomes[0];
         match self.model.solve(&spec, &mut out[..self.width]) {
-            Ok(Solved { evaluations, outside_validity }) => {
+            Ok(Solved { evaluations, outside_validity, flight_failure }) => {
                 out[self.width] = evaluations as f64;
                 row.failures[0] = None;
-                if let Some(message) = outside_validity {
-                    row.flag(0, Failure::new(Status::OutsideValidity, message));
+                let flight = flight_failure.map(|m| format!("the flight after the kick: {m}"));
+                match (outside_validity, flight) {
+                    (Some(why), flight) => {
+                        let message = flight.map_or(why.clone(), |f| format!("{why}; {f}"));
+                        row.flag(0, Failure::new(Status::OutsideValidity, message));
+                    }
+                    // The kick stands (status 0); the flight's refusal is said.
+                    (None, Some(f)) => row.flag(0, Failure::new(Status::Separated, f)),
+                    (None, None) => {}
                 }
             }
             Err(failure) => row.fail(0, failure),
@@ -322,7 +333,8 @@ pub struct Flown {
 /// The flight's outputs after a kick, in [`kick_flight::plane_values`]'
 /// order: the landing and apex, then the crossing columns (per plane with a
 /// plane axis), and `flight_status` (the flight's status code: 0 flown,
-/// 3 refused: a ball that does not leave the ground; 1 a numerical failure).
+/// 3 refused: a flight input refused, or a ball that does not leave the
+/// ground; 1 a numerical failure), why in the row's `failure_message`.
 fn flight_columns(planes: Option<usize>, single: bool) -> Vec<(String, Vec<usize>)> {
     let mut columns: Vec<(String, Vec<usize>)> = vec![
         ("flight_time".into(), vec![]),
@@ -425,11 +437,13 @@ impl RowModel for Many3d {
             let plan = crate::flight::FlightPlan { rest: spec.1, planes: f.plan.planes.clone() };
             let flown = crate::flight::flight_after_3d(&kick, &outcome, &spec.1).and_then(|flight| plan.fly_into(&flight, out));
             let last = out.len() - 1;
+            let mut flight_failure = None;
             match flown {
                 Ok(_) => out[last] = 0.0,
                 Err(failure) => {
                     out.fill(f64::NAN);
                     out[last] = f64::from(failure.status.code());
+                    flight_failure = Some(failure.message);
                 }
             }
             // `crossed` and the crossing's columns come plane by plane in
@@ -437,6 +451,7 @@ impl RowModel for Many3d {
             if let Some(r) = &self.regroup {
                 r.apply(&mut out[kick_flight::LANDING_COLUMNS..last]);
             }
+            return Ok(Solved { flight_failure, ..Solved::new(outcome.evaluations, kick.check_validity(&outcome).err()) });
         }
         Ok(Solved::new(outcome.evaluations, kick.check_validity(&outcome).err()))
     }

@@ -301,8 +301,10 @@ _declare(
     "``distance`` crossed, crossing_time, crossing_height, crossing_lateral_offset\n"
     "and crossing_velocity (S + (3,)); a list of P distances adds a trailing axis\n"
     "of P (S + (P,), crossing_velocity S + (P, 3)). ``flight_status`` is the\n"
-    "flight's code (0 flown; 3 refused: the ball does not leave the ground; its\n"
-    "flight outcomes then NaN, the kick's kept).\n",
+    "flight's code (0 flown; 3 refused: a flight input refused, or the ball does\n"
+    "not leave the ground; 1 a numerical failure; its flight outcomes then NaN,\n"
+    "the kick's kept): such a row keeps the kick's ``status`` and is listed in\n"
+    "``failure_index`` with why in ``failure_message``.\n",
 )
 
 

@@ -38,7 +38,9 @@ def output_units(function: str) -> dict:
         table = list(_kick.OBSERVABLES) + [("energy_residual", "J")]
     elif function == "simulate3d_many":
         # With flight=True, the flight's columns follow the kick's.
-        table = list(_kick.OBSERVABLES_3D) + list(_kick.FLIGHT_COLUMNS) + [("flight_status", "1")]
+        # The fixed-point angular impulse is a field, not one of the observables.
+        table = list(_kick.OBSERVABLES_3D) + [(f"angular_impulse_fixed_point_{a}", "N m s") for a in "xyz"]
+        table += list(_kick.FLIGHT_COLUMNS) + [("flight_status", "1")]
     elif function == "flight_many":
         table = list(_kick.FLIGHT_COLUMNS) + [
             ("launch_reynolds", "1"),
@@ -101,7 +103,8 @@ def to_xarray(result, function: str | None = None, **inputs):
         rows[name] = (a.reshape((1,) * (ndim - len(row)) + a.shape), (1,) * (ndim - len(row)) + row, vector)
 
     def spans(row):
-        return [k for k in range(ndim) if row[k] > 1]
+        # An axis of length 0 is spanned too (index 0 does not exist there).
+        return [k for k in range(ndim) if row[k] != 1]
 
     dims = []
     index = {}
@@ -124,7 +127,6 @@ def to_xarray(result, function: str | None = None, **inputs):
         values = a[take]
         cdims = [dims[k] for k in axes] + (["xyz"] if vector else [])
         coords[name] = (cdims, values, attrs(name))
-    coords["xyz"] = ("xyz", ["x", "y", "z"])
 
     # simulate3d_many(flight=True, distance=[...]): the crossing columns have
     # a trailing axis of the planes, labelled by their distances.
@@ -145,18 +147,19 @@ def to_xarray(result, function: str | None = None, **inputs):
         else:
             vdims = list(dims) + (["xyz"] if extra == (3,) else ["xy"] if extra == (2,) else [f"{key}_{i}" for i in range(len(extra))])
         data[key] = (vdims, v, {"units": units.get(key, "")})
+    # The component labels only where a variable has that axis.
     if any("xy" in d[0] for d in data.values()):
         coords["xy"] = ("xy", ["x", "y"])
+    if any("xyz" in d[0] for d in list(data.values()) + list(coords.values())):
+        coords["xyz"] = ("xyz", ["x", "y", "z"])
     data["status"][2]["flag_values"] = np.array(sorted(_status()), dtype=np.uint8)
     data["status"][2]["flag_meanings"] = " ".join(_status()[c].replace(" ", "_") for c in sorted(_status()))
     message = np.full(shape, "", dtype=object)
     if len(result.get("failure_index", [])):
         message.reshape(-1)[np.asarray(result["failure_index"])] = list(result["failure_message"])
-    data["failure_message"] = (dims, message, {"long_name": "the library's message for a row without outcome"})
+    data["failure_message"] = (dims, message, {"long_name": "the library's message for a row that failed, lies outside its law's validity, or whose flight was not flown"})
 
     ds = xr.Dataset(data, coords=coords)
-    if "xyz" not in ds.dims:
-        ds = ds.drop_vars("xyz")
     ds.attrs["function"] = function
     for key, value in options.items():
         if value is not None:

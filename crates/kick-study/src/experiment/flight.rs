@@ -97,7 +97,10 @@ pub(super) fn parse(
     };
     checked.map_err(|e| {
         let name = match &e {
-            FlightError::InvalidParameter { name, .. } | FlightError::Missing { name } | FlightError::WrongLength { name, .. } => *name,
+            FlightError::InvalidParameter { name, .. }
+            | FlightError::Missing { name }
+            | FlightError::WrongLength { name, .. }
+            | FlightError::TooMany { name, .. } => *name,
             FlightError::Conflict { second, .. } => *second,
             _ => "",
         };
