@@ -401,3 +401,16 @@ fn a_drop_height_beyond_the_largest_impact_speed_is_refused() {
     assert!(refused.contains("= 0.5 m") && refused.contains("g = 1e6") && !refused.contains("9.81"), "{refused}");
     assert!(spec(&[("drop_height", n(0.4)), ("gravity", n(1e6))]).build().is_ok());
 }
+
+/// A solver that gives up says where, in seconds, and in words of its own
+/// (it said t = 0 s and "Stopped at x = 0.000000216…. Step size underflow.").
+#[test]
+fn a_solver_that_gives_up_says_when() {
+    match run(&spec(&[("speed", n(10.0)), ("ball_radius", n(1e-6))])) {
+        Err(KickError::Integration { time, reason }) => {
+            assert!(time > 0.0 && time < 1e-3, "{time}");
+            assert!(!reason.contains("Stopped at") && reason.contains("step size"), "{reason}");
+        }
+        other => panic!("{other:?}"),
+    }
+}

@@ -349,7 +349,14 @@ fn solver_error(error: ode_solvers::dop_shared::IntegrationError, time_unit: f64
             time: x * time_unit,
             reason: format!("still in contact after {n_step} integration steps in one phase"),
         },
-        other => integration_error(0.0, time_unit, other),
+        // In the solver's own time and words: at its x (it said t = 0 s,
+        // and "Stopped at x = 0.000000216…"), in seconds.
+        ode_solvers::dop_shared::IntegrationError::StepSizeUnderflow { x } => {
+            KickError::Integration { time: x * time_unit, reason: "the step size fell below the solver's smallest".into() }
+        }
+        ode_solvers::dop_shared::IntegrationError::StiffnessDetected { x } => {
+            KickError::Integration { time: x * time_unit, reason: "the problem became stiff for the explicit solver".into() }
+        }
     }
 }
 

@@ -50,6 +50,12 @@ pub fn sutherland_viscosity(kelvin: f64) -> f64 {
     SUTHERLAND_BETA * kelvin * kelvin.sqrt() / (kelvin + SUTHERLAND_CONSTANT)
 }
 
+/// The hottest air accepted, °C: a bound of the numbers, far above any
+/// pitch's air; without one the viscosity (T^1.5) ran to inf and the drag
+/// to NaN (1e300 °C).
+pub const MAX_TEMPERATURE: f64 = 1000.0;
+pub(crate) const TEMPERATURE_REQUIREMENT: &str = "finite, above absolute zero (-273.15 °C) and at most 1000 °C";
+
 /// Standard-atmosphere temperature (K) and pressure (Pa) at `altitude` (m).
 pub fn standard_atmosphere(altitude: f64) -> (f64, f64) {
     let ratio = 1.0 - LAPSE_RATE * altitude / SEA_LEVEL_TEMPERATURE;
@@ -93,8 +99,8 @@ impl Air {
         }
         let (t_standard, p_standard) = standard_atmosphere(h);
         let kelvin = match temperature {
-            Some(c) if c.is_finite() && c > -CELSIUS_ZERO => c + CELSIUS_ZERO,
-            Some(c) => return Err(invalid("temperature", c, "finite and above absolute zero (-273.15 °C)")),
+            Some(c) if c.is_finite() && c > -CELSIUS_ZERO && c <= MAX_TEMPERATURE => c + CELSIUS_ZERO,
+            Some(c) => return Err(invalid("temperature", c, TEMPERATURE_REQUIREMENT)),
             None => t_standard,
         };
         let pressure = match pressure {
@@ -147,6 +153,8 @@ mod tests {
         assert_eq!(name(Air::new(Some(f64::NAN), None, None, None)), "air_density");
         assert_eq!(name(Air::new(Some(1.2), Some(20.0), None, None)), "air_density");
         assert_eq!(name(Air::new(None, Some(-300.0), None, None)), "temperature");
+        assert_eq!(name(Air::new(None, Some(1e300), None, None)), "temperature");
+        assert!(Air::new(None, Some(1000.0), None, None).is_ok());
         assert_eq!(name(Air::new(None, None, Some(-1.0), None)), "pressure");
         assert_eq!(name(Air::new(None, None, None, Some(50_000.0))), "altitude");
         assert_eq!(name(Air::new(None, Some(20.0), Some(1e5), Some(10.0))), "altitude");

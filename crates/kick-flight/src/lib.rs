@@ -69,7 +69,7 @@ pub use solve::{
     check_planes, history, outcome_columns, plane_columns, plane_values, solve, solve_planes, Aerodynamics, Crossing, FlightHistory,
     FlightOutcome, FlightSample, Sampling, LANDING_COLUMNS, MAX_PLANES, OUTCOME_COLUMNS,
 };
-pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS};
+pub use spec::{Flight, FlightParameter, FlightSpec, FLIGHT_PARAMETERS, MAX_LAUNCH_SPEED};
 
 use kick_core::short;
 use thiserror::Error;

@@ -268,14 +268,16 @@ impl Dynamics {
 pub(crate) fn check_scales(flight: &Flight) -> Result<(), FlightError> {
     const AIR: &str = "air_density, temperature, pressure, altitude, drag_coefficient, ball_panels, speed, ball_radius, ball_mass";
     let (v, w) = (flight.launch_velocity(), flight.spin());
-    let speed = Vector3::from(v).norm();
+    // Lengths by hypot: a spin of 1e300 per axis is said as the 1.4e300 it is, not inf.
+    let length = |a: [f64; 3]| a[0].hypot(a[1]).hypot(a[2]);
+    let speed = length(v);
     let dynamics = Dynamics::new(flight);
     let a = dynamics.aerodynamics(v, w);
     let per_speed_squared = dynamics.aero * speed * speed;
     // (quantity, value, unit, from which parameters, whether it may be 0)
     let scales = [
         ("launch speed", speed, "m/s", "speed, launch_velocity", false),
-        ("spin's surface speed R|ω|", flight.ball_radius() * Vector3::from(w).norm(), "m/s", "spin, ball_radius", true),
+        ("spin's surface speed R|ω|", flight.ball_radius() * length(w), "m/s", "spin, ball_radius", true),
         ("ball mass", flight.ball_mass(), "kg", "ball_mass", false),
         ("ball radius", flight.ball_radius(), "m", "ball_radius", false),
         ("gravity", flight.gravity(), "m/s²", "gravity", false),

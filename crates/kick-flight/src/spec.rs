@@ -38,6 +38,14 @@ pub enum FlightParameter {
 use kick_core::parameters::{Bound, DefaultValue, Level, ParameterDef, Shape, Valid};
 
 /// What `ball_panels` must be: a construction of [`crate::coefficients::BALL_CONSTRUCTIONS`].
+/// The largest launch speed, m/s, as the bounce's largest impact speed:
+/// far past any kick (a ball leaves a foot at up to ~40 m/s) and the drag
+/// model's air (incompressible: Mach 0.3 is ~100 m/s), and short of the
+/// speeds whose flight leaves double precision's range (1e90 m/s failed in
+/// the drag's scale, and an aim's --range up to it was searched there).
+pub const MAX_LAUNCH_SPEED: f64 = 1000.0;
+const SPEED_REQUIREMENT: &str = "in (0, 1000] m/s";
+
 const PANELS_REQUIREMENT: &str = "one of 32, 14, 8, 6 (the constructions with a published critical Reynolds number)";
 
 #[allow(clippy::too_many_arguments)] // one row of the declaration table
@@ -73,7 +81,7 @@ use DefaultValue::{Derived, Number, Unset};
 /// their own wording (with the unit) in [`FlightSpec::build`]; conditions
 /// between parameters are in the requirement text.
 pub static FLIGHT_PARAMETERS: [ParameterDef; 17] = [
-    flight("speed", "|v0|", "m/s", Unset("required"), Open(0.0), Unbounded, "finite and > 0, m/s", "Launch speed of the ball"),
+    flight("speed", "|v0|", "m/s", Unset("required"), Open(0.0), Closed(MAX_LAUNCH_SPEED), SPEED_REQUIREMENT, "Launch speed of the ball"),
     flight(
         "launch_angle",
         "θ",
@@ -168,8 +176,8 @@ pub static FLIGHT_PARAMETERS: [ParameterDef; 17] = [
         "°C",
         Derived("standard atmosphere at the altitude (15 at sea level)"),
         Open(-273.15),
-        Unbounded,
-        "> -273.15",
+        Closed(crate::air::MAX_TEMPERATURE),
+        crate::air::TEMPERATURE_REQUIREMENT,
         "Air temperature, for density (ideal gas) and viscosity (Sutherland)",
     ),
     flight(
@@ -349,6 +357,9 @@ fn check_launch_velocity(velocity: [f64; 3]) -> Result<[f64; 3], FlightError> {
         check("launch_velocity", v, true, "three finite numbers, m/s")?;
     }
     check("launch_velocity", velocity[2], velocity[2] > 0.0, "with a vertical component > 0 (the ball starts on the ground)")?;
+    // By hypot: no overflow to inf in the check.
+    let length = velocity[0].hypot(velocity[1]).hypot(velocity[2]);
+    check("launch_velocity", length, length <= MAX_LAUNCH_SPEED, "of length at most 1000 m/s (the largest launch speed)")?;
     Ok(velocity)
 }
 
@@ -442,7 +453,7 @@ impl FlightSpec {
             return self.finish(check_launch_velocity(velocity)?, check_spin(self.spin.unwrap_or([0.0; 3]))?);
         }
         let speed = self.speed.ok_or(FlightError::Missing { name: "speed" })?;
-        let speed = check("speed", speed, speed > 0.0, "finite and > 0, m/s")?;
+        let speed = check("speed", speed, speed > 0.0 && speed <= MAX_LAUNCH_SPEED, SPEED_REQUIREMENT)?;
         let angle = self.launch_angle.ok_or(FlightError::Missing { name: "launch_angle" })?;
         let angle = check("launch_angle", angle, angle > 0.0 && angle <= 90.0, "in (0, 90] degrees (the ball starts on the ground)")?;
         let azimuth = self.azimuth.unwrap_or(0.0);

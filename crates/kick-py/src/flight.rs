@@ -109,14 +109,37 @@ impl Keywords for ManyFlights {
 /// ([`crate::params::real_array`]: no bools, strings, complex or masked
 /// values), or an error naming it.
 fn three(name: &str, value: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
-    let takes = "three numbers (x, y, z)";
+    numbers(name, "three numbers (x, y, z)", value)
+}
+
+/// N real numbers through the one argument guard (no bools, no objects;
+/// a list, tuple or array), or an error naming `name`.
+fn numbers<const N: usize>(name: &str, takes: &str, value: &Bound<'_, PyAny>) -> PyResult<[f64; N]> {
     let (array, switches) = crate::params::real_array(name, takes, value)?;
     let numbers: Vec<f64> = array.readonly().as_array().iter().copied().collect();
-    match (switches, array.ndim(), numbers.as_slice()) {
-        (false, 1, &[x, y, z]) => Ok([x, y, z]),
+    match (switches, array.ndim(), <[f64; N]>::try_from(numbers.as_slice())) {
+        (false, 1, Ok(n)) => Ok(n),
         (true, ..) => Err(PyTypeError::new_err(format!("`{name}` takes {takes}, got {}", crate::params::described(value)))),
         _ => Err(value_error(format!("`{name}` takes {takes}, got {}", crate::params::described(value)))),
     }
+}
+
+/// `bounds={name: (low, high)}` as `kick aim --range`'s texts, each pair
+/// through the argument guard (a bool, an int past double precision or a
+/// list were taken as numbers or refused with pyo3's words).
+fn aim_bounds(bounds: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<(String, [f64; 2])>> {
+    let Some(bounds) = bounds.filter(|b| !b.is_none()) else { return Ok(Vec::new()) };
+    let dict = bounds.cast::<PyDict>().map_err(|_| {
+        PyTypeError::new_err(format!("`bounds` takes a dict {{name: (low, high)}}, got {}", crate::params::described(bounds)))
+    })?;
+    let mut out = Vec::with_capacity(dict.len());
+    for (key, value) in dict.iter() {
+        let name: String = key
+            .extract()
+            .map_err(|_| PyTypeError::new_err(format!("`bounds` takes parameter names as keys, got {}", crate::params::described(&key))))?;
+        out.push((name.clone(), numbers(&format!("bounds[{name:?}]"), "two numbers (low, high)", &value)?));
+    }
+    Ok(out)
 }
 
 /// `kick aim`: the launch (or 3D kick, `from_="kick"`) that clears the wall
@@ -137,7 +160,7 @@ pub fn aim<'py>(
     free: Option<&Bound<'py, PyAny>>,
     law: Option<&str>,
     objective: Option<String>,
-    bounds: Option<std::collections::BTreeMap<String, (f64, f64)>>,
+    bounds: Option<&Bound<'py, PyAny>>,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     use kick_core::parameters::{SetLaw, SetParameter};
@@ -178,6 +201,7 @@ pub fn aim<'py>(
                 flight.set(parameter, &values).map_err(value_error)?;
             }
         }
+        let bounds = aim_bounds(bounds)?;
         let request = AimRequest {
             target: Some(target),
             wall,
@@ -185,13 +209,24 @@ pub fn aim<'py>(
             free,
             flight,
             kick,
-            ranges: bounds.unwrap_or_default().into_iter().map(|(name, (low, high))| format!("{name}={low:?},{high:?}")).collect(),
+            ranges: bounds.iter().map(|(name, [low, high])| format!("{name}={low:?},{high:?}")).collect(),
             objective: objective.as_deref().map(kick_flight::Objective::from_name).transpose().map_err(value_error)?,
         };
         let report = crate::interruptible(py, |cancel| {
             kick_study::aim::aim_cancellable(&request, &|| cancel.load(std::sync::atomic::Ordering::Relaxed))
         })?
-        .map_err(library_error)?;
+        .map_err(|e| match e {
+            // `--range NAME=LOW,HIGH: why` in the call's own words.
+            kick_study::StudyError::Flag { flag: "range", message } => {
+                let why = message.split_once(": ").map_or(message.as_str(), |(_, why)| why);
+                let name = bounds.iter().find(|(n, _)| message.starts_with(&format!("--range {n}"))).map(|(n, _)| n.as_str());
+                value_error(match name {
+                    Some(n) => format!("bounds[{n:?}]: {}", why.replace("(flag --free)", "(keyword free)")),
+                    None => format!("bounds: {why}"),
+                })
+            }
+            e => library_error(e),
+        })?;
         crate::convert::json_to_py(py, &serde_json::to_value(report).map_err(value_error)?)
     })
 }

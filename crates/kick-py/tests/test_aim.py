@@ -3,6 +3,7 @@ no solution and bad input are ValueErrors saying so."""
 
 import math
 
+import numpy as np
 import pytest
 
 import kick
@@ -92,3 +93,27 @@ def test_the_law_keyword_and_the_target_as_kick_aim_takes_them():
             kick.aim(target)
     with pytest.raises(TypeError, match=r"`wall` takes three numbers .*got .*str"):
         kick.aim((25.0, 0.0, 1.5), wall="9.15,1.8,1")
+
+
+def test_bounds_go_through_the_argument_guard_in_the_call_s_words():
+    target = (20.0, 2.0, 1.5)
+    # Said of bounds[...], not of `--range`, an option Python has not.
+    for given, match in [
+        ({"sped": (10.0, 30.0)}, r'bounds\["sped"\]: not a parameter this aim can free'),
+        ({"speed": (30.0, 10.0)}, r'bounds\["speed"\]: LOW and HIGH must be finite with LOW < HIGH'),
+        ({"speed": (1.0, 1e200)}, r'bounds\["speed"\]: `speed` must be in \(0, 1000\] m/s'),
+    ]:
+        with pytest.raises(ValueError, match=match) as refused:
+            kick.aim(target, bounds=given)
+        assert "--range" not in str(refused.value)
+    # A bool is no number (it was taken as 1.0); three numbers are not a pair.
+    with pytest.raises(TypeError, match=r'bounds\["speed"\]'):
+        kick.aim(target, bounds={"speed": (True, 30.0)})
+    with pytest.raises(ValueError, match=r'`bounds\["speed"\]` takes two numbers'):
+        kick.aim(target, bounds={"speed": (10.0, 20.0, 30.0)})
+    with pytest.raises(TypeError, match="`bounds` takes a dict"):
+        kick.aim(target, bounds=[("speed", 10.0, 30.0)])
+    # A list, an array: two numbers as well as a tuple.
+    listed = kick.aim((25.0, 2.6, 2.0), spin=(0.0, 0.0, 50.0), bounds={"speed": [26.0, 27.0]})
+    arrayed = kick.aim((25.0, 2.6, 2.0), spin=(0.0, 0.0, 50.0), bounds={"speed": np.array([26.0, 27.0])})
+    np.testing.assert_array_equal(listed["launch_velocity"], arrayed["launch_velocity"])

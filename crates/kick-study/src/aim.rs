@@ -641,7 +641,14 @@ mod tests {
     fn ranges_outside_the_valid_values_name_the_range() {
         let base = AimRequest { target: Some([20.0, 0.0, 1.0]), ..AimRequest::default() };
         for (range, from) in
-            [("speed=-40,-5", AimFrom::Launch), ("launch_angle=170,190", AimFrom::Launch), ("ball_mass=0,1", AimFrom::Kick)]
+            // 1e200 m/s was searched, and its flights' refusal aborted the
+            // aim naming `launch_velocity`, printing inf.
+            [
+                ("speed=-40,-5", AimFrom::Launch),
+                ("speed=1,1e200", AimFrom::Launch),
+                ("launch_angle=170,190", AimFrom::Launch),
+                ("ball_mass=0,1", AimFrom::Kick),
+            ]
         {
             let request = AimRequest {
                 from: Some(from),

@@ -1,4 +1,5 @@
-//! Far outside a kick's range (speeds 1e-6–1e6 m/s, spins to 1e4 rad/s,
+//! Far outside a kick's range (speeds 1e-6 m/s to the largest launch speed,
+//! 1000 m/s, spins to 1e4 rad/s,
 //! feather-light to 100 kg balls, weak to strong gravity) every valid flight
 //! lands with finite numbers: no panic, no NaN, no endless loop.
 
@@ -14,7 +15,7 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 256, rng_seed: RngSeed::Fixed(2024), ..ProptestConfig::default() })]
     #[test]
     fn every_valid_flight_lands_with_finite_numbers(
-        speed in log_uniform(1e-6, 1e6),
+        speed in log_uniform(1e-6, kick_flight::MAX_LAUNCH_SPEED),
         angle in log_uniform(1e-4, 90.0),
         spin in prop::array::uniform3(-1e4..1e4_f64),
         mass in log_uniform(1e-4, 100.0),
@@ -70,9 +71,25 @@ fn flights_beyond_double_precision_are_refused_by_name() {
                 assert!(parameters.split(", ").any(|p| p == named), "{named}: {e}");
                 assert_eq!(e.status(), kick_core::Status::Refused);
             }
+            // A speed past the largest launch speed and air past the hottest
+            // are refused by their declared bounds before any scale is read.
+            Err(e @ kick_flight::FlightError::InvalidParameter { name, .. }) if ["speed", "temperature"].contains(&named) => {
+                assert_eq!(name, named, "{e}");
+                assert!(!e.to_string().contains("NaN") && !e.to_string().contains("inf"), "{e}");
+            }
             other => panic!("{named}: {other:?}"),
         }
     }
+    // No length overflows to inf in a refusal: 1e300 on every axis is 1.7e300.
+    let spun = FlightSpec { spin: Some([1e300, 1e300, 1e300]), ..base }.build().unwrap_err().to_string();
+    assert!(spun.contains("1.9053e299") && !spun.contains("inf"), "{spun}");
+    let launched = FlightSpec { launch_velocity: Some([1e300, 1e300, 1e300]), ..FlightSpec::default() }.build().unwrap_err().to_string();
+    assert!(launched.contains("1.7321e300") && launched.contains("at most 1000 m/s"), "{launched}");
+    assert!(FlightSpec::from_exit_speed(1000.0, 20.0).build().is_ok());
+    assert!(matches!(
+        FlightSpec::from_exit_speed(1000.1, 20.0).build(),
+        Err(kick_flight::FlightError::InvalidParameter { name: "speed", .. })
+    ));
     // The kicks' own flights stay inside.
     assert!(solve(&FlightSpec { spin: Some([0.0, 0.0, 56.5]), ..base }.build().unwrap()).is_ok());
 }
