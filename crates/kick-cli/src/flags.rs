@@ -208,12 +208,17 @@ fn parameter_arg(p: &'static ParameterDef, requires: Option<&'static str>) -> Ar
             arg.value_name(p.symbol).value_parser(number).allow_hyphen_values(true).action(ArgAction::Append).help(repeat_note(&p.help()))
         }
         Shape::Scalar => arg.value_name(p.symbol).value_parser(number).allow_hyphen_values(true).action(ArgAction::Set),
+        // The three numbers are one value, checked as a whole where clap
+        // names the subcommand (a count checked after parsing printed the
+        // top command's usage, `kick <COMMAND>`); the last occurrence wins.
         Shape::Vector3 => arg
             .value_name(format!("{0}x,{0}y,{0}z", p.symbol))
-            .value_parser(number)
-            .value_delimiter(',')
+            .value_parser(move |text: &str| -> Result<[f64; 3], String> {
+                let numbers = text.split(',').map(number).collect::<Result<Vec<f64>, String>>()?;
+                <[f64; 3]>::try_from(numbers.as_slice()).map_err(|_| format!("takes three numbers (x,y,z), got {}", numbers.len()))
+            })
             .allow_hyphen_values(true)
-            .action(ArgAction::Append),
+            .action(ArgAction::Set),
         Shape::Switch => arg.action(ArgAction::SetTrue),
     }
 }
@@ -261,18 +266,7 @@ impl<S: FlagSpec> clap::FromArgMatches for Flags<S> {
             let value = match p.shape {
                 Shape::Scalar if repeatable(p) => matches.get_many::<f64>(p.name).and_then(|mut v| v.next()).map(|&x| Value::Number(x)),
                 Shape::Scalar => matches.get_one::<f64>(p.name).map(|&x| Value::Number(x)),
-                Shape::Vector3 => match matches.get_many::<f64>(p.name) {
-                    None => None,
-                    Some(values) => match values.copied().collect::<Vec<f64>>()[..] {
-                        [x, y, z] => Some(Value::Vector([x, y, z])),
-                        ref other => {
-                            return Err(clap::Error::raw(
-                                clap::error::ErrorKind::WrongNumberOfValues,
-                                format!("{} takes three numbers (x,y,z), got {}\n", p.flag(), other.len()),
-                            ))
-                        }
-                    },
-                },
+                Shape::Vector3 => matches.get_one::<[f64; 3]>(p.name).map(|&v| Value::Vector(v)),
                 Shape::Switch => matches.get_flag(p.name).then_some(Value::Switch(true)),
             };
             if let Some(value) = value {

@@ -176,7 +176,8 @@ fn sweeps_take_compress_with_or_without_a_level() {
 /// A drawn row the model refuses is that row's failure, not the sweep's:
 /// `kick sweep --foot-speed 3` (row 0 draws a ball faster than that) and
 /// `kick sweep3d --range offset=0.2,0.3` (every offset beyond the ball's
-/// 0.11 m) write their files with the rows refused; held values that
+/// 0.11 m) write their files with the rows refused (the second, with no
+/// row answered, exits 1); held values that
 /// contradict each other, and a negative plane, are refused before a run.
 #[test]
 fn drawn_rows_fail_alone_and_held_values_are_checked_first() {
@@ -190,9 +191,11 @@ fn drawn_rows_fail_alone_and_held_values_are_checked_first() {
     let (code, text) = run(&["sweep", "--samples", "50", "--foot-speed", "3", "--out", &out("slow")]);
     assert_eq!(code, Some(0), "{text}");
     assert!(text.contains("failed)") && !text.contains("(0 failed)"), "{text}");
+    // Every row refused: the file is written whole all the same, and the
+    // run, with no answer in it, exits 1 (a_sweep_with_no_answer_exits_1).
     let (code, text) = run(&["sweep3d", "--samples", "20", "--range", "offset=0.2,0.3", "--out", &out("wide")]);
-    assert_eq!(code, Some(0), "{text}");
-    assert!(text.contains("refused: 20"), "{text}");
+    assert_eq!(code, Some(1), "{text}");
+    assert!(text.contains("refused: 20") && std::path::Path::new(&out("wide")).is_file(), "{text}");
     for (args, named) in [
         (vec!["sweep", "--samples", "5", "--foot-speed", "3", "--ball-speed", "5"], "no contact"),
         (vec!["sweep3d", "--samples", "5", "--flight", "--distance=-9"], "`distance` = -9"),
@@ -370,4 +373,24 @@ fn a_sweep_with_no_answer_exits_1() {
         assert!(path.is_file(), "{args:?}: the file of failures is written");
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A vector flag with the wrong count is refused where clap knows the
+/// subcommand: its usage line is the subcommand's (it printed
+/// `Usage: kick <COMMAND>` after two blank lines).
+#[test]
+fn a_vector_flag_with_the_wrong_count_names_its_subcommand() {
+    for (args, got) in [
+        (&["simulate3d", "--foot-inertia", "1,2"][..], "got 2"),
+        (&["flight", "--speed", "25", "--launch-angle", "20", "--spin", "1,2,3,4"][..], "got 4"),
+    ] {
+        let out = kick(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(stderr.contains(&format!("takes three numbers (x,y,z), {got}")), "{stderr}");
+        assert!(!stderr.contains("kick <COMMAND>") && !stderr.contains("\n\n\n"), "{stderr}");
+    }
+    // Negative components stay values, not flags.
+    let out = kick(&["flight", "--speed", "25", "--launch-angle", "20", "--spin", "-4,3,2", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
 }
