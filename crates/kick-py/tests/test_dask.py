@@ -174,3 +174,9 @@ def test_to_zarr_leaves_nothing_when_a_task_fails(tmp_path, monkeypatch):
             with pytest.raises(RuntimeError, match="a worker lost"):
                 kick.dask.to_zarr(c, str(store), "simulate_many", chunks=1, foot_mass=[1.0, 2.0, 3.0, 4.0])
     assert list(tmp_path.iterdir()) == []  # no store, no partial one
+
+
+def test_all_scalar_inputs_are_one_row_as_locally(client):
+    # No array at all (it failed in numpy: zero-dimensional arrays cannot be concatenated).
+    assert_same(kick.dask.simulate_many(client), kick.simulate_many())
+    assert_same(kick.dask.simulate3d_many(client), kick.simulate3d_many())  # vectors (3,) too

@@ -101,6 +101,11 @@ def _run(function, client, chunks, arrays):
     chunks = _kick.whole_number("chunks", chunks, 1)
     _check_options(function, arrays)
     given, options, shape = _split(function, arrays)
+    if not given:
+        # No input at all: one row, whose answer is 0-d as the local call's
+        # (joining it as blocks of rows failed inside numpy).
+        answer = client.submit(_solve, function, options, {}, pure=False).result()
+        return ManyResult(answer, function, {}, {k: v for k, v in options.items()})
     rows = int(np.prod(shape, dtype=np.int64))
     futures = []
     for start in range(0, rows, chunks):
