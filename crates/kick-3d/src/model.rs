@@ -477,7 +477,11 @@ impl Kick3d {
             Some(i) => check(&p::BALL_INERTIA, i)?,
             // Derived, not given: a value out of range is the radius's (with the mass) to fix.
             None if !p::BALL_INERTIA.valid.contains(shell) => {
-                return Err(invalid("ball_radius", radius, "such that the thin shell's 2/3 m_b R^2 is a valid ball_inertia (neither underflows nor overflows)"))
+                return Err(invalid(
+                    "ball_radius",
+                    radius,
+                    "such that the thin shell's 2/3 m_b R^2 is a valid ball_inertia (neither underflows nor overflows)",
+                ))
             }
             None => shell,
         };

@@ -119,17 +119,34 @@ fn without_contact_own(
 /// outlasts the data (a soft, high-exponent law creeping apart for minutes)
 /// costs samples only over the data's span, where the whole contact cost up
 /// to `MAX_HISTORY_SAMPLES` each time (a second per residual, a fit of hours).
+///
+/// A history's rows are counted over the whole contact before any is made
+/// (at most `MAX_HISTORY_SAMPLES`); a trial point whose contact is too long
+/// for that at `interval` is recorded once more at the interval that fits
+/// it (coarser: such a point lies far from the data's). It was refused with
+/// "history too long: use a longer interval or fewer samples", options a
+/// fit has not (`kick fit profile --spread 10`, a `kick fit data` start at
+/// exponent 9).
 fn record_until(solver: &Accurate, scenario: &Scenario, interval: f64, until: f64) -> Result<(Outcome, History), IdentifyError> {
-    let mut samples = Vec::new();
-    let streamed = solver.solve_streamed(scenario, Spacing::Interval(interval), &mut |s: &Sample| {
-        samples.push(*s);
-        if s.time > until {
-            ControlFlow::Break(())
-        } else {
-            ControlFlow::Continue(())
+    let record = |interval: f64| {
+        let mut samples = Vec::new();
+        let streamed = solver.solve_streamed(scenario, Spacing::Interval(interval), &mut |s: &Sample| {
+            samples.push(*s);
+            if s.time > until {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        })?;
+        Ok::<_, kick_core::KickError>((streamed.outcome, History { samples }))
+    };
+    match record(interval) {
+        Err(kick_core::KickError::HistoryTooLong { needed, limit }) => {
+            // `needed` rows at `interval` span the contact: spread them over `limit` less a margin.
+            Ok(record(interval * (needed / (limit as f64 - 16.0)))?)
         }
-    })?;
-    Ok((streamed.outcome, History { samples }))
+        other => Ok(other?),
+    }
 }
 
 /// A recorded contact, readable at any time: before first touch the initial
@@ -264,6 +281,13 @@ mod tests {
         let (_, part) =
             record_until(&solver, &Scenario::baseline(), Scenario::baseline().elastic_contact_time() * RECORD_FRACTION, 2e-3).unwrap();
         assert_eq!(whole.samples[..part.samples.len()], part.samples[..]);
+        // Ten times finer the whole 2-minute contact needs ~1e7 rows, past the
+        // history limit: recorded at the interval that fits it, not refused.
+        let (o, h) = record_until(&solver, &s, interval / 10.0, until).unwrap();
+        let needed = (o.contact_time / (interval / 10.0)).ceil() + 1.0;
+        assert!(needed > kick_core::MAX_HISTORY_SAMPLES as f64, "{needed}");
+        let [.., before, past] = h.samples[..] else { panic!() };
+        assert!(before.time <= until && past.time > until && h.samples.len() >= 2);
     }
 
     fn interpolation_matches_for(s: Scenario) {

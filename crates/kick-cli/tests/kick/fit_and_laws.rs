@@ -240,3 +240,19 @@ fn a_fit_outside_the_laws_validity_says_so_and_exits_one() {
     assert!(out.status.success() && !String::from_utf8_lossy(&out.stdout).contains("outside validity"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `--spread` is held to (1, 10], named: 1e300 made a foot of 1e-300 kg,
+/// refused naming foot_mass and foot_speed, never given; at 10 the profile
+/// runs (its far points' contacts outlast the history limit at the data's
+/// interval, and are recorded coarser instead of refused).
+#[test]
+fn the_profile_spread_is_bounded_and_its_far_points_run() {
+    for spread in ["1e300", "1", "NaN", "10.5"] {
+        let out = kick(&["fit", "profile", "--spread", spread, "--points", "3", "--map-points", "3"]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{spread}: {stderr}");
+        assert!(stderr.contains(&format!("--spread {spread}: must be in (1, 10]")), "{stderr}");
+    }
+    let out = kick(&["fit", "profile", "--spread", "10", "--points", "3", "--map-points", "3"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+}

@@ -46,6 +46,9 @@ pub struct ProfileReport {
     pub written: Vec<PathBuf>,
 }
 
+/// The widest `--spread`: profiles over a decade either side of the truth.
+pub const MAX_SPREAD: f64 = 10.0;
+
 /// Identifiability (Section 17.8): misfit profiles of m_f, k, c, n from the
 /// exit speed alone and from noisy histories, and (k, c) misfit maps.
 pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, StoreError> {
@@ -53,6 +56,14 @@ pub fn profile(settings: &ProfileSettings) -> Result<ProfileReport, StoreError> 
     if !(3..=101).contains(&points) || !(3..=201).contains(&map_points) {
         let message = format!("--points must be in 3..=101 and --map-points in 3..=201 (got {points}, {map_points})");
         return Err(StoreError::Flag { flag: if (3..=101).contains(&points) { "--map-points" } else { "--points" }, message });
+    }
+    // At most a decade either side: the profile scales the exponent n too
+    // (1e300 made a foot of 1e-300 kg, refused naming flags never given).
+    if !(spread > 1.0 && spread <= MAX_SPREAD) {
+        return Err(StoreError::Flag {
+            flag: "--spread",
+            message: format!("--spread {}: must be in (1, {MAX_SPREAD}]", kick_core::short(spread)),
+        });
     }
     let study = identifiability_study(&Scenario::baseline(), spread, points, map_points, 80, seed, &FitOptions::default())?;
     let mut written = Vec::new();
