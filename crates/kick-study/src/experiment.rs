@@ -1037,6 +1037,21 @@ mod tests {
         assert_eq!(kicks.kick(4).unwrap().base, four);
     }
 
+    /// A fixed `[kick3d]` key the model refuses is said at that key, with a
+    /// sweep beside it (`friction = nan` was said at the sweep's first value).
+    #[test]
+    fn a_refused_fixed_key_is_said_at_its_line_beside_a_sweep() {
+        for value in ["nan", "-1.0"] {
+            let text = format!("level = \"3d\"\n[kick3d]\nfriction = {value}\n[[sweep]]\nparameter = \"offset\"\nvalues = [0.0, 0.05]\n");
+            let e = parse_text(&text).unwrap_err();
+            assert_eq!((e.line, e.key.as_str()), (3, "kick3d.friction"), "{e}");
+            assert!(e.message.contains("invalid parameter `friction`"), "{e}");
+        }
+        // The swept parameter's own bad value is still said at its value.
+        let e = parse_text("level = \"3d\"\n[[sweep]]\nparameter = \"friction\"\nvalues = [0.5, -1.0]\n").unwrap_err();
+        assert_eq!((e.line, e.key.as_str()), (4, "sweep.friction"), "{e}");
+    }
+
     /// A key of the other level is refused at its line with the keys this
     /// level takes (1D histories, 3D `[kick3d]`).
     #[test]

@@ -125,16 +125,16 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment, flight: Optio
         kick3d.set_parameter(p, value).map_err(|e| at.error(span, &format!("base.{}", p.name), e.to_string()))?;
     }
     // A problem of the fixed kick names its key in [kick3d] (or [base]).
+    let in_table = |n: &str| {
+        key_span(text, "kick3d", n)
+            .map(|s| (s, format!("kick3d.{n}")))
+            .or_else(|| base_raw.given().find(|(p, _, _)| p.name == n).map(|(_, _, s)| (s, format!("base.{n}"))))
+    };
     let locate = |e: &Kick3dError, fallback: &str| {
         let named = match e {
             Kick3dError::InvalidParameter { name, .. } => Some(*name),
             Kick3dError::OffsetOutsideBall { .. } => Some("offset"),
             _ => None,
-        };
-        let in_table = |n: &str| {
-            key_span(text, "kick3d", n)
-                .map(|s| (s, format!("kick3d.{n}")))
-                .or_else(|| base_raw.given().find(|(p, _, _)| p.name == n).map(|(_, _, s)| (s, format!("base.{n}"))))
         };
         match named.and_then(in_table) {
             Some((span, key)) => at.error(span, &key, e.to_string()),
@@ -192,7 +192,14 @@ pub(super) fn kicks(at: &Locator, text: &str, raw: &RawExperiment, flight: Optio
                 }
                 _ => {
                     let one = Grid { axes: vec![Axis { parameter, values: vec![v] }] };
-                    kick_at(scenario, kick3d, &one, 0).map(drop).map_err(|e| e.to_string())
+                    match kick_at(scenario, kick3d, &one, 0) {
+                        // A fixed key's own refusal is said at that key, not at
+                        // this axis's value ([kick3d] friction = nan pointed here).
+                        Err(e @ Kick3dError::InvalidParameter { name, .. }) if name != parameter.name && in_table(name).is_some() => {
+                            return Err(locate(&e, &key));
+                        }
+                        other => other.map(drop).map_err(|e| e.to_string()),
+                    }
                 }
             };
             checked.map_err(|e| at.error(value_span.clone(), &key, format!("value {}: {e}", short(v))))?;
