@@ -199,6 +199,9 @@ pub struct AimSolution {
     pub flight: Flight,
     /// Residual evaluations over all starts (each two flights), Jacobians included.
     pub evaluations: usize,
+    /// Flights flown for [`Solved::sensitivity`] at the solution, after the
+    /// solve: four per free parameter (central differences at h and h/2).
+    pub sensitivity_flights: usize,
     /// Starts tried (the last one succeeded).
     pub starts: usize,
 }
@@ -796,6 +799,7 @@ fn solution_of(
         outcome: t.outcome,
         flight: flight.with_distance(Some(scene.target[0]))?,
         evaluations,
+        sensitivity_flights: 4 * free.len(),
         starts,
     })
 }

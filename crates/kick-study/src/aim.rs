@@ -503,7 +503,11 @@ impl Printable for AimReport {
             sig(s.wall_crossing[0]),
             sig(s.wall_crossing[1])
         );
-        let _ = writeln!(w, "{:<18} {} residual evaluations, {} start(s)", "solve", s.evaluations, s.starts);
+        let _ = writeln!(
+            w,
+            "{:<18} {} residual evaluations, {} start(s); {} more flights for the sensitivities",
+            "solve", s.evaluations, s.starts, s.sensitivity_flights
+        );
         w
     }
 }

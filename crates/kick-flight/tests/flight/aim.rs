@@ -162,6 +162,9 @@ fn the_wall_lifts_a_path_that_would_go_through_it() {
     assert!(over.wall_crossing[1] - r >= high.height, "{:?}", over.wall_crossing);
     // From the first start, where the target alone leads into the wall (no restart needed).
     assert_eq!(over.starts, 1);
+    // The sensitivities' flights are counted apart from the solve's (they were left out):
+    // flown again here, a free parameter's two differences take four flights.
+    assert_eq!(over.sensitivity_flights, 4 * LaunchFree::DEFAULT.len());
 }
 
 fn solve_or_panic(r: Result<AimSolution, AimError>) -> AimSolution {
