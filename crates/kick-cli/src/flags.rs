@@ -356,7 +356,8 @@ mod tests {
         let arg = command.get_arguments().find(|a| a.get_id() == "foot_mass").unwrap();
         assert_eq!(arg.get_help().unwrap().to_string(), "Effective foot mass (Eqs. 11-12): m_f, kg [default: 3]");
         let error = parse::<KickSpec>(&["--foot-inertia", "1,2"]).unwrap_err();
-        assert!(error.to_string().contains("--foot-inertia takes three numbers"), "{error}");
+        let error = error.to_string();
+        assert!(error.contains("'--foot-inertia <") && error.contains("takes three numbers (x,y,z), got 2"), "{error}");
         let flags = parse::<ScenarioSpec>(&["--law", "flores", "--restitution", "0.6", "--damping", "-5"]).unwrap();
         let spec = flags.spec();
         assert_eq!((spec.law, spec.restitution, spec.damping), (Some(LawKind::Flores), Some(0.6), Some(-5.0)));
