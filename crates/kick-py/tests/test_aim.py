@@ -117,3 +117,15 @@ def test_bounds_go_through_the_argument_guard_in_the_call_s_words():
     listed = kick.aim((25.0, 2.6, 2.0), spin=(0.0, 0.0, 50.0), bounds={"speed": [26.0, 27.0]})
     arrayed = kick.aim((25.0, 2.6, 2.0), spin=(0.0, 0.0, 50.0), bounds={"speed": np.array([26.0, 27.0])})
     np.testing.assert_array_equal(listed["launch_velocity"], arrayed["launch_velocity"])
+
+
+def test_the_signature_lists_only_what_aim_takes():
+    # distance and launch_velocity are refused by aim; they were listed all the same.
+    import inspect
+
+    names = inspect.signature(kick.aim).parameters
+    assert "distance" not in names and "launch_velocity" not in names
+    assert "speed" in names and "foot_speed" in names and "bounds" in names
+    for refused in ({"distance": 20.0}, {"launch_velocity": (20.0, 0.0, 5.0)}):
+        with pytest.raises(ValueError):
+            kick.aim((25.0, 0.0, 1.0), **refused)

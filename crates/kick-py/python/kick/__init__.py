@@ -126,9 +126,11 @@ def _unit(p: dict) -> str:
     return "" if p["unit"] in ("", "1") else f" [{p['unit']}]"
 
 
-def _keyword_docs(function: str) -> str:
+def _keyword_docs(function: str, exclude=()) -> str:
     lines = []
     for p in keywords(function):
+        if p["name"] in exclude:
+            continue
         lines.append(f"{p['name']} : {p['shape'].replace('_', ' ')}, {p['symbol']}{_unit(p)}, default {p['default_text']}")
         lines.append(f"    {p['doc']}; must be {p['requirement']}.")
     return "\n".join(lines)
@@ -138,17 +140,20 @@ def _outputs_docs(columns) -> str:
     return "\n".join(f"{name} : {'1' if unit in ('', '1') else unit}" for name, unit in columns)
 
 
-def _declare(func, function: str, head: list, tail: list, intro: str, outputs: str = ""):
-    """Give ``func`` the signature and docstring generated from the declared list."""
+def _declare(func, function: str, head: list, tail: list, intro: str, outputs: str = "", exclude=()):
+    """Give ``func`` the signature and docstring generated from the declared
+    list (less the keywords in ``exclude``, which ``func`` refuses)."""
     KW = _inspect.Parameter.KEYWORD_ONLY
     declared = []
     for p in keywords(function):
+        if p["name"] in exclude:
+            continue
         default = p["default"]
         if isinstance(default, list):
             default = tuple(default)
         declared.append(_inspect.Parameter(p["name"], KW, default=default))
     func.__signature__ = _inspect.Signature(head + declared + tail)
-    doc = intro.strip() + "\n\nParameters (keyword only; the declared list)\n" + "-" * 44 + "\n" + _keyword_docs(function)
+    doc = intro.strip() + "\n\nParameters (keyword only; the declared list)\n" + "-" * 44 + "\n" + _keyword_docs(function, exclude)
     if outputs:
         doc += "\n\n" + outputs.strip()
     func.__doc__ = doc
@@ -486,6 +491,9 @@ not declare too (foot_mass, foot_speed, friction, ...; not ball_mass,
 ball_radius, gravity) set the kick (Table 1's and kick-3d's defaults
 otherwise).
 """.replace("{laws}", ", ".join(LAWS)),
+    # The target's X is the goal plane and the launch is what is solved for:
+    # aim refuses both (they were in its signature all the same).
+    exclude=("distance", "launch_velocity"),
 )
 _flight_names = {p["name"] for p in keywords("flight")}
 aim.__signature__ = aim.__signature__.replace(
