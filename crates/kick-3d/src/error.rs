@@ -6,7 +6,7 @@ use thiserror::Error;
 pub enum Kick3dError {
     #[error(transparent)]
     Core(#[from] KickError),
-    #[error("invalid parameter `{name}` = {}: must be {requirement}", short(*.value))]
+    #[error("invalid parameter `{name}` = {}: must be {requirement}", kick_core::number::given(*.value))]
     InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
     /// The foot's line of motion passes outside the ball: √(e² + h²) ≥ R.
     #[error("{}", outside_ball(*.offset, *.depth, *.radius))]

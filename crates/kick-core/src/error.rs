@@ -8,7 +8,7 @@ fn invalid_text(name: &str, value: f64, requirement: &str) -> String {
     if value.is_nan() && requirement.starts_with("given") {
         format!("`{name}` is not given: it must be {requirement}")
     } else {
-        format!("invalid parameter `{name}` = {}: must be {requirement}", short(value))
+        format!("invalid parameter `{name}` = {}: must be {requirement}", crate::number::given(value))
     }
 }
 

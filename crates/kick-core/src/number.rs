@@ -28,6 +28,17 @@ pub fn sig(x: f64) -> Digits {
     Digits { x, digits: VALUE_DIGITS }
 }
 
+/// `x` as it was given, for a refusal quoting it: the form of [`short`]
+/// with as many significant digits as its shortest round trip needs (at
+/// least [`SHORT_DIGITS`]), so a value just inside or outside a bound never
+/// reads as the bound itself (89.9999 printed as 90).
+pub fn given(x: f64) -> Digits {
+    let shortest = format!("{x:e}");
+    let mantissa = shortest.trim_start_matches('-').split('e').next().unwrap_or("");
+    let digits = mantissa.chars().filter(char::is_ascii_digit).count();
+    Digits { x, digits: digits.max(SHORT_DIGITS) }
+}
+
 /// A vector as text outputs print it: `[a, b, c]`, each as [`sig`].
 pub fn vector(v: &[f64]) -> String {
     let parts: Vec<String> = v.iter().map(|&x| sig(x).to_string()).collect();
@@ -87,7 +98,7 @@ fn trim_zeros(digits: &str) -> &str {
 
 #[cfg(test)]
 mod tests {
-    use super::short;
+    use super::{given, short};
 
     #[test]
     fn short_forms() {
@@ -120,6 +131,21 @@ mod tests {
 
     /// Text outputs' form: six significant digits, the same notation, and
     /// width and alignment honoured.
+    #[test]
+    fn given_values_keep_their_digits() {
+        // Just inside a bound stays inside (short rounds 89.9999 to 90).
+        assert_eq!(given(89.9999).to_string(), "89.9999");
+        assert_eq!(short(89.9999).to_string(), "90");
+        // Round trips: what the user typed comes back.
+        for x in [89.9999, 0.1, -1.0, 1e300, 1.047530233023196e-7, 123456.789, 0.30000000000000004] {
+            assert_eq!(given(x).to_string().parse::<f64>().unwrap(), x, "{x}");
+        }
+        // Short values keep short's form.
+        assert_eq!(given(-1.0).to_string(), "-1");
+        assert_eq!(given(1e300).to_string(), "1e300");
+        assert_eq!(given(f64::NAN).to_string(), "NaN");
+    }
+
     #[test]
     fn values_in_text_outputs() {
         use super::{sig, vector};

@@ -621,7 +621,7 @@ pub fn aim_best(
 /// Why aiming was refused or found nothing.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum AimError {
-    #[error("invalid `{name}` = {}: must be {requirement}", values.iter().map(|v| short(*v).to_string()).collect::<Vec<_>>().join(","))]
+    #[error("invalid `{name}` = {}: must be {requirement}", values.iter().map(|v| kick_core::number::given(*v).to_string()).collect::<Vec<_>>().join(","))]
     Invalid { name: &'static str, values: Vec<f64>, requirement: &'static str },
     /// An objective the family's members have no value of (min-foot-speed without the kick).
     #[error("invalid `objective` = {name}: must be {requirement}")]

@@ -88,7 +88,7 @@ pub const MAX_SAMPLES: usize = kick_core::MAX_HISTORY_SAMPLES;
 /// Every way a flight computation can refuse or fail; messages name the parameter.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum FlightError {
-    #[error("invalid parameter `{name}` = {}: must be {requirement}", short(*.value))]
+    #[error("invalid parameter `{name}` = {}: must be {requirement}", kick_core::number::given(*.value))]
     InvalidParameter { name: &'static str, value: f64, requirement: &'static str },
     #[error("parameter `{name}` is required")]
     Missing { name: &'static str },

@@ -114,7 +114,7 @@ pub fn leg(settings: &LegSettings) -> Result<LegReport, StudyError> {
     if !(-180.0..=180.0).contains(&args.direction) {
         return Err(StudyError::Flag {
             flag: "--direction",
-            message: format!("invalid `direction` = {}: must be within -180..180 degrees", kick_core::number::short(args.direction)),
+            message: format!("invalid `direction` = {}: must be within -180..180 degrees", kick_core::number::given(args.direction)),
         });
     }
     if args.locked_ankle && args.ankle_stiffness.is_some() {

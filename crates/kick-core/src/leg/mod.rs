@@ -45,7 +45,7 @@ use thiserror::Error;
 /// Every way a leg computation can refuse or fail.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum LegError {
-    #[error("invalid leg input `{name}` = {}: must be {requirement}", crate::short(*.value))]
+    #[error("invalid leg input `{name}` = {}: must be {requirement}", crate::number::given(*.value))]
     InvalidInput { name: &'static str, value: f64, requirement: String },
     #[error("degenerate leg configuration: {0}")]
     Degenerate(String),
