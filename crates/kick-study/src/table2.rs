@@ -72,12 +72,24 @@ pub fn load(path: &Path) -> Result<Table2File, StudyError> {
 
 /// Table 2 from the scenario file `scenarios`: printed, seed-rk4 and accurate.
 pub fn compare(scenarios: &Path) -> Result<Table2Comparison, StudyError> {
+    let path = scenarios;
     let file = load(scenarios)?;
     let scenarios = file.scenarios()?;
     let seed = SeedRk4::new(file.dt)?;
     let accurate = Accurate::default();
-    let mut rows = Vec::new();
-    for ((name, scenario), (printed, spec)) in scenarios.iter().zip(TABLE2.iter().zip(&file.row)) {
+    let mut rows: Vec<Row> = Vec::new();
+    for ((name, scenario), spec) in scenarios.iter().zip(&file.row) {
+        // Set against the paper's row of the same name (by position a second
+        // "Baseline" was read against "Light effective foot" and said not to
+        // print as the paper).
+        let refuse = |message: String| StudyError::File { path: path.to_path_buf(), message };
+        let printed = TABLE2.iter().find(|r| r.name == name.as_str()).ok_or_else(|| {
+            let names: Vec<&str> = TABLE2.iter().map(|r| r.name).collect();
+            refuse(format!("row `{name}` is not a row of the paper's Table 2 (one of: {})", names.join(", ")))
+        })?;
+        if rows.iter().any(|r| &r.name == name) {
+            return Err(refuse(format!("row `{name}` is given twice")));
+        }
         let s = seed.solve(scenario).map_err(|source| StudyError::Row { name: name.clone(), source })?;
         let a = accurate.solve(scenario).map_err(|source| StudyError::Row { name: name.clone(), source })?;
         let mut cells = std::collections::BTreeMap::new();
@@ -135,5 +147,38 @@ impl Printable for Table2Comparison {
             }
         }
         w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Rows are set against the paper's row of their name, not their place:
+    /// the file's rows reversed still print as the paper; a second
+    /// "Baseline" (it was read against "Light effective foot" and said NO)
+    /// and a name the paper has not are refused, naming the file.
+    #[test]
+    fn rows_are_compared_by_name() {
+        let dir = std::env::temp_dir().join(format!("kick-table2-by-name-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let (head, rows) = BUILT_IN.split_once("[[row]]").unwrap();
+        let rows: Vec<String> = rows.split("[[row]]").map(|r| format!("[[row]]{r}")).collect();
+        let write = |name: &str, text: String| {
+            let path = dir.join(name);
+            std::fs::write(&path, text).unwrap();
+            path
+        };
+        let reversed = write("reversed.toml", format!("{head}{}", rows.iter().rev().cloned().collect::<String>()));
+        let table = compare(&reversed).unwrap();
+        assert!(table.all_match());
+        assert_eq!(table.rows[0].name, TABLE2[7].name);
+        let twice = write("twice.toml", format!("{head}{}{}", rows[0], rows[0]));
+        let e = compare(&twice).unwrap_err().to_string();
+        assert!(e.contains("twice.toml") && e.contains("row `Baseline` is given twice"), "{e}");
+        let odd = write("odd.toml", format!("{head}{}", rows[1].replace("Light effective foot", "Featherweight")));
+        let e = compare(&odd).unwrap_err().to_string();
+        assert!(e.contains("row `Featherweight` is not a row of the paper's Table 2"), "{e}");
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }
