@@ -80,6 +80,9 @@ pub fn run_file(file: &Path, out: &Path, shard: Option<&str>) -> Result<RunRepor
     let experiment = crate::experiment::load(file)?;
     let target = out.join(shard.map_or_else(|| format!("{}.h5", experiment.name), |s| s.file_name(&experiment.name)));
     let read: Vec<&Path> = experiment.read.iter().map(PathBuf::as_path).collect();
+    // `--out` is a folder: said of the folder given (a file there was
+    // quoted as `--out` = `file.toml/NAME.h5`), then the file in it.
+    crate::output::check_paths(&[crate::output::Target::Folder { flag: "--out", path: out }], &[])?;
     crate::output::check_output(&target, "--out", "h5", &read)?;
     let started = std::time::Instant::now();
     let summary = match shard {

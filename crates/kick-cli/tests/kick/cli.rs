@@ -394,3 +394,17 @@ fn a_vector_flag_with_the_wrong_count_names_its_subcommand() {
     let out = kick(&["flight", "--speed", "25", "--launch-angle", "20", "--spin", "-4,3,2", "--format", "json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
 }
+
+/// `kick run --out` is a folder, and a refusal quotes the folder given (a
+/// file there was quoted as `--out` = `FILE/NAME.h5`).
+#[test]
+fn kick_run_out_is_said_as_given() {
+    let file = std::env::temp_dir().join(format!("kick-run-out-{}.toml", std::process::id()));
+    std::fs::write(&file, "not a folder").unwrap();
+    let given = file.to_string_lossy().into_owned();
+    let out = kick(&["run", "experiments/3d/offset.toml", "--out", &given]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains(&format!("`--out` = `{given}`: it is a file, not a folder")), "{stderr}");
+    let _ = std::fs::remove_file(&file);
+}
