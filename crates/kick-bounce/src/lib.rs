@@ -66,13 +66,13 @@ use Shape::{Scalar, Vector3};
 /// How many parameters a bounce declares.
 pub const BOUNCE_PARAMETER_COUNT: usize = 18;
 
+/// The largest impact speed, m/s: `speed`'s bound, and the one a drop height may give.
+pub const MAX_IMPACT_SPEED: f64 = 1000.0;
+
 /// Every parameter of a bounce, declared once: the kick family's law
 /// parameters (kick-core's, for `law` other than `shell`), the shot, the
 /// ball, and the shell law's own (kick-core's `shell::BALL_PARAMETERS`).
 /// Flags, keys and refusals use these names.
-/// The largest impact speed, m/s: `speed`'s bound, and the one a drop height may give.
-pub const MAX_IMPACT_SPEED: f64 = 1000.0;
-
 pub static BOUNCE_PARAMETERS: [ParameterDef; BOUNCE_PARAMETER_COUNT] = [
     STIFFNESS,
     DAMPING,

@@ -129,8 +129,6 @@ mod tests {
         }
     }
 
-    /// Text outputs' form: six significant digits, the same notation, and
-    /// width and alignment honoured.
     #[test]
     fn given_values_keep_their_digits() {
         // Just inside a bound stays inside (short rounds 89.9999 to 90).
@@ -146,6 +144,8 @@ mod tests {
         assert_eq!(given(f64::NAN).to_string(), "NaN");
     }
 
+    /// Text outputs' form: six significant digits, the same notation, and
+    /// width and alignment honoured.
     #[test]
     fn values_in_text_outputs() {
         use super::{sig, vector};

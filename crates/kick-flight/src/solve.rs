@@ -268,7 +268,7 @@ impl Dynamics {
 pub(crate) fn check_scales(flight: &Flight) -> Result<(), FlightError> {
     const AIR: &str = "air_density, temperature, pressure, altitude, drag_coefficient, ball_panels, speed, ball_radius, ball_mass";
     let (v, w) = (flight.launch_velocity(), flight.spin());
-    // Lengths by hypot: a spin of 1e300 per axis is said as the 1.4e300 it is, not inf.
+    // Lengths by hypot: a spin of 1e300 per axis is said as the length it has, not inf.
     let length = |a: [f64; 3]| a[0].hypot(a[1]).hypot(a[2]);
     let speed = length(v);
     let dynamics = Dynamics::new(flight);

@@ -37,15 +37,15 @@ pub enum FlightParameter {
 
 use kick_core::parameters::{Bound, DefaultValue, Level, ParameterDef, Shape, Valid};
 
-/// What `ball_panels` must be: a construction of [`crate::coefficients::BALL_CONSTRUCTIONS`].
 /// The largest launch speed, m/s, as the bounce's largest impact speed:
-/// far past any kick (a ball leaves a foot at up to ~40 m/s) and the drag
-/// model's air (incompressible: Mach 0.3 is ~100 m/s), and short of the
-/// speeds whose flight leaves double precision's range (1e90 m/s failed in
-/// the drag's scale, and an aim's --range up to it was searched there).
+/// far past any kicked ball and the drag model's air (incompressible:
+/// Mach 0.3 is ~100 m/s), and short of the speeds whose flight leaves
+/// double precision's range (1e90 m/s failed in the drag's scale, and an
+/// aim's --range up to it was searched there).
 pub const MAX_LAUNCH_SPEED: f64 = 1000.0;
 const SPEED_REQUIREMENT: &str = "in (0, 1000] m/s";
 
+/// What `ball_panels` must be: a construction of [`crate::coefficients::BALL_CONSTRUCTIONS`].
 const PANELS_REQUIREMENT: &str = "one of 32, 14, 8, 6 (the constructions with a published critical Reynolds number)";
 
 #[allow(clippy::too_many_arguments)] // one row of the declaration table

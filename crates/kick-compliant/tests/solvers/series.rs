@@ -198,13 +198,17 @@ proptest! {
 /// module states past the sweep's box (measured: 1.2e-10 at most), against
 /// the tight reference, with and without a drive. (Heavier damping
 /// at n ≥ 40 is left out: the ball creeps back for seconds, and the
-/// reference's own contact time moves by 1.6e-8 between rtol 1e-13 and 1e-14.)
+/// reference's own contact time moves by 1.6e-8 between rtol 1e-13 and 1e-14.
+/// An undamped driven kick at n = 80 is left out too: its compression is
+/// exact to 1e-13, but the driven return's quadrature is off by 3.4e-9 in
+/// the contact time at any series tolerance, a limit of that quadrature.)
 #[test]
 fn exponents_past_the_series_order_match_the_tight_reference() {
     let base = Scenario::baseline();
     for (n, k) in [(11.0, 1e23), (14.5, 1e23), (15.0, 1e23), (16.0, 1e23), (18.0, 1e40), (25.0, 1e23), (40.0, 1e23), (80.0, 1e23)] {
         let heavy = if n < 40.0 { Some((50.0, 0.0)) } else { None };
-        for (c, drive) in [(0.01, 0.0), (6.0, 0.0), (6.0, 1e3)].into_iter().chain(heavy) {
+        let undamped_driven = if n <= 60.0 { Some((0.0, 1e3)) } else { None };
+        for (c, drive) in [(0.01, 0.0), (6.0, 0.0), (6.0, 1e3)].into_iter().chain(heavy).chain(undamped_driven) {
             use kick_core::Parameter::{Damping, DriveForce, Exponent, Stiffness};
             let scenario = [(Stiffness, k), (Damping, c), (Exponent, n), (DriveForce, drive)]
                 .into_iter()
